@@ -1,0 +1,242 @@
+//! Geometry of the golden model: segments (2D patches), rays, and the one hit definition every
+//! tracer shares.
+//!
+//! # The hit definition
+//!
+//! Patches are one-sided. A segment `a→b` has its front side to the left (normal = `(b−a)`
+//! rotated +90°). A ray from `O` with direction `d` hits a segment when
+//!
+//! 1. the segment is not *backward* for the source (Def 2.2: both endpoints lie in the closed
+//!    half-plane behind the source's plane, `(p−O)·n ≤ 0`), which no hemisphere ray can reach;
+//! 2. `O` lies strictly on the segment's front side (`orient(a, b, O) > 0`);
+//! 3. the ray's line separates the endpoints with `a` on the right or on the line and `b` on the
+//!    left or on the line (`orient(O, P, a) ≤ 0 ≤ orient(O, P, b)` with `P = O + d`).
+//!
+//! Given (2), condition (3) holds exactly when the ray meets the closed segment at a distance
+//! `t > 0`, arriving from the front; a ray parallel to the segment fails it (both orientations
+//! are equal and non-zero). The orientations are evaluated with exact adaptive predicates, so the
+//! yes/no answer is exact for the ray `O → P` as represented in `f64`: a ray through an endpoint
+//! hits, a ray that misses by one ulp misses, whichever tracer asks.
+//!
+//! The distance `t` is computed in `f64` as `cross(a−O, e) / cross(d, e)` and clamped into the
+//! interval spanned by the projections of the two endpoints, so it always names a point of the
+//! segment. Nearest hit wins; an exact tie of the computed `t` goes to the lower segment index
+//! ([`closer`]). Because every tracer calls [`hit`] with the same arguments, they all compute
+//! bit-identical `t` values, and the tie rule is applied to identical numbers.
+
+use glam::DVec2;
+
+/// A 2D point or vector in world units.
+pub type Vec2 = DVec2;
+
+/// Rotates a vector by +90° (counter-clockwise).
+#[inline]
+pub fn perp(v: Vec2) -> Vec2 {
+    Vec2::new(-v.y, v.x)
+}
+
+/// The 2D cross product `u × v` (the z component of the 3D cross product).
+#[inline]
+pub fn cross(u: Vec2, v: Vec2) -> f64 {
+    u.x * v.y - u.y * v.x
+}
+
+/// Exact orientation of `c` against the directed line `a → b`: positive when `c` lies to the
+/// left, negative to the right, zero when collinear (Shewchuk's adaptive predicate).
+#[inline]
+pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> f64 {
+    robust::orient2d(
+        robust::Coord { x: a.x, y: a.y },
+        robust::Coord { x: b.x, y: b.y },
+        robust::Coord { x: c.x, y: c.y },
+    )
+}
+
+/// A one-sided patch of the 2D world: the segment `a → b`, front side on its left.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    pub a: Vec2,
+    pub b: Vec2,
+}
+
+impl Segment {
+    pub fn new(a: Vec2, b: Vec2) -> Self {
+        Segment { a, b }
+    }
+
+    /// The unit normal, pointing to the front side: `(b − a)` rotated +90°, normalised.
+    pub fn normal(&self) -> Vec2 {
+        perp(self.b - self.a).normalize()
+    }
+
+    pub fn midpoint(&self) -> Vec2 {
+        (self.a + self.b) * 0.5
+    }
+
+    pub fn length(&self) -> f64 {
+        (self.b - self.a).length()
+    }
+
+    /// Smallest distance from `p` to a point of the closed segment.
+    pub fn distance_to(&self, p: Vec2) -> f64 {
+        let e = self.b - self.a;
+        let len2 = e.length_squared();
+        let s = if len2 > 0.0 { ((p - self.a).dot(e) / len2).clamp(0.0, 1.0) } else { 0.0 };
+        (self.a + e * s - p).length()
+    }
+}
+
+/// A ray of a bundle: origin, direction (unit length up to rounding) and the probe point
+/// `origin + dir` that, with the origin, defines the ray exactly for the orientation predicates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    pub origin: Vec2,
+    pub dir: Vec2,
+    pub probe: Vec2,
+}
+
+impl Ray {
+    pub fn new(origin: Vec2, dir: Vec2) -> Self {
+        Ray { origin, dir, probe: origin + dir }
+    }
+
+    /// The point at distance `t` along the ray.
+    pub fn at(&self, t: f64) -> Vec2 {
+        self.origin + self.dir * t
+    }
+}
+
+/// Why a patch cannot be hit by any ray of a source (or that it can).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Facing {
+    /// May be hit by rays of the hemisphere.
+    Front,
+    /// Wholly behind the source's plane (Def 2.2).
+    Backward,
+    /// The source lies behind the patch or on its line: every ray meets it from behind.
+    BackFacing,
+}
+
+/// Classifies a patch against a source at `origin` with unit `normal`: the per-patch part of the
+/// hit definition, which the backface screener evaluates once per patch.
+#[inline]
+pub fn facing(origin: Vec2, normal: Vec2, seg: &Segment) -> Facing {
+    if (seg.a - origin).dot(normal) <= 0.0 && (seg.b - origin).dot(normal) <= 0.0 {
+        Facing::Backward
+    } else if orient(seg.a, seg.b, origin) <= 0.0 {
+        Facing::BackFacing
+    } else {
+        Facing::Front
+    }
+}
+
+/// The per-ray part of the hit definition, for a patch already known to be [`Facing::Front`]:
+/// returns the distance `t > 0` at which the ray meets the segment, or `None`.
+#[inline]
+pub fn hit_front(ray: &Ray, seg: &Segment) -> Option<f64> {
+    // The ray's line must have `a` on its right (or on it) and `b` on its left (or on it).
+    if orient(ray.origin, ray.probe, seg.a) > 0.0 || orient(ray.origin, ray.probe, seg.b) < 0.0 {
+        return None;
+    }
+    let e = seg.b - seg.a;
+    let w = seg.a - ray.origin;
+    let t = cross(w, e) / cross(ray.dir, e);
+    // Clamp into the projection interval of the endpoints so `t` names a point of the segment
+    // even when the ray grazes it and the quotient is ill-conditioned.
+    let ta = w.dot(ray.dir);
+    let tb = (seg.b - ray.origin).dot(ray.dir);
+    let (lo, hi) = if ta <= tb { (ta, tb) } else { (tb, ta) };
+    let t = if t.is_nan() { lo } else { t.clamp(lo, hi) };
+    // A hit is at t > 0 by the predicates; keep it strictly positive after rounding too.
+    Some(t.max(f64::MIN_POSITIVE))
+}
+
+/// The complete hit definition for one ray of a source with unit `normal`.
+#[inline]
+pub fn hit(ray: &Ray, normal: Vec2, seg: &Segment) -> Option<f64> {
+    match facing(ray.origin, normal, seg) {
+        Facing::Front => hit_front(ray, seg),
+        _ => None,
+    }
+}
+
+/// A ray's nearest hit so far: distance and segment index.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    pub t: f64,
+    pub segment: u32,
+}
+
+/// `true` when hit `a` beats hit `b`: smaller distance, and on an exact tie the lower index.
+#[inline]
+pub fn closer(a: Hit, b: Option<Hit>) -> bool {
+    match b {
+        None => true,
+        Some(b) => a.t < b.t || (a.t == b.t && a.segment < b.segment),
+    }
+}
+
+/// The polar angle of `p` seen from a source at `origin` with unit `normal`: the signed angle
+/// from the normal, positive towards `perp(normal)`. Points in front of the source have angles
+/// in (−π/2, π/2).
+#[inline]
+pub fn angle_of(origin: Vec2, normal: Vec2, p: Vec2) -> f64 {
+    let v = p - origin;
+    v.dot(perp(normal)).atan2(v.dot(normal))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f64, y: f64) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    #[test]
+    fn front_hit_back_pass_parallel_miss() {
+        let n = v(1.0, 0.0);
+        let ray = Ray::new(v(0.0, 0.0), v(1.0, 0.0));
+        // Front faces the origin: a below, b above, normal points to -x.
+        let front = Segment::new(v(2.0, -1.0), v(2.0, 1.0));
+        assert_eq!(front.normal(), v(-1.0, 0.0));
+        assert_eq!(hit(&ray, n, &front), Some(2.0));
+        // Same segment reversed: seen from behind, passes through.
+        let back = Segment::new(v(2.0, 1.0), v(2.0, -1.0));
+        assert_eq!(hit(&ray, n, &back), None);
+        // Parallel segment on the ray's line: no hit.
+        let along = Segment::new(v(3.0, 0.0), v(5.0, 0.0));
+        assert_eq!(hit(&ray, n, &along), None);
+    }
+
+    #[test]
+    fn endpoints_are_inclusive() {
+        let n = v(1.0, 0.0);
+        let ray = Ray::new(v(0.0, 0.0), v(1.0, 0.0));
+        let through_a = Segment::new(v(2.0, 0.0), v(2.0, 1.0));
+        let through_b = Segment::new(v(2.0, -1.0), v(2.0, 0.0));
+        assert_eq!(hit(&ray, n, &through_a), Some(2.0));
+        assert_eq!(hit(&ray, n, &through_b), Some(2.0));
+    }
+
+    #[test]
+    fn behind_origin_and_backward_patches_are_not_hit() {
+        let n = v(1.0, 0.0);
+        let ray = Ray::new(v(0.0, 0.0), v(1.0, 0.0));
+        let behind = Segment::new(v(-2.0, -1.0), v(-2.0, 1.0));
+        assert_eq!(facing(ray.origin, n, &behind), Facing::Backward);
+        assert_eq!(hit(&ray, n, &behind), None);
+        // Through the origin: the origin is on its line, so it is back-facing.
+        let through = Segment::new(v(0.0, -1.0), v(0.0, 1.0));
+        assert_eq!(hit(&ray, n, &through), None);
+    }
+
+    #[test]
+    fn ties_go_to_the_lower_index() {
+        let a = Hit { t: 1.0, segment: 3 };
+        let b = Hit { t: 1.0, segment: 5 };
+        assert!(closer(a, Some(b)));
+        assert!(!closer(b, Some(a)));
+        assert!(closer(b, None));
+    }
+}

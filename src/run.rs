@@ -1,0 +1,94 @@
+//! Orchestration shared by the CLI, the figures and the tests: a scene with its grid, a source's
+//! bundle traced by one technique, and the trace's JSON form.
+
+use crate::geom::Vec2;
+use crate::grid::{Grid, GridParams};
+use crate::rays::{Bundle, RaySet, Source, SourceError};
+use crate::scene::Scene;
+use crate::trace::{trace, Method, SceneView, ShellParams, TraceResult};
+use serde::Serialize;
+
+/// A scene with the grid built over it, ready to trace.
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    pub scene: Scene,
+    pub grid: Grid,
+}
+
+impl Prepared {
+    pub fn new(scene: Scene, params: GridParams) -> Prepared {
+        let grid = Grid::build(&scene.segments, scene.bounds(), params);
+        Prepared { scene, grid }
+    }
+
+    pub fn view(&self) -> SceneView<'_> {
+        SceneView { segments: &self.scene.segments, grid: &self.grid }
+    }
+
+    /// The bundle of `rays` rays from the centre of patch `k`.
+    pub fn patch_bundle(&self, k: usize, set: RaySet, rays: usize) -> Result<Bundle, SourceError> {
+        Bundle::new(Source::from_patch(&self.scene.segments, k)?, set, rays)
+    }
+
+    /// Traces a bundle with one technique.
+    pub fn trace(&self, method: Method, bundle: &Bundle, params: &ShellParams) -> TraceResult {
+        trace(method, self.view(), bundle, params)
+    }
+}
+
+/// One ray of the `trace` JSON output.
+#[derive(Serialize)]
+pub struct RayJson {
+    pub index: usize,
+    pub direction: [f64; 2],
+    pub hit: Option<u32>,
+    pub t: Option<f64>,
+}
+
+/// The `trace` JSON output: `{"method", "rays": [...], "counters": {...}}` plus the source and
+/// the shell statistics.
+#[derive(Serialize)]
+pub struct TraceJson {
+    pub method: Method,
+    pub source: SourceJson,
+    pub rays: Vec<RayJson>,
+    pub counters: crate::counters::Counters,
+    pub shell_stats: crate::trace::ShellStats,
+}
+
+#[derive(Serialize)]
+pub struct SourceJson {
+    pub origin: [f64; 2],
+    pub normal: [f64; 2],
+    pub patch: Option<u32>,
+    pub ray_set: RaySet,
+}
+
+impl TraceJson {
+    pub fn new(result: &TraceResult, bundle: &Bundle) -> TraceJson {
+        let to = |v: Vec2| [v.x, v.y];
+        TraceJson {
+            method: result.method,
+            source: SourceJson {
+                origin: to(bundle.source.origin),
+                normal: to(bundle.source.normal),
+                patch: bundle.source.patch,
+                ray_set: bundle.set,
+            },
+            rays: bundle
+                .rays
+                .iter()
+                .zip(&result.hits)
+                .enumerate()
+                .map(|(index, (ray, hit))| RayJson {
+                    index,
+                    direction: to(ray.dir),
+                    hit: hit.map(|h| h.segment),
+                    t: hit.map(|h| h.t),
+                })
+                .collect(),
+            counters: result.counters,
+            shell_stats: result.stats,
+        }
+    }
+}

@@ -1,0 +1,251 @@
+//! The tracers of the golden model: each returns every ray's nearest hit and the paper's counters.
+//!
+//! * [`Method::Brute`]: every ray against every patch; the oracle.
+//! * [`Method::Conventional`]: ray by ray through the grid, each candidate patch loaded per ray.
+//! * [`Method::Stochastic`]: shelling S, tracking by neighbourhood estimates (Section 3.1).
+//! * [`Method::Deterministic`]: shelling D, tracking by derived per-patch coherence (Section 3.2).
+//!
+//! All four use the one hit definition of [`crate::geom`], so they agree ray for ray (rung 1 of
+//! the equivalence ladder). `INTERPRETATION.md` records every reading of the paper made here.
+
+mod brute;
+mod conventional;
+mod shelling;
+
+pub use shelling::{ShellParams, ShellStats};
+
+use crate::counters::Counters;
+use crate::geom::{angle_of, facing, Facing, Hit, Segment, Vec2};
+use crate::grid::Grid;
+use crate::rays::Bundle;
+use std::fmt;
+use std::ops::Range;
+
+/// A tracing technique.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// Every ray against every patch (the oracle).
+    Brute,
+    /// Ray by ray cell traversal; every candidate patch loaded per ray.
+    Conventional,
+    /// Shelling technique S: sectors, shells and subshells from neighbourhood estimates.
+    Stochastic,
+    /// Shelling technique D: patches sorted by angle, each matched to its rays.
+    Deterministic,
+}
+
+impl Method {
+    pub const ALL: [Method; 4] =
+        [Method::Brute, Method::Conventional, Method::Stochastic, Method::Deterministic];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Brute => "brute",
+            Method::Conventional => "conventional",
+            Method::Stochastic => "stochastic",
+            Method::Deterministic => "deterministic",
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// What a tracer returns.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TraceResult {
+    pub method: Method,
+    /// The nearest hit of each ray of the bundle, by ray index.
+    pub hits: Vec<Option<Hit>>,
+    pub counters: Counters,
+    /// Shell statistics (zero for the ray-by-ray techniques).
+    pub stats: ShellStats,
+}
+
+/// The scene as the tracers see it: segments and the grid built over them.
+#[derive(Clone, Copy, Debug)]
+pub struct SceneView<'a> {
+    pub segments: &'a [Segment],
+    pub grid: &'a Grid,
+}
+
+/// Traces `bundle` through the scene with `method`.
+pub fn trace(method: Method, scene: SceneView<'_>, bundle: &Bundle, params: &ShellParams) -> TraceResult {
+    let (hits, mut counters, stats) = match method {
+        Method::Brute => {
+            let (h, c) = brute::trace(scene, bundle);
+            (h, c, ShellStats::default())
+        }
+        Method::Conventional => {
+            let (h, c) = conventional::trace(scene, bundle);
+            (h, c, ShellStats::default())
+        }
+        Method::Stochastic => shelling::trace(scene, bundle, params, shelling::Tracking::Stochastic),
+        Method::Deterministic => shelling::trace(scene, bundle, params, shelling::Tracking::Deterministic),
+    };
+    counters.actual_intersections = hits.iter().filter(|h| h.is_some()).count() as u64;
+    counters.adlc_true = adlc(&hits);
+    if matches!(method, Method::Brute | Method::Conventional) {
+        // These techniques track nothing: their estimate is the true value.
+        counters.adlc_estimated = counters.adlc_true;
+    }
+    TraceResult { method, hits, counters, stats }
+}
+
+/// The average degree of local coherence (Def 2.10) of a set of nearest hits: rays that hit
+/// something, over the number of distinct patches they hit. Zero when nothing is hit.
+pub fn adlc(hits: &[Option<Hit>]) -> f64 {
+    let mut ids: Vec<u32> = hits.iter().flatten().map(|h| h.segment).collect();
+    if ids.is_empty() {
+        return 0.0;
+    }
+    let total = ids.len() as f64;
+    ids.sort_unstable();
+    ids.dedup();
+    total / ids.len() as f64
+}
+
+/// The outcome of screening one patch for the current source.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Screen {
+    Pass,
+    Backward,
+    BackFacing,
+    /// The source's own patch.
+    Source,
+}
+
+/// What the screener and the tracker know about a patch for one source, computed on first load.
+#[derive(Clone, Debug)]
+pub(crate) struct PatchInfo {
+    pub screen: Screen,
+    /// Rays whose angle lies in the patch's (conservatively widened) angular span.
+    pub rays: Range<u32>,
+    /// A lower bound of the distance from the source to the patch.
+    pub r_min: f64,
+    /// Flatness (Def 2.4): the spread of the endpoints' distances from the source.
+    pub flatness: f64,
+    /// Lower end of the angular span (the deterministic technique sorts by it).
+    pub angle_lo: f64,
+}
+
+/// Per-source cache of [`PatchInfo`], filled lazily as patches are loaded.
+pub(crate) struct PatchCache<'a> {
+    segments: &'a [Segment],
+    bundle: &'a Bundle,
+    /// Scale of the coordinates, for rounding bounds.
+    scale: f64,
+    /// Distance margin (the grid's registration margin).
+    margin: f64,
+    info: Vec<Option<PatchInfo>>,
+}
+
+impl<'a> PatchCache<'a> {
+    pub fn new(scene: SceneView<'a>, bundle: &'a Bundle) -> Self {
+        let (lo, hi) = scene.grid.extent();
+        let o = bundle.source.origin;
+        let scale = [lo.x, lo.y, hi.x, hi.y, o.x, o.y].iter().fold(1.0f64, |m, v| m.max(v.abs()));
+        PatchCache {
+            segments: scene.segments,
+            bundle,
+            scale,
+            margin: 4.0 * scene.grid.eps,
+            info: vec![None; scene.segments.len()],
+        }
+    }
+
+    /// Screening only (cheap): the per-patch part of the hit definition plus source exclusion.
+    #[inline]
+    pub fn screen_of(&self, p: u32, seg: &Segment) -> Screen {
+        let src = &self.bundle.source;
+        if src.patch == Some(p) {
+            return Screen::Source;
+        }
+        match facing(src.origin, src.normal, seg) {
+            Facing::Front => Screen::Pass,
+            Facing::Backward => Screen::Backward,
+            Facing::BackFacing => Screen::BackFacing,
+        }
+    }
+
+    /// Full information about patch `p`, computed on first use.
+    pub fn get(&mut self, p: u32) -> &PatchInfo {
+        if self.info[p as usize].is_none() {
+            let info = self.compute(p);
+            self.info[p as usize] = Some(info);
+        }
+        self.info[p as usize].as_ref().expect("filled above")
+    }
+
+    /// Information about a patch already loaded for this source.
+    #[inline]
+    pub fn known(&self, p: u32) -> &PatchInfo {
+        self.info[p as usize].as_ref().expect("patch information is computed when a patch is loaded")
+    }
+
+    fn compute(&self, p: u32) -> PatchInfo {
+        let seg = &self.segments[p as usize];
+        let screen = self.screen_of(p, seg);
+        let src = &self.bundle.source;
+        let o = src.origin;
+        let ra = (seg.a - o).length();
+        let rb = (seg.b - o).length();
+        let r_min = (seg.distance_to(o) - self.margin).max(0.0);
+        let flatness = (ra - rb).abs();
+        if screen != Screen::Pass {
+            return PatchInfo { screen, rays: 0..0, r_min, flatness, angle_lo: 0.0 };
+        }
+        let (lo, hi) = self.span(seg);
+        let r = self.bundle.rays_between(lo, hi);
+        PatchInfo { screen, rays: r.start as u32..r.end as u32, r_min, flatness, angle_lo: lo }
+    }
+
+    /// The conservative angular span `[lo, hi]` of a front-facing, not backward patch: the
+    /// endpoints' angles (the part behind the source's plane clipped away), each widened by a
+    /// bound on its rounding error.
+    fn span(&self, seg: &Segment) -> (f64, f64) {
+        use std::f64::consts::FRAC_PI_2;
+        let src = &self.bundle.source;
+        let (o, n) = (src.origin, src.normal);
+        let slack =
+            |p: Vec2| 1e-12 + 64.0 * f64::EPSILON * self.scale / (p - o).length().max(f64::MIN_POSITIVE);
+        let ha = (seg.a - o).dot(n);
+        let hb = (seg.b - o).dot(n);
+        let angle = |p: Vec2| {
+            let e = slack(p);
+            (angle_of(o, n, p) - e, angle_of(o, n, p) + e)
+        };
+        if ha > 0.0 && hb > 0.0 {
+            let (a0, a1) = angle(seg.a);
+            let (b0, b1) = angle(seg.b);
+            return (a0.min(b0), a1.max(b1));
+        }
+        // One endpoint is behind (or on) the plane: the span runs from the front endpoint to the
+        // plane on the side where the segment crosses it.
+        let (front, hf, hback) = if ha > 0.0 { (seg.a, ha, hb) } else { (seg.b, hb, ha) };
+        let back = if ha > 0.0 { seg.b } else { seg.a };
+        let cut = front + (back - front) * (hf / (hf - hback));
+        let side = (cut - o).dot(crate::geom::perp(n));
+        let (f0, f1) = angle(front);
+        let tol = 1e-9 * self.scale;
+        if side > tol {
+            (f0, FRAC_PI_2)
+        } else if side < -tol {
+            (-FRAC_PI_2, f1)
+        } else {
+            (-FRAC_PI_2, FRAC_PI_2)
+        }
+    }
+}
+
+/// Offers hit `h` to ray slot `best`.
+#[inline]
+pub(crate) fn offer(best: &mut Option<Hit>, h: Hit) {
+    if crate::geom::closer(h, *best) {
+        *best = Some(h);
+    }
+}
