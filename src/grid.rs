@@ -181,7 +181,7 @@ impl Grid {
     /// Cell coordinate (possibly outside the grid) of a world coordinate along one axis.
     #[inline]
     fn coord(&self, v: f64, origin: f64) -> i64 {
-        ((v - origin) / self.cell_size).floor() as i64
+        floor_i64((v - origin) / self.cell_size)
     }
 
     fn register(&mut self, segments: &[Segment]) {
@@ -270,21 +270,46 @@ impl Grid {
     }
 
     /// Calls `row(iy, ix0, ix1)` for every row of cells that the convex polygon `poly` (given by
-    /// its vertices in order; two vertices make a segment, one a point) meets, with the inclusive
-    /// range of cells it meets in that row. Conservative: cells are grown by `eps`.
+    /// its vertices in order, at most 8; two vertices make a segment, one a point) meets, with the
+    /// inclusive range of cells it meets in that row. Conservative: cells are grown by `eps`.
     pub fn raster_convex(&self, poly: &[Vec2], mut row: impl FnMut(usize, usize, usize)) {
         let eps = self.eps;
-        let (ymin, ymax) =
-            poly.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p.y), hi.max(p.y)));
+        let n = poly.len().min(8);
+        // Each edge as (y range, x at its lower end, dx/dy); horizontal edges have no slope.
+        let mut edges = [(0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64); 8];
+        let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..n {
+            let (p, q) = (poly[i], poly[(i + 1) % n]);
+            let (lo, hi) = if p.y <= q.y { (p, q) } else { (q, p) };
+            let slope = if hi.y > lo.y { (hi.x - lo.x) / (hi.y - lo.y) } else { 0.0 };
+            edges[i] = (lo.y, hi.y, lo.x, hi.x, slope);
+            ymin = ymin.min(lo.y);
+            ymax = ymax.max(hi.y);
+        }
         let oy = self.origin.y;
         let iy0 = self.coord(ymin - eps, oy).max(0);
         let iy1 = self.coord(ymax + eps, oy).min(self.ny as i64 - 1);
         for iy in iy0..=iy1 {
             let lo = oy + iy as f64 * self.cell_size - eps;
             let hi = oy + (iy + 1) as f64 * self.cell_size + eps;
-            let Some((xmin, xmax)) = clip_x_extent(poly, lo, hi) else {
+            // The x-extent of the polygon within the strip lo ≤ y ≤ hi: the extreme x of a
+            // convex set within a strip lies on its boundary, so clip each edge to the strip.
+            let (mut xmin, mut xmax) = (f64::INFINITY, f64::NEG_INFINITY);
+            for &(y0, y1, x0, x1, slope) in &edges[..n] {
+                if y1 < lo || y0 > hi {
+                    continue;
+                }
+                let (xa, xb) = if y1 > y0 {
+                    (x0 + (y0.max(lo) - y0) * slope, x0 + (y1.min(hi) - y0) * slope)
+                } else {
+                    (x0, x1)
+                };
+                xmin = xmin.min(xa.min(xb));
+                xmax = xmax.max(xa.max(xb));
+            }
+            if xmin > xmax {
                 continue;
-            };
+            }
             let ix0 = self.coord(xmin - eps, self.origin.x).max(0);
             let ix1 = self.coord(xmax + eps, self.origin.x).min(self.nx as i64 - 1);
             if ix0 <= ix1 {
@@ -374,37 +399,15 @@ impl Grid {
     }
 }
 
-/// The x-extent of the part of the convex polygon `poly` that lies in the strip `lo ≤ y ≤ hi`,
-/// or `None` when the polygon misses the strip. The extreme x of a convex set within a strip is
-/// reached on its boundary, so clipping each edge to the strip is enough.
-fn clip_x_extent(poly: &[Vec2], lo: f64, hi: f64) -> Option<(f64, f64)> {
-    let mut xmin = f64::INFINITY;
-    let mut xmax = f64::NEG_INFINITY;
-    let n = poly.len();
-    for i in 0..n {
-        let p = poly[i];
-        let q = poly[(i + 1) % n];
-        // Parametric clip of p→q to the strip.
-        let (mut s0, mut s1) = (0.0f64, 1.0f64);
-        let dy = q.y - p.y;
-        if dy == 0.0 {
-            if p.y < lo || p.y > hi {
-                continue;
-            }
-        } else {
-            let (a, b) = ((lo - p.y) / dy, (hi - p.y) / dy);
-            s0 = s0.max(a.min(b));
-            s1 = s1.min(a.max(b));
-            if s0 > s1 {
-                continue;
-            }
-        }
-        let xa = p.x + (q.x - p.x) * s0;
-        let xb = p.x + (q.x - p.x) * s1;
-        xmin = xmin.min(xa.min(xb));
-        xmax = xmax.max(xa.max(xb));
+/// `floor(v)` as an integer, without a library call (saturating outside the `i64` range).
+#[inline]
+fn floor_i64(v: f64) -> i64 {
+    let i = v as i64;
+    if (i as f64) > v {
+        i - 1
+    } else {
+        i
     }
-    (xmin <= xmax).then_some((xmin, xmax))
 }
 
 #[cfg(test)]

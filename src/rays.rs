@@ -71,7 +71,7 @@ impl Source {
             return Err(SourceError::BadOrigin(origin.to_array()));
         }
         let len = normal.length();
-        if !normal.is_finite() || !(len > 0.0) || !len.is_finite() {
+        if !normal.is_finite() || len.is_nan() || len <= 0.0 || !len.is_finite() {
             return Err(SourceError::BadNormal(normal.to_array()));
         }
         Ok(Source { origin, normal: normal / len, patch: None })

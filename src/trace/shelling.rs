@@ -148,8 +148,6 @@ pub(super) fn trace(
     let grid = scene.grid;
     let r = bundle.len();
     let o = bundle.source.origin;
-    let n = bundle.source.normal;
-    let np = crate::geom::perp(n);
     let depth = params.shell_depth.unwrap_or(4.0 * grid.cell_size);
     let margin = 4.0 * grid.eps;
     let far = {
@@ -176,7 +174,6 @@ pub(super) fn trace(
     let mut s = 0usize;
     let mut sector = 0u32;
     let mut relevant: Vec<u32> = Vec::new();
-    let dir = |phi: f64| n * phi.cos() + np * phi.sin();
 
     while s < r {
         let e = (s + width.clamp(params.min_sector.max(1), params.max_sector)).min(r);
@@ -206,13 +203,13 @@ pub(super) fn trace(
                 while k + 1 < e && alive[k + 1] && bundle.angles[k + 1] - bundle.angles[k0] <= FRAC_PI_4 {
                     k += 1;
                 }
-                let (pa, pb) = (bundle.angles[k0], bundle.angles[k]);
+                // The trapezoid between the run's boundary rays, from r₁ to beyond r₂: its outer
+                // edge is tangent to the arc of radius r₂ at the run's middle angle.
+                let (da, db) = (bundle.rays[k0].dir, bundle.rays[k].dir);
                 k += 1;
-                let half = 0.5 * (pb - pa);
+                let cos_half = (0.5 * (1.0 + da.dot(db))).max(0.0).sqrt();
                 let inner = (r1 - margin).max(0.0);
-                let outer = (r2 + margin) / half.cos();
-                let (da, db) =
-                    if k0 + 1 == k { (bundle.rays[k0].dir, bundle.rays[k0].dir) } else { (dir(pa), dir(pb)) };
+                let outer = (r2 + margin) / cos_half;
                 let poly = [o + da * inner, o + da * outer, o + db * outer, o + db * inner];
                 grid.raster_convex(&poly, |iy, x0, x1| {
                     let mut ix = x0;
@@ -249,18 +246,13 @@ pub(super) fn trace(
                 });
             }
 
-            // Tracking: the coherence and flatness the relevant patches show (rays of their span
-            // still in the bundle), and the estimate the tracker uses for this shell.
-            let span_rays = |info: &super::PatchInfo, alive: &[bool]| -> usize {
-                let lo = (info.rays.start as usize).max(s);
-                let hi = (info.rays.end as usize).min(e);
-                alive[lo..hi.max(lo)].iter().filter(|&&a| a).count()
-            };
+            // Tracking (Section 3.1): each relevant patch's spanning angle, in rays, estimates
+            // its degree of local coherence; with its flatness it feeds the shell's averages.
             let mut dlc_sum = 0usize;
             let mut flat_sum = 0.0;
             for &p in &relevant {
                 let info = cache.known(p);
-                dlc_sum += span_rays(info, &alive);
+                dlc_sum += info.rays.len();
                 flat_sum += info.flatness;
             }
             let here = (!relevant.is_empty()).then(|| ShellEstimate {

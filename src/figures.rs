@@ -1,0 +1,1030 @@
+//! Reproduction of the paper's Section 5: the measured counters of the conventional technique and
+//! the two shelling techniques against the segment length (Figures 8, 9, 10, 11 and 13), and the
+//! analytic `K₁(S)` of Eq. 4 with the measured `S` marked on it (Figure 7).
+//!
+//! The workload: for every segment length `L` and every seed, a scene of `count` random segments
+//! of length `L` in the paper's world ([`crate::scene::PAPER_WORLD`]); in each scene `sources`
+//! source patches spread evenly over the patch indices (`k = i·count/sources`); from each source a
+//! bundle of `rays` rays traced by [`Method::Conventional`], [`Method::Stochastic`] and
+//! [`Method::Deterministic`] (brute force is left out: it is the tests' oracle and far too slow).
+//! Every counter is averaged over all `(scene, source)` pairs of a length: one [`Row`] per length
+//! and technique.
+//!
+//! Scene seeds are deterministic: the scene of the `i`-th length of [`FigureOptions::lengths`]
+//! (0-based, in the order given) and seed number `s` (`0..seeds`) is generated with the seed
+//! [`scene_seed`]`(i, s) = 1000·i + s`; hence at most 1000 seeds per length. The jobs run in
+//! parallel (rayon) but their results are summed in a fixed order, so the output does not depend
+//! on the number of threads.
+//!
+//! [`run`] writes `figures.csv` and one SVG per figure into [`FigureOptions::out`].
+
+use crate::counters::Counters;
+use crate::grid::GridParams;
+use crate::rays::{RaySet, MAX_RAYS};
+use crate::run::Prepared;
+use crate::scene;
+use crate::trace::{Method, ShellParams, ShellStats};
+use anyhow::{anyhow, bail, Context, Result};
+use plotters::chart::SeriesAnno;
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
+use plotters::prelude::*;
+use rayon::prelude::*;
+use std::fmt;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+/// The techniques measured, in row order.
+pub const METHODS: [Method; 3] = [Method::Conventional, Method::Stochastic, Method::Deterministic];
+
+/// The most seeds per length that [`scene_seed`] keeps distinct.
+pub const MAX_SEEDS: usize = 1000;
+
+/// The seed of the scene of the `length_index`-th length (0-based) and seed number `seed`.
+pub fn scene_seed(length_index: usize, seed: usize) -> u64 {
+    1000 * length_index as u64 + seed as u64
+}
+
+/// The source patches of a scene of `count` segments: `sources` indices spread evenly,
+/// `k = i·count/sources` for `i` in `0..sources` (distinct when `sources <= count`).
+pub fn source_patches(count: usize, sources: usize) -> Vec<usize> {
+    (0..sources).map(|i| (i as u128 * count as u128 / sources as u128) as usize).collect()
+}
+
+/// What to measure and where to write it.
+#[derive(Clone, Debug)]
+pub struct FigureOptions {
+    /// Output directory (created if missing).
+    pub out: PathBuf,
+    /// Scenes per length.
+    pub seeds: usize,
+    /// Source patches per scene.
+    pub sources: usize,
+    /// Rays per source.
+    pub rays: usize,
+    /// Segments per scene.
+    pub count: usize,
+    /// Segment lengths.
+    pub lengths: Vec<f64>,
+    pub ray_set: RaySet,
+    pub grid: GridParams,
+    pub shells: ShellParams,
+    /// Show a progress bar on standard error.
+    pub progress: bool,
+}
+
+impl FigureOptions {
+    /// Checks the options; the message names the offending one.
+    pub fn validate(&self) -> Result<()> {
+        if self.seeds == 0 || self.seeds > MAX_SEEDS {
+            bail!("seeds must be between 1 and {MAX_SEEDS}, got {}", self.seeds);
+        }
+        if self.count == 0 {
+            bail!("count (segments per scene) must be at least 1");
+        }
+        if self.sources == 0 {
+            bail!("sources (source patches per scene) must be at least 1");
+        }
+        if self.sources > self.count {
+            bail!(
+                "sources ({}) cannot exceed the number of segments per scene ({})",
+                self.sources,
+                self.count
+            );
+        }
+        if self.rays == 0 || self.rays > MAX_RAYS {
+            bail!("rays must be between 1 and {MAX_RAYS}, got {}", self.rays);
+        }
+        if self.lengths.is_empty() {
+            bail!("at least one segment length is needed");
+        }
+        for (i, &l) in self.lengths.iter().enumerate() {
+            if !(l.is_finite() && l > 0.0) {
+                bail!("segment lengths must be positive finite numbers, got {l}");
+            }
+            if self.lengths[..i].contains(&l) {
+                bail!("segment length {l} is listed twice");
+            }
+        }
+        if !(self.grid.cells_per_segment.is_finite() && self.grid.cells_per_segment > 0.0) {
+            bail!("cells per segment must be a positive number, got {}", self.grid.cells_per_segment);
+        }
+        if self.grid.cells_per_axis == Some(0) {
+            bail!("cells per axis must be at least 1");
+        }
+        self.shells.validate().map_err(|e| anyhow!("{e}"))?;
+        Ok(())
+    }
+}
+
+/// The measurement of one technique at one segment length, averaged over all sources.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    pub length: f64,
+    pub method: Method,
+    /// Number of `(scene, source)` pairs averaged: `seeds × sources`.
+    pub sources: usize,
+    /// Per-source mean of each counter; the integer counters rounded to the nearest integer
+    /// (see [`Row::mean_values`] for the exact means).
+    pub mean: Counters,
+    /// The counters summed over all sources (the ADLC fields too).
+    pub total: Counters,
+    /// Mean over sources of [`ShellStats::leaving_fraction`]; shelling techniques only.
+    pub s_measured: Option<f64>,
+    /// Mean number of sectors per source (0 for the conventional technique).
+    pub mean_sectors: f64,
+    /// Mean number of shells per source (0 for the conventional technique).
+    pub mean_shells: f64,
+}
+
+impl Row {
+    /// Exact per-source means of the counters, in [`Counters::NAMES`] order.
+    pub fn mean_values(&self) -> [f64; 7] {
+        let n = self.sources.max(1) as f64;
+        self.total.values().map(|v| v / n)
+    }
+
+    /// The exact per-source mean of the counter named `name` (one of [`Counters::NAMES`]).
+    pub fn mean_of(&self, name: &str) -> Option<f64> {
+        let i = Counters::NAMES.iter().position(|n| *n == name)?;
+        Some(self.mean_values()[i])
+    }
+}
+
+/// What [`run`] did.
+#[derive(Clone, Debug)]
+pub struct FigureReport {
+    pub options: FigureOptions,
+    pub rows: Vec<Row>,
+    /// Files written, in order.
+    pub files: Vec<PathBuf>,
+    /// Scenes generated.
+    pub scenes: usize,
+    /// `(scene, source)` jobs traced (each by the three techniques).
+    pub jobs: usize,
+    /// Rays on which a shelling technique's nearest hit differed from the conventional one's
+    /// (expected 0: all techniques share one hit definition).
+    pub disagreements: u64,
+    /// Wall time of the measurement.
+    pub elapsed: Duration,
+}
+
+impl fmt::Display for FigureReport {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let o = &self.options;
+        writeln!(
+            f,
+            "{} scenes ({} lengths × {} seeds) of {} segments, {} sources each, {} rays per source ({} set): \
+             {} jobs in {:.2} s",
+            self.scenes,
+            o.lengths.len(),
+            o.seeds,
+            o.count,
+            o.sources,
+            o.rays,
+            o.ray_set,
+            self.jobs,
+            self.elapsed.as_secs_f64()
+        )?;
+        writeln!(f, "per-source means:")?;
+        writeln!(
+            f,
+            "{:>8} {:<14}{:>12}{:>12}{:>12}{:>12}{:>10}{:>8}{:>10}{:>7}{:>9}{:>9}",
+            "length",
+            "method",
+            "read before",
+            "read after",
+            "cells",
+            "tests",
+            "actual",
+            "ADLC",
+            "ADLC est.",
+            "S",
+            "sectors",
+            "shells"
+        )?;
+        for r in &self.rows {
+            let v = r.mean_values();
+            let s = r.s_measured.map_or_else(|| "-".to_string(), |s| format!("{s:.3}"));
+            writeln!(
+                f,
+                "{:>8} {:<14}{:>12.1}{:>12.1}{:>12.1}{:>12.1}{:>10.1}{:>8.2}{:>10.2}{:>7}{:>9.1}{:>9.1}",
+                r.length,
+                r.method.name(),
+                v[0],
+                v[1],
+                v[2],
+                v[3],
+                v[4],
+                v[5],
+                v[6],
+                s,
+                r.mean_sectors,
+                r.mean_shells
+            )?;
+        }
+        if self.disagreements > 0 {
+            writeln!(
+                f,
+                "WARNING: {} rays where a shelling technique's hit differs from the conventional one",
+                self.disagreements
+            )?;
+        }
+        writeln!(f, "files written:")?;
+        for p in &self.files {
+            writeln!(f, "  {}", p.display())?;
+        }
+        Ok(())
+    }
+}
+
+/// Counters and shell statistics of one `(scene, source)` job, per technique of [`METHODS`].
+struct JobResult {
+    length_index: usize,
+    per_method: [(Counters, ShellStats); 3],
+    disagreements: u64,
+}
+
+/// Runs the workload; returns the rows (one per length and technique) and the number of rays on
+/// which the shelling techniques disagreed with the conventional one.
+fn measure_inner(opts: &FigureOptions) -> Result<(Vec<Row>, usize, usize, u64)> {
+    opts.validate()?;
+
+    // Build every scene once (in parallel).
+    let specs: Vec<(usize, usize)> =
+        (0..opts.lengths.len()).flat_map(|i| (0..opts.seeds).map(move |s| (i, s))).collect();
+    let scenes: Vec<(usize, Prepared)> = specs
+        .par_iter()
+        .map(|&(i, s)| {
+            let length = opts.lengths[i];
+            let seed = scene_seed(i, s);
+            let sc = scene::generate(opts.count, length, seed, scene::PAPER_WORLD)
+                .map_err(|e| anyhow!("generating the scene of length {length}, seed {seed}: {e}"))?;
+            Ok((i, Prepared::new(sc, opts.grid)))
+        })
+        .collect::<Result<_>>()?;
+
+    let jobs: Vec<(usize, usize)> = scenes
+        .iter()
+        .enumerate()
+        .flat_map(|(j, (_, p))| {
+            source_patches(p.scene.segments.len(), opts.sources).into_iter().map(move |k| (j, k))
+        })
+        .collect();
+
+    let bar = if opts.progress {
+        let b = indicatif::ProgressBar::new(jobs.len() as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "tracing {bar:40} {pos}/{len} sources [{elapsed_precise}, eta {eta}]",
+        ) {
+            b.set_style(style);
+        }
+        b
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+
+    let results: Vec<JobResult> = jobs
+        .par_iter()
+        .map(|&(j, k)| {
+            let (length_index, prepared) = &scenes[j];
+            let bundle = prepared.patch_bundle(k, opts.ray_set, opts.rays).map_err(|e| {
+                anyhow!("source patch {k} of a scene of length {}: {e}", opts.lengths[*length_index])
+            })?;
+            let traced = METHODS.map(|m| prepared.trace(m, &bundle, &opts.shells));
+            let disagreements = traced[1..]
+                .iter()
+                .map(|t| t.hits.iter().zip(&traced[0].hits).filter(|(a, b)| a != b).count() as u64)
+                .sum();
+            bar.inc(1);
+            Ok(JobResult {
+                length_index: *length_index,
+                per_method: traced.map(|t| (t.counters, t.stats)),
+                disagreements,
+            })
+        })
+        .collect::<Result<_>>()?;
+    bar.finish_and_clear();
+
+    // Sum in job order (deterministic), then average.
+    #[derive(Default, Clone, Copy)]
+    struct Acc {
+        total: Counters,
+        s_sum: f64,
+        sectors: u64,
+        shells: u64,
+        n: usize,
+    }
+    let mut acc = vec![[Acc::default(); 3]; opts.lengths.len()];
+    let mut disagreements = 0;
+    for r in &results {
+        disagreements += r.disagreements;
+        for (a, (c, st)) in acc[r.length_index].iter_mut().zip(&r.per_method) {
+            a.total += *c;
+            a.s_sum += st.leaving_fraction();
+            a.sectors += st.sectors;
+            a.shells += st.shells;
+            a.n += 1;
+        }
+    }
+    let mut rows = Vec::with_capacity(opts.lengths.len() * METHODS.len());
+    for (i, &length) in opts.lengths.iter().enumerate() {
+        for (m, a) in METHODS.iter().zip(&acc[i]) {
+            let n = a.n.max(1) as f64;
+            let t = a.total;
+            let avg = |v: u64| (v as f64 / n).round() as u64;
+            let mean = Counters {
+                patches_read_before_screening: avg(t.patches_read_before_screening),
+                patches_read_after_screening: avg(t.patches_read_after_screening),
+                cells_traversed: avg(t.cells_traversed),
+                intersection_computations: avg(t.intersection_computations),
+                actual_intersections: avg(t.actual_intersections),
+                adlc_true: t.adlc_true / n,
+                adlc_estimated: t.adlc_estimated / n,
+            };
+            let shelling = *m != Method::Conventional;
+            rows.push(Row {
+                length,
+                method: *m,
+                sources: a.n,
+                mean,
+                total: t,
+                s_measured: shelling.then(|| a.s_sum / n),
+                mean_sectors: a.sectors as f64 / n,
+                mean_shells: a.shells as f64 / n,
+            });
+        }
+    }
+    Ok((rows, scenes.len(), jobs.len(), disagreements))
+}
+
+/// Runs the Section 5 workload and returns one row per length (in the order of
+/// [`FigureOptions::lengths`]) and technique (in the order of [`METHODS`]). Writes nothing.
+pub fn measure(opts: &FigureOptions) -> Result<Vec<Row>> {
+    Ok(measure_inner(opts)?.0)
+}
+
+/// Runs the workload and writes `figures.csv` and the SVG figures into `opts.out`.
+pub fn run(opts: &FigureOptions) -> Result<FigureReport> {
+    let start = Instant::now();
+    let (rows, scenes, jobs, disagreements) = measure_inner(opts)?;
+    let elapsed = start.elapsed();
+    std::fs::create_dir_all(&opts.out)
+        .with_context(|| format!("creating the output directory {}", opts.out.display()))?;
+    let mut files = Vec::new();
+    let mut write = |name: &str, text: String| -> Result<()> {
+        let path = opts.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
+        files.push(path);
+        Ok(())
+    };
+    write("figures.csv", csv(&rows))?;
+    for (name, svg) in figure_svgs(opts, &rows)? {
+        write(name, svg)?;
+    }
+    Ok(FigureReport { options: opts.clone(), rows, files, scenes, jobs, disagreements, elapsed })
+}
+
+/// Formats a number for the CSV: at most 6 decimals, no trailing zeros.
+fn csv_num(v: f64) -> String {
+    let s = format!("{v:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+/// The CSV text: header, then one line per row.
+fn csv(rows: &[Row]) -> String {
+    let mut out = format!("length,method,sources,{},s_measured,sectors,shells\n", Counters::NAMES.join(","));
+    for r in rows {
+        let mut cols = vec![csv_num(r.length), r.method.name().to_string(), r.sources.to_string()];
+        cols.extend(r.mean_values().iter().map(|&v| csv_num(v)));
+        cols.push(r.s_measured.map(csv_num).unwrap_or_default());
+        cols.push(csv_num(r.mean_sectors));
+        cols.push(csv_num(r.mean_shells));
+        out.push_str(&cols.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figures
+// ---------------------------------------------------------------------------------------------
+
+const RED: RGBColor = RGBColor(0xd6, 0x27, 0x28);
+const BLUE_: RGBColor = RGBColor(0x1f, 0x77, 0xb4);
+const GREEN_: RGBColor = RGBColor(0x2c, 0xa0, 0x2c);
+const GREY: RGBColor = RGBColor(0x44, 0x44, 0x44);
+
+fn method_color(m: Method) -> RGBColor {
+    match m {
+        Method::Conventional => RED,
+        Method::Stochastic => BLUE_,
+        Method::Deterministic => GREEN_,
+        Method::Brute => GREY,
+    }
+}
+
+fn method_marker(m: Method) -> Marker {
+    match m {
+        Method::Conventional => Marker::Square,
+        Method::Stochastic => Marker::Triangle,
+        _ => Marker::Circle,
+    }
+}
+
+/// How the points of a series are drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Marker {
+    None,
+    Circle,
+    Triangle,
+    Square,
+    Cross,
+}
+
+/// One curve of a chart.
+#[derive(Clone, Debug)]
+struct Series {
+    label: String,
+    points: Vec<(f64, f64)>,
+    color: RGBColor,
+    /// Join the points with a line.
+    line: bool,
+    marker: Marker,
+    /// Text drawn next to each point (empty: none).
+    point_labels: Vec<String>,
+}
+
+impl Series {
+    fn new(label: impl Into<String>, points: Vec<(f64, f64)>, color: RGBColor, marker: Marker) -> Series {
+        Series { label: label.into(), points, color, line: true, marker, point_labels: Vec::new() }
+    }
+}
+
+/// The x axis of a chart.
+#[derive(Clone, Debug)]
+enum XAxis {
+    /// Log₂ scale with ticks exactly at the given values.
+    Log2(Vec<f64>),
+    /// Linear over the range.
+    Linear(f64, f64),
+}
+
+/// A chart: title, axis labels, series. The y axis is logarithmic when every value is positive
+/// and they span a factor of 10 or more, linear otherwise.
+struct Chart {
+    title: String,
+    x_label: String,
+    y_label: String,
+    x: XAxis,
+    series: Vec<Series>,
+}
+
+/// Formats a tick value compactly (at most 4 significant digits; powers of ten as `1e6`).
+fn tick_label(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if !(1e-3..1e6).contains(&a) {
+        let e = a.log10().floor();
+        let m = v / 10f64.powf(e);
+        let m = format!("{m:.2}");
+        let m = m.trim_end_matches('0').trim_end_matches('.');
+        return format!("{m}e{e}");
+    }
+    let digits = (3 - a.log10().floor() as i32).clamp(0, 6) as usize;
+    let s = format!("{v:.digits$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+/// "Nice" linear ticks over `[lo, hi]`, about six of them.
+fn linear_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let span = (hi - lo).max(f64::MIN_POSITIVE);
+    let raw = span / 6.0;
+    let mag = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 2.5, 5.0, 10.0].iter().map(|m| m * mag).find(|s| *s >= raw).unwrap_or(10.0 * mag);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last).map(|i| i as f64 * step).collect()
+}
+
+/// Decade ticks (1, 2, 5 × 10ᵏ, or only 10ᵏ when that is too many) inside `[lo, hi]` (both > 0),
+/// returned as log₁₀ values; and the light (minor) ticks 1..9 × 10ᵏ.
+fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    let (k0, k1) = (lo.log10().floor() as i32, hi.log10().ceil() as i32);
+    let within = |v: f64| v >= lo * (1.0 - 1e-9) && v <= hi * (1.0 + 1e-9);
+    let pick = |ms: &[f64]| -> Vec<f64> {
+        (k0..=k1)
+            .flat_map(|k| ms.iter().map(move |m| m * 10f64.powi(k)))
+            .filter(|v| within(*v))
+            .map(f64::log10)
+            .collect()
+    };
+    let mut bold = pick(&[1.0, 2.0, 5.0]);
+    if bold.len() > 10 {
+        bold = pick(&[1.0]);
+    }
+    if bold.len() < 2 {
+        bold = pick(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]);
+    }
+    let light = pick(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]);
+    (bold, light)
+}
+
+/// A linear axis whose ticks are given: `bold` (labelled, with grid lines) and `light` (minor
+/// grid lines). The charts plot transformed values (log₂ x, log₁₀ y) on it.
+struct TickAxis {
+    lo: f64,
+    hi: f64,
+    bold: Vec<f64>,
+    light: Vec<f64>,
+}
+
+impl Ranged for TickAxis {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        let f = (value - self.lo) / (self.hi - self.lo);
+        limit.0 + (f * (limit.1 - limit.0) as f64).round() as i32
+    }
+
+    fn key_points<H: KeyPointHint>(&self, hint: H) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.light.clone()
+        } else {
+            self.bold.clone()
+        }
+    }
+}
+
+/// The legend entry of a series: a short line (when the series has one) with its marker.
+fn set_legend<'a, DB: DrawingBackend + 'a>(
+    anno: &mut SeriesAnno<'a, DB>,
+    color: RGBColor,
+    line: bool,
+    marker: Marker,
+) {
+    let path_style =
+        ShapeStyle { color: color.mix(if line { 1.0 } else { 0.0 }), filled: false, stroke_width: 2 };
+    let path = move |(x, y): (i32, i32)| {
+        EmptyElement::at((x, y)) + PathElement::new(vec![(-10, 0), (10, 0)], path_style)
+    };
+    match marker {
+        Marker::None => anno.legend(path),
+        Marker::Circle => anno.legend(move |p| path(p) + Circle::new((0, 0), 4, color.filled())),
+        Marker::Triangle => anno.legend(move |p| path(p) + TriangleMarker::new((0, 0), 5, color.filled())),
+        Marker::Square => anno.legend(move |p| path(p) + Rectangle::new([(-4, -4), (4, 4)], color.filled())),
+        Marker::Cross => anno.legend(move |p| path(p) + Cross::new((0, 0), 5, color.stroke_width(2))),
+    };
+}
+
+/// Renders a chart as SVG text.
+fn render(chart: &Chart) -> Result<String> {
+    let pts = || chart.series.iter().flat_map(|s| s.points.iter().copied());
+    let ys: Vec<f64> = pts().map(|p| p.1).filter(|y| y.is_finite()).collect();
+    let (ymin, ymax) = ys.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| (a.min(y), b.max(y)));
+    let (ymin, ymax) = if ys.is_empty() { (0.0, 1.0) } else { (ymin, ymax) };
+    let log_y = ymin > 0.0 && ymax / ymin >= 10.0;
+
+    // Transformed coordinates: log₁₀ y on a log axis, log₂ x on a log₂ axis.
+    let ty = |y: f64| if log_y { y.log10() } else { y };
+    let tx = |x: f64| match chart.x {
+        XAxis::Log2(_) => x.log2(),
+        XAxis::Linear(..) => x,
+    };
+
+    // y range with headroom for the legend.
+    let (y_lo, y_hi, y_bold, y_light) = if log_y {
+        let lo = ymin / 1.5;
+        let hi = ymax * 3.0;
+        let (b, l) = log_ticks(lo, hi);
+        (lo.log10(), hi.log10(), b, l)
+    } else {
+        let lo = if ymin >= 0.0 { 0.0 } else { ymin - 0.05 * (ymax - ymin) };
+        let hi = if ymax > lo { ymax + 0.35 * (ymax - lo) } else { lo + 1.0 };
+        (lo, hi, linear_ticks(lo, hi), Vec::new())
+    };
+    let (x_lo, x_hi, x_bold) = match &chart.x {
+        XAxis::Log2(ticks) => {
+            let t: Vec<f64> = ticks.iter().map(|v| v.log2()).collect();
+            let lo = t.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = t.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            let pad = if hi > lo { 0.06 * (hi - lo) } else { 0.5 };
+            (lo - pad, hi + pad, t)
+        }
+        XAxis::Linear(lo, hi) => (*lo, *hi, linear_ticks(*lo, *hi)),
+    };
+
+    // Legend on the upper side whose data stays lower.
+    let mid = 0.5 * (x_lo + x_hi);
+    let side_max = |left: bool| {
+        pts()
+            .filter(|p| (tx(p.0) < mid) == left && p.1.is_finite() && (!log_y || p.1 > 0.0))
+            .map(|p| ty(p.1))
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let legend_pos = if side_max(true) <= side_max(false) {
+        SeriesLabelPosition::UpperLeft
+    } else {
+        SeriesLabelPosition::UpperRight
+    };
+
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (960, 640)).into_drawing_area();
+        let err = |e: &dyn fmt::Display| anyhow!("drawing {:?}: {e}", chart.title);
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let mut ctx = ChartBuilder::on(&root)
+            .caption(&chart.title, ("sans-serif", 22))
+            .margin(16)
+            .x_label_area_size(48)
+            .y_label_area_size(80)
+            .build_cartesian_2d(
+                TickAxis { lo: x_lo, hi: x_hi, bold: x_bold, light: Vec::new() },
+                TickAxis { lo: y_lo, hi: y_hi, bold: y_bold, light: y_light },
+            )
+            .map_err(|e| err(&e))?;
+        let is_log2 = matches!(chart.x, XAxis::Log2(_));
+        let x_fmt = |x: &f64| tick_label(if is_log2 { x.exp2() } else { *x });
+        let y_fmt = |y: &f64| tick_label(if log_y { 10f64.powf(*y) } else { *y });
+        ctx.configure_mesh()
+            .x_desc(chart.x_label.as_str())
+            .y_desc(chart.y_label.as_str())
+            .x_label_formatter(&x_fmt)
+            .y_label_formatter(&y_fmt)
+            .axis_desc_style(("sans-serif", 17))
+            .label_style(("sans-serif", 14))
+            .bold_line_style(BLACK.mix(0.15))
+            .light_line_style(BLACK.mix(0.05))
+            .draw()
+            .map_err(|e| err(&e))?;
+
+        for s in &chart.series {
+            let data: Vec<(f64, f64)> = s
+                .points
+                .iter()
+                .filter(|p| p.0.is_finite() && p.1.is_finite() && (!log_y || p.1 > 0.0))
+                .map(|&(x, y)| (tx(x), ty(y)))
+                .collect();
+            let color = s.color;
+            let stroke = color.stroke_width(2);
+            let fill = color.filled();
+            let marker = s.marker;
+            if s.line {
+                let anno =
+                    ctx.draw_series(LineSeries::new(data.iter().copied(), stroke)).map_err(|e| err(&e))?;
+                if marker == Marker::None {
+                    set_legend(anno.label(s.label.as_str()), color, true, marker);
+                }
+            }
+            let marker_anno = match marker {
+                Marker::None => None,
+                Marker::Circle => Some(
+                    ctx.draw_series(data.iter().map(|&p| Circle::new(p, 4, fill))).map_err(|e| err(&e))?,
+                ),
+                Marker::Triangle => Some(
+                    ctx.draw_series(data.iter().map(|&p| TriangleMarker::new(p, 5, fill)))
+                        .map_err(|e| err(&e))?,
+                ),
+                Marker::Square => Some(
+                    ctx.draw_series(
+                        data.iter().map(|&p| EmptyElement::at(p) + Rectangle::new([(-4, -4), (4, 4)], fill)),
+                    )
+                    .map_err(|e| err(&e))?,
+                ),
+                Marker::Cross => Some(
+                    ctx.draw_series(data.iter().map(|&p| Cross::new(p, 5, stroke))).map_err(|e| err(&e))?,
+                ),
+            };
+            if let Some(anno) = marker_anno {
+                set_legend(anno.label(s.label.as_str()), color, s.line, marker);
+            }
+            if !s.point_labels.is_empty() {
+                use plotters::style::text_anchor::{HPos, Pos, VPos};
+                // Right of the point in the left half of the chart, left of it in the right half.
+                let font = ("sans-serif", 14).into_font().color(&color);
+                let left = font.clone().pos(Pos::new(HPos::Left, VPos::Center));
+                let right = font.pos(Pos::new(HPos::Right, VPos::Center));
+                ctx.draw_series(data.iter().zip(&s.point_labels).map(|(&p, t)| {
+                    let (dx, style) = if p.0 > mid { (-9, right.clone()) } else { (9, left.clone()) };
+                    EmptyElement::at(p) + Text::new(t.clone(), (dx, 0), style)
+                }))
+                .map_err(|e| err(&e))?;
+            }
+        }
+        ctx.configure_series_labels()
+            .position(legend_pos)
+            .label_font(("sans-serif", 15))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.4))
+            .draw()
+            .map_err(|e| err(&e))?;
+        root.present().map_err(|e| err(&e))?;
+    }
+    Ok(svg)
+}
+
+/// The rows of technique `m`, sorted by length.
+fn rows_of(rows: &[Row], m: Method) -> Vec<&Row> {
+    let mut v: Vec<&Row> = rows.iter().filter(|r| r.method == m).collect();
+    v.sort_by(|a, b| a.length.total_cmp(&b.length));
+    v
+}
+
+/// `(length, mean of counter i)` for technique `m`.
+fn counter_points(rows: &[Row], m: Method, i: usize) -> Vec<(f64, f64)> {
+    rows_of(rows, m).iter().map(|r| (r.length, r.mean_values()[i])).collect()
+}
+
+/// The six figures as `(file name, SVG text)`.
+fn figure_svgs(opts: &FigureOptions, rows: &[Row]) -> Result<Vec<(&'static str, String)>> {
+    let mut lengths = opts.lengths.clone();
+    lengths.sort_by(f64::total_cmp);
+    let workload =
+        format!("N = {}, R = {}, {} sources × {} seeds", opts.count, opts.rays, opts.sources, opts.seeds);
+    let x_label = "segment length L (log₂ scale)".to_string();
+    let per_method = |i: usize| -> Vec<Series> {
+        METHODS
+            .iter()
+            .map(|&m| Series::new(m.name(), counter_points(rows, m, i), method_color(m), method_marker(m)))
+            .collect()
+    };
+    let chart = |title: &str, y_label: &str, series: Vec<Series>| Chart {
+        title: format!("{title} ({workload})"),
+        x_label: x_label.clone(),
+        y_label: y_label.to_string(),
+        x: XAxis::Log2(lengths.clone()),
+        series,
+    };
+
+    let mut out = Vec::new();
+    out.push((
+        "fig08_patches_read_before_screening.svg",
+        render(&chart(
+            "Fig. 8: patches read before screening",
+            "patches read before screening per source",
+            per_method(0),
+        ))?,
+    ));
+    out.push((
+        "fig09_patches_read_after_screening.svg",
+        render(&chart(
+            "Fig. 9: patches read after screening",
+            "patches read after screening per source",
+            per_method(1),
+        ))?,
+    ));
+    out.push((
+        "fig10_cells_traversed.svg",
+        render(&chart("Fig. 10: cells traversed", "cells traversed per source", per_method(2)))?,
+    ));
+    let mut s11 = per_method(3);
+    let mut actual = Series::new(
+        "actual intersections",
+        counter_points(rows, Method::Conventional, 4),
+        GREY,
+        Marker::Cross,
+    );
+    actual.line = true;
+    s11.push(actual);
+    out.push((
+        "fig11_intersection_computations.svg",
+        render(&chart("Fig. 11: intersection computations", "ray-patch intersection tests per source", s11))?,
+    ));
+    let s13 = vec![
+        Series::new(
+            "ADLC true (all methods)",
+            counter_points(rows, Method::Conventional, 5),
+            GREY,
+            Marker::Cross,
+        ),
+        Series::new(
+            "ADLC estimated: stochastic",
+            counter_points(rows, Method::Stochastic, 6),
+            method_color(Method::Stochastic),
+            method_marker(Method::Stochastic),
+        ),
+        Series::new(
+            "ADLC estimated: deterministic",
+            counter_points(rows, Method::Deterministic, 6),
+            method_color(Method::Deterministic),
+            method_marker(Method::Deterministic),
+        ),
+    ];
+    out.push((
+        "fig13_adlc.svg",
+        render(&chart(
+            "Fig. 13: average degree of local coherence",
+            "ADLC (rays per distinct patch hit)",
+            s13,
+        ))?,
+    ));
+    out.push(("fig07_k1.svg", render(&k1_chart(rows, &workload)?)?));
+    Ok(out)
+}
+
+/// Figure 7: the curve `K₁(S)` with the measured `S` of the stochastic runs marked on it.
+fn k1_chart(rows: &[Row], workload: &str) -> Result<Chart> {
+    let measured: Vec<(f64, f64)> = rows_of(rows, Method::Stochastic)
+        .iter()
+        .filter_map(|r| r.s_measured.map(|s| (r.length, s)))
+        .filter(|(_, s)| crate::model::k1(*s).is_ok())
+        .collect();
+    let s_max = measured.iter().map(|m| m.1).fold(0.95f64, f64::max).min(0.99);
+    let steps = 400;
+    let curve: Vec<(f64, f64)> = (0..=steps)
+        .map(|i| {
+            let s = s_max * i as f64 / steps as f64;
+            crate::model::k1(s).map(|k| (s, k))
+        })
+        .collect::<Result<_, _>>()
+        .map_err(|e| anyhow!("evaluating K1: {e}"))?;
+    let mut curve = Series::new("K₁(S) = (1+S²)/(1−S²)³", curve, GREY, Marker::None);
+    curve.line = true;
+    let mut points = Vec::new();
+    let mut labels = Vec::new();
+    for (l, s) in &measured {
+        let k = crate::model::k1(*s).map_err(|e| anyhow!("evaluating K1: {e}"))?;
+        points.push((*s, k));
+        labels.push(format!("L={} (S={s:.3})", tick_label(*l)));
+    }
+    let mut marks =
+        Series::new("measured S (stochastic)", points, method_color(Method::Stochastic), Marker::Circle);
+    marks.line = false;
+    marks.point_labels = labels;
+    Ok(Chart {
+        title: format!("Fig. 7: K₁(S) with the measured S ({workload})"),
+        x_label: "S (fraction of rays leaving a shell)".into(),
+        y_label: "K₁(S)".into(),
+        x: XAxis::Linear(0.0, 1.0),
+        series: vec![curve, marks],
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tiny(out: PathBuf) -> FigureOptions {
+        FigureOptions {
+            out,
+            seeds: 1,
+            sources: 3,
+            rays: 64,
+            count: 200,
+            lengths: vec![8.0, 64.0],
+            ray_set: RaySet::Angle,
+            grid: GridParams::default(),
+            shells: ShellParams::default(),
+            progress: false,
+        }
+    }
+
+    fn temp_dir(tag: &str) -> PathBuf {
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_nanos())
+            .unwrap_or(0);
+        std::env::temp_dir().join(format!("shelling-figures-{tag}-{}-{nanos}", std::process::id()))
+    }
+
+    const SVGS: [&str; 6] = [
+        "fig08_patches_read_before_screening.svg",
+        "fig09_patches_read_after_screening.svg",
+        "fig10_cells_traversed.svg",
+        "fig11_intersection_computations.svg",
+        "fig13_adlc.svg",
+        "fig07_k1.svg",
+    ];
+
+    #[test]
+    fn tiny_run_writes_csv_and_svgs() {
+        let dir = temp_dir("run");
+        let opts = tiny(dir.clone());
+        let report = run(&opts).expect("tiny run");
+        assert_eq!(report.rows.len(), 6);
+        assert_eq!(report.disagreements, 0, "shelling hits differ from conventional ones");
+
+        let csv = std::fs::read_to_string(dir.join("figures.csv")).expect("csv");
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(lines.len(), 1 + 2 * 3);
+        assert_eq!(
+            lines[0],
+            "length,method,sources,patches_read_before_screening,patches_read_after_screening,\
+             cells_traversed,intersection_computations,actual_intersections,adlc_true,adlc_estimated,\
+             s_measured,sectors,shells"
+        );
+        for line in &lines[1..] {
+            let cols: Vec<&str> = line.split(',').collect();
+            assert_eq!(cols.len(), 13, "{line}");
+            assert_eq!(cols[1] == "conventional", cols[10].is_empty(), "{line}");
+        }
+
+        for name in SVGS {
+            let p = dir.join(name);
+            let text = std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+            assert!(text.contains("<svg"), "{name} is not an SVG");
+            assert!(text.contains("<text"), "{name} has no text");
+            assert!(report.files.contains(&p));
+        }
+        let fig11 = std::fs::read_to_string(dir.join(SVGS[3])).unwrap();
+        for label in ["conventional", "stochastic", "deterministic", "actual intersections"] {
+            assert!(fig11.contains(label), "fig 11 legend lacks {label}");
+        }
+        let shown = report.to_string();
+        assert!(shown.contains("stochastic") && shown.contains("figures.csv"));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn rows_satisfy_invariants() {
+        let opts = tiny(temp_dir("unused"));
+        let rows = measure(&opts).expect("measure");
+        assert_eq!(rows.len(), 6);
+        for (r, (l, m)) in
+            rows.iter().zip([8.0, 64.0].iter().flat_map(|l| METHODS.iter().map(move |m| (*l, *m))))
+        {
+            assert_eq!((r.length, r.method), (l, m));
+            assert_eq!(r.sources, 3);
+            let v = r.mean_values();
+            assert!(v[1] <= v[0], "{r:?}: after screening exceeds before");
+            assert!(v[3] >= v[4], "{r:?}: fewer tests than actual intersections");
+            assert!(r.mean.patches_read_after_screening <= r.mean.patches_read_before_screening);
+            assert!(r.mean.intersection_computations >= r.mean.actual_intersections);
+            match r.method {
+                Method::Conventional => {
+                    assert!(r.s_measured.is_none());
+                    assert_eq!(r.mean.adlc_estimated, r.mean.adlc_true);
+                }
+                _ => {
+                    let s = r.s_measured.expect("shelling rows measure S");
+                    assert!((0.0..=1.0).contains(&s), "{r:?}");
+                    assert!(r.mean_sectors >= 1.0 && r.mean_shells >= 1.0, "{r:?}");
+                }
+            }
+        }
+        // All techniques find the same hits: the same actual intersections and true ADLC.
+        for chunk in rows.chunks(3) {
+            assert!(chunk
+                .iter()
+                .all(|r| r.total.actual_intersections == chunk[0].total.actual_intersections));
+            assert!(chunk.iter().all(|r| (r.total.adlc_true - chunk[0].total.adlc_true).abs() < 1e-9));
+        }
+        // Deterministic: the same options give the same rows.
+        assert_eq!(measure(&opts).expect("again"), rows);
+    }
+
+    #[test]
+    fn bad_options_are_errors() {
+        let base = tiny(temp_dir("bad"));
+        let cases: Vec<(&str, FigureOptions)> = vec![
+            ("sources 0", FigureOptions { sources: 0, ..base.clone() }),
+            ("seeds 0", FigureOptions { seeds: 0, ..base.clone() }),
+            ("rays 0", FigureOptions { rays: 0, ..base.clone() }),
+            ("count 0", FigureOptions { count: 0, ..base.clone() }),
+            ("sources > count", FigureOptions { sources: 201, ..base.clone() }),
+            ("no lengths", FigureOptions { lengths: vec![], ..base.clone() }),
+            ("NaN length", FigureOptions { lengths: vec![8.0, f64::NAN], ..base.clone() }),
+            ("zero length", FigureOptions { lengths: vec![0.0], ..base.clone() }),
+            ("negative length", FigureOptions { lengths: vec![-4.0], ..base.clone() }),
+            ("infinite length", FigureOptions { lengths: vec![f64::INFINITY], ..base.clone() }),
+            ("duplicate length", FigureOptions { lengths: vec![8.0, 8.0], ..base.clone() }),
+        ];
+        for (what, o) in cases {
+            assert!(measure(&o).is_err(), "{what} accepted by measure");
+            assert!(run(&o).is_err(), "{what} accepted by run");
+        }
+        assert!(!base.out.exists(), "a rejected run created its output directory");
+    }
+
+    #[test]
+    fn helpers() {
+        assert_eq!(source_patches(10, 3), vec![0, 3, 6]);
+        assert_eq!(source_patches(5, 5), vec![0, 1, 2, 3, 4]);
+        assert_eq!(scene_seed(2, 7), 2007);
+        assert_eq!(tick_label(8.0), "8");
+        assert_eq!(tick_label(2.0f64.log2().exp2()), "2");
+        assert_eq!(tick_label(0.5), "0.5");
+        assert_eq!(tick_label(1e6), "1e6");
+        assert_eq!(csv_num(1.5), "1.5");
+        assert_eq!(csv_num(3.0), "3");
+        let t = linear_ticks(0.0, 10.0);
+        assert!(t.len() >= 4 && t[0] == 0.0);
+        let (bold, _) = log_ticks(1.0, 1000.0);
+        assert!(bold.contains(&0.0) && bold.iter().any(|v| (v - 3.0).abs() < 1e-12));
+    }
+}

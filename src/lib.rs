@@ -1,0 +1,20 @@
+//! # shelling
+//!
+//! A hardware/software co-design kit for the *shelling* space partitioning of Shen, Deprettere
+//! and Dewilde (EGGH 1990): form-factor ray casting of the radiosity method mapped onto a
+//! pipelined intersection architecture.
+//!
+//! This crate is the golden model and the experiments: scenes ([`scene`]), ray bundles
+//! ([`rays`]), the grid with macro-regions ([`grid`]), the four tracers ([`trace`]) with the
+//! paper's counters ([`counters`]), the analytic model of Section 4 ([`model`]) and the
+//! reproduction of Section 5's figures ([`figures`]). See `ARCHITECTURE.md` for the data flow.
+
+pub mod counters;
+pub mod figures;
+pub mod geom;
+pub mod grid;
+pub mod model;
+pub mod rays;
+pub mod run;
+pub mod scene;
+pub mod trace;

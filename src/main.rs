@@ -1,0 +1,321 @@
+//! The `shelling` command line: scenes, tracing, the paper's figures and the demo.
+
+use anyhow::{bail, Context, Result};
+use clap::{Args, Parser, Subcommand};
+use shelling::counters::Counters;
+use shelling::figures::{self, FigureOptions};
+use shelling::geom::Vec2;
+use shelling::grid::GridParams;
+use shelling::rays::{Bundle, RaySet, Source};
+use shelling::run::{Prepared, TraceJson};
+use shelling::scene::{self, Scene};
+use shelling::trace::{Method, ShellParams};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "shelling",
+    version,
+    about = "Shelling: form-factor ray casting on a pipelined intersection architecture",
+    long_about = "Golden model and experiments of Shen, Deprettere and Dewilde (EGGH 1990): the \
+                  conventional technique and the stochastic and deterministic shelling techniques \
+                  over a uniform grid with macro-regions, with the paper's counters and figures."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the golden model on the built-in default scene and print the counters table.
+    Demo(DemoArgs),
+    /// Scene files: generate the paper's workload.
+    Scene {
+        #[command(subcommand)]
+        command: SceneCommand,
+    },
+    /// Trace one source's ray bundle through a scene with one technique.
+    Trace(TraceArgs),
+    /// Reproduce the paper's Figures 7, 8, 9, 10, 11 and 13 (CSV and SVG plots).
+    Figures(FiguresArgs),
+}
+
+#[derive(Subcommand)]
+enum SceneCommand {
+    /// Write N random segments of length L inside [0, 1024)², seeded and reproducible.
+    Gen(GenArgs),
+}
+
+#[derive(Args)]
+struct GenArgs {
+    /// Number of segments.
+    #[arg(long, default_value_t = 1000)]
+    count: usize,
+    /// Length of every segment, in world units.
+    #[arg(long, default_value_t = 32.0)]
+    length: f64,
+    /// Seed of the random generator: the same seed gives the same scene on every machine.
+    #[arg(long, default_value_t = 7)]
+    seed: u64,
+    /// Output file; standard output when absent.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+/// Options shared by every command that traces: the grid and the shell structure.
+#[derive(Args, Clone)]
+struct TuneArgs {
+    /// Grid resolution: target number of cells per segment (λ); the grid has about λ·N cells.
+    #[arg(long, default_value_t = 4.0)]
+    cells_per_segment: f64,
+    /// Shell depth Γ in world units (default: 4 cell sides).
+    #[arg(long)]
+    shell_depth: Option<f64>,
+    /// Widest sector in rays (the ray memory of one processing element).
+    #[arg(long, default_value_t = ShellParams::default().max_sector)]
+    max_sector: usize,
+}
+
+impl TuneArgs {
+    fn grid(&self) -> Result<GridParams> {
+        if !(self.cells_per_segment.is_finite() && self.cells_per_segment > 0.0) {
+            bail!("--cells-per-segment must be a positive number, got {}", self.cells_per_segment);
+        }
+        Ok(GridParams { cells_per_segment: self.cells_per_segment, cells_per_axis: None })
+    }
+
+    fn shells(&self) -> Result<ShellParams> {
+        let p = ShellParams {
+            shell_depth: self.shell_depth,
+            max_sector: self.max_sector,
+            min_sector: ShellParams::default().min_sector.min(self.max_sector),
+            ..ShellParams::default()
+        };
+        p.validate().map_err(|e| anyhow::anyhow!("{e}"))?;
+        Ok(p)
+    }
+}
+
+#[derive(Args)]
+struct TraceArgs {
+    /// Scene file (JSON, see SCENES.md).
+    #[arg(long)]
+    scene: PathBuf,
+    /// Source patch: the origin is its midpoint, the normal its normal; it is excluded from hits.
+    #[arg(long, conflicts_with_all = ["origin", "normal"], required_unless_present = "origin")]
+    source: Option<usize>,
+    /// Free origin X,Y (with --normal) instead of a source patch.
+    #[arg(long, value_parser = parse_vec2, requires = "normal", allow_hyphen_values = true)]
+    origin: Option<Vec2>,
+    /// Normal NX,NY of a free origin (normalised; must be non-zero).
+    #[arg(long, value_parser = parse_vec2, requires = "origin", allow_hyphen_values = true)]
+    normal: Option<Vec2>,
+    /// Number of rays over the half-circle.
+    #[arg(long, default_value_t = 1024)]
+    rays: usize,
+    /// Ray set: `angle` (uniform in angle) or `sine` (uniform in sin φ, form factor 1/R each).
+    #[arg(long, value_enum, default_value_t = RaySet::Angle)]
+    ray_set: RaySet,
+    /// Tracing technique.
+    #[arg(long, value_enum, default_value_t = Method::Stochastic)]
+    method: Method,
+    /// Print the full result as JSON (every ray's hit and the counters).
+    #[arg(long)]
+    json: bool,
+    #[command(flatten)]
+    tune: TuneArgs,
+}
+
+#[derive(Args)]
+struct DemoArgs {
+    /// Seed of the default scene.
+    #[arg(long, default_value_t = 7)]
+    seed: u64,
+    /// Segment length of the default scene.
+    #[arg(long, default_value_t = 32.0)]
+    length: f64,
+    /// Source patch.
+    #[arg(long, default_value_t = 0)]
+    source: usize,
+    /// Number of rays.
+    #[arg(long, default_value_t = 1024)]
+    rays: usize,
+}
+
+#[derive(Args)]
+struct FiguresArgs {
+    /// Output directory for figures.csv and the SVG plots.
+    #[arg(long)]
+    out: PathBuf,
+    /// Scenes (seeds) per segment length.
+    #[arg(long, default_value_t = 5)]
+    seeds: usize,
+    /// Source patches per scene.
+    #[arg(long, default_value_t = 100)]
+    sources: usize,
+    /// Rays per source.
+    #[arg(long, default_value_t = 1024)]
+    rays: usize,
+    /// Segments per scene.
+    #[arg(long, default_value_t = 1000)]
+    count: usize,
+    /// Segment lengths, comma separated.
+    #[arg(long, value_delimiter = ',', default_values_t = vec![4.0, 8.0, 16.0, 32.0, 64.0, 128.0])]
+    lengths: Vec<f64>,
+    /// Ray set.
+    #[arg(long, value_enum, default_value_t = RaySet::Angle)]
+    ray_set: RaySet,
+    /// No progress bar.
+    #[arg(long)]
+    quiet: bool,
+    #[command(flatten)]
+    tune: TuneArgs,
+}
+
+fn parse_vec2(s: &str) -> Result<Vec2, String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 2 {
+        return Err(format!("expected two numbers X,Y, got {s:?}"));
+    }
+    let num = |p: &str| -> Result<f64, String> {
+        let v: f64 = p.parse().map_err(|_| format!("{p:?} is not a number"))?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(format!("{p:?} is not a finite number"))
+        }
+    };
+    Ok(Vec2::new(num(parts[0])?, num(parts[1])?))
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Demo(a) => demo(a),
+        Command::Scene { command: SceneCommand::Gen(a) } => {
+            let s = scene::generate(a.count, a.length, a.seed, scene::PAPER_WORLD)?;
+            match a.out {
+                Some(path) => s.save(&path)?,
+                None => println!("{}", s.to_json()),
+            }
+            Ok(())
+        }
+        Command::Trace(a) => trace_cmd(a),
+        Command::Figures(a) => {
+            let opts = FigureOptions {
+                out: a.out,
+                seeds: a.seeds,
+                sources: a.sources,
+                rays: a.rays,
+                count: a.count,
+                lengths: a.lengths,
+                ray_set: a.ray_set,
+                grid: a.tune.grid()?,
+                shells: a.tune.shells()?,
+                progress: !a.quiet,
+            };
+            let report = figures::run(&opts)?;
+            println!("{report}");
+            Ok(())
+        }
+    }
+}
+
+fn trace_cmd(a: TraceArgs) -> Result<()> {
+    let scene = Scene::load(&a.scene)?;
+    let prepared = Prepared::new(scene, a.tune.grid()?);
+    let source = match (a.source, a.origin, a.normal) {
+        (Some(k), _, _) => Source::from_patch(&prepared.scene.segments, k)?,
+        (None, Some(o), Some(n)) => Source::at(o, n)?,
+        _ => bail!("give either --source K or both --origin X,Y and --normal NX,NY"),
+    };
+    let bundle = Bundle::new(source, a.ray_set, a.rays)?;
+    let result = prepared.trace(a.method, &bundle, &a.tune.shells()?);
+    if a.json {
+        let json = serde_json::to_string_pretty(&TraceJson::new(&result, &bundle))
+            .context("serialising the trace")?;
+        println!("{json}");
+    } else {
+        let hits = result.hits.iter().flatten().count();
+        println!(
+            "{} rays from ({:.3}, {:.3}) traced with {}: {} hit a patch, {} escaped",
+            bundle.len(),
+            source.origin.x,
+            source.origin.y,
+            a.method,
+            hits,
+            bundle.len() - hits
+        );
+        print_counters(&[(a.method, result.counters)]);
+        if result.stats.shells > 0 {
+            println!(
+                "shell structure: {} sectors, {} shells, S (fraction of rays leaving a shell) = {:.3}",
+                result.stats.sectors,
+                result.stats.shells,
+                result.stats.leaving_fraction()
+            );
+        }
+    }
+    Ok(())
+}
+
+fn demo(a: DemoArgs) -> Result<()> {
+    let scene = scene::generate(1000, a.length, a.seed, scene::PAPER_WORLD)?;
+    let prepared = Prepared::new(scene, GridParams::default());
+    let bundle = prepared.patch_bundle(a.source, RaySet::Angle, a.rays)?;
+    let params = ShellParams::default();
+    println!(
+        "default scene: 1000 segments of length {} in [0, 1024)², seed {}; grid {}×{} ({} macro-regions)",
+        a.length,
+        a.seed,
+        prepared.grid.nx,
+        prepared.grid.ny,
+        prepared.grid.region_count()
+    );
+    println!("source: patch {} ({} rays, angle set)\n", a.source, a.rays);
+    let oracle = prepared.trace(Method::Brute, &bundle, &params);
+    let mut rows = Vec::new();
+    for method in Method::ALL {
+        let r = prepared.trace(method, &bundle, &params);
+        let disagree = r.hits.iter().zip(&oracle.hits).filter(|(x, y)| x != y).count();
+        if disagree > 0 {
+            bail!("{method} disagrees with brute force on {disagree} rays");
+        }
+        rows.push((method, r.counters));
+    }
+    print_counters(&rows);
+    println!("\nevery technique returned the brute-force nearest hit for all {} rays", bundle.len());
+    Ok(())
+}
+
+fn print_counters(rows: &[(Method, Counters)]) {
+    let short = ["read before", "read after", "cells", "tests", "actual", "ADLC", "ADLC est."];
+    print!("{:<14}", "method");
+    for s in short {
+        print!("{s:>12}");
+    }
+    println!();
+    for (m, c) in rows {
+        print!("{:<14}", m.name());
+        for (i, v) in c.values().iter().enumerate() {
+            if i >= 5 {
+                print!("{v:>12.2}");
+            } else {
+                print!("{v:>12}");
+            }
+        }
+        println!();
+    }
+}

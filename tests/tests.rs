@@ -1,0 +1,2 @@
+mod scene_loader;
+mod tracers;
