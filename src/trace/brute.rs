@@ -3,17 +3,15 @@
 //! Counters: every patch is read for every ray (`R·N` before screening); the patches that pass
 //! the screener are tested (`after screening` = `intersection computations`). No cells.
 
-use super::{offer, PatchCache, SceneView, Screen};
+use super::{offer, screen, SceneView, Screen};
 use crate::counters::Counters;
 use crate::geom::{hit_front, Hit};
 use crate::rays::Bundle;
 
 pub(super) fn trace(scene: SceneView<'_>, bundle: &Bundle) -> (Vec<Option<Hit>>, Counters) {
-    let cache = PatchCache::new(scene, bundle);
-    let screens: Vec<Screen> =
-        scene.segments.iter().enumerate().map(|(p, s)| cache.screen_of(p as u32, s)).collect();
-    let passing: Vec<u32> =
-        (0..scene.segments.len() as u32).filter(|&p| screens[p as usize] == Screen::Pass).collect();
+    let passing: Vec<u32> = (0..scene.segments.len() as u32)
+        .filter(|&p| screen(bundle, p, &scene.segments[p as usize]) == Screen::Pass)
+        .collect();
     let mut c = Counters::default();
     let r = bundle.len() as u64;
     c.patches_read_before_screening = r * scene.segments.len() as u64;

@@ -6,47 +6,55 @@
 //! the first cell whose exit lies beyond the nearest hit found so far (by more than the grid's
 //! rounding margin, so exact ties across a cell boundary are still resolved by index).
 
-use super::{offer, PatchCache, SceneView, Screen};
+use super::{offer, screen, with_scratch, SceneView, Screen};
 use crate::counters::Counters;
 use crate::geom::{hit_front, Hit};
 use crate::rays::Bundle;
 
 pub(super) fn trace(scene: SceneView<'_>, bundle: &Bundle) -> (Vec<Option<Hit>>, Counters) {
     let grid = scene.grid;
-    let cache = PatchCache::new(scene, bundle);
-    // Screening verdicts, computed when a patch is first loaded (None = not yet).
-    let mut screens: Vec<Option<Screen>> = vec![None; scene.segments.len()];
-    let mut mailbox = vec![u32::MAX; scene.segments.len()];
     let margin = 4.0 * grid.eps;
     let mut c = Counters::default();
     let mut hits = Vec::with_capacity(bundle.len());
-    for (i, ray) in bundle.rays.iter().enumerate() {
-        let mut best: Option<Hit> = None;
-        grid.walk(ray.origin, ray.dir, |step| {
-            c.cells_traversed += 1;
-            if step.region.is_none() {
-                for &p in grid.cell_items(step.cell) {
-                    if mailbox[p as usize] == i as u32 {
-                        continue;
-                    }
-                    mailbox[p as usize] = i as u32;
-                    c.patches_read_before_screening += 1;
-                    let seg = &scene.segments[p as usize];
-                    let screen = *screens[p as usize].get_or_insert_with(|| cache.screen_of(p, seg));
-                    if screen != Screen::Pass {
-                        continue;
-                    }
-                    c.patches_read_after_screening += 1;
-                    c.intersection_computations += 1;
-                    if let Some(t) = hit_front(ray, seg) {
-                        offer(&mut best, Hit { t, segment: p });
+    with_scratch(scene, |scratch| {
+        // Screening verdicts are computed when a patch is first loaded for this source; the
+        // per-ray mailbox loads a patch listed in several cells once per ray.
+        scratch.tick += 1;
+        let source_tick = scratch.tick;
+        for ray in &bundle.rays {
+            scratch.tick += 1;
+            let ray_tick = scratch.tick;
+            let mut best: Option<Hit> = None;
+            grid.walk(ray.origin, ray.dir, |step| {
+                c.cells_traversed += 1;
+                if step.region.is_none() {
+                    for &p in grid.cell_items(step.cell) {
+                        let i = p as usize;
+                        if scratch.patch_stamp[i] == ray_tick {
+                            continue;
+                        }
+                        scratch.patch_stamp[i] = ray_tick;
+                        c.patches_read_before_screening += 1;
+                        let seg = &scene.segments[i];
+                        if scratch.screen_stamp[i] != source_tick {
+                            scratch.screen[i] = screen(bundle, p, seg);
+                            scratch.screen_stamp[i] = source_tick;
+                        }
+                        if scratch.screen[i] != Screen::Pass {
+                            continue;
+                        }
+                        c.patches_read_after_screening += 1;
+                        c.intersection_computations += 1;
+                        if let Some(t) = hit_front(ray, seg) {
+                            offer(&mut best, Hit { t, segment: p });
+                        }
                     }
                 }
-            }
-            // Continue while a patch beyond this cell could still be nearer (or tie).
-            !matches!(best, Some(b) if b.t < step.t_exit - margin)
-        });
-        hits.push(best);
-    }
+                // Continue while a patch beyond this cell could still be nearer (or tie).
+                !matches!(best, Some(b) if b.t < step.t_exit - margin)
+            });
+            hits.push(best);
+        }
+    });
     (hits, c)
 }

@@ -133,6 +133,75 @@ pub(crate) struct PatchInfo {
     pub angle_lo: f64,
 }
 
+impl PatchInfo {
+    const EMPTY: PatchInfo =
+        PatchInfo { screen: Screen::Pass, rays: 0..0, r_min: 0.0, flatness: 0.0, angle_lo: 0.0 };
+}
+
+/// Screens patch `p` for the bundle's source: the per-patch part of the hit definition, plus the
+/// exclusion of the source's own patch.
+#[inline]
+pub(crate) fn screen(bundle: &Bundle, p: u32, seg: &Segment) -> Screen {
+    let src = &bundle.source;
+    if src.patch == Some(p) {
+        return Screen::Source;
+    }
+    match facing(src.origin, src.normal, seg) {
+        Facing::Front => Screen::Pass,
+        Facing::Backward => Screen::Backward,
+        Facing::BackFacing => Screen::BackFacing,
+    }
+}
+
+/// Reusable per-thread working memory of the grid tracers, so that tracing a bundle allocates and
+/// clears nothing proportional to the scene. Every array holds stamps: an entry is valid only if
+/// its stamp equals the tick it is compared with, and ticks (64-bit) are never reused.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    /// The last tick handed out.
+    pub tick: u64,
+    pub info: Vec<PatchInfo>,
+    pub info_stamp: Vec<u64>,
+    pub screen: Vec<Screen>,
+    pub screen_stamp: Vec<u64>,
+    pub patch_stamp: Vec<u64>,
+    pub cell_stamp: Vec<u64>,
+    pub region_stamp: Vec<u64>,
+}
+
+impl Scratch {
+    /// Grows the arrays to the scene's size.
+    fn fit(&mut self, scene: SceneView<'_>) {
+        let n = scene.segments.len();
+        if self.info.len() < n {
+            self.info.resize(n, PatchInfo::EMPTY);
+            self.info_stamp.resize(n, 0);
+            self.screen.resize(n, Screen::Pass);
+            self.screen_stamp.resize(n, 0);
+            self.patch_stamp.resize(n, 0);
+        }
+        if self.cell_stamp.len() < scene.grid.len() {
+            self.cell_stamp.resize(scene.grid.len(), 0);
+        }
+        if self.region_stamp.len() < scene.grid.region_count() {
+            self.region_stamp.resize(scene.grid.region_count(), 0);
+        }
+    }
+}
+
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::new(Scratch::default());
+}
+
+/// Runs `f` with this thread's scratch memory, fitted to the scene.
+pub(crate) fn with_scratch<R>(scene: SceneView<'_>, f: impl FnOnce(&mut Scratch) -> R) -> R {
+    SCRATCH.with(|cell| {
+        let mut scratch = cell.borrow_mut();
+        scratch.fit(scene);
+        f(&mut scratch)
+    })
+}
+
 /// Per-source cache of [`PatchInfo`], filled lazily as patches are loaded.
 pub(crate) struct PatchCache<'a> {
     segments: &'a [Segment],
@@ -141,11 +210,20 @@ pub(crate) struct PatchCache<'a> {
     scale: f64,
     /// Distance margin (the grid's registration margin).
     margin: f64,
-    info: Vec<Option<PatchInfo>>,
+    info: &'a mut [PatchInfo],
+    stamp: &'a mut [u64],
+    /// The tick that marks this source's entries.
+    tick: u64,
 }
 
 impl<'a> PatchCache<'a> {
-    pub fn new(scene: SceneView<'a>, bundle: &'a Bundle) -> Self {
+    pub fn new(
+        scene: SceneView<'a>,
+        bundle: &'a Bundle,
+        info: &'a mut [PatchInfo],
+        stamp: &'a mut [u64],
+        tick: u64,
+    ) -> Self {
         let (lo, hi) = scene.grid.extent();
         let o = bundle.source.origin;
         let scale = [lo.x, lo.y, hi.x, hi.y, o.x, o.y].iter().fold(1.0f64, |m, v| m.max(v.abs()));
@@ -154,44 +232,33 @@ impl<'a> PatchCache<'a> {
             bundle,
             scale,
             margin: 4.0 * scene.grid.eps,
-            info: vec![None; scene.segments.len()],
-        }
-    }
-
-    /// Screening only (cheap): the per-patch part of the hit definition plus source exclusion.
-    #[inline]
-    pub fn screen_of(&self, p: u32, seg: &Segment) -> Screen {
-        let src = &self.bundle.source;
-        if src.patch == Some(p) {
-            return Screen::Source;
-        }
-        match facing(src.origin, src.normal, seg) {
-            Facing::Front => Screen::Pass,
-            Facing::Backward => Screen::Backward,
-            Facing::BackFacing => Screen::BackFacing,
+            info,
+            stamp,
+            tick,
         }
     }
 
     /// Full information about patch `p`, computed on first use.
     pub fn get(&mut self, p: u32) -> &PatchInfo {
-        if self.info[p as usize].is_none() {
-            let info = self.compute(p);
-            self.info[p as usize] = Some(info);
+        let i = p as usize;
+        if self.stamp[i] != self.tick {
+            self.info[i] = self.compute(p);
+            self.stamp[i] = self.tick;
         }
-        self.info[p as usize].as_ref().expect("filled above")
+        &self.info[i]
     }
 
     /// Information about a patch already loaded for this source.
     #[inline]
     pub fn known(&self, p: u32) -> &PatchInfo {
-        self.info[p as usize].as_ref().expect("patch information is computed when a patch is loaded")
+        debug_assert_eq!(self.stamp[p as usize], self.tick, "patch information is computed on load");
+        &self.info[p as usize]
     }
 
     fn compute(&self, p: u32) -> PatchInfo {
         let seg = &self.segments[p as usize];
-        let screen = self.screen_of(p, seg);
-        let src = &self.bundle.source;
-        let o = src.origin;
+        let screen = screen(self.bundle, p, seg);
+        let o = self.bundle.source.origin;
         let ra = (seg.a - o).length();
         let rb = (seg.b - o).length();
         let r_min = (seg.distance_to(o) - self.margin).max(0.0);
@@ -216,8 +283,8 @@ impl<'a> PatchCache<'a> {
         let ha = (seg.a - o).dot(n);
         let hb = (seg.b - o).dot(n);
         let angle = |p: Vec2| {
-            let e = slack(p);
-            (angle_of(o, n, p) - e, angle_of(o, n, p) + e)
+            let (a, e) = (angle_of(o, n, p), slack(p));
+            (a - e, a + e)
         };
         if ha > 0.0 && hb > 0.0 {
             let (a0, a1) = angle(seg.a);

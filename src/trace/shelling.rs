@@ -2,10 +2,10 @@
 //!
 //! Both share the structure: the bundle's rays (numbered by angle) are cut into **sectors**,
 //! contiguous ray ranges processed one after another. Each sector is cut radially into **shells**
-//! of constant depth `Γ`. For shell `j` (radii `[r₁, r₂)`), the cells that the *remaining* rays of
-//! the sector cross between `r₁` and `r₂` are listed by rasterising, for each run of consecutive
-//! remaining rays, a convex trapezoid that contains that part of the annular sector (runs wider
-//! than π/4 are split). Empty cells are skipped a macro-region at a time. Every patch of those
+//! of constant depth `Γ`. Shell `j` is the annular sector between radii `[r₁, r₂)` and the angles of
+//! the first and last ray still in the sector's bundle (Def 2.6); its cells are listed by
+//! rasterising a convex trapezoid that contains it (split into pieces no wider than π/4). Empty
+//! cells are skipped a macro-region at a time. Every patch of those
 //! cells not yet loaded in this sector is loaded once (counted before screening) and screened:
 //! backward, back-facing, the source's own patch, or outside the sector's angular range. The
 //! survivors are the shell's relevant patches; they are tested against remaining rays, and at
@@ -29,7 +29,7 @@
 //! previous one: `width = clamp(round(α·ADLC), w_min, w_max)`; S uses its estimate, D the derived
 //! value. INTERPRETATION.md gives the reasons for each of these readings.
 
-use super::{offer, PatchCache, SceneView, Screen};
+use super::{offer, with_scratch, PatchCache, SceneView, Scratch, Screen};
 use crate::counters::Counters;
 use crate::geom::{hit_front, Hit, Vec2};
 use crate::rays::Bundle;
@@ -145,6 +145,36 @@ pub(super) fn trace(
     params: &ShellParams,
     tracking: Tracking,
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
+    with_scratch(scene, |scratch| {
+        let Scratch {
+            tick,
+            info,
+            info_stamp,
+            patch_stamp: loaded,
+            cell_stamp: cell_seen,
+            region_stamp: region_seen,
+            ..
+        } = scratch;
+        *tick += 1;
+        let cache = PatchCache::new(scene, bundle, info, info_stamp, *tick);
+        trace_with(scene, bundle, params, tracking, cache, tick, loaded, cell_seen, region_seen)
+    })
+}
+
+/// The body of [`trace`], on this thread's scratch memory: `loaded`, `cell_seen` and
+/// `region_seen` hold stamps compared against fresh ticks per sector and per shell.
+#[allow(clippy::too_many_arguments)]
+fn trace_with(
+    scene: SceneView<'_>,
+    bundle: &Bundle,
+    params: &ShellParams,
+    tracking: Tracking,
+    mut cache: PatchCache<'_>,
+    tick: &mut u64,
+    loaded: &mut [u64],
+    cell_seen: &mut [u64],
+    region_seen: &mut [u64],
+) -> (Vec<Option<Hit>>, Counters, ShellStats) {
     let grid = scene.grid;
     let r = bundle.len();
     let o = bundle.source.origin;
@@ -156,28 +186,23 @@ pub(super) fn trace(
             .iter()
             .fold(0.0f64, |m, c| m.max((*c - o).length()))
     };
-
-    let mut cache = PatchCache::new(scene, bundle);
     let mut c = Counters::default();
     let mut stats = ShellStats::default();
     let mut best: Vec<Option<Hit>> = vec![None; r];
     let mut alive = vec![false; r];
-    let mut loaded = vec![u32::MAX; scene.segments.len()];
-    let mut cell_seen = vec![0u32; grid.len()];
-    let mut region_seen = vec![0u32; grid.region_count()];
-    let mut shell_gen = 0u32;
     let mut est_sum = 0.0;
     let mut est_weight = 0.0;
 
     let mut prev: Vec<Option<ShellEstimate>> = Vec::new();
     let mut width = params.first_sector;
     let mut s = 0usize;
-    let mut sector = 0u32;
     let mut relevant: Vec<u32> = Vec::new();
 
     while s < r {
         let e = (s + width.clamp(params.min_sector.max(1), params.max_sector)).min(r);
         stats.sectors += 1;
+        *tick += 1;
+        let sector = *tick;
         alive[s..e].iter_mut().for_each(|a| *a = true);
         let mut remaining = e - s;
         let mut cur: Vec<Option<ShellEstimate>> = Vec::new();
@@ -186,7 +211,8 @@ pub(super) fn trace(
         let mut j = 0usize;
         while remaining > 0 && r1 < far {
             let r2 = r1 + depth;
-            shell_gen += 1;
+            *tick += 1;
+            let shell_gen = *tick;
             stats.shells += 1;
             stats.rays_entering += remaining as u64;
 
@@ -198,14 +224,19 @@ pub(super) fn trace(
                     k += 1;
                     continue;
                 }
-                // A run of remaining rays starting at k, no wider than π/4.
+                // The shell spans the remaining rays' angles (Def 2.6: two boundary angles), in
+                // pieces no wider than π/4, each from a remaining ray to the last one within π/4.
                 let k0 = k;
-                while k + 1 < e && alive[k + 1] && bundle.angles[k + 1] - bundle.angles[k0] <= FRAC_PI_4 {
+                let mut last = k;
+                while k + 1 < e && bundle.angles[k + 1] - bundle.angles[k0] <= FRAC_PI_4 {
                     k += 1;
+                    if alive[k] {
+                        last = k;
+                    }
                 }
-                // The trapezoid between the run's boundary rays, from r₁ to beyond r₂: its outer
-                // edge is tangent to the arc of radius r₂ at the run's middle angle.
-                let (da, db) = (bundle.rays[k0].dir, bundle.rays[k].dir);
+                // The trapezoid between the piece's boundary rays, from r₁ to beyond r₂: its
+                // outer edge is tangent to the arc of radius r₂ at the piece's middle angle.
+                let (da, db) = (bundle.rays[k0].dir, bundle.rays[last].dir);
                 k += 1;
                 let cos_half = (0.5 * (1.0 + da.dot(db))).max(0.0).sqrt();
                 let inner = (r1 - margin).max(0.0);
@@ -348,7 +379,6 @@ pub(super) fn trace(
         }
         prev = cur;
         s = e;
-        sector += 1;
     }
     c.adlc_estimated = if est_weight > 0.0 { est_sum / est_weight } else { 0.0 };
     (best, c, stats)
