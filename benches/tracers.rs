@@ -67,7 +67,13 @@ fn main() {
     let run = |m: Method| {
         let mut hits = 0usize;
         for b in &bundles {
-            hits += prepared.trace(m, b, &params).hits.iter().flatten().count();
+            hits += prepared
+                .trace(m, b, &params)
+                .expect("default parameters are valid")
+                .hits
+                .iter()
+                .flatten()
+                .count();
         }
         hits
     };

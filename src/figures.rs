@@ -290,7 +290,8 @@ fn measure_inner(opts: &FigureOptions) -> Result<(Vec<Row>, usize, usize, u64)> 
             let bundle = prepared.patch_bundle(k, opts.ray_set, opts.rays).map_err(|e| {
                 anyhow!("source patch {k} of a scene of length {}: {e}", opts.lengths[*length_index])
             })?;
-            let traced = METHODS.map(|m| prepared.trace(m, &bundle, &opts.shells));
+            let [a, b, c] = METHODS.map(|m| prepared.trace(m, &bundle, &opts.shells));
+            let traced = [a?, b?, c?];
             let disagreements = traced[1..]
                 .iter()
                 .map(|t| t.hits.iter().zip(&traced[0].hits).filter(|(a, b)| a != b).count() as u64)

@@ -5,7 +5,7 @@ use crate::geom::Vec2;
 use crate::grid::{Grid, GridParams};
 use crate::rays::{Bundle, RaySet, Source, SourceError};
 use crate::scene::Scene;
-use crate::trace::{trace, Method, SceneView, ShellParams, TraceResult};
+use crate::trace::{trace, Method, SceneView, ShellParams, TraceError, TraceResult};
 use serde::Serialize;
 
 /// A scene with the grid built over it, ready to trace.
@@ -31,7 +31,12 @@ impl Prepared {
     }
 
     /// Traces a bundle with one technique.
-    pub fn trace(&self, method: Method, bundle: &Bundle, params: &ShellParams) -> TraceResult {
+    pub fn trace(
+        &self,
+        method: Method,
+        bundle: &Bundle,
+        params: &ShellParams,
+    ) -> Result<TraceResult, TraceError> {
         trace(method, self.view(), bundle, params)
     }
 }

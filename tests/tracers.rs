@@ -21,10 +21,10 @@ fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Segment {
 /// Traces `bundle` with every method and checks each against brute force and the counter
 /// invariants. `what` names the case (seed, source) so a failure can be replayed.
 fn check(p: &Prepared, bundle: &Bundle, params: &ShellParams, what: &str) -> Vec<TraceResult> {
-    let oracle = p.trace(Method::Brute, bundle, params);
+    let oracle = p.trace(Method::Brute, bundle, params).unwrap();
     let mut results = vec![];
     for method in Method::ALL {
-        let r = p.trace(method, bundle, params);
+        let r = p.trace(method, bundle, params).unwrap();
         for (i, (got, want)) in r.hits.iter().zip(&oracle.hits).enumerate() {
             assert_eq!(
                 got, want,
@@ -306,5 +306,25 @@ proptest! {
         let bundle = Bundle::new(source, set, rays).unwrap();
         let params = ShellParams { shell_depth: depth, ..Default::default() };
         check(&p, &bundle, &params, &format!("{source:?}"));
+    }
+}
+
+#[test]
+fn invalid_shell_parameters_are_errors_not_hangs() {
+    let p = prepared(vec![seg(0.0, 0.0, 10.0, 0.0), seg(10.0, 10.0, 0.0, 10.0)]);
+    let bundle = p.patch_bundle(0, RaySet::Angle, 8).unwrap();
+    for bad in [
+        ShellParams { shell_depth: Some(0.0), ..Default::default() },
+        ShellParams { shell_depth: Some(-1.0), ..Default::default() },
+        ShellParams { shell_depth: Some(f64::NAN), ..Default::default() },
+        ShellParams { min_sector: 10, max_sector: 5, ..Default::default() },
+        ShellParams { first_sector: 0, ..Default::default() },
+        ShellParams { default_adlc: 0.5, ..Default::default() },
+        ShellParams { min_subshell_fraction: 0.0, ..Default::default() },
+    ] {
+        for method in Method::ALL {
+            let err = p.trace(method, &bundle, &bad).unwrap_err();
+            assert!(err.to_string().starts_with("invalid shell parameters"), "{err}");
+        }
     }
 }

@@ -73,8 +73,22 @@ pub struct SceneView<'a> {
     pub grid: &'a Grid,
 }
 
-/// Traces `bundle` through the scene with `method`.
-pub fn trace(method: Method, scene: SceneView<'_>, bundle: &Bundle, params: &ShellParams) -> TraceResult {
+/// What keeps a trace from running.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TraceError {
+    #[error("invalid shell parameters: {0}")]
+    InvalidParams(String),
+}
+
+/// Traces `bundle` through the scene with `method`. The shell parameters are checked first
+/// ([`ShellParams::validate`]), whichever the method.
+pub fn trace(
+    method: Method,
+    scene: SceneView<'_>,
+    bundle: &Bundle,
+    params: &ShellParams,
+) -> Result<TraceResult, TraceError> {
+    params.validate().map_err(TraceError::InvalidParams)?;
     let (hits, mut counters, stats) = match method {
         Method::Brute => {
             let (h, c) = brute::trace(scene, bundle);
@@ -93,7 +107,7 @@ pub fn trace(method: Method, scene: SceneView<'_>, bundle: &Bundle, params: &She
         // These techniques track nothing: their estimate is the true value.
         counters.adlc_estimated = counters.adlc_true;
     }
-    TraceResult { method, hits, counters, stats }
+    Ok(TraceResult { method, hits, counters, stats })
 }
 
 /// The average degree of local coherence (Def 2.10) of a set of nearest hits: rays that hit
