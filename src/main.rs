@@ -1,7 +1,7 @@
 //! The `shelling` command line: scenes, tracing, the paper's figures and the demo.
 
 use anyhow::{bail, Context, Result};
-use clap::{Args, Parser, Subcommand};
+use clap::{ArgGroup, Args, Parser, Subcommand};
 use shelling::counters::Counters;
 use shelling::figures::{self, FigureOptions};
 use shelling::geom::Vec2;
@@ -50,14 +50,14 @@ enum SceneCommand {
 
 #[derive(Args)]
 struct GenArgs {
-    /// Number of segments.
-    #[arg(long, default_value_t = 1000)]
+    /// Number of segments (at least 1).
+    #[arg(long, default_value_t = 1000, allow_negative_numbers = true)]
     count: usize,
-    /// Length of every segment, in world units.
-    #[arg(long, default_value_t = 32.0)]
+    /// Length of every segment, in world units (positive, less than 1024).
+    #[arg(long, default_value_t = 32.0, allow_negative_numbers = true)]
     length: f64,
     /// Seed of the random generator: the same seed gives the same scene on every machine.
-    #[arg(long, default_value_t = 7)]
+    #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
     seed: u64,
     /// Output file; standard output when absent.
     #[arg(long)]
@@ -68,13 +68,13 @@ struct GenArgs {
 #[derive(Args, Clone)]
 struct TuneArgs {
     /// Grid resolution: target number of cells per segment (λ); the grid has about λ·N cells.
-    #[arg(long, default_value_t = 4.0)]
+    #[arg(long, default_value_t = 4.0, allow_negative_numbers = true)]
     cells_per_segment: f64,
-    /// Shell depth Γ in world units (default: 4 cell sides).
-    #[arg(long)]
+    /// Shell depth Γ in world units, positive (default: 4 cell sides).
+    #[arg(long, allow_negative_numbers = true)]
     shell_depth: Option<f64>,
-    /// Widest sector in rays (the ray memory of one processing element).
-    #[arg(long, default_value_t = ShellParams::default().max_sector)]
+    /// Widest sector in rays (the ray memory of one processing element), at least 1.
+    #[arg(long, default_value_t = ShellParams::default().max_sector, allow_negative_numbers = true)]
     max_sector: usize,
 }
 
@@ -87,6 +87,14 @@ impl TuneArgs {
     }
 
     fn shells(&self) -> Result<ShellParams> {
+        if let Some(d) = self.shell_depth {
+            if !(d.is_finite() && d > 0.0) {
+                bail!("--shell-depth must be a positive number, got {d}");
+            }
+        }
+        if self.max_sector == 0 {
+            bail!("--max-sector must be at least 1, got 0");
+        }
         let p = ShellParams {
             shell_depth: self.shell_depth,
             max_sector: self.max_sector,
@@ -99,12 +107,14 @@ impl TuneArgs {
 }
 
 #[derive(Args)]
+#[command(group(ArgGroup::new("from").args(["source", "origin"]).required(true)))]
 struct TraceArgs {
     /// Scene file (JSON, see SCENES.md).
     #[arg(long)]
     scene: PathBuf,
-    /// Source patch: the origin is its midpoint, the normal its normal; it is excluded from hits.
-    #[arg(long, conflicts_with_all = ["origin", "normal"], required_unless_present = "origin")]
+    /// Source patch K (index into the scene's segments): the origin is its midpoint, the normal its
+    /// normal; it is excluded from hits. Give either --source or --origin with --normal.
+    #[arg(long, conflicts_with_all = ["origin", "normal"], allow_negative_numbers = true)]
     source: Option<usize>,
     /// Free origin X,Y (with --normal) instead of a source patch.
     #[arg(long, value_parser = parse_vec2, requires = "normal", allow_hyphen_values = true)]
@@ -113,7 +123,7 @@ struct TraceArgs {
     #[arg(long, value_parser = parse_vec2, requires = "origin", allow_hyphen_values = true)]
     normal: Option<Vec2>,
     /// Number of rays over the half-circle.
-    #[arg(long, default_value_t = 1024)]
+    #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     rays: usize,
     /// Ray set: `angle` (uniform in angle) or `sine` (uniform in sin φ, form factor 1/R each).
     #[arg(long, value_enum, default_value_t = RaySet::Angle)]
@@ -131,16 +141,16 @@ struct TraceArgs {
 #[derive(Args)]
 struct DemoArgs {
     /// Seed of the default scene.
-    #[arg(long, default_value_t = 7)]
+    #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
     seed: u64,
     /// Segment length of the default scene.
-    #[arg(long, default_value_t = 32.0)]
+    #[arg(long, default_value_t = 32.0, allow_negative_numbers = true)]
     length: f64,
     /// Source patch (250 has an ADLC near the mean of the length-32 workload).
-    #[arg(long, default_value_t = 250)]
+    #[arg(long, default_value_t = 250, allow_negative_numbers = true)]
     source: usize,
     /// Number of rays.
-    #[arg(long, default_value_t = 1024)]
+    #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     rays: usize,
 }
 
@@ -150,19 +160,19 @@ struct FiguresArgs {
     #[arg(long)]
     out: PathBuf,
     /// Scenes (seeds) per segment length.
-    #[arg(long, default_value_t = 5)]
+    #[arg(long, default_value_t = 5, allow_negative_numbers = true)]
     seeds: usize,
     /// Source patches per scene.
-    #[arg(long, default_value_t = 100)]
+    #[arg(long, default_value_t = 100, allow_negative_numbers = true)]
     sources: usize,
     /// Rays per source.
-    #[arg(long, default_value_t = 1024)]
+    #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     rays: usize,
     /// Segments per scene.
-    #[arg(long, default_value_t = 1000)]
+    #[arg(long, default_value_t = 1000, allow_negative_numbers = true)]
     count: usize,
-    /// Segment lengths, comma separated.
-    #[arg(long, value_delimiter = ',', default_values_t = vec![4.0, 8.0, 16.0, 32.0, 64.0, 128.0])]
+    /// Segment lengths, comma separated (e.g. 8,32).
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16,32,64,128", allow_hyphen_values = true)]
     lengths: Vec<f64>,
     /// Ray set.
     #[arg(long, value_enum, default_value_t = RaySet::Angle)]
@@ -195,16 +205,33 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            eprintln!("error: {}", message(&e));
             ExitCode::from(2)
         }
     }
+}
+
+/// The error and its causes, joined by ": ", leaving out a cause whose text the message already
+/// holds (the scene errors repeat their I/O error in their own text).
+fn message(e: &anyhow::Error) -> String {
+    let mut text = e.to_string();
+    for cause in e.chain().skip(1) {
+        let cause = cause.to_string();
+        if !text.contains(&cause) {
+            text.push_str(": ");
+            text.push_str(&cause);
+        }
+    }
+    text
 }
 
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Demo(a) => demo(a),
         Command::Scene { command: SceneCommand::Gen(a) } => {
+            if a.count == 0 {
+                bail!("--count must be at least 1, got 0");
+            }
             let s = scene::generate(a.count, a.length, a.seed, scene::PAPER_WORLD)?;
             match a.out {
                 Some(path) => s.save(&path)?,
@@ -242,7 +269,7 @@ fn trace_cmd(a: TraceArgs) -> Result<()> {
         _ => bail!("give either --source K or both --origin X,Y and --normal NX,NY"),
     };
     let bundle = Bundle::new(source, a.ray_set, a.rays)?;
-    let result = prepared.trace(a.method, &bundle, &a.tune.shells()?);
+    let result = prepared.trace(a.method, &bundle, &a.tune.shells()?)?;
     if a.json {
         let json = serde_json::to_string_pretty(&TraceJson::new(&result, &bundle))
             .context("serialising the trace")?;
@@ -285,10 +312,10 @@ fn demo(a: DemoArgs) -> Result<()> {
         prepared.grid.region_count()
     );
     println!("source: patch {} ({} rays, angle set)\n", a.source, a.rays);
-    let oracle = prepared.trace(Method::Brute, &bundle, &params);
+    let oracle = prepared.trace(Method::Brute, &bundle, &params)?;
     let mut rows = Vec::new();
     for method in Method::ALL {
-        let r = prepared.trace(method, &bundle, &params);
+        let r = prepared.trace(method, &bundle, &params)?;
         let disagree = r.hits.iter().zip(&oracle.hits).filter(|(x, y)| x != y).count();
         if disagree > 0 {
             bail!("{method} disagrees with brute force on {disagree} rays");

@@ -1,2 +1,3 @@
+mod cli;
 mod scene_loader;
 mod tracers;

@@ -1,0 +1,533 @@
+//! End-to-end tests of the `shelling` command line: every subcommand is run as a child process
+//! (the binary Cargo builds for the integration tests) and its exit status, standard output and
+//! standard error are checked. Every failure must exit non-zero, say what is wrong on standard
+//! error, print nothing on standard output and never panic.
+
+use serde_json::Value;
+use shelling::counters::Counters;
+use shelling::scene::Scene;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const METHODS: [&str; 4] = ["brute", "conventional", "stochastic", "deterministic"];
+
+/// A fresh directory under the system's temporary directory, named after the test and the process,
+/// removed when dropped.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(test: &str) -> TempDir {
+        let path = std::env::temp_dir().join(format!("shelling-cli-{test}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&path);
+        std::fs::create_dir_all(&path).expect("cannot create the temporary directory");
+        TempDir(path)
+    }
+
+    fn join(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn path_arg(p: &Path) -> &str {
+    p.to_str().expect("temporary path is not UTF-8")
+}
+
+/// Runs the binary with `args`.
+fn shelling(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shelling")).args(args).output().expect("cannot run the shelling binary")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8(bytes.to_vec()).expect("output is not UTF-8")
+}
+
+/// Runs `args`, asserts success, and returns standard output.
+fn ok(args: &[&str]) -> String {
+    let out = shelling(args);
+    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+    assert!(out.status.success(), "shelling {args:?} failed ({}):\n{stderr}", out.status);
+    assert!(!stderr.contains("panicked"), "shelling {args:?} panicked:\n{stderr}");
+    stdout
+}
+
+/// Runs `args`, asserts a clean failure (non-zero exit, no panic, nothing on standard output, a
+/// message on standard error containing every string of `expect`), and returns standard error.
+fn fails(args: &[&str], expect: &[&str]) -> String {
+    let out = shelling(args);
+    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+    assert!(!out.status.success(), "shelling {args:?} should fail; stdout:\n{stdout}");
+    assert_ne!(out.status.code(), Some(101), "shelling {args:?} exited as a panic:\n{stderr}");
+    assert!(!stderr.contains("panicked"), "shelling {args:?} panicked:\n{stderr}");
+    assert!(stdout.is_empty(), "shelling {args:?} failed but wrote to stdout:\n{stdout}");
+    assert!(stderr.starts_with("error:"), "shelling {args:?}: stderr is not an error message:\n{stderr}");
+    for e in expect {
+        assert!(stderr.contains(e), "shelling {args:?}: stderr does not mention {e:?}:\n{stderr}");
+    }
+    stderr
+}
+
+/// Writes a generated scene into `dir` and returns its path.
+fn gen_scene(dir: &TempDir, name: &str, count: usize, length: f64, seed: u64) -> PathBuf {
+    let path = dir.join(name);
+    let (count, length, seed) = (count.to_string(), length.to_string(), seed.to_string());
+    ok(&["scene", "gen", "--count", &count, "--length", &length, "--seed", &seed, "--out", path_arg(&path)]);
+    path
+}
+
+fn parse_json(stdout: &str, what: &str) -> Value {
+    serde_json::from_str(stdout).unwrap_or_else(|e| panic!("{what}: stdout is not JSON ({e}):\n{stdout}"))
+}
+
+/// One ray of the `trace --json` output: its hit and distance.
+type Hit = (Option<u64>, Option<f64>);
+
+/// Checks the shape of a `trace --json` document (method, rays, counters) and returns the hits.
+fn check_trace_json(doc: &Value, method: &str, rays: usize) -> Vec<Hit> {
+    let obj = doc.as_object().expect("the trace JSON is not an object");
+    assert_eq!(obj["method"].as_str(), Some(method), "method field");
+
+    let counters = obj["counters"].as_object().expect("counters is not an object");
+    let mut names: Vec<&str> = counters.keys().map(String::as_str).collect();
+    let mut expected = Counters::NAMES.to_vec();
+    names.sort_unstable();
+    expected.sort_unstable();
+    assert_eq!(names, expected, "counter names");
+    for (name, v) in counters {
+        assert!(v.is_number(), "counter {name} is not a number: {v}");
+    }
+
+    let list = obj["rays"].as_array().expect("rays is not an array");
+    assert_eq!(list.len(), rays, "number of rays");
+    let mut hits = Vec::with_capacity(rays);
+    for (i, ray) in list.iter().enumerate() {
+        assert_eq!(ray["index"].as_u64(), Some(i as u64), "ray {i}: index");
+        let dir = ray["direction"].as_array().unwrap_or_else(|| panic!("ray {i}: direction is not an array"));
+        assert_eq!(dir.len(), 2, "ray {i}: direction must have 2 components");
+        let (dx, dy) = (dir[0].as_f64().expect("direction x"), dir[1].as_f64().expect("direction y"));
+        assert!(((dx * dx + dy * dy).sqrt() - 1.0).abs() < 1e-9, "ray {i}: direction is not a unit vector");
+        let hit = match &ray["hit"] {
+            Value::Null => None,
+            v => Some(v.as_u64().unwrap_or_else(|| panic!("ray {i}: hit {v} is not an integer"))),
+        };
+        let t = match &ray["t"] {
+            Value::Null => None,
+            v => Some(v.as_f64().unwrap_or_else(|| panic!("ray {i}: t {v} is not a number"))),
+        };
+        assert_eq!(hit.is_some(), t.is_some(), "ray {i}: hit and t must be both null or both set");
+        if let Some(t) = t {
+            assert!(t.is_finite() && t > 0.0, "ray {i}: t = {t}");
+        }
+        hits.push((hit, t));
+    }
+    let actual = hits.iter().filter(|(h, _)| h.is_some()).count() as u64;
+    assert_eq!(
+        counters["actual_intersections"].as_u64(),
+        Some(actual),
+        "actual_intersections counts the hits"
+    );
+    hits
+}
+
+/// Traces with every method and checks that all agree with brute force, ray by ray; returns the
+/// hits and the last document.
+fn trace_all_methods(scene: &Path, from: &[&str], extra: &[&str], rays: usize) -> (Vec<Hit>, Value) {
+    let n = rays.to_string();
+    let mut reference: Option<Vec<Hit>> = None;
+    let mut last = Value::Null;
+    for method in METHODS {
+        let mut args = vec!["trace", "--scene", path_arg(scene)];
+        args.extend_from_slice(from);
+        args.extend_from_slice(&["--rays", &n, "--method", method, "--json"]);
+        args.extend_from_slice(extra);
+        let doc = parse_json(&ok(&args), method);
+        let hits = check_trace_json(&doc, method, rays);
+        match &reference {
+            None => reference = Some(hits),
+            Some(r) => {
+                for (i, (a, b)) in r.iter().zip(&hits).enumerate() {
+                    assert_eq!(a, b, "{method} differs from brute on ray {i} ({from:?} {extra:?})");
+                }
+            }
+        }
+        last = doc;
+    }
+    (reference.unwrap(), last)
+}
+
+// ----- scene gen -----
+
+#[test]
+fn cli_scene_gen_writes_a_reproducible_loadable_file() {
+    let dir = TempDir::new("scene_gen_file");
+    let a = gen_scene(&dir, "a.json", 50, 16.0, 3);
+    let b = gen_scene(&dir, "b.json", 50, 16.0, 3);
+    let c = gen_scene(&dir, "c.json", 50, 16.0, 4);
+    let scene = Scene::load(&a).expect("the generated scene does not load");
+    assert_eq!(scene.segments.len(), 50);
+    for (i, s) in scene.segments.iter().enumerate() {
+        let len = s.length();
+        assert!((len - 16.0).abs() < 1e-6, "segment {i} has length {len}");
+    }
+    let bytes = |p: &Path| std::fs::read(p).unwrap();
+    assert_eq!(bytes(&a), bytes(&b), "the same seed must give the same bytes");
+    assert_ne!(bytes(&a), bytes(&c), "a different seed must give a different scene");
+}
+
+#[test]
+fn cli_scene_gen_prints_json_without_out() {
+    let dir = TempDir::new("scene_gen_stdout");
+    let file = gen_scene(&dir, "s.json", 50, 16.0, 3);
+    let stdout = ok(&["scene", "gen", "--count", "50", "--length", "16", "--seed", "3"]);
+    let printed = parse_json(&stdout, "scene gen");
+    assert_eq!(printed["segments"].as_array().map(Vec::len), Some(50));
+    let saved: Value = serde_json::from_slice(&std::fs::read(&file).unwrap()).unwrap();
+    assert_eq!(printed, saved, "stdout and --out must hold the same scene");
+    // What was printed loads as a scene too.
+    let copy = dir.join("copy.json");
+    std::fs::write(&copy, &stdout).unwrap();
+    assert_eq!(Scene::load(&copy).expect("printed scene does not load").segments.len(), 50);
+}
+
+#[test]
+fn cli_scene_gen_rejects_bad_values() {
+    fails(&["scene", "gen", "--count", "0"], &["count"]);
+    fails(&["scene", "gen", "--length", "0"], &["length", "0"]);
+    fails(&["scene", "gen", "--length", "nan"], &["length", "NaN"]);
+    fails(&["scene", "gen", "--length", "5000"], &["length", "5000"]);
+    fails(&["scene", "gen", "--length", "-3"], &["length", "-3"]);
+    fails(&["scene", "gen", "--count", "x"], &["--count"]);
+    let dir = TempDir::new("scene_gen_bad");
+    let nowhere = dir.join("no/such/dir/s.json");
+    let err =
+        fails(&["scene", "gen", "--count", "5", "--out", path_arg(&nowhere)], &["s.json", "cannot write"]);
+    assert_eq!(err.matches("os error").count(), 1, "the I/O error is repeated:\n{err}");
+}
+
+// ----- trace -----
+
+#[test]
+fn cli_trace_json_every_method_agrees_with_brute() {
+    let dir = TempDir::new("trace_json");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 3);
+    let mut hits = 0;
+    for k in ["0", "7", "123"] {
+        let (h, doc) = trace_all_methods(&scene, &["--source", k], &[], 64);
+        hits += h.iter().filter(|(hit, _)| hit.is_some()).count();
+        let patch: u64 = k.parse().unwrap();
+        assert_eq!(doc["source"]["patch"].as_u64(), Some(patch));
+        assert_eq!(doc["source"]["ray_set"].as_str(), Some("angle"));
+        assert!(h.iter().all(|(hit, _)| *hit != Some(patch)), "a source patch hit itself");
+        // Every ray lies in the half-circle around the source's normal.
+        let n = &doc["source"]["normal"];
+        let (nx, ny) = (n[0].as_f64().unwrap(), n[1].as_f64().unwrap());
+        for ray in doc["rays"].as_array().unwrap() {
+            let d = &ray["direction"];
+            let dot = nx * d[0].as_f64().unwrap() + ny * d[1].as_f64().unwrap();
+            assert!(dot > -1e-9, "ray {} points behind the source", ray["index"]);
+        }
+    }
+    assert!(hits > 0, "the test scene gave no hit at all: the agreement check is empty");
+}
+
+#[test]
+fn cli_trace_json_is_reproducible() {
+    let dir = TempDir::new("trace_repro");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 3);
+    for method in METHODS {
+        let args = [
+            "trace",
+            "--scene",
+            path_arg(&scene),
+            "--source",
+            "7",
+            "--rays",
+            "64",
+            "--method",
+            method,
+            "--json",
+        ];
+        assert_eq!(ok(&args), ok(&args), "{method}: two runs differ");
+    }
+}
+
+#[test]
+fn cli_trace_sine_ray_set() {
+    let dir = TempDir::new("trace_sine");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 3);
+    let (_, doc) = trace_all_methods(&scene, &["--source", "7"], &["--ray-set", "sine"], 64);
+    assert_eq!(doc["source"]["ray_set"].as_str(), Some("sine"));
+    let (angle, _) = trace_all_methods(&scene, &["--source", "7"], &[], 64);
+    let (sine, _) = trace_all_methods(&scene, &["--source", "7"], &["--ray-set", "sine"], 64);
+    assert_ne!(angle, sine, "--ray-set sine changed nothing");
+}
+
+#[test]
+fn cli_trace_free_origin() {
+    let dir = TempDir::new("trace_origin");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 3);
+
+    let (hits, doc) = trace_all_methods(&scene, &["--origin", "512,512", "--normal", "0,1"], &[], 64);
+    assert!(doc["source"]["patch"].is_null(), "a free origin has no patch");
+    assert_eq!(doc["source"]["origin"], serde_json::json!([512.0, 512.0]));
+    assert_eq!(doc["source"]["normal"], serde_json::json!([0.0, 1.0]));
+    assert!(hits.iter().any(|(h, _)| h.is_some()), "nothing hit from the centre of the scene");
+
+    // Negative values, both as separate words and with '='; the normal comes back normalised.
+    for from in [
+        &["--origin", "-10,500", "--normal", "1,-0.5"][..],
+        &["--origin=-10,500", "--normal=1,-0.5"][..],
+        &["--normal", "1,-0.5", "--origin", "-10,500"][..],
+    ] {
+        let (_, doc) = trace_all_methods(&scene, from, &[], 64);
+        assert_eq!(doc["source"]["origin"], serde_json::json!([-10.0, 500.0]), "{from:?}");
+        let n = &doc["source"]["normal"];
+        let (nx, ny) = (n[0].as_f64().unwrap(), n[1].as_f64().unwrap());
+        let s = 1.25f64.sqrt();
+        assert!((nx - 1.0 / s).abs() < 1e-12 && (ny + 0.5 / s).abs() < 1e-12, "{from:?}: normal {n}");
+    }
+}
+
+#[test]
+fn cli_trace_summary_without_json() {
+    let dir = TempDir::new("trace_summary");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 3);
+    for method in METHODS {
+        let out =
+            ok(&["trace", "--scene", path_arg(&scene), "--source", "7", "--rays", "64", "--method", method]);
+        assert!(serde_json::from_str::<Value>(&out).is_err(), "{method}: summary is JSON:\n{out}");
+        assert!(out.contains("64 rays"), "{method}: summary does not give the ray count:\n{out}");
+        assert!(out.contains(&format!("traced with {method}")), "{method}: summary lacks the method:\n{out}");
+        assert!(out.contains("read before") && out.contains("ADLC"), "{method}: no counters table:\n{out}");
+        assert!(out.lines().any(|l| l.starts_with(method)), "{method}: no counters row:\n{out}");
+    }
+}
+
+#[test]
+fn cli_trace_rejects_missing_and_malformed_scene_files() {
+    let dir = TempDir::new("trace_bad_file");
+    let missing = dir.join("missing-scene.json");
+    let err = fails(&["trace", "--scene", path_arg(&missing), "--source", "0"], &["missing-scene.json"]);
+    assert_eq!(err.matches("os error").count(), 1, "the I/O error is repeated:\n{err}");
+
+    let truncated = dir.join("truncated-scene.json");
+    std::fs::write(&truncated, "{\"segments\": [").unwrap();
+    fails(&["trace", "--scene", path_arg(&truncated), "--source", "0"], &["truncated-scene.json"]);
+
+    let garbage = dir.join("garbage-scene.json");
+    std::fs::write(&garbage, "{\"segmnets\": []}").unwrap();
+    fails(&["trace", "--scene", path_arg(&garbage), "--source", "0"], &["garbage-scene.json", "segmnets"]);
+
+    fails(&["trace", "--scene", path_arg(&dir.0), "--source", "0"], &["cannot read"]);
+}
+
+#[test]
+fn cli_trace_rejects_bad_sources() {
+    let dir = TempDir::new("trace_bad_source");
+    let scene = gen_scene(&dir, "s.json", 50, 16.0, 3);
+    let s = path_arg(&scene);
+    let t = |extra: &[&str], expect: &[&str]| {
+        let mut args = vec!["trace", "--scene", s];
+        args.extend_from_slice(extra);
+        fails(&args, expect);
+    };
+    t(&["--source", "50"], &["50", "50 segments"]);
+    t(&["--source", "-1"], &["--source"]);
+    t(&["--source", "0", "--rays", "0"], &["rays", "0"]);
+    t(&["--origin", "1,1", "--normal", "0,0"], &["normal"]);
+    t(&["--origin", "nan,1", "--normal", "0,1"], &["--origin", "nan"]);
+    t(&["--origin", "1,2,3", "--normal", "0,1"], &["--origin", "1,2,3"]);
+    t(&["--origin", "1,x", "--normal", "0,1"], &["--origin", "\"x\""]);
+    t(&["--origin", "1,2", "--normal", "inf,1"], &["--normal", "inf"]);
+    t(&["--source", "0", "--origin", "1,2", "--normal", "0,1"], &["--source", "--origin"]);
+    t(&["--source", "0", "--normal", "0,1"], &["--source", "--normal"]);
+    t(&[], &["--source", "--origin"]);
+    t(&["--origin", "1,2"], &["--normal"]);
+    t(&["--normal", "0,1"], &["--origin"]);
+}
+
+#[test]
+fn cli_trace_rejects_bad_options() {
+    let dir = TempDir::new("trace_bad_options");
+    let scene = gen_scene(&dir, "s.json", 50, 16.0, 3);
+    let s = path_arg(&scene);
+    let t = |extra: &[&str], expect: &[&str]| {
+        let mut args = vec!["trace", "--scene", s, "--source", "0", "--rays", "16"];
+        args.extend_from_slice(extra);
+        fails(&args, expect);
+    };
+    t(&["--method", "bogus"], &["--method", "bogus"]);
+    t(&["--ray-set", "cosine"], &["--ray-set", "cosine"]);
+    t(&["--shell-depth", "-1"], &["--shell-depth", "-1"]);
+    t(&["--shell-depth", "0"], &["--shell-depth"]);
+    t(&["--shell-depth", "nan"], &["--shell-depth"]);
+    t(&["--cells-per-segment", "0"], &["--cells-per-segment"]);
+    t(&["--cells-per-segment", "-2"], &["--cells-per-segment", "-2"]);
+    t(&["--max-sector", "0"], &["--max-sector"]);
+    t(&["--rays", "-5"], &["--rays"]);
+    fails(&["trace", "--source", "0"], &["--scene"]);
+}
+
+// ----- help -----
+
+#[test]
+fn cli_help_mentions_every_option() {
+    let cases: [(&[&str], &[&str]); 4] = [
+        (
+            &["trace"],
+            &[
+                "--scene",
+                "--source",
+                "--origin",
+                "--normal",
+                "--rays",
+                "--ray-set",
+                "--method",
+                "--json",
+                "--cells-per-segment",
+                "--shell-depth",
+                "--max-sector",
+                "brute",
+                "conventional",
+                "stochastic",
+                "deterministic",
+                "angle",
+                "sine",
+            ],
+        ),
+        (&["scene", "gen"], &["--count", "--length", "--seed", "--out"]),
+        (
+            &["figures"],
+            &[
+                "--out",
+                "--seeds",
+                "--sources",
+                "--rays",
+                "--count",
+                "--lengths",
+                "--ray-set",
+                "--quiet",
+                "--cells-per-segment",
+                "--shell-depth",
+                "--max-sector",
+            ],
+        ),
+        (&["demo"], &["--seed", "--length", "--source", "--rays"]),
+    ];
+    for (command, options) in cases {
+        let mut args = command.to_vec();
+        args.push("--help");
+        let help = ok(&args);
+        for o in options {
+            assert!(help.contains(o), "{command:?} --help does not mention {o}:\n{help}");
+        }
+    }
+    let top = ok(&["--help"]);
+    for c in ["demo", "scene", "trace", "figures"] {
+        assert!(top.contains(c), "--help does not list {c}:\n{top}");
+    }
+}
+
+// ----- figures -----
+
+#[test]
+fn cli_figures_writes_csv_and_svgs() {
+    let dir = TempDir::new("figures");
+    let out = dir.join("figs");
+    let args = [
+        "figures",
+        "--out",
+        path_arg(&out),
+        "--seeds",
+        "1",
+        "--sources",
+        "2",
+        "--rays",
+        "32",
+        "--count",
+        "100",
+        "--lengths",
+        "8,32",
+        "--quiet",
+    ];
+    ok(&args);
+    let csv = std::fs::read_to_string(out.join("figures.csv")).expect("no figures.csv");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert!(
+        lines[0].starts_with("length,method,sources,patches_read_before_screening"),
+        "header: {}",
+        lines[0]
+    );
+    assert_eq!(lines.len(), 1 + 2 * 3, "figures.csv:\n{csv}");
+    let columns = lines[0].split(',').count();
+    for length in ["8", "32"] {
+        for method in ["conventional", "stochastic", "deterministic"] {
+            let prefix = format!("{length},{method},2,");
+            let row = lines.iter().find(|l| l.starts_with(&prefix));
+            let row = row.unwrap_or_else(|| panic!("no row {prefix}... in figures.csv:\n{csv}"));
+            assert_eq!(row.split(',').count(), columns, "row {row}");
+        }
+    }
+    for svg in [
+        "fig07_k1.svg",
+        "fig08_patches_read_before_screening.svg",
+        "fig09_patches_read_after_screening.svg",
+        "fig10_cells_traversed.svg",
+        "fig11_intersection_computations.svg",
+        "fig13_adlc.svg",
+    ] {
+        let body = std::fs::read_to_string(out.join(svg)).unwrap_or_else(|e| panic!("{svg}: {e}"));
+        assert!(body.contains("<svg"), "{svg} is not an SVG");
+    }
+}
+
+#[test]
+fn cli_figures_rejects_bad_values() {
+    let dir = TempDir::new("figures_bad");
+    let out = dir.join("figs");
+    let o = path_arg(&out);
+    let base = ["figures", "--out", o, "--seeds", "1", "--rays", "8", "--count", "100", "--quiet"];
+    let t = |extra: &[&str], expect: &[&str]| {
+        let mut args = base.to_vec();
+        args.extend_from_slice(extra);
+        fails(&args, expect);
+    };
+    t(&["--sources", "0"], &["sources"]);
+    t(&["--lengths", "8,-8"], &["length", "-8"]);
+    t(&["--lengths", "-8,8"], &["length", "-8"]);
+    t(&["--lengths", "8,x"], &["--lengths", "x"]);
+    t(&["--cells-per-segment", "0"], &["--cells-per-segment"]);
+    t(&["--max-sector", "0"], &["--max-sector"]);
+    fails(&["figures", "--quiet"], &["--out"]);
+    // --out naming an existing file.
+    let file = dir.join("a-file");
+    std::fs::write(&file, "x").unwrap();
+    fails(
+        &["figures", "--out", path_arg(&file), "--seeds", "1", "--sources", "1", "--rays", "8", "--quiet"],
+        &["a-file"],
+    );
+}
+
+// ----- demo -----
+
+#[test]
+fn cli_demo_prints_the_table() {
+    let out = ok(&["demo", "--rays", "128"]);
+    for method in METHODS {
+        assert!(out.lines().any(|l| l.starts_with(method)), "demo: no row for {method}:\n{out}");
+    }
+    assert!(out.contains("every technique returned the brute-force nearest hit"), "demo:\n{out}");
+    assert!(out.contains("128 rays"), "demo:\n{out}");
+}
+
+#[test]
+fn cli_demo_rejects_bad_values() {
+    fails(&["demo", "--rays", "0"], &["rays"]);
+    fails(&["demo", "--source", "5000"], &["5000", "1000 segments"]);
+    fails(&["demo", "--length", "-1"], &["length", "-1"]);
+}
