@@ -274,7 +274,8 @@ impl Grid {
     /// inclusive range of cells it meets in that row. Conservative: cells are grown by `eps`.
     pub fn raster_convex(&self, poly: &[Vec2], mut row: impl FnMut(usize, usize, usize)) {
         let eps = self.eps;
-        let n = poly.len().min(8);
+        assert!(poly.len() <= 8, "raster_convex takes at most 8 vertices, got {}", poly.len());
+        let n = poly.len();
         // Each edge as (y range, x at its lower end, dx/dy); horizontal edges have no slope.
         let mut edges = [(0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64); 8];
         let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);

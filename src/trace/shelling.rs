@@ -199,7 +199,7 @@ fn trace_with(
     let mut relevant: Vec<u32> = Vec::new();
 
     while s < r {
-        let e = (s + width.clamp(params.min_sector.max(1), params.max_sector)).min(r);
+        let e = (s + width.clamp(params.min_sector, params.max_sector)).min(r);
         stats.sectors += 1;
         *tick += 1;
         let sector = *tick;
