@@ -6,12 +6,16 @@
 //! the first cell whose exit lies beyond the nearest hit found so far (by more than the grid's
 //! rounding margin, so exact ties across a cell boundary are still resolved by index).
 
-use super::{offer, screen, with_scratch, SceneView, Screen};
+use super::{offer, screen, with_scratch, HitTest, SceneView, Screen};
 use crate::counters::Counters;
-use crate::geom::{hit_front, Hit};
+use crate::geom::Hit;
 use crate::rays::Bundle;
 
-pub(super) fn trace(scene: SceneView<'_>, bundle: &Bundle) -> (Vec<Option<Hit>>, Counters) {
+pub(super) fn trace<H: HitTest>(
+    scene: SceneView<'_>,
+    bundle: &Bundle,
+    test: &H,
+) -> (Vec<Option<Hit>>, Counters) {
     let grid = scene.grid;
     let margin = 4.0 * grid.eps;
     let mut c = Counters::default();
@@ -21,7 +25,7 @@ pub(super) fn trace(scene: SceneView<'_>, bundle: &Bundle) -> (Vec<Option<Hit>>,
         // per-ray mailbox loads a patch listed in several cells once per ray.
         scratch.tick += 1;
         let source_tick = scratch.tick;
-        for ray in &bundle.rays {
+        for (r, ray) in bundle.rays.iter().enumerate() {
             scratch.tick += 1;
             let ray_tick = scratch.tick;
             let mut best: Option<Hit> = None;
@@ -45,7 +49,7 @@ pub(super) fn trace(scene: SceneView<'_>, bundle: &Bundle) -> (Vec<Option<Hit>>,
                         }
                         c.patches_read_after_screening += 1;
                         c.intersection_computations += 1;
-                        if let Some(t) = hit_front(ray, seg) {
+                        if let Some(t) = test.hit(bundle, r, p, seg) {
                             offer(&mut best, Hit { t, segment: p });
                         }
                     }

@@ -15,7 +15,7 @@ mod shelling;
 pub use shelling::{ShellParams, ShellStats};
 
 use crate::counters::Counters;
-use crate::geom::{angle_of, facing, Facing, Hit, Segment, Vec2};
+use crate::geom::{angle_of, facing, hit_front, Facing, Hit, Segment, Vec2};
 use crate::grid::Grid;
 use crate::rays::Bundle;
 use std::fmt;
@@ -80,26 +80,62 @@ pub enum TraceError {
     InvalidParams(String),
 }
 
-/// Traces `bundle` through the scene with `method`. The shell parameters are checked first
-/// ([`ShellParams::validate`]), whichever the method.
+/// The per-ray part of the hit test: how a backend tests ray `i` of the bundle against a patch
+/// the scheduler has already screened in (front-facing, not backward, not the source's own).
+///
+/// The tracers decide *which* rays meet *which* patches (the work stream); a `HitTest` decides
+/// the answer. It returns a distance key: the hit distance `t` in world units, or any value with
+/// the same order (smaller is nearer; equal keys tie and the lower patch index wins).
+pub trait HitTest {
+    fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64>;
+}
+
+/// The golden model's backend: exact predicates and `f64` distances ([`hit_front`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FloatHits;
+
+impl HitTest for FloatHits {
+    #[inline]
+    fn hit(&self, bundle: &Bundle, i: usize, _p: u32, seg: &Segment) -> Option<f64> {
+        hit_front(&bundle.rays[i], seg)
+    }
+}
+
+/// Traces `bundle` through the scene with `method` in the golden model's `f64` arithmetic. The
+/// shell parameters are checked first ([`ShellParams::validate`]), whichever the method.
 pub fn trace(
     method: Method,
     scene: SceneView<'_>,
     bundle: &Bundle,
     params: &ShellParams,
 ) -> Result<TraceResult, TraceError> {
+    trace_with(method, scene, bundle, params, &FloatHits)
+}
+
+/// [`trace`] with another backend for the per-ray hit test (the bit-true fixed-point model, say).
+pub fn trace_with<H: HitTest>(
+    method: Method,
+    scene: SceneView<'_>,
+    bundle: &Bundle,
+    params: &ShellParams,
+    hits: &H,
+) -> Result<TraceResult, TraceError> {
     params.validate().map_err(TraceError::InvalidParams)?;
     let (hits, mut counters, stats) = match method {
         Method::Brute => {
-            let (h, c) = brute::trace(scene, bundle);
+            let (h, c) = brute::trace(scene, bundle, hits);
             (h, c, ShellStats::default())
         }
         Method::Conventional => {
-            let (h, c) = conventional::trace(scene, bundle);
+            let (h, c) = conventional::trace(scene, bundle, hits);
             (h, c, ShellStats::default())
         }
-        Method::Stochastic => shelling::trace(scene, bundle, params, shelling::Tracking::Stochastic),
-        Method::Deterministic => shelling::trace(scene, bundle, params, shelling::Tracking::Deterministic),
+        Method::Stochastic => {
+            shelling::trace(scene, bundle, params, shelling::Tracking::Stochastic, hits)
+        }
+        Method::Deterministic => {
+            shelling::trace(scene, bundle, params, shelling::Tracking::Deterministic, hits)
+        }
     };
     counters.actual_intersections = hits.iter().filter(|h| h.is_some()).count() as u64;
     counters.adlc_true = adlc(&hits);

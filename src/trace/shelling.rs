@@ -29,9 +29,9 @@
 //! previous one: `width = clamp(round(α·ADLC), w_min, w_max)`; S uses its estimate, D the derived
 //! value. INTERPRETATION.md gives the reasons for each of these readings.
 
-use super::{offer, with_scratch, PatchCache, SceneView, Scratch, Screen};
+use super::{offer, with_scratch, HitTest, PatchCache, SceneView, Scratch, Screen};
 use crate::counters::Counters;
-use crate::geom::{hit_front, Hit, Vec2};
+use crate::geom::{Hit, Vec2};
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
 
@@ -139,11 +139,12 @@ struct ShellEstimate {
     flatness: f64,
 }
 
-pub(super) fn trace(
+pub(super) fn trace<H: HitTest>(
     scene: SceneView<'_>,
     bundle: &Bundle,
     params: &ShellParams,
     tracking: Tracking,
+    test: &H,
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
     with_scratch(scene, |scratch| {
         let Scratch {
@@ -157,18 +158,19 @@ pub(super) fn trace(
         } = scratch;
         *tick += 1;
         let cache = PatchCache::new(scene, bundle, info, info_stamp, *tick);
-        trace_with(scene, bundle, params, tracking, cache, tick, loaded, cell_seen, region_seen)
+        trace_bundle(scene, bundle, params, tracking, test, cache, tick, loaded, cell_seen, region_seen)
     })
 }
 
 /// The body of [`trace`], on this thread's scratch memory: `loaded`, `cell_seen` and
 /// `region_seen` hold stamps compared against fresh ticks per sector and per shell.
 #[allow(clippy::too_many_arguments)]
-fn trace_with(
+fn trace_bundle<H: HitTest>(
     scene: SceneView<'_>,
     bundle: &Bundle,
     params: &ShellParams,
     tracking: Tracking,
+    test: &H,
     mut cache: PatchCache<'_>,
     tick: &mut u64,
     loaded: &mut [u64],
@@ -329,7 +331,7 @@ fn trace_with(
                         for i in g0..g1 {
                             if alive[i] {
                                 c.intersection_computations += 1;
-                                if let Some(t) = hit_front(&bundle.rays[i], seg) {
+                                if let Some(t) = test.hit(bundle, i, p, seg) {
                                     offer(&mut best[i], Hit { t, segment: p });
                                 }
                             }
@@ -352,7 +354,7 @@ fn trace_with(
                         for i in lo..hi.max(lo) {
                             if alive[i] {
                                 c.intersection_computations += 1;
-                                if let Some(t) = hit_front(&bundle.rays[i], seg) {
+                                if let Some(t) = test.hit(bundle, i, p, seg) {
                                     offer(&mut best[i], Hit { t, segment: p });
                                 }
                             }
