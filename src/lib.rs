@@ -7,8 +7,11 @@
 //! This crate is the golden model and the experiments: scenes ([`scene`]), ray bundles
 //! ([`rays`]), the grid with macro-regions ([`grid`]), the four tracers ([`trace`]) with the
 //! paper's counters ([`counters`]), the analytic model of Section 4 ([`model`]) and the
-//! reproduction of Section 5's figures ([`figures`]). See `ARCHITECTURE.md` for the data flow.
+//! reproduction of Section 5's figures ([`figures`]). [`arith`] swaps the golden `f64` hit test
+//! for the bit-true fixed-point model of the RTL (`shelling-hdl`). See `ARCHITECTURE.md` for the data flow.
 
+pub mod agreement;
+pub mod arith;
 pub mod counters;
 pub mod figures;
 pub mod geom;

@@ -7,6 +7,7 @@ use shelling::figures::{self, FigureOptions};
 use shelling::geom::Vec2;
 use shelling::grid::GridParams;
 use shelling::rays::{Bundle, RaySet, Source};
+use shelling::arith::Arith;
 use shelling::run::{Prepared, TraceJson};
 use shelling::scene::{self, Scene};
 use shelling::trace::{Method, ShellParams};
@@ -40,6 +41,25 @@ enum Command {
     Trace(TraceArgs),
     /// Reproduce the paper's Figures 7, 8, 9, 10, 11 and 13 (CSV and SVG plots).
     Figures(FiguresArgs),
+    /// Rung 2: trace the paper's workload in f64 and in the bit-true fixed point, compare the
+    /// nearest patch of every ray and explain every disagreement by the documented error bound.
+    Agreement(AgreementArgs),
+}
+
+#[derive(Args)]
+struct AgreementArgs {
+    /// Scenes per segment length.
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
+    seeds: usize,
+    /// Source patches per scene (spread evenly over the patch indices).
+    #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
+    sources: usize,
+    /// Rays per source.
+    #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
+    rays: usize,
+    /// Ray set.
+    #[arg(long, value_enum, default_value_t = RaySet::Angle)]
+    ray_set: RaySet,
 }
 
 #[derive(Subcommand)]
@@ -131,6 +151,10 @@ struct TraceArgs {
     /// Tracing technique.
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
     method: Method,
+    /// Arithmetic of the hit tests: `float` (the f64 golden model) or `fixed` (the bit-true
+    /// model of the RTL datapath, hdl/FORMATS.md; the scene must fit its 2048-unit window).
+    #[arg(long, value_enum, default_value_t = Arith::Float)]
+    arith: Arith,
     /// Print the full result as JSON (every ray's hit and the counters).
     #[arg(long)]
     json: bool,
@@ -240,6 +264,40 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Trace(a) => trace_cmd(a),
+        Command::Agreement(a) => {
+            if a.seeds == 0 || a.seeds > shelling::figures::MAX_SEEDS {
+                bail!("--seeds must be between 1 and {}, got {}", shelling::figures::MAX_SEEDS, a.seeds);
+            }
+            if a.sources == 0 || a.sources > 1000 {
+                bail!("--sources must be between 1 and 1000 (the scene's patches), got {}", a.sources);
+            }
+            if a.rays == 0 || a.rays > shelling::rays::MAX_RAYS {
+                bail!("--rays must be between 1 and {}, got {}", shelling::rays::MAX_RAYS, a.rays);
+            }
+            let w = shelling::agreement::Workload {
+                seeds: a.seeds,
+                sources: a.sources,
+                rays: a.rays,
+                ray_set: a.ray_set,
+                ..Default::default()
+            };
+            let report = shelling::agreement::run(&w)?;
+            print!("{report}");
+            let bad: usize = report
+                .rows
+                .iter()
+                .map(|r| r.comparison.unexplained.len() + r.comparison.distance_violations.len())
+                .sum();
+            if bad > 0 {
+                for r in &report.rows {
+                    for d in r.comparison.unexplained.iter().chain(&r.comparison.distance_violations).take(5) {
+                        eprintln!("length {} {}: {d:?}", r.length, r.method);
+                    }
+                }
+                bail!("{bad} rays differ beyond the documented error bound");
+            }
+            Ok(())
+        }
         Command::Figures(a) => {
             let opts = FigureOptions {
                 out: a.out,
@@ -269,19 +327,20 @@ fn trace_cmd(a: TraceArgs) -> Result<()> {
         _ => bail!("give either --source K or both --origin X,Y and --normal NX,NY"),
     };
     let bundle = Bundle::new(source, a.ray_set, a.rays)?;
-    let result = prepared.trace(a.method, &bundle, &a.tune.shells()?)?;
+    let result = prepared.trace_in(a.arith, a.method, &bundle, &a.tune.shells()?)?;
     if a.json {
-        let json = serde_json::to_string_pretty(&TraceJson::new(&result, &bundle))
+        let json = serde_json::to_string_pretty(&TraceJson::new(&result, &bundle, a.arith))
             .context("serialising the trace")?;
         println!("{json}");
     } else {
         let hits = result.hits.iter().flatten().count();
         println!(
-            "{} rays from ({:.3}, {:.3}) traced with {}: {} hit a patch, {} escaped",
+            "{} rays from ({:.3}, {:.3}) traced with {} in {} arithmetic: {} hit a patch, {} escaped",
             bundle.len(),
             source.origin.x,
             source.origin.y,
             a.method,
+            a.arith,
             hits,
             bundle.len() - hits
         );

@@ -5,7 +5,9 @@ use crate::geom::Vec2;
 use crate::grid::{Grid, GridParams};
 use crate::rays::{Bundle, RaySet, Source, SourceError};
 use crate::scene::Scene;
-use crate::trace::{trace, Method, SceneView, ShellParams, TraceError, TraceResult};
+use crate::arith::{Arith, FixedBundle};
+use crate::trace::{trace, trace_with, Method, SceneView, ShellParams, TraceError, TraceResult};
+use shelling_hdl::formats::FormatError;
 use serde::Serialize;
 
 /// A scene with the grid built over it, ready to trace.
@@ -39,6 +41,32 @@ impl Prepared {
     ) -> Result<TraceResult, TraceError> {
         trace(method, self.view(), bundle, params)
     }
+
+    /// Traces a bundle with one technique in the chosen arithmetic.
+    pub fn trace_in(
+        &self,
+        arith: Arith,
+        method: Method,
+        bundle: &Bundle,
+        params: &ShellParams,
+    ) -> Result<TraceResult, RunError> {
+        Ok(match arith {
+            Arith::Float => self.trace(method, bundle, params)?,
+            Arith::Fixed => {
+                let fixed = FixedBundle::new(&self.scene.segments, bundle)?;
+                trace_with(method, self.view(), bundle, params, &fixed)?
+            }
+        })
+    }
+}
+
+/// What keeps a trace in a chosen arithmetic from running.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RunError {
+    #[error(transparent)]
+    Trace(#[from] TraceError),
+    #[error("the scene does not fit the fixed-point datapath: {0}")]
+    Format(#[from] FormatError),
 }
 
 /// One ray of the `trace` JSON output.
@@ -50,11 +78,12 @@ pub struct RayJson {
     pub t: Option<f64>,
 }
 
-/// The `trace` JSON output: `{"method", "rays": [...], "counters": {...}}` plus the source and
-/// the shell statistics.
+/// The `trace` JSON output: `{"method", "rays": [...], "counters": {...}}` plus the arithmetic,
+/// the source and the shell statistics.
 #[derive(Serialize)]
 pub struct TraceJson {
     pub method: Method,
+    pub arith: Arith,
     pub source: SourceJson,
     pub rays: Vec<RayJson>,
     pub counters: crate::counters::Counters,
@@ -70,10 +99,11 @@ pub struct SourceJson {
 }
 
 impl TraceJson {
-    pub fn new(result: &TraceResult, bundle: &Bundle) -> TraceJson {
+    pub fn new(result: &TraceResult, bundle: &Bundle, arith: Arith) -> TraceJson {
         let to = |v: Vec2| [v.x, v.y];
         TraceJson {
             method: result.method,
+            arith,
             source: SourceJson {
                 origin: to(bundle.source.origin),
                 normal: to(bundle.source.normal),
