@@ -142,13 +142,14 @@ pub fn mul(x: i32, y: i32) -> i32 {
 /// against the ray with direction `d` (positive when `p` lies to the left of the ray).
 #[inline]
 pub fn cross(d: [i32; 2], p: [i32; 2]) -> i32 {
-    mul(d[0], p[1]) - mul(d[1], p[0])
+    // The datapath is 32 bits wide and wraps; inside the formats' ranges it never does.
+    mul(d[0], p[1]).wrapping_sub(mul(d[1], p[0]))
 }
 
 /// `d·p` from two truncated products.
 #[inline]
 pub fn dot(d: [i32; 2], p: [i32; 2]) -> i32 {
-    mul(d[0], p[0]) + mul(d[1], p[1])
+    mul(d[0], p[0]).wrapping_add(mul(d[1], p[1]))
 }
 
 /// `true` when `v` fits a signed `bits`-wide integer.

@@ -1,7 +1,9 @@
 //! The intersection unit (bit-true model; the RTL block follows in this file).
 
-use crate::formats::{cross, dot};
+use crate::formats::{cross, dot, SH_MAX, SH_MIN};
+use crate::leaf::{Bram, Mul18};
 use crate::screener::model::PatchSetup;
+use rust_hdl::prelude::*;
 
 /// The bit-true model of the intersection unit.
 pub mod model {
@@ -36,6 +38,7 @@ pub mod model {
             return 1;
         }
         let q = q as u32;
+        let sh = sh.clamp(SH_MIN as i8, SH_MAX as i8);
         let u = if sh >= 0 {
             q >> sh
         } else if (q >> (32 + sh as i32)) != 0 {
@@ -53,6 +56,542 @@ pub mod model {
         match old {
             None => true,
             Some(o) => key > o.key || (key == o.key && id < o.id),
+        }
+    }
+}
+
+/// Bundle size limit of the unit: ray indices are 10 bits.
+pub const RAY_BITS: usize = 10;
+
+/// The intersection unit (see the module documentation).
+#[derive(LogicBlock)]
+pub struct IntersectionUnit {
+    pub clock: Signal<In, Clock>,
+    // Bundle setup: the ray direction memory.
+    pub dir_we: Signal<In, bool>,
+    pub dir_addr: Signal<In, Bits<10>>,
+    pub dir_x: Signal<In, Bits<18>>,
+    pub dir_y: Signal<In, Bits<18>>,
+    // Patch stream.
+    pub patch_valid: Signal<In, bool>,
+    pub patch_ready: Signal<Out, bool>,
+    pub patch_ax: Signal<In, Bits<18>>,
+    pub patch_ay: Signal<In, Bits<18>>,
+    pub patch_bx: Signal<In, Bits<18>>,
+    pub patch_by: Signal<In, Bits<18>>,
+    pub patch_wx: Signal<In, Bits<18>>,
+    pub patch_wy: Signal<In, Bits<18>>,
+    pub patch_sh: Signal<In, Bits<6>>,
+    pub patch_id: Signal<In, Bits<16>>,
+    pub patch_first: Signal<In, Bits<10>>,
+    pub patch_count: Signal<In, Bits<11>>,
+    // Result readout (read and clear), only while not busy.
+    pub res_re: Signal<In, bool>,
+    pub res_addr: Signal<In, Bits<10>>,
+    pub res_hit: Signal<Out, bool>,
+    pub res_id: Signal<Out, Bits<16>>,
+    pub res_key: Signal<Out, Bits<32>>,
+    // Status.
+    pub busy: Signal<Out, bool>,
+    pub tests: Signal<Out, Bits<32>>,
+    // Stage 0: the sequencer and the current patch.
+    remaining: DFF<Bits<11>>,
+    cur: DFF<Bits<10>>,
+    p_ax: DFF<Bits<18>>,
+    p_ay: DFF<Bits<18>>,
+    p_bx: DFF<Bits<18>>,
+    p_by: DFF<Bits<18>>,
+    p_wx: DFF<Bits<18>>,
+    p_wy: DFF<Bits<18>>,
+    p_sh: DFF<Bits<6>>,
+    p_id: DFF<Bits<16>>,
+    test_count: DFF<Bits<32>>,
+    issue: Signal<Local, bool>,
+    take: Signal<Local, bool>,
+    // Stage 1: directions arrive; operands to the multipliers.
+    v1: DFF<bool>,
+    ray1: DFF<Bits<10>>,
+    a1x: DFF<Bits<18>>,
+    a1y: DFF<Bits<18>>,
+    b1x: DFF<Bits<18>>,
+    b1y: DFF<Bits<18>>,
+    w1x: DFF<Bits<18>>,
+    w1y: DFF<Bits<18>>,
+    sh1: DFF<Bits<6>>,
+    id1: DFF<Bits<16>>,
+    dir_mem_x: Bram<18, 10>,
+    dir_mem_y: Bram<18, 10>,
+    mul_dx_ay: Mul18,
+    mul_dy_ax: Mul18,
+    mul_dx_by: Mul18,
+    mul_dy_bx: Mul18,
+    mul_dx_wx: Mul18,
+    mul_dy_wy: Mul18,
+    // Stages 2 and 3: inside the multipliers; products arrive in stage 3.
+    v2: DFF<bool>,
+    ray2: DFF<Bits<10>>,
+    sh2: DFF<Bits<6>>,
+    id2: DFF<Bits<16>>,
+    v3: DFF<bool>,
+    ray3: DFF<Bits<10>>,
+    sh3: DFF<Bits<6>>,
+    id3: DFF<Bits<16>>,
+    side_a: Signal<Local, Bits<32>>,
+    side_b: Signal<Local, Bits<32>>,
+    q: Signal<Local, Bits<32>>,
+    // Stage 4: the key; the ray memory is read.
+    v4: DFF<bool>,
+    ray4: DFF<Bits<10>>,
+    sh4: DFF<Bits<6>>,
+    id4: DFF<Bits<16>>,
+    q4: DFF<Bits<32>>,
+    q4_pos: Signal<Local, bool>,
+    key_right: Signal<Local, Bits<32>>,
+    key_l1: Signal<Local, Bits<32>>,
+    key_l2: Signal<Local, Bits<32>>,
+    key_l3: Signal<Local, Bits<32>>,
+    sh4_low: Signal<Local, Bits<5>>,
+    q4_top2: Signal<Local, Bits<2>>,
+    q4_top3: Signal<Local, Bits<3>>,
+    key: Signal<Local, Bits<32>>,
+    // Stage 5: compare with the ray's nearest hit and write back (with forwarding).
+    v5: DFF<bool>,
+    ray5: DFF<Bits<10>>,
+    id5: DFF<Bits<16>>,
+    key5: DFF<Bits<32>>,
+    mem_key: Bram<32, 10>,
+    mem_meta: Bram<17, 10>,
+    fw_valid: DFF<bool>,
+    fw_ray: DFF<Bits<10>>,
+    fw_key: DFF<Bits<32>>,
+    fw_id: DFF<Bits<16>>,
+    old_hit: Signal<Local, bool>,
+    old_key: Signal<Local, Bits<32>>,
+    old_id: Signal<Local, Bits<16>>,
+    meta_hit: Signal<Local, bool>,
+    meta_id: Signal<Local, Bits<16>>,
+    better: Signal<Local, bool>,
+    new_meta: Signal<Local, Bits<17>>,
+    // Constants (the Verilog-safe way to compare).
+    zero11: Constant<Bits<11>>,
+    one11: Constant<Bits<11>>,
+    one10: Constant<Bits<10>>,
+    one32: Constant<Bits<32>>,
+    zero32: Constant<Bits<32>>,
+    max32: Constant<Bits<32>>,
+    zero5: Constant<Bits<5>>,
+    zero2: Constant<Bits<2>>,
+    zero3: Constant<Bits<3>>,
+    sh_m1: Constant<Bits<6>>,
+    sh_m2: Constant<Bits<6>>,
+    hit_flag: Constant<Bits<17>>,
+    zero17: Constant<Bits<17>>,
+}
+
+impl Default for IntersectionUnit {
+    fn default() -> Self {
+        IntersectionUnit {
+            clock: Default::default(),
+            dir_we: Default::default(),
+            dir_addr: Default::default(),
+            dir_x: Default::default(),
+            dir_y: Default::default(),
+            patch_valid: Default::default(),
+            patch_ready: Default::default(),
+            patch_ax: Default::default(),
+            patch_ay: Default::default(),
+            patch_bx: Default::default(),
+            patch_by: Default::default(),
+            patch_wx: Default::default(),
+            patch_wy: Default::default(),
+            patch_sh: Default::default(),
+            patch_id: Default::default(),
+            patch_first: Default::default(),
+            patch_count: Default::default(),
+            res_re: Default::default(),
+            res_addr: Default::default(),
+            res_hit: Default::default(),
+            res_id: Default::default(),
+            res_key: Default::default(),
+            busy: Default::default(),
+            tests: Default::default(),
+            remaining: Default::default(),
+            cur: Default::default(),
+            p_ax: Default::default(),
+            p_ay: Default::default(),
+            p_bx: Default::default(),
+            p_by: Default::default(),
+            p_wx: Default::default(),
+            p_wy: Default::default(),
+            p_sh: Default::default(),
+            p_id: Default::default(),
+            test_count: Default::default(),
+            issue: Default::default(),
+            take: Default::default(),
+            v1: Default::default(),
+            ray1: Default::default(),
+            a1x: Default::default(),
+            a1y: Default::default(),
+            b1x: Default::default(),
+            b1y: Default::default(),
+            w1x: Default::default(),
+            w1y: Default::default(),
+            sh1: Default::default(),
+            id1: Default::default(),
+            dir_mem_x: Default::default(),
+            dir_mem_y: Default::default(),
+            mul_dx_ay: Default::default(),
+            mul_dy_ax: Default::default(),
+            mul_dx_by: Default::default(),
+            mul_dy_bx: Default::default(),
+            mul_dx_wx: Default::default(),
+            mul_dy_wy: Default::default(),
+            v2: Default::default(),
+            ray2: Default::default(),
+            sh2: Default::default(),
+            id2: Default::default(),
+            v3: Default::default(),
+            ray3: Default::default(),
+            sh3: Default::default(),
+            id3: Default::default(),
+            side_a: Default::default(),
+            side_b: Default::default(),
+            q: Default::default(),
+            v4: Default::default(),
+            ray4: Default::default(),
+            sh4: Default::default(),
+            id4: Default::default(),
+            q4: Default::default(),
+            q4_pos: Default::default(),
+            key_right: Default::default(),
+            key_l1: Default::default(),
+            key_l2: Default::default(),
+            key_l3: Default::default(),
+            sh4_low: Default::default(),
+            q4_top2: Default::default(),
+            q4_top3: Default::default(),
+            key: Default::default(),
+            v5: Default::default(),
+            ray5: Default::default(),
+            id5: Default::default(),
+            key5: Default::default(),
+            mem_key: Default::default(),
+            mem_meta: Default::default(),
+            fw_valid: Default::default(),
+            fw_ray: Default::default(),
+            fw_key: Default::default(),
+            fw_id: Default::default(),
+            old_hit: Default::default(),
+            old_key: Default::default(),
+            old_id: Default::default(),
+            meta_hit: Default::default(),
+            meta_id: Default::default(),
+            better: Default::default(),
+            new_meta: Default::default(),
+            zero11: Constant::new(0.into()),
+            one11: Constant::new(1.into()),
+            one10: Constant::new(1.into()),
+            one32: Constant::new(1.into()),
+            zero32: Constant::new(0.into()),
+            max32: Constant::new(0xFFFF_FFFFu64.into()),
+            zero5: Constant::new(0.into()),
+            zero2: Constant::new(0.into()),
+            zero3: Constant::new(0.into()),
+            sh_m1: Constant::new(0x3Fu64.into()),
+            sh_m2: Constant::new(0x3Eu64.into()),
+            hit_flag: Constant::new(0x1_0000u64.into()),
+            zero17: Constant::new(0.into()),
+        }
+    }
+}
+
+impl Logic for IntersectionUnit {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // Clocks and register defaults (hold).
+        dff_setup!(
+            self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, test_count, v1, ray1,
+            a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3, id3, v4, ray4, sh4,
+            id4, q4, v5, ray5, id5, key5, fw_valid, fw_ray, fw_key, fw_id
+        );
+        self.dir_mem_x.clock.next = self.clock.val();
+        self.dir_mem_y.clock.next = self.clock.val();
+        self.mem_key.clock.next = self.clock.val();
+        self.mem_meta.clock.next = self.clock.val();
+        self.mul_dx_ay.clock.next = self.clock.val();
+        self.mul_dy_ax.clock.next = self.clock.val();
+        self.mul_dx_by.clock.next = self.clock.val();
+        self.mul_dy_bx.clock.next = self.clock.val();
+        self.mul_dx_wx.clock.next = self.clock.val();
+        self.mul_dy_wy.clock.next = self.clock.val();
+
+        // Stage 0: sequencer. A patch is accepted while the current one issues its last ray
+        // (or none is active), so back-to-back patches leave no bubble.
+        self.issue.next = self.remaining.q.val() != self.zero11.val();
+        self.patch_ready.next =
+            (self.remaining.q.val() == self.zero11.val()) | (self.remaining.q.val() == self.one11.val());
+        self.take.next = self.patch_valid.val()
+            & ((self.remaining.q.val() == self.zero11.val()) | (self.remaining.q.val() == self.one11.val()));
+        if self.take.val() {
+            self.remaining.d.next = self.patch_count.val();
+            self.cur.d.next = self.patch_first.val();
+            self.p_ax.d.next = self.patch_ax.val();
+            self.p_ay.d.next = self.patch_ay.val();
+            self.p_bx.d.next = self.patch_bx.val();
+            self.p_by.d.next = self.patch_by.val();
+            self.p_wx.d.next = self.patch_wx.val();
+            self.p_wy.d.next = self.patch_wy.val();
+            self.p_sh.d.next = self.patch_sh.val();
+            self.p_id.d.next = self.patch_id.val();
+        } else if self.issue.val() {
+            self.remaining.d.next = self.remaining.q.val() - self.one11.val();
+            self.cur.d.next = self.cur.q.val() + self.one10.val();
+        }
+        if self.issue.val() {
+            self.test_count.d.next = self.test_count.q.val() + self.one32.val();
+        }
+        self.tests.next = self.test_count.q.val();
+        self.dir_mem_x.read_address.next = self.cur.q.val();
+        self.dir_mem_y.read_address.next = self.cur.q.val();
+        self.dir_mem_x.write_address.next = self.dir_addr.val();
+        self.dir_mem_y.write_address.next = self.dir_addr.val();
+        self.dir_mem_x.write_data.next = self.dir_x.val();
+        self.dir_mem_y.write_data.next = self.dir_y.val();
+        self.dir_mem_x.write_enable.next = self.dir_we.val();
+        self.dir_mem_y.write_enable.next = self.dir_we.val();
+        self.v1.d.next = self.issue.val();
+        self.ray1.d.next = self.cur.q.val();
+        self.a1x.d.next = self.p_ax.q.val();
+        self.a1y.d.next = self.p_ay.q.val();
+        self.b1x.d.next = self.p_bx.q.val();
+        self.b1y.d.next = self.p_by.q.val();
+        self.w1x.d.next = self.p_wx.q.val();
+        self.w1y.d.next = self.p_wy.q.val();
+        self.sh1.d.next = self.p_sh.q.val();
+        self.id1.d.next = self.p_id.q.val();
+
+        // Stage 1: the ray's direction is read; the six products start.
+        self.mul_dx_ay.a.next = self.dir_mem_x.read_data.val();
+        self.mul_dx_ay.b.next = self.a1y.q.val();
+        self.mul_dy_ax.a.next = self.dir_mem_y.read_data.val();
+        self.mul_dy_ax.b.next = self.a1x.q.val();
+        self.mul_dx_by.a.next = self.dir_mem_x.read_data.val();
+        self.mul_dx_by.b.next = self.b1y.q.val();
+        self.mul_dy_bx.a.next = self.dir_mem_y.read_data.val();
+        self.mul_dy_bx.b.next = self.b1x.q.val();
+        self.mul_dx_wx.a.next = self.dir_mem_x.read_data.val();
+        self.mul_dx_wx.b.next = self.w1x.q.val();
+        self.mul_dy_wy.a.next = self.dir_mem_y.read_data.val();
+        self.mul_dy_wy.b.next = self.w1y.q.val();
+        self.v2.d.next = self.v1.q.val();
+        self.ray2.d.next = self.ray1.q.val();
+        self.sh2.d.next = self.sh1.q.val();
+        self.id2.d.next = self.id1.q.val();
+        self.v3.d.next = self.v2.q.val();
+        self.ray3.d.next = self.ray2.q.val();
+        self.sh3.d.next = self.sh2.q.val();
+        self.id3.d.next = self.id2.q.val();
+
+        // Stage 3: side values and the inverse distance.
+        self.side_a.next = self.mul_dx_ay.p.val() - self.mul_dy_ax.p.val();
+        self.side_b.next = self.mul_dx_by.p.val() - self.mul_dy_bx.p.val();
+        self.q.next = self.mul_dx_wx.p.val() + self.mul_dy_wy.p.val();
+        self.v4.d.next = self.v3.q.val()
+            & ((self.side_a.val() == self.zero32.val()) | self.side_a.val().get_bit(31))
+            & !self.side_b.val().get_bit(31);
+        self.ray4.d.next = self.ray3.q.val();
+        self.sh4.d.next = self.sh3.q.val();
+        self.id4.d.next = self.id3.q.val();
+        self.q4.d.next = self.q.val();
+
+        // Stage 4: the key q·2^-sh, clamped into [1, 2^32 − 1].
+        self.q4_pos.next = !self.q4.q.val().get_bit(31) & (self.q4.q.val() != self.zero32.val());
+        self.sh4_low.next = self.sh4.q.val().get_bits::<5>(0);
+        self.key_right.next = self.q4.q.val() >> self.sh4_low.val();
+        self.key_l1.next = self.q4.q.val() << self.one32.val();
+        self.key_l2.next = self.key_l1.val() << self.one32.val();
+        self.key_l3.next = self.key_l2.val() << self.one32.val();
+        self.q4_top2.next = self.q4.q.val().get_bits::<2>(30);
+        self.q4_top3.next = self.q4.q.val().get_bits::<3>(29);
+        self.key.next = self.one32.val();
+        if self.q4_pos.val() {
+            if !self.sh4.q.val().get_bit(5) {
+                if self.key_right.val() != self.zero32.val() {
+                    self.key.next = self.key_right.val();
+                }
+            } else if self.sh4.q.val() == self.sh_m1.val() {
+                self.key.next = self.key_l1.val();
+            } else if self.sh4.q.val() == self.sh_m2.val() {
+                if self.q4_top2.val() == self.zero2.val() {
+                    self.key.next = self.key_l2.val();
+                } else {
+                    self.key.next = self.max32.val();
+                }
+            } else if self.q4_top3.val() == self.zero3.val() {
+                self.key.next = self.key_l3.val();
+            } else {
+                self.key.next = self.max32.val();
+            }
+        }
+        self.v5.d.next = self.v4.q.val();
+        self.ray5.d.next = self.ray4.q.val();
+        self.id5.d.next = self.id4.q.val();
+        self.key5.d.next = self.key.val();
+
+        // The ray memory: read for stage 4's ray, or for the host's readout.
+        self.mem_key.read_address.next = self.ray4.q.val();
+        self.mem_meta.read_address.next = self.ray4.q.val();
+        if self.res_re.val() {
+            self.mem_key.read_address.next = self.res_addr.val();
+            self.mem_meta.read_address.next = self.res_addr.val();
+        }
+
+        // Stage 5: the ray's nearest hit so far, forwarded from the previous cycle's write when
+        // it is the same ray (the read-modify-write hazard of a one-ray bundle).
+        self.meta_hit.next = self.mem_meta.read_data.val().get_bit(16);
+        self.meta_id.next = self.mem_meta.read_data.val().get_bits::<16>(0);
+        self.old_hit.next = self.meta_hit.val();
+        self.old_key.next = self.mem_key.read_data.val();
+        self.old_id.next = self.meta_id.val();
+        if self.fw_valid.q.val() & (self.fw_ray.q.val() == self.ray5.q.val()) {
+            self.old_hit.next = true;
+            self.old_key.next = self.fw_key.q.val();
+            self.old_id.next = self.fw_id.q.val();
+        }
+        self.better.next = self.v5.q.val()
+            & (!self.old_hit.val()
+                | (self.key5.q.val() > self.old_key.val())
+                | ((self.key5.q.val() == self.old_key.val()) & (self.id5.q.val() < self.old_id.val())));
+        self.new_meta.next = self.hit_flag.val() | bit_cast::<17, 16>(self.id5.q.val());
+        self.mem_key.write_address.next = self.ray5.q.val();
+        self.mem_meta.write_address.next = self.ray5.q.val();
+        self.mem_key.write_data.next = self.key5.q.val();
+        self.mem_meta.write_data.next = self.new_meta.val();
+        self.mem_key.write_enable.next = self.better.val();
+        self.mem_meta.write_enable.next = self.better.val();
+        if self.res_re.val() {
+            // Read and clear.
+            self.mem_key.write_address.next = self.res_addr.val();
+            self.mem_meta.write_address.next = self.res_addr.val();
+            self.mem_key.write_data.next = self.zero32.val();
+            self.mem_meta.write_data.next = self.zero17.val();
+            self.mem_key.write_enable.next = true;
+            self.mem_meta.write_enable.next = true;
+        }
+        self.fw_valid.d.next = self.better.val();
+        self.fw_ray.d.next = self.ray5.q.val();
+        self.fw_key.d.next = self.key5.q.val();
+        self.fw_id.d.next = self.id5.q.val();
+
+        // Readout and status.
+        self.res_hit.next = self.meta_hit.val();
+        self.res_id.next = self.meta_id.val();
+        self.res_key.next = self.mem_key.read_data.val();
+        self.busy.next = self.issue.val()
+            | self.v1.q.val()
+            | self.v2.q.val()
+            | self.v3.q.val()
+            | self.v4.q.val()
+            | self.v5.q.val();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::model::{replaces, test, Nearest};
+    use super::*;
+    use crate::formats::to_bits;
+    use rust_hdl::core::prelude::simulate;
+
+    fn step(u: &mut IntersectionUnit, set: impl FnOnce(&mut IntersectionUnit)) {
+        u.clock.next = false.into();
+        set(u);
+        assert!(simulate(u, 100));
+        u.clock.next = true.into();
+        assert!(simulate(u, 100));
+    }
+
+    fn b<const N: usize>(v: i64) -> Bits<N> {
+        Bits::from(to_bits(v, N as u32))
+    }
+
+    #[test]
+    fn quick_random_bundle_matches_model() {
+        let mut u = IntersectionUnit::default();
+        u.connect_all();
+        check_all(&u).unwrap();
+        let mut seed = 0x1234_5678u64;
+        let mut rnd = move |m: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % (2 * m as u64 + 1)) as i64 - m
+        };
+        let rays = 8usize;
+        let dirs: Vec<[i32; 2]> = (0..rays).map(|_| [rnd(65536) as i32, rnd(65536) as i32]).collect();
+        for (i, d) in dirs.iter().enumerate() {
+            step(&mut u, |u| {
+                u.dir_we.next = true;
+                u.dir_addr.next = (i as u64).into();
+                u.dir_x.next = b(d[0] as i64);
+                u.dir_y.next = b(d[1] as i64);
+            });
+        }
+        let patches: Vec<PatchSetup> = (0..20)
+            .map(|k| PatchSetup {
+                id: (k * 7 % 20) as u16,
+                a: [rnd(131071) as i32, rnd(131071) as i32],
+                b: [rnd(131071) as i32, rnd(131071) as i32],
+                w: [rnd(131071) as i32, rnd(131071) as i32],
+                sh: rnd(16) as i8 + 12,
+            })
+            .collect();
+        let mut expect: Vec<Option<Nearest>> = vec![None; rays];
+        for p in &patches {
+            for (i, d) in dirs.iter().enumerate() {
+                if let Some(k) = test(p, *d) {
+                    if replaces(k, p.id, expect[i]) {
+                        expect[i] = Some(Nearest { key: k, id: p.id });
+                    }
+                }
+            }
+        }
+        let mut next = 0;
+        let mut cycles = 0;
+        while next < patches.len() || u.busy.val() {
+            let ready = u.patch_ready.val();
+            let p = patches.get(next).copied();
+            step(&mut u, |u| {
+                u.dir_we.next = false;
+                u.patch_valid.next = p.is_some();
+                if let Some(p) = p {
+                    u.patch_ax.next = b(p.a[0] as i64);
+                    u.patch_ay.next = b(p.a[1] as i64);
+                    u.patch_bx.next = b(p.b[0] as i64);
+                    u.patch_by.next = b(p.b[1] as i64);
+                    u.patch_wx.next = b(p.w[0] as i64);
+                    u.patch_wy.next = b(p.w[1] as i64);
+                    u.patch_sh.next = b(p.sh as i64);
+                    u.patch_id.next = (p.id as u64).into();
+                    u.patch_first.next = 0.into();
+                    u.patch_count.next = (rays as u64).into();
+                }
+            });
+            if p.is_some() && ready {
+                next += 1;
+            }
+            cycles += 1;
+            assert!(cycles < 10_000);
+        }
+        assert_eq!(u.tests.val().to_u64(), (patches.len() * rays) as u64);
+        for i in 0..rays {
+            step(&mut u, |u| {
+                u.patch_valid.next = false;
+                u.res_re.next = true;
+                u.res_addr.next = (i as u64).into();
+            });
+            let got = u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() });
+            assert_eq!(got, expect[i], "ray {i}");
         }
     }
 }

@@ -6,4 +6,6 @@
 
 pub mod formats;
 pub mod intersection;
+pub mod leaf;
+pub mod loader;
 pub mod screener;

@@ -1,0 +1,1 @@
+//! The patch loader (in progress).
