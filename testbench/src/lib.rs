@@ -11,6 +11,8 @@
 //!   backpressure, independent of any particular block.
 //! - [`scoreboard`]: [`Scoreboard`] compares DUT outputs with model outputs in order and explains
 //!   the first mismatch (index, cycle, seed, DUT vs model).
+//! - [`intersection`]: the intersection unit's bundle setup, paced patch stream and readout,
+//!   with the bit-true model's answer ([`intersection::model_bundle`]).
 //! - [`replay`]: rung 4 of the equivalence ladder (`DESIGN.md` §4): the ports recorded during a
 //!   rust-hdl run are replayed against the block's exported Verilog under Icarus Verilog (or
 //!   Verilator), which must reproduce every output bit-exactly.
@@ -70,6 +72,7 @@
 //! ```
 
 pub mod driver;
+pub mod intersection;
 pub mod error;
 pub mod replay;
 pub mod scoreboard;

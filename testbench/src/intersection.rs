@@ -1,0 +1,148 @@
+//! Driving the intersection unit ([`IntersectionUnit`]): bundle setup, a paced patch stream and
+//! the readout of the ray memory, with the bit-true model's answer beside it.
+//!
+//! A [`Job`] is one patch set up by the screener plus the range of rays it is tested against
+//! (the scheduler's decision). [`run_bundle`] loads the directions, streams the jobs (random idle
+//! cycles on request), waits until the unit is idle and reads every ray's nearest hit back
+//! (read-and-clear, so the unit is ready for the next bundle). [`model_bundle`] computes what it
+//! must return.
+
+use crate::{impl_clocked, Driver, Error, Pacing, Result, Source};
+use rust_hdl::prelude::*;
+use shelling_hdl::formats::to_bits;
+use shelling_hdl::intersection::model::{replaces, test, Nearest};
+use shelling_hdl::intersection::{IntersectionUnit, RAY_BITS};
+use shelling_hdl::screener::model::PatchSetup;
+
+impl_clocked!(IntersectionUnit);
+
+/// Rays a bundle may hold.
+pub const MAX_BUNDLE: usize = 1 << RAY_BITS;
+
+/// One patch and the rays `first .. first + count` (modulo the bundle memory) it is tested against.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Job {
+    pub patch: PatchSetup,
+    pub first: u16,
+    pub count: u16,
+}
+
+fn field<const N: usize>(v: i64) -> Bits<N> {
+    Bits::from(to_bits(v, N as u32))
+}
+
+/// The rays a bundle's readout must cover: the loaded directions and every ray a job touches
+/// (a job may run past the loaded ones and wrap around the ray memory; the unit's direction
+/// memory is zero at power-up).
+pub fn rays_touched(dirs: &[[i32; 2]], jobs: &[Job]) -> usize {
+    jobs.iter().map(|j| j.first as usize + j.count as usize).max().unwrap_or(0).max(dirs.len()).min(MAX_BUNDLE)
+}
+
+/// What the unit must hold after the jobs, for rays `0..rays_touched` (the bit-true model).
+pub fn model_bundle(dirs: &[[i32; 2]], jobs: &[Job]) -> Vec<Option<Nearest>> {
+    let mut best = vec![None; MAX_BUNDLE];
+    for j in jobs {
+        for k in 0..j.count as usize {
+            let r = (j.first as usize + k) % MAX_BUNDLE;
+            if let Some(key) = test(&j.patch, dirs.get(r).copied().unwrap_or_default()) {
+                if replaces(key, j.patch.id, best[r]) {
+                    best[r] = Some(Nearest { key, id: j.patch.id });
+                }
+            }
+        }
+    }
+    best.truncate(rays_touched(dirs, jobs));
+    best
+}
+
+/// Writes the bundle's ray directions (one per cycle).
+pub fn load_directions(drv: &mut Driver<IntersectionUnit>, dirs: &[[i32; 2]]) -> Result<()> {
+    if dirs.len() > MAX_BUNDLE {
+        return Err(Error::new(format!("a bundle holds at most {MAX_BUNDLE} rays, got {}", dirs.len())));
+    }
+    for (i, d) in dirs.iter().enumerate() {
+        drv.cycle(|u| {
+            u.dir_we.next = true;
+            u.dir_addr.next = (i as u64).into();
+            u.dir_x.next = field(d[0] as i64);
+            u.dir_y.next = field(d[1] as i64);
+        })?;
+    }
+    drv.cycle(|u| u.dir_we.next = false)
+}
+
+/// Streams the jobs (random idle cycles if `pacing.idle`), then waits until the unit is idle.
+/// Returns the number of cycles from the first offer to idle.
+pub fn stream_jobs(drv: &mut Driver<IntersectionUnit>, jobs: &[Job], pacing: Pacing, seed: u64) -> Result<u64> {
+    let start = drv.cycles();
+    let tests: u64 = jobs.iter().map(|j| j.count as u64).sum();
+    let limit = start + 16 + 2 * (tests + jobs.len() as u64) * if pacing.idle { 4 } else { 1 };
+    let mut src = Source::new(jobs.iter().copied(), pacing, seed);
+    loop {
+        drv.drive(|u| {
+            let job = src.present(true).copied();
+            u.patch_valid.next = job.is_some();
+            if let Some(j) = job {
+                let p = j.patch;
+                u.patch_ax.next = field(p.a[0] as i64);
+                u.patch_ay.next = field(p.a[1] as i64);
+                u.patch_bx.next = field(p.b[0] as i64);
+                u.patch_by.next = field(p.b[1] as i64);
+                u.patch_wx.next = field(p.w[0] as i64);
+                u.patch_wy.next = field(p.w[1] as i64);
+                u.patch_sh.next = field(p.sh as i64);
+                u.patch_id.next = (p.id as u64).into();
+                u.patch_first.next = (j.first as u64 % MAX_BUNDLE as u64).into();
+                u.patch_count.next = (j.count as u64).into();
+            }
+        })?;
+        let u = drv.uut();
+        src.accepted(u.patch_valid.val() && u.patch_ready.val())?;
+        drv.tick()?;
+        if src.is_done() && !drv.uut().busy.val() && !drv.uut().patch_valid.val() {
+            break;
+        }
+        if drv.cycles() > limit {
+            return Err(Error::new(format!(
+                "no progress after {} cycles: {} of {} jobs accepted",
+                drv.cycles() - start,
+                src.sent(),
+                jobs.len()
+            )));
+        }
+    }
+    Ok(drv.cycles() - start)
+}
+
+/// Reads and clears the nearest hits of rays `0..rays`.
+pub fn read_hits(drv: &mut Driver<IntersectionUnit>, rays: usize) -> Result<Vec<Option<Nearest>>> {
+    let mut out = Vec::with_capacity(rays);
+    for i in 0..rays {
+        if drv.uut().busy.val() {
+            return Err(Error::new("readout while the unit is busy"));
+        }
+        drv.cycle(|u| {
+            u.patch_valid.next = false;
+            u.res_re.next = true;
+            u.res_addr.next = (i as u64).into();
+        })?;
+        let u = drv.uut();
+        out.push(u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() }));
+    }
+    drv.cycle(|u| u.res_re.next = false)?;
+    Ok(out)
+}
+
+/// A whole bundle on a unit fresh from power-up or a previous readout: directions, jobs, readout
+/// of [`rays_touched`] rays. Returns the hits and the streaming cycles.
+pub fn run_bundle(
+    drv: &mut Driver<IntersectionUnit>,
+    dirs: &[[i32; 2]],
+    jobs: &[Job],
+    pacing: Pacing,
+    seed: u64,
+) -> Result<(Vec<Option<Nearest>>, u64)> {
+    load_directions(drv, dirs)?;
+    let cycles = stream_jobs(drv, jobs, pacing, seed)?;
+    Ok((read_hits(drv, rays_touched(dirs, jobs))?, cycles))
+}

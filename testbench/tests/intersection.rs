@@ -1,0 +1,207 @@
+//! The intersection unit, rungs 3 and 4: its rust-hdl simulation equals the bit-true model on
+//! seeded random ray-patch vectors and corner cases, under random idle cycles on the patch
+//! stream; its exported Verilog reproduces the simulation under Icarus Verilog.
+//!
+//! The unit has no output stream (results are read from the ray memory when it is idle), so
+//! backpressure is the unit's own: `patch_ready` falls while a patch sweeps its rays. Every test
+//! prints its seed on failure.
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use shelling_hdl::formats::{direction, Quantizer};
+use shelling_hdl::intersection::IntersectionUnit;
+use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
+use shelling_testbench::intersection::{model_bundle, run_bundle, Job, MAX_BUNDLE};
+use shelling_testbench::{waveform_path, Driver, Error, Pacing, Result, Scoreboard, Simulator};
+use std::path::PathBuf;
+
+fn driver() -> Result<Driver<IntersectionUnit>> {
+    Driver::new(IntersectionUnit::default())
+}
+
+/// Runs one bundle on a fresh unit and checks every ray against the model.
+fn check(name: &str, dirs: &[[i32; 2]], jobs: &[Job], pacing: Pacing, seed: u64) -> Result<u64> {
+    let mut drv = driver()?;
+    let (hits, cycles) = run_bundle(&mut drv, dirs, jobs, pacing, seed)?;
+    let mut board = Scoreboard::new(name, seed, model_bundle(dirs, jobs)).with_context(pacing.to_string());
+    board.check_all(hits.into_iter().enumerate().map(|(i, h)| (i as u64, h)))?;
+    board.finish()?;
+    let tests: u64 = jobs.iter().map(|j| j.count as u64).sum();
+    if drv.uut().tests.val().to_u64() != tests {
+        return Err(Error::new(format!("{name}: tests counter {} != {tests}", drv.uut().tests.val().to_u64())));
+    }
+    Ok(cycles)
+}
+
+fn raw(rng: &mut ChaCha8Rng, bits: u32) -> i32 {
+    rng.random_range(-(1i32 << (bits - 1))..(1i32 << (bits - 1)))
+}
+
+/// A patch with arbitrary 18-bit fields: exercises every datapath bit, wrap-around included.
+fn raw_patch(rng: &mut ChaCha8Rng, id: u16) -> PatchSetup {
+    PatchSetup {
+        id,
+        a: [raw(rng, 18), raw(rng, 18)],
+        b: [raw(rng, 18), raw(rng, 18)],
+        w: [raw(rng, 18), raw(rng, 18)],
+        sh: rng.random_range(-3..=31),
+    }
+}
+
+fn unit_dir(rng: &mut ChaCha8Rng) -> [i32; 2] {
+    let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+    direction(|| "ray".into(), [phi.cos(), phi.sin()]).expect("unit vector")
+}
+
+/// Realistic patches: random segments of a 2048-unit window screened by the screener's model.
+fn scene_bundle(rng: &mut ChaCha8Rng, rays: usize, patches: usize) -> (Vec<[i32; 2]>, Vec<Job>) {
+    let q = Quantizer { offset: [0.0, 0.0] };
+    let o = [rng.random_range(200.0..1800.0), rng.random_range(200.0..1800.0)];
+    let phi: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+    let n = [phi.cos(), phi.sin()];
+    let dirs: Vec<[i32; 2]> = (0..rays)
+        .map(|i| {
+            let a = phi - std::f64::consts::FRAC_PI_2 + (i as f64 + 0.5) * std::f64::consts::PI / rays as f64;
+            direction(|| "ray".into(), [a.cos(), a.sin()]).expect("unit vector")
+        })
+        .collect();
+    let setup = BundleSetup {
+        origin: q.point(|| "origin".into(), o).expect("in range"),
+        normal: direction(|| "normal".into(), n).expect("unit"),
+        first: dirs[0],
+        last: dirs[rays - 1],
+    };
+    let mut jobs = Vec::new();
+    let mut id = 0u16;
+    while jobs.len() < patches {
+        let c = [o[0] + rng.random_range(-150.0..150.0), o[1] + rng.random_range(-150.0..150.0)];
+        let len: f64 = rng.random_range(0.05..64.0);
+        let t: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+        let a = q.point(|| "a".into(), [c[0] - len * t.cos(), c[1] - len * t.sin()]).expect("in range");
+        let b = q.point(|| "b".into(), [c[0] + len * t.cos(), c[1] + len * t.sin()]).expect("in range");
+        if let Verdict::Pass(p) = screen(&setup, &Patch { id, a, b }) {
+            let first = rng.random_range(0..rays) as u16;
+            let count = rng.random_range(0..=rays) as u16;
+            jobs.push(Job { patch: p, first, count });
+        }
+        id = id.wrapping_add(1);
+    }
+    (dirs, jobs)
+}
+
+#[test]
+fn random_vectors_match_the_model_bit_for_bit() -> Result<()> {
+    // 100 000+ ray-patch tests: raw 18-bit fields and realistic screened patches, both pacings.
+    let mut total = 0u64;
+    for (k, pacing) in [Pacing::NONE, Pacing { idle: true, backpressure: false }].into_iter().enumerate() {
+        let seed = 0x1ee7_0000 + k as u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let dirs: Vec<[i32; 2]> =
+            (0..64).map(|i| if i % 2 == 0 { unit_dir(&mut rng) } else { [raw(&mut rng, 18), raw(&mut rng, 18)] }).collect();
+        let jobs: Vec<Job> = (0..400)
+            .map(|i| {
+                let id = rng.random();
+                Job { patch: raw_patch(&mut rng, id), first: (i * 13 % 64) as u16, count: 64 }
+            })
+            .collect();
+        check("raw vectors", &dirs, &jobs, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+        total += jobs.iter().map(|j| j.count as u64).sum::<u64>();
+        let (dirs, jobs) = scene_bundle(&mut rng, 256, 200);
+        check("scene vectors", &dirs, &jobs, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+        total += jobs.iter().map(|j| j.count as u64).sum::<u64>();
+    }
+    assert!(total >= 100_000, "only {total} vectors");
+    Ok(())
+}
+
+#[test]
+fn corner_cases() -> Result<()> {
+    let seed = 7;
+    let e = 1 << 16;
+    let (lo, hi) = (-(1 << 17), (1 << 17) - 1);
+    // Rays along +x, +y, -x, the diagonal, and the extreme raw values.
+    let dirs = vec![[e, 0], [0, e], [-e, 0], [46341, 46341], [lo, lo], [hi, hi], [lo, hi], [0, 0], [0, e]];
+    let w = [1 << 16, 0];
+    let patch = |id, a: [i32; 2], b: [i32; 2], sh| PatchSetup { id, a, b, w, sh };
+    let jobs = vec![
+        // Endpoint exactly on the +x ray (side value 0) on either end: both hit.
+        Job { patch: patch(3, [640, 0], [640, 640], 0), first: 0, count: 8 },
+        Job { patch: patch(2, [640, -640], [640, 0], 0), first: 0, count: 8 },
+        // A patch parallel to the +x ray on its line: both side values 0, hit by the model's rule.
+        Job { patch: patch(9, [64, 0], [128, 0], 5), first: 0, count: 1 },
+        // Equal keys: the lower id wins, whichever comes first.
+        Job { patch: patch(7, [640, -640], [640, 640], 0), first: 0, count: 8 },
+        Job { patch: patch(5, [640, -640], [640, 640], 0), first: 0, count: 8 },
+        // Extreme coordinates and exponents, saturating keys.
+        Job { patch: PatchSetup { id: 0xffff, a: [hi, lo], b: [hi, hi], w: [hi, hi], sh: -3 }, first: 0, count: 8 },
+        Job { patch: PatchSetup { id: 1, a: [lo, lo], b: [lo, hi], w: [lo, lo], sh: -2 }, first: 0, count: 8 },
+        Job { patch: PatchSetup { id: 4, a: [hi, lo], b: [hi, hi], w: [hi, 0], sh: 31 }, first: 0, count: 8 },
+        // Zero-length bundles, back to back.
+        Job { patch: patch(11, [640, -640], [640, 640], 0), first: 3, count: 0 },
+        Job { patch: patch(12, [640, -640], [640, 640], 0), first: 5, count: 0 },
+        // One-ray bundles on ray 8 (no other job touches it), back to back: the read-modify-write
+        // hazard. Equal keys, so the lowest id (19) must survive the later, higher ones.
+        Job { patch: PatchSetup { id: 19, a: [64, 64], b: [-64, 64], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
+        Job { patch: PatchSetup { id: 21, a: [64, 32], b: [-64, 32], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
+        Job { patch: PatchSetup { id: 20, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
+        Job { patch: PatchSetup { id: 22, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
+        // Two- and three-ray bundles wrapping around the end of the ray memory.
+        Job { patch: patch(30, [8, -8], [8, 8], 0), first: (MAX_BUNDLE - 1) as u16, count: 2 },
+        Job { patch: patch(31, [8, -8], [8, 8], 0), first: (MAX_BUNDLE - 1) as u16, count: 3 },
+    ];
+    for pacing in [Pacing::NONE, Pacing { idle: true, backpressure: false }] {
+        check("corner cases", &dirs, &jobs, pacing, seed)?;
+    }
+    // One-ray jobs on one ray, hundreds in a row, random patches: the hazard under load.
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let dirs: Vec<[i32; 2]> = (0..4).map(|_| unit_dir(&mut rng)).collect();
+    let jobs: Vec<Job> =
+        (0..600).map(|i| Job { patch: raw_patch(&mut rng, (i % 97) as u16), first: (i / 200) as u16, count: 1 }).collect();
+    check("one-ray bundles", &dirs, &jobs, Pacing::NONE, seed)?;
+    let updates = model_bundle(&dirs, &jobs).iter().flatten().count();
+    assert!(updates > 0, "the one-ray run never hit");
+    Ok(())
+}
+
+#[test]
+fn back_to_back_patches_keep_one_test_per_clock() -> Result<()> {
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let dirs: Vec<[i32; 2]> = (0..32).map(|_| unit_dir(&mut rng)).collect();
+    let jobs: Vec<Job> = (0..50).map(|i| Job { patch: raw_patch(&mut rng, i), first: 0, count: 32 }).collect();
+    let cycles = check("throughput", &dirs, &jobs, Pacing::NONE, 3)?;
+    // 1600 tests at II = 1, plus the pipeline's fill and drain.
+    assert!(cycles <= 1600 + 8, "{cycles} cycles for 1600 tests");
+    Ok(())
+}
+
+#[test]
+fn exported_verilog_reproduces_the_simulation() -> Result<()> {
+    let seed = 0x5eed;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let (dirs, mut jobs) = scene_bundle(&mut rng, 64, 60);
+    jobs.extend((0..60).map(|i| Job { patch: raw_patch(&mut rng, i), first: (i % 64) as u16, count: (i % 5) as u16 }));
+    let mut drv = driver()?;
+    drv.record_ports()?;
+    run_bundle(&mut drv, &dirs, &jobs, Pacing { idle: true, backpressure: false }, seed)?;
+    let rec = drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("intersection_unit");
+    let report = rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    println!("{report:?}");
+    Ok(())
+}
+
+#[test]
+fn vcd_on_request() -> Result<()> {
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let (dirs, jobs) = scene_bundle(&mut rng, 16, 8);
+    let mut drv = driver()?;
+    let path = waveform_path("intersection_unit_test");
+    drv.stream_vcd(&path, 0..200)?;
+    run_bundle(&mut drv, &dirs, &jobs, Pacing::NONE, 11)?;
+    drv.finish_vcd()?;
+    let text = std::fs::read_to_string(&path).map_err(|e| Error::new(e.to_string()))?;
+    for signal in ["patch_ready", "busy", "key5", "fw_valid"] {
+        assert!(text.contains(signal), "the VCD lacks {signal}");
+    }
+    Ok(())
+}
