@@ -2,12 +2,12 @@
 
 use anyhow::{bail, Context, Result};
 use clap::{ArgGroup, Args, Parser, Subcommand};
+use shelling::arith::Arith;
 use shelling::counters::Counters;
 use shelling::figures::{self, FigureOptions};
 use shelling::geom::Vec2;
 use shelling::grid::GridParams;
 use shelling::rays::{Bundle, RaySet, Source};
-use shelling::arith::Arith;
 use shelling::run::{Prepared, TraceJson};
 use shelling::scene::{self, Scene};
 use shelling::trace::{Method, ShellParams};
@@ -44,6 +44,16 @@ enum Command {
     /// Rung 2: trace the paper's workload in f64 and in the bit-true fixed point, compare the
     /// nearest patch of every ray and explain every disagreement by the documented error bound.
     Agreement(AgreementArgs),
+    /// Write the Verilog of every RTL block (one file per block, module named after it) and a
+    /// file list `files.f`, for Yosys, nextpnr or vendor tools.
+    ExportVerilog(ExportArgs),
+}
+
+#[derive(Args)]
+struct ExportArgs {
+    /// Output directory (created if missing).
+    #[arg(long)]
+    out: PathBuf,
 }
 
 #[derive(Args)]
@@ -264,6 +274,14 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Trace(a) => trace_cmd(a),
+        Command::ExportVerilog(a) => {
+            let paths =
+                shelling_testbench::export::write(&a.out).map_err(|e| anyhow::anyhow!("{}", e.message()))?;
+            for p in paths {
+                println!("{}", p.display());
+            }
+            Ok(())
+        }
         Command::Agreement(a) => {
             if a.seeds == 0 || a.seeds > shelling::figures::MAX_SEEDS {
                 bail!("--seeds must be between 1 and {}, got {}", shelling::figures::MAX_SEEDS, a.seeds);
@@ -290,7 +308,8 @@ fn run(cli: Cli) -> Result<()> {
                 .sum();
             if bad > 0 {
                 for r in &report.rows {
-                    for d in r.comparison.unexplained.iter().chain(&r.comparison.distance_violations).take(5) {
+                    for d in r.comparison.unexplained.iter().chain(&r.comparison.distance_violations).take(5)
+                    {
                         eprintln!("length {} {}: {d:?}", r.length, r.method);
                     }
                 }

@@ -531,3 +531,65 @@ fn cli_demo_rejects_bad_values() {
     fails(&["demo", "--source", "5000"], &["5000", "1000 segments"]);
     fails(&["demo", "--length", "-1"], &["length", "-1"]);
 }
+
+// ----- fixed point, agreement, Verilog export -----
+
+#[test]
+fn cli_trace_fixed_arithmetic() {
+    let dir = TempDir::new("fixed");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 3);
+    let float = parse_json(
+        &ok(&["trace", "--scene", path_arg(&scene), "--source", "5", "--rays", "256", "--json"]),
+        "float",
+    );
+    let out = ok(&[
+        "trace",
+        "--scene",
+        path_arg(&scene),
+        "--source",
+        "5",
+        "--rays",
+        "256",
+        "--arith",
+        "fixed",
+        "--json",
+    ]);
+    let fixed = parse_json(&out, "fixed");
+    assert_eq!(fixed["arith"], "fixed");
+    assert_eq!(float["arith"], "float");
+    let f = check_trace_json(&float, "stochastic", 256);
+    let x = check_trace_json(&fixed, "stochastic", 256);
+    let same = f.iter().zip(&x).filter(|(a, b)| a.0 == b.0).count();
+    assert!(same >= 250, "only {same} of 256 rays agree between float and fixed");
+    // A scene beyond the fixed-point window is refused with the offending value named.
+    let big = dir.join("big.json");
+    std::fs::write(&big, r#"{"segments": [{"a": [0, 0], "b": [10, 0]}, {"a": [100, 5], "b": [5000, 5]}]}"#)
+        .unwrap();
+    fails(
+        &["trace", "--scene", path_arg(&big), "--source", "0", "--arith", "fixed"],
+        &["fixed-point", "segment 1 endpoint b x", "5000"],
+    );
+}
+
+#[test]
+fn cli_agreement_reports_every_length() {
+    let out = ok(&["agreement", "--sources", "2", "--rays", "128"]);
+    for l in ["4", "8", "16", "32", "64", "128"] {
+        assert!(out.lines().any(|line| line.trim_start().starts_with(l)), "no row for length {l}:\n{out}");
+    }
+    fails(&["agreement", "--sources", "0"], &["--sources"]);
+}
+
+#[test]
+fn cli_export_verilog_writes_every_block_and_a_file_list() {
+    let dir = TempDir::new("export");
+    let out = dir.join("v");
+    ok(&["export-verilog", "--out", path_arg(&out)]);
+    let list = std::fs::read_to_string(out.join("files.f")).expect("files.f");
+    assert!(!list.is_empty());
+    for name in list.lines() {
+        let v = std::fs::read_to_string(out.join(name)).expect("listed file exists");
+        let module = name.trim_end_matches(".v");
+        assert!(v.contains(&format!("module {module}(")), "{name} lacks module {module}");
+    }
+}

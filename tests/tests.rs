@@ -1,3 +1,4 @@
 mod cli;
+mod hardware;
 mod scene_loader;
 mod tracers;

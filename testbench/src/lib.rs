@@ -11,6 +11,8 @@
 //!   backpressure, independent of any particular block.
 //! - [`scoreboard`]: [`Scoreboard`] compares DUT outputs with model outputs in order and explains
 //!   the first mismatch (index, cycle, seed, DUT vs model).
+//! - [`export`]: the Verilog of every block, one file each, for `shelling export-verilog` and
+//!   the committed copies in `hdl/verilog/`.
 //! - [`intersection`]: the intersection unit's bundle setup, paced patch stream and readout,
 //!   with the bit-true model's answer ([`intersection::model_bundle`]).
 //! - [`replay`]: rung 4 of the equivalence ladder (`DESIGN.md` §4): the ports recorded during a
@@ -72,8 +74,9 @@
 //! ```
 
 pub mod driver;
-pub mod intersection;
 pub mod error;
+pub mod export;
+pub mod intersection;
 pub mod replay;
 pub mod scoreboard;
 pub mod stream;

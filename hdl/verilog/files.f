@@ -1,0 +1,2 @@
+intersection_unit.v
+patch_loader.v

@@ -1,0 +1,1828 @@
+// intersection_unit: exported from rust-hdl by `shelling export-verilog`; do not edit.
+
+
+module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  dir_we;
+    input wire  [9:0] dir_addr;
+    input wire  [17:0] dir_x;
+    input wire  [17:0] dir_y;
+    input wire  patch_valid;
+    output reg  patch_ready;
+    input wire  [17:0] patch_ax;
+    input wire  [17:0] patch_ay;
+    input wire  [17:0] patch_bx;
+    input wire  [17:0] patch_by;
+    input wire  [17:0] patch_wx;
+    input wire  [17:0] patch_wy;
+    input wire  [5:0] patch_sh;
+    input wire  [15:0] patch_id;
+    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_count;
+    input wire  res_re;
+    input wire  [9:0] res_addr;
+    output reg  res_hit;
+    output reg  [15:0] res_id;
+    output reg  [31:0] res_key;
+    output reg  busy;
+    output reg  [31:0] tests;
+    
+    // Constant declarations
+    localparam  zero11 = 11'b0;
+    localparam  one11 = 11'b1;
+    localparam  one10 = 10'b1;
+    localparam  one32 = 32'h1;
+    localparam  zero32 = 32'h0;
+    localparam  max32 = 32'hffffffff;
+    localparam  zero5 = 5'b0;
+    localparam  zero2 = 2'b0;
+    localparam  zero3 = 3'b0;
+    localparam  sh_m1 = 6'b111111;
+    localparam  sh_m2 = 6'b111110;
+    localparam  hit_flag = 17'b10000000000000000;
+    localparam  zero17 = 17'b0;
+    
+    // Stub signals
+    reg  [10:0] remaining$d;
+    wire  [10:0] remaining$q;
+    reg  remaining$clock;
+    reg  [9:0] cur$d;
+    wire  [9:0] cur$q;
+    reg  cur$clock;
+    reg  [17:0] p_ax$d;
+    wire  [17:0] p_ax$q;
+    reg  p_ax$clock;
+    reg  [17:0] p_ay$d;
+    wire  [17:0] p_ay$q;
+    reg  p_ay$clock;
+    reg  [17:0] p_bx$d;
+    wire  [17:0] p_bx$q;
+    reg  p_bx$clock;
+    reg  [17:0] p_by$d;
+    wire  [17:0] p_by$q;
+    reg  p_by$clock;
+    reg  [17:0] p_wx$d;
+    wire  [17:0] p_wx$q;
+    reg  p_wx$clock;
+    reg  [17:0] p_wy$d;
+    wire  [17:0] p_wy$q;
+    reg  p_wy$clock;
+    reg  [5:0] p_sh$d;
+    wire  [5:0] p_sh$q;
+    reg  p_sh$clock;
+    reg  [15:0] p_id$d;
+    wire  [15:0] p_id$q;
+    reg  p_id$clock;
+    reg  [31:0] test_count$d;
+    wire  [31:0] test_count$q;
+    reg  test_count$clock;
+    reg  v1$d;
+    wire  v1$q;
+    reg  v1$clock;
+    reg  [9:0] ray1$d;
+    wire  [9:0] ray1$q;
+    reg  ray1$clock;
+    reg  [17:0] a1x$d;
+    wire  [17:0] a1x$q;
+    reg  a1x$clock;
+    reg  [17:0] a1y$d;
+    wire  [17:0] a1y$q;
+    reg  a1y$clock;
+    reg  [17:0] b1x$d;
+    wire  [17:0] b1x$q;
+    reg  b1x$clock;
+    reg  [17:0] b1y$d;
+    wire  [17:0] b1y$q;
+    reg  b1y$clock;
+    reg  [17:0] w1x$d;
+    wire  [17:0] w1x$q;
+    reg  w1x$clock;
+    reg  [17:0] w1y$d;
+    wire  [17:0] w1y$q;
+    reg  w1y$clock;
+    reg  [5:0] sh1$d;
+    wire  [5:0] sh1$q;
+    reg  sh1$clock;
+    reg  [15:0] id1$d;
+    wire  [15:0] id1$q;
+    reg  id1$clock;
+    reg  dir_mem_x$clock;
+    reg  [9:0] dir_mem_x$read_address;
+    wire  [17:0] dir_mem_x$read_data;
+    reg  [9:0] dir_mem_x$write_address;
+    reg  [17:0] dir_mem_x$write_data;
+    reg  dir_mem_x$write_enable;
+    reg  dir_mem_y$clock;
+    reg  [9:0] dir_mem_y$read_address;
+    wire  [17:0] dir_mem_y$read_data;
+    reg  [9:0] dir_mem_y$write_address;
+    reg  [17:0] dir_mem_y$write_data;
+    reg  dir_mem_y$write_enable;
+    reg  mul_dx_ay$clock;
+    reg  [17:0] mul_dx_ay$a;
+    reg  [17:0] mul_dx_ay$b;
+    wire  [31:0] mul_dx_ay$p;
+    reg  mul_dy_ax$clock;
+    reg  [17:0] mul_dy_ax$a;
+    reg  [17:0] mul_dy_ax$b;
+    wire  [31:0] mul_dy_ax$p;
+    reg  mul_dx_by$clock;
+    reg  [17:0] mul_dx_by$a;
+    reg  [17:0] mul_dx_by$b;
+    wire  [31:0] mul_dx_by$p;
+    reg  mul_dy_bx$clock;
+    reg  [17:0] mul_dy_bx$a;
+    reg  [17:0] mul_dy_bx$b;
+    wire  [31:0] mul_dy_bx$p;
+    reg  mul_dx_wx$clock;
+    reg  [17:0] mul_dx_wx$a;
+    reg  [17:0] mul_dx_wx$b;
+    wire  [31:0] mul_dx_wx$p;
+    reg  mul_dy_wy$clock;
+    reg  [17:0] mul_dy_wy$a;
+    reg  [17:0] mul_dy_wy$b;
+    wire  [31:0] mul_dy_wy$p;
+    reg  v2$d;
+    wire  v2$q;
+    reg  v2$clock;
+    reg  [9:0] ray2$d;
+    wire  [9:0] ray2$q;
+    reg  ray2$clock;
+    reg  [5:0] sh2$d;
+    wire  [5:0] sh2$q;
+    reg  sh2$clock;
+    reg  [15:0] id2$d;
+    wire  [15:0] id2$q;
+    reg  id2$clock;
+    reg  v3$d;
+    wire  v3$q;
+    reg  v3$clock;
+    reg  [9:0] ray3$d;
+    wire  [9:0] ray3$q;
+    reg  ray3$clock;
+    reg  [5:0] sh3$d;
+    wire  [5:0] sh3$q;
+    reg  sh3$clock;
+    reg  [15:0] id3$d;
+    wire  [15:0] id3$q;
+    reg  id3$clock;
+    reg  v4$d;
+    wire  v4$q;
+    reg  v4$clock;
+    reg  [9:0] ray4$d;
+    wire  [9:0] ray4$q;
+    reg  ray4$clock;
+    reg  [5:0] sh4$d;
+    wire  [5:0] sh4$q;
+    reg  sh4$clock;
+    reg  [15:0] id4$d;
+    wire  [15:0] id4$q;
+    reg  id4$clock;
+    reg  [31:0] q4$d;
+    wire  [31:0] q4$q;
+    reg  q4$clock;
+    reg  v5$d;
+    wire  v5$q;
+    reg  v5$clock;
+    reg  [9:0] ray5$d;
+    wire  [9:0] ray5$q;
+    reg  ray5$clock;
+    reg  [15:0] id5$d;
+    wire  [15:0] id5$q;
+    reg  id5$clock;
+    reg  [31:0] key5$d;
+    wire  [31:0] key5$q;
+    reg  key5$clock;
+    reg  mem_key$clock;
+    reg  [9:0] mem_key$read_address;
+    wire  [31:0] mem_key$read_data;
+    reg  [9:0] mem_key$write_address;
+    reg  [31:0] mem_key$write_data;
+    reg  mem_key$write_enable;
+    reg  mem_meta$clock;
+    reg  [9:0] mem_meta$read_address;
+    wire  [16:0] mem_meta$read_data;
+    reg  [9:0] mem_meta$write_address;
+    reg  [16:0] mem_meta$write_data;
+    reg  mem_meta$write_enable;
+    reg  fw_valid$d;
+    wire  fw_valid$q;
+    reg  fw_valid$clock;
+    reg  [9:0] fw_ray$d;
+    wire  [9:0] fw_ray$q;
+    reg  fw_ray$clock;
+    reg  [31:0] fw_key$d;
+    wire  [31:0] fw_key$q;
+    reg  fw_key$clock;
+    reg  [15:0] fw_id$d;
+    wire  [15:0] fw_id$q;
+    reg  fw_id$clock;
+    
+    // Local signals
+    reg  issue;
+    reg  take;
+    reg  [31:0] side_a;
+    reg  [31:0] side_b;
+    reg  [31:0] q;
+    reg  q4_pos;
+    reg  [31:0] key_right;
+    reg  [31:0] key_l1;
+    reg  [31:0] key_l2;
+    reg  [31:0] key_l3;
+    reg  [4:0] sh4_low;
+    reg  [1:0] q4_top2;
+    reg  [2:0] q4_top3;
+    reg  [31:0] key;
+    reg  old_hit;
+    reg  [31:0] old_key;
+    reg  [15:0] old_id;
+    reg  meta_hit;
+    reg  [15:0] meta_id;
+    reg  better;
+    reg  [16:0] new_meta;
+    
+    // Sub module instances
+    intersection_unit$remaining remaining(
+        .d(remaining$d),
+        .q(remaining$q),
+        .clock(remaining$clock)
+    );
+    intersection_unit$cur cur(
+        .d(cur$d),
+        .q(cur$q),
+        .clock(cur$clock)
+    );
+    intersection_unit$p_ax p_ax(
+        .d(p_ax$d),
+        .q(p_ax$q),
+        .clock(p_ax$clock)
+    );
+    intersection_unit$p_ay p_ay(
+        .d(p_ay$d),
+        .q(p_ay$q),
+        .clock(p_ay$clock)
+    );
+    intersection_unit$p_bx p_bx(
+        .d(p_bx$d),
+        .q(p_bx$q),
+        .clock(p_bx$clock)
+    );
+    intersection_unit$p_by p_by(
+        .d(p_by$d),
+        .q(p_by$q),
+        .clock(p_by$clock)
+    );
+    intersection_unit$p_wx p_wx(
+        .d(p_wx$d),
+        .q(p_wx$q),
+        .clock(p_wx$clock)
+    );
+    intersection_unit$p_wy p_wy(
+        .d(p_wy$d),
+        .q(p_wy$q),
+        .clock(p_wy$clock)
+    );
+    intersection_unit$p_sh p_sh(
+        .d(p_sh$d),
+        .q(p_sh$q),
+        .clock(p_sh$clock)
+    );
+    intersection_unit$p_id p_id(
+        .d(p_id$d),
+        .q(p_id$q),
+        .clock(p_id$clock)
+    );
+    intersection_unit$test_count test_count(
+        .d(test_count$d),
+        .q(test_count$q),
+        .clock(test_count$clock)
+    );
+    intersection_unit$v1 v1(
+        .d(v1$d),
+        .q(v1$q),
+        .clock(v1$clock)
+    );
+    intersection_unit$ray1 ray1(
+        .d(ray1$d),
+        .q(ray1$q),
+        .clock(ray1$clock)
+    );
+    intersection_unit$a1x a1x(
+        .d(a1x$d),
+        .q(a1x$q),
+        .clock(a1x$clock)
+    );
+    intersection_unit$a1y a1y(
+        .d(a1y$d),
+        .q(a1y$q),
+        .clock(a1y$clock)
+    );
+    intersection_unit$b1x b1x(
+        .d(b1x$d),
+        .q(b1x$q),
+        .clock(b1x$clock)
+    );
+    intersection_unit$b1y b1y(
+        .d(b1y$d),
+        .q(b1y$q),
+        .clock(b1y$clock)
+    );
+    intersection_unit$w1x w1x(
+        .d(w1x$d),
+        .q(w1x$q),
+        .clock(w1x$clock)
+    );
+    intersection_unit$w1y w1y(
+        .d(w1y$d),
+        .q(w1y$q),
+        .clock(w1y$clock)
+    );
+    intersection_unit$sh1 sh1(
+        .d(sh1$d),
+        .q(sh1$q),
+        .clock(sh1$clock)
+    );
+    intersection_unit$id1 id1(
+        .d(id1$d),
+        .q(id1$q),
+        .clock(id1$clock)
+    );
+    intersection_unit$dir_mem_x dir_mem_x(
+        .clock(dir_mem_x$clock),
+        .read_address(dir_mem_x$read_address),
+        .read_data(dir_mem_x$read_data),
+        .write_address(dir_mem_x$write_address),
+        .write_data(dir_mem_x$write_data),
+        .write_enable(dir_mem_x$write_enable)
+    );
+    intersection_unit$dir_mem_y dir_mem_y(
+        .clock(dir_mem_y$clock),
+        .read_address(dir_mem_y$read_address),
+        .read_data(dir_mem_y$read_data),
+        .write_address(dir_mem_y$write_address),
+        .write_data(dir_mem_y$write_data),
+        .write_enable(dir_mem_y$write_enable)
+    );
+    intersection_unit$mul_dx_ay mul_dx_ay(
+        .clock(mul_dx_ay$clock),
+        .a(mul_dx_ay$a),
+        .b(mul_dx_ay$b),
+        .p(mul_dx_ay$p)
+    );
+    intersection_unit$mul_dy_ax mul_dy_ax(
+        .clock(mul_dy_ax$clock),
+        .a(mul_dy_ax$a),
+        .b(mul_dy_ax$b),
+        .p(mul_dy_ax$p)
+    );
+    intersection_unit$mul_dx_by mul_dx_by(
+        .clock(mul_dx_by$clock),
+        .a(mul_dx_by$a),
+        .b(mul_dx_by$b),
+        .p(mul_dx_by$p)
+    );
+    intersection_unit$mul_dy_bx mul_dy_bx(
+        .clock(mul_dy_bx$clock),
+        .a(mul_dy_bx$a),
+        .b(mul_dy_bx$b),
+        .p(mul_dy_bx$p)
+    );
+    intersection_unit$mul_dx_wx mul_dx_wx(
+        .clock(mul_dx_wx$clock),
+        .a(mul_dx_wx$a),
+        .b(mul_dx_wx$b),
+        .p(mul_dx_wx$p)
+    );
+    intersection_unit$mul_dy_wy mul_dy_wy(
+        .clock(mul_dy_wy$clock),
+        .a(mul_dy_wy$a),
+        .b(mul_dy_wy$b),
+        .p(mul_dy_wy$p)
+    );
+    intersection_unit$v2 v2(
+        .d(v2$d),
+        .q(v2$q),
+        .clock(v2$clock)
+    );
+    intersection_unit$ray2 ray2(
+        .d(ray2$d),
+        .q(ray2$q),
+        .clock(ray2$clock)
+    );
+    intersection_unit$sh2 sh2(
+        .d(sh2$d),
+        .q(sh2$q),
+        .clock(sh2$clock)
+    );
+    intersection_unit$id2 id2(
+        .d(id2$d),
+        .q(id2$q),
+        .clock(id2$clock)
+    );
+    intersection_unit$v3 v3(
+        .d(v3$d),
+        .q(v3$q),
+        .clock(v3$clock)
+    );
+    intersection_unit$ray3 ray3(
+        .d(ray3$d),
+        .q(ray3$q),
+        .clock(ray3$clock)
+    );
+    intersection_unit$sh3 sh3(
+        .d(sh3$d),
+        .q(sh3$q),
+        .clock(sh3$clock)
+    );
+    intersection_unit$id3 id3(
+        .d(id3$d),
+        .q(id3$q),
+        .clock(id3$clock)
+    );
+    intersection_unit$v4 v4(
+        .d(v4$d),
+        .q(v4$q),
+        .clock(v4$clock)
+    );
+    intersection_unit$ray4 ray4(
+        .d(ray4$d),
+        .q(ray4$q),
+        .clock(ray4$clock)
+    );
+    intersection_unit$sh4 sh4(
+        .d(sh4$d),
+        .q(sh4$q),
+        .clock(sh4$clock)
+    );
+    intersection_unit$id4 id4(
+        .d(id4$d),
+        .q(id4$q),
+        .clock(id4$clock)
+    );
+    intersection_unit$q4 q4(
+        .d(q4$d),
+        .q(q4$q),
+        .clock(q4$clock)
+    );
+    intersection_unit$v5 v5(
+        .d(v5$d),
+        .q(v5$q),
+        .clock(v5$clock)
+    );
+    intersection_unit$ray5 ray5(
+        .d(ray5$d),
+        .q(ray5$q),
+        .clock(ray5$clock)
+    );
+    intersection_unit$id5 id5(
+        .d(id5$d),
+        .q(id5$q),
+        .clock(id5$clock)
+    );
+    intersection_unit$key5 key5(
+        .d(key5$d),
+        .q(key5$q),
+        .clock(key5$clock)
+    );
+    intersection_unit$mem_key mem_key(
+        .clock(mem_key$clock),
+        .read_address(mem_key$read_address),
+        .read_data(mem_key$read_data),
+        .write_address(mem_key$write_address),
+        .write_data(mem_key$write_data),
+        .write_enable(mem_key$write_enable)
+    );
+    intersection_unit$mem_meta mem_meta(
+        .clock(mem_meta$clock),
+        .read_address(mem_meta$read_address),
+        .read_data(mem_meta$read_data),
+        .write_address(mem_meta$write_address),
+        .write_data(mem_meta$write_data),
+        .write_enable(mem_meta$write_enable)
+    );
+    intersection_unit$fw_valid fw_valid(
+        .d(fw_valid$d),
+        .q(fw_valid$q),
+        .clock(fw_valid$clock)
+    );
+    intersection_unit$fw_ray fw_ray(
+        .d(fw_ray$d),
+        .q(fw_ray$q),
+        .clock(fw_ray$clock)
+    );
+    intersection_unit$fw_key fw_key(
+        .d(fw_key$d),
+        .q(fw_key$q),
+        .clock(fw_key$clock)
+    );
+    intersection_unit$fw_id fw_id(
+        .d(fw_id$d),
+        .q(fw_id$q),
+        .clock(fw_id$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        remaining$clock = clock;
+        cur$clock = clock;
+        p_ax$clock = clock;
+        p_ay$clock = clock;
+        p_bx$clock = clock;
+        p_by$clock = clock;
+        p_wx$clock = clock;
+        p_wy$clock = clock;
+        p_sh$clock = clock;
+        p_id$clock = clock;
+        test_count$clock = clock;
+        v1$clock = clock;
+        ray1$clock = clock;
+        a1x$clock = clock;
+        a1y$clock = clock;
+        b1x$clock = clock;
+        b1y$clock = clock;
+        w1x$clock = clock;
+        w1y$clock = clock;
+        sh1$clock = clock;
+        id1$clock = clock;
+        v2$clock = clock;
+        ray2$clock = clock;
+        sh2$clock = clock;
+        id2$clock = clock;
+        v3$clock = clock;
+        ray3$clock = clock;
+        sh3$clock = clock;
+        id3$clock = clock;
+        v4$clock = clock;
+        ray4$clock = clock;
+        sh4$clock = clock;
+        id4$clock = clock;
+        q4$clock = clock;
+        v5$clock = clock;
+        ray5$clock = clock;
+        id5$clock = clock;
+        key5$clock = clock;
+        fw_valid$clock = clock;
+        fw_ray$clock = clock;
+        fw_key$clock = clock;
+        fw_id$clock = clock;
+        remaining$d = remaining$q;
+        cur$d = cur$q;
+        p_ax$d = p_ax$q;
+        p_ay$d = p_ay$q;
+        p_bx$d = p_bx$q;
+        p_by$d = p_by$q;
+        p_wx$d = p_wx$q;
+        p_wy$d = p_wy$q;
+        p_sh$d = p_sh$q;
+        p_id$d = p_id$q;
+        test_count$d = test_count$q;
+        v1$d = v1$q;
+        ray1$d = ray1$q;
+        a1x$d = a1x$q;
+        a1y$d = a1y$q;
+        b1x$d = b1x$q;
+        b1y$d = b1y$q;
+        w1x$d = w1x$q;
+        w1y$d = w1y$q;
+        sh1$d = sh1$q;
+        id1$d = id1$q;
+        v2$d = v2$q;
+        ray2$d = ray2$q;
+        sh2$d = sh2$q;
+        id2$d = id2$q;
+        v3$d = v3$q;
+        ray3$d = ray3$q;
+        sh3$d = sh3$q;
+        id3$d = id3$q;
+        v4$d = v4$q;
+        ray4$d = ray4$q;
+        sh4$d = sh4$q;
+        id4$d = id4$q;
+        q4$d = q4$q;
+        v5$d = v5$q;
+        ray5$d = ray5$q;
+        id5$d = id5$q;
+        key5$d = key5$q;
+        fw_valid$d = fw_valid$q;
+        fw_ray$d = fw_ray$q;
+        fw_key$d = fw_key$q;
+        fw_id$d = fw_id$q;
+        dir_mem_x$clock = clock;
+        dir_mem_y$clock = clock;
+        mem_key$clock = clock;
+        mem_meta$clock = clock;
+        mul_dx_ay$clock = clock;
+        mul_dy_ax$clock = clock;
+        mul_dx_by$clock = clock;
+        mul_dy_bx$clock = clock;
+        mul_dx_wx$clock = clock;
+        mul_dy_wy$clock = clock;
+        issue = remaining$q != zero11;
+        patch_ready = (remaining$q == zero11) | (remaining$q == one11);
+        take = patch_valid & ((remaining$q == zero11) | (remaining$q == one11));
+        if (take) begin
+            remaining$d = patch_count;
+            cur$d = patch_first;
+            p_ax$d = patch_ax;
+            p_ay$d = patch_ay;
+            p_bx$d = patch_bx;
+            p_by$d = patch_by;
+            p_wx$d = patch_wx;
+            p_wy$d = patch_wy;
+            p_sh$d = patch_sh;
+            p_id$d = patch_id;
+        end
+        else if (issue) begin
+            remaining$d = remaining$q - one11;
+            cur$d = cur$q + one10;
+        end
+        if (issue) begin
+            test_count$d = test_count$q + one32;
+        end
+        tests = test_count$q;
+        dir_mem_x$read_address = cur$q;
+        dir_mem_y$read_address = cur$q;
+        dir_mem_x$write_address = dir_addr;
+        dir_mem_y$write_address = dir_addr;
+        dir_mem_x$write_data = dir_x;
+        dir_mem_y$write_data = dir_y;
+        dir_mem_x$write_enable = dir_we;
+        dir_mem_y$write_enable = dir_we;
+        v1$d = issue;
+        ray1$d = cur$q;
+        a1x$d = p_ax$q;
+        a1y$d = p_ay$q;
+        b1x$d = p_bx$q;
+        b1y$d = p_by$q;
+        w1x$d = p_wx$q;
+        w1y$d = p_wy$q;
+        sh1$d = p_sh$q;
+        id1$d = p_id$q;
+        mul_dx_ay$a = dir_mem_x$read_data;
+        mul_dx_ay$b = a1y$q;
+        mul_dy_ax$a = dir_mem_y$read_data;
+        mul_dy_ax$b = a1x$q;
+        mul_dx_by$a = dir_mem_x$read_data;
+        mul_dx_by$b = b1y$q;
+        mul_dy_bx$a = dir_mem_y$read_data;
+        mul_dy_bx$b = b1x$q;
+        mul_dx_wx$a = dir_mem_x$read_data;
+        mul_dx_wx$b = w1x$q;
+        mul_dy_wy$a = dir_mem_y$read_data;
+        mul_dy_wy$b = w1y$q;
+        v2$d = v1$q;
+        ray2$d = ray1$q;
+        sh2$d = sh1$q;
+        id2$d = id1$q;
+        v3$d = v2$q;
+        ray3$d = ray2$q;
+        sh3$d = sh2$q;
+        id3$d = id2$q;
+        side_a = mul_dx_ay$p - mul_dy_ax$p;
+        side_b = mul_dx_by$p - mul_dy_bx$p;
+        q = mul_dx_wx$p + mul_dy_wy$p;
+        v4$d = v3$q & ((side_a == zero32) | side_a[32'h1f]) & ~side_b[32'h1f];
+        ray4$d = ray3$q;
+        sh4$d = sh3$q;
+        id4$d = id3$q;
+        q4$d = q;
+        q4_pos = ~q4$q[32'h1f] & (q4$q != zero32);
+        sh4_low = sh4$q[(32'h0)+:(5)];
+        key_right = q4$q >> sh4_low;
+        key_l1 = q4$q << one32;
+        key_l2 = key_l1 << one32;
+        key_l3 = key_l2 << one32;
+        q4_top2 = q4$q[(32'h1e)+:(2)];
+        q4_top3 = q4$q[(32'h1d)+:(3)];
+        key = one32;
+        if (q4_pos) begin
+            if (~sh4$q[32'h5]) begin
+                if (key_right != zero32) begin
+                    key = key_right;
+                end
+            end
+            else if (sh4$q == sh_m1) begin
+                key = key_l1;
+            end
+            else if (sh4$q == sh_m2) begin
+                if (q4_top2 == zero2) begin
+                    key = key_l2;
+                end
+                else begin
+                    key = max32;
+                end
+            end
+            else if (q4_top3 == zero3) begin
+                key = key_l3;
+            end
+            else begin
+                key = max32;
+            end
+        end
+        v5$d = v4$q;
+        ray5$d = ray4$q;
+        id5$d = id4$q;
+        key5$d = key;
+        mem_key$read_address = ray4$q;
+        mem_meta$read_address = ray4$q;
+        if (res_re) begin
+            mem_key$read_address = res_addr;
+            mem_meta$read_address = res_addr;
+        end
+        meta_hit = mem_meta$read_data[32'h10];
+        meta_id = mem_meta$read_data[(32'h0)+:(16)];
+        old_hit = meta_hit;
+        old_key = mem_key$read_data;
+        old_id = meta_id;
+        if (fw_valid$q & (fw_ray$q == ray5$q)) begin
+            old_hit = 1'b1;
+            old_key = fw_key$q;
+            old_id = fw_id$q;
+        end
+        better = v5$q & (~old_hit | (key5$q > old_key) | ((key5$q == old_key) & (id5$q < old_id)));
+        new_meta = hit_flag | ((id5$q) & 17'h1ffff);
+        mem_key$write_address = ray5$q;
+        mem_meta$write_address = ray5$q;
+        mem_key$write_data = key5$q;
+        mem_meta$write_data = new_meta;
+        mem_key$write_enable = better;
+        mem_meta$write_enable = better;
+        if (res_re) begin
+            mem_key$write_address = res_addr;
+            mem_meta$write_address = res_addr;
+            mem_key$write_data = zero32;
+            mem_meta$write_data = zero17;
+            mem_key$write_enable = 1'b1;
+            mem_meta$write_enable = 1'b1;
+        end
+        fw_valid$d = better;
+        fw_ray$d = ray5$q;
+        fw_key$d = key5$q;
+        fw_id$d = id5$q;
+        res_hit = meta_hit;
+        res_id = meta_id;
+        res_key = mem_key$read_data;
+        busy = issue | v1$q | v2$q | v3$q | v4$q | v5$q;
+    end
+    
+endmodule // intersection_unit
+
+
+module intersection_unit$a1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$a1x
+
+
+module intersection_unit$a1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$a1y
+
+
+module intersection_unit$b1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$b1x
+
+
+module intersection_unit$b1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$b1y
+
+
+module intersection_unit$cur(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$cur
+
+
+module intersection_unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // intersection_unit$dir_mem_x
+
+
+module intersection_unit$dir_mem_y(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // intersection_unit$dir_mem_y
+
+
+module intersection_unit$fw_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$fw_id
+
+
+module intersection_unit$fw_key(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$fw_key
+
+
+module intersection_unit$fw_ray(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$fw_ray
+
+
+module intersection_unit$fw_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$fw_valid
+
+
+module intersection_unit$id1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$id1
+
+
+module intersection_unit$id2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$id2
+
+
+module intersection_unit$id3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$id3
+
+
+module intersection_unit$id4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$id4
+
+
+module intersection_unit$id5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$id5
+
+
+module intersection_unit$key5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$key5
+
+
+module intersection_unit$mem_key(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [31:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [31:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 32'd0;
+       read_data = 32'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // intersection_unit$mem_key
+
+
+module intersection_unit$mem_meta(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // intersection_unit$mem_meta
+
+
+module intersection_unit$mul_dx_ay(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // intersection_unit$mul_dx_ay
+
+
+module intersection_unit$mul_dx_by(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // intersection_unit$mul_dx_by
+
+
+module intersection_unit$mul_dx_wx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // intersection_unit$mul_dx_wx
+
+
+module intersection_unit$mul_dy_ax(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // intersection_unit$mul_dy_ax
+
+
+module intersection_unit$mul_dy_bx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // intersection_unit$mul_dy_bx
+
+
+module intersection_unit$mul_dy_wy(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // intersection_unit$mul_dy_wy
+
+
+module intersection_unit$p_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_ax
+
+
+module intersection_unit$p_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_ay
+
+
+module intersection_unit$p_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_bx
+
+
+module intersection_unit$p_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_by
+
+
+module intersection_unit$p_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_id
+
+
+module intersection_unit$p_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_sh
+
+
+module intersection_unit$p_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_wx
+
+
+module intersection_unit$p_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_wy
+
+
+module intersection_unit$q4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$q4
+
+
+module intersection_unit$ray1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$ray1
+
+
+module intersection_unit$ray2(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$ray2
+
+
+module intersection_unit$ray3(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$ray3
+
+
+module intersection_unit$ray4(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$ray4
+
+
+module intersection_unit$ray5(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$ray5
+
+
+module intersection_unit$remaining(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$remaining
+
+
+module intersection_unit$sh1(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$sh1
+
+
+module intersection_unit$sh2(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$sh2
+
+
+module intersection_unit$sh3(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$sh3
+
+
+module intersection_unit$sh4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$sh4
+
+
+module intersection_unit$test_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$test_count
+
+
+module intersection_unit$v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$v1
+
+
+module intersection_unit$v2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$v2
+
+
+module intersection_unit$v3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$v3
+
+
+module intersection_unit$v4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$v4
+
+
+module intersection_unit$v5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$v5
+
+
+module intersection_unit$w1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$w1x
+
+
+module intersection_unit$w1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$w1y

@@ -1,0 +1,593 @@
+// patch_loader: exported from rust-hdl by `shelling export-verilog`; do not edit.
+
+
+module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  id_valid;
+    output reg  id_ready;
+    input wire  [15:0] id;
+    output reg  mem_req;
+    output reg  [15:0] mem_addr;
+    input wire  mem_valid;
+    input wire  [16:0] mem_ax;
+    input wire  [16:0] mem_ay;
+    input wire  [16:0] mem_bx;
+    input wire  [16:0] mem_by;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_id;
+    output reg  [16:0] out_ax;
+    output reg  [16:0] out_ay;
+    output reg  [16:0] out_bx;
+    output reg  [16:0] out_by;
+    output reg  [31:0] loads;
+    
+    // Constant declarations
+    localparam  depth5 = 5'b10000;
+    localparam  zero5 = 5'b0;
+    localparam  one5 = 5'b1;
+    localparam  one4 = 4'h1;
+    localparam  one32 = 32'h1;
+    
+    // Stub signals
+    reg  [3:0] req_ptr$d;
+    wire  [3:0] req_ptr$q;
+    reg  req_ptr$clock;
+    reg  [3:0] resp_ptr$d;
+    wire  [3:0] resp_ptr$q;
+    reg  resp_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [4:0] reserved$d;
+    wire  [4:0] reserved$q;
+    reg  reserved$clock;
+    reg  [4:0] done$d;
+    wire  [4:0] done$q;
+    reg  done$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    reg  req_valid$d;
+    wire  req_valid$q;
+    reg  req_valid$clock;
+    reg  [15:0] req_addr$d;
+    wire  [15:0] req_addr$q;
+    reg  req_addr$clock;
+    reg  [31:0] load_count$d;
+    wire  [31:0] load_count$q;
+    reg  load_count$clock;
+    reg  lane_id$clock;
+    reg  [3:0] lane_id$read_address;
+    wire  [15:0] lane_id$read_data;
+    reg  [3:0] lane_id$write_address;
+    reg  [15:0] lane_id$write_data;
+    reg  lane_id$write_enable;
+    reg  lane_ax$clock;
+    reg  [3:0] lane_ax$read_address;
+    wire  [16:0] lane_ax$read_data;
+    reg  [3:0] lane_ax$write_address;
+    reg  [16:0] lane_ax$write_data;
+    reg  lane_ax$write_enable;
+    reg  lane_ay$clock;
+    reg  [3:0] lane_ay$read_address;
+    wire  [16:0] lane_ay$read_data;
+    reg  [3:0] lane_ay$write_address;
+    reg  [16:0] lane_ay$write_data;
+    reg  lane_ay$write_enable;
+    reg  lane_bx$clock;
+    reg  [3:0] lane_bx$read_address;
+    wire  [16:0] lane_bx$read_data;
+    reg  [3:0] lane_bx$write_address;
+    reg  [16:0] lane_bx$write_data;
+    reg  lane_bx$write_enable;
+    reg  lane_by$clock;
+    reg  [3:0] lane_by$read_address;
+    wire  [16:0] lane_by$read_data;
+    reg  [3:0] lane_by$write_address;
+    reg  [16:0] lane_by$write_data;
+    reg  lane_by$write_enable;
+    
+    // Local signals
+    reg  room;
+    reg  accept;
+    reg  pop;
+    reg  [3:0] req_inc;
+    reg  [3:0] resp_inc;
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_addr;
+    reg  [4:0] reserved_inc;
+    reg  [4:0] reserved_dec;
+    reg  [4:0] done_inc;
+    reg  [4:0] done_dec;
+    reg  [4:0] done_left;
+    reg  [31:0] load_inc;
+    
+    // Sub module instances
+    patch_loader$req_ptr req_ptr(
+        .d(req_ptr$d),
+        .q(req_ptr$q),
+        .clock(req_ptr$clock)
+    );
+    patch_loader$resp_ptr resp_ptr(
+        .d(resp_ptr$d),
+        .q(resp_ptr$q),
+        .clock(resp_ptr$clock)
+    );
+    patch_loader$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    patch_loader$reserved reserved(
+        .d(reserved$d),
+        .q(reserved$q),
+        .clock(reserved$clock)
+    );
+    patch_loader$done done(
+        .d(done$d),
+        .q(done$q),
+        .clock(done$clock)
+    );
+    patch_loader$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    patch_loader$req_valid req_valid(
+        .d(req_valid$d),
+        .q(req_valid$q),
+        .clock(req_valid$clock)
+    );
+    patch_loader$req_addr req_addr(
+        .d(req_addr$d),
+        .q(req_addr$q),
+        .clock(req_addr$clock)
+    );
+    patch_loader$load_count load_count(
+        .d(load_count$d),
+        .q(load_count$q),
+        .clock(load_count$clock)
+    );
+    patch_loader$lane_id lane_id(
+        .clock(lane_id$clock),
+        .read_address(lane_id$read_address),
+        .read_data(lane_id$read_data),
+        .write_address(lane_id$write_address),
+        .write_data(lane_id$write_data),
+        .write_enable(lane_id$write_enable)
+    );
+    patch_loader$lane_ax lane_ax(
+        .clock(lane_ax$clock),
+        .read_address(lane_ax$read_address),
+        .read_data(lane_ax$read_data),
+        .write_address(lane_ax$write_address),
+        .write_data(lane_ax$write_data),
+        .write_enable(lane_ax$write_enable)
+    );
+    patch_loader$lane_ay lane_ay(
+        .clock(lane_ay$clock),
+        .read_address(lane_ay$read_address),
+        .read_data(lane_ay$read_data),
+        .write_address(lane_ay$write_address),
+        .write_data(lane_ay$write_data),
+        .write_enable(lane_ay$write_enable)
+    );
+    patch_loader$lane_bx lane_bx(
+        .clock(lane_bx$clock),
+        .read_address(lane_bx$read_address),
+        .read_data(lane_bx$read_data),
+        .write_address(lane_bx$write_address),
+        .write_data(lane_bx$write_data),
+        .write_enable(lane_bx$write_enable)
+    );
+    patch_loader$lane_by lane_by(
+        .clock(lane_by$clock),
+        .read_address(lane_by$read_address),
+        .read_data(lane_by$read_data),
+        .write_address(lane_by$write_address),
+        .write_data(lane_by$write_data),
+        .write_enable(lane_by$write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        req_ptr$clock = clock;
+        resp_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        reserved$clock = clock;
+        done$clock = clock;
+        head_valid$clock = clock;
+        req_valid$clock = clock;
+        req_addr$clock = clock;
+        load_count$clock = clock;
+        req_ptr$d = req_ptr$q;
+        resp_ptr$d = resp_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        reserved$d = reserved$q;
+        done$d = done$q;
+        head_valid$d = head_valid$q;
+        req_valid$d = req_valid$q;
+        req_addr$d = req_addr$q;
+        load_count$d = load_count$q;
+        lane_id$clock = clock;
+        lane_ax$clock = clock;
+        lane_ay$clock = clock;
+        lane_bx$clock = clock;
+        lane_by$clock = clock;
+        room = reserved$q != depth5;
+        id_ready = room;
+        accept = id_valid & room;
+        pop = head_valid$q & out_ready;
+        req_inc = req_ptr$q + one4;
+        resp_inc = resp_ptr$q + one4;
+        rd_inc = rd_ptr$q + one4;
+        reserved_inc = reserved$q + one5;
+        reserved_dec = reserved$q - one5;
+        done_inc = done$q + one5;
+        done_dec = done$q - one5;
+        load_inc = load_count$q + one32;
+        lane_id$write_address = req_ptr$q;
+        lane_id$write_data = id;
+        lane_id$write_enable = accept;
+        req_valid$d = accept;
+        if (accept) begin
+            req_ptr$d = req_inc;
+            req_addr$d = id;
+        end
+        mem_req = req_valid$q;
+        mem_addr = req_addr$q;
+        lane_ax$write_address = resp_ptr$q;
+        lane_ay$write_address = resp_ptr$q;
+        lane_bx$write_address = resp_ptr$q;
+        lane_by$write_address = resp_ptr$q;
+        lane_ax$write_data = mem_ax;
+        lane_ay$write_data = mem_ay;
+        lane_bx$write_data = mem_bx;
+        lane_by$write_data = mem_by;
+        lane_ax$write_enable = mem_valid;
+        lane_ay$write_enable = mem_valid;
+        lane_bx$write_enable = mem_valid;
+        lane_by$write_enable = mem_valid;
+        if (mem_valid) begin
+            resp_ptr$d = resp_inc;
+            load_count$d = load_inc;
+        end
+        loads = load_count$q;
+        rd_addr = rd_ptr$q;
+        done_left = done$q;
+        if (pop) begin
+            rd_addr = rd_inc;
+            rd_ptr$d = rd_inc;
+            done_left = done_dec;
+        end
+        lane_id$read_address = rd_addr;
+        lane_ax$read_address = rd_addr;
+        lane_ay$read_address = rd_addr;
+        lane_bx$read_address = rd_addr;
+        lane_by$read_address = rd_addr;
+        head_valid$d = done_left != zero5;
+        out_valid = head_valid$q;
+        out_id = lane_id$read_data;
+        out_ax = lane_ax$read_data;
+        out_ay = lane_ay$read_data;
+        out_bx = lane_bx$read_data;
+        out_by = lane_by$read_data;
+        if (accept & ~pop) begin
+            reserved$d = reserved_inc;
+        end
+        if (~accept & pop) begin
+            reserved$d = reserved_dec;
+        end
+        if (mem_valid & ~pop) begin
+            done$d = done_inc;
+        end
+        if (~mem_valid & pop) begin
+            done$d = done_dec;
+        end
+    end
+    
+endmodule // patch_loader
+
+
+module patch_loader$done(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$done
+
+
+module patch_loader$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$head_valid
+
+
+module patch_loader$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // patch_loader$lane_ax
+
+
+module patch_loader$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // patch_loader$lane_ay
+
+
+module patch_loader$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // patch_loader$lane_bx
+
+
+module patch_loader$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // patch_loader$lane_by
+
+
+module patch_loader$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [15:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
+       read_data = 16'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // patch_loader$lane_id
+
+
+module patch_loader$load_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$load_count
+
+
+module patch_loader$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$rd_ptr
+
+
+module patch_loader$req_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$req_addr
+
+
+module patch_loader$req_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$req_ptr
+
+
+module patch_loader$req_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$req_valid
+
+
+module patch_loader$reserved(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$reserved
+
+
+module patch_loader$resp_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$resp_ptr

@@ -1,0 +1,56 @@
+//! Verilog export of every RTL block, for FPGA flows: one file per block, its top module named
+//! after the block, plus a file list. `shelling export-verilog --out DIR` writes them; the copies
+//! committed under `hdl/verilog/` are checked against a fresh export by the test suite.
+
+use crate::replay::export_verilog;
+use crate::{Error, Result};
+use rust_hdl::core::prelude::Block;
+use shelling_hdl::intersection::IntersectionUnit;
+use shelling_hdl::loader::PatchLoader;
+use std::path::{Path, PathBuf};
+
+/// Name of the file list written beside the Verilog files.
+pub const FILE_LIST: &str = "files.f";
+
+/// The blocks exported, by module name, each freshly built and connected.
+pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
+    let mut iu = IntersectionUnit::default();
+    iu.connect_all();
+    let mut loader = PatchLoader::default();
+    loader.connect_all();
+    vec![("intersection_unit", Box::new(iu)), ("patch_loader", Box::new(loader))]
+}
+
+/// The exported text of every block: `(file name, Verilog)`, in a fixed order.
+pub fn verilog() -> Result<Vec<(String, String)>> {
+    blocks()
+        .into_iter()
+        .map(|(name, block)| {
+            let text = export_verilog(block.as_ref(), name).map_err(|e| e.context(name))?;
+            Ok((
+                format!("{name}.v"),
+                format!(
+                    "// {name}: exported from rust-hdl by `shelling export-verilog`; do not edit.\n{text}"
+                ),
+            ))
+        })
+        .collect()
+}
+
+/// Writes every block and the file list into `dir` (created if missing); returns the paths.
+pub fn write(dir: &Path) -> Result<Vec<PathBuf>> {
+    let io = |e: std::io::Error, p: &Path| Error::new(format!("writing {}: {e}", p.display()));
+    std::fs::create_dir_all(dir).map_err(|e| io(e, dir))?;
+    let mut paths = Vec::new();
+    let files = verilog()?;
+    for (name, text) in &files {
+        let p = dir.join(name);
+        std::fs::write(&p, text).map_err(|e| io(e, &p))?;
+        paths.push(p);
+    }
+    let list = dir.join(FILE_LIST);
+    let body: String = files.iter().map(|(n, _)| format!("{n}\n")).collect();
+    std::fs::write(&list, body).map_err(|e| io(e, &list))?;
+    paths.push(list);
+    Ok(paths)
+}

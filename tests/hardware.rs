@@ -1,0 +1,133 @@
+//! The hardware side seen from the whole system: rung 2 (the bit-true fixed point against the
+//! f64 golden model, within the bound of `hdl/FORMATS.md`), the fixed-point range checks, the
+//! committed Verilog being current, and every block synthesizing for ECP5.
+
+use shelling::agreement::{self, Workload};
+use shelling::arith::{Arith, FixedBundle};
+use shelling::geom::{Segment, Vec2};
+use shelling::grid::GridParams;
+use shelling::rays::RaySet;
+use shelling::run::{Prepared, RunError};
+use shelling::scene::Scene;
+use shelling::trace::{Method, ShellParams};
+use std::path::PathBuf;
+use std::process::Command;
+
+#[test]
+fn rung2_fixed_point_agrees_with_float_within_the_bound() {
+    for ray_set in [RaySet::Angle, RaySet::Sine] {
+        let w = Workload { sources: 8, ray_set, ..Workload::default() };
+        let report = agreement::run(&w).expect("the paper's workload fits the fixed-point formats");
+        assert_eq!(report.rows.len(), 12);
+        for r in &report.rows {
+            let c = &r.comparison;
+            assert_eq!(c.rays, 8 * 1024);
+            assert!(
+                c.unexplained.is_empty() && c.distance_violations.is_empty(),
+                "length {} {} {ray_set}: beyond the bound: {:?} {:?}",
+                r.length,
+                r.method,
+                c.unexplained,
+                c.distance_violations
+            );
+            assert!(c.rate() >= 0.995, "length {} {}: agreement {}", r.length, r.method, c.rate());
+        }
+        // The bound is not vacuous: somewhere the arithmetics do disagree, and are explained.
+        let explained: usize =
+            report.rows.iter().map(|r| r.comparison.endpoint + r.comparison.near_tie).sum();
+        assert!(explained > 0, "{ray_set}: no disagreement at all; the comparison may not be running");
+    }
+}
+
+#[test]
+fn fixed_point_rejects_what_does_not_fit_and_names_it() {
+    let seg = |ax, ay, bx, by| Segment::new(Vec2::new(ax, ay), Vec2::new(bx, by));
+    let scene =
+        Scene::new(vec![seg(0.0, 0.0, 10.0, 0.0), seg(100.0, 5.0, 3000.0, 5.0)]).expect("valid scene");
+    let prepared = Prepared::new(scene, GridParams::default());
+    let bundle = prepared.patch_bundle(0, RaySet::Angle, 64).expect("valid source");
+    // The float model traces it; the fixed point refuses before tracing.
+    assert!(prepared.trace_in(Arith::Float, Method::Deterministic, &bundle, &ShellParams::default()).is_ok());
+    let err =
+        prepared.trace_in(Arith::Fixed, Method::Deterministic, &bundle, &ShellParams::default()).unwrap_err();
+    assert!(matches!(err, RunError::Format(_)));
+    let msg = err.to_string();
+    assert!(msg.contains("segment 1 endpoint b x") && msg.contains("3000"), "{msg}");
+    // A scene anywhere, as long as it spans less than 2048 units, fits (translation invariance).
+    let far =
+        Scene::new(vec![seg(1e6, 1e6, 1e6 + 10.0, 1e6), seg(1e6 + 25.0, 1e6 + 50.0, 1e6 - 15.0, 1e6 + 50.0)])
+            .expect("valid scene");
+    let far = Prepared::new(far, GridParams::default());
+    let b = far.patch_bundle(0, RaySet::Angle, 64).expect("valid source");
+    let fixed = FixedBundle::new(&far.scene.segments, &b).expect("fits");
+    assert!(fixed.patch(1).is_some(), "the facing patch passes the screener");
+    let hits = far.trace_in(Arith::Fixed, Method::Brute, &b, &ShellParams::default()).expect("traces");
+    assert!(hits.hits.iter().flatten().all(|h| h.segment == 1) && hits.hits.iter().flatten().count() > 0);
+}
+
+fn verilog_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("hdl").join("verilog")
+}
+
+#[test]
+fn committed_verilog_is_current() {
+    let fresh = shelling_testbench::export::verilog().expect("every block exports");
+    let dir = verilog_dir();
+    let list = std::fs::read_to_string(dir.join(shelling_testbench::export::FILE_LIST))
+        .expect("hdl/verilog/files.f is committed");
+    let names: Vec<&str> = fresh.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(list.lines().collect::<Vec<_>>(), names, "hdl/verilog/files.f is stale");
+    for (name, text) in &fresh {
+        let committed = std::fs::read_to_string(dir.join(name)).unwrap_or_default();
+        assert!(
+            committed == *text,
+            "hdl/verilog/{name} is stale: run `cargo run --release -- export-verilog --out hdl/verilog`"
+        );
+    }
+}
+
+/// Runs Yosys' ECP5 synthesis on one exported block; returns its statistics.
+fn synth_ecp5(name: &str) -> String {
+    let file = verilog_dir().join(format!("{name}.v"));
+    let out = Command::new("yosys")
+        .args([
+            "-q",
+            "-p",
+            &format!("read_verilog {}; synth_ecp5 -top {name}; tee -o /dev/stdout stat", file.display()),
+        ])
+        .output()
+        .expect("yosys is not installed: `apt-get install yosys` (.ci/run installs it)");
+    let text = String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "yosys failed on {name}:\n{text}");
+    text
+}
+
+fn cells(stat: &str, cell: &str) -> usize {
+    stat.lines()
+        .filter_map(|l| {
+            let mut w = l.split_whitespace();
+            (w.next() == Some(cell)).then(|| w.next().and_then(|n| n.parse().ok())).flatten()
+        })
+        .last()
+        .unwrap_or(0)
+}
+
+#[test]
+fn intersection_unit_synthesizes_to_dsps_without_latches() {
+    let stat = synth_ecp5("intersection_unit");
+    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
+        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
+    }
+    assert_eq!(cells(&stat, "MULT18X18D"), 6, "six 18x18 multipliers, one DSP each:\n{stat}");
+    assert!(cells(&stat, "DP16KD") >= 4, "the ray and direction memories map to block RAM:\n{stat}");
+    assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
+}
+
+#[test]
+fn patch_loader_synthesizes_without_latches() {
+    let stat = synth_ecp5("patch_loader");
+    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
+        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
+    }
+    assert!(cells(&stat, "TRELLIS_FF") > 0, "{stat}");
+}
