@@ -23,8 +23,8 @@ use crate::run::{Prepared, RunError};
 use crate::scene::{self, SceneError};
 use crate::trace::{Method, ShellParams, TraceResult};
 use rayon::prelude::*;
-use std::fmt;
 use shelling_hdl::formats::{COORD_FRAC, DIR_FRAC, KEY_FRAC, PRODUCT_SHIFT};
+use std::fmt;
 
 /// Error of a point relative to the origin after quantisation: both are rounded to 2⁻⁶ per axis,
 /// so the difference is off by at most 2⁻⁶ per axis.
@@ -32,8 +32,7 @@ pub const POSITION_ERROR: f64 = std::f64::consts::SQRT_2 / (1u64 << COORD_FRAC) 
 /// Angular error of a quantised direction: each component off by at most 2⁻¹⁷.
 pub const DIRECTION_ERROR: f64 = std::f64::consts::SQRT_2 / (1u64 << (DIR_FRAC + 1)) as f64;
 /// Error of a side value from the two truncated products, in world units (per unit direction).
-pub const SIDE_ERROR: f64 =
-    2.0 * (1u64 << PRODUCT_SHIFT) as f64 / (1u64 << (COORD_FRAC + DIR_FRAC)) as f64;
+pub const SIDE_ERROR: f64 = 2.0 * (1u64 << PRODUCT_SHIFT) as f64 / (1u64 << (COORD_FRAC + DIR_FRAC)) as f64;
 /// The screener drops a patch whose line passes within 1/64 unit of the origin (*near*) and
 /// decides facing from rounded coordinates: beyond this distance neither can differ from float.
 pub const GRAZING_DISTANCE: f64 = 1.0 / 64.0 + 2.0 * POSITION_ERROR;
@@ -157,7 +156,12 @@ pub fn explain(segments: &[Segment], ray: &Ray, f: Option<Hit>, x: Option<Hit>) 
 }
 
 /// Compares the float and fixed traces of one bundle.
-pub fn compare(segments: &[Segment], bundle: &Bundle, float: &TraceResult, fixed: &TraceResult) -> Comparison {
+pub fn compare(
+    segments: &[Segment],
+    bundle: &Bundle,
+    float: &TraceResult,
+    fixed: &TraceResult,
+) -> Comparison {
     let mut c = Comparison { rays: bundle.len(), ..Comparison::default() };
     for (i, (ray, (&f, &x))) in bundle.rays.iter().zip(float.hits.iter().zip(&fixed.hits)).enumerate() {
         let disagreement = || Disagreement { ray: i, float: f, fixed: x };
@@ -277,7 +281,15 @@ impl fmt::Display for Report {
         writeln!(
             f,
             "{:>6} {:<14} {:>9} {:>10} {:>9} {:>8} {:>9} {:>12} {:>10}",
-            "length", "method", "rays", "same hit", "endpoint", "grazing", "near tie", "unexplained", "worst t/bound"
+            "length",
+            "method",
+            "rays",
+            "same hit",
+            "endpoint",
+            "grazing",
+            "near tie",
+            "unexplained",
+            "worst t/bound"
         )?;
         for r in &self.rows {
             let c = &r.comparison;

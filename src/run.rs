@@ -1,14 +1,14 @@
 //! Orchestration shared by the CLI, the figures and the tests: a scene with its grid, a source's
 //! bundle traced by one technique, and the trace's JSON form.
 
+use crate::arith::{Arith, FixedBundle};
 use crate::geom::Vec2;
 use crate::grid::{Grid, GridParams};
 use crate::rays::{Bundle, RaySet, Source, SourceError};
 use crate::scene::Scene;
-use crate::arith::{Arith, FixedBundle};
 use crate::trace::{trace, trace_with, Method, SceneView, ShellParams, TraceError, TraceResult};
-use shelling_hdl::formats::FormatError;
 use serde::Serialize;
+use shelling_hdl::formats::FormatError;
 
 /// A scene with the grid built over it, ready to trace.
 #[derive(Clone, Debug)]

@@ -111,7 +111,10 @@ impl Quantizer {
 
     /// Both coordinates of a point.
     pub fn point(&self, what: impl Fn() -> String, p: [f64; 2]) -> Result<[i32; 2], FormatError> {
-        Ok([self.coord(|| format!("{} x", what()), 0, p[0])?, self.coord(|| format!("{} y", what()), 1, p[1])?])
+        Ok([
+            self.coord(|| format!("{} x", what()), 0, p[0])?,
+            self.coord(|| format!("{} y", what()), 1, p[1])?,
+        ])
     }
 }
 

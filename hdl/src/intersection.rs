@@ -310,9 +310,9 @@ impl Logic for IntersectionUnit {
     fn update(&mut self) {
         // Clocks and register defaults (hold).
         dff_setup!(
-            self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, test_count, v1, ray1,
-            a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3, id3, v4, ray4, sh4,
-            id4, q4, v5, ray5, id5, key5, fw_valid, fw_ray, fw_key, fw_id
+            self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, test_count, v1,
+            ray1, a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3, id3, v4, ray4,
+            sh4, id4, q4, v5, ray5, id5, key5, fw_valid, fw_ray, fw_key, fw_id
         );
         self.dir_mem_x.clock.next = self.clock.val();
         self.dir_mem_y.clock.next = self.clock.val();
@@ -590,7 +590,10 @@ mod tests {
                 u.res_re.next = true;
                 u.res_addr.next = (i as u64).into();
             });
-            let got = u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() });
+            let got = u
+                .res_hit
+                .val()
+                .then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() });
             assert_eq!(got, expect[i], "ray {i}");
         }
     }

@@ -148,7 +148,12 @@ end
         vec![TimingInfo {
             name: "bram".into(),
             clock: "clock".into(),
-            inputs: vec!["read_address".into(), "write_address".into(), "write_data".into(), "write_enable".into()],
+            inputs: vec![
+                "read_address".into(),
+                "write_address".into(),
+                "write_data".into(),
+                "write_enable".into(),
+            ],
             outputs: vec!["read_data".into()],
         }]
     }

@@ -35,7 +35,12 @@ fn field<const N: usize>(v: i64) -> Bits<N> {
 /// (a job may run past the loaded ones and wrap around the ray memory; the unit's direction
 /// memory is zero at power-up).
 pub fn rays_touched(dirs: &[[i32; 2]], jobs: &[Job]) -> usize {
-    jobs.iter().map(|j| j.first as usize + j.count as usize).max().unwrap_or(0).max(dirs.len()).min(MAX_BUNDLE)
+    jobs.iter()
+        .map(|j| j.first as usize + j.count as usize)
+        .max()
+        .unwrap_or(0)
+        .max(dirs.len())
+        .min(MAX_BUNDLE)
 }
 
 /// What the unit must hold after the jobs, for rays `0..rays_touched` (the bit-true model).
@@ -73,7 +78,12 @@ pub fn load_directions(drv: &mut Driver<IntersectionUnit>, dirs: &[[i32; 2]]) ->
 
 /// Streams the jobs (random idle cycles if `pacing.idle`), then waits until the unit is idle.
 /// Returns the number of cycles from the first offer to idle.
-pub fn stream_jobs(drv: &mut Driver<IntersectionUnit>, jobs: &[Job], pacing: Pacing, seed: u64) -> Result<u64> {
+pub fn stream_jobs(
+    drv: &mut Driver<IntersectionUnit>,
+    jobs: &[Job],
+    pacing: Pacing,
+    seed: u64,
+) -> Result<u64> {
     let start = drv.cycles();
     let tests: u64 = jobs.iter().map(|j| j.count as u64).sum();
     let limit = start + 16 + 2 * (tests + jobs.len() as u64) * if pacing.idle { 4 } else { 1 };
@@ -127,7 +137,9 @@ pub fn read_hits(drv: &mut Driver<IntersectionUnit>, rays: usize) -> Result<Vec<
             u.res_addr.next = (i as u64).into();
         })?;
         let u = drv.uut();
-        out.push(u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() }));
+        out.push(
+            u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() }),
+        );
     }
     drv.cycle(|u| u.res_re.next = false)?;
     Ok(out)

@@ -28,7 +28,10 @@ fn check(name: &str, dirs: &[[i32; 2]], jobs: &[Job], pacing: Pacing, seed: u64)
     board.finish()?;
     let tests: u64 = jobs.iter().map(|j| j.count as u64).sum();
     if drv.uut().tests.val().to_u64() != tests {
-        return Err(Error::new(format!("{name}: tests counter {} != {tests}", drv.uut().tests.val().to_u64())));
+        return Err(Error::new(format!(
+            "{name}: tests counter {} != {tests}",
+            drv.uut().tests.val().to_u64()
+        )));
     }
     Ok(cycles)
 }
@@ -96,8 +99,9 @@ fn random_vectors_match_the_model_bit_for_bit() -> Result<()> {
     for (k, pacing) in [Pacing::NONE, Pacing { idle: true, backpressure: false }].into_iter().enumerate() {
         let seed = 0x1ee7_0000 + k as u64;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let dirs: Vec<[i32; 2]> =
-            (0..64).map(|i| if i % 2 == 0 { unit_dir(&mut rng) } else { [raw(&mut rng, 18), raw(&mut rng, 18)] }).collect();
+        let dirs: Vec<[i32; 2]> = (0..64)
+            .map(|i| if i % 2 == 0 { unit_dir(&mut rng) } else { [raw(&mut rng, 18), raw(&mut rng, 18)] })
+            .collect();
         let jobs: Vec<Job> = (0..400)
             .map(|i| {
                 let id = rng.random();
@@ -107,7 +111,8 @@ fn random_vectors_match_the_model_bit_for_bit() -> Result<()> {
         check("raw vectors", &dirs, &jobs, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
         total += jobs.iter().map(|j| j.count as u64).sum::<u64>();
         let (dirs, jobs) = scene_bundle(&mut rng, 256, 200);
-        check("scene vectors", &dirs, &jobs, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+        check("scene vectors", &dirs, &jobs, pacing, seed)
+            .map_err(|e| e.context(format!("seed {seed:#x}")))?;
         total += jobs.iter().map(|j| j.count as u64).sum::<u64>();
     }
     assert!(total >= 100_000, "only {total} vectors");
@@ -133,18 +138,42 @@ fn corner_cases() -> Result<()> {
         Job { patch: patch(7, [640, -640], [640, 640], 0), first: 0, count: 8 },
         Job { patch: patch(5, [640, -640], [640, 640], 0), first: 0, count: 8 },
         // Extreme coordinates and exponents, saturating keys.
-        Job { patch: PatchSetup { id: 0xffff, a: [hi, lo], b: [hi, hi], w: [hi, hi], sh: -3 }, first: 0, count: 8 },
-        Job { patch: PatchSetup { id: 1, a: [lo, lo], b: [lo, hi], w: [lo, lo], sh: -2 }, first: 0, count: 8 },
+        Job {
+            patch: PatchSetup { id: 0xffff, a: [hi, lo], b: [hi, hi], w: [hi, hi], sh: -3 },
+            first: 0,
+            count: 8,
+        },
+        Job {
+            patch: PatchSetup { id: 1, a: [lo, lo], b: [lo, hi], w: [lo, lo], sh: -2 },
+            first: 0,
+            count: 8,
+        },
         Job { patch: PatchSetup { id: 4, a: [hi, lo], b: [hi, hi], w: [hi, 0], sh: 31 }, first: 0, count: 8 },
         // Zero-length bundles, back to back.
         Job { patch: patch(11, [640, -640], [640, 640], 0), first: 3, count: 0 },
         Job { patch: patch(12, [640, -640], [640, 640], 0), first: 5, count: 0 },
         // One-ray bundles on ray 8 (no other job touches it), back to back: the read-modify-write
         // hazard. Equal keys, so the lowest id (19) must survive the later, higher ones.
-        Job { patch: PatchSetup { id: 19, a: [64, 64], b: [-64, 64], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
-        Job { patch: PatchSetup { id: 21, a: [64, 32], b: [-64, 32], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
-        Job { patch: PatchSetup { id: 20, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
-        Job { patch: PatchSetup { id: 22, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 }, first: 8, count: 1 },
+        Job {
+            patch: PatchSetup { id: 19, a: [64, 64], b: [-64, 64], w: [0, 1 << 16], sh: 3 },
+            first: 8,
+            count: 1,
+        },
+        Job {
+            patch: PatchSetup { id: 21, a: [64, 32], b: [-64, 32], w: [0, 1 << 16], sh: 3 },
+            first: 8,
+            count: 1,
+        },
+        Job {
+            patch: PatchSetup { id: 20, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 },
+            first: 8,
+            count: 1,
+        },
+        Job {
+            patch: PatchSetup { id: 22, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 },
+            first: 8,
+            count: 1,
+        },
         // Two- and three-ray bundles wrapping around the end of the ray memory.
         Job { patch: patch(30, [8, -8], [8, 8], 0), first: (MAX_BUNDLE - 1) as u16, count: 2 },
         Job { patch: patch(31, [8, -8], [8, 8], 0), first: (MAX_BUNDLE - 1) as u16, count: 3 },
@@ -155,8 +184,9 @@ fn corner_cases() -> Result<()> {
     // One-ray jobs on one ray, hundreds in a row, random patches: the hazard under load.
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let dirs: Vec<[i32; 2]> = (0..4).map(|_| unit_dir(&mut rng)).collect();
-    let jobs: Vec<Job> =
-        (0..600).map(|i| Job { patch: raw_patch(&mut rng, (i % 97) as u16), first: (i / 200) as u16, count: 1 }).collect();
+    let jobs: Vec<Job> = (0..600)
+        .map(|i| Job { patch: raw_patch(&mut rng, (i % 97) as u16), first: (i / 200) as u16, count: 1 })
+        .collect();
     check("one-ray bundles", &dirs, &jobs, Pacing::NONE, seed)?;
     let updates = model_bundle(&dirs, &jobs).iter().flatten().count();
     assert!(updates > 0, "the one-ray run never hit");
@@ -167,7 +197,8 @@ fn corner_cases() -> Result<()> {
 fn back_to_back_patches_keep_one_test_per_clock() -> Result<()> {
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     let dirs: Vec<[i32; 2]> = (0..32).map(|_| unit_dir(&mut rng)).collect();
-    let jobs: Vec<Job> = (0..50).map(|i| Job { patch: raw_patch(&mut rng, i), first: 0, count: 32 }).collect();
+    let jobs: Vec<Job> =
+        (0..50).map(|i| Job { patch: raw_patch(&mut rng, i), first: 0, count: 32 }).collect();
     let cycles = check("throughput", &dirs, &jobs, Pacing::NONE, 3)?;
     // 1600 tests at II = 1, plus the pipeline's fill and drain.
     assert!(cycles <= 1600 + 8, "{cycles} cycles for 1600 tests");
@@ -179,13 +210,18 @@ fn exported_verilog_reproduces_the_simulation() -> Result<()> {
     let seed = 0x5eed;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let (dirs, mut jobs) = scene_bundle(&mut rng, 64, 60);
-    jobs.extend((0..60).map(|i| Job { patch: raw_patch(&mut rng, i), first: (i % 64) as u16, count: (i % 5) as u16 }));
+    jobs.extend((0..60).map(|i| Job {
+        patch: raw_patch(&mut rng, i),
+        first: (i % 64) as u16,
+        count: (i % 5) as u16,
+    }));
     let mut drv = driver()?;
     drv.record_ports()?;
     run_bundle(&mut drv, &dirs, &jobs, Pacing { idle: true, backpressure: false }, seed)?;
     let rec = drv.take_recording().ok_or("recording was on")?;
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("intersection_unit");
-    let report = rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    let report =
+        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
     println!("{report:?}");
     Ok(())
 }
