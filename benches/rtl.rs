@@ -1,0 +1,72 @@
+//! RTL simulation speed: simulated cycles per second of the intersection unit driven by the
+//! testbench's cycle loop (release build), without and with VCD streaming, beside the bit-true
+//! model's ray-patch tests per second on the same work (the baseline measured in the same run).
+//!
+//! Workload: bundles of 64 rays, 400 patches each with arbitrary 18-bit fields, each tested
+//! against all 64 rays (25 600 tests per bundle, one per clock). Median of interleaved rounds.
+//!
+//! Run: `cargo bench --bench rtl` (`-- --rounds N` for more rounds).
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use shelling_hdl::intersection::IntersectionUnit;
+use shelling_hdl::screener::model::PatchSetup;
+use shelling_testbench::intersection::{model_bundle, run_bundle, Job};
+use shelling_testbench::{Driver, Pacing};
+use std::hint::black_box;
+use std::time::Instant;
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+fn main() {
+    let rounds = std::env::args()
+        .skip_while(|a| a != "--rounds")
+        .nth(1)
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(5usize);
+    let mut rng = ChaCha8Rng::seed_from_u64(1);
+    let mut raw = |bits: u32| rng.random_range(-(1i32 << (bits - 1))..(1i32 << (bits - 1)));
+    let dirs: Vec<[i32; 2]> = (0..64).map(|_| [raw(18), raw(18)]).collect();
+    let jobs: Vec<Job> = (0..400u16)
+        .map(|id| Job {
+            patch: PatchSetup {
+                id,
+                a: [raw(18), raw(18)],
+                b: [raw(18), raw(18)],
+                w: [raw(18), raw(18)],
+                sh: (raw(6).rem_euclid(35) - 3) as i8,
+            },
+            first: 0,
+            count: 64,
+        })
+        .collect();
+    let vcd = std::env::temp_dir().join(format!("shelling-bench-{}.vcd", std::process::id()));
+    let (mut plain, mut traced, mut model) = (Vec::new(), Vec::new(), Vec::new());
+    for _ in 0..rounds {
+        let mut drv = Driver::new(IntersectionUnit::default()).expect("the unit connects");
+        let t = Instant::now();
+        run_bundle(&mut drv, &dirs, &jobs, Pacing::NONE, 1).expect("runs");
+        plain.push(drv.cycles() as f64 / t.elapsed().as_secs_f64());
+
+        let mut drv = Driver::new(IntersectionUnit::default()).expect("the unit connects");
+        drv.stream_vcd(&vcd, ..).expect("VCD file");
+        let t = Instant::now();
+        run_bundle(&mut drv, &dirs, &jobs, Pacing::NONE, 1).expect("runs");
+        drv.finish_vcd().expect("VCD written");
+        traced.push(drv.cycles() as f64 / t.elapsed().as_secs_f64());
+
+        let t = Instant::now();
+        black_box(model_bundle(black_box(&dirs), black_box(&jobs)));
+        model.push((64 * 400) as f64 / t.elapsed().as_secs_f64());
+    }
+    let _ = std::fs::remove_file(&vcd);
+    let (p, v, m) = (median(plain), median(traced), median(model));
+    println!("intersection unit, {rounds} rounds, median:");
+    println!("  {:<32} {:>12.0} cycles/s", "RTL simulation, no VCD", p);
+    println!("  {:<32} {:>12.0} cycles/s  ({:.2}x of no VCD)", "RTL simulation, VCD streamed", v, v / p);
+    println!("  {:<32} {:>12.0} tests/s   (RTL is {:.4}x of it)", "bit-true model (baseline)", m, p / m);
+    println!("  goal: >= 500000 cycles/s without VCD: {}", if p >= 5e5 { "met" } else { "NOT met" });
+}
