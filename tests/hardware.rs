@@ -124,10 +124,13 @@ fn intersection_unit_synthesizes_to_dsps_without_latches() {
 }
 
 #[test]
-fn patch_loader_synthesizes_without_latches() {
-    let stat = synth_ecp5("patch_loader");
-    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
-        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
+fn patch_loader_and_screener_synthesize_without_latches() {
+    for (block, dsps) in [("patch_loader", 0), ("screener", 10)] {
+        let stat = synth_ecp5(block);
+        for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
+            assert!(!stat.contains(latch), "{block}: a latch was inferred:\n{stat}");
+        }
+        assert!(cells(&stat, "TRELLIS_FF") > 0, "{block}: {stat}");
+        assert_eq!(cells(&stat, "MULT18X18D"), dsps, "{block}: multipliers map to DSP blocks:\n{stat}");
     }
-    assert!(cells(&stat, "TRELLIS_FF") > 0, "{stat}");
 }

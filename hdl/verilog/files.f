@@ -1,2 +1,3 @@
-intersection_unit.v
 patch_loader.v
+screener.v
+intersection_unit.v

@@ -7,6 +7,7 @@ use crate::{Error, Result};
 use rust_hdl::core::prelude::Block;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
+use shelling_hdl::screener::Screener;
 use std::path::{Path, PathBuf};
 
 /// Name of the file list written beside the Verilog files.
@@ -18,7 +19,13 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     iu.connect_all();
     let mut loader = PatchLoader::default();
     loader.connect_all();
-    vec![("intersection_unit", Box::new(iu)), ("patch_loader", Box::new(loader))]
+    let mut screener = Screener::default();
+    screener.connect_all();
+    vec![
+        ("patch_loader", Box::new(loader)),
+        ("screener", Box::new(screener)),
+        ("intersection_unit", Box::new(iu)),
+    ]
 }
 
 /// The exported text of every block: `(file name, Verilog)`, in a fixed order.

@@ -1,0 +1,422 @@
+//! Block-level tests of the backface screener RTL (`shelling_hdl::screener::Screener`) against its
+//! bit-true model `model::screen`: seeded random bundles and patches plus corner cases, every
+//! pacing of the two streams, the counters, and the rung-4 replay under Icarus Verilog.
+
+use std::path::PathBuf;
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rust_hdl::prelude::*;
+use shelling_hdl::formats::{cross, direction, dot, from_bits, to_bits};
+use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
+use shelling_hdl::screener::Screener;
+use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
+
+const COORD_MAX: i32 = (1 << 17) - 1;
+
+/// One bundle and the patches screened for it.
+#[derive(Clone, Debug)]
+struct Segment {
+    bundle: BundleSetup,
+    patches: Vec<Patch>,
+}
+
+fn b<const N: usize>(v: i64) -> Bits<N> {
+    Bits::from(to_bits(v, N as u32))
+}
+
+fn dir(angle: f64) -> [i32; 2] {
+    direction(|| "test direction".into(), [angle.cos(), angle.sin()]).unwrap()
+}
+
+fn clamp_coord(v: i64) -> i32 {
+    v.clamp(0, COORD_MAX as i64) as i32
+}
+
+/// A realistic bundle: origin anywhere, unit normal and sector edges within ±90° of it.
+fn random_bundle(rng: &mut ChaCha8Rng) -> BundleSetup {
+    let theta = rng.random_range(0.0..std::f64::consts::TAU);
+    let half = std::f64::consts::FRAC_PI_2;
+    let edge = |rng: &mut ChaCha8Rng| rng.random_range(0.0..half);
+    let (alpha, beta) = (edge(rng), edge(rng));
+    let origin = match rng.random_range(0..8) {
+        0 => [0, rng.random_range(0..=COORD_MAX)],
+        1 => [COORD_MAX, rng.random_range(0..=COORD_MAX)],
+        2 => [rng.random_range(0..=COORD_MAX), 0],
+        3 => [rng.random_range(0..=COORD_MAX), COORD_MAX],
+        _ => [rng.random_range(0..=COORD_MAX), rng.random_range(0..=COORD_MAX)],
+    };
+    BundleSetup { origin, normal: dir(theta), first: dir(theta - alpha), last: dir(theta + beta) }
+}
+
+/// A point: anywhere in the window, near the origin, or on the window's edge.
+fn random_point(rng: &mut ChaCha8Rng, o: [i32; 2]) -> [i32; 2] {
+    match rng.random_range(0..10) {
+        0..=3 => [rng.random_range(0..=COORD_MAX), rng.random_range(0..=COORD_MAX)],
+        4..=5 => {
+            let r = 1i64 << rng.random_range(0..12);
+            [0, 1].map(|k| clamp_coord(o[k] as i64 + rng.random_range(-r..=r)))
+        }
+        6 => {
+            let r = 1i64 << rng.random_range(12..17);
+            [0, 1].map(|k| clamp_coord(o[k] as i64 + rng.random_range(-r..=r)))
+        }
+        7 => [[0, COORD_MAX][rng.random_range(0..2)], rng.random_range(0..=COORD_MAX)],
+        8 => [rng.random_range(0..=COORD_MAX), [0, COORD_MAX][rng.random_range(0..2)]],
+        _ => [[0, COORD_MAX][rng.random_range(0..2)], [0, COORD_MAX][rng.random_range(0..2)]],
+    }
+}
+
+/// A random patch; a short one near the origin, with its line passing close to it, one time in
+/// four (to reach `Near` and negative exponents).
+fn random_patch(rng: &mut ChaCha8Rng, bundle: &BundleSetup, id: u16) -> Patch {
+    let o = bundle.origin;
+    if rng.random_range(0..4) == 0 {
+        // A short segment whose line passes within a few LSBs of the origin.
+        let c = [0, 1].map(|k| o[k] as i64 + rng.random_range(-4i64..=4));
+        let len = 1i64 << rng.random_range(0..10);
+        let d = [rng.random_range(-len..=len), rng.random_range(-len..=len)];
+        let a = [0, 1].map(|k| clamp_coord(c[k] - d[k]));
+        let p = [0, 1].map(|k| clamp_coord(c[k] + d[k]));
+        return Patch { id, a, b: p };
+    }
+    Patch { id, a: random_point(rng, o), b: random_point(rng, o) }
+}
+
+/// Corner-case patches for `bundle` (some of them adjust nothing and are screened any way).
+fn corner_patches(rng: &mut ChaCha8Rng, bundle: &BundleSetup, first_id: u16) -> Vec<Patch> {
+    let o = bundle.origin;
+    let n = bundle.normal;
+    let mut out = vec![];
+    let at = |d: [i64; 2]| [clamp_coord(o[0] as i64 + d[0]), clamp_coord(o[1] as i64 + d[1])];
+    // Endpoints on the source plane (along the tangent t = (−n.y, n.x), rounded: near the plane).
+    let t = [-(n[1] as i64), n[0] as i64];
+    for s in [-3i64, -1, 0, 1, 5] {
+        let u = rng.random_range(1i64..2000);
+        out.push((at([t[0] * s / 64, t[1] * s / 64]), at([t[0] * u / 65536, t[1] * u / 65536])));
+        out.push((at([-t[0] * u / 65536, -t[1] * u / 65536]), at([t[0] * s / 64, t[1] * s / 64])));
+    }
+    // Endpoints exactly on the plane for axis-aligned normals are in `corner_segments`.
+    // Collinear with the origin (K = 0) and nearly so.
+    let v = [rng.random_range(-300i64..300), rng.random_range(-300i64..300)];
+    for (s, u) in [(1i64, 2i64), (-1, 3), (2, 7), (0, 1)] {
+        out.push((at([v[0] * s, v[1] * s]), at([v[0] * u, v[1] * u])));
+        out.push((at([v[0] * s, v[1] * s + 1]), at([v[0] * u, v[1] * u])));
+    }
+    // K = 1 and K small: a = (1, 0)/(0, ±1) from the origin.
+    for bx in [0i64, 1, 17, 1000, -1000] {
+        out.push((at([1, 0]), at([bx, 16])));
+        out.push((at([0, -1]), at([16, bx])));
+        out.push((at([-16, bx]), at([0, -1])));
+    }
+    // Zero length, and extreme coordinates.
+    let p = random_point(rng, o);
+    out.push((p, p));
+    out.push((o, o));
+    for (a, bb) in [
+        ([0, 0], [COORD_MAX, COORD_MAX]),
+        ([COORD_MAX, COORD_MAX], [0, 0]),
+        ([0, COORD_MAX], [COORD_MAX, 0]),
+        ([COORD_MAX, 0], [0, COORD_MAX]),
+        ([0, 0], [COORD_MAX, 0]),
+        ([COORD_MAX, 0], [0, 0]),
+    ] {
+        out.push((a, bb));
+    }
+    // Backward: both endpoints behind the plane.
+    let back = [-(n[0] as i64), -(n[1] as i64)];
+    let k = rng.random_range(1i64..40000);
+    out.push((
+        at([back[0] * k / 65536 + t[0] / 64, back[1] * k / 65536 + t[1] / 64]),
+        at([back[0] / 64, back[1] / 64]),
+    ));
+    out.into_iter()
+        .enumerate()
+        .map(|(i, (a, bb))| Patch { id: first_id.wrapping_add(i as u16), a, b: bb })
+        .collect()
+}
+
+/// Bundles built for exact corner cases: axis-aligned normals (endpoints exactly on the plane)
+/// and sector edges with small components, so that `cross` with them hits the margin ±256
+/// exactly.
+fn corner_segments(rng: &mut ChaCha8Rng) -> Vec<Segment> {
+    let mut out = vec![];
+    for s in 1..=16i32 {
+        let o = [rng.random_range(20000..100000), rng.random_range(20000..100000)];
+        // Normal +x; first = (1, −s/65536)-ish, last = (1, +s/65536)-ish: a nearly empty sector.
+        let bundle = BundleSetup { origin: o, normal: [65536, 0], first: [65536, -s], last: [65536, s] };
+        let mut patches = vec![];
+        let mut id = (s as u16) << 8;
+        // cross(first, p) = mul(65536, p.y) + mul(s, p.x) = 4096·p.y + floor(s·p.x/16).
+        for px in 1..20000 {
+            for py in [-1i32, 0, 1] {
+                let p = [px, py];
+                let c = cross(bundle.first, p) as i64;
+                let cl = cross(bundle.last, p) as i64;
+                if (-258..=-254).contains(&c) || (254..=258).contains(&cl) {
+                    let q = [o[0] + px, o[1] + py];
+                    // The endpoint is b for the first edge, a for the last edge; the other
+                    // endpoint makes K > 0 (the origin in front).
+                    let other_b = [o[0] + px, o[1] + py + 500];
+                    let other_a = [o[0] + px, o[1] + py - 500];
+                    patches.push(Patch { id, a: other_a, b: q });
+                    id = id.wrapping_add(1);
+                    patches.push(Patch { id, a: q, b: other_b });
+                    id = id.wrapping_add(1);
+                }
+            }
+        }
+        // Endpoints exactly on the plane (x = origin x), in front, behind.
+        for dy in [-700, -1, 0, 1, 700] {
+            for dx in [0, 0, 1, -1, 50] {
+                let a = [o[0] + dx.min(0), o[1] + dy];
+                let bb = [o[0], o[1] + dy + 300];
+                patches.push(Patch { id, a, b: bb });
+                id = id.wrapping_add(1);
+                patches.push(Patch { id, a: [o[0] + dx, o[1] - 300], b: [o[0], o[1] + 2] });
+                id = id.wrapping_add(1);
+            }
+        }
+        let in_window =
+            patches.iter().all(|p| p.a.iter().chain(p.b.iter()).all(|&c| (0..=COORD_MAX).contains(&c)));
+        assert!(in_window);
+        out.push(Segment { bundle, patches });
+    }
+    out
+}
+
+/// `count` random patches in segments of random bundles, a corner-case batch with each bundle.
+fn random_segments(rng: &mut ChaCha8Rng, count: usize) -> Vec<Segment> {
+    let mut out = vec![];
+    let mut total = 0;
+    let mut id = 0u16;
+    while total < count {
+        let bundle = random_bundle(rng);
+        let per = rng.random_range(50..400).min(count - total).max(1);
+        let mut patches: Vec<Patch> = (0..per)
+            .map(|_| {
+                id = id.wrapping_add(1);
+                random_patch(rng, &bundle, id)
+            })
+            .collect();
+        let corners = corner_patches(rng, &bundle, id);
+        id = id.wrapping_add(corners.len() as u16);
+        patches.extend(corners);
+        total += patches.len();
+        out.push(Segment { bundle, patches });
+    }
+    out
+}
+
+/// Verdict tallies: passed, backward, back-facing, outside, near.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Tally([u64; 5]);
+
+impl Tally {
+    fn add(&mut self, v: &Verdict) {
+        let i = match v {
+            Verdict::Pass(_) => 0,
+            Verdict::Backward => 1,
+            Verdict::BackFacing => 2,
+            Verdict::OutsideSector => 3,
+            Verdict::Near => 4,
+        };
+        self.0[i] += 1;
+    }
+}
+
+fn counters(u: &Screener) -> Tally {
+    Tally(
+        [u.passed.val(), u.backward.val(), u.back_facing.val(), u.outside.val(), u.near.val()]
+            .map(|c| c.to_u64()),
+    )
+}
+
+fn read_out(u: &Screener) -> PatchSetup {
+    let s = |v: u64| from_bits(v, 18) as i32;
+    PatchSetup {
+        id: u.out_id.val().to_u16(),
+        a: [s(u.out_ax.val().to_u64()), s(u.out_ay.val().to_u64())],
+        b: [s(u.out_bx.val().to_u64()), s(u.out_by.val().to_u64())],
+        w: [s(u.out_wx.val().to_u64()), s(u.out_wy.val().to_u64())],
+        sh: from_bits(u.out_sh.val().to_u64(), 6) as i8,
+    }
+}
+
+/// Streams every segment through the screener under `pacing` and checks every passing patch and
+/// the counters against the model. Returns the model's tally, the number of negative exponents
+/// seen and the cycles taken.
+fn run(drv: &mut Driver<Screener>, segments: &[Segment], pacing: Pacing, seed: u64) -> Result<(Tally, u64)> {
+    let mut expected_tally = Tally::default();
+    let mut expected = vec![];
+    let mut negative_sh = 0u64;
+    for seg in segments {
+        for p in &seg.patches {
+            let v = screen(&seg.bundle, p);
+            expected_tally.add(&v);
+            if let Verdict::Pass(s) = v {
+                negative_sh += u64::from(s.sh < 0);
+                expected.push(s);
+            }
+        }
+    }
+    let base = counters(drv.uut());
+    let mut board =
+        Scoreboard::new("screener", seed, expected.iter().copied()).with_context(pacing.to_string());
+    let mut mon = Monitor::new(pacing, seed);
+    let mut sent = 0usize;
+    let mut passes_so_far = 0usize;
+    let start = drv.cycles();
+    for (k, seg) in segments.iter().enumerate() {
+        let bundle = seg.bundle;
+        let mut src = Source::new(seg.patches.iter().copied(), pacing, seed.wrapping_add(k as u64));
+        passes_so_far +=
+            seg.patches.iter().filter(|p| matches!(screen(&bundle, p), Verdict::Pass(_))).count();
+        sent += seg.patches.len();
+        let limit = drv.cycles() + 200 + 60 * seg.patches.len() as u64;
+        loop {
+            let done = counters(drv.uut()).0.iter().zip(base.0.iter()).map(|(c, b)| c - b).sum::<u64>()
+                == sent as u64;
+            if done && src.is_done() && board.matched() == passes_so_far {
+                break;
+            }
+            drv.drive(|u| {
+                u.origin_x.next = b(bundle.origin[0] as i64);
+                u.origin_y.next = b(bundle.origin[1] as i64);
+                u.normal_x.next = b(bundle.normal[0] as i64);
+                u.normal_y.next = b(bundle.normal[1] as i64);
+                u.first_x.next = b(bundle.first[0] as i64);
+                u.first_y.next = b(bundle.first[1] as i64);
+                u.last_x.next = b(bundle.last[0] as i64);
+                u.last_y.next = b(bundle.last[1] as i64);
+                let item = src.present(true).copied();
+                u.in_valid.next = item.is_some();
+                let p = item.unwrap_or_default();
+                u.in_id.next = (p.id as u64).into();
+                u.in_ax.next = b(p.a[0] as i64);
+                u.in_ay.next = b(p.a[1] as i64);
+                u.in_bx.next = b(p.b[0] as i64);
+                u.in_by.next = b(p.b[1] as i64);
+                u.out_ready.next = mon.ready();
+            })?;
+            let u = drv.uut();
+            src.accepted(u.in_valid.val() && u.in_ready.val())?;
+            let cycle = drv.cycles();
+            if mon.observe(cycle, u.out_valid.val(), || read_out(u)) {
+                board.check(cycle, read_out(u))?;
+            }
+            drv.tick()?;
+            if drv.cycles() > limit {
+                return Err(Error::new(format!(
+                    "no progress in segment {k}: {} of {} patches counted, {} of {passes_so_far} out",
+                    counters(drv.uut()).0.iter().zip(base.0.iter()).map(|(c, b)| c - b).sum::<u64>(),
+                    sent,
+                    board.matched()
+                )));
+            }
+        }
+    }
+    board.finish()?;
+    let got = counters(drv.uut());
+    let delta = Tally([0, 1, 2, 3, 4].map(|i| got.0[i] - base.0[i]));
+    if delta != expected_tally {
+        return Err(Error::new(format!(
+            "counters {delta:?} differ from the model's {expected_tally:?} (seed {seed:#x}, {pacing})"
+        )));
+    }
+    assert_eq!(delta.0.iter().sum::<u64>(), sent as u64);
+    println!(
+        "{pacing}: {sent} patches in {} cycles, tally {expected_tally:?}, {negative_sh} with sh < 0",
+        drv.cycles() - start
+    );
+    Ok((expected_tally, negative_sh))
+}
+
+fn new_driver() -> Result<Driver<Screener>> {
+    Driver::with_clock(Screener::default(), |s| &mut s.clock)
+}
+
+/// The model's results on the test vectors themselves cover every verdict and both signs of sh.
+fn assert_coverage(t: Tally, negative_sh: u64, what: &str) {
+    assert!(t.0.iter().all(|&c| c > 0), "{what}: some verdict never occurs: {t:?}");
+    assert!(negative_sh > 0, "{what}: no negative exponent");
+}
+
+/// The corner cases the vectors must reach (counted on the model's side).
+fn corner_coverage(segments: &[Segment]) {
+    let mut hits = [0u64; 9];
+    for seg in segments {
+        let bd = &seg.bundle;
+        for p in &seg.patches {
+            let o = bd.origin;
+            let a = [p.a[0] - o[0], p.a[1] - o[1]];
+            let bb = [p.b[0] - o[0], p.b[1] - o[1]];
+            let k = cross(a, bb);
+            let v = screen(bd, p);
+            let pass = matches!(v, Verdict::Pass(_));
+            hits[0] += u64::from(dot(bd.normal, a) == 0 || dot(bd.normal, bb) == 0);
+            hits[1] += u64::from(k == 0 && a != bb);
+            hits[2] += u64::from(k == 1 && pass);
+            hits[3] += u64::from(cross(bd.first, bb) == -256 && pass);
+            hits[4] += u64::from(cross(bd.first, bb) == -257 && v == Verdict::OutsideSector);
+            hits[5] += u64::from(cross(bd.last, a) == 256 && pass);
+            hits[6] += u64::from(cross(bd.last, a) == 257 && v == Verdict::OutsideSector);
+            hits[7] += u64::from(a == bb);
+            hits[8] += u64::from(matches!(v, Verdict::Pass(s) if s.sh == -3));
+        }
+    }
+    println!(
+        "corner hits (on plane, K = 0, K = 1, first ±256/257, last ±256/257, zero length, sh = -3): {hits:?}"
+    );
+    assert!(hits.iter().all(|&h| h > 0), "a corner case is never reached: {hits:?}");
+}
+
+#[test]
+fn screener_matches_model_on_random_and_corner_patches() -> Result<()> {
+    // The bulk: 10^5 patches with no stalls.
+    let seed = 0x5c4e_e000u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut segments = corner_segments(&mut rng);
+    segments.extend(random_segments(&mut rng, 100_000));
+    corner_coverage(&segments);
+    let mut drv = new_driver()?;
+    let (t, neg) =
+        run(&mut drv, &segments, Pacing::NONE, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    assert!(t.0.iter().sum::<u64>() >= 100_000);
+    assert_coverage(t, neg, "bulk");
+    Ok(())
+}
+
+#[test]
+fn screener_matches_model_under_all_pacings() -> Result<()> {
+    for (k, pacing) in Pacing::ALL.into_iter().enumerate() {
+        let seed = 0x5c4e_e100u64 + k as u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut segments = random_segments(&mut rng, 3000);
+        segments.extend(corner_segments(&mut rng).into_iter().take(2));
+        let mut drv = new_driver()?;
+        let (t, neg) = run(&mut drv, &segments, pacing, seed)
+            .map_err(|e| e.context(format!("seed {seed:#x}, {pacing}")))?;
+        assert_coverage(t, neg, &pacing.to_string());
+    }
+    Ok(())
+}
+
+#[test]
+fn screener_verilog_replays_bit_exactly_under_icarus() -> Result<()> {
+    let seed = 0x5c4e_e200u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut segments = random_segments(&mut rng, 2000);
+    segments.extend(corner_segments(&mut rng).into_iter().take(1));
+    let mut drv = new_driver()?;
+    drv.record_ports()?;
+    let pacing = Pacing { idle: true, backpressure: true };
+    let (t, _) = run(&mut drv, &segments, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    assert!(t.0.iter().sum::<u64>() >= 2000);
+    let rec = drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("screener");
+    let report =
+        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    println!("{report}");
+    Ok(())
+}
