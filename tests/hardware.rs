@@ -1,6 +1,7 @@
 //! The hardware side seen from the whole system: rung 2 (the bit-true fixed point against the
 //! f64 golden model, within the bound of `hdl/FORMATS.md`), the fixed-point range checks, the
-//! committed Verilog being current, and every block synthesizing for ECP5.
+//! committed Verilog being current, and the synthesizability test of every block: Yosys'
+//! `synth_ecp5` on its exported Verilog, no latches, products on DSP blocks.
 
 use shelling::agreement::{self, Workload};
 use shelling::arith::{Arith, FixedBundle};
