@@ -204,12 +204,13 @@ fn random_ids(n: usize, seed: u64) -> Vec<u16> {
     (0..n).map(|_| rng.random()).collect()
 }
 
+/// 3 latencies × 4 pacings × 9000 ids: 108 000 patches through the loader.
 #[test]
 fn every_patch_once_in_order_under_all_pacings_and_latencies() -> Result<()> {
     for tc in [1u64, 3, 8] {
         for (k, pacing) in Pacing::ALL.into_iter().enumerate() {
             let seed = 0x10ad_0000 + 16 * tc + k as u64;
-            let ids = random_ids(2000, seed);
+            let ids = random_ids(9000, seed);
             let mut mem = HostMemory::random(seed, tc);
             let mut drv = new_driver()?;
             let stats = run(&mut drv, &ids, &mut mem, pacing, seed, 0)
