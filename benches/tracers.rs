@@ -6,7 +6,8 @@
 //! once per round; rounds are interleaved so drift of the machine hits all methods alike, and the
 //! median round is reported. Per-source work (screening, shell structure) is included.
 //!
-//! Run: `cargo bench --bench tracers` (`-- --rounds N` for more rounds).
+//! Run: `cargo bench --bench tracers` (`-- --rounds N` for more rounds; `-- --only NAME` times
+//! only parry2d and the named method, e.g. to profile it with `perf record`).
 //!
 //! parry2d casts two-sided segments and uses f32; it is a speed baseline, not an oracle.
 
@@ -27,6 +28,7 @@ fn main() {
         .nth(1)
         .and_then(|v| v.parse().ok())
         .unwrap_or(7usize);
+    let only: Option<String> = std::env::args().skip_while(|a| a != "--only").nth(1);
     let scene = scene::generate(1000, 32.0, 7, scene::PAPER_WORLD).expect("the benchmark scene is valid");
     let prepared = Prepared::new(scene, GridParams::default());
     let sources: Vec<usize> = (0..16).map(|i| i * 1000 / 16).collect();
@@ -63,7 +65,11 @@ fn main() {
         }
         hits
     };
-    let methods = [Method::Brute, Method::Conventional, Method::Stochastic, Method::Deterministic];
+    let methods: Vec<Method> =
+        [Method::Brute, Method::Conventional, Method::Stochastic, Method::Deterministic]
+            .into_iter()
+            .filter(|m| only.as_deref().is_none_or(|o| o == m.name()))
+            .collect();
     let run = |m: Method| {
         let mut hits = 0usize;
         for b in &bundles {
@@ -80,7 +86,7 @@ fn main() {
 
     // Warm up, then interleaved timed rounds.
     black_box(parry());
-    for m in methods {
+    for &m in &methods {
         black_box(run(m));
     }
     let mut times: Vec<Vec<f64>> = vec![Vec::new(); methods.len() + 1];

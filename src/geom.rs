@@ -52,6 +52,19 @@ pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> f64 {
     )
 }
 
+/// The first stage of [`orient`] (Shewchuk's predicate as the `robust` crate implements it): the
+/// floating-point determinant, and whether its error bound proves its sign, in which case it is
+/// exactly what [`orient`] returns.
+#[inline(always)]
+fn orient_filter(a: Vec2, b: Vec2, c: Vec2) -> (f64, bool) {
+    const THETA: f64 = 3.3306690621773722e-16;
+    let detleft = (a.x - c.x) * (b.y - c.y);
+    let detright = (a.y - c.y) * (b.x - c.x);
+    let det = detleft - detright;
+    let errbound = THETA * (detleft + detright).abs();
+    (det, det >= errbound || -det >= errbound)
+}
+
 /// A one-sided patch of the 2D world: the segment `a → b`, front side on its left.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Segment {
@@ -132,10 +145,16 @@ pub fn facing(origin: Vec2, normal: Vec2, seg: &Segment) -> Facing {
 
 /// The per-ray part of the hit definition, for a patch already known to be [`Facing::Front`]:
 /// returns the distance `t > 0` at which the ray meets the segment, or `None`.
-#[inline]
+#[inline(always)]
 pub fn hit_front(ray: &Ray, seg: &Segment) -> Option<f64> {
-    // The ray's line must have `a` on its right (or on it) and `b` on its left (or on it).
-    if orient(ray.origin, ray.probe, seg.a) > 0.0 || orient(ray.origin, ray.probe, seg.b) < 0.0 {
+    // The ray's line must have `a` on its right (or on it) and `b` on its left (or on it). Both
+    // orientations go through the floating-point filter of `orient` first, side by side; only
+    // when either is too close to call does the exact predicate decide.
+    let (o, p) = (ray.origin, ray.probe);
+    let (da, certain_a) = orient_filter(o, p, seg.a);
+    let (db, certain_b) = orient_filter(o, p, seg.b);
+    let miss = if certain_a & certain_b { (da > 0.0) | (db < 0.0) } else { misses_exactly(o, p, seg) };
+    if miss {
         return None;
     }
     let e = seg.b - seg.a;
@@ -149,6 +168,14 @@ pub fn hit_front(ray: &Ray, seg: &Segment) -> Option<f64> {
     let t = if t.is_nan() { lo } else { t.clamp(lo, hi) };
     // A hit is at t > 0 by the predicates; keep it strictly positive after rounding too.
     Some(t.max(f64::MIN_POSITIVE))
+}
+
+/// The orientation test of [`hit_front`] by the exact predicate, for when the filter cannot
+/// decide it (rare, so kept out of line).
+#[cold]
+#[inline(never)]
+fn misses_exactly(o: Vec2, p: Vec2, seg: &Segment) -> bool {
+    orient(o, p, seg.a) > 0.0 || orient(o, p, seg.b) < 0.0
 }
 
 /// The complete hit definition for one ray of a source with unit `normal`.

@@ -28,7 +28,12 @@
 //! the exit face (axis and side) and the exit point's coordinate along the face, clamped into the
 //! region and kept monotone in the direction of travel, so rounding can never send the walk
 //! backwards or into a loop. [`Grid::raster_convex`] lists the cells that a convex polygon
-//! meets (row by row, conservatively); the shelling tracers use it to find the cells of a shell.
+//! meets (row by row, conservatively); the shelling tracers use it (as [`Grid::raster_convex_n`],
+//! the same arithmetic for a fixed vertex count) to find the cells of a shell, reading each cell
+//! from a one-entry scan table ([`Grid::scan_cell`]). The rasteriser's cell coordinates
+//! `⌊(v − origin) / side⌋` are taken by multiplying with the reciprocal and fall back to the
+//! division wherever the two could differ (a quotient within a few ulps of an integer), so they
+//! are always the division's.
 
 use crate::geom::{Segment, Vec2};
 use crate::scene::Bounds;
@@ -93,7 +98,24 @@ pub struct Grid {
     /// Macro-region id of each empty cell, `NO_REGION` for a non-empty one.
     cell_region: Vec<u32>,
     regions: Vec<CellRect>,
+    /// Per cell, what a row scan needs in one 8-byte load ([`Grid::scan_cell`]): `[start, end]`
+    /// of its segment list for a non-empty cell, `[region | EMPTY, x1 of the region]` for an
+    /// empty one.
+    scan: Vec<[u32; 2]>,
 }
+
+/// One cell as a row scan sees it ([`Grid::scan_cell`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CellScan<'a> {
+    /// An empty cell: its macro-region, and the region's last column (where a scan along the
+    /// row resumes after jumping across the region).
+    Empty { region: u32, x1: u32 },
+    /// A non-empty cell: the segments registered in it.
+    Items(&'a [u32]),
+}
+
+/// Marks an empty cell's entry in [`Grid::scan`].
+const EMPTY: u32 = 1 << 31;
 
 impl Grid {
     /// Builds the grid over `bounds` (see the module doc for the rules) and registers `segments`.
@@ -110,9 +132,11 @@ impl Grid {
             items: Vec::new(),
             cell_region: Vec::new(),
             regions: Vec::new(),
+            scan: Vec::new(),
         };
         grid.register(segments);
         grid.build_macro_regions();
+        grid.build_scan();
         grid
     }
 
@@ -163,6 +187,18 @@ impl Grid {
         (r != NO_REGION).then_some(r)
     }
 
+    /// Cell `c` as a row scan needs it: the same information as [`Grid::region_of`],
+    /// [`Grid::region`] (its `x1`) and [`Grid::cell_items`], from one entry.
+    #[inline]
+    pub fn scan_cell(&self, c: usize) -> CellScan<'_> {
+        let [a, b] = self.scan[c];
+        if a & EMPTY != 0 {
+            CellScan::Empty { region: a & !EMPTY, x1: b }
+        } else {
+            CellScan::Items(&self.items[a as usize..b as usize])
+        }
+    }
+
     /// The rectangle of macro-region `r`.
     pub fn region(&self, r: u32) -> CellRect {
         self.regions[r as usize]
@@ -182,6 +218,23 @@ impl Grid {
     #[inline]
     fn coord(&self, v: f64, origin: f64) -> i64 {
         floor_i64((v - origin) / self.cell_size)
+    }
+
+    /// [`Grid::coord`] with `inv = 1 / cell_size`: the quotient is taken by multiplying, which
+    /// has the same floor unless it lies within a few ulps of an integer; there (and for
+    /// non-finite or huge values) the division decides, so the answer is always `coord`'s.
+    #[inline(always)]
+    fn coord_by(&self, v: f64, origin: f64, inv: f64) -> i64 {
+        let x = v - origin;
+        let q = x * inv;
+        let k = floor_i64(q);
+        let f = q - k as f64;
+        let tol = 1e-9 * q.abs().max(1.0);
+        if f > tol && f < 1.0 - tol {
+            k
+        } else {
+            floor_i64(x / self.cell_size)
+        }
     }
 
     fn register(&mut self, segments: &[Segment]) {
@@ -211,6 +264,19 @@ impl Grid {
         }
         self.offsets = offsets;
         self.items = items;
+    }
+
+    fn build_scan(&mut self) {
+        assert!(
+            self.items.len() < EMPTY as usize && self.regions.len() < EMPTY as usize,
+            "too many registrations for the grid's scan table"
+        );
+        self.scan = (0..self.len())
+            .map(|c| match self.region_of(c) {
+                Some(r) => [r | EMPTY, self.regions[r as usize].x1],
+                None => [self.offsets[c], self.offsets[c + 1]],
+            })
+            .collect();
     }
 
     fn build_macro_regions(&mut self) {
@@ -272,31 +338,45 @@ impl Grid {
     /// Calls `row(iy, ix0, ix1)` for every row of cells that the convex polygon `poly` (given by
     /// its vertices in order, at most 8; two vertices make a segment, one a point) meets, with the
     /// inclusive range of cells it meets in that row. Conservative: cells are grown by `eps`.
-    pub fn raster_convex(&self, poly: &[Vec2], mut row: impl FnMut(usize, usize, usize)) {
-        let eps = self.eps;
+    pub fn raster_convex(&self, poly: &[Vec2], row: impl FnMut(usize, usize, usize)) {
         assert!(poly.len() <= 8, "raster_convex takes at most 8 vertices, got {}", poly.len());
-        let n = poly.len();
-        // Each edge as (y range, x at its lower end, dx/dy); horizontal edges have no slope.
-        let mut edges = [(0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64); 8];
+        let mut edges = [Edge::default(); 8];
+        for (i, e) in edges.iter_mut().enumerate().take(poly.len()) {
+            *e = Edge::new(poly[i], poly[(i + 1) % poly.len()]);
+        }
+        self.raster_edges(&edges[..poly.len()], row);
+    }
+
+    /// [`Grid::raster_convex`] for a polygon of exactly `N` vertices: the same cells, computed by
+    /// the same arithmetic, with the edge loop unrolled (the shelling tracers raster a
+    /// quadrilateral per shell).
+    #[inline]
+    pub fn raster_convex_n<const N: usize>(&self, poly: &[Vec2; N], row: impl FnMut(usize, usize, usize)) {
+        const { assert!(N >= 1 && N <= 8, "raster_convex_n takes 1 to 8 vertices") };
+        let edges: [Edge; N] = std::array::from_fn(|i| Edge::new(poly[i], poly[(i + 1) % N]));
+        self.raster_edges(&edges, row);
+    }
+
+    /// The body of the rasterisers: rows of the polygon bounded by `edges`.
+    #[inline(always)]
+    fn raster_edges(&self, edges: &[Edge], mut row: impl FnMut(usize, usize, usize)) {
+        let eps = self.eps;
+        let inv = 1.0 / self.cell_size;
         let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
-        for i in 0..n {
-            let (p, q) = (poly[i], poly[(i + 1) % n]);
-            let (lo, hi) = if p.y <= q.y { (p, q) } else { (q, p) };
-            let slope = if hi.y > lo.y { (hi.x - lo.x) / (hi.y - lo.y) } else { 0.0 };
-            edges[i] = (lo.y, hi.y, lo.x, hi.x, slope);
-            ymin = ymin.min(lo.y);
-            ymax = ymax.max(hi.y);
+        for e in edges {
+            ymin = ymin.min(e.y0);
+            ymax = ymax.max(e.y1);
         }
         let oy = self.origin.y;
-        let iy0 = self.coord(ymin - eps, oy).max(0);
-        let iy1 = self.coord(ymax + eps, oy).min(self.ny as i64 - 1);
+        let iy0 = self.coord_by(ymin - eps, oy, inv).max(0);
+        let iy1 = self.coord_by(ymax + eps, oy, inv).min(self.ny as i64 - 1);
         for iy in iy0..=iy1 {
             let lo = oy + iy as f64 * self.cell_size - eps;
             let hi = oy + (iy + 1) as f64 * self.cell_size + eps;
             // The x-extent of the polygon within the strip lo ≤ y ≤ hi: the extreme x of a
             // convex set within a strip lies on its boundary, so clip each edge to the strip.
             let (mut xmin, mut xmax) = (f64::INFINITY, f64::NEG_INFINITY);
-            for &(y0, y1, x0, x1, slope) in &edges[..n] {
+            for &Edge { y0, y1, x0, x1, slope } in edges {
                 if y1 < lo || y0 > hi {
                     continue;
                 }
@@ -311,8 +391,8 @@ impl Grid {
             if xmin > xmax {
                 continue;
             }
-            let ix0 = self.coord(xmin - eps, self.origin.x).max(0);
-            let ix1 = self.coord(xmax + eps, self.origin.x).min(self.nx as i64 - 1);
+            let ix0 = self.coord_by(xmin - eps, self.origin.x, inv).max(0);
+            let ix1 = self.coord_by(xmax + eps, self.origin.x, inv).min(self.nx as i64 - 1);
             if ix0 <= ix1 {
                 row(iy as usize, ix0 as usize, ix1 as usize);
             }
@@ -397,6 +477,26 @@ impl Grid {
             iy = jy;
             t = t_exit;
         }
+    }
+}
+
+/// A polygon edge for the rasterisers: its y range, the x of its lower and upper ends, and dx/dy
+/// (zero for a horizontal edge).
+#[derive(Clone, Copy, Debug, Default)]
+struct Edge {
+    y0: f64,
+    y1: f64,
+    x0: f64,
+    x1: f64,
+    slope: f64,
+}
+
+impl Edge {
+    #[inline(always)]
+    fn new(p: Vec2, q: Vec2) -> Edge {
+        let (lo, hi) = if p.y <= q.y { (p, q) } else { (q, p) };
+        let slope = if hi.y > lo.y { (hi.x - lo.x) / (hi.y - lo.y) } else { 0.0 };
+        Edge { y0: lo.y, y1: hi.y, x0: lo.x, x1: hi.x, slope }
     }
 }
 

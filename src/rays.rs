@@ -119,9 +119,35 @@ impl Bundle {
 
     /// The half-open range of ray indices whose angles lie in `[lo, hi]`.
     pub fn rays_between(&self, lo: f64, hi: f64) -> std::ops::Range<usize> {
-        let a = self.angles.partition_point(|&p| p < lo);
-        let b = self.angles.partition_point(|&p| p <= hi);
+        let a = self.partition(lo, |p| p < lo);
+        let b = self.partition(hi, |p| p <= hi);
         a..b.max(a)
+    }
+
+    /// The first index whose angle fails `below` (`angles.partition_point(below)`), where `below`
+    /// holds for the angles before `phi` (in the angles' order) and fails after it. The
+    /// ray set's formula guesses the index and neighbouring angles confirm it, so the answer
+    /// costs a load or two instead of a binary search's chain of dependent loads; the search
+    /// remains the fallback when the guess is off.
+    #[inline]
+    fn partition(&self, phi: f64, below: impl Fn(f64) -> bool) -> usize {
+        let r = self.angles.len();
+        // Ray i has φᵢ = −π/2 + (i + ½)·π/R (angle set) or sin φᵢ = −1 + (2i + 1)/R (sine set):
+        // the first ray at or after φ is about ⌈(φ + π/2)·R/π − ½⌉, resp. ⌈(sin φ + 1)·R/2 − ½⌉.
+        let x = match self.set {
+            RaySet::Angle => (phi + PI / 2.0) * (r as f64 / PI) - 0.5,
+            RaySet::Sine => (phi.clamp(-PI / 2.0, PI / 2.0).sin() + 1.0) * (r as f64 / 2.0) - 0.5,
+        };
+        // ⌈x⌉ clamped into [0, R] (NaN gives 0; any guess is checked below).
+        let x = x.clamp(-1.0, r as f64);
+        let t = x as i64;
+        let g = (t + ((t as f64) < x) as i64).max(0) as usize;
+        let ok_before = g == 0 || below(self.angles[g - 1]);
+        let ok_at = g == r || !below(self.angles[g]);
+        if ok_before && ok_at {
+            return g;
+        }
+        self.angles.partition_point(|&p| below(p))
     }
 }
 

@@ -95,7 +95,7 @@ pub trait HitTest {
 pub struct FloatHits;
 
 impl HitTest for FloatHits {
-    #[inline]
+    #[inline(always)]
     fn hit(&self, bundle: &Bundle, i: usize, _p: u32, seg: &Segment) -> Option<f64> {
         hit_front(&bundle.rays[i], seg)
     }
@@ -130,15 +130,14 @@ pub fn trace_with<H: HitTest>(
             let (h, c) = conventional::trace(scene, bundle, hits);
             (h, c, ShellStats::default())
         }
-        Method::Stochastic => {
-            shelling::trace(scene, bundle, params, shelling::Tracking::Stochastic, hits)
-        }
+        Method::Stochastic => shelling::trace(scene, bundle, params, shelling::Tracking::Stochastic, hits),
         Method::Deterministic => {
             shelling::trace(scene, bundle, params, shelling::Tracking::Deterministic, hits)
         }
     };
-    counters.actual_intersections = hits.iter().filter(|h| h.is_some()).count() as u64;
-    counters.adlc_true = adlc(&hits);
+    let (hitting, adlc_true) = hit_summary(&hits);
+    counters.actual_intersections = hitting as u64;
+    counters.adlc_true = adlc_true;
     if matches!(method, Method::Brute | Method::Conventional) {
         // These techniques track nothing: their estimate is the true value.
         counters.adlc_estimated = counters.adlc_true;
@@ -149,14 +148,43 @@ pub fn trace_with<H: HitTest>(
 /// The average degree of local coherence (Def 2.10) of a set of nearest hits: rays that hit
 /// something, over the number of distinct patches they hit. Zero when nothing is hit.
 pub fn adlc(hits: &[Option<Hit>]) -> f64 {
-    let mut ids: Vec<u32> = hits.iter().flatten().map(|h| h.segment).collect();
-    if ids.is_empty() {
-        return 0.0;
+    hit_summary(hits).1
+}
+
+/// The number of rays that hit something, and the [`adlc`] of `hits`.
+fn hit_summary(hits: &[Option<Hit>]) -> (usize, f64) {
+    // Branch-free passes (which rays hit is data, not a pattern a predictor learns).
+    let (mut total, mut max) = (0usize, 0u32);
+    for h in hits {
+        total += h.is_some() as usize;
+        max = max.max(h.map_or(0, |h| h.segment));
     }
-    let total = ids.len() as f64;
-    ids.sort_unstable();
-    ids.dedup();
-    total / ids.len() as f64
+    if total == 0 {
+        return (0, 0.0);
+    }
+    // Distinct patches: a bit set over the patch indices when it is small against the hits
+    // (a miss marks the spare bit `max + 1`, discounted after), else sort and count.
+    let distinct = if (max as usize) < 64 * 64 + 64 * hits.len() {
+        let mut seen = vec![0u64; (max as usize + 1) / 64 + 1];
+        let (mut n, mut last) = (0usize, usize::MAX);
+        for h in hits {
+            let id = h.map_or(max as usize + 1, |h| h.segment as usize);
+            // Neighbouring rays mostly hit the same patch: skip the set's read-modify-write.
+            if id != last {
+                let (w, b) = (id / 64, 1u64 << (id % 64));
+                n += (seen[w] & b == 0) as usize;
+                seen[w] |= b;
+                last = id;
+            }
+        }
+        n - (total < hits.len()) as usize
+    } else {
+        let mut ids: Vec<u32> = hits.iter().flatten().map(|h| h.segment).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        ids.len()
+    };
+    (total, total as f64 / distinct as f64)
 }
 
 /// The outcome of screening one patch for the current source.
@@ -203,6 +231,35 @@ pub(crate) fn screen(bundle: &Bundle, p: u32, seg: &Segment) -> Screen {
     }
 }
 
+/// What every load of a patch reads of its per-source information ([`PatchInfo`]), in 16
+/// bytes, four patches to a cache line: the tick of the source it was computed for, the ray
+/// range, and whether the patch passes the screener (the top bit of `end`; ray indices stay
+/// below 2³¹).
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(16))]
+pub(crate) struct PatchHot {
+    pub stamp: u64,
+    pub start: u32,
+    pub end: u32,
+}
+
+impl PatchHot {
+    const EMPTY: PatchHot = PatchHot { stamp: 0, start: 0, end: 0 };
+    const PASS: u32 = 1 << 31;
+}
+
+/// The rest of a patch's [`PatchInfo`], which only the shell's relevant patches are asked for.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PatchCold {
+    pub r_min: f64,
+    pub flatness: f64,
+    pub angle_lo: f64,
+}
+
+impl PatchCold {
+    const EMPTY: PatchCold = PatchCold { r_min: 0.0, flatness: 0.0, angle_lo: 0.0 };
+}
+
 /// Reusable per-thread working memory of the grid tracers, so that tracing a bundle allocates and
 /// clears nothing proportional to the scene. Every array holds stamps: an entry is valid only if
 /// its stamp equals the tick it is compared with, and ticks (64-bit) are never reused.
@@ -210,8 +267,8 @@ pub(crate) fn screen(bundle: &Bundle, p: u32, seg: &Segment) -> Screen {
 pub(crate) struct Scratch {
     /// The last tick handed out.
     pub tick: u64,
-    pub info: Vec<PatchInfo>,
-    pub info_stamp: Vec<u64>,
+    pub hot: Vec<PatchHot>,
+    pub cold: Vec<PatchCold>,
     pub screen: Vec<Screen>,
     pub screen_stamp: Vec<u64>,
     pub patch_stamp: Vec<u64>,
@@ -223,9 +280,9 @@ impl Scratch {
     /// Grows the arrays to the scene's size.
     fn fit(&mut self, scene: SceneView<'_>) {
         let n = scene.segments.len();
-        if self.info.len() < n {
-            self.info.resize(n, PatchInfo::EMPTY);
-            self.info_stamp.resize(n, 0);
+        if self.hot.len() < n {
+            self.hot.resize(n, PatchHot::EMPTY);
+            self.cold.resize(n, PatchCold::EMPTY);
             self.screen.resize(n, Screen::Pass);
             self.screen_stamp.resize(n, 0);
             self.patch_stamp.resize(n, 0);
@@ -252,7 +309,8 @@ pub(crate) fn with_scratch<R>(scene: SceneView<'_>, f: impl FnOnce(&mut Scratch)
     })
 }
 
-/// Per-source cache of [`PatchInfo`], filled lazily as patches are loaded.
+/// Per-source cache of [`PatchInfo`], filled lazily as patches are loaded, and the per-sector
+/// record of which patches are loaded.
 pub(crate) struct PatchCache<'a> {
     segments: &'a [Segment],
     bundle: &'a Bundle,
@@ -260,8 +318,11 @@ pub(crate) struct PatchCache<'a> {
     scale: f64,
     /// Distance margin (the grid's registration margin).
     margin: f64,
-    info: &'a mut [PatchInfo],
-    stamp: &'a mut [u64],
+    hot: &'a mut [PatchHot],
+    cold: &'a mut [PatchCold],
+    /// Per patch, the tick of the sector that last loaded it (a dense array of its own: most
+    /// visits of a patch find it loaded already).
+    loaded: &'a mut [u64],
     /// The tick that marks this source's entries.
     tick: u64,
 }
@@ -270,8 +331,9 @@ impl<'a> PatchCache<'a> {
     pub fn new(
         scene: SceneView<'a>,
         bundle: &'a Bundle,
-        info: &'a mut [PatchInfo],
-        stamp: &'a mut [u64],
+        hot: &'a mut [PatchHot],
+        cold: &'a mut [PatchCold],
+        loaded: &'a mut [u64],
         tick: u64,
     ) -> Self {
         let (lo, hi) = scene.grid.extent();
@@ -282,40 +344,63 @@ impl<'a> PatchCache<'a> {
             bundle,
             scale,
             margin: 4.0 * scene.grid.eps,
-            info,
-            stamp,
+            hot,
+            cold,
+            loaded,
             tick,
         }
     }
 
-    /// Full information about patch `p`, computed on first use.
-    pub fn get(&mut self, p: u32) -> &PatchInfo {
-        let i = p as usize;
-        if self.stamp[i] != self.tick {
-            self.info[i] = self.compute(p);
-            self.stamp[i] = self.tick;
-        }
-        &self.info[i]
-    }
-
-    /// Information about a patch already loaded for this source.
+    /// Loads patch `p` in the sector whose tick is `sector`: `None` when the sector has loaded
+    /// it already, else whether it passes the screener and the rays of its span (its
+    /// information is computed on the source's first load).
     #[inline]
-    pub fn known(&self, p: u32) -> &PatchInfo {
-        debug_assert_eq!(self.stamp[p as usize], self.tick, "patch information is computed on load");
-        &self.info[p as usize]
+    pub fn load(&mut self, p: u32, sector: u64) -> Option<(bool, Range<u32>)> {
+        let i = p as usize;
+        if self.loaded[i] == sector {
+            return None;
+        }
+        self.loaded[i] = sector;
+        if self.hot[i].stamp != self.tick {
+            let info = self.compute(p);
+            debug_assert!(info.rays.end < PatchHot::PASS, "ray indices stay below 2^31");
+            let pass = if info.screen == Screen::Pass { PatchHot::PASS } else { 0 };
+            self.hot[i] = PatchHot { stamp: self.tick, start: info.rays.start, end: info.rays.end | pass };
+            self.cold[i] = PatchCold { r_min: info.r_min, flatness: info.flatness, angle_lo: info.angle_lo };
+        }
+        let h = self.hot[i];
+        Some((h.end & PatchHot::PASS != 0, h.start..h.end & !PatchHot::PASS))
     }
 
+    /// The rays of the span of a patch already loaded for this source.
+    #[inline]
+    pub fn rays(&self, p: u32) -> Range<u32> {
+        let h = self.hot[p as usize];
+        debug_assert_eq!(h.stamp, self.tick, "patch information is computed on load");
+        h.start..h.end & !PatchHot::PASS
+    }
+
+    /// The rest of the information about a patch already loaded for this source.
+    #[inline]
+    pub fn known(&self, p: u32) -> &PatchCold {
+        debug_assert_eq!(self.hot[p as usize].stamp, self.tick, "patch information is computed on load");
+        &self.cold[p as usize]
+    }
+
+    #[cold]
+    #[inline(never)]
     fn compute(&self, p: u32) -> PatchInfo {
         let seg = &self.segments[p as usize];
         let screen = screen(self.bundle, p, seg);
+        if screen != Screen::Pass {
+            // Only relevant patches (which pass) are ever asked for more.
+            return PatchInfo { screen, ..PatchInfo::EMPTY };
+        }
         let o = self.bundle.source.origin;
         let ra = (seg.a - o).length();
         let rb = (seg.b - o).length();
         let r_min = (seg.distance_to(o) - self.margin).max(0.0);
         let flatness = (ra - rb).abs();
-        if screen != Screen::Pass {
-            return PatchInfo { screen, rays: 0..0, r_min, flatness, angle_lo: 0.0 };
-        }
         let (lo, hi) = self.span(seg);
         let r = self.bundle.rays_between(lo, hi);
         PatchInfo { screen, rays: r.start as u32..r.end as u32, r_min, flatness, angle_lo: lo }

@@ -28,10 +28,37 @@
 //! Both size the next sector from the ADLC of the first shell (with relevant patches) of the
 //! previous one: `width = clamp(round(α·ADLC), w_min, w_max)`; S uses its estimate, D the derived
 //! value. INTERPRETATION.md gives the reasons for each of these readings.
+//!
+//! # Implementation
+//!
+//! The counters and statistics are the paper's figures, so everything below only changes how
+//! fast the same shells, cells, loads and tests are found; each step says why its answer is the
+//! one the plain reading gives.
+//!
+//! * **Sector state as bit sets** ([`SectorRays`]): the remaining rays and the rays holding a hit
+//!   are bit sets over the sector (one word for sectors of up to 64 rays). A shell's boundary
+//!   rays, the remaining rays inside a patch's span and the rays to retire come from bit
+//!   operations, not from passes over the sector.
+//! * **Shells beyond the grid**: per sector, [`cone_reach`] bounds the distance to any point of
+//!   the (grown) grid inside the sector's cone. Once a shell's trapezoid keeps farther than that
+//!   from the source, it and every later shell of the sector meet no cell, so they are only
+//!   counted and retire rays, without rasterising (most shells of rays that hit nothing).
+//! * **Cells**: the trapezoid is rasterised by [`Grid::raster_convex_n`] (the same cells as
+//!   `raster_convex`), and each cell is read from the grid's one-entry scan table
+//!   ([`Grid::scan_cell`]). Within one piece a cell is met once, so cells are stamped only in
+//!   shells of several pieces; the few macro-regions a shell meets are kept in a short list.
+//! * **Patches**: [`PatchCache::load`] checks a dense per-sector stamp first; what a load needs
+//!   of a patch's per-source information (computed on its first load) takes 16 bytes, the rest
+//!   (read for relevant patches only) lies apart.
+//!
+//! [`Grid::raster_convex_n`]: crate::grid::Grid::raster_convex_n
+//! [`Grid::scan_cell`]: crate::grid::Grid::scan_cell
+//! [`PatchCache::load`]: super::PatchCache::load
 
-use super::{offer, with_scratch, HitTest, PatchCache, SceneView, Scratch, Screen};
+use super::{offer, with_scratch, HitTest, PatchCache, SceneView, Scratch};
 use crate::counters::Counters;
-use crate::geom::{Hit, Vec2};
+use crate::geom::{cross, Hit, Segment, Vec2};
+use crate::grid::CellScan;
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
 
@@ -148,22 +175,222 @@ pub(super) fn trace<H: HitTest>(
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
     with_scratch(scene, |scratch| {
         let Scratch {
-            tick,
-            info,
-            info_stamp,
-            patch_stamp: loaded,
-            cell_stamp: cell_seen,
-            region_stamp: region_seen,
-            ..
+            tick, hot, cold, patch_stamp, cell_stamp: cell_seen, region_stamp: region_seen, ..
         } = scratch;
         *tick += 1;
-        let cache = PatchCache::new(scene, bundle, info, info_stamp, *tick);
-        trace_bundle(scene, bundle, params, tracking, test, cache, tick, loaded, cell_seen, region_seen)
+        let cache = PatchCache::new(scene, bundle, hot, cold, patch_stamp, *tick);
+        trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
     })
 }
 
-/// The body of [`trace`], on this thread's scratch memory: `loaded`, `cell_seen` and
-/// `region_seen` hold stamps compared against fresh ticks per sector and per shell.
+/// The rays of the current sector `[s, e)` as bit sets over sector-local indices (bit `i % 64`
+/// of word `i / 64` stands for ray `s + i`): the rays still in the sector's bundle (`alive`),
+/// and those holding a hit (`hit`). Sectors are narrow (a processing element's ray memory), so
+/// this is usually one word: finding a shell's boundary rays, visiting the remaining rays of a
+/// patch's span and retiring rays cost a few bit operations instead of a pass over the sector.
+struct SectorRays {
+    s: usize,
+    e: usize,
+    alive: Vec<u64>,
+    hit: Vec<u64>,
+    /// Number of set bits of `alive`.
+    remaining: usize,
+}
+
+impl SectorRays {
+    fn new() -> Self {
+        SectorRays { s: 0, e: 0, alive: Vec::new(), hit: Vec::new(), remaining: 0 }
+    }
+
+    /// Starts sector `[s, e)` with every ray alive and none hit.
+    fn start(&mut self, s: usize, e: usize) {
+        let n = e - s;
+        let words = n.div_ceil(64);
+        self.alive.clear();
+        self.alive.resize(words, !0);
+        if !n.is_multiple_of(64) {
+            self.alive[words - 1] = (1u64 << (n % 64)) - 1;
+        }
+        self.hit.clear();
+        self.hit.resize(words, 0);
+        (self.s, self.e, self.remaining) = (s, e, n);
+    }
+
+    /// The first remaining ray at or after `from`.
+    #[inline]
+    fn first_alive(&self, from: usize) -> Option<usize> {
+        if from >= self.e {
+            return None;
+        }
+        let i = from - self.s;
+        let mut w = i / 64;
+        let mut bits = self.alive[w] & (!0u64 << (i % 64));
+        loop {
+            if bits != 0 {
+                return Some(self.s + w * 64 + bits.trailing_zeros() as usize);
+            }
+            w += 1;
+            if w == self.alive.len() {
+                return None;
+            }
+            bits = self.alive[w];
+        }
+    }
+
+    /// The last remaining ray at or before `upto`, given that `from <= upto` is remaining.
+    #[inline]
+    fn last_alive(&self, from: usize, upto: usize) -> usize {
+        let i = upto - self.s;
+        let mut w = i / 64;
+        let mut bits = self.alive[w] & (!0u64 >> (63 - i % 64));
+        while bits == 0 {
+            debug_assert!(w > (from - self.s) / 64, "ray {from} is remaining");
+            w -= 1;
+            bits = self.alive[w];
+        }
+        self.s + w * 64 + 63 - bits.leading_zeros() as usize
+    }
+
+    /// Tests every remaining ray in `[lo, hi)` (within the sector), in order, against patch `p`,
+    /// offering each hit to the ray's slot in `best`.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn test_span<H: HitTest>(
+        &mut self,
+        test: &H,
+        bundle: &Bundle,
+        seg: &Segment,
+        p: u32,
+        lo: usize,
+        hi: usize,
+        best: &mut [Option<Hit>],
+        c: &mut Counters,
+    ) {
+        if lo >= hi {
+            return;
+        }
+        let (a, b) = (lo - self.s, hi - self.s);
+        for w in a / 64..b.div_ceil(64) {
+            let mut word = self.alive[w];
+            if w == a / 64 {
+                word &= !0u64 << (a % 64);
+            }
+            if (w + 1) * 64 > b {
+                word &= !0u64 >> (64 - b % 64);
+            }
+            c.intersection_computations += word.count_ones() as u64;
+            while word != 0 {
+                let bit = word.trailing_zeros();
+                word &= word - 1;
+                let i = self.s + w * 64 + bit as usize;
+                if let Some(t) = test.hit(bundle, i, p, seg) {
+                    offer(&mut best[i], Hit { t, segment: p });
+                    self.hit[w] |= 1u64 << bit;
+                }
+            }
+        }
+    }
+
+    /// Retires the remaining rays whose nearest hit lies before `limit`; returns how many left.
+    fn retire(&mut self, best: &[Option<Hit>], limit: f64) -> usize {
+        let mut n = 0;
+        for w in 0..self.alive.len() {
+            let mut cand = self.alive[w] & self.hit[w];
+            while cand != 0 {
+                let b = cand.trailing_zeros() as usize;
+                cand &= cand - 1;
+                if matches!(best[self.s + w * 64 + b], Some(h) if h.t < limit) {
+                    self.alive[w] &= !(1u64 << b);
+                    n += 1;
+                }
+            }
+        }
+        self.remaining -= n;
+        n
+    }
+}
+
+/// An upper bound of the distance from `o` to any point of the box `[lo, hi]` seen within the
+/// cone of directions from `ds` counter-clockwise to `de` (an angle below π). The part of the
+/// box inside the cone is a convex polygon whose farthest vertex from `o` is a corner of the box
+/// inside the cone or the exit point of a boundary ray; corners are admitted with an angular
+/// tolerance, so the bound errs only on the large side. `None` when no ray of the cone meets
+/// the box.
+fn cone_reach(o: Vec2, ds: Vec2, de: Vec2, lo: Vec2, hi: Vec2) -> Option<f64> {
+    let mut reach: Option<f64> = None;
+    for c in [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)] {
+        let v = c - o;
+        let tol = 1e-9 * v.length();
+        if cross(ds, v) >= -tol && cross(v, de) >= -tol {
+            reach = Some(reach.unwrap_or(0.0).max(v.length()));
+        }
+    }
+    for d in [ds, de] {
+        // Slab test: the ray's parameter range inside the box.
+        let (mut t0, mut t1) = (0.0f64, f64::INFINITY);
+        for axis in 0..2 {
+            let (p, v, l, h) = (o[axis], d[axis], lo[axis], hi[axis]);
+            if v == 0.0 {
+                if p < l || p > h {
+                    t1 = f64::NEG_INFINITY;
+                }
+            } else {
+                let (a, b) = ((l - p) / v, (h - p) / v);
+                t0 = t0.max(a.min(b));
+                t1 = t1.min(a.max(b));
+            }
+        }
+        if t0 <= t1 {
+            reach = Some(reach.unwrap_or(0.0).max(t1));
+        }
+    }
+    reach
+}
+
+/// The macro-regions a shell has met. A shell meets a few, so they are kept in a short list
+/// (no scattered stamps to touch); past its capacity the set moves into per-region stamps.
+struct RegionSet {
+    list: [u32; RegionSet::CAP],
+    /// Entries of `list` in use; `CAP + 1` once the set lives in the stamps.
+    n: usize,
+}
+
+impl RegionSet {
+    const CAP: usize = 16;
+
+    fn new() -> Self {
+        RegionSet { list: [0; Self::CAP], n: 0 }
+    }
+
+    fn clear(&mut self) {
+        self.n = 0;
+    }
+
+    /// Adds region `r`; `true` when it is new. `stamps` and `tick` hold the overflow.
+    #[inline]
+    fn insert(&mut self, r: u32, stamps: &mut [u64], tick: u64) -> bool {
+        if self.n <= Self::CAP {
+            if self.list[..self.n].contains(&r) {
+                return false;
+            }
+            if self.n < Self::CAP {
+                self.list[self.n] = r;
+                self.n += 1;
+                return true;
+            }
+            for &q in &self.list {
+                stamps[q as usize] = tick;
+            }
+            self.n = Self::CAP + 1;
+        }
+        let new = stamps[r as usize] != tick;
+        stamps[r as usize] = tick;
+        new
+    }
+}
+
+/// The body of [`trace`], on this thread's scratch memory: `cell_seen` and `region_seen` hold
+/// stamps compared against a fresh tick per shell, the cache's load stamps one per sector.
 #[allow(clippy::too_many_arguments)]
 fn trace_bundle<H: HitTest>(
     scene: SceneView<'_>,
@@ -173,7 +400,6 @@ fn trace_bundle<H: HitTest>(
     test: &H,
     mut cache: PatchCache<'_>,
     tick: &mut u64,
-    loaded: &mut [u64],
     cell_seen: &mut [u64],
     region_seen: &mut [u64],
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
@@ -182,8 +408,9 @@ fn trace_bundle<H: HitTest>(
     let o = bundle.source.origin;
     let depth = params.shell_depth.unwrap_or(4.0 * grid.cell_size);
     let margin = 4.0 * grid.eps;
+    let (lo_box, hi_box) = grid.extent();
     let far = {
-        let (lo, hi) = grid.extent();
+        let (lo, hi) = (lo_box, hi_box);
         [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
             .iter()
             .fold(0.0f64, |m, c| m.max((*c - o).length()))
@@ -191,86 +418,122 @@ fn trace_bundle<H: HitTest>(
     let mut c = Counters::default();
     let mut stats = ShellStats::default();
     let mut best: Vec<Option<Hit>> = vec![None; r];
-    let mut alive = vec![false; r];
+    let mut rays = SectorRays::new();
     let mut est_sum = 0.0;
     let mut est_weight = 0.0;
 
     let mut prev: Vec<Option<ShellEstimate>> = Vec::new();
+    let mut cur: Vec<Option<ShellEstimate>> = Vec::new();
     let mut width = params.first_sector;
     let mut s = 0usize;
     let mut relevant: Vec<u32> = Vec::new();
+    let mut regions = RegionSet::new();
 
     while s < r {
         let e = (s + width.clamp(params.min_sector, params.max_sector)).min(r);
         stats.sectors += 1;
         *tick += 1;
         let sector = *tick;
-        alive[s..e].iter_mut().for_each(|a| *a = true);
-        let mut remaining = e - s;
-        let mut cur: Vec<Option<ShellEstimate>> = Vec::new();
+        rays.start(s, e);
+        // Whether the whole sector lies within π/4, so every shell is rasterised in one piece.
+        // (Rounded differences are monotone, so no narrower pair of rays can exceed π/4 then.)
+        let one_piece = bundle.angles[e - 1] - bundle.angles[s] <= FRAC_PI_4;
+        // Shells of this sector that lie wholly beyond the grid meet no cell, and once one does
+        // all later ones do: `reach` bounds the distance to any point of the grid (grown by the
+        // rasteriser's tolerance and more) within the sector's cone, and a shell's trapezoid
+        // keeps at least `inner·cos_half ≥ inner·cos_lb` from the source. Such shells skip
+        // rasterising; their bookkeeping is the same as for any shell without patches.
+        let (ds, de) = (bundle.rays[s].dir, bundle.rays[e - 1].dir);
+        let cos_lb = if one_piece {
+            (0.5 * (1.0 + ds.dot(de))).max(0.0).sqrt()
+        } else {
+            (std::f64::consts::PI / 8.0).cos()
+        } * (1.0 - 1e-9);
+        let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
+        let reach = cone_reach(o, ds, de, lo_box - Vec2::splat(grow), hi_box + Vec2::splat(grow))
+            .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + grow);
+        cur.clear();
         let mut first_adlc: Option<f64> = None;
         let mut r1 = 0.0f64;
         let mut j = 0usize;
-        while remaining > 0 && r1 < far {
+        while rays.remaining > 0 && r1 < far {
+            if (r1 - margin).max(0.0) * cos_lb > reach {
+                // This shell and all later ones lie beyond the grid: they meet no cell and no
+                // patch, so each only retires rays (those holding a hit do so at once, as every
+                // hit lies within `reach`) and is recorded as a shell without patches.
+                loop {
+                    let r2 = r1 + depth;
+                    stats.shells += 1;
+                    stats.rays_entering += rays.remaining as u64;
+                    rays.retire(&best, r2 - margin);
+                    stats.rays_leaving += rays.remaining as u64;
+                    cur.push(None);
+                    r1 = r2;
+                    if !(rays.remaining > 0 && r1 < far) {
+                        break;
+                    }
+                }
+                break;
+            }
             let r2 = r1 + depth;
             *tick += 1;
             let shell_gen = *tick;
             stats.shells += 1;
-            stats.rays_entering += remaining as u64;
+            stats.rays_entering += rays.remaining as u64;
 
             // Find the shell's cells and load its new patches (screening as they arrive).
             relevant.clear();
+            regions.clear();
             let mut k = s;
-            while k < e {
-                if !alive[k] {
-                    k += 1;
-                    continue;
-                }
+            while let Some(k0) = rays.first_alive(k) {
                 // The shell spans the remaining rays' angles (Def 2.6: two boundary angles), in
                 // pieces no wider than π/4, each from a remaining ray to the last one within π/4.
-                let k0 = k;
-                let mut last = k;
-                while k + 1 < e && bundle.angles[k + 1] - bundle.angles[k0] <= FRAC_PI_4 {
-                    k += 1;
-                    if alive[k] {
-                        last = k;
+                let mut m = k0;
+                if one_piece {
+                    m = e - 1;
+                } else {
+                    while m + 1 < e && bundle.angles[m + 1] - bundle.angles[k0] <= FRAC_PI_4 {
+                        m += 1;
                     }
                 }
+                let last = rays.last_alive(k0, m);
+                k = m + 1;
                 // The trapezoid between the piece's boundary rays, from r₁ to beyond r₂: its
                 // outer edge is tangent to the arc of radius r₂ at the piece's middle angle.
                 let (da, db) = (bundle.rays[k0].dir, bundle.rays[last].dir);
-                k += 1;
                 let cos_half = (0.5 * (1.0 + da.dot(db))).max(0.0).sqrt();
                 let inner = (r1 - margin).max(0.0);
                 let outer = (r2 + margin) / cos_half;
                 let poly = [o + da * inner, o + da * outer, o + db * outer, o + db * inner];
-                grid.raster_convex(&poly, |iy, x0, x1| {
+                grid.raster_convex_n(&poly, |iy, x0, x1| {
                     let mut ix = x0;
                     while ix <= x1 {
                         let cell = iy * grid.nx + ix;
-                        if let Some(reg) = grid.region_of(cell) {
-                            if region_seen[reg as usize] != shell_gen {
-                                region_seen[reg as usize] = shell_gen;
-                                c.cells_traversed += 1;
-                            }
-                            ix = grid.region(reg).x1 as usize + 1;
-                            continue;
-                        }
-                        ix += 1;
-                        if cell_seen[cell] == shell_gen {
-                            continue;
-                        }
-                        cell_seen[cell] = shell_gen;
-                        c.cells_traversed += 1;
-                        for &p in grid.cell_items(cell) {
-                            if loaded[p as usize] == sector {
+                        let items = match grid.scan_cell(cell) {
+                            CellScan::Empty { region, x1 } => {
+                                if regions.insert(region, region_seen, shell_gen) {
+                                    c.cells_traversed += 1;
+                                }
+                                ix = x1 as usize + 1;
                                 continue;
                             }
-                            loaded[p as usize] = sector;
+                            CellScan::Items(items) => items,
+                        };
+                        ix += 1;
+                        // A piece's rows are disjoint and a row meets each cell once, so only a
+                        // shell of several pieces can meet a cell twice.
+                        if !one_piece {
+                            if cell_seen[cell] == shell_gen {
+                                continue;
+                            }
+                            cell_seen[cell] = shell_gen;
+                        }
+                        c.cells_traversed += 1;
+                        for &p in items {
+                            let Some((pass, rays)) = cache.load(p, sector) else { continue };
                             c.patches_read_before_screening += 1;
-                            let info = cache.get(p);
-                            let in_sector = (info.rays.start as usize) < e && (info.rays.end as usize) > s;
-                            if info.screen == Screen::Pass && in_sector {
+                            let in_sector = (rays.start as usize) < e && (rays.end as usize) > s;
+                            if pass && in_sector {
                                 c.patches_read_after_screening += 1;
                                 relevant.push(p);
                             }
@@ -284,9 +547,8 @@ fn trace_bundle<H: HitTest>(
             let mut dlc_sum = 0usize;
             let mut flat_sum = 0.0;
             for &p in &relevant {
-                let info = cache.known(p);
-                dlc_sum += info.rays.len();
-                flat_sum += info.flatness;
+                dlc_sum += cache.rays(p).len();
+                flat_sum += cache.known(p).flatness;
             }
             let here = (!relevant.is_empty()).then(|| ShellEstimate {
                 adlc: dlc_sum as f64 / relevant.len() as f64,
@@ -307,35 +569,29 @@ fn trace_bundle<H: HitTest>(
                     let bins = ((depth / step).ceil() as usize).max(1);
                     // Patches in order of their nearest point; each joins the radial subshell of
                     // its r_min (the last one for patches reaching beyond the shell).
-                    relevant.sort_by(|&a, &b| {
+                    relevant.sort_unstable_by(|&a, &b| {
                         cache.known(a).r_min.total_cmp(&cache.known(b).r_min).then(a.cmp(&b))
                     });
                     let mut bin = 0usize;
                     for &p in &relevant {
-                        let info = cache.known(p);
-                        let pb = (((info.r_min - r1) / step).floor().max(0.0) as usize).min(bins - 1);
+                        let pb =
+                            (((cache.known(p).r_min - r1) / step).floor().max(0.0) as usize).min(bins - 1);
                         while bin < pb {
                             // Close radial subshell `bin`: rays hit before its end are done.
                             bin += 1;
                             let end = r1 + bin as f64 * step;
-                            remaining -= retire(&mut alive[s..e], &best[s..e], end - margin);
+                            rays.retire(&best, end - margin);
                         }
-                        let lo = (info.rays.start as usize).max(s);
-                        let hi = (info.rays.end as usize).min(e);
+                        let span = cache.rays(p);
+                        let lo = (span.start as usize).max(s);
+                        let hi = (span.end as usize).min(e);
                         if lo >= hi {
                             continue;
                         }
                         let g0 = s + (lo - s) / group * group;
                         let g1 = (s + ((hi - 1 - s) / group + 1) * group).min(e);
                         let seg = &scene.segments[p as usize];
-                        for i in g0..g1 {
-                            if alive[i] {
-                                c.intersection_computations += 1;
-                                if let Some(t) = test.hit(bundle, i, p, seg) {
-                                    offer(&mut best[i], Hit { t, segment: p });
-                                }
-                            }
-                        }
+                        rays.test_span(test, bundle, seg, p, g0, g1, &mut best, &mut c);
                     }
                 }
                 Tracking::Deterministic => {
@@ -343,29 +599,22 @@ fn trace_bundle<H: HitTest>(
                         est_sum += h.adlc * relevant.len() as f64;
                         est_weight += relevant.len() as f64;
                     }
-                    relevant.sort_by(|&a, &b| {
+                    relevant.sort_unstable_by(|&a, &b| {
                         cache.known(a).angle_lo.total_cmp(&cache.known(b).angle_lo).then(a.cmp(&b))
                     });
                     for &p in &relevant {
-                        let info = cache.known(p);
-                        let lo = (info.rays.start as usize).max(s);
-                        let hi = (info.rays.end as usize).min(e);
+                        let span = cache.rays(p);
+                        let lo = (span.start as usize).max(s);
+                        let hi = (span.end as usize).min(e);
                         let seg = &scene.segments[p as usize];
-                        for i in lo..hi.max(lo) {
-                            if alive[i] {
-                                c.intersection_computations += 1;
-                                if let Some(t) = test.hit(bundle, i, p, seg) {
-                                    offer(&mut best[i], Hit { t, segment: p });
-                                }
-                            }
-                        }
+                        rays.test_span(test, bundle, seg, p, lo, hi, &mut best, &mut c);
                     }
                 }
             }
 
             // End of shell: rays whose nearest hit lies before r₂ are done.
-            remaining -= retire(&mut alive[s..e], &best[s..e], r2 - margin);
-            stats.rays_leaving += remaining as u64;
+            rays.retire(&best, r2 - margin);
+            stats.rays_leaving += rays.remaining as u64;
             if here.is_some() && first_adlc.is_none() {
                 first_adlc = here.map(|h| h.adlc);
             }
@@ -375,25 +624,12 @@ fn trace_bundle<H: HitTest>(
         }
         // Rays still remaining have left the grid: they hit nothing (or already hold a hit
         // beyond the last shell, which cannot happen as every patch lies inside the grid).
-        alive[s..e].iter_mut().for_each(|a| *a = false);
         if let Some(a) = first_adlc {
             width = (params.sector_per_adlc * a).round() as usize;
         }
-        prev = cur;
+        std::mem::swap(&mut prev, &mut cur);
         s = e;
     }
     c.adlc_estimated = if est_weight > 0.0 { est_sum / est_weight } else { 0.0 };
     (best, c, stats)
-}
-
-/// Retires the rays whose nearest hit lies before `limit`; returns how many left the bundle.
-fn retire(alive: &mut [bool], best: &[Option<Hit>], limit: f64) -> usize {
-    let mut n = 0;
-    for (a, b) in alive.iter_mut().zip(best) {
-        if *a && matches!(b, Some(h) if h.t < limit) {
-            *a = false;
-            n += 1;
-        }
-    }
-    n
 }
