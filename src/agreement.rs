@@ -15,10 +15,10 @@
 //! Anything else is a bug, and [`Comparison::unexplained`] lists it.
 
 use crate::arith::Arith;
-use crate::figures::{scene_seed, source_patches};
+use crate::figures::{scene_seed, source_patches, MAX_SEEDS};
 use crate::geom::{cross, Hit, Ray, Segment, Vec2};
 use crate::grid::GridParams;
-use crate::rays::{Bundle, RaySet};
+use crate::rays::{Bundle, RaySet, MAX_RAYS};
 use crate::run::{Prepared, RunError};
 use crate::scene::{self, SceneError};
 use crate::trace::{Method, ShellParams, TraceResult};
@@ -213,9 +213,31 @@ impl Default for Workload {
     }
 }
 
+impl Workload {
+    /// Checks the workload; the message names the offending option (as the CLI spells it).
+    pub fn validate(&self) -> Result<(), AgreementError> {
+        let bad = |m: String| Err(AgreementError::Invalid(m));
+        if self.seeds == 0 || self.seeds > MAX_SEEDS {
+            return bad(format!("--seeds must be between 1 and {MAX_SEEDS}, got {}", self.seeds));
+        }
+        if self.sources == 0 || self.sources > self.count {
+            return bad(format!(
+                "--sources must be between 1 and {} (the scene's patches), got {}",
+                self.count, self.sources
+            ));
+        }
+        if self.rays == 0 || self.rays > MAX_RAYS {
+            return bad(format!("--rays must be between 1 and {MAX_RAYS}, got {}", self.rays));
+        }
+        Ok(())
+    }
+}
+
 /// What keeps the comparison from running.
 #[derive(Debug, thiserror::Error)]
 pub enum AgreementError {
+    #[error("{0}")]
+    Invalid(String),
     #[error(transparent)]
     Scene(#[from] SceneError),
     #[error(transparent)]
@@ -241,6 +263,7 @@ pub struct Report {
 /// Traces the workload in both arithmetics and compares them ray by ray (in parallel; the rows
 /// do not depend on the number of threads).
 pub fn run(w: &Workload) -> Result<Report, AgreementError> {
+    w.validate()?;
     let params = ShellParams::default();
     let jobs: Vec<(usize, usize)> =
         (0..w.lengths.len()).flat_map(|l| (0..w.seeds).map(move |s| (l, s))).collect();

@@ -283,15 +283,6 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Agreement(a) => {
-            if a.seeds == 0 || a.seeds > shelling::figures::MAX_SEEDS {
-                bail!("--seeds must be between 1 and {}, got {}", shelling::figures::MAX_SEEDS, a.seeds);
-            }
-            if a.sources == 0 || a.sources > 1000 {
-                bail!("--sources must be between 1 and 1000 (the scene's patches), got {}", a.sources);
-            }
-            if a.rays == 0 || a.rays > shelling::rays::MAX_RAYS {
-                bail!("--rays must be between 1 and {}, got {}", shelling::rays::MAX_RAYS, a.rays);
-            }
             let w = shelling::agreement::Workload {
                 seeds: a.seeds,
                 sources: a.sources,

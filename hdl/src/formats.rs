@@ -30,14 +30,10 @@ pub const DIR_BITS: u32 = 18;
 pub const PRODUCT_SHIFT: u32 = 4;
 /// Fraction bits of the distance key: `U = 2^KEY_FRAC / t`.
 pub const KEY_FRAC: u32 = 26;
-/// Width of the inverse-distance vector components (signed).
-pub const W_BITS: u32 = 18;
 /// Largest per-patch exponent `sh`.
 pub const SH_MAX: i32 = 31;
 /// Smallest per-patch exponent `sh` (a left shift of the key, saturating).
 pub const SH_MIN: i32 = -3;
-/// Width of the exponent field (signed).
-pub const SH_BITS: u32 = 6;
 /// Margin of the sector screen, in LSBs of a side value (see `FORMATS.md`).
 pub const SECTOR_MARGIN: i64 = 256;
 /// Width of a patch id.

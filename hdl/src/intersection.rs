@@ -1,4 +1,55 @@
-//! The intersection unit (bit-true model; the RTL block follows in this file).
+//! The intersection unit: a patch, set up once by the screener, is tested against a bundle of
+//! rays streamed past it, one ray-patch test per clock, and every ray keeps its nearest hit in a
+//! ray memory.
+//!
+//! # Ports ([`IntersectionUnit`])
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | rising-edge clock |
+//! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 10, 18, 18 | bundle setup: write ray `dir_addr`'s direction |
+//! | `patch_valid`, `patch_ready` | in, out | 1, 1 | patch stream (valid/ready) |
+//! | `patch_ax`, `patch_ay`, `patch_bx`, `patch_by` | in | 4 × 18 | endpoints relative to the origin |
+//! | `patch_wx`, `patch_wy`, `patch_sh` | in | 18, 18, 6 | inverse-distance vector and its exponent |
+//! | `patch_id`, `patch_first`, `patch_count` | in | 16, 10, 11 | patch id; test rays `first .. first + count` (mod 1024) |
+//! | `res_re`, `res_addr` | in | 1, 10 | readout: read and clear ray `res_addr` (only while not `busy`) |
+//! | `res_hit`, `res_id`, `res_key` | out | 1, 16, 32 | the ray's nearest hit, the cycle after `res_re` |
+//! | `busy` | out | 1 | a test is issuing or may still update the ray memory |
+//! | `tests` | out | 32 | ray-patch tests issued so far (wraps) |
+//!
+//! A patch transfers when `patch_valid && patch_ready` before the rising edge. `patch_ready` is
+//! high while fewer than two rays of the current patch remain, so the next patch is taken while
+//! the current one issues its last ray: back-to-back patches leave no bubble, and a patch with
+//! `patch_count = 0` is consumed in one cycle.
+//!
+//! # Formats
+//!
+//! Directions Q2.16, coordinates Q12.6, `W` 18 bits with exponent `sh` in [−3, 31] (6 bits two's
+//! complement), keys 32 bits unsigned, larger is nearer (`hdl/FORMATS.md`). A hit needs
+//! `cross(d, a) ≤ 0 ≤ cross(d, b)`; its key is `dot(d, W)·2^-sh` clamped into [1, 2³² − 1].
+//! It replaces the ray's hit when its key is larger, or equal with a lower id.
+//!
+//! # Pipeline, latency and throughput
+//!
+//! One test per clock (II = 1) for any mix of bundle lengths; latency 5 clocks from issue to the
+//! ray-memory write:
+//!
+//! * stage 0: the sequencer issues ray `cur` of the current patch (direction memory read);
+//! * stage 1: direction arrives; the six products start in [`Mul18`] DSP leaves (latency 2);
+//! * stage 3: side values `s_a`, `s_b` and `q = dot(d, W)`;
+//! * stage 4: the key (shift by `sh`, saturating); the ray memory is read;
+//! * stage 5: compare with the ray's nearest hit and write back.
+//!
+//! The ray memory (two [`Bram`]s: key, and valid + id) reads before it writes, so a test of the
+//! same ray one clock behind (a one-ray bundle, back to back) would see a stale entry: a
+//! forwarding register holds the last write and replaces the memory's word when the rays match.
+//! Two or more clocks apart, the memory already holds the write.
+//!
+//! # Models
+//!
+//! [`model::test`], [`model::key`] and [`model::replaces`] are the bit-true model; the
+//! testbench's `intersection::model_bundle` applies them to a whole job stream. Resources
+//! (Yosys `synth_ecp5`): 6 `MULT18X18D`, 5 `DP16KD`, about 700 LUT4 and 1100 flip-flops.
 
 use crate::formats::{cross, dot, SH_MAX, SH_MIN};
 use crate::leaf::{Bram, Mul18};
@@ -63,7 +114,7 @@ pub mod model {
 /// Bundle size limit of the unit: ray indices are 10 bits.
 pub const RAY_BITS: usize = 10;
 
-/// The intersection unit (see the module documentation).
+/// The intersection unit (see the [module documentation](self) for ports and timing).
 #[derive(LogicBlock)]
 pub struct IntersectionUnit {
     pub clock: Signal<In, Clock>,

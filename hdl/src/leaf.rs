@@ -101,13 +101,6 @@ impl<const D: usize, const A: usize> Default for Bram<D, A> {
     }
 }
 
-impl<const D: usize, const A: usize> Bram<D, A> {
-    /// The word at `address` (for testbenches and scoreboards).
-    pub fn peek(&self, address: usize) -> u32 {
-        self._mem[address]
-    }
-}
-
 impl<const D: usize, const A: usize> Logic for Bram<D, A> {
     fn update(&mut self) {
         if self.clock.pos_edge() {
