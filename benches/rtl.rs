@@ -5,7 +5,8 @@
 //! Workload: bundles of 64 rays, 400 patches each with arbitrary 18-bit fields, each tested
 //! against all 64 rays (25 600 tests per bundle, one per clock). Median of interleaved rounds.
 //!
-//! Run: `cargo bench --bench rtl` (`-- --rounds N` for more rounds).
+//! Run: `cargo bench --bench rtl` (`-- --rounds N` for more rounds, `-- --plain` for the no-VCD
+//! simulation alone, e.g. under a profiler).
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -27,6 +28,8 @@ fn main() {
         .nth(1)
         .and_then(|v| v.parse().ok())
         .unwrap_or(5usize);
+    // `--plain`: only the no-VCD simulation (for profiling it alone).
+    let plain_only = std::env::args().any(|a| a == "--plain");
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     let mut raw = |bits: u32| rng.random_range(-(1i32 << (bits - 1))..(1i32 << (bits - 1)));
     let dirs: Vec<[i32; 2]> = (0..64).map(|_| [raw(18), raw(18)]).collect();
@@ -51,6 +54,9 @@ fn main() {
         run_bundle(&mut drv, &dirs, &jobs, Pacing::NONE, 1).expect("runs");
         plain.push(drv.cycles() as f64 / t.elapsed().as_secs_f64());
 
+        if plain_only {
+            continue;
+        }
         let mut drv = Driver::new(IntersectionUnit::default()).expect("the unit connects");
         drv.stream_vcd(&vcd, ..).expect("VCD file");
         let t = Instant::now();
@@ -63,6 +69,10 @@ fn main() {
         model.push((64 * 400) as f64 / t.elapsed().as_secs_f64());
     }
     let _ = std::fs::remove_file(&vcd);
+    if plain_only {
+        println!("RTL simulation, no VCD: {:.0} cycles/s", median(plain));
+        return;
+    }
     let (p, v, m) = (median(plain), median(traced), median(model));
     println!("intersection unit, {rounds} rounds, median:");
     println!("  {:<32} {:>12.0} cycles/s", "RTL simulation, no VCD", p);

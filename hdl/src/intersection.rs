@@ -37,7 +37,7 @@
 //! * stage 0: the sequencer issues ray `cur` of the current patch (direction memory read);
 //! * stage 1: direction arrives; the six products start in [`Mul18`] DSP leaves (latency 2);
 //! * stage 3: side values `s_a`, `s_b` and `q = dot(d, W)`;
-//! * stage 4: the key (shift by `sh`, saturating); the ray memory is read;
+//! * stage 4: the key (shift by `sh`, saturating, in the [`KeyScale`] leaf); the ray memory is read;
 //! * stage 5: compare with the ray's nearest hit and write back.
 //!
 //! The ray memory (two [`Bram`]s: key, and valid + id) reads before it writes, so a test of the
@@ -52,7 +52,7 @@
 //! (Yosys `synth_ecp5`): 6 `MULT18X18D`, 5 `DP16KD`, about 700 LUT4 and 1100 flip-flops.
 
 use crate::formats::{cross, dot, SH_MAX, SH_MIN};
-use crate::leaf::{Bram, Mul18};
+use crate::leaf::{Bram, KeyScale, Mul18};
 use crate::screener::model::PatchSetup;
 use rust_hdl::prelude::*;
 
@@ -193,23 +193,12 @@ pub struct IntersectionUnit {
     // Stage 4: the key; the ray memory is read.
     v4: DFF<bool>,
     ray4: DFF<Bits<10>>,
-    sh4: DFF<Bits<6>>,
     id4: DFF<Bits<16>>,
-    q4: DFF<Bits<32>>,
-    q4_pos: Signal<Local, bool>,
-    key_right: Signal<Local, Bits<32>>,
-    key_l1: Signal<Local, Bits<32>>,
-    key_l2: Signal<Local, Bits<32>>,
-    key_l3: Signal<Local, Bits<32>>,
-    sh4_low: Signal<Local, Bits<5>>,
-    q4_top2: Signal<Local, Bits<2>>,
-    q4_top3: Signal<Local, Bits<3>>,
-    key: Signal<Local, Bits<32>>,
+    key_scale: KeyScale,
     // Stage 5: compare with the ray's nearest hit and write back (with forwarding).
     v5: DFF<bool>,
     ray5: DFF<Bits<10>>,
     id5: DFF<Bits<16>>,
-    key5: DFF<Bits<32>>,
     mem_key: Bram<32, 10>,
     mem_meta: Bram<17, 10>,
     fw_valid: DFF<bool>,
@@ -229,12 +218,6 @@ pub struct IntersectionUnit {
     one10: Constant<Bits<10>>,
     one32: Constant<Bits<32>>,
     zero32: Constant<Bits<32>>,
-    max32: Constant<Bits<32>>,
-    zero5: Constant<Bits<5>>,
-    zero2: Constant<Bits<2>>,
-    zero3: Constant<Bits<3>>,
-    sh_m1: Constant<Bits<6>>,
-    sh_m2: Constant<Bits<6>>,
     hit_flag: Constant<Bits<17>>,
     zero17: Constant<Bits<17>>,
 }
@@ -310,22 +293,11 @@ impl Default for IntersectionUnit {
             q: Default::default(),
             v4: Default::default(),
             ray4: Default::default(),
-            sh4: Default::default(),
             id4: Default::default(),
-            q4: Default::default(),
-            q4_pos: Default::default(),
-            key_right: Default::default(),
-            key_l1: Default::default(),
-            key_l2: Default::default(),
-            key_l3: Default::default(),
-            sh4_low: Default::default(),
-            q4_top2: Default::default(),
-            q4_top3: Default::default(),
-            key: Default::default(),
+            key_scale: Default::default(),
             v5: Default::default(),
             ray5: Default::default(),
             id5: Default::default(),
-            key5: Default::default(),
             mem_key: Default::default(),
             mem_meta: Default::default(),
             fw_valid: Default::default(),
@@ -344,12 +316,6 @@ impl Default for IntersectionUnit {
             one10: Constant::new(1.into()),
             one32: Constant::new(1.into()),
             zero32: Constant::new(0.into()),
-            max32: Constant::new(0xFFFF_FFFFu64.into()),
-            zero5: Constant::new(0.into()),
-            zero2: Constant::new(0.into()),
-            zero3: Constant::new(0.into()),
-            sh_m1: Constant::new(0x3Fu64.into()),
-            sh_m2: Constant::new(0x3Eu64.into()),
             hit_flag: Constant::new(0x1_0000u64.into()),
             zero17: Constant::new(0.into()),
         }
@@ -363,7 +329,7 @@ impl Logic for IntersectionUnit {
         dff_setup!(
             self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, test_count, v1,
             ray1, a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3, id3, v4, ray4,
-            sh4, id4, q4, v5, ray5, id5, key5, fw_valid, fw_ray, fw_key, fw_id
+            id4, v5, ray5, id5, fw_valid, fw_ray, fw_key, fw_id
         );
         self.dir_mem_x.clock.next = self.clock.val();
         self.dir_mem_y.clock.next = self.clock.val();
@@ -375,6 +341,7 @@ impl Logic for IntersectionUnit {
         self.mul_dy_bx.clock.next = self.clock.val();
         self.mul_dx_wx.clock.next = self.clock.val();
         self.mul_dy_wy.clock.next = self.clock.val();
+        self.key_scale.clock.next = self.clock.val();
 
         // Stage 0: sequencer. A patch is accepted while the current one issues its last ray
         // (or none is active), so back-to-back patches leave no bubble.
@@ -451,43 +418,15 @@ impl Logic for IntersectionUnit {
             & ((self.side_a.val() == self.zero32.val()) | self.side_a.val().get_bit(31))
             & !self.side_b.val().get_bit(31);
         self.ray4.d.next = self.ray3.q.val();
-        self.sh4.d.next = self.sh3.q.val();
         self.id4.d.next = self.id3.q.val();
-        self.q4.d.next = self.q.val();
 
-        // Stage 4: the key q·2^-sh, clamped into [1, 2^32 − 1].
-        self.q4_pos.next = !self.q4.q.val().get_bit(31) & (self.q4.q.val() != self.zero32.val());
-        self.sh4_low.next = self.sh4.q.val().get_bits::<5>(0);
-        self.key_right.next = self.q4.q.val() >> self.sh4_low.val();
-        self.key_l1.next = self.q4.q.val() << self.one32.val();
-        self.key_l2.next = self.key_l1.val() << self.one32.val();
-        self.key_l3.next = self.key_l2.val() << self.one32.val();
-        self.q4_top2.next = self.q4.q.val().get_bits::<2>(30);
-        self.q4_top3.next = self.q4.q.val().get_bits::<3>(29);
-        self.key.next = self.one32.val();
-        if self.q4_pos.val() {
-            if !self.sh4.q.val().get_bit(5) {
-                if self.key_right.val() != self.zero32.val() {
-                    self.key.next = self.key_right.val();
-                }
-            } else if self.sh4.q.val() == self.sh_m1.val() {
-                self.key.next = self.key_l1.val();
-            } else if self.sh4.q.val() == self.sh_m2.val() {
-                if self.q4_top2.val() == self.zero2.val() {
-                    self.key.next = self.key_l2.val();
-                } else {
-                    self.key.next = self.max32.val();
-                }
-            } else if self.q4_top3.val() == self.zero3.val() {
-                self.key.next = self.key_l3.val();
-            } else {
-                self.key.next = self.max32.val();
-            }
-        }
+        // Stages 4 and 5: the key q·2^-sh, clamped into [1, 2^32 − 1], in a leaf (its input
+        // registers are stage 4, its output register stage 5).
+        self.key_scale.q.next = self.q.val();
+        self.key_scale.sh.next = self.sh3.q.val();
         self.v5.d.next = self.v4.q.val();
         self.ray5.d.next = self.ray4.q.val();
         self.id5.d.next = self.id4.q.val();
-        self.key5.d.next = self.key.val();
 
         // The ray memory: read for stage 4's ray, or for the host's readout.
         self.mem_key.read_address.next = self.ray4.q.val();
@@ -500,7 +439,7 @@ impl Logic for IntersectionUnit {
         // Stage 5: the ray's nearest hit so far, forwarded from the previous cycle's write when
         // it is the same ray (the read-modify-write hazard of a one-ray bundle).
         self.meta_hit.next = self.mem_meta.read_data.val().get_bit(16);
-        self.meta_id.next = self.mem_meta.read_data.val().get_bits::<16>(0);
+        self.meta_id.next = bit_cast::<16, 17>(self.mem_meta.read_data.val());
         self.old_hit.next = self.meta_hit.val();
         self.old_key.next = self.mem_key.read_data.val();
         self.old_id.next = self.meta_id.val();
@@ -511,12 +450,12 @@ impl Logic for IntersectionUnit {
         }
         self.better.next = self.v5.q.val()
             & (!self.old_hit.val()
-                | (self.key5.q.val() > self.old_key.val())
-                | ((self.key5.q.val() == self.old_key.val()) & (self.id5.q.val() < self.old_id.val())));
+                | (self.key_scale.key.val() > self.old_key.val())
+                | ((self.key_scale.key.val() == self.old_key.val()) & (self.id5.q.val() < self.old_id.val())));
         self.new_meta.next = self.hit_flag.val() | bit_cast::<17, 16>(self.id5.q.val());
         self.mem_key.write_address.next = self.ray5.q.val();
         self.mem_meta.write_address.next = self.ray5.q.val();
-        self.mem_key.write_data.next = self.key5.q.val();
+        self.mem_key.write_data.next = self.key_scale.key.val();
         self.mem_meta.write_data.next = self.new_meta.val();
         self.mem_key.write_enable.next = self.better.val();
         self.mem_meta.write_enable.next = self.better.val();
@@ -531,7 +470,7 @@ impl Logic for IntersectionUnit {
         }
         self.fw_valid.d.next = self.better.val();
         self.fw_ray.d.next = self.ray5.q.val();
-        self.fw_key.d.next = self.key5.q.val();
+        self.fw_key.d.next = self.key_scale.key.val();
         self.fw_id.d.next = self.id5.q.val();
 
         // Readout and status.

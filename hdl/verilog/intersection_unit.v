@@ -35,12 +35,6 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     localparam  one10 = 10'b1;
     localparam  one32 = 32'h1;
     localparam  zero32 = 32'h0;
-    localparam  max32 = 32'hffffffff;
-    localparam  zero5 = 5'b0;
-    localparam  zero2 = 2'b0;
-    localparam  zero3 = 3'b0;
-    localparam  sh_m1 = 6'b111111;
-    localparam  sh_m2 = 6'b111110;
     localparam  hit_flag = 17'b10000000000000000;
     localparam  zero17 = 17'b0;
     
@@ -174,15 +168,13 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     reg  [9:0] ray4$d;
     wire  [9:0] ray4$q;
     reg  ray4$clock;
-    reg  [5:0] sh4$d;
-    wire  [5:0] sh4$q;
-    reg  sh4$clock;
     reg  [15:0] id4$d;
     wire  [15:0] id4$q;
     reg  id4$clock;
-    reg  [31:0] q4$d;
-    wire  [31:0] q4$q;
-    reg  q4$clock;
+    reg  key_scale$clock;
+    reg  [31:0] key_scale$q;
+    reg  [5:0] key_scale$sh;
+    wire  [31:0] key_scale$key;
     reg  v5$d;
     wire  v5$q;
     reg  v5$clock;
@@ -192,9 +184,6 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     reg  [15:0] id5$d;
     wire  [15:0] id5$q;
     reg  id5$clock;
-    reg  [31:0] key5$d;
-    wire  [31:0] key5$q;
-    reg  key5$clock;
     reg  mem_key$clock;
     reg  [9:0] mem_key$read_address;
     wire  [31:0] mem_key$read_data;
@@ -226,15 +215,6 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     reg  [31:0] side_a;
     reg  [31:0] side_b;
     reg  [31:0] q;
-    reg  q4_pos;
-    reg  [31:0] key_right;
-    reg  [31:0] key_l1;
-    reg  [31:0] key_l2;
-    reg  [31:0] key_l3;
-    reg  [4:0] sh4_low;
-    reg  [1:0] q4_top2;
-    reg  [2:0] q4_top3;
-    reg  [31:0] key;
     reg  old_hit;
     reg  [31:0] old_key;
     reg  [15:0] old_id;
@@ -451,20 +431,16 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         .q(ray4$q),
         .clock(ray4$clock)
     );
-    intersection_unit$sh4 sh4(
-        .d(sh4$d),
-        .q(sh4$q),
-        .clock(sh4$clock)
-    );
     intersection_unit$id4 id4(
         .d(id4$d),
         .q(id4$q),
         .clock(id4$clock)
     );
-    intersection_unit$q4 q4(
-        .d(q4$d),
-        .q(q4$q),
-        .clock(q4$clock)
+    intersection_unit$key_scale key_scale(
+        .clock(key_scale$clock),
+        .q(key_scale$q),
+        .sh(key_scale$sh),
+        .key(key_scale$key)
     );
     intersection_unit$v5 v5(
         .d(v5$d),
@@ -480,11 +456,6 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         .d(id5$d),
         .q(id5$q),
         .clock(id5$clock)
-    );
-    intersection_unit$key5 key5(
-        .d(key5$d),
-        .q(key5$q),
-        .clock(key5$clock)
     );
     intersection_unit$mem_key mem_key(
         .clock(mem_key$clock),
@@ -556,13 +527,10 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         id3$clock = clock;
         v4$clock = clock;
         ray4$clock = clock;
-        sh4$clock = clock;
         id4$clock = clock;
-        q4$clock = clock;
         v5$clock = clock;
         ray5$clock = clock;
         id5$clock = clock;
-        key5$clock = clock;
         fw_valid$clock = clock;
         fw_ray$clock = clock;
         fw_key$clock = clock;
@@ -598,13 +566,10 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         id3$d = id3$q;
         v4$d = v4$q;
         ray4$d = ray4$q;
-        sh4$d = sh4$q;
         id4$d = id4$q;
-        q4$d = q4$q;
         v5$d = v5$q;
         ray5$d = ray5$q;
         id5$d = id5$q;
-        key5$d = key5$q;
         fw_valid$d = fw_valid$q;
         fw_ray$d = fw_ray$q;
         fw_key$d = fw_key$q;
@@ -619,6 +584,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         mul_dy_bx$clock = clock;
         mul_dx_wx$clock = clock;
         mul_dy_wy$clock = clock;
+        key_scale$clock = clock;
         issue = remaining$q != zero11;
         patch_ready = (remaining$q == zero11) | (remaining$q == one11);
         take = patch_valid & ((remaining$q == zero11) | (remaining$q == one11));
@@ -685,46 +651,12 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         q = mul_dx_wx$p + mul_dy_wy$p;
         v4$d = v3$q & ((side_a == zero32) | side_a[32'h1f]) & ~side_b[32'h1f];
         ray4$d = ray3$q;
-        sh4$d = sh3$q;
         id4$d = id3$q;
-        q4$d = q;
-        q4_pos = ~q4$q[32'h1f] & (q4$q != zero32);
-        sh4_low = sh4$q[(32'h0)+:(5)];
-        key_right = q4$q >> sh4_low;
-        key_l1 = q4$q << one32;
-        key_l2 = key_l1 << one32;
-        key_l3 = key_l2 << one32;
-        q4_top2 = q4$q[(32'h1e)+:(2)];
-        q4_top3 = q4$q[(32'h1d)+:(3)];
-        key = one32;
-        if (q4_pos) begin
-            if (~sh4$q[32'h5]) begin
-                if (key_right != zero32) begin
-                    key = key_right;
-                end
-            end
-            else if (sh4$q == sh_m1) begin
-                key = key_l1;
-            end
-            else if (sh4$q == sh_m2) begin
-                if (q4_top2 == zero2) begin
-                    key = key_l2;
-                end
-                else begin
-                    key = max32;
-                end
-            end
-            else if (q4_top3 == zero3) begin
-                key = key_l3;
-            end
-            else begin
-                key = max32;
-            end
-        end
+        key_scale$q = q;
+        key_scale$sh = sh3$q;
         v5$d = v4$q;
         ray5$d = ray4$q;
         id5$d = id4$q;
-        key5$d = key;
         mem_key$read_address = ray4$q;
         mem_meta$read_address = ray4$q;
         if (res_re) begin
@@ -732,7 +664,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
             mem_meta$read_address = res_addr;
         end
         meta_hit = mem_meta$read_data[32'h10];
-        meta_id = mem_meta$read_data[(32'h0)+:(16)];
+        meta_id = ((mem_meta$read_data) & 16'hffff);
         old_hit = meta_hit;
         old_key = mem_key$read_data;
         old_id = meta_id;
@@ -741,11 +673,11 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
             old_key = fw_key$q;
             old_id = fw_id$q;
         end
-        better = v5$q & (~old_hit | (key5$q > old_key) | ((key5$q == old_key) & (id5$q < old_id)));
+        better = v5$q & (~old_hit | (key_scale$key > old_key) | ((key_scale$key == old_key) & (id5$q < old_id)));
         new_meta = hit_flag | ((id5$q) & 17'h1ffff);
         mem_key$write_address = ray5$q;
         mem_meta$write_address = ray5$q;
-        mem_key$write_data = key5$q;
+        mem_key$write_data = key_scale$key;
         mem_meta$write_data = new_meta;
         mem_key$write_enable = better;
         mem_meta$write_enable = better;
@@ -759,7 +691,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         end
         fw_valid$d = better;
         fw_ray$d = ray5$q;
-        fw_key$d = key5$q;
+        fw_key$d = key_scale$key;
         fw_id$d = id5$q;
         res_hit = meta_hit;
         res_id = meta_id;
@@ -1088,23 +1020,37 @@ module intersection_unit$id5(d,q,clock);
 endmodule // intersection_unit$id5
 
 
-module intersection_unit$key5(d,q,clock);
+module intersection_unit$key_scale(clock,q,sh,key);
     
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
     input wire  clock;
+    input wire  [31:0] q;
+    input wire  [5:0] sh;
+    output reg  [31:0] key;
     
     // Update code (custom)
+    reg [31:0] q_r;
+    reg [5:0] sh_r;
+    reg [31:0] k;
+    wire [31:0] right = q_r >> sh_r[4:0];
     initial begin
-       q = 32'h0;
+       q_r = 32'd0;
+       sh_r = 6'd0;
+       key = 32'd0;
     end
-    
+    always @(*) begin
+       if (q_r[31] || q_r == 32'd0) k = 32'd1;
+       else if (!sh_r[5]) k = (right == 32'd0) ? 32'd1 : right;
+       else if (sh_r == 6'h3f) k = {q_r[30:0], 1'b0};
+       else if (sh_r == 6'h3e) k = (q_r[31:30] == 2'd0) ? {q_r[29:0], 2'b0} : 32'hffffffff;
+       else k = (q_r[31:29] == 3'd0) ? {q_r[28:0], 3'b0} : 32'hffffffff;
+    end
     always @(posedge clock) begin
-       q <= d;
+       q_r <= q;
+       sh_r <= sh;
+       key <= k;
     end
-          
-endmodule // intersection_unit$key5
+endmodule // intersection_unit$key_scale
 
 
 module intersection_unit$mem_key(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -1467,25 +1413,6 @@ module intersection_unit$p_wy(d,q,clock);
 endmodule // intersection_unit$p_wy
 
 
-module intersection_unit$q4(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$q4
-
-
 module intersection_unit$ray1(d,q,clock);
     
     // Module arguments
@@ -1655,25 +1582,6 @@ module intersection_unit$sh3(d,q,clock);
     end
           
 endmodule // intersection_unit$sh3
-
-
-module intersection_unit$sh4(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$sh4
 
 
 module intersection_unit$test_count(d,q,clock);

@@ -236,7 +236,7 @@ fn vcd_on_request() -> Result<()> {
     run_bundle(&mut drv, &dirs, &jobs, Pacing::NONE, 11)?;
     drv.finish_vcd()?;
     let text = std::fs::read_to_string(&path).map_err(|e| Error::new(e.to_string()))?;
-    for signal in ["patch_ready", "busy", "key5", "fw_valid"] {
+    for signal in ["patch_ready", "busy", "key_scale", "fw_valid"] {
         assert!(text.contains(signal), "the VCD lacks {signal}");
     }
     Ok(())
