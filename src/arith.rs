@@ -46,7 +46,11 @@ impl std::fmt::Display for Arith {
 #[derive(Clone, Debug)]
 pub struct FixedBundle {
     pub quantizer: Quantizer,
+    /// The bundle setup of the whole bundle (its first and last rays bound the sector).
     pub setup: BundleSetup,
+    /// Every patch as the host memory holds it (world coordinates quantised).
+    pub patches: Vec<Patch>,
+    /// Every patch's verdict under [`FixedBundle::setup`].
     pub verdicts: Vec<Verdict>,
     pub dirs: Vec<[i32; 2]>,
 }
@@ -76,16 +80,23 @@ impl FixedBundle {
             first: dirs.first().copied().unwrap_or_default(),
             last: dirs.last().copied().unwrap_or_default(),
         };
-        let verdicts = segments
+        let patches = segments
             .iter()
             .enumerate()
             .map(|(i, s)| {
                 let a = quantizer.point(|| format!("segment {i} endpoint a"), s.a.to_array())?;
                 let b = quantizer.point(|| format!("segment {i} endpoint b"), s.b.to_array())?;
-                Ok(screen(&setup, &Patch { id: i as u16, a, b }))
+                Ok(Patch { id: i as u16, a, b })
             })
             .collect::<Result<Vec<_>, FormatError>>()?;
-        Ok(FixedBundle { quantizer, setup, verdicts, dirs })
+        let verdicts = patches.iter().map(|p| screen(&setup, p)).collect();
+        Ok(FixedBundle { quantizer, setup, patches, verdicts, dirs })
+    }
+
+    /// The bundle setup of the sector of rays `rays` (non-empty): the screener's first and last
+    /// ray are the sector's.
+    pub fn sector_setup(&self, rays: std::ops::Range<usize>) -> BundleSetup {
+        BundleSetup { first: self.dirs[rays.start], last: self.dirs[rays.end - 1], ..self.setup }
     }
 
     /// The set-up patch `p`, if the screener passes it.

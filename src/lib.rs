@@ -21,3 +21,4 @@ pub mod rays;
 pub mod run;
 pub mod scene;
 pub mod trace;
+pub mod workstream;

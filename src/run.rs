@@ -7,6 +7,7 @@ use crate::grid::{Grid, GridParams};
 use crate::rays::{Bundle, RaySet, Source, SourceError};
 use crate::scene::Scene;
 use crate::trace::{trace, trace_with, Method, SceneView, ShellParams, TraceError, TraceResult};
+use crate::workstream::{Recorder, WorkStream};
 use serde::Serialize;
 use shelling_hdl::formats::FormatError;
 
@@ -57,6 +58,32 @@ impl Prepared {
                 trace_with(method, self.view(), bundle, params, &fixed)?
             }
         })
+    }
+}
+
+/// A bundle traced in the bit-true arithmetic with its work stream recorded: what the hardware
+/// is handed ([`Prepared::schedule`]).
+#[derive(Clone, Debug)]
+pub struct Scheduled {
+    /// The bit-true trace (its hits are what the hardware must return).
+    pub trace: TraceResult,
+    pub stream: WorkStream,
+    pub fixed: FixedBundle,
+}
+
+impl Prepared {
+    /// Runs the shell scheduler of `method` on the bit-true backend and records its work stream.
+    pub fn schedule(
+        &self,
+        method: Method,
+        bundle: &Bundle,
+        params: &ShellParams,
+    ) -> Result<Scheduled, RunError> {
+        let fixed = FixedBundle::new(&self.scene.segments, bundle)?;
+        let recorder = Recorder::new(&fixed, bundle);
+        let trace = trace_with(method, self.view(), bundle, params, &recorder)?;
+        let stream = recorder.finish();
+        Ok(Scheduled { trace, stream, fixed })
     }
 }
 

@@ -2,3 +2,4 @@ mod cli;
 mod hardware;
 mod scene_loader;
 mod tracers;
+mod workstream;

@@ -20,6 +20,7 @@ pub(super) fn trace<H: HitTest>(
     let margin = 4.0 * grid.eps;
     let mut c = Counters::default();
     let mut hits = Vec::with_capacity(bundle.len());
+    test.sector(0..bundle.len());
     with_scratch(scene, |scratch| {
         // Screening verdicts are computed when a patch is first loaded for this source; the
         // per-ray mailbox loads a patch listed in several cells once per ray.
@@ -39,6 +40,7 @@ pub(super) fn trace<H: HitTest>(
                         }
                         scratch.patch_stamp[i] = ray_tick;
                         c.patches_read_before_screening += 1;
+                        test.load(p);
                         let seg = &scene.segments[i];
                         if scratch.screen_stamp[i] != source_tick {
                             scratch.screen[i] = screen(bundle, p, seg);
@@ -49,6 +51,7 @@ pub(super) fn trace<H: HitTest>(
                         }
                         c.patches_read_after_screening += 1;
                         c.intersection_computations += 1;
+                        test.span(p, r..r + 1);
                         if let Some(t) = test.hit(bundle, r, p, seg) {
                             offer(&mut best, Hit { t, segment: p });
                         }

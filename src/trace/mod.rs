@@ -86,8 +86,27 @@ pub enum TraceError {
 /// The tracers decide *which* rays meet *which* patches (the work stream); a `HitTest` decides
 /// the answer. It returns a distance key: the hit distance `t` in world units, or any value with
 /// the same order (smaller is nearer; equal keys tie and the lower patch index wins).
+///
+/// The tracers also announce the work stream's other items through the hooks below, in the
+/// order they happen (no-ops by default; `crate::workstream` records them for the hardware).
 pub trait HitTest {
     fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64>;
+
+    /// A sector starts: its rays (the conventional technique: one sector of the whole bundle).
+    #[inline(always)]
+    fn sector(&self, _rays: Range<usize>) {}
+
+    /// Patch `p` is loaded (counted in `patches_read_before_screening`).
+    #[inline(always)]
+    fn load(&self, _p: u32) {}
+
+    /// Patch `p` (loaded before) is tested against the remaining rays of the non-empty `rays`.
+    #[inline(always)]
+    fn span(&self, _p: u32, _rays: Range<usize>) {}
+
+    /// Ray `i` leaves the sector's bundle (tracking): no later span tests it.
+    #[inline(always)]
+    fn retire(&self, _i: usize) {}
 }
 
 /// The golden model's backend: exact predicates and `f64` distances ([`hit_front`]).

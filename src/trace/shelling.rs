@@ -269,6 +269,7 @@ impl SectorRays {
         if lo >= hi {
             return;
         }
+        test.span(p, lo..hi);
         let (a, b) = (lo - self.s, hi - self.s);
         for w in a / 64..b.div_ceil(64) {
             let mut word = self.alive[w];
@@ -292,7 +293,7 @@ impl SectorRays {
     }
 
     /// Retires the remaining rays whose nearest hit lies before `limit`; returns how many left.
-    fn retire(&mut self, best: &[Option<Hit>], limit: f64) -> usize {
+    fn retire<H: HitTest>(&mut self, test: &H, best: &[Option<Hit>], limit: f64) -> usize {
         let mut n = 0;
         for w in 0..self.alive.len() {
             let mut cand = self.alive[w] & self.hit[w];
@@ -301,6 +302,7 @@ impl SectorRays {
                 cand &= cand - 1;
                 if matches!(best[self.s + w * 64 + b], Some(h) if h.t < limit) {
                     self.alive[w] &= !(1u64 << b);
+                    test.retire(self.s + w * 64 + b);
                     n += 1;
                 }
             }
@@ -435,6 +437,7 @@ fn trace_bundle<H: HitTest>(
         *tick += 1;
         let sector = *tick;
         rays.start(s, e);
+        test.sector(s..e);
         // Whether the whole sector lies within π/4, so every shell is rasterised in one piece.
         // (Rounded differences are monotone, so no narrower pair of rays can exceed π/4 then.)
         let one_piece = bundle.angles[e - 1] - bundle.angles[s] <= FRAC_PI_4;
@@ -465,7 +468,7 @@ fn trace_bundle<H: HitTest>(
                     let r2 = r1 + depth;
                     stats.shells += 1;
                     stats.rays_entering += rays.remaining as u64;
-                    rays.retire(&best, r2 - margin);
+                    rays.retire(test, &best, r2 - margin);
                     stats.rays_leaving += rays.remaining as u64;
                     cur.push(None);
                     r1 = r2;
@@ -532,6 +535,7 @@ fn trace_bundle<H: HitTest>(
                         for &p in items {
                             let Some((pass, rays)) = cache.load(p, sector) else { continue };
                             c.patches_read_before_screening += 1;
+                            test.load(p);
                             let in_sector = (rays.start as usize) < e && (rays.end as usize) > s;
                             if pass && in_sector {
                                 c.patches_read_after_screening += 1;
@@ -580,7 +584,7 @@ fn trace_bundle<H: HitTest>(
                             // Close radial subshell `bin`: rays hit before its end are done.
                             bin += 1;
                             let end = r1 + bin as f64 * step;
-                            rays.retire(&best, end - margin);
+                            rays.retire(test, &best, end - margin);
                         }
                         let span = cache.rays(p);
                         let lo = (span.start as usize).max(s);
@@ -613,7 +617,7 @@ fn trace_bundle<H: HitTest>(
             }
 
             // End of shell: rays whose nearest hit lies before r₂ are done.
-            rays.retire(&best, r2 - margin);
+            rays.retire(test, &best, r2 - margin);
             stats.rays_leaving += rays.remaining as u64;
             if here.is_some() && first_adlc.is_none() {
                 first_adlc = here.map(|h| h.adlc);

@@ -1,0 +1,236 @@
+//! The work stream: what the shell scheduler sends the hardware, one item after another, and
+//! its bit-true execution.
+//!
+//! The tracers of [`crate::trace`] are the scheduler: they decide which patches are loaded for
+//! which sector and which rays each one is tested against, and they announce it through the
+//! hooks of [`HitTest`]. A [`Recorder`] wraps any backend and writes those announcements down as
+//! a [`WorkStream`], the one input every backend consumes (DESIGN.md's seam):
+//!
+//! * [`Item::Sector`]: a new sector (its rays bound the screener's angular test);
+//! * [`Item::Job`]: one patch loaded from host memory, screened, and tested against the rays of
+//!   a range that are still in the bundle; a patch the scheduler screened out itself is still
+//!   loaded (the hardware screens it again) and gets an empty range;
+//! * [`Item::Retire`]: a ray leaves the bundle (tracking); later jobs do not test it.
+//!
+//! Every load is one job, so the stream has exactly `patches_read_before_screening` jobs. Within
+//! a shell the jobs come in the order the technique tests them (radial subshells for S, angle
+//! for D) with the retirements between, followed by the shell's patches that were loaded but
+//! not tested. The scheduler's decisions (which rays retire, when the conventional walk stops)
+//! follow the answers of the backend it ran with; the stream is recorded with the bit-true
+//! backend, so that the hardware, which computes the same answers, is handed the same decisions.
+//!
+//! [`execute`] runs a stream through the bit-true models of the screener and the intersection
+//! unit, item by item as the processing element does: its hits are what the RTL must return.
+
+use crate::arith::FixedBundle;
+use crate::geom::Segment;
+use crate::rays::Bundle;
+use crate::trace::HitTest;
+use shelling_hdl::intersection::model::{replaces, test, Nearest};
+use shelling_hdl::screener::model::{screen, Verdict};
+use std::cell::RefCell;
+use std::ops::Range;
+
+/// One item of the work stream.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Item {
+    /// A sector starts: rays `rays` (non-empty) of the bundle.
+    Sector { rays: Range<u32> },
+    /// Patch `patch` is loaded and, if the screener passes it, tested against the rays of
+    /// `rays` still in the bundle (`rays` may be empty).
+    Job { patch: u32, rays: Range<u32> },
+    /// Ray `ray` leaves the bundle.
+    Retire { ray: u32 },
+}
+
+/// A whole source's work stream.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct WorkStream {
+    /// Rays in the bundle.
+    pub rays: usize,
+    pub items: Vec<Item>,
+}
+
+impl WorkStream {
+    /// Jobs, i.e. patch loads.
+    pub fn jobs(&self) -> usize {
+        self.items.iter().filter(|i| matches!(i, Item::Job { .. })).count()
+    }
+}
+
+#[derive(Default)]
+struct Recording {
+    items: Vec<Item>,
+    /// Patches loaded and not yet made a job, in load order.
+    pending: Vec<u32>,
+    /// Whether a job or a retirement came after the last load (the next load opens a new shell).
+    worked: bool,
+}
+
+impl Recording {
+    fn flush(&mut self) {
+        for p in self.pending.drain(..) {
+            self.items.push(Item::Job { patch: p, rays: 0..0 });
+        }
+    }
+}
+
+/// Wraps a backend: answers as it does and records the work stream the tracer announces.
+pub struct Recorder<'a, H> {
+    inner: &'a H,
+    rays: usize,
+    rec: RefCell<Recording>,
+}
+
+impl<'a, H: HitTest> Recorder<'a, H> {
+    pub fn new(inner: &'a H, bundle: &Bundle) -> Self {
+        Recorder { inner, rays: bundle.len(), rec: RefCell::default() }
+    }
+
+    /// The stream recorded so far (pending loads become empty jobs).
+    pub fn finish(self) -> WorkStream {
+        let mut rec = self.rec.into_inner();
+        rec.flush();
+        WorkStream { rays: self.rays, items: rec.items }
+    }
+}
+
+impl<H: HitTest> HitTest for Recorder<'_, H> {
+    #[inline]
+    fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64> {
+        self.inner.hit(bundle, i, p, seg)
+    }
+
+    fn sector(&self, rays: Range<usize>) {
+        let mut rec = self.rec.borrow_mut();
+        rec.flush();
+        rec.items.push(Item::Sector { rays: rays.start as u32..rays.end as u32 });
+        rec.worked = false;
+    }
+
+    fn load(&self, p: u32) {
+        let mut rec = self.rec.borrow_mut();
+        if rec.worked {
+            rec.flush();
+            rec.worked = false;
+        }
+        rec.pending.push(p);
+    }
+
+    fn span(&self, p: u32, rays: Range<usize>) {
+        let mut rec = self.rec.borrow_mut();
+        // A patch is tested in the shell that loaded it, so it is pending (the last few loads).
+        if let Some(k) = rec.pending.iter().rposition(|&q| q == p) {
+            rec.pending.remove(k);
+        }
+        rec.items.push(Item::Job { patch: p, rays: rays.start as u32..rays.end as u32 });
+        rec.worked = true;
+    }
+
+    fn retire(&self, i: usize) {
+        let mut rec = self.rec.borrow_mut();
+        rec.items.push(Item::Retire { ray: i as u32 });
+        rec.worked = true;
+    }
+}
+
+/// What executing a stream does, counted as the hardware counts it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct StreamCounts {
+    pub sectors: u64,
+    /// Patches loaded (jobs).
+    pub loads: u64,
+    /// Jobs whose patch the screener passed.
+    pub passed: u64,
+    /// Ray slots of passing jobs: the intersection unit's issue cycles.
+    pub ray_slots: u64,
+    /// Ray–patch tests of rays still in the bundle.
+    pub tests: u64,
+    pub retires: u64,
+}
+
+/// What a stream is inconsistent about.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum StreamError {
+    #[error("item {item}: {what}")]
+    Invalid { item: usize, what: String },
+}
+
+/// Checks that every index in the stream is in range for `fixed` (patches and rays) and that
+/// every job comes after a sector.
+pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamError> {
+    let bad = |item: usize, what: String| Err(StreamError::Invalid { item, what });
+    let rays = stream.rays.min(fixed.dirs.len()) as u32;
+    let mut sector = false;
+    for (k, it) in stream.items.iter().enumerate() {
+        match it {
+            Item::Sector { rays: r } => {
+                if r.start >= r.end || r.end > rays {
+                    return bad(k, format!("sector {r:?} is empty or beyond the {rays} rays"));
+                }
+                sector = true;
+            }
+            Item::Job { patch, rays: r } => {
+                if !sector {
+                    return bad(k, "a job before any sector".into());
+                }
+                if *patch as usize >= fixed.patches.len() {
+                    return bad(k, format!("patch {patch} of {}", fixed.patches.len()));
+                }
+                if r.start > r.end || r.end > rays {
+                    return bad(k, format!("ray range {r:?} beyond the {rays} rays"));
+                }
+            }
+            Item::Retire { ray } => {
+                if *ray >= rays {
+                    return bad(k, format!("retires ray {ray} of {rays}"));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Executes a stream in the bit-true models: each sector's screener setup, each job's screener
+/// verdict under it and the intersection unit's test of every ray of its range still in the
+/// bundle. Returns every ray's nearest hit and the counts.
+pub fn execute(
+    stream: &WorkStream,
+    fixed: &FixedBundle,
+) -> Result<(Vec<Option<Nearest>>, StreamCounts), StreamError> {
+    validate(stream, fixed)?;
+    let mut best: Vec<Option<Nearest>> = vec![None; stream.rays];
+    let mut alive = vec![true; stream.rays];
+    let mut c = StreamCounts::default();
+    let mut setup = fixed.setup;
+    for it in &stream.items {
+        match it {
+            Item::Sector { rays } => {
+                c.sectors += 1;
+                setup = fixed.sector_setup(rays.start as usize..rays.end as usize);
+            }
+            Item::Job { patch, rays } => {
+                c.loads += 1;
+                let Verdict::Pass(p) = screen(&setup, &fixed.patches[*patch as usize]) else { continue };
+                c.passed += 1;
+                c.ray_slots += rays.len() as u64;
+                for r in rays.start as usize..rays.end as usize {
+                    if !alive[r] {
+                        continue;
+                    }
+                    c.tests += 1;
+                    if let Some(key) = test(&p, fixed.dirs[r]) {
+                        if replaces(key, p.id, best[r]) {
+                            best[r] = Some(Nearest { key, id: p.id });
+                        }
+                    }
+                }
+            }
+            Item::Retire { ray } => {
+                c.retires += 1;
+                alive[*ray as usize] = false;
+            }
+        }
+    }
+    Ok((best, c))
+}
