@@ -34,16 +34,15 @@ fn main() {
     let mut raw = |bits: u32| rng.random_range(-(1i32 << (bits - 1))..(1i32 << (bits - 1)));
     let dirs: Vec<[i32; 2]> = (0..64).map(|_| [raw(18), raw(18)]).collect();
     let jobs: Vec<Job> = (0..400u16)
-        .map(|id| Job {
-            patch: PatchSetup {
+        .map(|id| {
+            let patch = PatchSetup {
                 id,
                 a: [raw(18), raw(18)],
                 b: [raw(18), raw(18)],
                 w: [raw(18), raw(18)],
                 sh: (raw(6).rem_euclid(35) - 3) as i8,
-            },
-            first: 0,
-            count: 64,
+            };
+            Job::test(patch, 0, 64)
         })
         .collect();
     let vcd = std::env::temp_dir().join(format!("shelling-bench-{}.vcd", std::process::id()));

@@ -12,15 +12,25 @@
 //! | `patch_ax`, `patch_ay`, `patch_bx`, `patch_by` | in | 4 × 18 | endpoints relative to the origin |
 //! | `patch_wx`, `patch_wy`, `patch_sh` | in | 18, 18, 6 | inverse-distance vector and its exponent |
 //! | `patch_id`, `patch_first`, `patch_count` | in | 16, 10, 11 | patch id; test rays `first .. first + count` (mod 1024) |
+//! | `patch_retire` | in | 1 | instead of testing, retire rays `first .. first + count` (the patch fields are ignored) |
 //! | `res_re`, `res_addr` | in | 1, 10 | readout: read and clear ray `res_addr` (only while not `busy`) |
 //! | `res_hit`, `res_id`, `res_key` | out | 1, 16, 32 | the ray's nearest hit, the cycle after `res_re` |
 //! | `busy` | out | 1 | a test is issuing or may still update the ray memory |
-//! | `tests` | out | 32 | ray-patch tests issued so far (wraps) |
+//! | `tests` | out | 32 | ray-patch tests of live rays so far (wraps) |
 //!
 //! A patch transfers when `patch_valid && patch_ready` before the rising edge. `patch_ready` is
 //! high while fewer than two rays of the current patch remain, so the next patch is taken while
 //! the current one issues its last ray: back-to-back patches leave no bubble, and a patch with
 //! `patch_count = 0` is consumed in one cycle.
+//!
+//! # Live rays
+//!
+//! Each ray has a live bit (a one-bit [`Bram`] beside the direction memory): writing its
+//! direction makes it live, a retire job (`patch_retire`) kills the rays of its range, one per
+//! clock through the same sequencer as a test, so it takes effect in stream order. A test of a
+//! dead ray occupies its issue slot but neither counts nor writes (the shelling techniques'
+//! tracking: a ray that found its hit leaves the bundle). All rays are dead at power-up. The
+//! host writes directions only while the unit is not busy.
 //!
 //! # Formats
 //!
@@ -35,7 +45,8 @@
 //! ray-memory write:
 //!
 //! * stage 0: the sequencer issues ray `cur` of the current patch (direction memory read);
-//! * stage 1: direction arrives; the six products start in [`Mul18`] DSP leaves (latency 2);
+//! * stage 1: direction and live bit arrive; the six products start in [`Mul18`] DSP leaves
+//!   (latency 2); a dead ray's test goes on as a bubble;
 //! * stage 3: side values `s_a`, `s_b` and `q = dot(d, W)`;
 //! * stage 4: the key (shift by `sh`, saturating, in the [`KeyScale`] leaf); the ray memory is read;
 //! * stage 5: compare with the ray's nearest hit and write back.
@@ -136,6 +147,7 @@ pub struct IntersectionUnit {
     pub patch_id: Signal<In, Bits<16>>,
     pub patch_first: Signal<In, Bits<10>>,
     pub patch_count: Signal<In, Bits<11>>,
+    pub patch_retire: Signal<In, bool>,
     // Result readout (read and clear), only while not busy.
     pub res_re: Signal<In, bool>,
     pub res_addr: Signal<In, Bits<10>>,
@@ -156,6 +168,9 @@ pub struct IntersectionUnit {
     p_wy: DFF<Bits<18>>,
     p_sh: DFF<Bits<6>>,
     p_id: DFF<Bits<16>>,
+    p_retire: DFF<bool>,
+    alive_mem: Bram<1, 10>,
+    live: Signal<Local, bool>,
     test_count: DFF<Bits<32>>,
     issue: Signal<Local, bool>,
     take: Signal<Local, bool>,
@@ -242,6 +257,7 @@ impl Default for IntersectionUnit {
             patch_id: Default::default(),
             patch_first: Default::default(),
             patch_count: Default::default(),
+            patch_retire: Default::default(),
             res_re: Default::default(),
             res_addr: Default::default(),
             res_hit: Default::default(),
@@ -259,6 +275,9 @@ impl Default for IntersectionUnit {
             p_wy: Default::default(),
             p_sh: Default::default(),
             p_id: Default::default(),
+            p_retire: Default::default(),
+            alive_mem: Default::default(),
+            live: Default::default(),
             test_count: Default::default(),
             issue: Default::default(),
             take: Default::default(),
@@ -327,11 +346,12 @@ impl Logic for IntersectionUnit {
     fn update(&mut self) {
         // Clocks and register defaults (hold).
         dff_setup!(
-            self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, test_count, v1,
-            ray1, a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3, id3, v4, ray4,
-            id4, v5, ray5, id5, fw_valid, fw_ray, fw_key, fw_id
+            self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, p_retire,
+            test_count, v1, ray1, a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3,
+            id3, v4, ray4, id4, v5, ray5, id5, fw_valid, fw_ray, fw_key, fw_id
         );
         self.dir_mem_x.clock.next = self.clock.val();
+        self.alive_mem.clock.next = self.clock.val();
         self.dir_mem_y.clock.next = self.clock.val();
         self.mem_key.clock.next = self.clock.val();
         self.mem_meta.clock.next = self.clock.val();
@@ -361,12 +381,10 @@ impl Logic for IntersectionUnit {
             self.p_wy.d.next = self.patch_wy.val();
             self.p_sh.d.next = self.patch_sh.val();
             self.p_id.d.next = self.patch_id.val();
+            self.p_retire.d.next = self.patch_retire.val();
         } else if self.issue.val() {
             self.remaining.d.next = self.remaining.q.val() - self.one11.val();
             self.cur.d.next = self.cur.q.val() + self.one10.val();
-        }
-        if self.issue.val() {
-            self.test_count.d.next = self.test_count.q.val() + self.one32.val();
         }
         self.tests.next = self.test_count.q.val();
         self.dir_mem_x.read_address.next = self.cur.q.val();
@@ -377,7 +395,17 @@ impl Logic for IntersectionUnit {
         self.dir_mem_y.write_data.next = self.dir_y.val();
         self.dir_mem_x.write_enable.next = self.dir_we.val();
         self.dir_mem_y.write_enable.next = self.dir_we.val();
-        self.v1.d.next = self.issue.val();
+        // The live bits: a direction write revives its ray, a retire job's issue kills one.
+        self.alive_mem.read_address.next = self.cur.q.val();
+        self.alive_mem.write_address.next = self.cur.q.val();
+        self.alive_mem.write_data.next = false.into();
+        self.alive_mem.write_enable.next = self.issue.val() & self.p_retire.q.val();
+        if self.dir_we.val() {
+            self.alive_mem.write_address.next = self.dir_addr.val();
+            self.alive_mem.write_data.next = true.into();
+            self.alive_mem.write_enable.next = true;
+        }
+        self.v1.d.next = self.issue.val() & !self.p_retire.q.val();
         self.ray1.d.next = self.cur.q.val();
         self.a1x.d.next = self.p_ax.q.val();
         self.a1y.d.next = self.p_ay.q.val();
@@ -401,7 +429,12 @@ impl Logic for IntersectionUnit {
         self.mul_dx_wx.b.next = self.w1x.q.val();
         self.mul_dy_wy.a.next = self.dir_mem_y.read_data.val();
         self.mul_dy_wy.b.next = self.w1y.q.val();
-        self.v2.d.next = self.v1.q.val();
+        // A test of a dead ray goes on as a bubble.
+        self.live.next = self.v1.q.val() & self.alive_mem.read_data.val().any();
+        if self.live.val() {
+            self.test_count.d.next = self.test_count.q.val() + self.one32.val();
+        }
+        self.v2.d.next = self.live.val();
         self.ray2.d.next = self.ray1.q.val();
         self.sh2.d.next = self.sh1.q.val();
         self.id2.d.next = self.id1.q.val();

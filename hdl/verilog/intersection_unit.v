@@ -1,7 +1,7 @@
 // intersection_unit: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
+module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
     
     // Module arguments
     input wire  clock;
@@ -21,6 +21,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     input wire  [15:0] patch_id;
     input wire  [9:0] patch_first;
     input wire  [10:0] patch_count;
+    input wire  patch_retire;
     input wire  res_re;
     input wire  [9:0] res_addr;
     output reg  res_hit;
@@ -69,6 +70,15 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     reg  [15:0] p_id$d;
     wire  [15:0] p_id$q;
     reg  p_id$clock;
+    reg  p_retire$d;
+    wire  p_retire$q;
+    reg  p_retire$clock;
+    reg  alive_mem$clock;
+    reg  [9:0] alive_mem$read_address;
+    wire  alive_mem$read_data;
+    reg  [9:0] alive_mem$write_address;
+    reg  alive_mem$write_data;
+    reg  alive_mem$write_enable;
     reg  [31:0] test_count$d;
     wire  [31:0] test_count$q;
     reg  test_count$clock;
@@ -210,6 +220,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     reg  fw_id$clock;
     
     // Local signals
+    reg  live;
     reg  issue;
     reg  take;
     reg  [31:0] side_a;
@@ -273,6 +284,19 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         .d(p_id$d),
         .q(p_id$q),
         .clock(p_id$clock)
+    );
+    intersection_unit$p_retire p_retire(
+        .d(p_retire$d),
+        .q(p_retire$q),
+        .clock(p_retire$clock)
+    );
+    intersection_unit$alive_mem alive_mem(
+        .clock(alive_mem$clock),
+        .read_address(alive_mem$read_address),
+        .read_data(alive_mem$read_data),
+        .write_address(alive_mem$write_address),
+        .write_data(alive_mem$write_data),
+        .write_enable(alive_mem$write_enable)
     );
     intersection_unit$test_count test_count(
         .d(test_count$d),
@@ -506,6 +530,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         p_wy$clock = clock;
         p_sh$clock = clock;
         p_id$clock = clock;
+        p_retire$clock = clock;
         test_count$clock = clock;
         v1$clock = clock;
         ray1$clock = clock;
@@ -545,6 +570,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         p_wy$d = p_wy$q;
         p_sh$d = p_sh$q;
         p_id$d = p_id$q;
+        p_retire$d = p_retire$q;
         test_count$d = test_count$q;
         v1$d = v1$q;
         ray1$d = ray1$q;
@@ -575,6 +601,7 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         fw_key$d = fw_key$q;
         fw_id$d = fw_id$q;
         dir_mem_x$clock = clock;
+        alive_mem$clock = clock;
         dir_mem_y$clock = clock;
         mem_key$clock = clock;
         mem_meta$clock = clock;
@@ -599,13 +626,11 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
             p_wy$d = patch_wy;
             p_sh$d = patch_sh;
             p_id$d = patch_id;
+            p_retire$d = patch_retire;
         end
         else if (issue) begin
             remaining$d = remaining$q - one11;
             cur$d = cur$q + one10;
-        end
-        if (issue) begin
-            test_count$d = test_count$q + one32;
         end
         tests = test_count$q;
         dir_mem_x$read_address = cur$q;
@@ -616,7 +641,16 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         dir_mem_y$write_data = dir_y;
         dir_mem_x$write_enable = dir_we;
         dir_mem_y$write_enable = dir_we;
-        v1$d = issue;
+        alive_mem$read_address = cur$q;
+        alive_mem$write_address = cur$q;
+        alive_mem$write_data = 1'b0;
+        alive_mem$write_enable = issue & p_retire$q;
+        if (dir_we) begin
+            alive_mem$write_address = dir_addr;
+            alive_mem$write_data = 1'b1;
+            alive_mem$write_enable = 1'b1;
+        end
+        v1$d = issue & ~p_retire$q;
         ray1$d = cur$q;
         a1x$d = p_ax$q;
         a1y$d = p_ay$q;
@@ -638,7 +672,11 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         mul_dx_wx$b = w1x$q;
         mul_dy_wy$a = dir_mem_y$read_data;
         mul_dy_wy$b = w1y$q;
-        v2$d = v1$q;
+        live = v1$q & |alive_mem$read_data;
+        if (live) begin
+            test_count$d = test_count$q + one32;
+        end
+        v2$d = live;
         ray2$d = ray1$q;
         sh2$d = sh1$q;
         id2$d = id1$q;
@@ -738,6 +776,32 @@ module intersection_unit$a1y(d,q,clock);
     end
           
 endmodule // intersection_unit$a1y
+
+
+module intersection_unit$alive_mem(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  read_data;
+    input wire  [9:0] write_address;
+    input wire  write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [0:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 1'd0;
+       read_data = 1'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // intersection_unit$alive_mem
 
 
 module intersection_unit$b1x(d,q,clock);
@@ -1354,6 +1418,25 @@ module intersection_unit$p_id(d,q,clock);
     end
           
 endmodule // intersection_unit$p_id
+
+
+module intersection_unit$p_retire(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // intersection_unit$p_retire
 
 
 module intersection_unit$p_sh(d,q,clock);

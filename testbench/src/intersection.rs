@@ -19,12 +19,26 @@ impl_clocked!(IntersectionUnit);
 /// Rays a bundle may hold.
 pub const MAX_BUNDLE: usize = 1 << RAY_BITS;
 
-/// One patch and the rays `first .. first + count` (modulo the bundle memory) it is tested against.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// One patch and the rays `first .. first + count` (modulo the bundle memory) it is tested
+/// against, or, with `retire`, the rays to retire (the patch is ignored).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct Job {
     pub patch: PatchSetup,
     pub first: u16,
     pub count: u16,
+    pub retire: bool,
+}
+
+impl Job {
+    /// A test job.
+    pub fn test(patch: PatchSetup, first: u16, count: u16) -> Job {
+        Job { patch, first, count, retire: false }
+    }
+
+    /// A retire job for rays `first .. first + count`.
+    pub fn retire(first: u16, count: u16) -> Job {
+        Job { first, count, retire: true, ..Job::default() }
+    }
 }
 
 fn field<const N: usize>(v: i64) -> Bits<N> {
@@ -43,13 +57,25 @@ pub fn rays_touched(dirs: &[[i32; 2]], jobs: &[Job]) -> usize {
         .min(MAX_BUNDLE)
 }
 
-/// What the unit must hold after the jobs, for rays `0..rays_touched` (the bit-true model).
-pub fn model_bundle(dirs: &[[i32; 2]], jobs: &[Job]) -> Vec<Option<Nearest>> {
+/// What a unit fresh from power-up holds after `dirs` were written and the jobs ran: every ray's
+/// nearest hit for rays `0..rays_touched`, and the number of tests of live rays (the bit-true
+/// model). The written rays start live, the others dead.
+pub fn model_bundle_counted(dirs: &[[i32; 2]], jobs: &[Job]) -> (Vec<Option<Nearest>>, u64) {
     let mut best = vec![None; MAX_BUNDLE];
+    let mut live: Vec<bool> = (0..MAX_BUNDLE).map(|r| r < dirs.len()).collect();
+    let mut tests = 0;
     for j in jobs {
         for k in 0..j.count as usize {
             let r = (j.first as usize + k) % MAX_BUNDLE;
-            if let Some(key) = test(&j.patch, dirs.get(r).copied().unwrap_or_default()) {
+            if j.retire {
+                live[r] = false;
+                continue;
+            }
+            if !live[r] {
+                continue;
+            }
+            tests += 1;
+            if let Some(key) = test(&j.patch, dirs[r]) {
                 if replaces(key, j.patch.id, best[r]) {
                     best[r] = Some(Nearest { key, id: j.patch.id });
                 }
@@ -57,7 +83,12 @@ pub fn model_bundle(dirs: &[[i32; 2]], jobs: &[Job]) -> Vec<Option<Nearest>> {
         }
     }
     best.truncate(rays_touched(dirs, jobs));
-    best
+    (best, tests)
+}
+
+/// [`model_bundle_counted`]'s hits.
+pub fn model_bundle(dirs: &[[i32; 2]], jobs: &[Job]) -> Vec<Option<Nearest>> {
+    model_bundle_counted(dirs, jobs).0
 }
 
 /// Writes the bundle's ray directions (one per cycle).
@@ -104,6 +135,7 @@ pub fn stream_jobs(
                 u.patch_id.next = (p.id as u64).into();
                 u.patch_first.next = (j.first as u64 % MAX_BUNDLE as u64).into();
                 u.patch_count.next = (j.count as u64).into();
+                u.patch_retire.next = j.retire;
             }
         })?;
         let u = drv.uut();

@@ -11,7 +11,7 @@ use rand_chacha::ChaCha8Rng;
 use shelling_hdl::formats::{direction, Quantizer};
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
-use shelling_testbench::intersection::{model_bundle, run_bundle, Job, MAX_BUNDLE};
+use shelling_testbench::intersection::{model_bundle, model_bundle_counted, run_bundle, Job, MAX_BUNDLE};
 use shelling_testbench::{waveform_path, Driver, Error, Pacing, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
 
@@ -26,7 +26,7 @@ fn check(name: &str, dirs: &[[i32; 2]], jobs: &[Job], pacing: Pacing, seed: u64)
     let mut board = Scoreboard::new(name, seed, model_bundle(dirs, jobs)).with_context(pacing.to_string());
     board.check_all(hits.into_iter().enumerate().map(|(i, h)| (i as u64, h)))?;
     board.finish()?;
-    let tests: u64 = jobs.iter().map(|j| j.count as u64).sum();
+    let tests = model_bundle_counted(dirs, jobs).1;
     if drv.uut().tests.val().to_u64() != tests {
         return Err(Error::new(format!(
             "{name}: tests counter {} != {tests}",
@@ -85,7 +85,11 @@ fn scene_bundle(rng: &mut ChaCha8Rng, rays: usize, patches: usize) -> (Vec<[i32;
         if let Verdict::Pass(p) = screen(&setup, &Patch { id, a, b }) {
             let first = rng.random_range(0..rays) as u16;
             let count = rng.random_range(0..=rays) as u16;
-            jobs.push(Job { patch: p, first, count });
+            jobs.push(Job::test(p, first, count));
+            if rng.random_range(0..12) == 0 {
+                // Tracking: a few rays leave the bundle.
+                jobs.push(Job::retire(rng.random_range(0..rays) as u16, rng.random_range(0..8)));
+            }
         }
         id = id.wrapping_add(1);
     }
@@ -99,21 +103,21 @@ fn random_vectors_match_the_model_bit_for_bit() -> Result<()> {
     for (k, pacing) in [Pacing::NONE, Pacing { idle: true, backpressure: false }].into_iter().enumerate() {
         let seed = 0x1ee7_0000 + k as u64;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let dirs: Vec<[i32; 2]> = (0..64)
+        let dirs: Vec<[i32; 2]> = (0..128)
             .map(|i| if i % 2 == 0 { unit_dir(&mut rng) } else { [raw(&mut rng, 18), raw(&mut rng, 18)] })
             .collect();
-        let jobs: Vec<Job> = (0..400)
+        let jobs: Vec<Job> = (0..800)
             .map(|i| {
                 let id = rng.random();
-                Job { patch: raw_patch(&mut rng, id), first: (i * 13 % 64) as u16, count: 64 }
+                Job::test(raw_patch(&mut rng, id), (i * 13 % 64) as u16, 64)
             })
             .collect();
         check("raw vectors", &dirs, &jobs, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
-        total += jobs.iter().map(|j| j.count as u64).sum::<u64>();
+        total += model_bundle_counted(&dirs, &jobs).1;
         let (dirs, jobs) = scene_bundle(&mut rng, 256, 200);
         check("scene vectors", &dirs, &jobs, pacing, seed)
             .map_err(|e| e.context(format!("seed {seed:#x}")))?;
-        total += jobs.iter().map(|j| j.count as u64).sum::<u64>();
+        total += model_bundle_counted(&dirs, &jobs).1;
     }
     assert!(total >= 100_000, "only {total} vectors");
     Ok(())
@@ -130,53 +134,29 @@ fn corner_cases() -> Result<()> {
     let patch = |id, a: [i32; 2], b: [i32; 2], sh| PatchSetup { id, a, b, w, sh };
     let jobs = vec![
         // Endpoint exactly on the +x ray (side value 0) on either end: both hit.
-        Job { patch: patch(3, [640, 0], [640, 640], 0), first: 0, count: 8 },
-        Job { patch: patch(2, [640, -640], [640, 0], 0), first: 0, count: 8 },
+        Job::test(patch(3, [640, 0], [640, 640], 0), 0, 8),
+        Job::test(patch(2, [640, -640], [640, 0], 0), 0, 8),
         // A patch parallel to the +x ray on its line: both side values 0, hit by the model's rule.
-        Job { patch: patch(9, [64, 0], [128, 0], 5), first: 0, count: 1 },
+        Job::test(patch(9, [64, 0], [128, 0], 5), 0, 1),
         // Equal keys: the lower id wins, whichever comes first.
-        Job { patch: patch(7, [640, -640], [640, 640], 0), first: 0, count: 8 },
-        Job { patch: patch(5, [640, -640], [640, 640], 0), first: 0, count: 8 },
+        Job::test(patch(7, [640, -640], [640, 640], 0), 0, 8),
+        Job::test(patch(5, [640, -640], [640, 640], 0), 0, 8),
         // Extreme coordinates and exponents, saturating keys.
-        Job {
-            patch: PatchSetup { id: 0xffff, a: [hi, lo], b: [hi, hi], w: [hi, hi], sh: -3 },
-            first: 0,
-            count: 8,
-        },
-        Job {
-            patch: PatchSetup { id: 1, a: [lo, lo], b: [lo, hi], w: [lo, lo], sh: -2 },
-            first: 0,
-            count: 8,
-        },
-        Job { patch: PatchSetup { id: 4, a: [hi, lo], b: [hi, hi], w: [hi, 0], sh: 31 }, first: 0, count: 8 },
+        Job::test(PatchSetup { id: 0xffff, a: [hi, lo], b: [hi, hi], w: [hi, hi], sh: -3 }, 0, 8),
+        Job::test(PatchSetup { id: 1, a: [lo, lo], b: [lo, hi], w: [lo, lo], sh: -2 }, 0, 8),
+        Job::test(PatchSetup { id: 4, a: [hi, lo], b: [hi, hi], w: [hi, 0], sh: 31 }, 0, 8),
         // Zero-length bundles, back to back.
-        Job { patch: patch(11, [640, -640], [640, 640], 0), first: 3, count: 0 },
-        Job { patch: patch(12, [640, -640], [640, 640], 0), first: 5, count: 0 },
+        Job::test(patch(11, [640, -640], [640, 640], 0), 3, 0),
+        Job::test(patch(12, [640, -640], [640, 640], 0), 5, 0),
         // One-ray bundles on ray 8 (no other job touches it), back to back: the read-modify-write
         // hazard. Equal keys, so the lowest id (19) must survive the later, higher ones.
-        Job {
-            patch: PatchSetup { id: 19, a: [64, 64], b: [-64, 64], w: [0, 1 << 16], sh: 3 },
-            first: 8,
-            count: 1,
-        },
-        Job {
-            patch: PatchSetup { id: 21, a: [64, 32], b: [-64, 32], w: [0, 1 << 16], sh: 3 },
-            first: 8,
-            count: 1,
-        },
-        Job {
-            patch: PatchSetup { id: 20, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 },
-            first: 8,
-            count: 1,
-        },
-        Job {
-            patch: PatchSetup { id: 22, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 },
-            first: 8,
-            count: 1,
-        },
+        Job::test(PatchSetup { id: 19, a: [64, 64], b: [-64, 64], w: [0, 1 << 16], sh: 3 }, 8, 1),
+        Job::test(PatchSetup { id: 21, a: [64, 32], b: [-64, 32], w: [0, 1 << 16], sh: 3 }, 8, 1),
+        Job::test(PatchSetup { id: 20, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 }, 8, 1),
+        Job::test(PatchSetup { id: 22, a: [64, 16], b: [-64, 16], w: [0, 1 << 16], sh: 3 }, 8, 1),
         // Two- and three-ray bundles wrapping around the end of the ray memory.
-        Job { patch: patch(30, [8, -8], [8, 8], 0), first: (MAX_BUNDLE - 1) as u16, count: 2 },
-        Job { patch: patch(31, [8, -8], [8, 8], 0), first: (MAX_BUNDLE - 1) as u16, count: 3 },
+        Job::test(patch(30, [8, -8], [8, 8], 0), (MAX_BUNDLE - 1) as u16, 2),
+        Job::test(patch(31, [8, -8], [8, 8], 0), (MAX_BUNDLE - 1) as u16, 3),
     ];
     for pacing in [Pacing::NONE, Pacing { idle: true, backpressure: false }] {
         check("corner cases", &dirs, &jobs, pacing, seed)?;
@@ -184,9 +164,8 @@ fn corner_cases() -> Result<()> {
     // One-ray jobs on one ray, hundreds in a row, random patches: the hazard under load.
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let dirs: Vec<[i32; 2]> = (0..4).map(|_| unit_dir(&mut rng)).collect();
-    let jobs: Vec<Job> = (0..600)
-        .map(|i| Job { patch: raw_patch(&mut rng, (i % 97) as u16), first: (i / 200) as u16, count: 1 })
-        .collect();
+    let jobs: Vec<Job> =
+        (0..600).map(|i| Job::test(raw_patch(&mut rng, (i % 97) as u16), (i / 200) as u16, 1)).collect();
     check("one-ray bundles", &dirs, &jobs, Pacing::NONE, seed)?;
     let updates = model_bundle(&dirs, &jobs).iter().flatten().count();
     assert!(updates > 0, "the one-ray run never hit");
@@ -194,11 +173,43 @@ fn corner_cases() -> Result<()> {
 }
 
 #[test]
+fn retired_rays_are_neither_tested_nor_updated() -> Result<()> {
+    let e = 1 << 16;
+    let dirs = vec![[e, 0]; 8];
+    let w = [1 << 16, 0];
+    let wall = |id, x: i32| PatchSetup { id, a: [x, -640], b: [x, 640], w: [w[0] * 64 / x, 0], sh: 0 };
+    let jobs = vec![
+        Job::test(wall(1, 640), 0, 8),
+        Job::retire(2, 2),
+        // Nearer: would replace every ray's hit, but rays 2 and 3 have left.
+        Job::test(wall(2, 320), 0, 8),
+        // Retire then test the same ray on the next clock (the live bit's write-then-read).
+        Job::retire(5, 1),
+        Job::test(wall(3, 160), 5, 1),
+        // Rays beyond the written directions are dead; a retire wraps around the ray memory.
+        Job::test(wall(4, 80), 6, 8),
+        Job::retire((MAX_BUNDLE - 1) as u16, 2),
+        Job::test(wall(5, 40), 0, 1),
+    ];
+    let (hits, tests) = model_bundle_counted(&dirs, &jobs);
+    let ids: Vec<Option<u16>> = hits.iter().map(|h| h.map(|n| n.id)).collect();
+    assert_eq!(
+        ids[..8],
+        [Some(2), Some(2), Some(1), Some(1), Some(2), Some(2), Some(4), Some(4)],
+        "the model's reading of the stream"
+    );
+    assert_eq!(tests, 8 + 6 + 0 + 2 + 0);
+    for pacing in [Pacing::NONE, Pacing { idle: true, backpressure: false }] {
+        check("retired rays", &dirs, &jobs, pacing, 21)?;
+    }
+    Ok(())
+}
+
+#[test]
 fn back_to_back_patches_keep_one_test_per_clock() -> Result<()> {
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     let dirs: Vec<[i32; 2]> = (0..32).map(|_| unit_dir(&mut rng)).collect();
-    let jobs: Vec<Job> =
-        (0..50).map(|i| Job { patch: raw_patch(&mut rng, i), first: 0, count: 32 }).collect();
+    let jobs: Vec<Job> = (0..50).map(|i| Job::test(raw_patch(&mut rng, i), 0, 32)).collect();
     let cycles = check("throughput", &dirs, &jobs, Pacing::NONE, 3)?;
     // 1600 tests at II = 1, plus the pipeline's fill and drain.
     assert!(cycles <= 1600 + 8, "{cycles} cycles for 1600 tests");
@@ -210,11 +221,7 @@ fn exported_verilog_reproduces_the_simulation() -> Result<()> {
     let seed = 0x5eed;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let (dirs, mut jobs) = scene_bundle(&mut rng, 64, 60);
-    jobs.extend((0..60).map(|i| Job {
-        patch: raw_patch(&mut rng, i),
-        first: (i % 64) as u16,
-        count: (i % 5) as u16,
-    }));
+    jobs.extend((0..60).map(|i| Job::test(raw_patch(&mut rng, i), (i % 64) as u16, (i % 5) as u16)));
     let mut drv = driver()?;
     drv.record_ports()?;
     run_bundle(&mut drv, &dirs, &jobs, Pacing { idle: true, backpressure: false }, seed)?;
