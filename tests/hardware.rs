@@ -135,3 +135,17 @@ fn patch_loader_and_screener_synthesize_without_latches() {
         assert_eq!(cells(&stat, "MULT18X18D"), dsps, "{block}: multipliers map to DSP blocks:\n{stat}");
     }
 }
+
+#[test]
+fn patch_cache_synthesizes_to_block_ram_without_latches() {
+    let stat = synth_ecp5("patch_cache");
+    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
+        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
+    }
+    // Five lanes (tag, four coordinates) of 4096 × 17 bits: 4 or 5 DP16KD each.
+    let brams = cells(&stat, "DP16KD");
+    assert!((20..=25).contains(&brams), "the 4096-line memories map to block RAM ({brams} DP16KD):\n{stat}");
+    assert_eq!(cells(&stat, "MULT18X18D"), 0, "{stat}");
+    assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
+    println!("{stat}");
+}

@@ -1,3 +1,4 @@
 patch_loader.v
+patch_cache.v
 screener.v
 intersection_unit.v

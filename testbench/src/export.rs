@@ -5,6 +5,7 @@
 use crate::replay::export_verilog;
 use crate::{Error, Result};
 use rust_hdl::core::prelude::Block;
+use shelling_hdl::cache::PatchCache;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
 use shelling_hdl::screener::Screener;
@@ -19,10 +20,13 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     iu.connect_all();
     let mut loader = PatchLoader::default();
     loader.connect_all();
+    let mut cache = PatchCache::default();
+    cache.connect_all();
     let mut screener = Screener::default();
     screener.connect_all();
     vec![
         ("patch_loader", Box::new(loader)),
+        ("patch_cache", Box::new(cache)),
         ("screener", Box::new(screener)),
         ("intersection_unit", Box::new(iu)),
     ]

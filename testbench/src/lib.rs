@@ -13,6 +13,8 @@
 //!   the first mismatch (index, cycle, seed, DUT vs model).
 //! - [`export`]: the Verilog of every block, one file each, for `shelling export-verilog` and
 //!   the committed copies in `hdl/verilog/`.
+//! - [`memory`]: [`HostMemory`], the shared host memory as a cycle-accurate model: one port,
+//!   one patch at a time, `T_c` cycles per load, requests answered in order.
 //! - [`intersection`]: the intersection unit's bundle setup, paced patch stream and readout,
 //!   with the bit-true model's answer ([`intersection::model_bundle`]).
 //! - [`replay`]: rung 4 of the equivalence ladder (`DESIGN.md` §4): the ports recorded during a
@@ -77,6 +79,7 @@ pub mod driver;
 pub mod error;
 pub mod export;
 pub mod intersection;
+pub mod memory;
 pub mod replay;
 pub mod scoreboard;
 pub mod stream;
@@ -84,6 +87,7 @@ pub mod vcd;
 
 pub use driver::{Clocked, Driver};
 pub use error::{Error, Result};
+pub use memory::HostMemory;
 pub use replay::{Port, PortDir, Recording, ReplayReport, Simulator};
 pub use scoreboard::Scoreboard;
 pub use stream::{Monitor, Pacing, Received, Source};

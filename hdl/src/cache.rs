@@ -1,0 +1,611 @@
+//! The patch cache: a per-PE, direct-mapped cache of patches between the patch loader's memory
+//! port and the host memory, the paper's "high speed cache memory for each PE": a patch found
+//! in the cache costs one cycle of the PE's time instead of a `T_c`-cycle load from the shared
+//! host memory.
+//!
+//! # Ports ([`PatchCache`])
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | rising-edge clock |
+//! | `cfg_enable` | in | 1 | cache on; off: a combinational pass-through (see below) |
+//! | `cfg_mask` | in | 12 | lines − 1 (lines a power of two, 1 … [`LINES`]); line of id = `id & cfg_mask` |
+//! | `req`, `addr` | in | 1, 16 | loader side: request, one clock pulse per patch, `addr` = patch id |
+//! | `resp_valid`, `resp_ax`, `resp_ay`, `resp_bx`, `resp_by` | out | 1, 4 × 17 | loader side: response |
+//! | `mem_req`, `mem_addr` | out | 1, 16 | host side: request, one clock pulse per miss |
+//! | `mem_valid`, `mem_ax`, `mem_ay`, `mem_bx`, `mem_by` | in | 1, 4 × 17 | host side: response |
+//! | `hits`, `misses` | out | 32, 32 | lookups that hit / missed so far, wrap at 2³² |
+//!
+//! Both sides speak the protocol of the patch loader's memory port ([`crate::loader`], "The
+//! memory port"): one request pulse per patch, exactly one response per request, in request
+//! order, any number ≥ 1 of cycles later. The loader is the client on the `req` side; the host
+//! memory serves the `mem_*` side.
+//!
+//! Configuration: `cfg_enable` and `cfg_mask` are held constant during a run and may change
+//! only while no request is outstanding. The cache contents survive a change of either (they
+//! are never flushed; memories are zero, i.e. all lines invalid, at power-up only): a line holds
+//! its patch's whole id, so whatever the mask, a hit always returns the right patch as long as
+//! the host memory's contents do not change.
+//!
+//! Number formats: ids are 16-bit unsigned; coordinates are world coordinates Q11.6 unsigned in
+//! 17 bits (`crate::formats`), stored and passed through unchanged.
+//!
+//! # Disabled: pass-through
+//!
+//! With `cfg_enable` low the block is wires: `mem_req = req`, `mem_addr = addr`,
+//! `resp_valid = mem_valid`, `resp_* = mem_*`, combinationally; nothing is queued, looked up
+//! or stored and the counters hold. A PE without cache pays no cycle.
+//!
+//! # Enabled: structure
+//!
+//! * A request queue of [`QUEUE_DEPTH`] ids (a [`Bram`] lane with registered read, as the
+//!   loader's FIFO). The client must keep at most [`QUEUE_DEPTH`] requests outstanding (the
+//!   loader does: at most one per FIFO slot, `crate::loader::DEPTH` = 16); every queued request
+//!   is outstanding, so the queue cannot overflow.
+//! * Five [`Bram`] lanes of [`LINES`] words: the tag (bit 16: valid, bits 15…0: the whole id)
+//!   and the four 17-bit coordinates; zero (invalid) at power-up.
+//! * A three-stage pipeline, one request at a time in request order:
+//!   - **H** (head): the queue's head id is at the queue lane's read register; the tag and data
+//!     lanes are read at its line.
+//!   - **B** (lookup): the request advanced from H; the lanes' read registers hold its line, so
+//!     `hit = tag == {1, id}`. A hit is answered from the data lanes; a miss issues the host
+//!     request and goes to W.
+//!   - **W** (wait): the miss waits for `mem_valid`; the response is written into its line
+//!     (tag and data) and forwarded to the client. A `mem_valid` with no miss waiting is a
+//!     protocol violation and is ignored.
+//!
+//!   H advances into B when B is empty or hits, and W is empty. After a fill, H waits one more
+//!   cycle and its line is read again: the lanes read before they write, so the read made in
+//!   the fill cycle may be stale. There is no other hazard: only fills write, and nothing is
+//!   looked up while a fill is pending.
+//! * With the cache enabled every output is a register (`mem_req`, `mem_addr`, `resp_*`,
+//!   counters): no combinational path crosses the block. `resp_*` keep their last value while
+//!   `resp_valid` is low (zero after power-up), identically in the rust-hdl simulation and in
+//!   the Verilog.
+//!
+//! # Latency and throughput (enabled)
+//!
+//! For a request seen (`req` high) in cycle `a` by an idle block ([`model::schedule`] gives
+//! the exact cycles of any stream):
+//!
+//! * it is looked up (in B) in cycle `a + 3` ([`model::LOOKUP_DELAY`]);
+//! * a **hit** is answered (`resp_valid`) in cycle `a + 4` ([`model::HIT_LATENCY`]);
+//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 4`; the host answers in
+//!   cycle `a + 4 + T_c`; the client's response follows in cycle `a + 5 + T_c`
+//!   (`T_c +` [`model::MISS_OVERHEAD`]).
+//!
+//! Request `k` is looked up in cycle `b_k = max(a_k + 3, f_{k−1})`, where `f` is when the
+//! lookup stage is free again: `f_k = b_k + 1` after a hit, `b_k + T_c + 3` after a miss (its
+//! host request goes out in `b_k + 1`, the fill comes in `b_k + 1 + T_c`, the next line is read
+//! again in the cycle after it). So a stream of hits is answered **one per clock**, and each
+//! miss occupies the pipeline for `T_c + 3` cycles. The host sees at most one request
+//! outstanding.
+//!
+//! # Model
+//!
+//! [`model::Cache`]: the direct-mapped cache state, `access(id) → hit?`. For any request
+//! stream the RTL's hit/miss sequence equals the model's, its host requests are exactly the
+//! missed ids in order, and the responses carry the host memory's coordinates of the requested
+//! ids in request order. [`model::schedule`] gives the exact lookup, host request and response
+//! cycles from the request cycles, the hit/miss sequence and `T_c`.
+
+use crate::leaf::Bram;
+use rust_hdl::prelude::*;
+
+/// Address width of the cache lanes: at most `2^CACHE_BITS` lines.
+pub const CACHE_BITS: usize = 12;
+/// The largest number of lines (4096 patches).
+pub const LINES: usize = 1 << CACHE_BITS;
+/// Request queue capacity: the most requests a client may keep outstanding.
+pub const QUEUE_DEPTH: usize = 16;
+/// Address width of the request queue: `2^QUEUE_BITS == QUEUE_DEPTH`.
+pub const QUEUE_BITS: usize = 4;
+
+/// The behavioural model of the patch cache: its state, and its exact timing.
+pub mod model {
+    use super::LINES;
+
+    /// Cycles from a request (`req` high) to its lookup, in an idle block.
+    pub const LOOKUP_DELAY: u64 = 3;
+    /// Cycles from a request to its response when it hits, in an idle block.
+    pub const HIT_LATENCY: u64 = 4;
+    /// Cycles from a request to its response beyond the host's `T_c` when it misses, in an idle
+    /// block: the response comes `T_c + MISS_OVERHEAD` cycles after the request.
+    pub const MISS_OVERHEAD: u64 = 5;
+
+    /// The mask for `lines` lines (a power of two, 1 … [`LINES`]), or `None`.
+    pub fn mask_for(lines: usize) -> Option<u16> {
+        (lines.is_power_of_two() && lines <= LINES).then(|| (lines - 1) as u16)
+    }
+
+    /// A direct-mapped cache of patch ids: line `id & mask` holds the last id that missed
+    /// there. The contents survive [`Cache::set_mask`], as the RTL's memories do.
+    #[derive(Clone, Debug, PartialEq, Eq)]
+    pub struct Cache {
+        mask: u16,
+        lines: Vec<Option<u16>>,
+    }
+
+    impl Cache {
+        /// An empty cache (all lines invalid, as at power-up) with line mask `mask`.
+        ///
+        /// # Panics
+        /// If `mask` does not fit the 12-bit `cfg_mask` (`mask ≥ LINES`).
+        pub fn new(mask: u16) -> Self {
+            let mut cache = Self { mask: 0, lines: vec![None; LINES] };
+            cache.set_mask(mask);
+            cache
+        }
+
+        /// Changes the mask, keeping the contents (a new `cfg_mask` between runs).
+        ///
+        /// # Panics
+        /// If `mask ≥ LINES`.
+        pub fn set_mask(&mut self, mask: u16) {
+            assert!((mask as usize) < LINES, "cache mask {mask:#x} does not fit 12 bits");
+            self.mask = mask;
+        }
+
+        /// The line mask.
+        pub fn mask(&self) -> u16 {
+            self.mask
+        }
+
+        /// The line `id` maps to.
+        pub fn line(&self, id: u16) -> usize {
+            (id & self.mask) as usize
+        }
+
+        /// Looks `id` up: `true` on a hit; on a miss the line is filled with `id`.
+        pub fn access(&mut self, id: u16) -> bool {
+            let line = self.line(id);
+            let hit = self.lines[line] == Some(id);
+            self.lines[line] = Some(id);
+            hit
+        }
+
+        /// The hit/miss sequence of `ids`, accessed in order.
+        pub fn run(&mut self, ids: &[u16]) -> Vec<bool> {
+            ids.iter().map(|&id| self.access(id)).collect()
+        }
+    }
+
+    /// When one request is processed by the RTL.
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub struct RequestTiming {
+        /// The cycle it is in the lookup stage (B).
+        pub lookup: u64,
+        /// The cycle of its host request (`mem_req`), on a miss.
+        pub host_request: Option<u64>,
+        /// The cycle of its response (`resp_valid`).
+        pub response: u64,
+    }
+
+    /// The exact cycles of a request stream through the enabled RTL, from power-up or from an
+    /// idle block (the stream's first request comes no earlier than the cycle in which the
+    /// last earlier request was answered): request `k` is seen in cycle `requests[k].0`
+    /// (strictly increasing) and hits when `requests[k].1`; the host answers each request `tc`
+    /// cycles after it (it serves only this cache, which keeps at most one request
+    /// outstanding). `b_k = max(a_k + LOOKUP_DELAY, f_{k−1})`, `f_k = b_k + 1` after a hit and
+    /// `b_k + tc + 3` after a miss; a hit is answered in `b_k + 1`, a miss requested from the
+    /// host in `b_k + 1` and answered in `b_k + tc + 2`.
+    pub fn schedule(requests: &[(u64, bool)], tc: u64) -> Vec<RequestTiming> {
+        let mut free = 0u64;
+        requests
+            .iter()
+            .map(|&(a, hit)| {
+                let lookup = (a + LOOKUP_DELAY).max(free);
+                if hit {
+                    free = lookup + 1;
+                    RequestTiming { lookup, host_request: None, response: lookup + 1 }
+                } else {
+                    free = lookup + tc + 3;
+                    RequestTiming { lookup, host_request: Some(lookup + 1), response: lookup + tc + 2 }
+                }
+            })
+            .collect()
+    }
+
+    /// Cycles (rising edges) from cycle 0 until the last response of `n` hits requested back to
+    /// back from cycle 0 has been presented: `n + HIT_LATENCY`; 0 for no request.
+    pub fn all_hit_cycles(n: u64) -> u64 {
+        if n == 0 {
+            0
+        } else {
+            n + HIT_LATENCY
+        }
+    }
+}
+
+/// The patch cache (see the [module documentation](self)).
+#[derive(LogicBlock)]
+pub struct PatchCache {
+    pub clock: Signal<In, Clock>,
+    // Configuration.
+    pub cfg_enable: Signal<In, bool>,
+    pub cfg_mask: Signal<In, Bits<12>>,
+    // Loader side.
+    pub req: Signal<In, bool>,
+    pub addr: Signal<In, Bits<16>>,
+    pub resp_valid: Signal<Out, bool>,
+    pub resp_ax: Signal<Out, Bits<17>>,
+    pub resp_ay: Signal<Out, Bits<17>>,
+    pub resp_bx: Signal<Out, Bits<17>>,
+    pub resp_by: Signal<Out, Bits<17>>,
+    // Host side.
+    pub mem_req: Signal<Out, bool>,
+    pub mem_addr: Signal<Out, Bits<16>>,
+    pub mem_valid: Signal<In, bool>,
+    pub mem_ax: Signal<In, Bits<17>>,
+    pub mem_ay: Signal<In, Bits<17>>,
+    pub mem_bx: Signal<In, Bits<17>>,
+    pub mem_by: Signal<In, Bits<17>>,
+    // Counters.
+    pub hits: Signal<Out, Bits<32>>,
+    pub misses: Signal<Out, Bits<32>>,
+    // Request queue.
+    q_lane: Bram<16, QUEUE_BITS>,
+    wr_ptr: DFF<Bits<4>>,
+    rd_ptr: DFF<Bits<4>>,
+    count: DFF<Bits<5>>,
+    head_valid: DFF<bool>,
+    // Stage B (lookup) and W (a miss waiting for the host; B's registers hold its id).
+    b_valid: DFF<bool>,
+    b_id: DFF<Bits<16>>,
+    b_key: DFF<Bits<17>>,
+    b_line: DFF<Bits<12>>,
+    w_valid: DFF<bool>,
+    // Registered outputs.
+    mreq: DFF<bool>,
+    rv: DFF<bool>,
+    rax: DFF<Bits<17>>,
+    ray: DFF<Bits<17>>,
+    rbx: DFF<Bits<17>>,
+    rby: DFF<Bits<17>>,
+    hit_count: DFF<Bits<32>>,
+    miss_count: DFF<Bits<32>>,
+    // The cache lanes.
+    tag: Bram<17, CACHE_BITS>,
+    lane_ax: Bram<17, CACHE_BITS>,
+    lane_ay: Bram<17, CACHE_BITS>,
+    lane_bx: Bram<17, CACHE_BITS>,
+    lane_by: Bram<17, CACHE_BITS>,
+    // Combinational.
+    push: Signal<Local, bool>,
+    tag_match: Signal<Local, bool>,
+    hit: Signal<Local, bool>,
+    miss: Signal<Local, bool>,
+    fill: Signal<Local, bool>,
+    advance: Signal<Local, bool>,
+    wr_inc: Signal<Local, Bits<4>>,
+    rd_inc: Signal<Local, Bits<4>>,
+    rd_addr: Signal<Local, Bits<4>>,
+    count_inc: Signal<Local, Bits<5>>,
+    count_dec: Signal<Local, Bits<5>>,
+    count_left: Signal<Local, Bits<5>>,
+    head_low: Signal<Local, Bits<12>>,
+    head_line: Signal<Local, Bits<12>>,
+    head_key: Signal<Local, Bits<17>>,
+    hit_inc: Signal<Local, Bits<32>>,
+    miss_inc: Signal<Local, Bits<32>>,
+    // Constants.
+    valid_flag: Constant<Bits<17>>,
+    zero5: Constant<Bits<5>>,
+    one5: Constant<Bits<5>>,
+    one4: Constant<Bits<4>>,
+    one32: Constant<Bits<32>>,
+}
+
+impl Default for PatchCache {
+    fn default() -> Self {
+        assert_eq!(1 << QUEUE_BITS, QUEUE_DEPTH);
+        PatchCache {
+            clock: Default::default(),
+            cfg_enable: Default::default(),
+            cfg_mask: Default::default(),
+            req: Default::default(),
+            addr: Default::default(),
+            resp_valid: Default::default(),
+            resp_ax: Default::default(),
+            resp_ay: Default::default(),
+            resp_bx: Default::default(),
+            resp_by: Default::default(),
+            mem_req: Default::default(),
+            mem_addr: Default::default(),
+            mem_valid: Default::default(),
+            mem_ax: Default::default(),
+            mem_ay: Default::default(),
+            mem_bx: Default::default(),
+            mem_by: Default::default(),
+            hits: Default::default(),
+            misses: Default::default(),
+            q_lane: Default::default(),
+            wr_ptr: Default::default(),
+            rd_ptr: Default::default(),
+            count: Default::default(),
+            head_valid: Default::default(),
+            b_valid: Default::default(),
+            b_id: Default::default(),
+            b_key: Default::default(),
+            b_line: Default::default(),
+            w_valid: Default::default(),
+            mreq: Default::default(),
+            rv: Default::default(),
+            rax: Default::default(),
+            ray: Default::default(),
+            rbx: Default::default(),
+            rby: Default::default(),
+            hit_count: Default::default(),
+            miss_count: Default::default(),
+            tag: Default::default(),
+            lane_ax: Default::default(),
+            lane_ay: Default::default(),
+            lane_bx: Default::default(),
+            lane_by: Default::default(),
+            push: Default::default(),
+            tag_match: Default::default(),
+            hit: Default::default(),
+            miss: Default::default(),
+            fill: Default::default(),
+            advance: Default::default(),
+            wr_inc: Default::default(),
+            rd_inc: Default::default(),
+            rd_addr: Default::default(),
+            count_inc: Default::default(),
+            count_dec: Default::default(),
+            count_left: Default::default(),
+            head_low: Default::default(),
+            head_line: Default::default(),
+            head_key: Default::default(),
+            hit_inc: Default::default(),
+            miss_inc: Default::default(),
+            valid_flag: Constant::new(0x1_0000u64.into()),
+            zero5: Constant::new(0.into()),
+            one5: Constant::new(1.into()),
+            one4: Constant::new(1.into()),
+            one32: Constant::new(1.into()),
+        }
+    }
+}
+
+impl PatchCache {
+    /// Requests in the queue (not yet advanced to the lookup), `0..=QUEUE_DEPTH`: for
+    /// testbenches.
+    pub fn queued(&self) -> usize {
+        self.count.q.val().index()
+    }
+
+    /// Whether a miss is waiting for the host: for testbenches.
+    pub fn waiting(&self) -> bool {
+        self.w_valid.q.val()
+    }
+}
+
+impl Logic for PatchCache {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, wr_ptr, rd_ptr, count, head_valid, b_valid, b_id, b_key, b_line, w_valid, mreq, rv,
+            rax, ray, rbx, rby, hit_count, miss_count
+        );
+        self.q_lane.clock.next = self.clock.val();
+        self.tag.clock.next = self.clock.val();
+        self.lane_ax.clock.next = self.clock.val();
+        self.lane_ay.clock.next = self.clock.val();
+        self.lane_bx.clock.next = self.clock.val();
+        self.lane_by.clock.next = self.clock.val();
+
+        // Pointer and counter arithmetic, each at its exact width.
+        self.wr_inc.next = self.wr_ptr.q.val() + self.one4.val();
+        self.rd_inc.next = self.rd_ptr.q.val() + self.one4.val();
+        self.count_inc.next = self.count.q.val() + self.one5.val();
+        self.count_dec.next = self.count.q.val() - self.one5.val();
+        self.hit_inc.next = self.hit_count.q.val() + self.one32.val();
+        self.miss_inc.next = self.miss_count.q.val() + self.one32.val();
+
+        // Stage B: the lanes' read registers hold the line of B's id.
+        self.tag_match.next = self.tag.read_data.val() == self.b_key.q.val();
+        self.hit.next = self.b_valid.q.val() & self.tag_match.val();
+        self.miss.next = self.b_valid.q.val() & !self.tag_match.val();
+        // Stage W: the host's answer to the miss.
+        self.fill.next = self.w_valid.q.val() & self.mem_valid.val();
+        // H advances into B when B is empty or hits and no miss is pending (nor filled this
+        // cycle: the lanes were read before the fill's write).
+        self.advance.next = self.head_valid.q.val() & !self.w_valid.q.val() & !self.miss.val();
+
+        // Request queue: push at the tail; read the head after this cycle's pop.
+        self.push.next = self.cfg_enable.val() & self.req.val();
+        self.q_lane.write_address.next = self.wr_ptr.q.val();
+        self.q_lane.write_data.next = self.addr.val();
+        self.q_lane.write_enable.next = self.push.val();
+        if self.push.val() {
+            self.wr_ptr.d.next = self.wr_inc.val();
+        }
+        self.rd_addr.next = self.rd_ptr.q.val();
+        self.count_left.next = self.count.q.val();
+        if self.advance.val() {
+            self.rd_addr.next = self.rd_inc.val();
+            self.rd_ptr.d.next = self.rd_inc.val();
+            self.count_left.next = self.count_dec.val();
+        }
+        self.q_lane.read_address.next = self.rd_addr.val();
+        // Valid next cycle when the head was written before this edge (read before write).
+        self.head_valid.d.next = self.count_left.val() != self.zero5.val();
+        if self.push.val() & !self.advance.val() {
+            self.count.d.next = self.count_inc.val();
+        }
+        if !self.push.val() & self.advance.val() {
+            self.count.d.next = self.count_dec.val();
+        }
+
+        // Stage H: read the head's line in every lane.
+        self.head_low.next = bit_cast::<12, 16>(self.q_lane.read_data.val());
+        self.head_line.next = self.head_low.val() & self.cfg_mask.val();
+        self.head_key.next = self.valid_flag.val() | bit_cast::<17, 16>(self.q_lane.read_data.val());
+        self.tag.read_address.next = self.head_line.val();
+        self.lane_ax.read_address.next = self.head_line.val();
+        self.lane_ay.read_address.next = self.head_line.val();
+        self.lane_bx.read_address.next = self.head_line.val();
+        self.lane_by.read_address.next = self.head_line.val();
+        self.b_valid.d.next = self.advance.val();
+        if self.advance.val() {
+            self.b_id.d.next = self.q_lane.read_data.val();
+            self.b_key.d.next = self.head_key.val();
+            self.b_line.d.next = self.head_line.val();
+        }
+
+        // A miss: request the patch (next cycle) and wait for it.
+        self.mreq.d.next = self.miss.val();
+        self.w_valid.d.next = (self.w_valid.q.val() & !self.mem_valid.val()) | self.miss.val();
+
+        // The fill: write the line, tag and data.
+        self.tag.write_address.next = self.b_line.q.val();
+        self.lane_ax.write_address.next = self.b_line.q.val();
+        self.lane_ay.write_address.next = self.b_line.q.val();
+        self.lane_bx.write_address.next = self.b_line.q.val();
+        self.lane_by.write_address.next = self.b_line.q.val();
+        self.tag.write_data.next = self.b_key.q.val();
+        self.lane_ax.write_data.next = self.mem_ax.val();
+        self.lane_ay.write_data.next = self.mem_ay.val();
+        self.lane_bx.write_data.next = self.mem_bx.val();
+        self.lane_by.write_data.next = self.mem_by.val();
+        self.tag.write_enable.next = self.fill.val();
+        self.lane_ax.write_enable.next = self.fill.val();
+        self.lane_ay.write_enable.next = self.fill.val();
+        self.lane_bx.write_enable.next = self.fill.val();
+        self.lane_by.write_enable.next = self.fill.val();
+
+        // Responses: a hit from the lanes, a fill from the host.
+        self.rv.d.next = self.hit.val() | self.fill.val();
+        if self.hit.val() {
+            self.rax.d.next = self.lane_ax.read_data.val();
+            self.ray.d.next = self.lane_ay.read_data.val();
+            self.rbx.d.next = self.lane_bx.read_data.val();
+            self.rby.d.next = self.lane_by.read_data.val();
+        }
+        if self.fill.val() {
+            self.rax.d.next = self.mem_ax.val();
+            self.ray.d.next = self.mem_ay.val();
+            self.rbx.d.next = self.mem_bx.val();
+            self.rby.d.next = self.mem_by.val();
+        }
+
+        // Counters.
+        if self.hit.val() {
+            self.hit_count.d.next = self.hit_inc.val();
+        }
+        if self.miss.val() {
+            self.miss_count.d.next = self.miss_inc.val();
+        }
+        self.hits.next = self.hit_count.q.val();
+        self.misses.next = self.miss_count.q.val();
+
+        // Outputs: the pipeline's registers, or wires when disabled.
+        self.mem_req.next = self.req.val();
+        self.mem_addr.next = self.addr.val();
+        self.resp_valid.next = self.mem_valid.val();
+        self.resp_ax.next = self.mem_ax.val();
+        self.resp_ay.next = self.mem_ay.val();
+        self.resp_bx.next = self.mem_bx.val();
+        self.resp_by.next = self.mem_by.val();
+        if self.cfg_enable.val() {
+            self.mem_req.next = self.mreq.q.val();
+            self.mem_addr.next = self.b_id.q.val();
+            self.resp_valid.next = self.rv.q.val();
+            self.resp_ax.next = self.rax.q.val();
+            self.resp_ay.next = self.ray.q.val();
+            self.resp_bx.next = self.rbx.q.val();
+            self.resp_by.next = self.rby.q.val();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::model::*;
+    use super::*;
+    use rust_hdl::core::prelude::simulate;
+
+    #[test]
+    fn model_is_direct_mapped_and_keeps_contents_across_masks() {
+        let mut c = Cache::new(mask_for(16).unwrap());
+        assert_eq!(
+            c.run(&[0, 0, 16, 0, 1, 17, 1, 0xFFFF, 0xFFFF]),
+            [false, true, false, false, false, false, false, false, true]
+        );
+        // Line 0 holds 0, line 1 holds 1, line 15 holds 0xFFFF. One line: only the last id.
+        c.set_mask(0);
+        assert_eq!(c.run(&[0, 0, 1]), [true, true, false]);
+        assert_eq!(mask_for(4096), Some(0xFFF));
+        assert_eq!(mask_for(1), Some(0));
+        assert_eq!(mask_for(8192), None);
+        assert_eq!(mask_for(12), None);
+    }
+
+    #[test]
+    fn schedule_gives_one_hit_per_clock_and_t_c_plus_3_per_miss() {
+        let hits: Vec<(u64, bool)> = (0..5).map(|k| (k, true)).collect();
+        let s = schedule(&hits, 8);
+        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [4, 5, 6, 7, 8]);
+        assert_eq!(all_hit_cycles(5), 9);
+        let s = schedule(&[(0, false), (1, true), (2, false), (30, true)], 8);
+        assert_eq!(s[0], RequestTiming { lookup: 3, host_request: Some(4), response: 13 });
+        assert_eq!(s[1], RequestTiming { lookup: 14, host_request: None, response: 15 });
+        assert_eq!(s[2], RequestTiming { lookup: 15, host_request: Some(16), response: 25 });
+        assert_eq!(s[3], RequestTiming { lookup: 33, host_request: None, response: 34 });
+    }
+
+    /// A quick directed run: a miss, hits one per clock, then two ids that evict each other, at
+    /// the model's cycles.
+    #[test]
+    fn cache_quick_run_matches_model() {
+        let mut u = PatchCache::default();
+        u.connect_all();
+        check_all(&u).unwrap();
+        let tc = 2u64;
+        let data = |id: u16| [id as u64, id as u64 + 1, id as u64 * 2, 0x1_FFFF - id as u64];
+        let ids = [5u16, 5, 5, 5, 21, 5, 21];
+        let mut cache = Cache::new(15);
+        let expect = schedule(
+            &ids.iter().enumerate().map(|(k, &id)| (k as u64, cache.access(id))).collect::<Vec<_>>(),
+            tc,
+        );
+        let mut inflight: Option<(u64, u16)> = None;
+        let mut got = vec![];
+        for cycle in 0..40u64 {
+            let answer = inflight.filter(|r| r.0 == cycle).map(|r| r.1);
+            if answer.is_some() {
+                inflight = None;
+            }
+            u.clock.next = false.into();
+            u.cfg_enable.next = true;
+            u.cfg_mask.next = 15.into();
+            let req = ids.get(cycle as usize).copied();
+            u.req.next = req.is_some();
+            u.addr.next = (req.unwrap_or(0) as u64).into();
+            u.mem_valid.next = answer.is_some();
+            let m = data(answer.unwrap_or(0));
+            u.mem_ax.next = m[0].into();
+            u.mem_ay.next = m[1].into();
+            u.mem_bx.next = m[2].into();
+            u.mem_by.next = m[3].into();
+            assert!(simulate(&mut u, 100));
+            if u.mem_req.val() {
+                assert!(inflight.is_none());
+                inflight = Some((cycle + tc, u.mem_addr.val().to_u16()));
+            }
+            if u.resp_valid.val() {
+                let d =
+                    [u.resp_ax.val(), u.resp_ay.val(), u.resp_bx.val(), u.resp_by.val()].map(|b| b.to_u64());
+                got.push((cycle, d));
+            }
+            u.clock.next = true.into();
+            assert!(simulate(&mut u, 100));
+        }
+        let want: Vec<_> = ids.iter().zip(&expect).map(|(&id, t)| (t.response, data(id))).collect();
+        assert_eq!(got, want);
+        let hits = expect.iter().filter(|t| t.host_request.is_none()).count() as u32;
+        assert_eq!((hits, ids.len() as u32 - hits), (3, 4));
+        assert_eq!((u.hits.val().to_u32(), u.misses.val().to_u32()), (3, 4));
+    }
+}

@@ -1,0 +1,675 @@
+//! Block-level tests of the patch cache (`shelling_hdl::cache`), rung 3 of the equivalence
+//! ladder: a loader-like client (at most 16 requests outstanding, random idle gaps, random
+//! backpressure on its own output) against the host memory model (`HostMemory`) with
+//! T_c ∈ {1, 3, 8}, caches of 1, 16, 1024 and 4096 lines and the cache disabled, id streams with
+//! and without locality. Every response's data and order are checked against the memory, and
+//! the hit/miss sequence, the host requests and every response's cycle against the model
+//! (`model::Cache`, `model::schedule`). Then: hits one per clock, isolated misses, corner cases
+//! (ids 0 and 0xFFFF, conflicting ids, mask changes and disabled runs over the same contents),
+//! the real patch loader through the cache, and the rung-4 replay of a recorded run under
+//! Icarus Verilog.
+//!
+//! `cargo test --release -p shelling-testbench --test cache`
+
+use std::collections::VecDeque;
+use std::path::PathBuf;
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use rust_hdl::prelude::*;
+use shelling_hdl::cache::model::{self, mask_for, Cache};
+use shelling_hdl::cache::{PatchCache, QUEUE_DEPTH};
+use shelling_hdl::loader::{self, PatchLoader};
+use shelling_testbench::memory::answer_cycles;
+use shelling_testbench::{Driver, Error, HostMemory, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
+
+/// The most requests the client keeps outstanding (the loader's FIFO depth).
+const OUTSTANDING: usize = loader::DEPTH;
+
+fn b<const N: usize>(v: u64) -> Bits<N> {
+    Bits::from(v)
+}
+
+/// One random patch per id (all 2^16 unless `n` says fewer), 17-bit coordinates.
+fn random_patches(seed: u64, n: usize) -> Vec<[i32; 4]> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x6d65_6d6f_7279);
+    (0..n).map(|_| [0; 4].map(|_: i32| rng.random_range(0..1 << 17))).collect()
+}
+
+/// The cache's configuration for one run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Config {
+    Disabled,
+    /// Enabled with this many lines.
+    Lines(usize),
+}
+
+impl Config {
+    fn enable(self) -> bool {
+        self != Config::Disabled
+    }
+
+    fn mask(self) -> u16 {
+        match self {
+            Config::Disabled => 0xFFF,
+            Config::Lines(n) => mask_for(n).expect("a power of two up to 4096"),
+        }
+    }
+}
+
+impl std::fmt::Display for Config {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Config::Disabled => f.write_str("cache disabled"),
+            Config::Lines(n) => write!(f, "{n} lines"),
+        }
+    }
+}
+
+/// What one run observed (cycles are absolute driver cycles).
+#[derive(Debug, Default)]
+struct Outcome {
+    /// The cycle of each request.
+    arrivals: Vec<u64>,
+    /// The cycle of each response.
+    responses: Vec<u64>,
+    /// The cycle of each host request.
+    host_requests: Vec<u64>,
+    /// The RTL's lookups in order: `true` for a hit (from the counters).
+    lookups: Vec<bool>,
+    /// The model's hit/miss sequence.
+    model_hits: Vec<bool>,
+    max_outstanding: usize,
+    max_queued: usize,
+    /// Rising edges from the first cycle of the run to the last response, inclusive.
+    cycles: u64,
+}
+
+/// The cache under test, its host memory, and the model state, kept across runs.
+struct Bench {
+    drv: Driver<PatchCache>,
+    mem: HostMemory,
+    /// The host's response to present in the coming cycle.
+    presented: Option<[i32; 4]>,
+    model: Cache,
+    /// The model's counters (wrapping, like the RTL's).
+    hits: u32,
+    misses: u32,
+}
+
+impl Bench {
+    /// A fresh block (power-up) with a memory of `patches` answering in `tc` cycles.
+    fn new(patches: Vec<[i32; 4]>, tc: u32) -> Result<Self> {
+        Self::with_driver(new_driver()?, patches, tc)
+    }
+
+    fn with_driver(drv: Driver<PatchCache>, patches: Vec<[i32; 4]>, tc: u32) -> Result<Self> {
+        Ok(Self {
+            drv,
+            mem: HostMemory::new(patches, tc)?,
+            presented: None,
+            model: Cache::new(0),
+            hits: 0,
+            misses: 0,
+        })
+    }
+
+    /// Streams `ids` through the cache configured as `cfg` from a loader-like client: it offers
+    /// a request per cycle unless idle (`pacing.idle`) or `limit` requests are outstanding; a
+    /// response is held in the client until drained (`pacing.backpressure`: random stalls), and
+    /// only a drained one frees its slot. Checks every cycle: the queue never exceeds its
+    /// depth, host requests are the model's (misses, or every id when disabled) in order,
+    /// responses carry the memory's data in request order; at the end: the hit/miss sequence,
+    /// the exact response and host-request cycles, the counters, and that nothing more comes.
+    fn run(&mut self, cfg: Config, ids: &[u16], pacing: Pacing, seed: u64, limit: usize) -> Result<Outcome> {
+        let tc = u64::from(self.mem.tc());
+        let context = format!("seed {seed:#x}, {cfg}, {pacing}, tc = {tc}");
+        self.run_inner(cfg, ids, pacing, seed, limit).map_err(|e| e.context(context))
+    }
+
+    fn run_inner(
+        &mut self,
+        cfg: Config,
+        ids: &[u16],
+        pacing: Pacing,
+        seed: u64,
+        limit: usize,
+    ) -> Result<Outcome> {
+        assert!(limit <= OUTSTANDING);
+        let tc = u64::from(self.mem.tc());
+        let mut out = Outcome::default();
+        let expected_host: Vec<u16> = if cfg.enable() {
+            self.model.set_mask(cfg.mask());
+            out.model_hits = self.model.run(ids);
+            for &h in &out.model_hits {
+                if h {
+                    self.hits = self.hits.wrapping_add(1);
+                } else {
+                    self.misses = self.misses.wrapping_add(1);
+                }
+            }
+            ids.iter().zip(&out.model_hits).filter(|(_, &h)| !h).map(|(&id, _)| id).collect()
+        } else {
+            ids.to_vec()
+        };
+        let data: Vec<[i32; 4]> = ids
+            .iter()
+            .map(|&id| self.mem.patch(id).ok_or_else(|| format!("id {id} beyond memory")))
+            .collect::<std::result::Result<_, _>>()?;
+        let mut board = Scoreboard::new("cache responses", seed, data);
+        let mut host_board = Scoreboard::new("host requests", seed, expected_host);
+        let mut src = Source::new(ids.iter().copied(), pacing, seed);
+        let mut mon = Monitor::new(pacing, seed);
+        let mut held: VecDeque<()> = VecDeque::new();
+        let mut outstanding = 0usize;
+        let (enable, mask) = (cfg.enable(), cfg.mask());
+        let start = self.drv.cycles();
+        let limit_cycles = start + (tc + 8) * ids.len() as u64 + 1000;
+        let (mut hits, mut misses) = self.counters();
+        while out.responses.len() < ids.len() {
+            let cycle = self.drv.cycles();
+            let answer = self.presented.take();
+            let offer = src.present(outstanding < limit).copied();
+            mon.ready();
+            self.drv.drive(|u| {
+                u.cfg_enable.next = enable;
+                u.cfg_mask.next = b(mask.into());
+                u.req.next = offer.is_some();
+                u.addr.next = b(offer.unwrap_or(0).into());
+                u.mem_valid.next = answer.is_some();
+                let d = answer.unwrap_or_default().map(|c| c as u64);
+                u.mem_ax.next = b(d[0]);
+                u.mem_ay.next = b(d[1]);
+                u.mem_bx.next = b(d[2]);
+                u.mem_by.next = b(d[3]);
+            })?;
+            let u = self.drv.uut();
+            // The client: drain one held response (received in an earlier cycle), then issue.
+            if mon.observe(cycle, !held.is_empty(), || ()) {
+                held.pop_front();
+                outstanding -= 1;
+            }
+            src.accepted(offer.is_some())?;
+            if offer.is_some() {
+                out.arrivals.push(cycle);
+                outstanding += 1;
+            }
+            out.max_outstanding = out.max_outstanding.max(outstanding);
+            out.max_queued = out.max_queued.max(u.queued());
+            if u.queued() > QUEUE_DEPTH {
+                return Err(Error::new(format!("cycle {cycle}: {} requests queued", u.queued())));
+            }
+            // The host.
+            let request = u.mem_req.val().then(|| u.mem_addr.val().to_u16());
+            if let Some(id) = request {
+                host_board.check(cycle, id)?;
+                out.host_requests.push(cycle);
+            }
+            self.presented = self.mem.cycle(request)?;
+            // The response.
+            if u.resp_valid.val() {
+                let d = [u.resp_ax.val(), u.resp_ay.val(), u.resp_bx.val(), u.resp_by.val()]
+                    .map(|c| c.to_u32() as i32);
+                if out.responses.len() == out.arrivals.len() {
+                    return Err(Error::new(format!("cycle {cycle}: a response without a request")));
+                }
+                board.check(cycle, d)?;
+                out.responses.push(cycle);
+                held.push_back(());
+            }
+            self.drv.tick()?;
+            let (h, m) = self.counters();
+            match (h.wrapping_sub(hits), m.wrapping_sub(misses)) {
+                (0, 0) => {}
+                (1, 0) => out.lookups.push(true),
+                (0, 1) => out.lookups.push(false),
+                d => return Err(Error::new(format!("cycle {cycle}: counters moved by {d:?}"))),
+            }
+            (hits, misses) = (h, m);
+            if self.drv.cycles() > limit_cycles {
+                return Err(Error::new(format!(
+                    "no progress: {} of {} responses after {} cycles",
+                    out.responses.len(),
+                    ids.len(),
+                    self.drv.cycles() - start
+                )));
+            }
+        }
+        board.finish()?;
+        out.cycles = self.drv.cycles() - start;
+        // Nothing more: no response, no host request, no lookup; the host is idle.
+        for _ in 0..tc + 8 {
+            let cycle = self.drv.cycles();
+            let answer = self.presented.take();
+            self.drv.drive(|u| {
+                u.req.next = false;
+                u.mem_valid.next = answer.is_some();
+            })?;
+            let u = self.drv.uut();
+            if answer.is_some() || u.resp_valid.val() || u.mem_req.val() || u.queued() != 0 || u.waiting() {
+                return Err(Error::new(format!("cycle {cycle}: activity after the last response")));
+            }
+            self.presented = self.mem.cycle(None)?;
+            self.drv.tick()?;
+        }
+        host_board.finish()?;
+        if self.counters() != (self.hits, self.misses) || self.counters() != (hits, misses) {
+            return Err(Error::new(format!(
+                "counters (hits, misses) = {:?}, model {:?}",
+                self.counters(),
+                (self.hits, self.misses)
+            )));
+        }
+        // The model's hit/miss sequence and exact cycles.
+        if cfg.enable() {
+            if out.lookups != out.model_hits {
+                let k = out.lookups.iter().zip(&out.model_hits).position(|(a, b)| a != b).unwrap_or(0);
+                return Err(Error::new(format!(
+                    "hit/miss sequence differs from the model at request #{k} (id {}): rtl {:?}, model {:?} \
+                     ({} lookups, {} requests)",
+                    ids[k],
+                    out.lookups.get(k),
+                    out.model_hits.get(k),
+                    out.lookups.len(),
+                    ids.len()
+                )));
+            }
+            let reqs: Vec<(u64, bool)> =
+                out.arrivals.iter().copied().zip(out.model_hits.iter().copied()).collect();
+            let timing = model::schedule(&reqs, tc);
+            let responses: Vec<u64> = timing.iter().map(|t| t.response).collect();
+            let host: Vec<u64> = timing.iter().filter_map(|t| t.host_request).collect();
+            check_cycles("response", &out.responses, &responses)?;
+            check_cycles("host request", &out.host_requests, &host)?;
+        } else {
+            if !out.lookups.is_empty() {
+                return Err(Error::new("the counters moved while the cache was disabled"));
+            }
+            check_cycles("host request", &out.host_requests, &out.arrivals)?;
+            check_cycles("response", &out.responses, &answer_cycles(&out.arrivals, tc))?;
+        }
+        Ok(out)
+    }
+
+    fn counters(&self) -> (u32, u32) {
+        let u = self.drv.uut();
+        (u.hits.val().to_u32(), u.misses.val().to_u32())
+    }
+}
+
+/// Compares observed cycles with the model's, naming the first difference.
+fn check_cycles(what: &str, got: &[u64], want: &[u64]) -> Result<()> {
+    if got == want {
+        return Ok(());
+    }
+    let k = got.iter().zip(want).position(|(a, b)| a != b).unwrap_or(got.len().min(want.len()));
+    Err(Error::new(format!(
+        "{what} cycles differ from the model at #{k}: rtl {:?}, model {:?} ({} vs {} in all)",
+        got.get(k),
+        want.get(k),
+        got.len(),
+        want.len()
+    )))
+}
+
+fn new_driver() -> Result<Driver<PatchCache>> {
+    Driver::with_clock(PatchCache::default(), |u| &mut u.clock)
+}
+
+/// Uniformly random ids below `n` (hardly any repeat).
+fn uniform_ids(len: usize, seed: u64, n: usize) -> Vec<u16> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    (0..len).map(|_| rng.random_range(0..n) as u16).collect()
+}
+
+/// Ids with locality: repeats of recent ids, a working set of 3000 ids, runs of one id, and
+/// some uniformly random ids.
+fn local_ids(len: usize, seed: u64) -> Vec<u16> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x10ca_1175);
+    let pool: Vec<u16> = (0..3000).map(|_| rng.random()).collect();
+    let mut ids: Vec<u16> = Vec::with_capacity(len);
+    while ids.len() < len {
+        let r: f64 = rng.random();
+        let id = if r < 0.4 && !ids.is_empty() {
+            let back = rng.random_range(1..=ids.len().min(8));
+            ids[ids.len() - back]
+        } else if r < 0.85 {
+            pool[rng.random_range(0..pool.len())]
+        } else {
+            rng.random()
+        };
+        let run = if rng.random_bool(0.1) { rng.random_range(2..6) } else { 1 };
+        for _ in 0..run {
+            ids.push(id);
+        }
+    }
+    ids.truncate(len);
+    ids
+}
+
+/// 3 latencies × 5 configurations × 2 kinds of stream × 4 pacings × 850 requests: 102 000
+/// requests. The eight runs of one latency and configuration share one block, one memory and
+/// one model, so each run starts from the contents the previous one left.
+#[test]
+fn every_response_in_order_with_the_models_hits_and_cycles() -> Result<()> {
+    let configs =
+        [Config::Disabled, Config::Lines(1), Config::Lines(16), Config::Lines(1024), Config::Lines(4096)];
+    let mut total = 0usize;
+    let mut filled = false;
+    for tc in [1u32, 3, 8] {
+        for (c, cfg) in configs.into_iter().enumerate() {
+            let seed0 = 0xcac4_0000 + 0x100 * u64::from(tc) + 0x10 * c as u64;
+            let mut bench = Bench::new(random_patches(seed0, 1 << 16), tc)?;
+            for local in [false, true] {
+                for (k, pacing) in Pacing::ALL.into_iter().enumerate() {
+                    let seed = seed0 + 4 * u64::from(local) + k as u64;
+                    let ids = if local { local_ids(850, seed) } else { uniform_ids(850, seed, 1 << 16) };
+                    let out = bench.run(cfg, &ids, pacing, seed, OUTSTANDING)?;
+                    total += ids.len();
+                    let hits = out.model_hits.iter().filter(|&&h| h).count();
+                    println!(
+                        "tc = {tc}, {cfg}, {}, {pacing}: {} cycles, {hits} hits, max {} outstanding, \
+                         max {} queued",
+                        if local { "locality" } else { "uniform" },
+                        out.cycles,
+                        out.max_outstanding,
+                        out.max_queued
+                    );
+                    filled |= out.max_outstanding == OUTSTANDING;
+                    if local && cfg == Config::Lines(4096) {
+                        assert!(hits * 2 > ids.len(), "seed {seed:#x}: a local stream should mostly hit");
+                    }
+                }
+            }
+        }
+    }
+    assert!(total >= 100_000);
+    assert!(filled, "no run reached the client's limit of outstanding requests");
+    Ok(())
+}
+
+/// A warm cache answers a back-to-back stream of hits one per clock, each `HIT_LATENCY`
+/// cycles after its request: `n + HIT_LATENCY` cycles for `n` hits.
+#[test]
+fn a_stream_of_hits_is_answered_one_per_clock() -> Result<()> {
+    for (tc, lines) in [(8u32, 4096usize), (3, 1024), (1, 16)] {
+        let seed = 0xcac4_4175 + u64::from(tc);
+        let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
+        let cfg = Config::Lines(lines);
+        let warm: Vec<u16> =
+            (0..lines.min(300) as u16).map(|i| i.wrapping_mul(40503) & (lines as u16 - 1) | 0x4000).collect();
+        bench.run(cfg, &warm, Pacing::NONE, seed, OUTSTANDING)?;
+        let mut ids = warm.clone();
+        ids.extend(warm.iter().rev());
+        let out = bench.run(cfg, &ids, Pacing::NONE, seed, OUTSTANDING)?;
+        assert!(out.model_hits.iter().all(|&h| h), "{cfg}: all hits");
+        let first = out.arrivals[0];
+        for k in 0..ids.len() {
+            assert_eq!(out.arrivals[k], first + k as u64, "{cfg}: request #{k} back to back");
+            assert_eq!(out.responses[k], first + k as u64 + model::HIT_LATENCY, "{cfg}: response #{k}");
+        }
+        assert_eq!(out.cycles, model::all_hit_cycles(ids.len() as u64), "{cfg}");
+        assert!(out.host_requests.is_empty());
+    }
+    Ok(())
+}
+
+/// Isolated requests (the block idle each time): a miss is answered `T_c + MISS_OVERHEAD`
+/// cycles after its request, its host request `HIT_LATENCY` cycles after it; a hit
+/// `HIT_LATENCY` cycles after it. With the cache disabled a request is answered in `T_c`.
+#[test]
+fn isolated_requests_take_the_stated_latencies() -> Result<()> {
+    for tc in [1u32, 3, 8] {
+        let seed = 0xcac4_1501 + u64::from(tc);
+        let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
+        let tc = u64::from(tc);
+        for (cfg, id, hit) in [
+            (Config::Lines(64), 1000u16, false),
+            (Config::Lines(64), 1000, true),
+            (Config::Lines(64), 1064, false),
+            (Config::Lines(64), 1000, false),
+            (Config::Disabled, 1000, false),
+            (Config::Lines(64), 1000, true),
+        ] {
+            let out = bench.run(cfg, &[id], Pacing::NONE, seed, OUTSTANDING)?;
+            let a = out.arrivals[0];
+            if !cfg.enable() {
+                assert_eq!((out.host_requests[0], out.responses[0]), (a, a + tc), "disabled, tc = {tc}");
+            } else if hit {
+                assert!(out.model_hits[0] && out.host_requests.is_empty(), "{id}");
+                assert_eq!(out.responses[0], a + model::HIT_LATENCY, "hit, tc = {tc}");
+            } else {
+                assert!(!out.model_hits[0], "{id}");
+                assert_eq!(out.host_requests, [a + model::HIT_LATENCY], "miss, tc = {tc}");
+                assert_eq!(out.responses[0], a + tc + model::MISS_OVERHEAD, "miss, tc = {tc}");
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Ids 0 and 0xFFFF (zero is also what an invalid line holds: id 0 must miss first), ids that
+/// all map to one line (every access a miss in a small cache, hits in a large one), and the
+/// same block run with different masks and disabled in between over the same contents.
+#[test]
+fn corner_cases_extreme_ids_conflicts_and_mask_changes() -> Result<()> {
+    let seed = 0xcac4_c0c0;
+    for tc in [1u32, 8] {
+        let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
+        let pacing = Pacing { idle: true, backpressure: true };
+        let ends = [0u16, 0, 0xFFFF, 0xFFFF, 0, 0xFFFF, 0x0FFF, 0xF000, 0, 0xFFFF];
+        let out = bench.run(Config::Lines(4096), &ends, pacing, seed, OUTSTANDING)?;
+        // 0x0FFF and 0xFFFF share line 4095; 0xF000 and 0 share line 0.
+        assert_eq!(out.model_hits, [false, true, false, true, true, true, false, false, false, false]);
+        // Conflicts: ids k·16 + 5 all map to line 5 of 16.
+        let conflict: Vec<u16> = (0..200u16).map(|k| (k % 7) * 16 + 5).collect();
+        let out = bench.run(Config::Lines(16), &conflict, Pacing::NONE, seed, OUTSTANDING)?;
+        assert!(out.model_hits.iter().all(|&h| !h), "conflicting ids never hit in 16 lines");
+        let out = bench.run(Config::Lines(1024), &conflict, Pacing::NONE, seed, OUTSTANDING)?;
+        assert_eq!(out.model_hits.iter().filter(|&&h| !h).count(), 7, "7 distinct ids, 1024 lines");
+        // Mask changes over the same contents, and a disabled run between them.
+        let ids = local_ids(600, seed);
+        for cfg in [
+            Config::Lines(4096),
+            Config::Lines(16),
+            Config::Disabled,
+            Config::Lines(1),
+            Config::Lines(4096),
+            Config::Lines(1024),
+            Config::Disabled,
+            Config::Lines(4096),
+        ] {
+            bench.run(cfg, &ids, pacing, seed, OUTSTANDING)?;
+        }
+        // A client with a single request outstanding at a time.
+        bench.run(Config::Lines(16), &ids[..100], Pacing::NONE, seed, 1)?;
+    }
+    Ok(())
+}
+
+/// A memory smaller than the id space (100 patches), enabled and disabled.
+#[test]
+fn a_small_memory_serves_its_own_ids() -> Result<()> {
+    let seed = 0xcac4_5a11;
+    let mut bench = Bench::new(random_patches(seed, 100), 3)?;
+    let ids = uniform_ids(500, seed, 100);
+    let pacing = Pacing { idle: true, backpressure: false };
+    let out = bench.run(Config::Lines(64), &ids, pacing, seed, OUTSTANDING)?;
+    assert!(out.model_hits.iter().filter(|&&h| h).count() > 200);
+    bench.run(Config::Disabled, &ids, pacing, seed, OUTSTANDING)?;
+    Ok(())
+}
+
+/// The real patch loader in front of the cache, as in a PE.
+#[derive(LogicBlock, Default)]
+struct LoaderWithCache {
+    pub clock: Signal<In, Clock>,
+    pub cfg_enable: Signal<In, bool>,
+    pub cfg_mask: Signal<In, Bits<12>>,
+    pub id_valid: Signal<In, bool>,
+    pub id_ready: Signal<Out, bool>,
+    pub id: Signal<In, Bits<16>>,
+    pub mem_req: Signal<Out, bool>,
+    pub mem_addr: Signal<Out, Bits<16>>,
+    pub mem_valid: Signal<In, bool>,
+    pub mem_ax: Signal<In, Bits<17>>,
+    pub mem_ay: Signal<In, Bits<17>>,
+    pub mem_bx: Signal<In, Bits<17>>,
+    pub mem_by: Signal<In, Bits<17>>,
+    pub out_valid: Signal<Out, bool>,
+    pub out_ready: Signal<In, bool>,
+    pub out_id: Signal<Out, Bits<16>>,
+    pub out_ax: Signal<Out, Bits<17>>,
+    pub out_ay: Signal<Out, Bits<17>>,
+    pub out_bx: Signal<Out, Bits<17>>,
+    pub out_by: Signal<Out, Bits<17>>,
+    loader: PatchLoader,
+    cache: PatchCache,
+}
+
+impl Logic for LoaderWithCache {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.loader.clock.next = self.clock.val();
+        self.cache.clock.next = self.clock.val();
+        self.cache.cfg_enable.next = self.cfg_enable.val();
+        self.cache.cfg_mask.next = self.cfg_mask.val();
+        self.loader.id_valid.next = self.id_valid.val();
+        self.id_ready.next = self.loader.id_ready.val();
+        self.loader.id.next = self.id.val();
+        self.cache.req.next = self.loader.mem_req.val();
+        self.cache.addr.next = self.loader.mem_addr.val();
+        self.loader.mem_valid.next = self.cache.resp_valid.val();
+        self.loader.mem_ax.next = self.cache.resp_ax.val();
+        self.loader.mem_ay.next = self.cache.resp_ay.val();
+        self.loader.mem_bx.next = self.cache.resp_bx.val();
+        self.loader.mem_by.next = self.cache.resp_by.val();
+        self.mem_req.next = self.cache.mem_req.val();
+        self.mem_addr.next = self.cache.mem_addr.val();
+        self.cache.mem_valid.next = self.mem_valid.val();
+        self.cache.mem_ax.next = self.mem_ax.val();
+        self.cache.mem_ay.next = self.mem_ay.val();
+        self.cache.mem_bx.next = self.mem_bx.val();
+        self.cache.mem_by.next = self.mem_by.val();
+        self.out_valid.next = self.loader.out_valid.val();
+        self.loader.out_ready.next = self.out_ready.val();
+        self.out_id.next = self.loader.out_id.val();
+        self.out_ax.next = self.loader.out_ax.val();
+        self.out_ay.next = self.loader.out_ay.val();
+        self.out_bx.next = self.loader.out_bx.val();
+        self.out_by.next = self.loader.out_by.val();
+    }
+}
+
+/// Streams `ids` through loader + cache (`cfg`), output always ready, ids back to back; checks
+/// the patches against the loader's model and the host loads against the cache model; returns
+/// the cycles until the last patch left.
+fn loader_run(cfg: Config, ids: &[u16], tc: u32, seed: u64) -> Result<u64> {
+    let context = format!("seed {seed:#x}, {cfg}, tc = {tc}");
+    let mut mem = HostMemory::new(random_patches(seed, 1 << 16), tc)?;
+    let memory = |id: u16| mem.patch(id).unwrap_or_default().map(|c| c as u32);
+    let (expected, _) = loader::model::load(ids, memory);
+    let mut board = Scoreboard::new("loader + cache", seed, expected).with_context(context.clone());
+    let loads = if cfg.enable() {
+        Cache::new(cfg.mask()).run(ids).iter().filter(|&&h| !h).count() as u64
+    } else {
+        ids.len() as u64
+    };
+    let mut drv = Driver::with_clock(LoaderWithCache::default(), |u| &mut u.clock)?;
+    let mut next = 0;
+    let mut presented: Option<[i32; 4]> = None;
+    let mut out = 0;
+    while out < ids.len() {
+        let offer = ids.get(next).copied();
+        let answer = presented.take();
+        drv.drive(|u| {
+            u.cfg_enable.next = cfg.enable();
+            u.cfg_mask.next = b(cfg.mask().into());
+            u.id_valid.next = offer.is_some();
+            u.id.next = b(offer.unwrap_or(0).into());
+            u.out_ready.next = true;
+            u.mem_valid.next = answer.is_some();
+            let d = answer.unwrap_or_default().map(|c| c as u64);
+            u.mem_ax.next = b(d[0]);
+            u.mem_ay.next = b(d[1]);
+            u.mem_bx.next = b(d[2]);
+            u.mem_by.next = b(d[3]);
+        })?;
+        let u = drv.uut();
+        if offer.is_some() && u.id_ready.val() {
+            next += 1;
+        }
+        presented =
+            mem.cycle(u.mem_req.val().then(|| u.mem_addr.val().to_u16())).map_err(|e| e.context(&context))?;
+        if u.out_valid.val() {
+            let p = loader::model::Patch {
+                id: u.out_id.val().to_u16(),
+                ax: u.out_ax.val().to_u32(),
+                ay: u.out_ay.val().to_u32(),
+                bx: u.out_bx.val().to_u32(),
+                by: u.out_by.val().to_u32(),
+            };
+            board.check(drv.cycles(), p)?;
+            out += 1;
+        }
+        drv.tick()?;
+        if drv.cycles() > 20 * (u64::from(tc) + 4) * ids.len() as u64 + 1000 {
+            return Err(Error::new(format!("{context}: no progress, {out} patches out")));
+        }
+    }
+    board.finish()?;
+    if mem.loads() != loads || mem.pending() != 0 {
+        return Err(Error::new(format!("{context}: {} host loads, model {loads}", mem.loads())));
+    }
+    Ok(drv.cycles())
+}
+
+/// The loader through the cache delivers every patch in order, enabled or not; with locality
+/// and a slow host memory (T_c = 8, one load at a time) the cache saves most of the loads and
+/// the time; with the cache disabled the loader sees the memory directly.
+#[test]
+fn the_loader_through_the_cache_delivers_every_patch_in_order() -> Result<()> {
+    let seed = 0xcac4_10ad;
+    let ids = local_ids(3000, seed);
+    let tc = 8;
+    let off = loader_run(Config::Disabled, &ids, tc, seed)?;
+    let on = loader_run(Config::Lines(1024), &ids, tc, seed)?;
+    let small = loader_run(Config::Lines(16), &ids, tc, seed)?;
+    println!(
+        "{} patches, T_c = {tc}: {off} cycles without cache, {small} with 16 lines, {on} with 1024",
+        ids.len()
+    );
+    assert!(on < off && on < small, "the cache should pay off on a local stream");
+    // Without cache the memory serves one patch per T_c cycles.
+    assert!(off >= ids.len() as u64 * u64::from(tc));
+    // All hits after a warm-up: the loader's full rate.
+    let repeat: Vec<u16> = (0..2000u16).map(|k| k % 100).collect();
+    let cycles = loader_run(Config::Lines(4096), &repeat, tc, seed)?;
+    assert!(cycles < repeat.len() as u64 + 100 * (u64::from(tc) + 8) + 50, "{cycles} cycles");
+    Ok(())
+}
+
+/// Rung 4: a recorded run (cache enabled with 1024 then 16 lines, a disabled stretch between
+/// them, random idle and backpressure, T_c = 3) replayed under Icarus Verilog from the exported
+/// Verilog, bit-exactly with no don't-care.
+#[test]
+fn recorded_run_replays_bit_exactly_under_icarus() -> Result<()> {
+    let seed = 0xcac4_4e91;
+    let mut drv = new_driver()?;
+    drv.record_ports()?;
+    let mut bench = Bench::with_driver(drv, random_patches(seed, 1 << 16), 3)?;
+    let pacing = Pacing { idle: true, backpressure: true };
+    let ids = local_ids(500, seed);
+    bench.run(Config::Lines(1024), &ids, pacing, seed, OUTSTANDING)?;
+    bench.run(Config::Disabled, &ids[..100], pacing, seed + 1, OUTSTANDING)?;
+    bench.run(Config::Lines(16), &ids[..300], pacing, seed + 2, OUTSTANDING)?;
+    let rec = bench.drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("cache");
+    let report = rec.replay(bench.drv.uut(), &dir, Simulator::Icarus)?;
+    println!("{report}");
+    assert_eq!(report.cycles, rec.cycles());
+    // Nine outputs (resp_valid, 4 coordinates, mem_req, mem_addr, hits, misses), compared before
+    // and after every rising edge.
+    assert_eq!(report.checks, 2 * 9 * rec.cycles());
+    Ok(())
+}
