@@ -451,7 +451,8 @@ impl Logic for IntersectionUnit {
         self.better.next = self.v5.q.val()
             & (!self.old_hit.val()
                 | (self.key_scale.key.val() > self.old_key.val())
-                | ((self.key_scale.key.val() == self.old_key.val()) & (self.id5.q.val() < self.old_id.val())));
+                | ((self.key_scale.key.val() == self.old_key.val())
+                    & (self.id5.q.val() < self.old_id.val())));
         self.new_meta.next = self.hit_flag.val() | bit_cast::<17, 16>(self.id5.q.val());
         self.mem_key.write_address.next = self.ray5.q.val();
         self.mem_meta.write_address.next = self.ray5.q.val();
