@@ -124,6 +124,8 @@ fn intersection_unit_synthesizes_to_dsps_without_latches() {
     assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
 }
 
+/// The loader has no multiplier; the screener's ten products take one DSP each and its pipelined
+/// divider none (LUTs and carry chains). Both FIFOs map to LUT RAM.
 #[test]
 fn patch_loader_and_screener_synthesize_without_latches() {
     for (block, dsps) in [("patch_loader", 0), ("screener", 10)] {
@@ -133,6 +135,7 @@ fn patch_loader_and_screener_synthesize_without_latches() {
         }
         assert!(cells(&stat, "TRELLIS_FF") > 0, "{block}: {stat}");
         assert_eq!(cells(&stat, "MULT18X18D"), dsps, "{block}: multipliers map to DSP blocks:\n{stat}");
+        assert!(cells(&stat, "TRELLIS_DPR16X4") > 0, "{block}: the FIFO maps to LUT RAM:\n{stat}");
     }
 }
 

@@ -19,10 +19,93 @@
 //! vector `W = n·2^(16+sh)/K`, normalised by the exponent `sh` (see `FORMATS.md`).
 //!
 //! The bit-true model is [`model::screen`]; the RTL block is [`Screener`], which computes it bit for
-//! bit (a multi-cycle unit: 3 cycles per screened-out patch, 21 per passing one).
+//! bit, one patch per clock.
+//!
+//! # Ports ([`Screener`])
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | rising-edge clock |
+//! | `origin_x`, `origin_y` | in | 17, 17 | bundle setup: ray origin, world coordinates (Q11.6 unsigned) |
+//! | `normal_x/y`, `first_x/y`, `last_x/y` | in | 6 × 18 | bundle setup: source normal, sector's first and last ray (Q2.16) |
+//! | `in_valid`, `in_ready`, `in_id` | in, out, in | 1, 1, 16 | patch stream in (valid/ready) |
+//! | `in_ax`, `in_ay`, `in_bx`, `in_by` | in | 4 × 17 | endpoints, world coordinates (Q11.6 unsigned) |
+//! | `out_valid`, `out_ready`, `out_id` | out, in, out | 1, 1, 16 | passing patches out (valid/ready), in acceptance order |
+//! | `out_ax`, `out_ay`, `out_bx`, `out_by` | out | 4 × 18 | endpoints relative to the origin (Q12.6) |
+//! | `out_wx`, `out_wy`, `out_sh` | out | 18, 18, 6 | inverse-distance vector, its exponent in [−3, 31] |
+//! | `passed`, `backward`, `back_facing`, `outside`, `near` | out | 5 × 32 | verdict counters, wrapping at 2³² |
+//!
+//! The bundle setup is held constant while its patches stream (from the first patch's
+//! acceptance until the last one's verdict, [`VERDICT_LATENCY`] cycles later). A transfer happens
+//! in a cycle where `valid && ready` holds before the rising edge. `in_ready` depends only on
+//! registers (not on `in_valid` or `out_ready`); `out_valid` and the `out_*` data are registers
+//! (the output FIFO's read registers), so no combinational path crosses the block. While
+//! `out_valid` is low the `out_*` data show the FIFO's head slot, which may hold an old or a
+//! half-written setup (zero after power-up): meaningless, but the same in the rust-hdl
+//! simulation and in the Verilog. Every accepted patch is counted in exactly one counter, in the
+//! cycle of its verdict.
+//!
+//! Number formats (`FORMATS.md`, [`crate::formats`]): world coordinates Q11.6 in 17 bits
+//! unsigned; relative coordinates Q12.6 and directions Q2.16 in 18 bits two's complement;
+//! products [`crate::formats::mul`] (18×18, shifted right by 4, 32 bits); `W` 18 bits two's
+//! complement with the exponent `sh` 6 bits two's complement.
+//!
+//! # Pipeline
+//!
+//! The pipeline never stalls; a patch accepted in cycle `a` is in stage `s` in cycle `a + s`:
+//!
+//! * stage 0: acceptance; the coordinates relative to the origin are registered;
+//! * stage 1: the ten products start ([`Mul18`] leaves, latency 2, one DSP each);
+//!   `n = (b.y − a.y, a.x − b.x)`, `|n_c|`, `nmax`;
+//! * stage 2: the leading zeros of `nmax` (five conditional shifts);
+//! * stage 3: the products arrive: `dot(n_s, a)`, `dot(n_s, b)`, `K`, the side values against the
+//!   sector's edges; the backward, back-facing and outside-the-sector screens; the leading zeros
+//!   of `2K`;
+//! * stage 4 ([`VERDICT_LATENCY`]): the exponent `sh` (from the two leading-zero counts and one
+//!   comparison), the near screen and the verdict, counted. A passing patch takes the next slot
+//!   of the output FIFO (id, `a`, `b`, `sh` written) and enters the divider with its initial
+//!   remainders `floor(|n_c|·2^sh)`;
+//! * stages 5–22: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
+//!   `K`, one stage per quotient bit ([`DIV_STEPS`](crate::leaf::DIV_STEPS) = 17 steps of a
+//!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 22
+//!   `W = sign(n)·q` completes the patch's slot;
+//! * stages 23–24: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
+//!   (24) and leaves then if `out_ready` is high.
+//!
+//! # Backpressure: credits
+//!
+//! The [`Mul18`] and divider stages have no clock enable, so the pipeline cannot stall; instead
+//! nothing is accepted that could not be stored. The output FIFO has [`DEPTH`] (32) slots in
+//! eight [`Bram`] lanes (LUT RAM) sharing one read pointer: the slot is reserved in stage 4 and
+//! completed in stage 22 (a second write pointer suffices, the divider's latency being fixed).
+//! A credit counter counts the patches in flight: it is incremented when a patch is accepted and
+//! decremented when its verdict screens it out (stage 4: a screened-out patch never takes a
+//! slot) or when it leaves. A patch is accepted only while the count is below [`DEPTH`], so
+//! every patch in the pipeline has a slot waiting for it: nothing is dropped, and backpressure
+//! on the output stops the input (`in_ready` low) instead.
+//!
+//! # Latency and throughput
+//!
+//! Without backpressure a passing patch accepted in cycle `a` leaves in cycle `a + 24`
+//! ([`LATENCY`]); a screened-out one is counted in cycle `a + 4`. A credit is taken in the cycle
+//! of acceptance and returned in the cycle of the verdict (screened out: held 5 cycles) or of
+//! the transfer out (passing: held 25 cycles); a returned credit can be taken again the next
+//! cycle. With `DEPTH = 32 ≥ 25` the screener therefore accepts one patch per clock (II = 1)
+//! for any mix of verdicts, as long as the output is not backpressured. The cycle counts of an
+//! unstalled stream are [`model::unstalled_cycles`]: `N` patches offered back to back take
+//! `N + 24` cycles when the last one passes, `N + 4` when all are screened out. Under sustained
+//! backpressure the screener holds 32 passing patches and takes no more until one leaves.
+//!
+//! # Models
+//!
+//! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
+//! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
+//! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 72 `TRELLIS_DPR16X4` (the
+//! FIFO), about 2400 LUT4, 900 `CCU2C` carry cells and 3400 flip-flops, of which the divider
+//! takes about 1000 LUT4, 580 `CCU2C` and 2000 flip-flops.
 
 use crate::formats::{cross, dot, SECTOR_MARGIN, SH_MAX, SH_MIN};
-use crate::leaf::Mul18;
+use crate::leaf::{Bram, Mul18, PipeDivider, DIV_LATENCY};
 use rust_hdl::prelude::*;
 
 /// The bit-true model of the screener: plain integer functions.
@@ -119,46 +202,69 @@ pub mod model {
         });
         Verdict::Pass(PatchSetup { id: patch.id, a, b, w, sh: sh as i8 })
     }
+
+    /// The cycles in which `n` patches offered back to back from cycle 0 are accepted when the
+    /// output is always ready; `passes[k]` says whether patch `k` passes. A patch is accepted
+    /// while fewer than [`DEPTH`] credits are taken; a credit is returned at the end of the
+    /// verdict's cycle (screened out) or of the cycle the patch leaves (passing). With
+    /// `DEPTH > LATENCY` this is cycle `k` for patch `k`.
+    pub fn accept_cycles(passes: &[bool]) -> Vec<u64> {
+        let hold = |pass: bool| if pass { LATENCY } else { VERDICT_LATENCY };
+        let mut a: Vec<u64> = Vec::with_capacity(passes.len());
+        for k in 0..passes.len() {
+            let mut c = a.last().map_or(0, |&p| p + 1);
+            // Credits taken in cycle c: accepted before c and returned in cycle c or later.
+            while (0..k).filter(|&j| a[j] + hold(passes[j]) >= c).count() >= DEPTH {
+                c += 1;
+            }
+            a.push(c);
+        }
+        a
+    }
+
+    /// The cycles in which the passing patches leave, under the conditions of
+    /// [`accept_cycles`]: acceptance plus [`LATENCY`].
+    pub fn output_cycles(passes: &[bool]) -> Vec<u64> {
+        accept_cycles(passes)
+            .into_iter()
+            .zip(passes)
+            .filter(|(_, &pass)| pass)
+            .map(|(a, _)| a + LATENCY)
+            .collect()
+    }
+
+    /// Cycles (rising edges) until every patch is counted and every passing one has left, under
+    /// the conditions of [`accept_cycles`]. With patch `k` accepted in cycle `k`: `N + LATENCY`
+    /// (`N + 24`) when the last patch passes, `N + VERDICT_LATENCY` (`N + 4`) when all are
+    /// screened out, and `max(N + 4, j + 25)` when the last passing patch is patch `j`.
+    pub fn unstalled_cycles(passes: &[bool]) -> u64 {
+        let counted = accept_cycles(passes).last().map_or(0, |a| a + VERDICT_LATENCY + 1);
+        let out = output_cycles(passes).last().map_or(0, |c| c + 1);
+        counted.max(out)
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
 // The RTL block.
 // ---------------------------------------------------------------------------------------------
 
-/// Cycles one screened-out patch occupies the unit (accept, two multiplier cycles, verdict; the
-/// next patch is accepted in the verdict cycle).
-pub const SCREEN_CYCLES: u64 = 3;
-/// Quotient bits of the divider (one per cycle).
-pub const DIV_STEPS: u64 = 17;
+/// Pipeline stage of the verdict: a patch accepted in cycle `a` is decided and counted in cycle
+/// `a + VERDICT_LATENCY` (the counters show it from the next cycle on).
+pub const VERDICT_LATENCY: u64 = 4;
+/// Clocks from a patch's acceptance to its setup on the output: a passing patch accepted in
+/// cycle `a` is presented (`out_valid`) from cycle `a + LATENCY` on; with `out_ready` high it
+/// leaves in that cycle. The verdict, the divider ([`DIV_LATENCY`]) and the output FIFO's write
+/// and registered read: `4 + 18 + 2`.
+pub const LATENCY: u64 = VERDICT_LATENCY + DIV_LATENCY + 2;
+/// Output FIFO capacity in patches, and the credit limit: a patch is accepted only while fewer
+/// than `DEPTH` patches are in flight (accepted and not yet decided, or passed and not yet out).
+/// One patch per clock needs `DEPTH ≥ LATENCY + 1`.
+pub const DEPTH: usize = 32;
+/// Address width of the output FIFO's lanes: `2^ADDR_BITS == DEPTH`.
+pub const ADDR_BITS: usize = 5;
 
-/// The backface screener (see the [module documentation](self)): a multi-cycle unit that takes
-/// one patch at a time.
-///
-/// # Ports
-///
-/// * bundle setup, held constant while patches stream: `origin_x/y` (Q11.6, 17 bits unsigned),
-///   `normal_x/y`, `first_x/y`, `last_x/y` (Q2.16, 18 bits two's complement);
-/// * patch stream in (valid/ready): `in_id`, `in_ax/ay/bx/by` (world coordinates, Q11.6);
-/// * passing patches out (valid/ready), in the intersection unit's format: `out_id`,
-///   `out_ax/ay/bx/by` (relative to the origin, 18 bits two's complement), `out_wx/wy` (18 bits
-///   two's complement) and `out_sh` (6 bits two's complement, in [−3, 31]);
-/// * counters (32 bits, wrapping): `passed`, `backward`, `back_facing`, `outside`, `near`; each
-///   patch accepted is counted in exactly one of them, in the cycle of its verdict.
-///
-/// # Timing
-///
-/// * Cycle 0: the patch is accepted; its coordinates relative to the origin are registered.
-/// * Cycles 1–2: the ten products (ten [`Mul18`] leaves, latency 2).
-/// * Cycle 3, the verdict: the sums and differences of the products, the verdict, the exponent
-///   `sh` (leading-zero counts of `nmax` and `2K`, one comparison) and the divider's initial
-///   remainders. A screened-out patch is counted and the next patch accepted in this cycle
-///   (`in_ready` high), so a screened-out patch costs [`SCREEN_CYCLES`] = 3 cycles.
-/// * Cycles 4–20: two restoring dividers (one per component of `W`), one quotient bit per cycle.
-/// * Cycle 21 on: `out_valid` until `out_ready`; in the cycle of the transfer the next patch is
-///   accepted. A passing patch costs 21 cycles when the consumer is ready.
-///
-/// `in_ready` depends combinationally on `out_ready` (a patch is accepted in the cycle the
-/// previous one leaves). The bit-true model is [`model::screen`].
+/// The backface screener (see the [module documentation](self)): a pipeline that accepts one
+/// patch per clock.
 #[derive(LogicBlock)]
 pub struct Screener {
     pub clock: Signal<In, Clock>,
@@ -196,28 +302,51 @@ pub struct Screener {
     pub back_facing: Signal<Out, Bits<32>>,
     pub outside: Signal<Out, Bits<32>>,
     pub near: Signal<Out, Bits<32>>,
-    // Sequencer.
-    state: DFF<Bits<3>>,
-    is_idle: Signal<Local, bool>,
-    is_m1: Signal<Local, bool>,
-    is_m2: Signal<Local, bool>,
-    is_verdict: Signal<Local, bool>,
-    is_div: Signal<Local, bool>,
-    is_out: Signal<Local, bool>,
+    // Credits and the output FIFO.
+    used: DFF<Bits<6>>,
+    done: DFF<Bits<6>>,
+    res_ptr: DFF<Bits<5>>,
+    fill_ptr: DFF<Bits<5>>,
+    rd_ptr: DFF<Bits<5>>,
+    head_valid: DFF<bool>,
+    lane_id: Bram<16, 5>,
+    lane_ax: Bram<18, 5>,
+    lane_ay: Bram<18, 5>,
+    lane_bx: Bram<18, 5>,
+    lane_by: Bram<18, 5>,
+    lane_sh: Bram<6, 5>,
+    lane_wx: Bram<18, 5>,
+    lane_wy: Bram<18, 5>,
+    room: Signal<Local, bool>,
     take: Signal<Local, bool>,
-    // Cycle 0: relative coordinates.
+    pop: Signal<Local, bool>,
+    screened: Signal<Local, bool>,
+    reserve: Signal<Local, bool>,
+    fill: Signal<Local, bool>,
+    used_inc: Signal<Local, Bits<6>>,
+    used_dec: Signal<Local, Bits<6>>,
+    used_dec2: Signal<Local, Bits<6>>,
+    done_inc: Signal<Local, Bits<6>>,
+    done_dec: Signal<Local, Bits<6>>,
+    done_left: Signal<Local, Bits<6>>,
+    res_inc: Signal<Local, Bits<5>>,
+    fill_inc: Signal<Local, Bits<5>>,
+    rd_inc: Signal<Local, Bits<5>>,
+    rd_addr: Signal<Local, Bits<5>>,
+    // Stage 0: coordinates relative to the origin.
     ext_ox: Signal<Local, Bits<18>>,
     ext_oy: Signal<Local, Bits<18>>,
     ext_ax: Signal<Local, Bits<18>>,
     ext_ay: Signal<Local, Bits<18>>,
     ext_bx: Signal<Local, Bits<18>>,
     ext_by: Signal<Local, Bits<18>>,
-    id: DFF<Bits<16>>,
-    ax: DFF<Bits<18>>,
-    ay: DFF<Bits<18>>,
-    bx: DFF<Bits<18>>,
-    by: DFF<Bits<18>>,
-    // Cycles 1–2: products.
+    // Stage 1: the products start; n, |n| and nmax.
+    v1: DFF<bool>,
+    id1: DFF<Bits<16>>,
+    ax1: DFF<Bits<18>>,
+    ay1: DFF<Bits<18>>,
+    bx1: DFF<Bits<18>>,
+    by1: DFF<Bits<18>>,
     m_nax: Mul18,
     m_nay: Mul18,
     m_nbx: Mul18,
@@ -228,7 +357,53 @@ pub struct Screener {
     m_fbx: Mul18,
     m_lay: Mul18,
     m_lax: Mul18,
-    // Cycle 3: the verdict.
+    nx: Signal<Local, Bits<18>>,
+    ny: Signal<Local, Bits<18>>,
+    nx_neg: Signal<Local, Bits<18>>,
+    ny_neg: Signal<Local, Bits<18>>,
+    absnx: Signal<Local, Bits<18>>,
+    absny: Signal<Local, Bits<18>>,
+    nmax: Signal<Local, Bits<18>>,
+    // Stage 2: the leading zeros of nmax (five conditional shifts).
+    v2: DFF<bool>,
+    id2: DFF<Bits<16>>,
+    ax2: DFF<Bits<18>>,
+    ay2: DFF<Bits<18>>,
+    bx2: DFF<Bits<18>>,
+    by2: DFF<Bits<18>>,
+    absnx2: DFF<Bits<18>>,
+    absny2: DFF<Bits<18>>,
+    negx2: DFF<bool>,
+    negy2: DFF<bool>,
+    nmax2: DFF<Bits<18>>,
+    zn0: Signal<Local, Bits<32>>,
+    zn1: Signal<Local, Bits<32>>,
+    zn2: Signal<Local, Bits<32>>,
+    zn3: Signal<Local, Bits<32>>,
+    zn4: Signal<Local, Bits<32>>,
+    zn5: Signal<Local, Bits<32>>,
+    cn16_n: Signal<Local, Bits<6>>,
+    cn8_n: Signal<Local, Bits<6>>,
+    cn4_n: Signal<Local, Bits<6>>,
+    cn2_n: Signal<Local, Bits<6>>,
+    cn1_n: Signal<Local, Bits<6>>,
+    top16_n: Signal<Local, Bits<16>>,
+    top8_n: Signal<Local, Bits<8>>,
+    top4_n: Signal<Local, Bits<4>>,
+    top2_n: Signal<Local, Bits<2>>,
+    // Stage 3: the products arrive: sums, the screens, the leading zeros of 2K.
+    v3: DFF<bool>,
+    id3: DFF<Bits<16>>,
+    ax3: DFF<Bits<18>>,
+    ay3: DFF<Bits<18>>,
+    bx3: DFF<Bits<18>>,
+    by3: DFF<Bits<18>>,
+    absnx3: DFF<Bits<18>>,
+    absny3: DFF<Bits<18>>,
+    negx3: DFF<bool>,
+    negy3: DFF<bool>,
+    clz_n3: DFF<Bits<6>>,
+    norm_n3: DFF<Bits<32>>,
     ha: Signal<Local, Bits<32>>,
     hb: Signal<Local, Bits<32>>,
     kk: Signal<Local, Bits<32>>,
@@ -241,32 +416,7 @@ pub struct Screener {
     is_backward: Signal<Local, bool>,
     is_back_facing: Signal<Local, bool>,
     is_outside: Signal<Local, bool>,
-    is_near: Signal<Local, bool>,
-    is_pass: Signal<Local, bool>,
-    nx: Signal<Local, Bits<18>>,
-    ny: Signal<Local, Bits<18>>,
-    nx_neg: Signal<Local, Bits<18>>,
-    ny_neg: Signal<Local, Bits<18>>,
-    absnx: Signal<Local, Bits<18>>,
-    absny: Signal<Local, Bits<18>>,
-    nmax: Signal<Local, Bits<18>>,
-    absnx32: Signal<Local, Bits<32>>,
-    absny32: Signal<Local, Bits<32>>,
-    nmax32: Signal<Local, Bits<32>>,
     k2: Signal<Local, Bits<32>>,
-    // Leading-zero counts by five conditional shifts: `zn*` of nmax, `ze*` of 2K.
-    zn0: Signal<Local, Bits<32>>,
-    zn1: Signal<Local, Bits<32>>,
-    zn2: Signal<Local, Bits<32>>,
-    zn3: Signal<Local, Bits<32>>,
-    zn4: Signal<Local, Bits<32>>,
-    zn5: Signal<Local, Bits<32>>,
-    cn16_n: Signal<Local, Bits<6>>,
-    cn8_n: Signal<Local, Bits<6>>,
-    cn4_n: Signal<Local, Bits<6>>,
-    cn2_n: Signal<Local, Bits<6>>,
-    cn1_n: Signal<Local, Bits<6>>,
-    clz_n: Signal<Local, Bits<6>>,
     ze0: Signal<Local, Bits<32>>,
     ze1: Signal<Local, Bits<32>>,
     ze2: Signal<Local, Bits<32>>,
@@ -278,45 +428,46 @@ pub struct Screener {
     ce4_e: Signal<Local, Bits<6>>,
     ce2_e: Signal<Local, Bits<6>>,
     ce1_e: Signal<Local, Bits<6>>,
-    clz_e: Signal<Local, Bits<6>>,
-    top16_n: Signal<Local, Bits<16>>,
-    top8_n: Signal<Local, Bits<8>>,
-    top4_n: Signal<Local, Bits<4>>,
-    top2_n: Signal<Local, Bits<2>>,
     top16_e: Signal<Local, Bits<16>>,
     top8_e: Signal<Local, Bits<8>>,
     top4_e: Signal<Local, Bits<4>>,
     top2_e: Signal<Local, Bits<2>>,
+    // Stage 4: the verdict, the exponent, the divider's inputs; a passing patch takes a slot.
+    v4: DFF<bool>,
+    id4: DFF<Bits<16>>,
+    ax4: DFF<Bits<18>>,
+    ay4: DFF<Bits<18>>,
+    bx4: DFF<Bits<18>>,
+    by4: DFF<Bits<18>>,
+    absnx4: DFF<Bits<18>>,
+    absny4: DFF<Bits<18>>,
+    negx4: DFF<bool>,
+    negy4: DFF<bool>,
+    clz_n4: DFF<Bits<6>>,
+    norm_n4: DFF<Bits<32>>,
+    k4: DFF<Bits<32>>,
+    clz_e4: DFF<Bits<6>>,
+    norm_e4: DFF<Bits<32>>,
+    backward4: DFF<bool>,
+    back_facing4: DFF<bool>,
+    outside4: DFF<bool>,
     s0: Signal<Local, Bits<6>>,
     s0_m1: Signal<Local, Bits<6>>,
     sh: Signal<Local, Bits<6>>,
     sh5: Signal<Local, Bits<5>>,
-    low_nx: Signal<Local, Bits<16>>,
-    low_ny: Signal<Local, Bits<16>>,
-    r0x: Signal<Local, Bits<32>>,
-    r0y: Signal<Local, Bits<32>>,
-    f0x: Signal<Local, Bits<16>>,
-    f0y: Signal<Local, Bits<16>>,
-    // Cycles 4–20: the dividers.
-    k: DFF<Bits<32>>,
-    sh_r: DFF<Bits<6>>,
-    step: DFF<Bits<5>>,
-    neg_x: DFF<bool>,
-    neg_y: DFF<bool>,
-    rx: DFF<Bits<32>>,
-    ry: DFF<Bits<32>>,
-    fx: DFF<Bits<16>>,
-    fy: DFF<Bits<16>>,
-    qx: DFF<Bits<18>>,
-    qy: DFF<Bits<18>>,
-    rx2: Signal<Local, Bits<32>>,
-    ry2: Signal<Local, Bits<32>>,
-    tx: Signal<Local, Bits<32>>,
-    ty: Signal<Local, Bits<32>>,
-    tx_k: Signal<Local, Bits<32>>,
-    ty_k: Signal<Local, Bits<32>>,
-    qx2: Signal<Local, Bits<18>>,
-    qy2: Signal<Local, Bits<18>>,
+    is_near: Signal<Local, bool>,
+    is_pass: Signal<Local, bool>,
+    absnx32: Signal<Local, Bits<32>>,
+    absny32: Signal<Local, Bits<32>>,
+    low_nx: Signal<Local, Bits<3>>,
+    low_ny: Signal<Local, Bits<3>>,
+    tag_p: Signal<Local, Bits<3>>,
+    tag_x: Signal<Local, Bits<3>>,
+    tag_y: Signal<Local, Bits<3>>,
+    // Stages 5–22: the divider; stage 22 writes W into the patch's slot.
+    divider: PipeDivider,
+    qx18: Signal<Local, Bits<18>>,
+    qy18: Signal<Local, Bits<18>>,
     wx_neg: Signal<Local, Bits<18>>,
     wy_neg: Signal<Local, Bits<18>>,
     // Counters.
@@ -326,33 +477,30 @@ pub struct Screener {
     c_outside: DFF<Bits<32>>,
     c_near: DFF<Bits<32>>,
     // Constants.
-    st_idle: Constant<Bits<3>>,
-    st_m1: Constant<Bits<3>>,
-    st_m2: Constant<Bits<3>>,
-    st_verdict: Constant<Bits<3>>,
-    st_div: Constant<Bits<3>>,
-    st_out: Constant<Bits<3>>,
+    depth6: Constant<Bits<6>>,
+    zero6: Constant<Bits<6>>,
+    one6: Constant<Bits<6>>,
+    two6: Constant<Bits<6>>,
+    one5: Constant<Bits<5>>,
     zero18: Constant<Bits<18>>,
     zero32: Constant<Bits<32>>,
     one32: Constant<Bits<32>>,
     msb32: Constant<Bits<32>>,
     thr_f: Constant<Bits<32>>,
     thr_l: Constant<Bits<32>>,
-    zero6: Constant<Bits<6>>,
     zero16: Constant<Bits<16>>,
     zero8: Constant<Bits<8>>,
     zero4: Constant<Bits<4>>,
     zero2: Constant<Bits<2>>,
+    zero3: Constant<Bits<3>>,
     sh16: Constant<Bits<32>>,
     sh8: Constant<Bits<32>>,
     sh4: Constant<Bits<32>>,
     sh2: Constant<Bits<32>>,
     sh1: Constant<Bits<32>>,
     sh3: Constant<Bits<32>>,
-    sh13: Constant<Bits<16>>,
-    sh14: Constant<Bits<16>>,
-    sh15: Constant<Bits<16>>,
-    one6: Constant<Bits<6>>,
+    sh1_3: Constant<Bits<3>>,
+    sh2_3: Constant<Bits<3>>,
     c16_6: Constant<Bits<6>>,
     c8_6: Constant<Bits<6>>,
     c4_6: Constant<Bits<6>>,
@@ -361,14 +509,15 @@ pub struct Screener {
     sh_lo: Constant<Bits<6>>,
     sh_m1: Constant<Bits<6>>,
     sh_m2: Constant<Bits<6>>,
-    zero5: Constant<Bits<5>>,
-    one5: Constant<Bits<5>>,
-    last_step: Constant<Bits<5>>,
-    one18: Constant<Bits<18>>,
+    tag_pass: Constant<Bits<3>>,
+    tag_negx: Constant<Bits<3>>,
+    tag_negy: Constant<Bits<3>>,
 }
 
 impl Default for Screener {
     fn default() -> Self {
+        assert_eq!(1 << ADDR_BITS, DEPTH);
+        assert!(DEPTH as u64 > LATENCY, "the credit limit must cover a patch's whole latency");
         Screener {
             clock: Default::default(),
             origin_x: Default::default(),
@@ -401,25 +550,48 @@ impl Default for Screener {
             back_facing: Default::default(),
             outside: Default::default(),
             near: Default::default(),
-            state: Default::default(),
-            is_idle: Default::default(),
-            is_m1: Default::default(),
-            is_m2: Default::default(),
-            is_verdict: Default::default(),
-            is_div: Default::default(),
-            is_out: Default::default(),
+            used: Default::default(),
+            done: Default::default(),
+            res_ptr: Default::default(),
+            fill_ptr: Default::default(),
+            rd_ptr: Default::default(),
+            head_valid: Default::default(),
+            lane_id: Default::default(),
+            lane_ax: Default::default(),
+            lane_ay: Default::default(),
+            lane_bx: Default::default(),
+            lane_by: Default::default(),
+            lane_sh: Default::default(),
+            lane_wx: Default::default(),
+            lane_wy: Default::default(),
+            room: Default::default(),
             take: Default::default(),
+            pop: Default::default(),
+            screened: Default::default(),
+            reserve: Default::default(),
+            fill: Default::default(),
+            used_inc: Default::default(),
+            used_dec: Default::default(),
+            used_dec2: Default::default(),
+            done_inc: Default::default(),
+            done_dec: Default::default(),
+            done_left: Default::default(),
+            res_inc: Default::default(),
+            fill_inc: Default::default(),
+            rd_inc: Default::default(),
+            rd_addr: Default::default(),
             ext_ox: Default::default(),
             ext_oy: Default::default(),
             ext_ax: Default::default(),
             ext_ay: Default::default(),
             ext_bx: Default::default(),
             ext_by: Default::default(),
-            id: Default::default(),
-            ax: Default::default(),
-            ay: Default::default(),
-            bx: Default::default(),
-            by: Default::default(),
+            v1: Default::default(),
+            id1: Default::default(),
+            ax1: Default::default(),
+            ay1: Default::default(),
+            bx1: Default::default(),
+            by1: Default::default(),
             m_nax: Default::default(),
             m_nay: Default::default(),
             m_nbx: Default::default(),
@@ -430,6 +602,51 @@ impl Default for Screener {
             m_fbx: Default::default(),
             m_lay: Default::default(),
             m_lax: Default::default(),
+            nx: Default::default(),
+            ny: Default::default(),
+            nx_neg: Default::default(),
+            ny_neg: Default::default(),
+            absnx: Default::default(),
+            absny: Default::default(),
+            nmax: Default::default(),
+            v2: Default::default(),
+            id2: Default::default(),
+            ax2: Default::default(),
+            ay2: Default::default(),
+            bx2: Default::default(),
+            by2: Default::default(),
+            absnx2: Default::default(),
+            absny2: Default::default(),
+            negx2: Default::default(),
+            negy2: Default::default(),
+            nmax2: Default::default(),
+            zn0: Default::default(),
+            zn1: Default::default(),
+            zn2: Default::default(),
+            zn3: Default::default(),
+            zn4: Default::default(),
+            zn5: Default::default(),
+            cn16_n: Default::default(),
+            cn8_n: Default::default(),
+            cn4_n: Default::default(),
+            cn2_n: Default::default(),
+            cn1_n: Default::default(),
+            top16_n: Default::default(),
+            top8_n: Default::default(),
+            top4_n: Default::default(),
+            top2_n: Default::default(),
+            v3: Default::default(),
+            id3: Default::default(),
+            ax3: Default::default(),
+            ay3: Default::default(),
+            bx3: Default::default(),
+            by3: Default::default(),
+            absnx3: Default::default(),
+            absny3: Default::default(),
+            negx3: Default::default(),
+            negy3: Default::default(),
+            clz_n3: Default::default(),
+            norm_n3: Default::default(),
             ha: Default::default(),
             hb: Default::default(),
             kk: Default::default(),
@@ -442,31 +659,7 @@ impl Default for Screener {
             is_backward: Default::default(),
             is_back_facing: Default::default(),
             is_outside: Default::default(),
-            is_near: Default::default(),
-            is_pass: Default::default(),
-            nx: Default::default(),
-            ny: Default::default(),
-            nx_neg: Default::default(),
-            ny_neg: Default::default(),
-            absnx: Default::default(),
-            absny: Default::default(),
-            nmax: Default::default(),
-            absnx32: Default::default(),
-            absny32: Default::default(),
-            nmax32: Default::default(),
             k2: Default::default(),
-            zn0: Default::default(),
-            zn1: Default::default(),
-            zn2: Default::default(),
-            zn3: Default::default(),
-            zn4: Default::default(),
-            zn5: Default::default(),
-            cn16_n: Default::default(),
-            cn8_n: Default::default(),
-            cn4_n: Default::default(),
-            cn2_n: Default::default(),
-            cn1_n: Default::default(),
-            clz_n: Default::default(),
             ze0: Default::default(),
             ze1: Default::default(),
             ze2: Default::default(),
@@ -478,44 +671,44 @@ impl Default for Screener {
             ce4_e: Default::default(),
             ce2_e: Default::default(),
             ce1_e: Default::default(),
-            clz_e: Default::default(),
-            top16_n: Default::default(),
-            top8_n: Default::default(),
-            top4_n: Default::default(),
-            top2_n: Default::default(),
             top16_e: Default::default(),
             top8_e: Default::default(),
             top4_e: Default::default(),
             top2_e: Default::default(),
+            v4: Default::default(),
+            id4: Default::default(),
+            ax4: Default::default(),
+            ay4: Default::default(),
+            bx4: Default::default(),
+            by4: Default::default(),
+            absnx4: Default::default(),
+            absny4: Default::default(),
+            negx4: Default::default(),
+            negy4: Default::default(),
+            clz_n4: Default::default(),
+            norm_n4: Default::default(),
+            k4: Default::default(),
+            clz_e4: Default::default(),
+            norm_e4: Default::default(),
+            backward4: Default::default(),
+            back_facing4: Default::default(),
+            outside4: Default::default(),
             s0: Default::default(),
             s0_m1: Default::default(),
             sh: Default::default(),
             sh5: Default::default(),
+            is_near: Default::default(),
+            is_pass: Default::default(),
+            absnx32: Default::default(),
+            absny32: Default::default(),
             low_nx: Default::default(),
             low_ny: Default::default(),
-            r0x: Default::default(),
-            r0y: Default::default(),
-            f0x: Default::default(),
-            f0y: Default::default(),
-            k: Default::default(),
-            sh_r: Default::default(),
-            step: Default::default(),
-            neg_x: Default::default(),
-            neg_y: Default::default(),
-            rx: Default::default(),
-            ry: Default::default(),
-            fx: Default::default(),
-            fy: Default::default(),
-            qx: Default::default(),
-            qy: Default::default(),
-            rx2: Default::default(),
-            ry2: Default::default(),
-            tx: Default::default(),
-            ty: Default::default(),
-            tx_k: Default::default(),
-            ty_k: Default::default(),
-            qx2: Default::default(),
-            qy2: Default::default(),
+            tag_p: Default::default(),
+            tag_x: Default::default(),
+            tag_y: Default::default(),
+            divider: Default::default(),
+            qx18: Default::default(),
+            qy18: Default::default(),
             wx_neg: Default::default(),
             wy_neg: Default::default(),
             c_passed: Default::default(),
@@ -523,33 +716,30 @@ impl Default for Screener {
             c_back_facing: Default::default(),
             c_outside: Default::default(),
             c_near: Default::default(),
-            st_idle: Constant::new(0u64.into()),
-            st_m1: Constant::new(1u64.into()),
-            st_m2: Constant::new(2u64.into()),
-            st_verdict: Constant::new(3u64.into()),
-            st_div: Constant::new(4u64.into()),
-            st_out: Constant::new(5u64.into()),
+            depth6: Constant::new((DEPTH as u64).into()),
+            zero6: Constant::new(0u64.into()),
+            one6: Constant::new(1u64.into()),
+            two6: Constant::new(2u64.into()),
+            one5: Constant::new(1u64.into()),
             zero18: Constant::new(0u64.into()),
             zero32: Constant::new(0u64.into()),
             one32: Constant::new(1u64.into()),
             msb32: Constant::new(0x8000_0000u64.into()),
             thr_f: Constant::new(0x7FFF_FF00u64.into()),
             thr_l: Constant::new(0x8000_0100u64.into()),
-            zero6: Constant::new(0u64.into()),
             zero16: Constant::new(0u64.into()),
             zero8: Constant::new(0u64.into()),
             zero4: Constant::new(0u64.into()),
             zero2: Constant::new(0u64.into()),
+            zero3: Constant::new(0u64.into()),
             sh16: Constant::new(16u64.into()),
             sh8: Constant::new(8u64.into()),
             sh4: Constant::new(4u64.into()),
             sh2: Constant::new(2u64.into()),
             sh1: Constant::new(1u64.into()),
             sh3: Constant::new(3u64.into()),
-            sh13: Constant::new(13u64.into()),
-            sh14: Constant::new(14u64.into()),
-            sh15: Constant::new(15u64.into()),
-            one6: Constant::new(1u64.into()),
+            sh1_3: Constant::new(1u64.into()),
+            sh2_3: Constant::new(2u64.into()),
             c16_6: Constant::new(16u64.into()),
             c8_6: Constant::new(8u64.into()),
             c4_6: Constant::new(4u64.into()),
@@ -558,11 +748,24 @@ impl Default for Screener {
             sh_lo: Constant::new(61u64.into()),
             sh_m1: Constant::new(63u64.into()),
             sh_m2: Constant::new(62u64.into()),
-            zero5: Constant::new(0u64.into()),
-            one5: Constant::new(1u64.into()),
-            last_step: Constant::new(16u64.into()),
-            one18: Constant::new(1u64.into()),
+            tag_pass: Constant::new(1u64.into()),
+            tag_negx: Constant::new(2u64.into()),
+            tag_negy: Constant::new(4u64.into()),
         }
+    }
+}
+
+impl Screener {
+    /// Patches in flight, `0..=DEPTH`: accepted and not yet decided, or passed and not yet out
+    /// (the credit count that `in_ready` compares with [`DEPTH`]): for testbenches.
+    pub fn in_flight(&self) -> usize {
+        self.used.q.val().index()
+    }
+
+    /// Passing patches whose setup is complete in the output FIFO and has not left yet: for
+    /// testbenches.
+    pub fn buffered(&self) -> usize {
+        self.done.q.val().index()
     }
 }
 
@@ -572,23 +775,59 @@ impl Logic for Screener {
         dff_setup!(
             self,
             clock,
-            state,
-            id,
-            ax,
-            ay,
-            bx,
-            by,
-            k,
-            sh_r,
-            step,
-            neg_x,
-            neg_y,
-            rx,
-            ry,
-            fx,
-            fy,
-            qx,
-            qy,
+            used,
+            done,
+            res_ptr,
+            fill_ptr,
+            rd_ptr,
+            head_valid,
+            v1,
+            id1,
+            ax1,
+            ay1,
+            bx1,
+            by1,
+            v2,
+            id2,
+            ax2,
+            ay2,
+            bx2,
+            by2,
+            absnx2,
+            absny2,
+            negx2,
+            negy2,
+            nmax2,
+            v3,
+            id3,
+            ax3,
+            ay3,
+            bx3,
+            by3,
+            absnx3,
+            absny3,
+            negx3,
+            negy3,
+            clz_n3,
+            norm_n3,
+            v4,
+            id4,
+            ax4,
+            ay4,
+            bx4,
+            by4,
+            absnx4,
+            absny4,
+            negx4,
+            negy4,
+            clz_n4,
+            norm_n4,
+            k4,
+            clz_e4,
+            norm_e4,
+            backward4,
+            back_facing4,
+            outside4,
             c_passed,
             c_backward,
             c_back_facing,
@@ -605,59 +844,59 @@ impl Logic for Screener {
         self.m_fbx.clock.next = self.clock.val();
         self.m_lay.clock.next = self.clock.val();
         self.m_lax.clock.next = self.clock.val();
+        self.divider.clock.next = self.clock.val();
+        self.lane_id.clock.next = self.clock.val();
+        self.lane_ax.clock.next = self.clock.val();
+        self.lane_ay.clock.next = self.clock.val();
+        self.lane_bx.clock.next = self.clock.val();
+        self.lane_by.clock.next = self.clock.val();
+        self.lane_sh.clock.next = self.clock.val();
+        self.lane_wx.clock.next = self.clock.val();
+        self.lane_wy.clock.next = self.clock.val();
 
-        // Sequencer.
-        self.is_idle.next = self.state.q.val() == self.st_idle.val();
-        self.is_m1.next = self.state.q.val() == self.st_m1.val();
-        self.is_m2.next = self.state.q.val() == self.st_m2.val();
-        self.is_verdict.next = self.state.q.val() == self.st_verdict.val();
-        self.is_div.next = self.state.q.val() == self.st_div.val();
-        self.is_out.next = self.state.q.val() == self.st_out.val();
-
-        // Cycle 0: coordinates relative to the origin (18 bits, exact).
+        // Stage 0: a patch is accepted while fewer than DEPTH are in flight (a register
+        // comparison: no path from out_ready to in_ready). Its coordinates relative to the
+        // origin (18 bits, exact) enter the pipeline, which never stalls.
+        self.room.next = self.used.q.val() != self.depth6.val();
+        self.in_ready.next = self.room.val();
+        self.take.next = self.in_valid.val() & self.room.val();
         self.ext_ox.next = bit_cast::<18, 17>(self.origin_x.val());
         self.ext_oy.next = bit_cast::<18, 17>(self.origin_y.val());
         self.ext_ax.next = bit_cast::<18, 17>(self.in_ax.val());
         self.ext_ay.next = bit_cast::<18, 17>(self.in_ay.val());
         self.ext_bx.next = bit_cast::<18, 17>(self.in_bx.val());
         self.ext_by.next = bit_cast::<18, 17>(self.in_by.val());
+        self.v1.d.next = self.take.val();
+        self.id1.d.next = self.in_id.val();
+        self.ax1.d.next = self.ext_ax.val() - self.ext_ox.val();
+        self.ay1.d.next = self.ext_ay.val() - self.ext_oy.val();
+        self.bx1.d.next = self.ext_bx.val() - self.ext_ox.val();
+        self.by1.d.next = self.ext_by.val() - self.ext_oy.val();
 
-        // Cycles 1–2: the ten products of the registered patch.
+        // Stage 1: the ten products start (Mul18 leaves, latency 2); n = (b.y − a.y, a.x − b.x)
+        // = (B.y − A.y, A.x − B.x), so |n_c| < 2^17; its magnitudes and nmax.
         self.m_nax.a.next = self.normal_x.val();
-        self.m_nax.b.next = self.ax.q.val();
+        self.m_nax.b.next = self.ax1.q.val();
         self.m_nay.a.next = self.normal_y.val();
-        self.m_nay.b.next = self.ay.q.val();
+        self.m_nay.b.next = self.ay1.q.val();
         self.m_nbx.a.next = self.normal_x.val();
-        self.m_nbx.b.next = self.bx.q.val();
+        self.m_nbx.b.next = self.bx1.q.val();
         self.m_nby.a.next = self.normal_y.val();
-        self.m_nby.b.next = self.by.q.val();
-        self.m_aby.a.next = self.ax.q.val();
-        self.m_aby.b.next = self.by.q.val();
-        self.m_abx.a.next = self.ay.q.val();
-        self.m_abx.b.next = self.bx.q.val();
+        self.m_nby.b.next = self.by1.q.val();
+        self.m_aby.a.next = self.ax1.q.val();
+        self.m_aby.b.next = self.by1.q.val();
+        self.m_abx.a.next = self.ay1.q.val();
+        self.m_abx.b.next = self.bx1.q.val();
         self.m_fby.a.next = self.first_x.val();
-        self.m_fby.b.next = self.by.q.val();
+        self.m_fby.b.next = self.by1.q.val();
         self.m_fbx.a.next = self.first_y.val();
-        self.m_fbx.b.next = self.bx.q.val();
+        self.m_fbx.b.next = self.bx1.q.val();
         self.m_lay.a.next = self.last_x.val();
-        self.m_lay.b.next = self.ay.q.val();
+        self.m_lay.b.next = self.ay1.q.val();
         self.m_lax.a.next = self.last_y.val();
-        self.m_lax.b.next = self.ax.q.val();
-
-        // Cycle 3: the verdict.
-        self.ha.next = self.m_nax.p.val() + self.m_nay.p.val();
-        self.hb.next = self.m_nbx.p.val() + self.m_nby.p.val();
-        self.kk.next = self.m_aby.p.val() - self.m_abx.p.val();
-        self.side_f.next = self.m_fby.p.val() - self.m_fbx.p.val();
-        self.side_l.next = self.m_lay.p.val() - self.m_lax.p.val();
-        // Signed comparisons with the margin as unsigned ones on the sign-flipped values.
-        self.side_f_x.next = self.side_f.val() ^ self.msb32.val();
-        self.side_l_x.next = self.side_l.val() ^ self.msb32.val();
-        self.ha_pos.next = !self.ha.val().get_bit(31) & (self.ha.val() != self.zero32.val());
-        self.hb_pos.next = !self.hb.val().get_bit(31) & (self.hb.val() != self.zero32.val());
-        // n = (b.y − a.y, a.x − b.x) = (B.y − A.y, A.x − B.x): |n_c| < 2^17.
-        self.nx.next = self.by.q.val() - self.ay.q.val();
-        self.ny.next = self.ax.q.val() - self.bx.q.val();
+        self.m_lax.b.next = self.ax1.q.val();
+        self.nx.next = self.by1.q.val() - self.ay1.q.val();
+        self.ny.next = self.ax1.q.val() - self.bx1.q.val();
         self.nx_neg.next = self.zero18.val() - self.nx.val();
         self.ny_neg.next = self.zero18.val() - self.ny.val();
         self.absnx.next = self.nx.val();
@@ -672,12 +911,21 @@ impl Logic for Screener {
         if self.absnx.val() > self.absny.val() {
             self.nmax.next = self.absnx.val();
         }
-        self.absnx32.next = bit_cast::<32, 18>(self.absnx.val());
-        self.absny32.next = bit_cast::<32, 18>(self.absny.val());
-        self.nmax32.next = bit_cast::<32, 18>(self.nmax.val());
-        self.k2.next = self.kk.val() << self.sh1.val();
-        // Leading zeros of nmax: five conditional shifts.
-        self.zn0.next = self.nmax32.val();
+        self.v2.d.next = self.v1.q.val();
+        self.id2.d.next = self.id1.q.val();
+        self.ax2.d.next = self.ax1.q.val();
+        self.ay2.d.next = self.ay1.q.val();
+        self.bx2.d.next = self.bx1.q.val();
+        self.by2.d.next = self.by1.q.val();
+        self.absnx2.d.next = self.absnx.val();
+        self.absny2.d.next = self.absny.val();
+        self.negx2.d.next = self.nx.val().get_bit(17);
+        self.negy2.d.next = self.ny.val().get_bit(17);
+        self.nmax2.d.next = self.nmax.val();
+
+        // Stage 2: the leading zeros of nmax (as 32 bits) by five conditional shifts, and nmax
+        // normalised (its leading one at bit 31).
+        self.zn0.next = bit_cast::<32, 18>(self.nmax2.q.val());
         self.top16_n.next = self.zn0.val().get_bits::<16>(16);
         self.zn1.next = self.zn0.val();
         self.cn16_n.next = self.zero6.val();
@@ -712,9 +960,41 @@ impl Logic for Screener {
             self.zn5.next = self.zn4.val() << self.sh1.val();
             self.cn1_n.next = self.c1_6.val();
         }
-        self.clz_n.next =
+        self.v3.d.next = self.v2.q.val();
+        self.id3.d.next = self.id2.q.val();
+        self.ax3.d.next = self.ax2.q.val();
+        self.ay3.d.next = self.ay2.q.val();
+        self.bx3.d.next = self.bx2.q.val();
+        self.by3.d.next = self.by2.q.val();
+        self.absnx3.d.next = self.absnx2.q.val();
+        self.absny3.d.next = self.absny2.q.val();
+        self.negx3.d.next = self.negx2.q.val();
+        self.negy3.d.next = self.negy2.q.val();
+        self.clz_n3.d.next =
             self.cn16_n.val() | self.cn8_n.val() | self.cn4_n.val() | self.cn2_n.val() | self.cn1_n.val();
-        // Leading zeros of 2K.
+        self.norm_n3.d.next = self.zn5.val();
+
+        // Stage 3: the products arrive. Sums and differences, the screens by priority (backward,
+        // back-facing, outside the sector), and the leading zeros of 2K (K < 2^31 when it
+        // passes, so 2K fits 32 bits).
+        self.ha.next = self.m_nax.p.val() + self.m_nay.p.val();
+        self.hb.next = self.m_nbx.p.val() + self.m_nby.p.val();
+        self.kk.next = self.m_aby.p.val() - self.m_abx.p.val();
+        self.side_f.next = self.m_fby.p.val() - self.m_fbx.p.val();
+        self.side_l.next = self.m_lay.p.val() - self.m_lax.p.val();
+        // Signed comparisons with the margin as unsigned ones on the sign-flipped values.
+        self.side_f_x.next = self.side_f.val() ^ self.msb32.val();
+        self.side_l_x.next = self.side_l.val() ^ self.msb32.val();
+        self.ha_pos.next = !self.ha.val().get_bit(31) & (self.ha.val() != self.zero32.val());
+        self.hb_pos.next = !self.hb.val().get_bit(31) & (self.hb.val() != self.zero32.val());
+        self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
+        self.is_back_facing.next =
+            !self.is_backward.val() & (self.kk.val().get_bit(31) | (self.kk.val() == self.zero32.val()));
+        self.is_outside.next = !self.is_backward.val()
+            & !self.is_back_facing.val()
+            & ((self.hb_pos.val() & (self.side_f_x.val() < self.thr_f.val()))
+                | (self.ha_pos.val() & (self.side_l_x.val() > self.thr_l.val())));
+        self.k2.next = self.kk.val() << self.sh1.val();
         self.ze0.next = self.k2.val();
         self.top16_e.next = self.ze0.val().get_bits::<16>(16);
         self.ze1.next = self.ze0.val();
@@ -750,181 +1030,219 @@ impl Logic for Screener {
             self.ze5.next = self.ze4.val() << self.sh1.val();
             self.ce1_e.next = self.c1_6.val();
         }
-        self.clz_e.next =
+        self.v4.d.next = self.v3.q.val();
+        self.id4.d.next = self.id3.q.val();
+        self.ax4.d.next = self.ax3.q.val();
+        self.ay4.d.next = self.ay3.q.val();
+        self.bx4.d.next = self.bx3.q.val();
+        self.by4.d.next = self.by3.q.val();
+        self.absnx4.d.next = self.absnx3.q.val();
+        self.absny4.d.next = self.absny3.q.val();
+        self.negx4.d.next = self.negx3.q.val();
+        self.negy4.d.next = self.negy3.q.val();
+        self.clz_n4.d.next = self.clz_n3.q.val();
+        self.norm_n4.d.next = self.norm_n3.q.val();
+        self.k4.d.next = self.kk.val();
+        self.clz_e4.d.next =
             self.ce16_e.val() | self.ce8_e.val() | self.ce4_e.val() | self.ce2_e.val() | self.ce1_e.val();
-        // With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their leading one: the largest
-        // sh with nmax·2^sh < 2K is s0 when the normalised nmax is below the normalised 2K, else
-        // s0 − 1. It lies in [−17, 31]; below −3 the patch is near.
-        self.s0.next = self.clz_n.val() - self.clz_e.val();
+        self.norm_e4.d.next = self.ze5.val();
+        self.backward4.d.next = self.is_backward.val();
+        self.back_facing4.d.next = self.is_back_facing.val();
+        self.outside4.d.next = self.is_outside.val();
+
+        // Stage 4: the verdict. With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their
+        // leading one: the largest sh with nmax·2^sh < 2K is s0 when the normalised nmax is
+        // below the normalised 2K, else s0 − 1. It lies in [−17, 31]; below −3 the patch is
+        // near.
+        self.s0.next = self.clz_n4.q.val() - self.clz_e4.q.val();
         self.s0_m1.next = self.s0.val() - self.one6.val();
         self.sh.next = self.s0_m1.val();
-        if self.zn5.val() < self.ze5.val() {
+        if self.norm_n4.q.val() < self.norm_e4.q.val() {
             self.sh.next = self.s0.val();
         }
         self.sh5.next = self.sh.val().get_bits::<5>(0);
-        // The dividers' initial remainders floor(|n_c|·2^sh) and the bits shifted out (sh < 0),
-        // fed in first.
-        self.low_nx.next = self.absnx32.val().get_bits::<16>(0);
-        self.low_ny.next = self.absny32.val().get_bits::<16>(0);
-        self.r0x.next = self.absnx32.val() << self.sh5.val();
-        self.r0y.next = self.absny32.val() << self.sh5.val();
-        self.f0x.next = self.zero16.val();
-        self.f0y.next = self.zero16.val();
-        if self.sh.val() == self.sh_m1.val() {
-            self.r0x.next = self.absnx32.val() >> self.sh1.val();
-            self.r0y.next = self.absny32.val() >> self.sh1.val();
-            self.f0x.next = self.low_nx.val() << self.sh15.val();
-            self.f0y.next = self.low_ny.val() << self.sh15.val();
-        } else if self.sh.val() == self.sh_m2.val() {
-            self.r0x.next = self.absnx32.val() >> self.sh2.val();
-            self.r0y.next = self.absny32.val() >> self.sh2.val();
-            self.f0x.next = self.low_nx.val() << self.sh14.val();
-            self.f0y.next = self.low_ny.val() << self.sh14.val();
-        } else if self.sh.val() == self.sh_lo.val() {
-            self.r0x.next = self.absnx32.val() >> self.sh3.val();
-            self.r0y.next = self.absny32.val() >> self.sh3.val();
-            self.f0x.next = self.low_nx.val() << self.sh13.val();
-            self.f0y.next = self.low_ny.val() << self.sh13.val();
-        }
-        // The verdict, by priority.
-        self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
-        self.is_back_facing.next =
-            !self.is_backward.val() & (self.kk.val().get_bit(31) | (self.kk.val() == self.zero32.val()));
-        self.is_outside.next = !self.is_backward.val()
-            & !self.is_back_facing.val()
-            & ((self.hb_pos.val() & (self.side_f_x.val() < self.thr_f.val()))
-                | (self.ha_pos.val() & (self.side_l_x.val() > self.thr_l.val())));
-        self.is_near.next = !self.is_backward.val()
-            & !self.is_back_facing.val()
-            & !self.is_outside.val()
+        self.is_near.next = !self.backward4.q.val()
+            & !self.back_facing4.q.val()
+            & !self.outside4.q.val()
             & self.sh.val().get_bit(5)
             & (self.sh.val() < self.sh_lo.val());
-        self.is_pass.next = !self.is_backward.val()
-            & !self.is_back_facing.val()
-            & !self.is_outside.val()
+        self.is_pass.next = !self.backward4.q.val()
+            & !self.back_facing4.q.val()
+            & !self.outside4.q.val()
             & !self.is_near.val();
-
-        // Cycles 4–20: one restoring-division step per cycle and component. The partial
-        // remainders stay below 2K ≤ 2^32 − 2; step 0 compares the initial remainder itself.
-        self.rx2.next = self.rx.q.val() << self.sh1.val();
-        self.ry2.next = self.ry.q.val() << self.sh1.val();
-        self.tx.next = self.rx2.val();
-        if self.fx.q.val().get_bit(15) {
-            self.tx.next = self.rx2.val() | self.one32.val();
-        }
-        self.ty.next = self.ry2.val();
-        if self.fy.q.val().get_bit(15) {
-            self.ty.next = self.ry2.val() | self.one32.val();
-        }
-        if self.step.q.val() == self.zero5.val() {
-            self.tx.next = self.rx.q.val();
-            self.ty.next = self.ry.q.val();
-        }
-        self.tx_k.next = self.tx.val() - self.k.q.val();
-        self.ty_k.next = self.ty.val() - self.k.q.val();
-        self.qx2.next = self.qx.q.val() << self.one18.val();
-        self.qy2.next = self.qy.q.val() << self.one18.val();
-        if self.is_div.val() {
-            self.step.d.next = self.step.q.val() + self.one5.val();
-            if self.step.q.val() != self.zero5.val() {
-                self.fx.d.next = self.fx.q.val() << self.sh1.val();
-                self.fy.d.next = self.fy.q.val() << self.sh1.val();
-            }
-            self.rx.d.next = self.tx.val();
-            self.qx.d.next = self.qx2.val();
-            if self.tx.val() >= self.k.q.val() {
-                self.rx.d.next = self.tx_k.val();
-                self.qx.d.next = self.qx2.val() | self.one18.val();
-            }
-            self.ry.d.next = self.ty.val();
-            self.qy.d.next = self.qy2.val();
-            if self.ty.val() >= self.k.q.val() {
-                self.ry.d.next = self.ty_k.val();
-                self.qy.d.next = self.qy2.val() | self.one18.val();
-            }
-        }
-
-        // Output.
-        self.wx_neg.next = self.zero18.val() - self.qx.q.val();
-        self.wy_neg.next = self.zero18.val() - self.qy.q.val();
-        self.out_valid.next = self.is_out.val();
-        self.out_id.next = self.id.q.val();
-        self.out_ax.next = self.ax.q.val();
-        self.out_ay.next = self.ay.q.val();
-        self.out_bx.next = self.bx.q.val();
-        self.out_by.next = self.by.q.val();
-        self.out_wx.next = self.qx.q.val();
-        if self.neg_x.q.val() {
-            self.out_wx.next = self.wx_neg.val();
-        }
-        self.out_wy.next = self.qy.q.val();
-        if self.neg_y.q.val() {
-            self.out_wy.next = self.wy_neg.val();
-        }
-        self.out_sh.next = self.sh_r.q.val();
-
-        // Handshakes and state transitions.
-        self.in_ready.next = self.is_idle.val()
-            | (self.is_verdict.val() & !self.is_pass.val())
-            | (self.is_out.val() & self.out_ready.val());
-        self.take.next = self.in_valid.val()
-            & (self.is_idle.val()
-                | (self.is_verdict.val() & !self.is_pass.val())
-                | (self.is_out.val() & self.out_ready.val()));
-        if self.is_m1.val() {
-            self.state.d.next = self.st_m2.val();
-        }
-        if self.is_m2.val() {
-            self.state.d.next = self.st_verdict.val();
-        }
-        if self.is_verdict.val() {
-            self.state.d.next = self.st_idle.val();
+        self.screened.next = self.v4.q.val() & !self.is_pass.val();
+        self.reserve.next = self.v4.q.val() & self.is_pass.val();
+        if self.v4.q.val() {
             if self.is_pass.val() {
-                self.state.d.next = self.st_div.val();
-                self.step.d.next = self.zero5.val();
-                self.k.d.next = self.kk.val();
-                self.sh_r.d.next = self.sh.val();
-                self.neg_x.d.next = self.nx.val().get_bit(17);
-                self.neg_y.d.next = self.ny.val().get_bit(17);
-                self.rx.d.next = self.r0x.val();
-                self.ry.d.next = self.r0y.val();
-                self.fx.d.next = self.f0x.val();
-                self.fy.d.next = self.f0y.val();
-                self.qx.d.next = self.zero18.val();
-                self.qy.d.next = self.zero18.val();
                 self.c_passed.d.next = self.c_passed.q.val() + self.one32.val();
             }
-            if self.is_backward.val() {
+            if self.backward4.q.val() {
                 self.c_backward.d.next = self.c_backward.q.val() + self.one32.val();
             }
-            if self.is_back_facing.val() {
+            if self.back_facing4.q.val() {
                 self.c_back_facing.d.next = self.c_back_facing.q.val() + self.one32.val();
             }
-            if self.is_outside.val() {
+            if self.outside4.q.val() {
                 self.c_outside.d.next = self.c_outside.q.val() + self.one32.val();
             }
             if self.is_near.val() {
                 self.c_near.d.next = self.c_near.q.val() + self.one32.val();
             }
         }
-        if self.is_div.val() & (self.step.q.val() == self.last_step.val()) {
-            self.state.d.next = self.st_out.val();
-        }
-        if self.is_out.val() & self.out_ready.val() {
-            self.state.d.next = self.st_idle.val();
-        }
-        if self.take.val() {
-            self.state.d.next = self.st_m1.val();
-            self.id.d.next = self.in_id.val();
-            self.ax.d.next = self.ext_ax.val() - self.ext_ox.val();
-            self.ay.d.next = self.ext_ay.val() - self.ext_oy.val();
-            self.bx.d.next = self.ext_bx.val() - self.ext_ox.val();
-            self.by.d.next = self.ext_by.val() - self.ext_oy.val();
-        }
         self.passed.next = self.c_passed.q.val();
         self.backward.next = self.c_backward.q.val();
         self.back_facing.next = self.c_back_facing.q.val();
         self.outside.next = self.c_outside.q.val();
         self.near.next = self.c_near.q.val();
+        // The dividend floor(|n_c|·2^sh)·2^16 + (bits shifted out)·2^13: the initial remainder
+        // (below 2K) and, for sh < 0, the bits shifted out of |n_c|, fed in MSB first.
+        self.absnx32.next = bit_cast::<32, 18>(self.absnx4.q.val());
+        self.absny32.next = bit_cast::<32, 18>(self.absny4.q.val());
+        self.low_nx.next = self.absnx4.q.val().get_bits::<3>(0);
+        self.low_ny.next = self.absny4.q.val().get_bits::<3>(0);
+        self.divider.rx.next = self.absnx32.val() << self.sh5.val();
+        self.divider.ry.next = self.absny32.val() << self.sh5.val();
+        self.divider.fx.next = self.zero3.val();
+        self.divider.fy.next = self.zero3.val();
+        if self.sh.val() == self.sh_m1.val() {
+            self.divider.rx.next = self.absnx32.val() >> self.sh1.val();
+            self.divider.ry.next = self.absny32.val() >> self.sh1.val();
+            self.divider.fx.next = self.low_nx.val() << self.sh2_3.val();
+            self.divider.fy.next = self.low_ny.val() << self.sh2_3.val();
+        } else if self.sh.val() == self.sh_m2.val() {
+            self.divider.rx.next = self.absnx32.val() >> self.sh2.val();
+            self.divider.ry.next = self.absny32.val() >> self.sh2.val();
+            self.divider.fx.next = self.low_nx.val() << self.sh1_3.val();
+            self.divider.fy.next = self.low_ny.val() << self.sh1_3.val();
+        } else if self.sh.val() == self.sh_lo.val() {
+            self.divider.rx.next = self.absnx32.val() >> self.sh3.val();
+            self.divider.ry.next = self.absny32.val() >> self.sh3.val();
+            self.divider.fx.next = self.low_nx.val();
+            self.divider.fy.next = self.low_ny.val();
+        }
+        self.divider.k.next = self.k4.q.val();
+        // The tag the divider carries: passing (bit 0), the signs of n (bits 1 and 2).
+        self.tag_p.next = self.zero3.val();
+        if self.reserve.val() {
+            self.tag_p.next = self.tag_pass.val();
+        }
+        self.tag_x.next = self.zero3.val();
+        if self.negx4.q.val() {
+            self.tag_x.next = self.tag_negx.val();
+        }
+        self.tag_y.next = self.zero3.val();
+        if self.negy4.q.val() {
+            self.tag_y.next = self.tag_negy.val();
+        }
+        self.divider.tag.next = self.tag_p.val() | self.tag_x.val() | self.tag_y.val();
+        // A passing patch takes the next slot of the output FIFO: id, a, b and sh now, W when
+        // the divider delivers it.
+        self.lane_id.write_address.next = self.res_ptr.q.val();
+        self.lane_ax.write_address.next = self.res_ptr.q.val();
+        self.lane_ay.write_address.next = self.res_ptr.q.val();
+        self.lane_bx.write_address.next = self.res_ptr.q.val();
+        self.lane_by.write_address.next = self.res_ptr.q.val();
+        self.lane_sh.write_address.next = self.res_ptr.q.val();
+        self.lane_id.write_data.next = self.id4.q.val();
+        self.lane_ax.write_data.next = self.ax4.q.val();
+        self.lane_ay.write_data.next = self.ay4.q.val();
+        self.lane_bx.write_data.next = self.bx4.q.val();
+        self.lane_by.write_data.next = self.by4.q.val();
+        self.lane_sh.write_data.next = self.sh.val();
+        self.lane_id.write_enable.next = self.reserve.val();
+        self.lane_ax.write_enable.next = self.reserve.val();
+        self.lane_ay.write_enable.next = self.reserve.val();
+        self.lane_bx.write_enable.next = self.reserve.val();
+        self.lane_by.write_enable.next = self.reserve.val();
+        self.lane_sh.write_enable.next = self.reserve.val();
+        self.res_inc.next = self.res_ptr.q.val() + self.one5.val();
+        if self.reserve.val() {
+            self.res_ptr.d.next = self.res_inc.val();
+        }
+
+        // Stage 22: the quotients of a passing patch arrive (slots fill in the order they were
+        // taken: the divider's latency is fixed); W = sign(n)·q completes the slot.
+        self.fill.next = self.divider.tag_out.val().get_bit(0);
+        self.qx18.next = bit_cast::<18, 17>(self.divider.qx.val());
+        self.qy18.next = bit_cast::<18, 17>(self.divider.qy.val());
+        self.wx_neg.next = self.zero18.val() - self.qx18.val();
+        self.wy_neg.next = self.zero18.val() - self.qy18.val();
+        self.lane_wx.write_address.next = self.fill_ptr.q.val();
+        self.lane_wy.write_address.next = self.fill_ptr.q.val();
+        self.lane_wx.write_data.next = self.qx18.val();
+        if self.divider.tag_out.val().get_bit(1) {
+            self.lane_wx.write_data.next = self.wx_neg.val();
+        }
+        self.lane_wy.write_data.next = self.qy18.val();
+        if self.divider.tag_out.val().get_bit(2) {
+            self.lane_wy.write_data.next = self.wy_neg.val();
+        }
+        self.lane_wx.write_enable.next = self.fill.val();
+        self.lane_wy.write_enable.next = self.fill.val();
+        self.fill_inc.next = self.fill_ptr.q.val() + self.one5.val();
+        if self.fill.val() {
+            self.fill_ptr.d.next = self.fill_inc.val();
+        }
+
+        // Output: the head slot is read every cycle into the lanes' registered read ports at
+        // the address rd_ptr + pop. out_valid is set for the next cycle when a complete slot
+        // remains after this cycle's pop, excluding this cycle's fill (the lanes read before
+        // they write).
+        self.pop.next = self.head_valid.q.val() & self.out_ready.val();
+        self.rd_inc.next = self.rd_ptr.q.val() + self.one5.val();
+        self.done_dec.next = self.done.q.val() - self.one6.val();
+        self.rd_addr.next = self.rd_ptr.q.val();
+        self.done_left.next = self.done.q.val();
+        if self.pop.val() {
+            self.rd_addr.next = self.rd_inc.val();
+            self.rd_ptr.d.next = self.rd_inc.val();
+            self.done_left.next = self.done_dec.val();
+        }
+        self.lane_id.read_address.next = self.rd_addr.val();
+        self.lane_ax.read_address.next = self.rd_addr.val();
+        self.lane_ay.read_address.next = self.rd_addr.val();
+        self.lane_bx.read_address.next = self.rd_addr.val();
+        self.lane_by.read_address.next = self.rd_addr.val();
+        self.lane_sh.read_address.next = self.rd_addr.val();
+        self.lane_wx.read_address.next = self.rd_addr.val();
+        self.lane_wy.read_address.next = self.rd_addr.val();
+        self.head_valid.d.next = self.done_left.val() != self.zero6.val();
+        self.out_valid.next = self.head_valid.q.val();
+        self.out_id.next = self.lane_id.read_data.val();
+        self.out_ax.next = self.lane_ax.read_data.val();
+        self.out_ay.next = self.lane_ay.read_data.val();
+        self.out_bx.next = self.lane_bx.read_data.val();
+        self.out_by.next = self.lane_by.read_data.val();
+        self.out_sh.next = self.lane_sh.read_data.val();
+        self.out_wx.next = self.lane_wx.read_data.val();
+        self.out_wy.next = self.lane_wy.read_data.val();
+
+        // Counters of the credit scheme: `used` counts a patch from its acceptance until its
+        // verdict screens it out or it leaves; `done` counts complete slots not yet out.
+        self.used_inc.next = self.used.q.val() + self.one6.val();
+        self.used_dec.next = self.used.q.val() - self.one6.val();
+        self.used_dec2.next = self.used.q.val() - self.two6.val();
+        if self.take.val() & !self.screened.val() & !self.pop.val() {
+            self.used.d.next = self.used_inc.val();
+        }
+        if !self.take.val() & self.screened.val() & !self.pop.val() {
+            self.used.d.next = self.used_dec.val();
+        }
+        if !self.take.val() & !self.screened.val() & self.pop.val() {
+            self.used.d.next = self.used_dec.val();
+        }
+        if self.take.val() & self.screened.val() & self.pop.val() {
+            self.used.d.next = self.used_dec.val();
+        }
+        if !self.take.val() & self.screened.val() & self.pop.val() {
+            self.used.d.next = self.used_dec2.val();
+        }
+        self.done_inc.next = self.done.q.val() + self.one6.val();
+        if self.fill.val() & !self.pop.val() {
+            self.done.d.next = self.done_inc.val();
+        }
+        if !self.fill.val() & self.pop.val() {
+            self.done.d.next = self.done_dec.val();
+        }
     }
 }

@@ -37,33 +37,30 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     output reg  [31:0] near;
     
     // Constant declarations
-    localparam  st_idle = 3'b0;
-    localparam  st_m1 = 3'b1;
-    localparam  st_m2 = 3'b10;
-    localparam  st_verdict = 3'b11;
-    localparam  st_div = 3'b100;
-    localparam  st_out = 3'b101;
+    localparam  depth6 = 6'b100000;
+    localparam  zero6 = 6'b0;
+    localparam  one6 = 6'b1;
+    localparam  two6 = 6'b10;
+    localparam  one5 = 5'b1;
     localparam  zero18 = 18'b0;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  msb32 = 32'h80000000;
     localparam  thr_f = 32'h7fffff00;
     localparam  thr_l = 32'h80000100;
-    localparam  zero6 = 6'b0;
     localparam  zero16 = 16'h0;
     localparam  zero8 = 8'h0;
     localparam  zero4 = 4'h0;
     localparam  zero2 = 2'b0;
+    localparam  zero3 = 3'b0;
     localparam  sh16 = 32'h10;
     localparam  sh8 = 32'h8;
     localparam  sh4 = 32'h4;
     localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
     localparam  sh3 = 32'h3;
-    localparam  sh13 = 16'hd;
-    localparam  sh14 = 16'he;
-    localparam  sh15 = 16'hf;
-    localparam  one6 = 6'b1;
+    localparam  sh1_3 = 3'b1;
+    localparam  sh2_3 = 3'b10;
     localparam  c16_6 = 6'b10000;
     localparam  c8_6 = 6'b1000;
     localparam  c4_6 = 6'b100;
@@ -72,30 +69,95 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  sh_lo = 6'b111101;
     localparam  sh_m1 = 6'b111111;
     localparam  sh_m2 = 6'b111110;
-    localparam  zero5 = 5'b0;
-    localparam  one5 = 5'b1;
-    localparam  last_step = 5'b10000;
-    localparam  one18 = 18'b1;
+    localparam  tag_pass = 3'b1;
+    localparam  tag_negx = 3'b10;
+    localparam  tag_negy = 3'b100;
     
     // Stub signals
-    reg  [2:0] state$d;
-    wire  [2:0] state$q;
-    reg  state$clock;
-    reg  [15:0] id$d;
-    wire  [15:0] id$q;
-    reg  id$clock;
-    reg  [17:0] ax$d;
-    wire  [17:0] ax$q;
-    reg  ax$clock;
-    reg  [17:0] ay$d;
-    wire  [17:0] ay$q;
-    reg  ay$clock;
-    reg  [17:0] bx$d;
-    wire  [17:0] bx$q;
-    reg  bx$clock;
-    reg  [17:0] by$d;
-    wire  [17:0] by$q;
-    reg  by$clock;
+    reg  [5:0] used$d;
+    wire  [5:0] used$q;
+    reg  used$clock;
+    reg  [5:0] done$d;
+    wire  [5:0] done$q;
+    reg  done$clock;
+    reg  [4:0] res_ptr$d;
+    wire  [4:0] res_ptr$q;
+    reg  res_ptr$clock;
+    reg  [4:0] fill_ptr$d;
+    wire  [4:0] fill_ptr$q;
+    reg  fill_ptr$clock;
+    reg  [4:0] rd_ptr$d;
+    wire  [4:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    reg  lane_id$clock;
+    reg  [4:0] lane_id$read_address;
+    wire  [15:0] lane_id$read_data;
+    reg  [4:0] lane_id$write_address;
+    reg  [15:0] lane_id$write_data;
+    reg  lane_id$write_enable;
+    reg  lane_ax$clock;
+    reg  [4:0] lane_ax$read_address;
+    wire  [17:0] lane_ax$read_data;
+    reg  [4:0] lane_ax$write_address;
+    reg  [17:0] lane_ax$write_data;
+    reg  lane_ax$write_enable;
+    reg  lane_ay$clock;
+    reg  [4:0] lane_ay$read_address;
+    wire  [17:0] lane_ay$read_data;
+    reg  [4:0] lane_ay$write_address;
+    reg  [17:0] lane_ay$write_data;
+    reg  lane_ay$write_enable;
+    reg  lane_bx$clock;
+    reg  [4:0] lane_bx$read_address;
+    wire  [17:0] lane_bx$read_data;
+    reg  [4:0] lane_bx$write_address;
+    reg  [17:0] lane_bx$write_data;
+    reg  lane_bx$write_enable;
+    reg  lane_by$clock;
+    reg  [4:0] lane_by$read_address;
+    wire  [17:0] lane_by$read_data;
+    reg  [4:0] lane_by$write_address;
+    reg  [17:0] lane_by$write_data;
+    reg  lane_by$write_enable;
+    reg  lane_sh$clock;
+    reg  [4:0] lane_sh$read_address;
+    wire  [5:0] lane_sh$read_data;
+    reg  [4:0] lane_sh$write_address;
+    reg  [5:0] lane_sh$write_data;
+    reg  lane_sh$write_enable;
+    reg  lane_wx$clock;
+    reg  [4:0] lane_wx$read_address;
+    wire  [17:0] lane_wx$read_data;
+    reg  [4:0] lane_wx$write_address;
+    reg  [17:0] lane_wx$write_data;
+    reg  lane_wx$write_enable;
+    reg  lane_wy$clock;
+    reg  [4:0] lane_wy$read_address;
+    wire  [17:0] lane_wy$read_data;
+    reg  [4:0] lane_wy$write_address;
+    reg  [17:0] lane_wy$write_data;
+    reg  lane_wy$write_enable;
+    reg  v1$d;
+    wire  v1$q;
+    reg  v1$clock;
+    reg  [15:0] id1$d;
+    wire  [15:0] id1$q;
+    reg  id1$clock;
+    reg  [17:0] ax1$d;
+    wire  [17:0] ax1$q;
+    reg  ax1$clock;
+    reg  [17:0] ay1$d;
+    wire  [17:0] ay1$q;
+    reg  ay1$clock;
+    reg  [17:0] bx1$d;
+    wire  [17:0] bx1$q;
+    reg  bx1$clock;
+    reg  [17:0] by1$d;
+    wire  [17:0] by1$q;
+    reg  by1$clock;
     reg  m_nax$clock;
     reg  [17:0] m_nax$a;
     reg  [17:0] m_nax$b;
@@ -136,39 +198,139 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [17:0] m_lax$a;
     reg  [17:0] m_lax$b;
     wire  [31:0] m_lax$p;
-    reg  [31:0] k$d;
-    wire  [31:0] k$q;
-    reg  k$clock;
-    reg  [5:0] sh_r$d;
-    wire  [5:0] sh_r$q;
-    reg  sh_r$clock;
-    reg  [4:0] step$d;
-    wire  [4:0] step$q;
-    reg  step$clock;
-    reg  neg_x$d;
-    wire  neg_x$q;
-    reg  neg_x$clock;
-    reg  neg_y$d;
-    wire  neg_y$q;
-    reg  neg_y$clock;
-    reg  [31:0] rx$d;
-    wire  [31:0] rx$q;
-    reg  rx$clock;
-    reg  [31:0] ry$d;
-    wire  [31:0] ry$q;
-    reg  ry$clock;
-    reg  [15:0] fx$d;
-    wire  [15:0] fx$q;
-    reg  fx$clock;
-    reg  [15:0] fy$d;
-    wire  [15:0] fy$q;
-    reg  fy$clock;
-    reg  [17:0] qx$d;
-    wire  [17:0] qx$q;
-    reg  qx$clock;
-    reg  [17:0] qy$d;
-    wire  [17:0] qy$q;
-    reg  qy$clock;
+    reg  v2$d;
+    wire  v2$q;
+    reg  v2$clock;
+    reg  [15:0] id2$d;
+    wire  [15:0] id2$q;
+    reg  id2$clock;
+    reg  [17:0] ax2$d;
+    wire  [17:0] ax2$q;
+    reg  ax2$clock;
+    reg  [17:0] ay2$d;
+    wire  [17:0] ay2$q;
+    reg  ay2$clock;
+    reg  [17:0] bx2$d;
+    wire  [17:0] bx2$q;
+    reg  bx2$clock;
+    reg  [17:0] by2$d;
+    wire  [17:0] by2$q;
+    reg  by2$clock;
+    reg  [17:0] absnx2$d;
+    wire  [17:0] absnx2$q;
+    reg  absnx2$clock;
+    reg  [17:0] absny2$d;
+    wire  [17:0] absny2$q;
+    reg  absny2$clock;
+    reg  negx2$d;
+    wire  negx2$q;
+    reg  negx2$clock;
+    reg  negy2$d;
+    wire  negy2$q;
+    reg  negy2$clock;
+    reg  [17:0] nmax2$d;
+    wire  [17:0] nmax2$q;
+    reg  nmax2$clock;
+    reg  v3$d;
+    wire  v3$q;
+    reg  v3$clock;
+    reg  [15:0] id3$d;
+    wire  [15:0] id3$q;
+    reg  id3$clock;
+    reg  [17:0] ax3$d;
+    wire  [17:0] ax3$q;
+    reg  ax3$clock;
+    reg  [17:0] ay3$d;
+    wire  [17:0] ay3$q;
+    reg  ay3$clock;
+    reg  [17:0] bx3$d;
+    wire  [17:0] bx3$q;
+    reg  bx3$clock;
+    reg  [17:0] by3$d;
+    wire  [17:0] by3$q;
+    reg  by3$clock;
+    reg  [17:0] absnx3$d;
+    wire  [17:0] absnx3$q;
+    reg  absnx3$clock;
+    reg  [17:0] absny3$d;
+    wire  [17:0] absny3$q;
+    reg  absny3$clock;
+    reg  negx3$d;
+    wire  negx3$q;
+    reg  negx3$clock;
+    reg  negy3$d;
+    wire  negy3$q;
+    reg  negy3$clock;
+    reg  [5:0] clz_n3$d;
+    wire  [5:0] clz_n3$q;
+    reg  clz_n3$clock;
+    reg  [31:0] norm_n3$d;
+    wire  [31:0] norm_n3$q;
+    reg  norm_n3$clock;
+    reg  v4$d;
+    wire  v4$q;
+    reg  v4$clock;
+    reg  [15:0] id4$d;
+    wire  [15:0] id4$q;
+    reg  id4$clock;
+    reg  [17:0] ax4$d;
+    wire  [17:0] ax4$q;
+    reg  ax4$clock;
+    reg  [17:0] ay4$d;
+    wire  [17:0] ay4$q;
+    reg  ay4$clock;
+    reg  [17:0] bx4$d;
+    wire  [17:0] bx4$q;
+    reg  bx4$clock;
+    reg  [17:0] by4$d;
+    wire  [17:0] by4$q;
+    reg  by4$clock;
+    reg  [17:0] absnx4$d;
+    wire  [17:0] absnx4$q;
+    reg  absnx4$clock;
+    reg  [17:0] absny4$d;
+    wire  [17:0] absny4$q;
+    reg  absny4$clock;
+    reg  negx4$d;
+    wire  negx4$q;
+    reg  negx4$clock;
+    reg  negy4$d;
+    wire  negy4$q;
+    reg  negy4$clock;
+    reg  [5:0] clz_n4$d;
+    wire  [5:0] clz_n4$q;
+    reg  clz_n4$clock;
+    reg  [31:0] norm_n4$d;
+    wire  [31:0] norm_n4$q;
+    reg  norm_n4$clock;
+    reg  [31:0] k4$d;
+    wire  [31:0] k4$q;
+    reg  k4$clock;
+    reg  [5:0] clz_e4$d;
+    wire  [5:0] clz_e4$q;
+    reg  clz_e4$clock;
+    reg  [31:0] norm_e4$d;
+    wire  [31:0] norm_e4$q;
+    reg  norm_e4$clock;
+    reg  backward4$d;
+    wire  backward4$q;
+    reg  backward4$clock;
+    reg  back_facing4$d;
+    wire  back_facing4$q;
+    reg  back_facing4$clock;
+    reg  outside4$d;
+    wire  outside4$q;
+    reg  outside4$clock;
+    reg  divider$clock;
+    reg  [31:0] divider$rx;
+    reg  [31:0] divider$ry;
+    reg  [2:0] divider$fx;
+    reg  [2:0] divider$fy;
+    reg  [31:0] divider$k;
+    reg  [2:0] divider$tag;
+    wire  [16:0] divider$qx;
+    wire  [16:0] divider$qy;
+    wire  [2:0] divider$tag_out;
     reg  [31:0] c_passed$d;
     wire  [31:0] c_passed$q;
     reg  c_passed$clock;
@@ -186,19 +348,50 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  c_near$clock;
     
     // Local signals
-    reg  is_idle;
-    reg  is_m1;
-    reg  is_m2;
-    reg  is_verdict;
-    reg  is_div;
-    reg  is_out;
+    reg  room;
     reg  take;
+    reg  pop;
+    reg  screened;
+    reg  reserve;
+    reg  fill;
+    reg  [5:0] used_inc;
+    reg  [5:0] used_dec;
+    reg  [5:0] used_dec2;
+    reg  [5:0] done_inc;
+    reg  [5:0] done_dec;
+    reg  [5:0] done_left;
+    reg  [4:0] res_inc;
+    reg  [4:0] fill_inc;
+    reg  [4:0] rd_inc;
+    reg  [4:0] rd_addr;
     reg  [17:0] ext_ox;
     reg  [17:0] ext_oy;
     reg  [17:0] ext_ax;
     reg  [17:0] ext_ay;
     reg  [17:0] ext_bx;
     reg  [17:0] ext_by;
+    reg  [17:0] nx;
+    reg  [17:0] ny;
+    reg  [17:0] nx_neg;
+    reg  [17:0] ny_neg;
+    reg  [17:0] absnx;
+    reg  [17:0] absny;
+    reg  [17:0] nmax;
+    reg  [31:0] zn0;
+    reg  [31:0] zn1;
+    reg  [31:0] zn2;
+    reg  [31:0] zn3;
+    reg  [31:0] zn4;
+    reg  [31:0] zn5;
+    reg  [5:0] cn16_n;
+    reg  [5:0] cn8_n;
+    reg  [5:0] cn4_n;
+    reg  [5:0] cn2_n;
+    reg  [5:0] cn1_n;
+    reg  [15:0] top16_n;
+    reg  [7:0] top8_n;
+    reg  [3:0] top4_n;
+    reg  [1:0] top2_n;
     reg  [31:0] ha;
     reg  [31:0] hb;
     reg  [31:0] kk;
@@ -211,31 +404,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  is_backward;
     reg  is_back_facing;
     reg  is_outside;
-    reg  is_near;
-    reg  is_pass;
-    reg  [17:0] nx;
-    reg  [17:0] ny;
-    reg  [17:0] nx_neg;
-    reg  [17:0] ny_neg;
-    reg  [17:0] absnx;
-    reg  [17:0] absny;
-    reg  [17:0] nmax;
-    reg  [31:0] absnx32;
-    reg  [31:0] absny32;
-    reg  [31:0] nmax32;
     reg  [31:0] k2;
-    reg  [31:0] zn0;
-    reg  [31:0] zn1;
-    reg  [31:0] zn2;
-    reg  [31:0] zn3;
-    reg  [31:0] zn4;
-    reg  [31:0] zn5;
-    reg  [5:0] cn16_n;
-    reg  [5:0] cn8_n;
-    reg  [5:0] cn4_n;
-    reg  [5:0] cn2_n;
-    reg  [5:0] cn1_n;
-    reg  [5:0] clz_n;
     reg  [31:0] ze0;
     reg  [31:0] ze1;
     reg  [31:0] ze2;
@@ -247,11 +416,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] ce4_e;
     reg  [5:0] ce2_e;
     reg  [5:0] ce1_e;
-    reg  [5:0] clz_e;
-    reg  [15:0] top16_n;
-    reg  [7:0] top8_n;
-    reg  [3:0] top4_n;
-    reg  [1:0] top2_n;
     reg  [15:0] top16_e;
     reg  [7:0] top8_e;
     reg  [3:0] top4_e;
@@ -260,53 +424,144 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] s0_m1;
     reg  [5:0] sh;
     reg  [4:0] sh5;
-    reg  [15:0] low_nx;
-    reg  [15:0] low_ny;
-    reg  [31:0] r0x;
-    reg  [31:0] r0y;
-    reg  [15:0] f0x;
-    reg  [15:0] f0y;
-    reg  [31:0] rx2;
-    reg  [31:0] ry2;
-    reg  [31:0] tx;
-    reg  [31:0] ty;
-    reg  [31:0] tx_k;
-    reg  [31:0] ty_k;
-    reg  [17:0] qx2;
-    reg  [17:0] qy2;
+    reg  is_near;
+    reg  is_pass;
+    reg  [31:0] absnx32;
+    reg  [31:0] absny32;
+    reg  [2:0] low_nx;
+    reg  [2:0] low_ny;
+    reg  [2:0] tag_p;
+    reg  [2:0] tag_x;
+    reg  [2:0] tag_y;
+    reg  [17:0] qx18;
+    reg  [17:0] qy18;
     reg  [17:0] wx_neg;
     reg  [17:0] wy_neg;
     
     // Sub module instances
-    screener$state state(
-        .d(state$d),
-        .q(state$q),
-        .clock(state$clock)
+    screener$used used(
+        .d(used$d),
+        .q(used$q),
+        .clock(used$clock)
     );
-    screener$id id(
-        .d(id$d),
-        .q(id$q),
-        .clock(id$clock)
+    screener$done done(
+        .d(done$d),
+        .q(done$q),
+        .clock(done$clock)
     );
-    screener$ax ax(
-        .d(ax$d),
-        .q(ax$q),
-        .clock(ax$clock)
+    screener$res_ptr res_ptr(
+        .d(res_ptr$d),
+        .q(res_ptr$q),
+        .clock(res_ptr$clock)
     );
-    screener$ay ay(
-        .d(ay$d),
-        .q(ay$q),
-        .clock(ay$clock)
+    screener$fill_ptr fill_ptr(
+        .d(fill_ptr$d),
+        .q(fill_ptr$q),
+        .clock(fill_ptr$clock)
     );
-    screener$bx bx(
-        .d(bx$d),
-        .q(bx$q),
-        .clock(bx$clock)
+    screener$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
     );
-    screener$by by(
-        .d(by$d),
-        .q(by$q),
-        .clock(by$clock)
+    screener$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    screener$lane_id lane_id(
+        .clock(lane_id$clock),
+        .read_address(lane_id$read_address),
+        .read_data(lane_id$read_data),
+        .write_address(lane_id$write_address),
+        .write_data(lane_id$write_data),
+        .write_enable(lane_id$write_enable)
+    );
+    screener$lane_ax lane_ax(
+        .clock(lane_ax$clock),
+        .read_address(lane_ax$read_address),
+        .read_data(lane_ax$read_data),
+        .write_address(lane_ax$write_address),
+        .write_data(lane_ax$write_data),
+        .write_enable(lane_ax$write_enable)
+    );
+    screener$lane_ay lane_ay(
+        .clock(lane_ay$clock),
+        .read_address(lane_ay$read_address),
+        .read_data(lane_ay$read_data),
+        .write_address(lane_ay$write_address),
+        .write_data(lane_ay$write_data),
+        .write_enable(lane_ay$write_enable)
+    );
+    screener$lane_bx lane_bx(
+        .clock(lane_bx$clock),
+        .read_address(lane_bx$read_address),
+        .read_data(lane_bx$read_data),
+        .write_address(lane_bx$write_address),
+        .write_data(lane_bx$write_data),
+        .write_enable(lane_bx$write_enable)
+    );
+    screener$lane_by lane_by(
+        .clock(lane_by$clock),
+        .read_address(lane_by$read_address),
+        .read_data(lane_by$read_data),
+        .write_address(lane_by$write_address),
+        .write_data(lane_by$write_data),
+        .write_enable(lane_by$write_enable)
+    );
+    screener$lane_sh lane_sh(
+        .clock(lane_sh$clock),
+        .read_address(lane_sh$read_address),
+        .read_data(lane_sh$read_data),
+        .write_address(lane_sh$write_address),
+        .write_data(lane_sh$write_data),
+        .write_enable(lane_sh$write_enable)
+    );
+    screener$lane_wx lane_wx(
+        .clock(lane_wx$clock),
+        .read_address(lane_wx$read_address),
+        .read_data(lane_wx$read_data),
+        .write_address(lane_wx$write_address),
+        .write_data(lane_wx$write_data),
+        .write_enable(lane_wx$write_enable)
+    );
+    screener$lane_wy lane_wy(
+        .clock(lane_wy$clock),
+        .read_address(lane_wy$read_address),
+        .read_data(lane_wy$read_data),
+        .write_address(lane_wy$write_address),
+        .write_data(lane_wy$write_data),
+        .write_enable(lane_wy$write_enable)
+    );
+    screener$v1 v1(
+        .d(v1$d),
+        .q(v1$q),
+        .clock(v1$clock)
+    );
+    screener$id1 id1(
+        .d(id1$d),
+        .q(id1$q),
+        .clock(id1$clock)
+    );
+    screener$ax1 ax1(
+        .d(ax1$d),
+        .q(ax1$q),
+        .clock(ax1$clock)
+    );
+    screener$ay1 ay1(
+        .d(ay1$d),
+        .q(ay1$q),
+        .clock(ay1$clock)
+    );
+    screener$bx1 bx1(
+        .d(bx1$d),
+        .q(bx1$q),
+        .clock(bx1$clock)
+    );
+    screener$by1 by1(
+        .d(by1$d),
+        .q(by1$q),
+        .clock(by1$clock)
     );
     screener$m_nax m_nax(
         .clock(m_nax$clock),
@@ -368,60 +623,222 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .b(m_lax$b),
         .p(m_lax$p)
     );
-    screener$k k(
-        .d(k$d),
-        .q(k$q),
-        .clock(k$clock)
+    screener$v2 v2(
+        .d(v2$d),
+        .q(v2$q),
+        .clock(v2$clock)
     );
-    screener$sh_r sh_r(
-        .d(sh_r$d),
-        .q(sh_r$q),
-        .clock(sh_r$clock)
+    screener$id2 id2(
+        .d(id2$d),
+        .q(id2$q),
+        .clock(id2$clock)
     );
-    screener$step step(
-        .d(step$d),
-        .q(step$q),
-        .clock(step$clock)
+    screener$ax2 ax2(
+        .d(ax2$d),
+        .q(ax2$q),
+        .clock(ax2$clock)
     );
-    screener$neg_x neg_x(
-        .d(neg_x$d),
-        .q(neg_x$q),
-        .clock(neg_x$clock)
+    screener$ay2 ay2(
+        .d(ay2$d),
+        .q(ay2$q),
+        .clock(ay2$clock)
     );
-    screener$neg_y neg_y(
-        .d(neg_y$d),
-        .q(neg_y$q),
-        .clock(neg_y$clock)
+    screener$bx2 bx2(
+        .d(bx2$d),
+        .q(bx2$q),
+        .clock(bx2$clock)
     );
-    screener$rx rx(
-        .d(rx$d),
-        .q(rx$q),
-        .clock(rx$clock)
+    screener$by2 by2(
+        .d(by2$d),
+        .q(by2$q),
+        .clock(by2$clock)
     );
-    screener$ry ry(
-        .d(ry$d),
-        .q(ry$q),
-        .clock(ry$clock)
+    screener$absnx2 absnx2(
+        .d(absnx2$d),
+        .q(absnx2$q),
+        .clock(absnx2$clock)
     );
-    screener$fx fx(
-        .d(fx$d),
-        .q(fx$q),
-        .clock(fx$clock)
+    screener$absny2 absny2(
+        .d(absny2$d),
+        .q(absny2$q),
+        .clock(absny2$clock)
     );
-    screener$fy fy(
-        .d(fy$d),
-        .q(fy$q),
-        .clock(fy$clock)
+    screener$negx2 negx2(
+        .d(negx2$d),
+        .q(negx2$q),
+        .clock(negx2$clock)
     );
-    screener$qx qx(
-        .d(qx$d),
-        .q(qx$q),
-        .clock(qx$clock)
+    screener$negy2 negy2(
+        .d(negy2$d),
+        .q(negy2$q),
+        .clock(negy2$clock)
     );
-    screener$qy qy(
-        .d(qy$d),
-        .q(qy$q),
-        .clock(qy$clock)
+    screener$nmax2 nmax2(
+        .d(nmax2$d),
+        .q(nmax2$q),
+        .clock(nmax2$clock)
+    );
+    screener$v3 v3(
+        .d(v3$d),
+        .q(v3$q),
+        .clock(v3$clock)
+    );
+    screener$id3 id3(
+        .d(id3$d),
+        .q(id3$q),
+        .clock(id3$clock)
+    );
+    screener$ax3 ax3(
+        .d(ax3$d),
+        .q(ax3$q),
+        .clock(ax3$clock)
+    );
+    screener$ay3 ay3(
+        .d(ay3$d),
+        .q(ay3$q),
+        .clock(ay3$clock)
+    );
+    screener$bx3 bx3(
+        .d(bx3$d),
+        .q(bx3$q),
+        .clock(bx3$clock)
+    );
+    screener$by3 by3(
+        .d(by3$d),
+        .q(by3$q),
+        .clock(by3$clock)
+    );
+    screener$absnx3 absnx3(
+        .d(absnx3$d),
+        .q(absnx3$q),
+        .clock(absnx3$clock)
+    );
+    screener$absny3 absny3(
+        .d(absny3$d),
+        .q(absny3$q),
+        .clock(absny3$clock)
+    );
+    screener$negx3 negx3(
+        .d(negx3$d),
+        .q(negx3$q),
+        .clock(negx3$clock)
+    );
+    screener$negy3 negy3(
+        .d(negy3$d),
+        .q(negy3$q),
+        .clock(negy3$clock)
+    );
+    screener$clz_n3 clz_n3(
+        .d(clz_n3$d),
+        .q(clz_n3$q),
+        .clock(clz_n3$clock)
+    );
+    screener$norm_n3 norm_n3(
+        .d(norm_n3$d),
+        .q(norm_n3$q),
+        .clock(norm_n3$clock)
+    );
+    screener$v4 v4(
+        .d(v4$d),
+        .q(v4$q),
+        .clock(v4$clock)
+    );
+    screener$id4 id4(
+        .d(id4$d),
+        .q(id4$q),
+        .clock(id4$clock)
+    );
+    screener$ax4 ax4(
+        .d(ax4$d),
+        .q(ax4$q),
+        .clock(ax4$clock)
+    );
+    screener$ay4 ay4(
+        .d(ay4$d),
+        .q(ay4$q),
+        .clock(ay4$clock)
+    );
+    screener$bx4 bx4(
+        .d(bx4$d),
+        .q(bx4$q),
+        .clock(bx4$clock)
+    );
+    screener$by4 by4(
+        .d(by4$d),
+        .q(by4$q),
+        .clock(by4$clock)
+    );
+    screener$absnx4 absnx4(
+        .d(absnx4$d),
+        .q(absnx4$q),
+        .clock(absnx4$clock)
+    );
+    screener$absny4 absny4(
+        .d(absny4$d),
+        .q(absny4$q),
+        .clock(absny4$clock)
+    );
+    screener$negx4 negx4(
+        .d(negx4$d),
+        .q(negx4$q),
+        .clock(negx4$clock)
+    );
+    screener$negy4 negy4(
+        .d(negy4$d),
+        .q(negy4$q),
+        .clock(negy4$clock)
+    );
+    screener$clz_n4 clz_n4(
+        .d(clz_n4$d),
+        .q(clz_n4$q),
+        .clock(clz_n4$clock)
+    );
+    screener$norm_n4 norm_n4(
+        .d(norm_n4$d),
+        .q(norm_n4$q),
+        .clock(norm_n4$clock)
+    );
+    screener$k4 k4(
+        .d(k4$d),
+        .q(k4$q),
+        .clock(k4$clock)
+    );
+    screener$clz_e4 clz_e4(
+        .d(clz_e4$d),
+        .q(clz_e4$q),
+        .clock(clz_e4$clock)
+    );
+    screener$norm_e4 norm_e4(
+        .d(norm_e4$d),
+        .q(norm_e4$q),
+        .clock(norm_e4$clock)
+    );
+    screener$backward4 backward4(
+        .d(backward4$d),
+        .q(backward4$q),
+        .clock(backward4$clock)
+    );
+    screener$back_facing4 back_facing4(
+        .d(back_facing4$d),
+        .q(back_facing4$q),
+        .clock(back_facing4$clock)
+    );
+    screener$outside4 outside4(
+        .d(outside4$d),
+        .q(outside4$q),
+        .clock(outside4$clock)
+    );
+    screener$divider divider(
+        .clock(divider$clock),
+        .rx(divider$rx),
+        .ry(divider$ry),
+        .fx(divider$fx),
+        .fy(divider$fy),
+        .k(divider$k),
+        .tag(divider$tag),
+        .qx(divider$qx),
+        .qy(divider$qy),
+        .tag_out(divider$tag_out)
     );
     screener$c_passed c_passed(
         .d(c_passed$d),
@@ -451,45 +868,117 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     
     // Update code
     always @(*) begin
-        state$clock = clock;
-        id$clock = clock;
-        ax$clock = clock;
-        ay$clock = clock;
-        bx$clock = clock;
-        by$clock = clock;
-        k$clock = clock;
-        sh_r$clock = clock;
-        step$clock = clock;
-        neg_x$clock = clock;
-        neg_y$clock = clock;
-        rx$clock = clock;
-        ry$clock = clock;
-        fx$clock = clock;
-        fy$clock = clock;
-        qx$clock = clock;
-        qy$clock = clock;
+        used$clock = clock;
+        done$clock = clock;
+        res_ptr$clock = clock;
+        fill_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        head_valid$clock = clock;
+        v1$clock = clock;
+        id1$clock = clock;
+        ax1$clock = clock;
+        ay1$clock = clock;
+        bx1$clock = clock;
+        by1$clock = clock;
+        v2$clock = clock;
+        id2$clock = clock;
+        ax2$clock = clock;
+        ay2$clock = clock;
+        bx2$clock = clock;
+        by2$clock = clock;
+        absnx2$clock = clock;
+        absny2$clock = clock;
+        negx2$clock = clock;
+        negy2$clock = clock;
+        nmax2$clock = clock;
+        v3$clock = clock;
+        id3$clock = clock;
+        ax3$clock = clock;
+        ay3$clock = clock;
+        bx3$clock = clock;
+        by3$clock = clock;
+        absnx3$clock = clock;
+        absny3$clock = clock;
+        negx3$clock = clock;
+        negy3$clock = clock;
+        clz_n3$clock = clock;
+        norm_n3$clock = clock;
+        v4$clock = clock;
+        id4$clock = clock;
+        ax4$clock = clock;
+        ay4$clock = clock;
+        bx4$clock = clock;
+        by4$clock = clock;
+        absnx4$clock = clock;
+        absny4$clock = clock;
+        negx4$clock = clock;
+        negy4$clock = clock;
+        clz_n4$clock = clock;
+        norm_n4$clock = clock;
+        k4$clock = clock;
+        clz_e4$clock = clock;
+        norm_e4$clock = clock;
+        backward4$clock = clock;
+        back_facing4$clock = clock;
+        outside4$clock = clock;
         c_passed$clock = clock;
         c_backward$clock = clock;
         c_back_facing$clock = clock;
         c_outside$clock = clock;
         c_near$clock = clock;
-        state$d = state$q;
-        id$d = id$q;
-        ax$d = ax$q;
-        ay$d = ay$q;
-        bx$d = bx$q;
-        by$d = by$q;
-        k$d = k$q;
-        sh_r$d = sh_r$q;
-        step$d = step$q;
-        neg_x$d = neg_x$q;
-        neg_y$d = neg_y$q;
-        rx$d = rx$q;
-        ry$d = ry$q;
-        fx$d = fx$q;
-        fy$d = fy$q;
-        qx$d = qx$q;
-        qy$d = qy$q;
+        used$d = used$q;
+        done$d = done$q;
+        res_ptr$d = res_ptr$q;
+        fill_ptr$d = fill_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        head_valid$d = head_valid$q;
+        v1$d = v1$q;
+        id1$d = id1$q;
+        ax1$d = ax1$q;
+        ay1$d = ay1$q;
+        bx1$d = bx1$q;
+        by1$d = by1$q;
+        v2$d = v2$q;
+        id2$d = id2$q;
+        ax2$d = ax2$q;
+        ay2$d = ay2$q;
+        bx2$d = bx2$q;
+        by2$d = by2$q;
+        absnx2$d = absnx2$q;
+        absny2$d = absny2$q;
+        negx2$d = negx2$q;
+        negy2$d = negy2$q;
+        nmax2$d = nmax2$q;
+        v3$d = v3$q;
+        id3$d = id3$q;
+        ax3$d = ax3$q;
+        ay3$d = ay3$q;
+        bx3$d = bx3$q;
+        by3$d = by3$q;
+        absnx3$d = absnx3$q;
+        absny3$d = absny3$q;
+        negx3$d = negx3$q;
+        negy3$d = negy3$q;
+        clz_n3$d = clz_n3$q;
+        norm_n3$d = norm_n3$q;
+        v4$d = v4$q;
+        id4$d = id4$q;
+        ax4$d = ax4$q;
+        ay4$d = ay4$q;
+        bx4$d = bx4$q;
+        by4$d = by4$q;
+        absnx4$d = absnx4$q;
+        absny4$d = absny4$q;
+        negx4$d = negx4$q;
+        negy4$d = negy4$q;
+        clz_n4$d = clz_n4$q;
+        norm_n4$d = norm_n4$q;
+        k4$d = k4$q;
+        clz_e4$d = clz_e4$q;
+        norm_e4$d = norm_e4$q;
+        backward4$d = backward4$q;
+        back_facing4$d = back_facing4$q;
+        outside4$d = outside4$q;
         c_passed$d = c_passed$q;
         c_backward$d = c_backward$q;
         c_back_facing$d = c_back_facing$q;
@@ -505,49 +994,52 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         m_fbx$clock = clock;
         m_lay$clock = clock;
         m_lax$clock = clock;
-        is_idle = state$q == st_idle;
-        is_m1 = state$q == st_m1;
-        is_m2 = state$q == st_m2;
-        is_verdict = state$q == st_verdict;
-        is_div = state$q == st_div;
-        is_out = state$q == st_out;
+        divider$clock = clock;
+        lane_id$clock = clock;
+        lane_ax$clock = clock;
+        lane_ay$clock = clock;
+        lane_bx$clock = clock;
+        lane_by$clock = clock;
+        lane_sh$clock = clock;
+        lane_wx$clock = clock;
+        lane_wy$clock = clock;
+        room = used$q != depth6;
+        in_ready = room;
+        take = in_valid & room;
         ext_ox = ((origin_x) & 18'h3ffff);
         ext_oy = ((origin_y) & 18'h3ffff);
         ext_ax = ((in_ax) & 18'h3ffff);
         ext_ay = ((in_ay) & 18'h3ffff);
         ext_bx = ((in_bx) & 18'h3ffff);
         ext_by = ((in_by) & 18'h3ffff);
+        v1$d = take;
+        id1$d = in_id;
+        ax1$d = ext_ax - ext_ox;
+        ay1$d = ext_ay - ext_oy;
+        bx1$d = ext_bx - ext_ox;
+        by1$d = ext_by - ext_oy;
         m_nax$a = normal_x;
-        m_nax$b = ax$q;
+        m_nax$b = ax1$q;
         m_nay$a = normal_y;
-        m_nay$b = ay$q;
+        m_nay$b = ay1$q;
         m_nbx$a = normal_x;
-        m_nbx$b = bx$q;
+        m_nbx$b = bx1$q;
         m_nby$a = normal_y;
-        m_nby$b = by$q;
-        m_aby$a = ax$q;
-        m_aby$b = by$q;
-        m_abx$a = ay$q;
-        m_abx$b = bx$q;
+        m_nby$b = by1$q;
+        m_aby$a = ax1$q;
+        m_aby$b = by1$q;
+        m_abx$a = ay1$q;
+        m_abx$b = bx1$q;
         m_fby$a = first_x;
-        m_fby$b = by$q;
+        m_fby$b = by1$q;
         m_fbx$a = first_y;
-        m_fbx$b = bx$q;
+        m_fbx$b = bx1$q;
         m_lay$a = last_x;
-        m_lay$b = ay$q;
+        m_lay$b = ay1$q;
         m_lax$a = last_y;
-        m_lax$b = ax$q;
-        ha = m_nax$p + m_nay$p;
-        hb = m_nbx$p + m_nby$p;
-        kk = m_aby$p - m_abx$p;
-        side_f = m_fby$p - m_fbx$p;
-        side_l = m_lay$p - m_lax$p;
-        side_f_x = side_f ^ msb32;
-        side_l_x = side_l ^ msb32;
-        ha_pos = ~ha[32'h1f] & (ha != zero32);
-        hb_pos = ~hb[32'h1f] & (hb != zero32);
-        nx = by$q - ay$q;
-        ny = ax$q - bx$q;
+        m_lax$b = ax1$q;
+        nx = by1$q - ay1$q;
+        ny = ax1$q - bx1$q;
         nx_neg = zero18 - nx;
         ny_neg = zero18 - ny;
         absnx = nx;
@@ -562,11 +1054,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         if (absnx > absny) begin
             nmax = absnx;
         end
-        absnx32 = ((absnx) & 32'hffffffff);
-        absny32 = ((absny) & 32'hffffffff);
-        nmax32 = ((nmax) & 32'hffffffff);
-        k2 = kk << sh1;
-        zn0 = nmax32;
+        v2$d = v1$q;
+        id2$d = id1$q;
+        ax2$d = ax1$q;
+        ay2$d = ay1$q;
+        bx2$d = bx1$q;
+        by2$d = by1$q;
+        absnx2$d = absnx;
+        absny2$d = absny;
+        negx2$d = nx[32'h11];
+        negy2$d = ny[32'h11];
+        nmax2$d = nmax;
+        zn0 = ((nmax2$q) & 32'hffffffff);
         top16_n = zn0[(32'h10)+:(16)];
         zn1 = zn0;
         cn16_n = zero6;
@@ -601,7 +1100,31 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             zn5 = zn4 << sh1;
             cn1_n = c1_6;
         end
-        clz_n = cn16_n | cn8_n | cn4_n | cn2_n | cn1_n;
+        v3$d = v2$q;
+        id3$d = id2$q;
+        ax3$d = ax2$q;
+        ay3$d = ay2$q;
+        bx3$d = bx2$q;
+        by3$d = by2$q;
+        absnx3$d = absnx2$q;
+        absny3$d = absny2$q;
+        negx3$d = negx2$q;
+        negy3$d = negy2$q;
+        clz_n3$d = cn16_n | cn8_n | cn4_n | cn2_n | cn1_n;
+        norm_n3$d = zn5;
+        ha = m_nax$p + m_nay$p;
+        hb = m_nbx$p + m_nby$p;
+        kk = m_aby$p - m_abx$p;
+        side_f = m_fby$p - m_fbx$p;
+        side_l = m_lay$p - m_lax$p;
+        side_f_x = side_f ^ msb32;
+        side_l_x = side_l ^ msb32;
+        ha_pos = ~ha[32'h1f] & (ha != zero32);
+        hb_pos = ~hb[32'h1f] & (hb != zero32);
+        is_backward = ~ha_pos & ~hb_pos;
+        is_back_facing = ~is_backward & (kk[32'h1f] | (kk == zero32));
+        is_outside = ~is_backward & ~is_back_facing & ((hb_pos & (side_f_x < thr_f)) | (ha_pos & (side_l_x > thr_l)));
+        k2 = kk << sh1;
         ze0 = k2;
         top16_e = ze0[(32'h10)+:(16)];
         ze1 = ze0;
@@ -637,160 +1160,199 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             ze5 = ze4 << sh1;
             ce1_e = c1_6;
         end
-        clz_e = ce16_e | ce8_e | ce4_e | ce2_e | ce1_e;
-        s0 = clz_n - clz_e;
+        v4$d = v3$q;
+        id4$d = id3$q;
+        ax4$d = ax3$q;
+        ay4$d = ay3$q;
+        bx4$d = bx3$q;
+        by4$d = by3$q;
+        absnx4$d = absnx3$q;
+        absny4$d = absny3$q;
+        negx4$d = negx3$q;
+        negy4$d = negy3$q;
+        clz_n4$d = clz_n3$q;
+        norm_n4$d = norm_n3$q;
+        k4$d = kk;
+        clz_e4$d = ce16_e | ce8_e | ce4_e | ce2_e | ce1_e;
+        norm_e4$d = ze5;
+        backward4$d = is_backward;
+        back_facing4$d = is_back_facing;
+        outside4$d = is_outside;
+        s0 = clz_n4$q - clz_e4$q;
         s0_m1 = s0 - one6;
         sh = s0_m1;
-        if (zn5 < ze5) begin
+        if (norm_n4$q < norm_e4$q) begin
             sh = s0;
         end
         sh5 = sh[(32'h0)+:(5)];
-        low_nx = absnx32[(32'h0)+:(16)];
-        low_ny = absny32[(32'h0)+:(16)];
-        r0x = absnx32 << sh5;
-        r0y = absny32 << sh5;
-        f0x = zero16;
-        f0y = zero16;
-        if (sh == sh_m1) begin
-            r0x = absnx32 >> sh1;
-            r0y = absny32 >> sh1;
-            f0x = low_nx << sh15;
-            f0y = low_ny << sh15;
-        end
-        else if (sh == sh_m2) begin
-            r0x = absnx32 >> sh2;
-            r0y = absny32 >> sh2;
-            f0x = low_nx << sh14;
-            f0y = low_ny << sh14;
-        end
-        else if (sh == sh_lo) begin
-            r0x = absnx32 >> sh3;
-            r0y = absny32 >> sh3;
-            f0x = low_nx << sh13;
-            f0y = low_ny << sh13;
-        end
-        is_backward = ~ha_pos & ~hb_pos;
-        is_back_facing = ~is_backward & (kk[32'h1f] | (kk == zero32));
-        is_outside = ~is_backward & ~is_back_facing & ((hb_pos & (side_f_x < thr_f)) | (ha_pos & (side_l_x > thr_l)));
-        is_near = ~is_backward & ~is_back_facing & ~is_outside & sh[32'h5] & (sh < sh_lo);
-        is_pass = ~is_backward & ~is_back_facing & ~is_outside & ~is_near;
-        rx2 = rx$q << sh1;
-        ry2 = ry$q << sh1;
-        tx = rx2;
-        if (fx$q[32'hf]) begin
-            tx = rx2 | one32;
-        end
-        ty = ry2;
-        if (fy$q[32'hf]) begin
-            ty = ry2 | one32;
-        end
-        if (step$q == zero5) begin
-            tx = rx$q;
-            ty = ry$q;
-        end
-        tx_k = tx - k$q;
-        ty_k = ty - k$q;
-        qx2 = qx$q << one18;
-        qy2 = qy$q << one18;
-        if (is_div) begin
-            step$d = step$q + one5;
-            if (step$q != zero5) begin
-                fx$d = fx$q << sh1;
-                fy$d = fy$q << sh1;
-            end
-            rx$d = tx;
-            qx$d = qx2;
-            if (tx >= k$q) begin
-                rx$d = tx_k;
-                qx$d = qx2 | one18;
-            end
-            ry$d = ty;
-            qy$d = qy2;
-            if (ty >= k$q) begin
-                ry$d = ty_k;
-                qy$d = qy2 | one18;
-            end
-        end
-        wx_neg = zero18 - qx$q;
-        wy_neg = zero18 - qy$q;
-        out_valid = is_out;
-        out_id = id$q;
-        out_ax = ax$q;
-        out_ay = ay$q;
-        out_bx = bx$q;
-        out_by = by$q;
-        out_wx = qx$q;
-        if (neg_x$q) begin
-            out_wx = wx_neg;
-        end
-        out_wy = qy$q;
-        if (neg_y$q) begin
-            out_wy = wy_neg;
-        end
-        out_sh = sh_r$q;
-        in_ready = is_idle | (is_verdict & ~is_pass) | (is_out & out_ready);
-        take = in_valid & (is_idle | (is_verdict & ~is_pass) | (is_out & out_ready));
-        if (is_m1) begin
-            state$d = st_m2;
-        end
-        if (is_m2) begin
-            state$d = st_verdict;
-        end
-        if (is_verdict) begin
-            state$d = st_idle;
+        is_near = ~backward4$q & ~back_facing4$q & ~outside4$q & sh[32'h5] & (sh < sh_lo);
+        is_pass = ~backward4$q & ~back_facing4$q & ~outside4$q & ~is_near;
+        screened = v4$q & ~is_pass;
+        reserve = v4$q & is_pass;
+        if (v4$q) begin
             if (is_pass) begin
-                state$d = st_div;
-                step$d = zero5;
-                k$d = kk;
-                sh_r$d = sh;
-                neg_x$d = nx[32'h11];
-                neg_y$d = ny[32'h11];
-                rx$d = r0x;
-                ry$d = r0y;
-                fx$d = f0x;
-                fy$d = f0y;
-                qx$d = zero18;
-                qy$d = zero18;
                 c_passed$d = c_passed$q + one32;
             end
-            if (is_backward) begin
+            if (backward4$q) begin
                 c_backward$d = c_backward$q + one32;
             end
-            if (is_back_facing) begin
+            if (back_facing4$q) begin
                 c_back_facing$d = c_back_facing$q + one32;
             end
-            if (is_outside) begin
+            if (outside4$q) begin
                 c_outside$d = c_outside$q + one32;
             end
             if (is_near) begin
                 c_near$d = c_near$q + one32;
             end
         end
-        if (is_div & (step$q == last_step)) begin
-            state$d = st_out;
-        end
-        if (is_out & out_ready) begin
-            state$d = st_idle;
-        end
-        if (take) begin
-            state$d = st_m1;
-            id$d = in_id;
-            ax$d = ext_ax - ext_ox;
-            ay$d = ext_ay - ext_oy;
-            bx$d = ext_bx - ext_ox;
-            by$d = ext_by - ext_oy;
-        end
         passed = c_passed$q;
         backward = c_backward$q;
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
+        absnx32 = ((absnx4$q) & 32'hffffffff);
+        absny32 = ((absny4$q) & 32'hffffffff);
+        low_nx = absnx4$q[(32'h0)+:(3)];
+        low_ny = absny4$q[(32'h0)+:(3)];
+        divider$rx = absnx32 << sh5;
+        divider$ry = absny32 << sh5;
+        divider$fx = zero3;
+        divider$fy = zero3;
+        if (sh == sh_m1) begin
+            divider$rx = absnx32 >> sh1;
+            divider$ry = absny32 >> sh1;
+            divider$fx = low_nx << sh2_3;
+            divider$fy = low_ny << sh2_3;
+        end
+        else if (sh == sh_m2) begin
+            divider$rx = absnx32 >> sh2;
+            divider$ry = absny32 >> sh2;
+            divider$fx = low_nx << sh1_3;
+            divider$fy = low_ny << sh1_3;
+        end
+        else if (sh == sh_lo) begin
+            divider$rx = absnx32 >> sh3;
+            divider$ry = absny32 >> sh3;
+            divider$fx = low_nx;
+            divider$fy = low_ny;
+        end
+        divider$k = k4$q;
+        tag_p = zero3;
+        if (reserve) begin
+            tag_p = tag_pass;
+        end
+        tag_x = zero3;
+        if (negx4$q) begin
+            tag_x = tag_negx;
+        end
+        tag_y = zero3;
+        if (negy4$q) begin
+            tag_y = tag_negy;
+        end
+        divider$tag = tag_p | tag_x | tag_y;
+        lane_id$write_address = res_ptr$q;
+        lane_ax$write_address = res_ptr$q;
+        lane_ay$write_address = res_ptr$q;
+        lane_bx$write_address = res_ptr$q;
+        lane_by$write_address = res_ptr$q;
+        lane_sh$write_address = res_ptr$q;
+        lane_id$write_data = id4$q;
+        lane_ax$write_data = ax4$q;
+        lane_ay$write_data = ay4$q;
+        lane_bx$write_data = bx4$q;
+        lane_by$write_data = by4$q;
+        lane_sh$write_data = sh;
+        lane_id$write_enable = reserve;
+        lane_ax$write_enable = reserve;
+        lane_ay$write_enable = reserve;
+        lane_bx$write_enable = reserve;
+        lane_by$write_enable = reserve;
+        lane_sh$write_enable = reserve;
+        res_inc = res_ptr$q + one5;
+        if (reserve) begin
+            res_ptr$d = res_inc;
+        end
+        fill = divider$tag_out[32'h0];
+        qx18 = ((divider$qx) & 18'h3ffff);
+        qy18 = ((divider$qy) & 18'h3ffff);
+        wx_neg = zero18 - qx18;
+        wy_neg = zero18 - qy18;
+        lane_wx$write_address = fill_ptr$q;
+        lane_wy$write_address = fill_ptr$q;
+        lane_wx$write_data = qx18;
+        if (divider$tag_out[32'h1]) begin
+            lane_wx$write_data = wx_neg;
+        end
+        lane_wy$write_data = qy18;
+        if (divider$tag_out[32'h2]) begin
+            lane_wy$write_data = wy_neg;
+        end
+        lane_wx$write_enable = fill;
+        lane_wy$write_enable = fill;
+        fill_inc = fill_ptr$q + one5;
+        if (fill) begin
+            fill_ptr$d = fill_inc;
+        end
+        pop = head_valid$q & out_ready;
+        rd_inc = rd_ptr$q + one5;
+        done_dec = done$q - one6;
+        rd_addr = rd_ptr$q;
+        done_left = done$q;
+        if (pop) begin
+            rd_addr = rd_inc;
+            rd_ptr$d = rd_inc;
+            done_left = done_dec;
+        end
+        lane_id$read_address = rd_addr;
+        lane_ax$read_address = rd_addr;
+        lane_ay$read_address = rd_addr;
+        lane_bx$read_address = rd_addr;
+        lane_by$read_address = rd_addr;
+        lane_sh$read_address = rd_addr;
+        lane_wx$read_address = rd_addr;
+        lane_wy$read_address = rd_addr;
+        head_valid$d = done_left != zero6;
+        out_valid = head_valid$q;
+        out_id = lane_id$read_data;
+        out_ax = lane_ax$read_data;
+        out_ay = lane_ay$read_data;
+        out_bx = lane_bx$read_data;
+        out_by = lane_by$read_data;
+        out_sh = lane_sh$read_data;
+        out_wx = lane_wx$read_data;
+        out_wy = lane_wy$read_data;
+        used_inc = used$q + one6;
+        used_dec = used$q - one6;
+        used_dec2 = used$q - two6;
+        if (take & ~screened & ~pop) begin
+            used$d = used_inc;
+        end
+        if (~take & screened & ~pop) begin
+            used$d = used_dec;
+        end
+        if (~take & ~screened & pop) begin
+            used$d = used_dec;
+        end
+        if (take & screened & pop) begin
+            used$d = used_dec;
+        end
+        if (~take & screened & pop) begin
+            used$d = used_dec2;
+        end
+        done_inc = done$q + one6;
+        if (fill & ~pop) begin
+            done$d = done_inc;
+        end
+        if (~fill & pop) begin
+            done$d = done_dec;
+        end
     end
     
 endmodule // screener
 
 
-module screener$ax(d,q,clock);
+module screener$absnx2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -806,10 +1368,10 @@ module screener$ax(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$ax
+endmodule // screener$absnx2
 
 
-module screener$ay(d,q,clock);
+module screener$absnx3(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -825,10 +1387,10 @@ module screener$ay(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$ay
+endmodule // screener$absnx3
 
 
-module screener$bx(d,q,clock);
+module screener$absnx4(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -844,10 +1406,10 @@ module screener$bx(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$bx
+endmodule // screener$absnx4
 
 
-module screener$by(d,q,clock);
+module screener$absny2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -863,7 +1425,387 @@ module screener$by(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$by
+endmodule // screener$absny2
+
+
+module screener$absny3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$absny3
+
+
+module screener$absny4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$absny4
+
+
+module screener$ax1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ax1
+
+
+module screener$ax2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ax2
+
+
+module screener$ax3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ax3
+
+
+module screener$ax4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ax4
+
+
+module screener$ay1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ay1
+
+
+module screener$ay2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ay2
+
+
+module screener$ay3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ay3
+
+
+module screener$ay4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ay4
+
+
+module screener$back_facing4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$back_facing4
+
+
+module screener$backward4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$backward4
+
+
+module screener$bx1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bx1
+
+
+module screener$bx2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bx2
+
+
+module screener$bx3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bx3
+
+
+module screener$bx4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bx4
+
+
+module screener$by1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$by1
+
+
+module screener$by2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$by2
+
+
+module screener$by3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$by3
+
+
+module screener$by4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$by4
 
 
 module screener$c_back_facing(d,q,clock);
@@ -961,7 +1903,197 @@ module screener$c_passed(d,q,clock);
 endmodule // screener$c_passed
 
 
-module screener$fx(d,q,clock);
+module screener$clz_e4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$clz_e4
+
+
+module screener$clz_n3(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$clz_n3
+
+
+module screener$clz_n4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$clz_n4
+
+
+module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] rx;
+    input wire  [31:0] ry;
+    input wire  [2:0] fx;
+    input wire  [2:0] fy;
+    input wire  [31:0] k;
+    input wire  [2:0] tag;
+    output reg  [16:0] qx;
+    output reg  [16:0] qy;
+    output reg  [2:0] tag_out;
+    
+    // Update code (custom)
+    localparam N = 17;
+    reg [32*(N+1)-1:0] kp;
+    reg [32*(N+1)-1:0] rxp;
+    reg [32*(N+1)-1:0] ryp;
+    reg [3*(N+1)-1:0] fxp;
+    reg [3*(N+1)-1:0] fyp;
+    reg [17*(N+1)-1:0] qxp;
+    reg [17*(N+1)-1:0] qyp;
+    reg [3*(N+1)-1:0] tgp;
+    initial begin
+       kp = 0;
+       rxp = 0;
+       ryp = 0;
+       fxp = 0;
+       fyp = 0;
+       qxp = 0;
+       qyp = 0;
+       tgp = 0;
+    end
+    always @(posedge clock) begin
+       kp[31:0] <= k;
+       rxp[31:0] <= rx;
+       ryp[31:0] <= ry;
+       fxp[2:0] <= fx;
+       fyp[2:0] <= fy;
+       qxp[16:0] <= 17'd0;
+       qyp[16:0] <= 17'd0;
+       tgp[2:0] <= tag;
+    end
+    genvar s;
+    generate
+       for (s = 1; s <= N; s = s + 1) begin : step
+          wire [31:0] dk = kp[32*(s-1) +: 32];
+          wire [31:0] ax = rxp[32*(s-1) +: 32];
+          wire [31:0] ay = ryp[32*(s-1) +: 32];
+          wire [2:0] bx = fxp[3*(s-1) +: 3];
+          wire [2:0] by = fyp[3*(s-1) +: 3];
+          wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
+          wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
+          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
+          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
+          always @(posedge clock) begin
+             kp[32*s +: 32] <= dk;
+             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
+             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
+             fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
+             fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
+             qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};
+             qyp[17*s +: 17] <= {qyp[17*(s-1) +: 16], ~dy[32]};
+             tgp[3*s +: 3] <= tgp[3*(s-1) +: 3];
+          end
+       end
+    endgenerate
+    always @(*) begin
+       qx = qxp[17*N +: 17];
+       qy = qyp[17*N +: 17];
+       tag_out = tgp[3*N +: 3];
+    end
+endmodule // screener$divider
+
+
+module screener$done(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$done
+
+
+module screener$fill_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$fill_ptr
+
+
+module screener$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$head_valid
+
+
+module screener$id1(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -977,10 +2109,10 @@ module screener$fx(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$fx
+endmodule // screener$id1
 
 
-module screener$fy(d,q,clock);
+module screener$id2(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -996,10 +2128,10 @@ module screener$fy(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$fy
+endmodule // screener$id2
 
 
-module screener$id(d,q,clock);
+module screener$id3(d,q,clock);
     
     // Module arguments
     input wire  [15:0] d;
@@ -1015,10 +2147,29 @@ module screener$id(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$id
+endmodule // screener$id3
 
 
-module screener$k(d,q,clock);
+module screener$id4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$id4
+
+
+module screener$k4(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1034,7 +2185,215 @@ module screener$k(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$k
+endmodule // screener$k4
+
+
+module screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_ax
+
+
+module screener$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_ay
+
+
+module screener$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_bx
+
+
+module screener$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_by
+
+
+module screener$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [15:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 16'd0;
+       read_data = 16'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_id
+
+
+module screener$lane_sh(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [5:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [5:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [5:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 6'd0;
+       read_data = 6'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_sh
+
+
+module screener$lane_wx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_wx
+
+
+module screener$lane_wy(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // screener$lane_wy
 
 
 module screener$m_abx(clock,a,b,p);
@@ -1297,7 +2656,7 @@ module screener$m_nby(clock,a,b,p);
 endmodule // screener$m_nby
 
 
-module screener$neg_x(d,q,clock);
+module screener$negx2(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1313,10 +2672,10 @@ module screener$neg_x(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$neg_x
+endmodule // screener$negx2
 
 
-module screener$neg_y(d,q,clock);
+module screener$negx3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -1332,10 +2691,86 @@ module screener$neg_y(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$neg_y
+endmodule // screener$negx3
 
 
-module screener$qx(d,q,clock);
+module screener$negx4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$negx4
+
+
+module screener$negy2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$negy2
+
+
+module screener$negy3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$negy3
+
+
+module screener$negy4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$negy4
+
+
+module screener$nmax2(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -1351,29 +2786,10 @@ module screener$qx(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$qx
+endmodule // screener$nmax2
 
 
-module screener$qy(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$qy
-
-
-module screener$rx(d,q,clock);
+module screener$norm_e4(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1389,10 +2805,10 @@ module screener$rx(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$rx
+endmodule // screener$norm_e4
 
 
-module screener$ry(d,q,clock);
+module screener$norm_n3(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -1408,48 +2824,48 @@ module screener$ry(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$ry
+endmodule // screener$norm_n3
 
 
-module screener$sh_r(d,q,clock);
+module screener$norm_n4(d,q,clock);
     
     // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 6'h0;
+       q = 32'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // screener$sh_r
+endmodule // screener$norm_n4
 
 
-module screener$state(d,q,clock);
+module screener$outside4(d,q,clock);
     
     // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 3'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // screener$state
+endmodule // screener$outside4
 
 
-module screener$step(d,q,clock);
+module screener$rd_ptr(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -1465,4 +2881,118 @@ module screener$step(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$step
+endmodule // screener$rd_ptr
+
+
+module screener$res_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$res_ptr
+
+
+module screener$used(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$used
+
+
+module screener$v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$v1
+
+
+module screener$v2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$v2
+
+
+module screener$v3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$v3
+
+
+module screener$v4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$v4

@@ -1,6 +1,8 @@
 //! Block-level tests of the backface screener RTL (`shelling_hdl::screener::Screener`) against its
 //! bit-true model `model::screen`: seeded random bundles and patches plus corner cases, every
-//! pacing of the two streams, the counters, and the rung-4 replay under Icarus Verilog.
+//! pacing of the two streams, the counters, the credit limit, the exact cycle counts of unstalled
+//! streams (one patch per clock), and the rung-4 replays under Icarus Verilog of the whole block
+//! and of its divider leaf.
 
 use std::path::PathBuf;
 
@@ -8,8 +10,11 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
 use shelling_hdl::formats::{cross, direction, dot, from_bits, to_bits};
-use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
-use shelling_hdl::screener::Screener;
+use shelling_hdl::leaf::{restoring_quotient, PipeDivider, DIV_LATENCY};
+use shelling_hdl::screener::model::{
+    accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, PatchSetup, Verdict,
+};
+use shelling_hdl::screener::{Screener, DEPTH, LATENCY, VERDICT_LATENCY};
 use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
 
 const COORD_MAX: i32 = (1 << 17) - 1;
@@ -281,25 +286,12 @@ fn run(drv: &mut Driver<Screener>, segments: &[Segment], pacing: Pacing, seed: u
                 break;
             }
             drv.drive(|u| {
-                u.origin_x.next = b(bundle.origin[0] as i64);
-                u.origin_y.next = b(bundle.origin[1] as i64);
-                u.normal_x.next = b(bundle.normal[0] as i64);
-                u.normal_y.next = b(bundle.normal[1] as i64);
-                u.first_x.next = b(bundle.first[0] as i64);
-                u.first_y.next = b(bundle.first[1] as i64);
-                u.last_x.next = b(bundle.last[0] as i64);
-                u.last_y.next = b(bundle.last[1] as i64);
-                let item = src.present(true).copied();
-                u.in_valid.next = item.is_some();
-                let p = item.unwrap_or_default();
-                u.in_id.next = (p.id as u64).into();
-                u.in_ax.next = b(p.a[0] as i64);
-                u.in_ay.next = b(p.a[1] as i64);
-                u.in_bx.next = b(p.b[0] as i64);
-                u.in_by.next = b(p.b[1] as i64);
+                set_bundle(u, &bundle);
+                set_patch(u, src.present(true));
                 u.out_ready.next = mon.ready();
             })?;
             let u = drv.uut();
+            check_credits(u, drv.cycles())?;
             src.accepted(u.in_valid.val() && u.in_ready.val())?;
             let cycle = drv.cycles();
             if mon.observe(cycle, u.out_valid.val(), || read_out(u)) {
@@ -330,6 +322,19 @@ fn run(drv: &mut Driver<Screener>, segments: &[Segment], pacing: Pacing, seed: u
         drv.cycles() - start
     );
     Ok((expected_tally, negative_sh))
+}
+
+/// The credit invariants, every cycle: never more than `DEPTH` patches in flight, `in_ready`
+/// exactly while fewer are, and no more complete slots than patches in flight.
+fn check_credits(u: &Screener, cycle: u64) -> Result<()> {
+    let (used, done) = (u.in_flight(), u.buffered());
+    if used > DEPTH || u.in_ready.val() != (used < DEPTH) || done > used {
+        return Err(Error::new(format!(
+            "cycle {cycle}: {used} in flight, {done} buffered, in_ready {} (DEPTH {DEPTH})",
+            u.in_ready.val()
+        )));
+    }
+    Ok(())
 }
 
 fn new_driver() -> Result<Driver<Screener>> {
@@ -415,6 +420,257 @@ fn screener_verilog_replays_bit_exactly_under_icarus() -> Result<()> {
     assert!(t.0.iter().sum::<u64>() >= 2000);
     let rec = drv.take_recording().ok_or("recording was on")?;
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("screener");
+    let report =
+        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    println!("{report}");
+    Ok(())
+}
+
+/// Drives the bundle inputs.
+fn set_bundle(u: &mut Screener, bundle: &BundleSetup) {
+    u.origin_x.next = b(bundle.origin[0] as i64);
+    u.origin_y.next = b(bundle.origin[1] as i64);
+    u.normal_x.next = b(bundle.normal[0] as i64);
+    u.normal_y.next = b(bundle.normal[1] as i64);
+    u.first_x.next = b(bundle.first[0] as i64);
+    u.first_y.next = b(bundle.first[1] as i64);
+    u.last_x.next = b(bundle.last[0] as i64);
+    u.last_y.next = b(bundle.last[1] as i64);
+}
+
+/// Drives one patch offer (or none).
+fn set_patch(u: &mut Screener, p: Option<&Patch>) {
+    u.in_valid.next = p.is_some();
+    let p = p.copied().unwrap_or_default();
+    u.in_id.next = (p.id as u64).into();
+    u.in_ax.next = b(p.a[0] as i64);
+    u.in_ay.next = b(p.a[1] as i64);
+    u.in_bx.next = b(p.b[0] as i64);
+    u.in_by.next = b(p.b[1] as i64);
+}
+
+/// What an unstalled run shows: the cycles of acceptance and output, and the cycles until every
+/// patch was counted and every passing one had left.
+#[derive(Debug)]
+struct Timing {
+    accepted: Vec<u64>,
+    out: Vec<u64>,
+    cycles: u64,
+}
+
+/// Offers `patches` back to back from cycle 0 of a fresh screener with the output always ready;
+/// checks every output against the model.
+fn unstalled_run(bundle: &BundleSetup, patches: &[Patch], seed: u64) -> Result<Timing> {
+    let verdicts: Vec<Verdict> = patches.iter().map(|p| screen(bundle, p)).collect();
+    let expected: Vec<PatchSetup> =
+        verdicts.iter().filter_map(|v| if let Verdict::Pass(s) = v { Some(*s) } else { None }).collect();
+    let mut board = Scoreboard::new("screener", seed, expected.iter().copied()).with_context("unstalled");
+    let mut drv = new_driver()?;
+    let (mut accepted, mut out) = (vec![], vec![]);
+    loop {
+        let counted = counters(drv.uut()).0.iter().sum::<u64>();
+        if counted == patches.len() as u64 && board.matched() == expected.len() {
+            break;
+        }
+        let next = patches.get(accepted.len());
+        drv.drive(|u| {
+            set_bundle(u, bundle);
+            set_patch(u, next);
+            u.out_ready.next = true;
+        })?;
+        let u = drv.uut();
+        check_credits(u, drv.cycles())?;
+        if next.is_some() && u.in_ready.val() {
+            accepted.push(drv.cycles());
+        }
+        if u.out_valid.val() {
+            out.push(drv.cycles());
+            board.check(drv.cycles(), read_out(u))?;
+        }
+        drv.tick()?;
+        if drv.cycles() > 10 * patches.len() as u64 + 1000 {
+            return Err(Error::new(format!("no progress (seed {seed:#x})")));
+        }
+    }
+    board.finish()?;
+    let mut tally = Tally::default();
+    verdicts.iter().for_each(|v| tally.add(v));
+    if counters(drv.uut()) != tally {
+        return Err(Error::new(format!("counters {:?}, model {tally:?}", counters(drv.uut()))));
+    }
+    Ok(Timing { accepted, out, cycles: drv.cycles() })
+}
+
+/// Random patches for one bundle, sorted into those that pass and those screened out.
+fn passing_and_screened(rng: &mut ChaCha8Rng, bundle: &BundleSetup, each: usize) -> (Vec<Patch>, Vec<Patch>) {
+    let (mut pass, mut out) = (vec![], vec![]);
+    let mut id = 0u16;
+    while pass.len() < each || out.len() < each {
+        id = id.wrapping_add(1);
+        let p = random_patch(rng, bundle, id);
+        match screen(bundle, &p) {
+            Verdict::Pass(_) if pass.len() < each => pass.push(p),
+            Verdict::Pass(_) => {}
+            _ if out.len() < each => out.push(p),
+            _ => {}
+        }
+    }
+    (pass, out)
+}
+
+/// One patch per clock: with no idle cycles and no backpressure, `N` patches are accepted in
+/// cycles 0..N and a passing patch accepted in cycle `a` leaves in cycle `a + LATENCY`, so the
+/// run takes `N + LATENCY` cycles (24) when the last patch passes and `N + VERDICT_LATENCY` (4)
+/// when all are screened out: all-pass, all-screened and mixed streams.
+#[test]
+fn screener_accepts_one_patch_per_clock_without_backpressure() -> Result<()> {
+    assert_eq!((VERDICT_LATENCY, LATENCY), (4, 24));
+    let seed = 0x5c4e_e300u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    // A bundle that passes a fair share of random patches.
+    let bundle = loop {
+        let bd = random_bundle(&mut rng);
+        let passing = (0..200u16)
+            .filter(|&i| matches!(screen(&bd, &random_patch(&mut rng, &bd, i)), Verdict::Pass(_)))
+            .count();
+        if passing > 40 {
+            break bd;
+        }
+    };
+    let n = 600;
+    let (pass, out) = passing_and_screened(&mut rng, &bundle, n);
+    let mut mixed: Vec<Patch> = (0..n).map(|i| if rng.random_bool(0.5) { pass[i] } else { out[i] }).collect();
+    // The mixed stream ends with a screened-out patch after the last passing one.
+    mixed.push(out[n - 1]);
+    for (name, patches) in [("all pass", pass), ("all screened out", out), ("mixed", mixed)] {
+        let passes: Vec<bool> =
+            patches.iter().map(|p| matches!(screen(&bundle, p), Verdict::Pass(_))).collect();
+        let t = unstalled_run(&bundle, &patches, seed).map_err(|e| e.context(name))?;
+        let len = patches.len() as u64;
+        // Accepted in cycles 0..N: II = 1.
+        assert_eq!(t.accepted, (0..len).collect::<Vec<_>>(), "{name}");
+        assert_eq!(t.accepted, accept_cycles(&passes), "{name}");
+        assert_eq!(t.out, output_cycles(&passes), "{name}");
+        assert_eq!(t.cycles, unstalled_cycles(&passes), "{name}");
+        let last_pass = passes.iter().rposition(|&p| p);
+        let formula = match last_pass {
+            Some(j) => (len + VERDICT_LATENCY).max(j as u64 + LATENCY + 1),
+            None => len + VERDICT_LATENCY,
+        };
+        assert_eq!(t.cycles, formula, "{name}");
+        match name {
+            "all pass" => assert_eq!(t.cycles, len + LATENCY),
+            "all screened out" => assert_eq!((t.cycles, t.out.len()), (len + VERDICT_LATENCY, 0)),
+            _ => assert!(t.out.len() > n / 4 && t.out.len() < 3 * n / 4),
+        }
+        println!("{name}: {len} patches in {} cycles", t.cycles);
+    }
+    Ok(())
+}
+
+/// Sustained backpressure: the screener takes patches until `DEPTH` are in flight (screened-out
+/// ones return their credit at the verdict, so it takes more of a mixed stream), then holds
+/// `in_ready` low; when the output is released every patch comes out, in order, none lost. The
+/// mixed run is replayed under Icarus too (the random pacings rarely reach the limit).
+#[test]
+fn screener_stops_at_the_credit_limit_under_sustained_backpressure() -> Result<()> {
+    let seed = 0x5c4e_e400u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let bundle = random_bundle(&mut rng);
+    let (pass, out) = passing_and_screened(&mut rng, &bundle, 200);
+    let mixed: Vec<Patch> = (0..200).map(|i| if i % 3 == 0 { pass[i] } else { out[i] }).collect();
+    for (name, patches) in [("all pass", &pass), ("mixed", &mixed)] {
+        let expected: Vec<PatchSetup> = patches
+            .iter()
+            .filter_map(|p| if let Verdict::Pass(s) = screen(&bundle, p) { Some(s) } else { None })
+            .collect();
+        let mut board = Scoreboard::new("screener", seed, expected.iter().copied()).with_context(name);
+        let mut drv = new_driver()?;
+        if name == "mixed" {
+            drv.record_ports()?;
+        }
+        let mut sent = 0usize;
+        let stall = 300u64;
+        while board.matched() < expected.len() {
+            let ready = drv.cycles() >= stall;
+            let next = patches.get(sent);
+            drv.drive(|u| {
+                set_bundle(u, &bundle);
+                set_patch(u, next);
+                u.out_ready.next = ready;
+            })?;
+            let u = drv.uut();
+            check_credits(u, drv.cycles())?;
+            if drv.cycles() == stall - 1 {
+                // Stalled long enough: exactly DEPTH passing patches hold credits.
+                let passed_in =
+                    patches[..sent].iter().filter(|p| matches!(screen(&bundle, p), Verdict::Pass(_)));
+                assert_eq!(passed_in.count(), DEPTH, "{name}");
+                assert_eq!((u.in_flight(), u.buffered(), u.in_ready.val()), (DEPTH, DEPTH, false), "{name}");
+                assert_eq!(u.passed.val().to_u64(), DEPTH as u64, "{name}");
+            }
+            sent += usize::from(next.is_some() && u.in_ready.val());
+            if u.out_valid.val() && u.out_ready.val() {
+                board.check(drv.cycles(), read_out(u))?;
+            }
+            drv.tick()?;
+            assert!(drv.cycles() < 10_000, "{name}: no progress");
+        }
+        board.finish()?;
+        assert_eq!(sent, patches.len());
+        if let Some(rec) = drv.take_recording() {
+            let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("screener_credits");
+            let report = rec
+                .replay(drv.uut(), &dir, Simulator::Icarus)
+                .map_err(|e| e.context(format!("seed {seed:#x}")))?;
+            println!("{report}");
+        }
+    }
+    Ok(())
+}
+
+/// The divider leaf alone: its Rust model against `restoring_quotient` delayed by
+/// `DIV_LATENCY`, and its Verilog against its Rust model under Icarus, on random inputs that
+/// mostly break the divider's preconditions (the pipeline divides whatever reaches it).
+#[test]
+fn divider_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
+    let seed = 0x5c4e_e500u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut drv = Driver::with_clock(PipeDivider::default(), |d| &mut d.clock)?;
+    drv.record_ports()?;
+    let mut sent: Vec<[u32; 3]> = vec![];
+    for cycle in 0..3000u64 {
+        let k: u32 = match rng.random_range(0..4) {
+            0 => rng.random(),
+            1 => rng.random_range(0..4),
+            _ => rng.random::<u32>() >> rng.random_range(0..32),
+        };
+        let r: u32 =
+            if rng.random_bool(0.5) { rng.random() } else { rng.random_range(0..=k.saturating_mul(2)) };
+        let (r2, f, f2, tag) = (
+            rng.random::<u32>() >> rng.random_range(0..32),
+            rng.random_range(0..8u32),
+            rng.random_range(0..8u32),
+            rng.random_range(0..8u32),
+        );
+        drv.drive(|d| {
+            d.rx.next = (r as u64).into();
+            d.ry.next = (r2 as u64).into();
+            d.fx.next = (f as u64).into();
+            d.fy.next = (f2 as u64).into();
+            d.k.next = (k as u64).into();
+            d.tag.next = (tag as u64).into();
+        })?;
+        sent.push([restoring_quotient(r, f, k), restoring_quotient(r2, f2, k), tag]);
+        if cycle >= DIV_LATENCY {
+            let d = drv.uut();
+            let got = [d.qx.val().to_u32(), d.qy.val().to_u32(), d.tag_out.val().to_u32()];
+            assert_eq!(got, sent[(cycle - DIV_LATENCY) as usize], "cycle {cycle}");
+        }
+        drv.tick()?;
+    }
+    let rec = drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("pipe_divider");
     let report =
         rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
     println!("{report}");
