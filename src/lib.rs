@@ -12,6 +12,7 @@
 
 pub mod agreement;
 pub mod arith;
+pub mod cosim;
 pub mod counters;
 pub mod figures;
 pub mod geom;

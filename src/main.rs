@@ -2,7 +2,9 @@
 
 use anyhow::{bail, Context, Result};
 use clap::{ArgGroup, Args, Parser, Subcommand};
+use shelling::agreement;
 use shelling::arith::Arith;
+use shelling::cosim::{self, CosimConfig, VcdWindow};
 use shelling::counters::Counters;
 use shelling::figures::{self, FigureOptions};
 use shelling::geom::Vec2;
@@ -11,6 +13,7 @@ use shelling::rays::{Bundle, RaySet, Source};
 use shelling::run::{Prepared, TraceJson};
 use shelling::scene::{self, Scene};
 use shelling::trace::{Method, ShellParams};
+use shelling_testbench::pe::{ModelCounts, PeCounters};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -44,6 +47,10 @@ enum Command {
     /// Rung 2: trace the paper's workload in f64 and in the bit-true fixed point, compare the
     /// nearest patch of every ray and explain every disagreement by the documented error bound.
     Agreement(AgreementArgs),
+    /// Co-simulate one source on the RTL processing element (cycle-accurate, rust-hdl), fed by
+    /// the shell scheduler, every hit checked against the bit-true model and the f64 golden
+    /// model, with hardware cycle counts.
+    Cosim(CosimArgs),
     /// Write the Verilog of every RTL block (one file per block, module named after it) and a
     /// file list `files.f`, for Yosys, nextpnr or vendor tools.
     ExportVerilog(ExportArgs),
@@ -136,9 +143,10 @@ impl TuneArgs {
     }
 }
 
+/// A scene and one source's ray bundle in it.
 #[derive(Args)]
 #[command(group(ArgGroup::new("from").args(["source", "origin"]).required(true)))]
-struct TraceArgs {
+struct SourceArgs {
     /// Scene file (JSON, see SCENES.md).
     #[arg(long)]
     scene: PathBuf,
@@ -158,6 +166,58 @@ struct TraceArgs {
     /// Ray set: `angle` (uniform in angle) or `sine` (uniform in sin φ, form factor 1/R each).
     #[arg(long, value_enum, default_value_t = RaySet::Angle)]
     ray_set: RaySet,
+}
+
+impl SourceArgs {
+    /// Loads the scene, builds its grid and the bundle.
+    fn load(&self, grid: GridParams) -> Result<(Prepared, Bundle)> {
+        let scene = Scene::load(&self.scene)?;
+        let prepared = Prepared::new(scene, grid);
+        let source = match (self.source, self.origin, self.normal) {
+            (Some(k), _, _) => Source::from_patch(&prepared.scene.segments, k)?,
+            (None, Some(o), Some(n)) => Source::at(o, n)?,
+            _ => bail!("give either --source K or both --origin X,Y and --normal NX,NY"),
+        };
+        let bundle = Bundle::new(source, self.ray_set, self.rays)?;
+        Ok((prepared, bundle))
+    }
+}
+
+#[derive(Args)]
+struct CosimArgs {
+    #[command(flatten)]
+    from: SourceArgs,
+    /// Technique: conventional, stochastic or deterministic (brute force has no hardware
+    /// mapping).
+    #[arg(long, value_enum, default_value_t = Method::Stochastic)]
+    method: Method,
+    /// Cycles the host memory takes to deliver one patch (T_c, at least 1).
+    #[arg(long, default_value_t = 1)]
+    tc: u32,
+    /// Give the PE a patch cache of this many patches (a power of two up to 4096): a patch
+    /// loaded before costs one clock instead of T_c. Without it every load goes to the host.
+    #[arg(long, value_name = "PATCHES")]
+    cache: Option<u32>,
+    /// Write a VCD of the whole PE to FILE (cycles --vcd-from .. --vcd-to).
+    #[arg(long, value_name = "FILE")]
+    vcd: Option<PathBuf>,
+    /// First cycle (from power-up) written to the VCD.
+    #[arg(long, requires = "vcd", default_value_t = 0)]
+    vcd_from: u64,
+    /// End (exclusive) of the VCD window; default 2000 cycles after --vcd-from.
+    #[arg(long, requires = "vcd")]
+    vcd_to: Option<u64>,
+    /// Print the trace JSON (the PE's hits) with the hardware counters.
+    #[arg(long)]
+    json: bool,
+    #[command(flatten)]
+    tune: TuneArgs,
+}
+
+#[derive(Args)]
+struct TraceArgs {
+    #[command(flatten)]
+    from: SourceArgs,
     /// Tracing technique.
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
     method: Method,
@@ -274,6 +334,7 @@ fn run(cli: Cli) -> Result<()> {
             Ok(())
         }
         Command::Trace(a) => trace_cmd(a),
+        Command::Cosim(a) => cosim_cmd(a),
         Command::ExportVerilog(a) => {
             let paths =
                 shelling_testbench::export::write(&a.out).map_err(|e| anyhow::anyhow!("{}", e.message()))?;
@@ -329,14 +390,8 @@ fn run(cli: Cli) -> Result<()> {
 }
 
 fn trace_cmd(a: TraceArgs) -> Result<()> {
-    let scene = Scene::load(&a.scene)?;
-    let prepared = Prepared::new(scene, a.tune.grid()?);
-    let source = match (a.source, a.origin, a.normal) {
-        (Some(k), _, _) => Source::from_patch(&prepared.scene.segments, k)?,
-        (None, Some(o), Some(n)) => Source::at(o, n)?,
-        _ => bail!("give either --source K or both --origin X,Y and --normal NX,NY"),
-    };
-    let bundle = Bundle::new(source, a.ray_set, a.rays)?;
+    let (prepared, bundle) = a.from.load(a.tune.grid()?)?;
+    let source = bundle.source;
     let result = prepared.trace_in(a.arith, a.method, &bundle, &a.tune.shells()?)?;
     if a.json {
         let json = serde_json::to_string_pretty(&TraceJson::new(&result, &bundle, a.arith))
@@ -365,6 +420,85 @@ fn trace_cmd(a: TraceArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+fn cosim_cmd(a: CosimArgs) -> Result<()> {
+    if a.method == Method::Brute {
+        bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
+    }
+    let (prepared, bundle) = a.from.load(a.tune.grid()?)?;
+    let params = a.tune.shells()?;
+    let scheduled = prepared.schedule(a.method, &bundle, &params)?;
+    let vcd =
+        a.vcd.map(|path| VcdWindow { path, from: a.vcd_from, to: a.vcd_to.unwrap_or(a.vcd_from + 2000) });
+    let config = CosimConfig { tc: a.tc, cache: a.cache, vcd };
+    let bar = indicatif::ProgressBar::new(scheduled.stream.items.len() as u64);
+    if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} commands {elapsed}") {
+        bar.set_style(style);
+    }
+    let result = cosim::run(&scheduled, &config, |done, _| bar.set_position(done as u64));
+    bar.finish_and_clear();
+    let result = result?;
+    let golden = prepared.trace(a.method, &bundle, &params)?;
+    let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &golden, &scheduled.trace);
+    if !rung2.unexplained.is_empty() || !rung2.distance_violations.is_empty() {
+        bail!(
+            "the PE's hits differ from the f64 golden model beyond the documented bound: {:?} {:?}",
+            rung2.unexplained,
+            rung2.distance_violations
+        );
+    }
+    if a.json {
+        let json = CosimJson {
+            trace: TraceJson::new(&scheduled.trace, &bundle, Arith::Fixed),
+            hardware: result.hardware,
+            model: result.model,
+            golden: GoldenJson { rays: rung2.rays, agree: rung2.agree, explained: rung2.rays - rung2.agree },
+        };
+        println!("{}", serde_json::to_string_pretty(&json).context("serialising the co-simulation")?);
+        return Ok(());
+    }
+    let h = &result.hardware;
+    println!(
+        "{} rays, {} on the PE (T_c = {}): every hit equals the bit-true model's; {} of {} equal the f64 golden model's, the rest within the documented bound",
+        bundle.len(),
+        a.method,
+        a.tc,
+        rung2.agree,
+        rung2.rays
+    );
+    println!(
+        "cycles {}  intersection busy {}  pipeline efficiency {:.3}  stalls {} (sector drains {})",
+        h.cycles, h.intersection_busy_cycles, h.pipeline_efficiency, h.stall_cycles, h.drain_cycles
+    );
+    println!(
+        "patch loads {}  cache hits {}  passed {}  screened out {}  tests {}",
+        h.patch_loads,
+        h.cache_hits,
+        h.passed,
+        h.backward + h.back_facing + h.outside + h.near,
+        h.tests
+    );
+    Ok(())
+}
+
+/// The `cosim` JSON output: the `trace` JSON of the PE's hits plus the hardware's counters.
+#[derive(serde::Serialize)]
+struct CosimJson {
+    #[serde(flatten)]
+    trace: TraceJson,
+    hardware: PeCounters,
+    model: ModelCounts,
+    golden: GoldenJson,
+}
+
+/// The PE's hits against the f64 golden model's.
+#[derive(serde::Serialize)]
+struct GoldenJson {
+    rays: usize,
+    agree: usize,
+    /// Rays whose nearest patch differs, every one explained by the documented bound.
+    explained: usize,
 }
 
 fn demo(a: DemoArgs) -> Result<()> {

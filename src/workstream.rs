@@ -19,15 +19,16 @@
 //! follow the answers of the backend it ran with; the stream is recorded with the bit-true
 //! backend, so that the hardware, which computes the same answers, is handed the same decisions.
 //!
-//! [`execute`] runs a stream through the bit-true models of the screener and the intersection
-//! unit, item by item as the processing element does: its hits are what the RTL must return.
+//! [`commands`] turns a stream into what the host sends a processing element; [`execute`] runs
+//! those through the bit-true models of the screener and the intersection unit, as the PE does:
+//! its hits are what the RTL must return.
 
 use crate::arith::FixedBundle;
 use crate::geom::Segment;
 use crate::rays::Bundle;
 use crate::trace::HitTest;
-use shelling_hdl::intersection::model::{replaces, test, Nearest};
-use shelling_hdl::screener::model::{screen, Verdict};
+use shelling_hdl::intersection::model::Nearest;
+use shelling_testbench::pe::{model, Command, ModelCounts, PeSetup, MAX_RAYS};
 use std::cell::RefCell;
 use std::ops::Range;
 
@@ -134,21 +135,6 @@ impl<H: HitTest> HitTest for Recorder<'_, H> {
     }
 }
 
-/// What executing a stream does, counted as the hardware counts it.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
-pub struct StreamCounts {
-    pub sectors: u64,
-    /// Patches loaded (jobs).
-    pub loads: u64,
-    /// Jobs whose patch the screener passed.
-    pub passed: u64,
-    /// Ray slots of passing jobs: the intersection unit's issue cycles.
-    pub ray_slots: u64,
-    /// Ray–patch tests of rays still in the bundle.
-    pub tests: u64,
-    pub retires: u64,
-}
-
 /// What a stream is inconsistent about.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum StreamError {
@@ -156,11 +142,14 @@ pub enum StreamError {
     Invalid { item: usize, what: String },
 }
 
-/// Checks that every index in the stream is in range for `fixed` (patches and rays) and that
-/// every job comes after a sector.
+/// Checks that the bundle fits a processing element, that every index in the stream is in range
+/// for `fixed` (patches and rays) and that every job comes after a sector.
 pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamError> {
     let bad = |item: usize, what: String| Err(StreamError::Invalid { item, what });
-    let rays = stream.rays.min(fixed.dirs.len()) as u32;
+    if stream.rays == 0 || stream.rays > MAX_RAYS || stream.rays > fixed.dirs.len() {
+        return bad(0, format!("{} rays: a processing element holds 1 to {MAX_RAYS}", stream.rays));
+    }
+    let rays = stream.rays as u32;
     let mut sector = false;
     for (k, it) in stream.items.iter().enumerate() {
         match it {
@@ -191,46 +180,49 @@ pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamEr
     Ok(())
 }
 
-/// Executes a stream in the bit-true models: each sector's screener setup, each job's screener
-/// verdict under it and the intersection unit's test of every ray of its range still in the
-/// bundle. Returns every ray's nearest hit and the counts.
+/// The source and the command stream the host sends a processing element for `stream`: the
+/// quantised directions and patches of `fixed`, one command per item (consecutive retirements
+/// of neighbouring rays merged into one range).
+pub fn commands(
+    stream: &WorkStream,
+    fixed: &FixedBundle,
+) -> Result<(PeSetup, Vec<[i32; 4]>, Vec<Command>), StreamError> {
+    validate(stream, fixed)?;
+    let setup = PeSetup {
+        origin: fixed.setup.origin,
+        normal: fixed.setup.normal,
+        dirs: fixed.dirs[..stream.rays].to_vec(),
+    };
+    let patches = fixed.patches.iter().map(|p| [p.a[0], p.a[1], p.b[0], p.b[1]]).collect();
+    let mut cmds: Vec<Command> = Vec::with_capacity(stream.items.len());
+    for it in &stream.items {
+        match *it {
+            Item::Sector { ref rays } => cmds.push(Command::Sector {
+                first: fixed.dirs[rays.start as usize],
+                last: fixed.dirs[rays.end as usize - 1],
+            }),
+            Item::Job { patch, ref rays } => cmds.push(Command::Job {
+                id: patch as u16,
+                first: rays.start as u16,
+                count: rays.len() as u16,
+            }),
+            Item::Retire { ray } => match cmds.last_mut() {
+                Some(Command::Retire { first, count }) if (*first + *count) as u32 == ray => *count += 1,
+                _ => cmds.push(Command::Retire { first: ray as u16, count: 1 }),
+            },
+        }
+    }
+    Ok((setup, patches, cmds))
+}
+
+/// Executes a stream in the bit-true models, command by command as the processing element does
+/// ([`shelling_testbench::pe::model`]): each sector's screener setup, each job's screener
+/// verdict under it and the intersection unit's test of every live ray of its range. Returns
+/// every ray's nearest hit and the counts.
 pub fn execute(
     stream: &WorkStream,
     fixed: &FixedBundle,
-) -> Result<(Vec<Option<Nearest>>, StreamCounts), StreamError> {
-    validate(stream, fixed)?;
-    let mut best: Vec<Option<Nearest>> = vec![None; stream.rays];
-    let mut alive = vec![true; stream.rays];
-    let mut c = StreamCounts::default();
-    let mut setup = fixed.setup;
-    for it in &stream.items {
-        match it {
-            Item::Sector { rays } => {
-                c.sectors += 1;
-                setup = fixed.sector_setup(rays.start as usize..rays.end as usize);
-            }
-            Item::Job { patch, rays } => {
-                c.loads += 1;
-                let Verdict::Pass(p) = screen(&setup, &fixed.patches[*patch as usize]) else { continue };
-                c.passed += 1;
-                c.ray_slots += rays.len() as u64;
-                for r in rays.start as usize..rays.end as usize {
-                    if !alive[r] {
-                        continue;
-                    }
-                    c.tests += 1;
-                    if let Some(key) = test(&p, fixed.dirs[r]) {
-                        if replaces(key, p.id, best[r]) {
-                            best[r] = Some(Nearest { key, id: p.id });
-                        }
-                    }
-                }
-            }
-            Item::Retire { ray } => {
-                c.retires += 1;
-                alive[*ray as usize] = false;
-            }
-        }
-    }
-    Ok((best, c))
+) -> Result<(Vec<Option<Nearest>>, ModelCounts), StreamError> {
+    let (setup, patches, cmds) = commands(stream, fixed)?;
+    Ok(model(&setup, &patches, &cmds))
 }

@@ -1,4 +1,5 @@
 mod cli;
+mod cosim;
 mod hardware;
 mod scene_loader;
 mod tracers;

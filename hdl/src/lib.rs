@@ -9,4 +9,5 @@ pub mod formats;
 pub mod intersection;
 pub mod leaf;
 pub mod loader;
+pub mod pe;
 pub mod screener;

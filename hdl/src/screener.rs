@@ -30,7 +30,8 @@
 //! | `normal_x/y`, `first_x/y`, `last_x/y` | in | 6 × 18 | bundle setup: source normal, sector's first and last ray (Q2.16) |
 //! | `in_valid`, `in_ready`, `in_id` | in, out, in | 1, 1, 16 | patch stream in (valid/ready) |
 //! | `in_ax`, `in_ay`, `in_bx`, `in_by` | in | 4 × 17 | endpoints, world coordinates (Q11.6 unsigned) |
-//! | `out_valid`, `out_ready`, `out_id` | out, in, out | 1, 1, 16 | passing patches out (valid/ready), in acceptance order |
+//! | `out_valid`, `out_ready`, `out_id` | out, in, out | 1, 1, 16 | every patch out (valid/ready), in acceptance order |
+//! | `out_pass` | out | 1 | the patch passed; if not, only `out_id` is meaningful (the consumer drops it) |
 //! | `out_ax`, `out_ay`, `out_bx`, `out_by` | out | 4 × 18 | endpoints relative to the origin (Q12.6) |
 //! | `out_wx`, `out_wy`, `out_sh` | out | 18, 18, 6 | inverse-distance vector, its exponent in [−3, 31] |
 //! | `passed`, `backward`, `back_facing`, `outside`, `near` | out | 5 × 32 | verdict counters, wrapping at 2³² |
@@ -62,15 +63,19 @@
 //!   sector's edges; the backward, back-facing and outside-the-sector screens; the leading zeros
 //!   of `2K`;
 //! * stage 4 ([`VERDICT_LATENCY`]): the exponent `sh` (from the two leading-zero counts and one
-//!   comparison), the near screen and the verdict, counted. A passing patch takes the next slot
-//!   of the output FIFO (id, `a`, `b`, `sh` written) and enters the divider with its initial
-//!   remainders `floor(|n_c|·2^sh)`;
+//!   comparison), the near screen and the verdict, counted. The patch takes the next slot of the
+//!   output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters the divider with its
+//!   initial remainders `floor(|n_c|·2^sh)`;
 //! * stages 5–22: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
 //!   `K`, one stage per quotient bit ([`DIV_STEPS`](crate::leaf::DIV_STEPS) = 17 steps of a
 //!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 22
 //!   `W = sign(n)·q` completes the patch's slot;
 //! * stages 23–24: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
 //!   (24) and leaves then if `out_ready` is high.
+//!
+//! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
+//! acceptance order with its verdict, so a consumer that pairs patches with other information
+//! (the processing element's ray ranges) stays in step without counting.
 //!
 //! # Backpressure: credits
 //!
@@ -79,22 +84,20 @@
 //! eight [`Bram`] lanes (LUT RAM) sharing one read pointer: the slot is reserved in stage 4 and
 //! completed in stage 22 (a second write pointer suffices, the divider's latency being fixed).
 //! A credit counter counts the patches in flight: it is incremented when a patch is accepted and
-//! decremented when its verdict screens it out (stage 4: a screened-out patch never takes a
-//! slot) or when it leaves. A patch is accepted only while the count is below [`DEPTH`], so
+//! decremented when it leaves. A patch is accepted only while the count is below [`DEPTH`], so
 //! every patch in the pipeline has a slot waiting for it: nothing is dropped, and backpressure
 //! on the output stops the input (`in_ready` low) instead.
 //!
 //! # Latency and throughput
 //!
-//! Without backpressure a passing patch accepted in cycle `a` leaves in cycle `a + 24`
-//! ([`LATENCY`]); a screened-out one is counted in cycle `a + 4`. A credit is taken in the cycle
-//! of acceptance and returned in the cycle of the verdict (screened out: held 5 cycles) or of
-//! the transfer out (passing: held 25 cycles); a returned credit can be taken again the next
+//! Without backpressure a patch accepted in cycle `a` is counted in cycle `a + 4` and leaves in
+//! cycle `a + 24` ([`LATENCY`]). A credit is taken in the cycle of acceptance and returned in
+//! the cycle of the transfer out (held 25 cycles); a returned credit can be taken again the next
 //! cycle. With `DEPTH = 32 ≥ 25` the screener therefore accepts one patch per clock (II = 1)
 //! for any mix of verdicts, as long as the output is not backpressured. The cycle counts of an
 //! unstalled stream are [`model::unstalled_cycles`]: `N` patches offered back to back take
-//! `N + 24` cycles when the last one passes, `N + 4` when all are screened out. Under sustained
-//! backpressure the screener holds 32 passing patches and takes no more until one leaves.
+//! `N + 24` cycles. Under sustained backpressure the screener holds 32 patches and takes no
+//! more until one leaves.
 //!
 //! # Models
 //!
@@ -204,17 +207,15 @@ pub mod model {
     }
 
     /// The cycles in which `n` patches offered back to back from cycle 0 are accepted when the
-    /// output is always ready; `passes[k]` says whether patch `k` passes. A patch is accepted
-    /// while fewer than [`DEPTH`] credits are taken; a credit is returned at the end of the
-    /// verdict's cycle (screened out) or of the cycle the patch leaves (passing). With
+    /// output is always ready. A patch is accepted while fewer than [`DEPTH`] credits are taken;
+    /// a credit is returned at the end of the cycle the patch leaves, whatever its verdict. With
     /// `DEPTH > LATENCY` this is cycle `k` for patch `k`.
-    pub fn accept_cycles(passes: &[bool]) -> Vec<u64> {
-        let hold = |pass: bool| if pass { LATENCY } else { VERDICT_LATENCY };
-        let mut a: Vec<u64> = Vec::with_capacity(passes.len());
-        for k in 0..passes.len() {
+    pub fn accept_cycles(n: usize) -> Vec<u64> {
+        let mut a: Vec<u64> = Vec::with_capacity(n);
+        for k in 0..n {
             let mut c = a.last().map_or(0, |&p| p + 1);
             // Credits taken in cycle c: accepted before c and returned in cycle c or later.
-            while (0..k).filter(|&j| a[j] + hold(passes[j]) >= c).count() >= DEPTH {
+            while (0..k).filter(|&j| a[j] + LATENCY >= c).count() >= DEPTH {
                 c += 1;
             }
             a.push(c);
@@ -222,25 +223,16 @@ pub mod model {
         a
     }
 
-    /// The cycles in which the passing patches leave, under the conditions of
-    /// [`accept_cycles`]: acceptance plus [`LATENCY`].
-    pub fn output_cycles(passes: &[bool]) -> Vec<u64> {
-        accept_cycles(passes)
-            .into_iter()
-            .zip(passes)
-            .filter(|(_, &pass)| pass)
-            .map(|(a, _)| a + LATENCY)
-            .collect()
+    /// The cycles in which the patches leave, under the conditions of [`accept_cycles`]:
+    /// acceptance plus [`LATENCY`].
+    pub fn output_cycles(n: usize) -> Vec<u64> {
+        accept_cycles(n).into_iter().map(|a| a + LATENCY).collect()
     }
 
-    /// Cycles (rising edges) until every patch is counted and every passing one has left, under
-    /// the conditions of [`accept_cycles`]. With patch `k` accepted in cycle `k`: `N + LATENCY`
-    /// (`N + 24`) when the last patch passes, `N + VERDICT_LATENCY` (`N + 4`) when all are
-    /// screened out, and `max(N + 4, j + 25)` when the last passing patch is patch `j`.
-    pub fn unstalled_cycles(passes: &[bool]) -> u64 {
-        let counted = accept_cycles(passes).last().map_or(0, |a| a + VERDICT_LATENCY + 1);
-        let out = output_cycles(passes).last().map_or(0, |c| c + 1);
-        counted.max(out)
+    /// Cycles (rising edges) until every patch has left, under the conditions of
+    /// [`accept_cycles`]: `N + LATENCY` (`N + 24`), with patch `k` accepted in cycle `k`.
+    pub fn unstalled_cycles(n: usize) -> u64 {
+        output_cycles(n).last().map_or(0, |c| c + 1)
     }
 }
 
@@ -251,13 +243,13 @@ pub mod model {
 /// Pipeline stage of the verdict: a patch accepted in cycle `a` is decided and counted in cycle
 /// `a + VERDICT_LATENCY` (the counters show it from the next cycle on).
 pub const VERDICT_LATENCY: u64 = 4;
-/// Clocks from a patch's acceptance to its setup on the output: a passing patch accepted in
+/// Clocks from a patch's acceptance to its setup on the output: a patch accepted in
 /// cycle `a` is presented (`out_valid`) from cycle `a + LATENCY` on; with `out_ready` high it
 /// leaves in that cycle. The verdict, the divider ([`DIV_LATENCY`]) and the output FIFO's write
 /// and registered read: `4 + 18 + 2`.
 pub const LATENCY: u64 = VERDICT_LATENCY + DIV_LATENCY + 2;
 /// Output FIFO capacity in patches, and the credit limit: a patch is accepted only while fewer
-/// than `DEPTH` patches are in flight (accepted and not yet decided, or passed and not yet out).
+/// than `DEPTH` patches are in flight (accepted and not yet out).
 /// One patch per clock needs `DEPTH ≥ LATENCY + 1`.
 pub const DEPTH: usize = 32;
 /// Address width of the output FIFO's lanes: `2^ADDR_BITS == DEPTH`.
@@ -285,7 +277,7 @@ pub struct Screener {
     pub in_ay: Signal<In, Bits<17>>,
     pub in_bx: Signal<In, Bits<17>>,
     pub in_by: Signal<In, Bits<17>>,
-    // Passing patches out.
+    // Every patch out, with its verdict.
     pub out_valid: Signal<Out, bool>,
     pub out_ready: Signal<In, bool>,
     pub out_id: Signal<Out, Bits<16>>,
@@ -296,6 +288,7 @@ pub struct Screener {
     pub out_wx: Signal<Out, Bits<18>>,
     pub out_wy: Signal<Out, Bits<18>>,
     pub out_sh: Signal<Out, Bits<6>>,
+    pub out_pass: Signal<Out, bool>,
     // Counters.
     pub passed: Signal<Out, Bits<32>>,
     pub backward: Signal<Out, Bits<32>>,
@@ -314,18 +307,18 @@ pub struct Screener {
     lane_ay: Bram<18, 5>,
     lane_bx: Bram<18, 5>,
     lane_by: Bram<18, 5>,
-    lane_sh: Bram<6, 5>,
+    lane_sh: Bram<7, 5>,
+    sh_pass: Signal<Local, Bits<7>>,
+    pass_flag: Constant<Bits<7>>,
     lane_wx: Bram<18, 5>,
     lane_wy: Bram<18, 5>,
     room: Signal<Local, bool>,
     take: Signal<Local, bool>,
     pop: Signal<Local, bool>,
-    screened: Signal<Local, bool>,
     reserve: Signal<Local, bool>,
     fill: Signal<Local, bool>,
     used_inc: Signal<Local, Bits<6>>,
     used_dec: Signal<Local, Bits<6>>,
-    used_dec2: Signal<Local, Bits<6>>,
     done_inc: Signal<Local, Bits<6>>,
     done_dec: Signal<Local, Bits<6>>,
     done_left: Signal<Local, Bits<6>>,
@@ -432,7 +425,7 @@ pub struct Screener {
     top8_e: Signal<Local, Bits<8>>,
     top4_e: Signal<Local, Bits<4>>,
     top2_e: Signal<Local, Bits<2>>,
-    // Stage 4: the verdict, the exponent, the divider's inputs; a passing patch takes a slot.
+    // Stage 4: the verdict, the exponent, the divider's inputs; the patch takes a slot.
     v4: DFF<bool>,
     id4: DFF<Bits<16>>,
     ax4: DFF<Bits<18>>,
@@ -480,7 +473,6 @@ pub struct Screener {
     depth6: Constant<Bits<6>>,
     zero6: Constant<Bits<6>>,
     one6: Constant<Bits<6>>,
-    two6: Constant<Bits<6>>,
     one5: Constant<Bits<5>>,
     zero18: Constant<Bits<18>>,
     zero32: Constant<Bits<32>>,
@@ -545,6 +537,7 @@ impl Default for Screener {
             out_wx: Default::default(),
             out_wy: Default::default(),
             out_sh: Default::default(),
+            out_pass: Default::default(),
             passed: Default::default(),
             backward: Default::default(),
             back_facing: Default::default(),
@@ -562,17 +555,17 @@ impl Default for Screener {
             lane_bx: Default::default(),
             lane_by: Default::default(),
             lane_sh: Default::default(),
+            sh_pass: Default::default(),
+            pass_flag: Constant::new(0x40u64.into()),
             lane_wx: Default::default(),
             lane_wy: Default::default(),
             room: Default::default(),
             take: Default::default(),
             pop: Default::default(),
-            screened: Default::default(),
             reserve: Default::default(),
             fill: Default::default(),
             used_inc: Default::default(),
             used_dec: Default::default(),
-            used_dec2: Default::default(),
             done_inc: Default::default(),
             done_dec: Default::default(),
             done_left: Default::default(),
@@ -719,7 +712,6 @@ impl Default for Screener {
             depth6: Constant::new((DEPTH as u64).into()),
             zero6: Constant::new(0u64.into()),
             one6: Constant::new(1u64.into()),
-            two6: Constant::new(2u64.into()),
             one5: Constant::new(1u64.into()),
             zero18: Constant::new(0u64.into()),
             zero32: Constant::new(0u64.into()),
@@ -756,13 +748,13 @@ impl Default for Screener {
 }
 
 impl Screener {
-    /// Patches in flight, `0..=DEPTH`: accepted and not yet decided, or passed and not yet out
+    /// Patches in flight, `0..=DEPTH`: accepted and not yet out
     /// (the credit count that `in_ready` compares with [`DEPTH`]): for testbenches.
     pub fn in_flight(&self) -> usize {
         self.used.q.val().index()
     }
 
-    /// Passing patches whose setup is complete in the output FIFO and has not left yet: for
+    /// Patches whose slot is complete in the output FIFO and has not left yet: for
     /// testbenches.
     pub fn buffered(&self) -> usize {
         self.done.q.val().index()
@@ -1070,8 +1062,7 @@ impl Logic for Screener {
             & !self.back_facing4.q.val()
             & !self.outside4.q.val()
             & !self.is_near.val();
-        self.screened.next = self.v4.q.val() & !self.is_pass.val();
-        self.reserve.next = self.v4.q.val() & self.is_pass.val();
+        self.reserve.next = self.v4.q.val();
         if self.v4.q.val() {
             if self.is_pass.val() {
                 self.c_passed.d.next = self.c_passed.q.val() + self.one32.val();
@@ -1121,7 +1112,7 @@ impl Logic for Screener {
             self.divider.fy.next = self.low_ny.val();
         }
         self.divider.k.next = self.k4.q.val();
-        // The tag the divider carries: passing (bit 0), the signs of n (bits 1 and 2).
+        // The tag the divider carries: a slot to complete (bit 0), the signs of n (bits 1 and 2).
         self.tag_p.next = self.zero3.val();
         if self.reserve.val() {
             self.tag_p.next = self.tag_pass.val();
@@ -1135,8 +1126,8 @@ impl Logic for Screener {
             self.tag_y.next = self.tag_negy.val();
         }
         self.divider.tag.next = self.tag_p.val() | self.tag_x.val() | self.tag_y.val();
-        // A passing patch takes the next slot of the output FIFO: id, a, b and sh now, W when
-        // the divider delivers it.
+        // Every patch takes the next slot of the output FIFO: id, a, b, sh and the verdict now,
+        // W when the divider delivers it.
         self.lane_id.write_address.next = self.res_ptr.q.val();
         self.lane_ax.write_address.next = self.res_ptr.q.val();
         self.lane_ay.write_address.next = self.res_ptr.q.val();
@@ -1148,7 +1139,11 @@ impl Logic for Screener {
         self.lane_ay.write_data.next = self.ay4.q.val();
         self.lane_bx.write_data.next = self.bx4.q.val();
         self.lane_by.write_data.next = self.by4.q.val();
-        self.lane_sh.write_data.next = self.sh.val();
+        self.sh_pass.next = bit_cast::<7, 6>(self.sh.val());
+        if self.is_pass.val() {
+            self.sh_pass.next = bit_cast::<7, 6>(self.sh.val()) | self.pass_flag.val();
+        }
+        self.lane_sh.write_data.next = self.sh_pass.val();
         self.lane_id.write_enable.next = self.reserve.val();
         self.lane_ax.write_enable.next = self.reserve.val();
         self.lane_ay.write_enable.next = self.reserve.val();
@@ -1160,7 +1155,7 @@ impl Logic for Screener {
             self.res_ptr.d.next = self.res_inc.val();
         }
 
-        // Stage 22: the quotients of a passing patch arrive (slots fill in the order they were
+        // Stage 22: the quotients of a patch arrive (slots fill in the order they were
         // taken: the divider's latency is fixed); W = sign(n)·q completes the slot.
         self.fill.next = self.divider.tag_out.val().get_bit(0);
         self.qx18.next = bit_cast::<18, 17>(self.divider.qx.val());
@@ -1213,29 +1208,20 @@ impl Logic for Screener {
         self.out_ay.next = self.lane_ay.read_data.val();
         self.out_bx.next = self.lane_bx.read_data.val();
         self.out_by.next = self.lane_by.read_data.val();
-        self.out_sh.next = self.lane_sh.read_data.val();
+        self.out_sh.next = bit_cast::<6, 7>(self.lane_sh.read_data.val());
+        self.out_pass.next = self.lane_sh.read_data.val().get_bit(6);
         self.out_wx.next = self.lane_wx.read_data.val();
         self.out_wy.next = self.lane_wy.read_data.val();
 
-        // Counters of the credit scheme: `used` counts a patch from its acceptance until its
-        // verdict screens it out or it leaves; `done` counts complete slots not yet out.
+        // Counters of the credit scheme: `used` counts a patch from its acceptance until it
+        // leaves; `done` counts complete slots not yet out.
         self.used_inc.next = self.used.q.val() + self.one6.val();
         self.used_dec.next = self.used.q.val() - self.one6.val();
-        self.used_dec2.next = self.used.q.val() - self.two6.val();
-        if self.take.val() & !self.screened.val() & !self.pop.val() {
+        if self.take.val() & !self.pop.val() {
             self.used.d.next = self.used_inc.val();
         }
-        if !self.take.val() & self.screened.val() & !self.pop.val() {
+        if !self.take.val() & self.pop.val() {
             self.used.d.next = self.used_dec.val();
-        }
-        if !self.take.val() & !self.screened.val() & self.pop.val() {
-            self.used.d.next = self.used_dec.val();
-        }
-        if self.take.val() & self.screened.val() & self.pop.val() {
-            self.used.d.next = self.used_dec.val();
-        }
-        if !self.take.val() & self.screened.val() & self.pop.val() {
-            self.used.d.next = self.used_dec2.val();
         }
         self.done_inc.next = self.done.q.val() + self.one6.val();
         if self.fill.val() & !self.pop.val() {

@@ -2,3 +2,4 @@ patch_loader.v
 patch_cache.v
 screener.v
 intersection_unit.v
+processing_element.v

@@ -1,7 +1,7 @@
 // screener: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,passed,backward,back_facing,outside,near);
+module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
     
     // Module arguments
     input wire  clock;
@@ -30,6 +30,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     output reg  [17:0] out_wx;
     output reg  [17:0] out_wy;
     output reg  [5:0] out_sh;
+    output reg  out_pass;
     output reg  [31:0] passed;
     output reg  [31:0] backward;
     output reg  [31:0] back_facing;
@@ -37,10 +38,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     output reg  [31:0] near;
     
     // Constant declarations
+    localparam  pass_flag = 7'b1000000;
     localparam  depth6 = 6'b100000;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
-    localparam  two6 = 6'b10;
     localparam  one5 = 5'b1;
     localparam  zero18 = 18'b0;
     localparam  zero32 = 32'h0;
@@ -124,9 +125,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  lane_by$write_enable;
     reg  lane_sh$clock;
     reg  [4:0] lane_sh$read_address;
-    wire  [5:0] lane_sh$read_data;
+    wire  [6:0] lane_sh$read_data;
     reg  [4:0] lane_sh$write_address;
-    reg  [5:0] lane_sh$write_data;
+    reg  [6:0] lane_sh$write_data;
     reg  lane_sh$write_enable;
     reg  lane_wx$clock;
     reg  [4:0] lane_wx$read_address;
@@ -348,15 +349,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  c_near$clock;
     
     // Local signals
+    reg  [6:0] sh_pass;
     reg  room;
     reg  take;
     reg  pop;
-    reg  screened;
     reg  reserve;
     reg  fill;
     reg  [5:0] used_inc;
     reg  [5:0] used_dec;
-    reg  [5:0] used_dec2;
     reg  [5:0] done_inc;
     reg  [5:0] done_dec;
     reg  [5:0] done_left;
@@ -1187,8 +1187,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         sh5 = sh[(32'h0)+:(5)];
         is_near = ~backward4$q & ~back_facing4$q & ~outside4$q & sh[32'h5] & (sh < sh_lo);
         is_pass = ~backward4$q & ~back_facing4$q & ~outside4$q & ~is_near;
-        screened = v4$q & ~is_pass;
-        reserve = v4$q & is_pass;
+        reserve = v4$q;
         if (v4$q) begin
             if (is_pass) begin
                 c_passed$d = c_passed$q + one32;
@@ -1262,7 +1261,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         lane_ay$write_data = ay4$q;
         lane_bx$write_data = bx4$q;
         lane_by$write_data = by4$q;
-        lane_sh$write_data = sh;
+        sh_pass = ((sh) & 7'h7f);
+        if (is_pass) begin
+            sh_pass = ((sh) & 7'h7f) | pass_flag;
+        end
+        lane_sh$write_data = sh_pass;
         lane_id$write_enable = reserve;
         lane_ax$write_enable = reserve;
         lane_ay$write_enable = reserve;
@@ -1319,26 +1322,17 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         out_ay = lane_ay$read_data;
         out_bx = lane_bx$read_data;
         out_by = lane_by$read_data;
-        out_sh = lane_sh$read_data;
+        out_sh = ((lane_sh$read_data) & 6'h3f);
+        out_pass = lane_sh$read_data[32'h6];
         out_wx = lane_wx$read_data;
         out_wy = lane_wy$read_data;
         used_inc = used$q + one6;
         used_dec = used$q - one6;
-        used_dec2 = used$q - two6;
-        if (take & ~screened & ~pop) begin
+        if (take & ~pop) begin
             used$d = used_inc;
         end
-        if (~take & screened & ~pop) begin
+        if (~take & pop) begin
             used$d = used_dec;
-        end
-        if (~take & ~screened & pop) begin
-            used$d = used_dec;
-        end
-        if (take & screened & pop) begin
-            used$d = used_dec;
-        end
-        if (~take & screened & pop) begin
-            used$d = used_dec2;
         end
         done_inc = done$q + one6;
         if (fill & ~pop) begin
@@ -2323,17 +2317,17 @@ module screener$lane_sh(clock,read_address,read_data,write_address,write_data,wr
     // Module arguments
     input wire  clock;
     input wire  [4:0] read_address;
-    output reg  [5:0] read_data;
+    output reg  [6:0] read_data;
     input wire  [4:0] write_address;
-    input wire  [5:0] write_data;
+    input wire  [6:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
-    reg [5:0] mem [0:31];
+    reg [6:0] mem [0:31];
     integer i;
     initial begin
-       for (i = 0; i <= 31; i = i + 1) mem[i] = 6'd0;
-       read_data = 6'd0;
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 7'd0;
+       read_data = 7'd0;
     end
     always @(posedge clock) begin
        read_data <= mem[read_address];

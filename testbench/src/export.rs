@@ -8,6 +8,7 @@ use rust_hdl::core::prelude::Block;
 use shelling_hdl::cache::PatchCache;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
+use shelling_hdl::pe::ProcessingElement;
 use shelling_hdl::screener::Screener;
 use std::path::{Path, PathBuf};
 
@@ -24,11 +25,14 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     cache.connect_all();
     let mut screener = Screener::default();
     screener.connect_all();
+    let mut pe = ProcessingElement::default();
+    pe.connect_all();
     vec![
         ("patch_loader", Box::new(loader)),
         ("patch_cache", Box::new(cache)),
         ("screener", Box::new(screener)),
         ("intersection_unit", Box::new(iu)),
+        ("processing_element", Box::new(pe)),
     ]
 }
 

@@ -80,10 +80,12 @@ pub mod error;
 pub mod export;
 pub mod intersection;
 pub mod memory;
+pub mod pe;
 pub mod replay;
 pub mod scoreboard;
 pub mod stream;
 pub mod vcd;
+pub mod waves;
 
 pub use driver::{Clocked, Driver};
 pub use error::{Error, Result};

@@ -1,0 +1,368 @@
+//! The processing element (PE): patch loader → backface screener → intersection unit, fed by a
+//! command stream from the shell scheduler, with one port to the host memory.
+//!
+//! # Purpose
+//!
+//! One PE traces one source's bundle (up to 1024 rays). The host writes the ray directions, sets
+//! the sector (the screener's bundle setup) and streams commands, each one item of the work
+//! stream (`src/workstream.rs`):
+//!
+//! * a **job**: load patch `cmd_id` from host memory, screen it for the current sector and, if it
+//!   passes, test it against the live rays `cmd_first .. cmd_first + cmd_count`;
+//! * a **retire**: rays `cmd_first .. cmd_first + cmd_count` leave the bundle (tracking).
+//!
+//! Commands take effect in stream order: a retire reaches the intersection unit after every job
+//! sent before it, and before any job sent after it, although jobs spend the loader's and the
+//! screener's latency on the way and retires do not. The nearest hits are read from the ray
+//! memory when the PE is idle.
+//!
+//! # Ports ([`ProcessingElement`])
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | rising-edge clock |
+//! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 10, 18, 18 | write ray `dir_addr`'s direction (Q2.16); the ray becomes live |
+//! | `origin_x/y`, `normal_x/y`, `first_x/y`, `last_x/y` | in | 17, 18 | the screener's bundle setup (source and sector), changed only while not `busy` |
+//! | `cmd_valid`, `cmd_ready` | in, out | 1, 1 | command stream (valid/ready) |
+//! | `cmd_retire`, `cmd_id`, `cmd_first`, `cmd_count` | in | 1, 16, 10, 11 | retire or job; patch id; ray range |
+//! | `cfg_cache_enable`, `cfg_cache_mask` | in | 1, 12 | the patch cache: on, and its lines − 1 (a power of two up to 4096), held during a run |
+//! | `mem_req`, `mem_addr` | out | 1, 16 | host memory request (one pulse per patch) |
+//! | `mem_valid`, `mem_ax` … `mem_by` | in | 1, 4 × 17 | host memory response, in request order (world coordinates, Q11.6) |
+//! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (the cycle after; only while not `busy`) |
+//! | `busy` | out | 1 | a command is in flight |
+//! | `loads`, `cache_hits`, `cache_misses`, `passed`, `backward`, `back_facing`, `outside`, `near`, `tests` | out | 32 each | counters (wrapping): patches loaded, the cache's hits and misses, the screener's verdicts, ray-patch tests of live rays |
+//!
+//! # Structure
+//!
+//! The loader's memory port goes through the [`PatchCache`] to the host port: with the cache off
+//! it is a wire (the paper's shared memory, every load `T_c`); with it on, a patch loaded before
+//! comes from block RAM in one clock (the paper's "high speed cache memory for each PE").
+//!
+//! Every command accepted writes a **tag** (retire flag, first, count) into a [`TAG_DEPTH`]-entry
+//! FIFO in LUT RAM; a job also hands its id to the [`PatchLoader`]. The loader's patches go
+//! through the [`Screener`], which reports every patch in order, passed or not (`out_pass`). The
+//! **merger** at the intersection unit's input pairs the oldest tag with what it waits for: a
+//! retire goes straight to the [`IntersectionUnit`] as a retire job; a job waits for its patch's
+//! verdict, then goes to the unit with the tag's ray range if it passed, or is dropped.
+//!
+//! `cmd_ready` is high while the tag FIFO has room and the loader can take an id (for a retire
+//! too: the condition must not depend on `cmd_retire`); it depends on registers only.
+//!
+//! # Latency and throughput
+//!
+//! A job reaches the intersection unit the loader's latency (`T_c + 3` without a cache) plus the
+//! screener's after it is accepted; the unit then issues one ray per clock. Jobs stream back to
+//! back at one per clock through the loader and the screener, so in steady state the PE is bound
+//! by the slower of the host memory (one patch per `T_c`) and the intersection unit (one ray per
+//! clock), the balance Section 4 of the paper is about.
+//!
+//! # Models
+//!
+//! The PE computes what `src/workstream.rs`'s `execute` computes from the same commands: the
+//! screener's [`crate::screener::model::screen`] per job under the sector's setup and the
+//! intersection unit's [`crate::intersection::model`] per live ray.
+
+use crate::cache::PatchCache;
+use crate::intersection::IntersectionUnit;
+use crate::leaf::Bram;
+use crate::loader::PatchLoader;
+use crate::screener::Screener;
+use rust_hdl::prelude::*;
+
+/// Address bits of the tag FIFO.
+pub const TAG_BITS: usize = 6;
+/// Commands the PE holds between acceptance and the intersection unit.
+pub const TAG_DEPTH: usize = 1 << TAG_BITS;
+/// A tag: retire flag (bit 21), first ray (bits 11..20), count (bits 0..10). (The update
+/// function spells these bit positions as literals: the Verilog generator copies expressions.)
+const TAG_WIDTH: usize = 22;
+
+/// The processing element (see the [module documentation](self)).
+#[derive(LogicBlock)]
+pub struct ProcessingElement {
+    pub clock: Signal<In, Clock>,
+    // Rays.
+    pub dir_we: Signal<In, bool>,
+    pub dir_addr: Signal<In, Bits<10>>,
+    pub dir_x: Signal<In, Bits<18>>,
+    pub dir_y: Signal<In, Bits<18>>,
+    // Source and sector.
+    pub origin_x: Signal<In, Bits<17>>,
+    pub origin_y: Signal<In, Bits<17>>,
+    pub normal_x: Signal<In, Bits<18>>,
+    pub normal_y: Signal<In, Bits<18>>,
+    pub first_x: Signal<In, Bits<18>>,
+    pub first_y: Signal<In, Bits<18>>,
+    pub last_x: Signal<In, Bits<18>>,
+    pub last_y: Signal<In, Bits<18>>,
+    // Commands.
+    pub cmd_valid: Signal<In, bool>,
+    pub cmd_ready: Signal<Out, bool>,
+    pub cmd_retire: Signal<In, bool>,
+    pub cmd_id: Signal<In, Bits<16>>,
+    pub cmd_first: Signal<In, Bits<10>>,
+    pub cmd_count: Signal<In, Bits<11>>,
+    // The patch cache.
+    pub cfg_cache_enable: Signal<In, bool>,
+    pub cfg_cache_mask: Signal<In, Bits<12>>,
+    // Host memory.
+    pub mem_req: Signal<Out, bool>,
+    pub mem_addr: Signal<Out, Bits<16>>,
+    pub mem_valid: Signal<In, bool>,
+    pub mem_ax: Signal<In, Bits<17>>,
+    pub mem_ay: Signal<In, Bits<17>>,
+    pub mem_bx: Signal<In, Bits<17>>,
+    pub mem_by: Signal<In, Bits<17>>,
+    // Readout.
+    pub res_re: Signal<In, bool>,
+    pub res_addr: Signal<In, Bits<10>>,
+    pub res_hit: Signal<Out, bool>,
+    pub res_id: Signal<Out, Bits<16>>,
+    pub res_key: Signal<Out, Bits<32>>,
+    // Status and counters.
+    pub busy: Signal<Out, bool>,
+    pub loads: Signal<Out, Bits<32>>,
+    pub cache_hits: Signal<Out, Bits<32>>,
+    pub cache_misses: Signal<Out, Bits<32>>,
+    pub passed: Signal<Out, Bits<32>>,
+    pub backward: Signal<Out, Bits<32>>,
+    pub back_facing: Signal<Out, Bits<32>>,
+    pub outside: Signal<Out, Bits<32>>,
+    pub near: Signal<Out, Bits<32>>,
+    pub tests: Signal<Out, Bits<32>>,
+    // The datapath.
+    loader: PatchLoader,
+    cache: PatchCache,
+    screener: Screener,
+    unit: IntersectionUnit,
+    // The tag FIFO.
+    tags: Bram<TAG_WIDTH, TAG_BITS>,
+    wr_ptr: DFF<Bits<TAG_BITS>>,
+    rd_ptr: DFF<Bits<TAG_BITS>>,
+    tag_count: DFF<Bits<7>>,
+    head_valid: DFF<bool>,
+    accept: Signal<Local, bool>,
+    pop: Signal<Local, bool>,
+    head_retire: Signal<Local, bool>,
+    head_first: Signal<Local, Bits<10>>,
+    head_count: Signal<Local, Bits<11>>,
+    new_tag: Signal<Local, Bits<TAG_WIDTH>>,
+    retire_flag: Constant<Bits<TAG_WIDTH>>,
+    full: Constant<Bits<7>>,
+    zero7: Constant<Bits<7>>,
+    one7: Constant<Bits<7>>,
+    one_ptr: Constant<Bits<TAG_BITS>>,
+}
+
+impl Default for ProcessingElement {
+    fn default() -> Self {
+        ProcessingElement {
+            clock: Default::default(),
+            dir_we: Default::default(),
+            dir_addr: Default::default(),
+            dir_x: Default::default(),
+            dir_y: Default::default(),
+            origin_x: Default::default(),
+            origin_y: Default::default(),
+            normal_x: Default::default(),
+            normal_y: Default::default(),
+            first_x: Default::default(),
+            first_y: Default::default(),
+            last_x: Default::default(),
+            last_y: Default::default(),
+            cmd_valid: Default::default(),
+            cmd_ready: Default::default(),
+            cmd_retire: Default::default(),
+            cmd_id: Default::default(),
+            cmd_first: Default::default(),
+            cmd_count: Default::default(),
+            cfg_cache_enable: Default::default(),
+            cfg_cache_mask: Default::default(),
+            mem_req: Default::default(),
+            mem_addr: Default::default(),
+            mem_valid: Default::default(),
+            mem_ax: Default::default(),
+            mem_ay: Default::default(),
+            mem_bx: Default::default(),
+            mem_by: Default::default(),
+            res_re: Default::default(),
+            res_addr: Default::default(),
+            res_hit: Default::default(),
+            res_id: Default::default(),
+            res_key: Default::default(),
+            busy: Default::default(),
+            loads: Default::default(),
+            cache_hits: Default::default(),
+            cache_misses: Default::default(),
+            passed: Default::default(),
+            backward: Default::default(),
+            back_facing: Default::default(),
+            outside: Default::default(),
+            near: Default::default(),
+            tests: Default::default(),
+            loader: Default::default(),
+            cache: Default::default(),
+            screener: Default::default(),
+            unit: Default::default(),
+            tags: Default::default(),
+            wr_ptr: Default::default(),
+            rd_ptr: Default::default(),
+            tag_count: Default::default(),
+            head_valid: Default::default(),
+            accept: Default::default(),
+            pop: Default::default(),
+            head_retire: Default::default(),
+            head_first: Default::default(),
+            head_count: Default::default(),
+            new_tag: Default::default(),
+            retire_flag: Constant::new((1u64 << (TAG_WIDTH - 1)).into()),
+            full: Constant::new((TAG_DEPTH as u64).into()),
+            zero7: Constant::new(0.into()),
+            one7: Constant::new(1.into()),
+            one_ptr: Constant::new(1.into()),
+        }
+    }
+}
+
+impl Logic for ProcessingElement {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid);
+        self.loader.clock.next = self.clock.val();
+        self.cache.clock.next = self.clock.val();
+        self.screener.clock.next = self.clock.val();
+        self.unit.clock.next = self.clock.val();
+        self.tags.clock.next = self.clock.val();
+
+        // Rays and readout: straight to the intersection unit.
+        self.unit.dir_we.next = self.dir_we.val();
+        self.unit.dir_addr.next = self.dir_addr.val();
+        self.unit.dir_x.next = self.dir_x.val();
+        self.unit.dir_y.next = self.dir_y.val();
+        self.unit.res_re.next = self.res_re.val();
+        self.unit.res_addr.next = self.res_addr.val();
+        self.res_hit.next = self.unit.res_hit.val();
+        self.res_id.next = self.unit.res_id.val();
+        self.res_key.next = self.unit.res_key.val();
+
+        // Source and sector: the screener's setup.
+        self.screener.origin_x.next = self.origin_x.val();
+        self.screener.origin_y.next = self.origin_y.val();
+        self.screener.normal_x.next = self.normal_x.val();
+        self.screener.normal_y.next = self.normal_y.val();
+        self.screener.first_x.next = self.first_x.val();
+        self.screener.first_y.next = self.first_y.val();
+        self.screener.last_x.next = self.last_x.val();
+        self.screener.last_y.next = self.last_y.val();
+
+        // Commands: a tag for each, the id of a job to the loader.
+        self.cmd_ready.next = (self.tag_count.q.val() != self.full.val()) & self.loader.id_ready.val();
+        self.accept.next =
+            self.cmd_valid.val() & (self.tag_count.q.val() != self.full.val()) & self.loader.id_ready.val();
+        self.loader.id_valid.next = self.accept.val() & !self.cmd_retire.val();
+        self.loader.id.next = self.cmd_id.val();
+        self.new_tag.next = (bit_cast::<TAG_WIDTH, 10>(self.cmd_first.val()) << 11)
+            | bit_cast::<TAG_WIDTH, 11>(self.cmd_count.val());
+        if self.cmd_retire.val() {
+            self.new_tag.next = self.new_tag.val() | self.retire_flag.val();
+        }
+        self.tags.write_address.next = self.wr_ptr.q.val();
+        self.tags.write_data.next = self.new_tag.val();
+        self.tags.write_enable.next = self.accept.val();
+        if self.accept.val() {
+            self.wr_ptr.d.next = self.wr_ptr.q.val() + self.one_ptr.val();
+        }
+
+        // Host memory: the loader's port through the cache.
+        self.cache.cfg_enable.next = self.cfg_cache_enable.val();
+        self.cache.cfg_mask.next = self.cfg_cache_mask.val();
+        self.cache.req.next = self.loader.mem_req.val();
+        self.cache.addr.next = self.loader.mem_addr.val();
+        self.loader.mem_valid.next = self.cache.resp_valid.val();
+        self.loader.mem_ax.next = self.cache.resp_ax.val();
+        self.loader.mem_ay.next = self.cache.resp_ay.val();
+        self.loader.mem_bx.next = self.cache.resp_bx.val();
+        self.loader.mem_by.next = self.cache.resp_by.val();
+        self.mem_req.next = self.cache.mem_req.val();
+        self.mem_addr.next = self.cache.mem_addr.val();
+        self.cache.mem_valid.next = self.mem_valid.val();
+        self.cache.mem_ax.next = self.mem_ax.val();
+        self.cache.mem_ay.next = self.mem_ay.val();
+        self.cache.mem_bx.next = self.mem_bx.val();
+        self.cache.mem_by.next = self.mem_by.val();
+
+        // Loader to screener.
+        self.screener.in_valid.next = self.loader.out_valid.val();
+        self.loader.out_ready.next = self.screener.in_ready.val();
+        self.screener.in_id.next = self.loader.out_id.val();
+        self.screener.in_ax.next = self.loader.out_ax.val();
+        self.screener.in_ay.next = self.loader.out_ay.val();
+        self.screener.in_bx.next = self.loader.out_bx.val();
+        self.screener.in_by.next = self.loader.out_by.val();
+
+        // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job).
+        self.head_retire.next = self.tags.read_data.val().get_bit(21);
+        self.head_first.next = self.tags.read_data.val().get_bits::<10>(11);
+        self.head_count.next = self.tags.read_data.val().get_bits::<11>(0);
+        self.unit.patch_id.next = self.screener.out_id.val();
+        self.unit.patch_ax.next = self.screener.out_ax.val();
+        self.unit.patch_ay.next = self.screener.out_ay.val();
+        self.unit.patch_bx.next = self.screener.out_bx.val();
+        self.unit.patch_by.next = self.screener.out_by.val();
+        self.unit.patch_wx.next = self.screener.out_wx.val();
+        self.unit.patch_wy.next = self.screener.out_wy.val();
+        self.unit.patch_sh.next = self.screener.out_sh.val();
+        self.unit.patch_first.next = self.head_first.val();
+        self.unit.patch_count.next = self.head_count.val();
+        self.unit.patch_retire.next = self.head_retire.val();
+        self.unit.patch_valid.next = false;
+        self.screener.out_ready.next = false;
+        self.pop.next = false;
+        if self.head_valid.q.val() {
+            if self.head_retire.val() {
+                self.unit.patch_valid.next = true;
+                self.pop.next = self.unit.patch_ready.val();
+            } else if self.screener.out_valid.val() {
+                if self.screener.out_pass.val() {
+                    self.unit.patch_valid.next = true;
+                    self.screener.out_ready.next = self.unit.patch_ready.val();
+                    self.pop.next = self.unit.patch_ready.val();
+                } else {
+                    self.screener.out_ready.next = true;
+                    self.pop.next = true;
+                }
+            }
+        }
+
+        // The tag FIFO's read side: the head is read into the RAM's register every cycle at the
+        // address it will have after this cycle's pop. It is valid there next cycle when an entry
+        // written before this cycle remains (the RAM reads before it writes).
+        self.tags.read_address.next = self.rd_ptr.q.val();
+        if self.pop.val() {
+            self.rd_ptr.d.next = self.rd_ptr.q.val() + self.one_ptr.val();
+            self.tags.read_address.next = self.rd_ptr.q.val() + self.one_ptr.val();
+        }
+        self.head_valid.d.next = self.tag_count.q.val() > self.zero7.val();
+        if self.pop.val() {
+            self.head_valid.d.next = self.tag_count.q.val() > self.one7.val();
+        }
+        if self.accept.val() & !self.pop.val() {
+            self.tag_count.d.next = self.tag_count.q.val() + self.one7.val();
+        }
+        if !self.accept.val() & self.pop.val() {
+            self.tag_count.d.next = self.tag_count.q.val() - self.one7.val();
+        }
+
+        // Status and counters.
+        self.busy.next = (self.tag_count.q.val() != self.zero7.val()) | self.unit.busy.val();
+        self.loads.next = self.loader.loads.val();
+        self.cache_hits.next = self.cache.hits.val();
+        self.cache_misses.next = self.cache.misses.val();
+        self.passed.next = self.screener.passed.val();
+        self.backward.next = self.screener.backward.val();
+        self.back_facing.next = self.screener.back_facing.val();
+        self.outside.next = self.screener.outside.val();
+        self.near.next = self.screener.near.val();
+        self.tests.next = self.unit.tests.val();
+    }
+}

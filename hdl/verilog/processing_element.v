@@ -1,0 +1,6847 @@
+// processing_element: exported from rust-hdl by `shelling export-verilog`; do not edit.
+
+
+module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  dir_we;
+    input wire  [9:0] dir_addr;
+    input wire  [17:0] dir_x;
+    input wire  [17:0] dir_y;
+    input wire  [16:0] origin_x;
+    input wire  [16:0] origin_y;
+    input wire  [17:0] normal_x;
+    input wire  [17:0] normal_y;
+    input wire  [17:0] first_x;
+    input wire  [17:0] first_y;
+    input wire  [17:0] last_x;
+    input wire  [17:0] last_y;
+    input wire  cmd_valid;
+    output reg  cmd_ready;
+    input wire  cmd_retire;
+    input wire  [15:0] cmd_id;
+    input wire  [9:0] cmd_first;
+    input wire  [10:0] cmd_count;
+    input wire  cfg_cache_enable;
+    input wire  [11:0] cfg_cache_mask;
+    output reg  mem_req;
+    output reg  [15:0] mem_addr;
+    input wire  mem_valid;
+    input wire  [16:0] mem_ax;
+    input wire  [16:0] mem_ay;
+    input wire  [16:0] mem_bx;
+    input wire  [16:0] mem_by;
+    input wire  res_re;
+    input wire  [9:0] res_addr;
+    output reg  res_hit;
+    output reg  [15:0] res_id;
+    output reg  [31:0] res_key;
+    output reg  busy;
+    output reg  [31:0] loads;
+    output reg  [31:0] cache_hits;
+    output reg  [31:0] cache_misses;
+    output reg  [31:0] passed;
+    output reg  [31:0] backward;
+    output reg  [31:0] back_facing;
+    output reg  [31:0] outside;
+    output reg  [31:0] near;
+    output reg  [31:0] tests;
+    
+    // Constant declarations
+    localparam  retire_flag = 22'h200000;
+    localparam  full = 7'b1000000;
+    localparam  zero7 = 7'b0;
+    localparam  one7 = 7'b1;
+    localparam  one_ptr = 6'b1;
+    
+    // Stub signals
+    reg  loader$clock;
+    reg  loader$id_valid;
+    wire  loader$id_ready;
+    reg  [15:0] loader$id;
+    wire  loader$mem_req;
+    wire  [15:0] loader$mem_addr;
+    reg  loader$mem_valid;
+    reg  [16:0] loader$mem_ax;
+    reg  [16:0] loader$mem_ay;
+    reg  [16:0] loader$mem_bx;
+    reg  [16:0] loader$mem_by;
+    wire  loader$out_valid;
+    reg  loader$out_ready;
+    wire  [15:0] loader$out_id;
+    wire  [16:0] loader$out_ax;
+    wire  [16:0] loader$out_ay;
+    wire  [16:0] loader$out_bx;
+    wire  [16:0] loader$out_by;
+    wire  [31:0] loader$loads;
+    reg  cache$clock;
+    reg  cache$cfg_enable;
+    reg  [11:0] cache$cfg_mask;
+    reg  cache$req;
+    reg  [15:0] cache$addr;
+    wire  cache$resp_valid;
+    wire  [16:0] cache$resp_ax;
+    wire  [16:0] cache$resp_ay;
+    wire  [16:0] cache$resp_bx;
+    wire  [16:0] cache$resp_by;
+    wire  cache$mem_req;
+    wire  [15:0] cache$mem_addr;
+    reg  cache$mem_valid;
+    reg  [16:0] cache$mem_ax;
+    reg  [16:0] cache$mem_ay;
+    reg  [16:0] cache$mem_bx;
+    reg  [16:0] cache$mem_by;
+    wire  [31:0] cache$hits;
+    wire  [31:0] cache$misses;
+    reg  screener$clock;
+    reg  [16:0] screener$origin_x;
+    reg  [16:0] screener$origin_y;
+    reg  [17:0] screener$normal_x;
+    reg  [17:0] screener$normal_y;
+    reg  [17:0] screener$first_x;
+    reg  [17:0] screener$first_y;
+    reg  [17:0] screener$last_x;
+    reg  [17:0] screener$last_y;
+    reg  screener$in_valid;
+    wire  screener$in_ready;
+    reg  [15:0] screener$in_id;
+    reg  [16:0] screener$in_ax;
+    reg  [16:0] screener$in_ay;
+    reg  [16:0] screener$in_bx;
+    reg  [16:0] screener$in_by;
+    wire  screener$out_valid;
+    reg  screener$out_ready;
+    wire  [15:0] screener$out_id;
+    wire  [17:0] screener$out_ax;
+    wire  [17:0] screener$out_ay;
+    wire  [17:0] screener$out_bx;
+    wire  [17:0] screener$out_by;
+    wire  [17:0] screener$out_wx;
+    wire  [17:0] screener$out_wy;
+    wire  [5:0] screener$out_sh;
+    wire  screener$out_pass;
+    wire  [31:0] screener$passed;
+    wire  [31:0] screener$backward;
+    wire  [31:0] screener$back_facing;
+    wire  [31:0] screener$outside;
+    wire  [31:0] screener$near;
+    reg  unit$clock;
+    reg  unit$dir_we;
+    reg  [9:0] unit$dir_addr;
+    reg  [17:0] unit$dir_x;
+    reg  [17:0] unit$dir_y;
+    reg  unit$patch_valid;
+    wire  unit$patch_ready;
+    reg  [17:0] unit$patch_ax;
+    reg  [17:0] unit$patch_ay;
+    reg  [17:0] unit$patch_bx;
+    reg  [17:0] unit$patch_by;
+    reg  [17:0] unit$patch_wx;
+    reg  [17:0] unit$patch_wy;
+    reg  [5:0] unit$patch_sh;
+    reg  [15:0] unit$patch_id;
+    reg  [9:0] unit$patch_first;
+    reg  [10:0] unit$patch_count;
+    reg  unit$patch_retire;
+    reg  unit$res_re;
+    reg  [9:0] unit$res_addr;
+    wire  unit$res_hit;
+    wire  [15:0] unit$res_id;
+    wire  [31:0] unit$res_key;
+    wire  unit$busy;
+    wire  [31:0] unit$tests;
+    reg  tags$clock;
+    reg  [5:0] tags$read_address;
+    wire  [21:0] tags$read_data;
+    reg  [5:0] tags$write_address;
+    reg  [21:0] tags$write_data;
+    reg  tags$write_enable;
+    reg  [5:0] wr_ptr$d;
+    wire  [5:0] wr_ptr$q;
+    reg  wr_ptr$clock;
+    reg  [5:0] rd_ptr$d;
+    wire  [5:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [6:0] tag_count$d;
+    wire  [6:0] tag_count$q;
+    reg  tag_count$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  accept;
+    reg  pop;
+    reg  head_retire;
+    reg  [9:0] head_first;
+    reg  [10:0] head_count;
+    reg  [21:0] new_tag;
+    
+    // Sub module instances
+    processing_element$loader loader(
+        .clock(loader$clock),
+        .id_valid(loader$id_valid),
+        .id_ready(loader$id_ready),
+        .id(loader$id),
+        .mem_req(loader$mem_req),
+        .mem_addr(loader$mem_addr),
+        .mem_valid(loader$mem_valid),
+        .mem_ax(loader$mem_ax),
+        .mem_ay(loader$mem_ay),
+        .mem_bx(loader$mem_bx),
+        .mem_by(loader$mem_by),
+        .out_valid(loader$out_valid),
+        .out_ready(loader$out_ready),
+        .out_id(loader$out_id),
+        .out_ax(loader$out_ax),
+        .out_ay(loader$out_ay),
+        .out_bx(loader$out_bx),
+        .out_by(loader$out_by),
+        .loads(loader$loads)
+    );
+    processing_element$cache cache(
+        .clock(cache$clock),
+        .cfg_enable(cache$cfg_enable),
+        .cfg_mask(cache$cfg_mask),
+        .req(cache$req),
+        .addr(cache$addr),
+        .resp_valid(cache$resp_valid),
+        .resp_ax(cache$resp_ax),
+        .resp_ay(cache$resp_ay),
+        .resp_bx(cache$resp_bx),
+        .resp_by(cache$resp_by),
+        .mem_req(cache$mem_req),
+        .mem_addr(cache$mem_addr),
+        .mem_valid(cache$mem_valid),
+        .mem_ax(cache$mem_ax),
+        .mem_ay(cache$mem_ay),
+        .mem_bx(cache$mem_bx),
+        .mem_by(cache$mem_by),
+        .hits(cache$hits),
+        .misses(cache$misses)
+    );
+    processing_element$screener screener(
+        .clock(screener$clock),
+        .origin_x(screener$origin_x),
+        .origin_y(screener$origin_y),
+        .normal_x(screener$normal_x),
+        .normal_y(screener$normal_y),
+        .first_x(screener$first_x),
+        .first_y(screener$first_y),
+        .last_x(screener$last_x),
+        .last_y(screener$last_y),
+        .in_valid(screener$in_valid),
+        .in_ready(screener$in_ready),
+        .in_id(screener$in_id),
+        .in_ax(screener$in_ax),
+        .in_ay(screener$in_ay),
+        .in_bx(screener$in_bx),
+        .in_by(screener$in_by),
+        .out_valid(screener$out_valid),
+        .out_ready(screener$out_ready),
+        .out_id(screener$out_id),
+        .out_ax(screener$out_ax),
+        .out_ay(screener$out_ay),
+        .out_bx(screener$out_bx),
+        .out_by(screener$out_by),
+        .out_wx(screener$out_wx),
+        .out_wy(screener$out_wy),
+        .out_sh(screener$out_sh),
+        .out_pass(screener$out_pass),
+        .passed(screener$passed),
+        .backward(screener$backward),
+        .back_facing(screener$back_facing),
+        .outside(screener$outside),
+        .near(screener$near)
+    );
+    processing_element$unit unit(
+        .clock(unit$clock),
+        .dir_we(unit$dir_we),
+        .dir_addr(unit$dir_addr),
+        .dir_x(unit$dir_x),
+        .dir_y(unit$dir_y),
+        .patch_valid(unit$patch_valid),
+        .patch_ready(unit$patch_ready),
+        .patch_ax(unit$patch_ax),
+        .patch_ay(unit$patch_ay),
+        .patch_bx(unit$patch_bx),
+        .patch_by(unit$patch_by),
+        .patch_wx(unit$patch_wx),
+        .patch_wy(unit$patch_wy),
+        .patch_sh(unit$patch_sh),
+        .patch_id(unit$patch_id),
+        .patch_first(unit$patch_first),
+        .patch_count(unit$patch_count),
+        .patch_retire(unit$patch_retire),
+        .res_re(unit$res_re),
+        .res_addr(unit$res_addr),
+        .res_hit(unit$res_hit),
+        .res_id(unit$res_id),
+        .res_key(unit$res_key),
+        .busy(unit$busy),
+        .tests(unit$tests)
+    );
+    processing_element$tags tags(
+        .clock(tags$clock),
+        .read_address(tags$read_address),
+        .read_data(tags$read_data),
+        .write_address(tags$write_address),
+        .write_data(tags$write_data),
+        .write_enable(tags$write_enable)
+    );
+    processing_element$wr_ptr wr_ptr(
+        .d(wr_ptr$d),
+        .q(wr_ptr$q),
+        .clock(wr_ptr$clock)
+    );
+    processing_element$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$tag_count tag_count(
+        .d(tag_count$d),
+        .q(tag_count$q),
+        .clock(tag_count$clock)
+    );
+    processing_element$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        wr_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        tag_count$clock = clock;
+        head_valid$clock = clock;
+        wr_ptr$d = wr_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        tag_count$d = tag_count$q;
+        head_valid$d = head_valid$q;
+        loader$clock = clock;
+        cache$clock = clock;
+        screener$clock = clock;
+        unit$clock = clock;
+        tags$clock = clock;
+        unit$dir_we = dir_we;
+        unit$dir_addr = dir_addr;
+        unit$dir_x = dir_x;
+        unit$dir_y = dir_y;
+        unit$res_re = res_re;
+        unit$res_addr = res_addr;
+        res_hit = unit$res_hit;
+        res_id = unit$res_id;
+        res_key = unit$res_key;
+        screener$origin_x = origin_x;
+        screener$origin_y = origin_y;
+        screener$normal_x = normal_x;
+        screener$normal_y = normal_y;
+        screener$first_x = first_x;
+        screener$first_y = first_y;
+        screener$last_x = last_x;
+        screener$last_y = last_y;
+        cmd_ready = (tag_count$q != full) & loader$id_ready;
+        accept = cmd_valid & (tag_count$q != full) & loader$id_ready;
+        loader$id_valid = accept & ~cmd_retire;
+        loader$id = cmd_id;
+        new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
+        if (cmd_retire) begin
+            new_tag = new_tag | retire_flag;
+        end
+        tags$write_address = wr_ptr$q;
+        tags$write_data = new_tag;
+        tags$write_enable = accept;
+        if (accept) begin
+            wr_ptr$d = wr_ptr$q + one_ptr;
+        end
+        cache$cfg_enable = cfg_cache_enable;
+        cache$cfg_mask = cfg_cache_mask;
+        cache$req = loader$mem_req;
+        cache$addr = loader$mem_addr;
+        loader$mem_valid = cache$resp_valid;
+        loader$mem_ax = cache$resp_ax;
+        loader$mem_ay = cache$resp_ay;
+        loader$mem_bx = cache$resp_bx;
+        loader$mem_by = cache$resp_by;
+        mem_req = cache$mem_req;
+        mem_addr = cache$mem_addr;
+        cache$mem_valid = mem_valid;
+        cache$mem_ax = mem_ax;
+        cache$mem_ay = mem_ay;
+        cache$mem_bx = mem_bx;
+        cache$mem_by = mem_by;
+        screener$in_valid = loader$out_valid;
+        loader$out_ready = screener$in_ready;
+        screener$in_id = loader$out_id;
+        screener$in_ax = loader$out_ax;
+        screener$in_ay = loader$out_ay;
+        screener$in_bx = loader$out_bx;
+        screener$in_by = loader$out_by;
+        head_retire = tags$read_data[32'h15];
+        head_first = tags$read_data[(32'hb)+:(10)];
+        head_count = tags$read_data[(32'h0)+:(11)];
+        unit$patch_id = screener$out_id;
+        unit$patch_ax = screener$out_ax;
+        unit$patch_ay = screener$out_ay;
+        unit$patch_bx = screener$out_bx;
+        unit$patch_by = screener$out_by;
+        unit$patch_wx = screener$out_wx;
+        unit$patch_wy = screener$out_wy;
+        unit$patch_sh = screener$out_sh;
+        unit$patch_first = head_first;
+        unit$patch_count = head_count;
+        unit$patch_retire = head_retire;
+        unit$patch_valid = 1'b0;
+        screener$out_ready = 1'b0;
+        pop = 1'b0;
+        if (head_valid$q) begin
+            if (head_retire) begin
+                unit$patch_valid = 1'b1;
+                pop = unit$patch_ready;
+            end
+            else if (screener$out_valid) begin
+                if (screener$out_pass) begin
+                    unit$patch_valid = 1'b1;
+                    screener$out_ready = unit$patch_ready;
+                    pop = unit$patch_ready;
+                end
+                else begin
+                    screener$out_ready = 1'b1;
+                    pop = 1'b1;
+                end
+            end
+        end
+        tags$read_address = rd_ptr$q;
+        if (pop) begin
+            rd_ptr$d = rd_ptr$q + one_ptr;
+            tags$read_address = rd_ptr$q + one_ptr;
+        end
+        head_valid$d = tag_count$q > zero7;
+        if (pop) begin
+            head_valid$d = tag_count$q > one7;
+        end
+        if (accept & ~pop) begin
+            tag_count$d = tag_count$q + one7;
+        end
+        if (~accept & pop) begin
+            tag_count$d = tag_count$q - one7;
+        end
+        busy = (tag_count$q != zero7) | unit$busy;
+        loads = loader$loads;
+        cache_hits = cache$hits;
+        cache_misses = cache$misses;
+        passed = screener$passed;
+        backward = screener$backward;
+        back_facing = screener$back_facing;
+        outside = screener$outside;
+        near = screener$near;
+        tests = unit$tests;
+    end
+    
+endmodule // processing_element
+
+
+module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay,resp_bx,resp_by,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,hits,misses);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  cfg_enable;
+    input wire  [11:0] cfg_mask;
+    input wire  req;
+    input wire  [15:0] addr;
+    output reg  resp_valid;
+    output reg  [16:0] resp_ax;
+    output reg  [16:0] resp_ay;
+    output reg  [16:0] resp_bx;
+    output reg  [16:0] resp_by;
+    output reg  mem_req;
+    output reg  [15:0] mem_addr;
+    input wire  mem_valid;
+    input wire  [16:0] mem_ax;
+    input wire  [16:0] mem_ay;
+    input wire  [16:0] mem_bx;
+    input wire  [16:0] mem_by;
+    output reg  [31:0] hits;
+    output reg  [31:0] misses;
+    
+    // Constant declarations
+    localparam  valid_flag = 17'b10000000000000000;
+    localparam  zero5 = 5'b0;
+    localparam  one5 = 5'b1;
+    localparam  one4 = 4'h1;
+    localparam  one32 = 32'h1;
+    
+    // Stub signals
+    reg  q_lane$clock;
+    reg  [3:0] q_lane$read_address;
+    wire  [15:0] q_lane$read_data;
+    reg  [3:0] q_lane$write_address;
+    reg  [15:0] q_lane$write_data;
+    reg  q_lane$write_enable;
+    reg  [3:0] wr_ptr$d;
+    wire  [3:0] wr_ptr$q;
+    reg  wr_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [4:0] count$d;
+    wire  [4:0] count$q;
+    reg  count$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    reg  b_valid$d;
+    wire  b_valid$q;
+    reg  b_valid$clock;
+    reg  [15:0] b_id$d;
+    wire  [15:0] b_id$q;
+    reg  b_id$clock;
+    reg  [16:0] b_key$d;
+    wire  [16:0] b_key$q;
+    reg  b_key$clock;
+    reg  [11:0] b_line$d;
+    wire  [11:0] b_line$q;
+    reg  b_line$clock;
+    reg  w_valid$d;
+    wire  w_valid$q;
+    reg  w_valid$clock;
+    reg  mreq$d;
+    wire  mreq$q;
+    reg  mreq$clock;
+    reg  rv$d;
+    wire  rv$q;
+    reg  rv$clock;
+    reg  [16:0] rax$d;
+    wire  [16:0] rax$q;
+    reg  rax$clock;
+    reg  [16:0] ray$d;
+    wire  [16:0] ray$q;
+    reg  ray$clock;
+    reg  [16:0] rbx$d;
+    wire  [16:0] rbx$q;
+    reg  rbx$clock;
+    reg  [16:0] rby$d;
+    wire  [16:0] rby$q;
+    reg  rby$clock;
+    reg  [31:0] hit_count$d;
+    wire  [31:0] hit_count$q;
+    reg  hit_count$clock;
+    reg  [31:0] miss_count$d;
+    wire  [31:0] miss_count$q;
+    reg  miss_count$clock;
+    reg  tag$clock;
+    reg  [11:0] tag$read_address;
+    wire  [16:0] tag$read_data;
+    reg  [11:0] tag$write_address;
+    reg  [16:0] tag$write_data;
+    reg  tag$write_enable;
+    reg  lane_ax$clock;
+    reg  [11:0] lane_ax$read_address;
+    wire  [16:0] lane_ax$read_data;
+    reg  [11:0] lane_ax$write_address;
+    reg  [16:0] lane_ax$write_data;
+    reg  lane_ax$write_enable;
+    reg  lane_ay$clock;
+    reg  [11:0] lane_ay$read_address;
+    wire  [16:0] lane_ay$read_data;
+    reg  [11:0] lane_ay$write_address;
+    reg  [16:0] lane_ay$write_data;
+    reg  lane_ay$write_enable;
+    reg  lane_bx$clock;
+    reg  [11:0] lane_bx$read_address;
+    wire  [16:0] lane_bx$read_data;
+    reg  [11:0] lane_bx$write_address;
+    reg  [16:0] lane_bx$write_data;
+    reg  lane_bx$write_enable;
+    reg  lane_by$clock;
+    reg  [11:0] lane_by$read_address;
+    wire  [16:0] lane_by$read_data;
+    reg  [11:0] lane_by$write_address;
+    reg  [16:0] lane_by$write_data;
+    reg  lane_by$write_enable;
+    
+    // Local signals
+    reg  push;
+    reg  tag_match;
+    reg  hit;
+    reg  miss;
+    reg  fill;
+    reg  advance;
+    reg  [3:0] wr_inc;
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_addr;
+    reg  [4:0] count_inc;
+    reg  [4:0] count_dec;
+    reg  [4:0] count_left;
+    reg  [11:0] head_low;
+    reg  [11:0] head_line;
+    reg  [16:0] head_key;
+    reg  [31:0] hit_inc;
+    reg  [31:0] miss_inc;
+    
+    // Sub module instances
+    processing_element$cache$q_lane q_lane(
+        .clock(q_lane$clock),
+        .read_address(q_lane$read_address),
+        .read_data(q_lane$read_data),
+        .write_address(q_lane$write_address),
+        .write_data(q_lane$write_data),
+        .write_enable(q_lane$write_enable)
+    );
+    processing_element$cache$wr_ptr wr_ptr(
+        .d(wr_ptr$d),
+        .q(wr_ptr$q),
+        .clock(wr_ptr$clock)
+    );
+    processing_element$cache$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$cache$count count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    processing_element$cache$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    processing_element$cache$b_valid b_valid(
+        .d(b_valid$d),
+        .q(b_valid$q),
+        .clock(b_valid$clock)
+    );
+    processing_element$cache$b_id b_id(
+        .d(b_id$d),
+        .q(b_id$q),
+        .clock(b_id$clock)
+    );
+    processing_element$cache$b_key b_key(
+        .d(b_key$d),
+        .q(b_key$q),
+        .clock(b_key$clock)
+    );
+    processing_element$cache$b_line b_line(
+        .d(b_line$d),
+        .q(b_line$q),
+        .clock(b_line$clock)
+    );
+    processing_element$cache$w_valid w_valid(
+        .d(w_valid$d),
+        .q(w_valid$q),
+        .clock(w_valid$clock)
+    );
+    processing_element$cache$mreq mreq(
+        .d(mreq$d),
+        .q(mreq$q),
+        .clock(mreq$clock)
+    );
+    processing_element$cache$rv rv(
+        .d(rv$d),
+        .q(rv$q),
+        .clock(rv$clock)
+    );
+    processing_element$cache$rax rax(
+        .d(rax$d),
+        .q(rax$q),
+        .clock(rax$clock)
+    );
+    processing_element$cache$ray ray(
+        .d(ray$d),
+        .q(ray$q),
+        .clock(ray$clock)
+    );
+    processing_element$cache$rbx rbx(
+        .d(rbx$d),
+        .q(rbx$q),
+        .clock(rbx$clock)
+    );
+    processing_element$cache$rby rby(
+        .d(rby$d),
+        .q(rby$q),
+        .clock(rby$clock)
+    );
+    processing_element$cache$hit_count hit_count(
+        .d(hit_count$d),
+        .q(hit_count$q),
+        .clock(hit_count$clock)
+    );
+    processing_element$cache$miss_count miss_count(
+        .d(miss_count$d),
+        .q(miss_count$q),
+        .clock(miss_count$clock)
+    );
+    processing_element$cache$tag tag(
+        .clock(tag$clock),
+        .read_address(tag$read_address),
+        .read_data(tag$read_data),
+        .write_address(tag$write_address),
+        .write_data(tag$write_data),
+        .write_enable(tag$write_enable)
+    );
+    processing_element$cache$lane_ax lane_ax(
+        .clock(lane_ax$clock),
+        .read_address(lane_ax$read_address),
+        .read_data(lane_ax$read_data),
+        .write_address(lane_ax$write_address),
+        .write_data(lane_ax$write_data),
+        .write_enable(lane_ax$write_enable)
+    );
+    processing_element$cache$lane_ay lane_ay(
+        .clock(lane_ay$clock),
+        .read_address(lane_ay$read_address),
+        .read_data(lane_ay$read_data),
+        .write_address(lane_ay$write_address),
+        .write_data(lane_ay$write_data),
+        .write_enable(lane_ay$write_enable)
+    );
+    processing_element$cache$lane_bx lane_bx(
+        .clock(lane_bx$clock),
+        .read_address(lane_bx$read_address),
+        .read_data(lane_bx$read_data),
+        .write_address(lane_bx$write_address),
+        .write_data(lane_bx$write_data),
+        .write_enable(lane_bx$write_enable)
+    );
+    processing_element$cache$lane_by lane_by(
+        .clock(lane_by$clock),
+        .read_address(lane_by$read_address),
+        .read_data(lane_by$read_data),
+        .write_address(lane_by$write_address),
+        .write_data(lane_by$write_data),
+        .write_enable(lane_by$write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        wr_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        count$clock = clock;
+        head_valid$clock = clock;
+        b_valid$clock = clock;
+        b_id$clock = clock;
+        b_key$clock = clock;
+        b_line$clock = clock;
+        w_valid$clock = clock;
+        mreq$clock = clock;
+        rv$clock = clock;
+        rax$clock = clock;
+        ray$clock = clock;
+        rbx$clock = clock;
+        rby$clock = clock;
+        hit_count$clock = clock;
+        miss_count$clock = clock;
+        wr_ptr$d = wr_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        count$d = count$q;
+        head_valid$d = head_valid$q;
+        b_valid$d = b_valid$q;
+        b_id$d = b_id$q;
+        b_key$d = b_key$q;
+        b_line$d = b_line$q;
+        w_valid$d = w_valid$q;
+        mreq$d = mreq$q;
+        rv$d = rv$q;
+        rax$d = rax$q;
+        ray$d = ray$q;
+        rbx$d = rbx$q;
+        rby$d = rby$q;
+        hit_count$d = hit_count$q;
+        miss_count$d = miss_count$q;
+        q_lane$clock = clock;
+        tag$clock = clock;
+        lane_ax$clock = clock;
+        lane_ay$clock = clock;
+        lane_bx$clock = clock;
+        lane_by$clock = clock;
+        wr_inc = wr_ptr$q + one4;
+        rd_inc = rd_ptr$q + one4;
+        count_inc = count$q + one5;
+        count_dec = count$q - one5;
+        hit_inc = hit_count$q + one32;
+        miss_inc = miss_count$q + one32;
+        tag_match = tag$read_data == b_key$q;
+        hit = b_valid$q & tag_match;
+        miss = b_valid$q & ~tag_match;
+        fill = w_valid$q & mem_valid;
+        advance = head_valid$q & ~w_valid$q & ~miss;
+        push = cfg_enable & req;
+        q_lane$write_address = wr_ptr$q;
+        q_lane$write_data = addr;
+        q_lane$write_enable = push;
+        if (push) begin
+            wr_ptr$d = wr_inc;
+        end
+        rd_addr = rd_ptr$q;
+        count_left = count$q;
+        if (advance) begin
+            rd_addr = rd_inc;
+            rd_ptr$d = rd_inc;
+            count_left = count_dec;
+        end
+        q_lane$read_address = rd_addr;
+        head_valid$d = count_left != zero5;
+        if (push & ~advance) begin
+            count$d = count_inc;
+        end
+        if (~push & advance) begin
+            count$d = count_dec;
+        end
+        head_low = ((q_lane$read_data) & 12'hfff);
+        head_line = head_low & cfg_mask;
+        head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
+        tag$read_address = head_line;
+        lane_ax$read_address = head_line;
+        lane_ay$read_address = head_line;
+        lane_bx$read_address = head_line;
+        lane_by$read_address = head_line;
+        b_valid$d = advance;
+        if (advance) begin
+            b_id$d = q_lane$read_data;
+            b_key$d = head_key;
+            b_line$d = head_line;
+        end
+        mreq$d = miss;
+        w_valid$d = (w_valid$q & ~mem_valid) | miss;
+        tag$write_address = b_line$q;
+        lane_ax$write_address = b_line$q;
+        lane_ay$write_address = b_line$q;
+        lane_bx$write_address = b_line$q;
+        lane_by$write_address = b_line$q;
+        tag$write_data = b_key$q;
+        lane_ax$write_data = mem_ax;
+        lane_ay$write_data = mem_ay;
+        lane_bx$write_data = mem_bx;
+        lane_by$write_data = mem_by;
+        tag$write_enable = fill;
+        lane_ax$write_enable = fill;
+        lane_ay$write_enable = fill;
+        lane_bx$write_enable = fill;
+        lane_by$write_enable = fill;
+        rv$d = hit | fill;
+        if (hit) begin
+            rax$d = lane_ax$read_data;
+            ray$d = lane_ay$read_data;
+            rbx$d = lane_bx$read_data;
+            rby$d = lane_by$read_data;
+        end
+        if (fill) begin
+            rax$d = mem_ax;
+            ray$d = mem_ay;
+            rbx$d = mem_bx;
+            rby$d = mem_by;
+        end
+        if (hit) begin
+            hit_count$d = hit_inc;
+        end
+        if (miss) begin
+            miss_count$d = miss_inc;
+        end
+        hits = hit_count$q;
+        misses = miss_count$q;
+        mem_req = req;
+        mem_addr = addr;
+        resp_valid = mem_valid;
+        resp_ax = mem_ax;
+        resp_ay = mem_ay;
+        resp_bx = mem_bx;
+        resp_by = mem_by;
+        if (cfg_enable) begin
+            mem_req = mreq$q;
+            mem_addr = b_id$q;
+            resp_valid = rv$q;
+            resp_ax = rax$q;
+            resp_ay = ray$q;
+            resp_bx = rbx$q;
+            resp_by = rby$q;
+        end
+    end
+    
+endmodule // processing_element$cache
+
+
+module processing_element$cache$b_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$b_id
+
+
+module processing_element$cache$b_key(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$b_key
+
+
+module processing_element$cache$b_line(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$b_line
+
+
+module processing_element$cache$b_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$b_valid
+
+
+module processing_element$cache$count(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$count
+
+
+module processing_element$cache$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$head_valid
+
+
+module processing_element$cache$hit_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$hit_count
+
+
+module processing_element$cache$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:4095];
+    integer i;
+    initial begin
+       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$cache$lane_ax
+
+
+module processing_element$cache$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:4095];
+    integer i;
+    initial begin
+       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$cache$lane_ay
+
+
+module processing_element$cache$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:4095];
+    integer i;
+    initial begin
+       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$cache$lane_bx
+
+
+module processing_element$cache$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:4095];
+    integer i;
+    initial begin
+       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$cache$lane_by
+
+
+module processing_element$cache$miss_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$miss_count
+
+
+module processing_element$cache$mreq(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mreq
+
+
+module processing_element$cache$q_lane(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [15:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
+       read_data = 16'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$cache$q_lane
+
+
+module processing_element$cache$rax(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$rax
+
+
+module processing_element$cache$ray(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ray
+
+
+module processing_element$cache$rbx(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$rbx
+
+
+module processing_element$cache$rby(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$rby
+
+
+module processing_element$cache$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$rd_ptr
+
+
+module processing_element$cache$rv(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$rv
+
+
+module processing_element$cache$tag(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [11:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:4095];
+    integer i;
+    initial begin
+       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$cache$tag
+
+
+module processing_element$cache$w_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$w_valid
+
+
+module processing_element$cache$wr_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$wr_ptr
+
+
+module processing_element$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$head_valid
+
+
+module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  id_valid;
+    output reg  id_ready;
+    input wire  [15:0] id;
+    output reg  mem_req;
+    output reg  [15:0] mem_addr;
+    input wire  mem_valid;
+    input wire  [16:0] mem_ax;
+    input wire  [16:0] mem_ay;
+    input wire  [16:0] mem_bx;
+    input wire  [16:0] mem_by;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_id;
+    output reg  [16:0] out_ax;
+    output reg  [16:0] out_ay;
+    output reg  [16:0] out_bx;
+    output reg  [16:0] out_by;
+    output reg  [31:0] loads;
+    
+    // Constant declarations
+    localparam  depth5 = 5'b10000;
+    localparam  zero5 = 5'b0;
+    localparam  one5 = 5'b1;
+    localparam  one4 = 4'h1;
+    localparam  one32 = 32'h1;
+    
+    // Stub signals
+    reg  [3:0] req_ptr$d;
+    wire  [3:0] req_ptr$q;
+    reg  req_ptr$clock;
+    reg  [3:0] resp_ptr$d;
+    wire  [3:0] resp_ptr$q;
+    reg  resp_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [4:0] reserved$d;
+    wire  [4:0] reserved$q;
+    reg  reserved$clock;
+    reg  [4:0] done$d;
+    wire  [4:0] done$q;
+    reg  done$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    reg  req_valid$d;
+    wire  req_valid$q;
+    reg  req_valid$clock;
+    reg  [15:0] req_addr$d;
+    wire  [15:0] req_addr$q;
+    reg  req_addr$clock;
+    reg  [31:0] load_count$d;
+    wire  [31:0] load_count$q;
+    reg  load_count$clock;
+    reg  lane_id$clock;
+    reg  [3:0] lane_id$read_address;
+    wire  [15:0] lane_id$read_data;
+    reg  [3:0] lane_id$write_address;
+    reg  [15:0] lane_id$write_data;
+    reg  lane_id$write_enable;
+    reg  lane_ax$clock;
+    reg  [3:0] lane_ax$read_address;
+    wire  [16:0] lane_ax$read_data;
+    reg  [3:0] lane_ax$write_address;
+    reg  [16:0] lane_ax$write_data;
+    reg  lane_ax$write_enable;
+    reg  lane_ay$clock;
+    reg  [3:0] lane_ay$read_address;
+    wire  [16:0] lane_ay$read_data;
+    reg  [3:0] lane_ay$write_address;
+    reg  [16:0] lane_ay$write_data;
+    reg  lane_ay$write_enable;
+    reg  lane_bx$clock;
+    reg  [3:0] lane_bx$read_address;
+    wire  [16:0] lane_bx$read_data;
+    reg  [3:0] lane_bx$write_address;
+    reg  [16:0] lane_bx$write_data;
+    reg  lane_bx$write_enable;
+    reg  lane_by$clock;
+    reg  [3:0] lane_by$read_address;
+    wire  [16:0] lane_by$read_data;
+    reg  [3:0] lane_by$write_address;
+    reg  [16:0] lane_by$write_data;
+    reg  lane_by$write_enable;
+    
+    // Local signals
+    reg  room;
+    reg  accept;
+    reg  pop;
+    reg  [3:0] req_inc;
+    reg  [3:0] resp_inc;
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_addr;
+    reg  [4:0] reserved_inc;
+    reg  [4:0] reserved_dec;
+    reg  [4:0] done_inc;
+    reg  [4:0] done_dec;
+    reg  [4:0] done_left;
+    reg  [31:0] load_inc;
+    
+    // Sub module instances
+    processing_element$loader$req_ptr req_ptr(
+        .d(req_ptr$d),
+        .q(req_ptr$q),
+        .clock(req_ptr$clock)
+    );
+    processing_element$loader$resp_ptr resp_ptr(
+        .d(resp_ptr$d),
+        .q(resp_ptr$q),
+        .clock(resp_ptr$clock)
+    );
+    processing_element$loader$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$loader$reserved reserved(
+        .d(reserved$d),
+        .q(reserved$q),
+        .clock(reserved$clock)
+    );
+    processing_element$loader$done done(
+        .d(done$d),
+        .q(done$q),
+        .clock(done$clock)
+    );
+    processing_element$loader$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    processing_element$loader$req_valid req_valid(
+        .d(req_valid$d),
+        .q(req_valid$q),
+        .clock(req_valid$clock)
+    );
+    processing_element$loader$req_addr req_addr(
+        .d(req_addr$d),
+        .q(req_addr$q),
+        .clock(req_addr$clock)
+    );
+    processing_element$loader$load_count load_count(
+        .d(load_count$d),
+        .q(load_count$q),
+        .clock(load_count$clock)
+    );
+    processing_element$loader$lane_id lane_id(
+        .clock(lane_id$clock),
+        .read_address(lane_id$read_address),
+        .read_data(lane_id$read_data),
+        .write_address(lane_id$write_address),
+        .write_data(lane_id$write_data),
+        .write_enable(lane_id$write_enable)
+    );
+    processing_element$loader$lane_ax lane_ax(
+        .clock(lane_ax$clock),
+        .read_address(lane_ax$read_address),
+        .read_data(lane_ax$read_data),
+        .write_address(lane_ax$write_address),
+        .write_data(lane_ax$write_data),
+        .write_enable(lane_ax$write_enable)
+    );
+    processing_element$loader$lane_ay lane_ay(
+        .clock(lane_ay$clock),
+        .read_address(lane_ay$read_address),
+        .read_data(lane_ay$read_data),
+        .write_address(lane_ay$write_address),
+        .write_data(lane_ay$write_data),
+        .write_enable(lane_ay$write_enable)
+    );
+    processing_element$loader$lane_bx lane_bx(
+        .clock(lane_bx$clock),
+        .read_address(lane_bx$read_address),
+        .read_data(lane_bx$read_data),
+        .write_address(lane_bx$write_address),
+        .write_data(lane_bx$write_data),
+        .write_enable(lane_bx$write_enable)
+    );
+    processing_element$loader$lane_by lane_by(
+        .clock(lane_by$clock),
+        .read_address(lane_by$read_address),
+        .read_data(lane_by$read_data),
+        .write_address(lane_by$write_address),
+        .write_data(lane_by$write_data),
+        .write_enable(lane_by$write_enable)
+    );
+    
+    // Update code
+    always @(*) begin
+        req_ptr$clock = clock;
+        resp_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        reserved$clock = clock;
+        done$clock = clock;
+        head_valid$clock = clock;
+        req_valid$clock = clock;
+        req_addr$clock = clock;
+        load_count$clock = clock;
+        req_ptr$d = req_ptr$q;
+        resp_ptr$d = resp_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        reserved$d = reserved$q;
+        done$d = done$q;
+        head_valid$d = head_valid$q;
+        req_valid$d = req_valid$q;
+        req_addr$d = req_addr$q;
+        load_count$d = load_count$q;
+        lane_id$clock = clock;
+        lane_ax$clock = clock;
+        lane_ay$clock = clock;
+        lane_bx$clock = clock;
+        lane_by$clock = clock;
+        room = reserved$q != depth5;
+        id_ready = room;
+        accept = id_valid & room;
+        pop = head_valid$q & out_ready;
+        req_inc = req_ptr$q + one4;
+        resp_inc = resp_ptr$q + one4;
+        rd_inc = rd_ptr$q + one4;
+        reserved_inc = reserved$q + one5;
+        reserved_dec = reserved$q - one5;
+        done_inc = done$q + one5;
+        done_dec = done$q - one5;
+        load_inc = load_count$q + one32;
+        lane_id$write_address = req_ptr$q;
+        lane_id$write_data = id;
+        lane_id$write_enable = accept;
+        req_valid$d = accept;
+        if (accept) begin
+            req_ptr$d = req_inc;
+            req_addr$d = id;
+        end
+        mem_req = req_valid$q;
+        mem_addr = req_addr$q;
+        lane_ax$write_address = resp_ptr$q;
+        lane_ay$write_address = resp_ptr$q;
+        lane_bx$write_address = resp_ptr$q;
+        lane_by$write_address = resp_ptr$q;
+        lane_ax$write_data = mem_ax;
+        lane_ay$write_data = mem_ay;
+        lane_bx$write_data = mem_bx;
+        lane_by$write_data = mem_by;
+        lane_ax$write_enable = mem_valid;
+        lane_ay$write_enable = mem_valid;
+        lane_bx$write_enable = mem_valid;
+        lane_by$write_enable = mem_valid;
+        if (mem_valid) begin
+            resp_ptr$d = resp_inc;
+            load_count$d = load_inc;
+        end
+        loads = load_count$q;
+        rd_addr = rd_ptr$q;
+        done_left = done$q;
+        if (pop) begin
+            rd_addr = rd_inc;
+            rd_ptr$d = rd_inc;
+            done_left = done_dec;
+        end
+        lane_id$read_address = rd_addr;
+        lane_ax$read_address = rd_addr;
+        lane_ay$read_address = rd_addr;
+        lane_bx$read_address = rd_addr;
+        lane_by$read_address = rd_addr;
+        head_valid$d = done_left != zero5;
+        out_valid = head_valid$q;
+        out_id = lane_id$read_data;
+        out_ax = lane_ax$read_data;
+        out_ay = lane_ay$read_data;
+        out_bx = lane_bx$read_data;
+        out_by = lane_by$read_data;
+        if (accept & ~pop) begin
+            reserved$d = reserved_inc;
+        end
+        if (~accept & pop) begin
+            reserved$d = reserved_dec;
+        end
+        if (mem_valid & ~pop) begin
+            done$d = done_inc;
+        end
+        if (~mem_valid & pop) begin
+            done$d = done_dec;
+        end
+    end
+    
+endmodule // processing_element$loader
+
+
+module processing_element$loader$done(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$done
+
+
+module processing_element$loader$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$head_valid
+
+
+module processing_element$loader$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$loader$lane_ax
+
+
+module processing_element$loader$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$loader$lane_ay
+
+
+module processing_element$loader$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$loader$lane_bx
+
+
+module processing_element$loader$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$loader$lane_by
+
+
+module processing_element$loader$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] read_address;
+    output reg  [15:0] read_data;
+    input wire  [3:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem [0:15];
+    integer i;
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
+       read_data = 16'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$loader$lane_id
+
+
+module processing_element$loader$load_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$load_count
+
+
+module processing_element$loader$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$rd_ptr
+
+
+module processing_element$loader$req_addr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$req_addr
+
+
+module processing_element$loader$req_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$req_ptr
+
+
+module processing_element$loader$req_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$req_valid
+
+
+module processing_element$loader$reserved(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$reserved
+
+
+module processing_element$loader$resp_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$resp_ptr
+
+
+module processing_element$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$rd_ptr
+
+
+module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [16:0] origin_x;
+    input wire  [16:0] origin_y;
+    input wire  [17:0] normal_x;
+    input wire  [17:0] normal_y;
+    input wire  [17:0] first_x;
+    input wire  [17:0] first_y;
+    input wire  [17:0] last_x;
+    input wire  [17:0] last_y;
+    input wire  in_valid;
+    output reg  in_ready;
+    input wire  [15:0] in_id;
+    input wire  [16:0] in_ax;
+    input wire  [16:0] in_ay;
+    input wire  [16:0] in_bx;
+    input wire  [16:0] in_by;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_id;
+    output reg  [17:0] out_ax;
+    output reg  [17:0] out_ay;
+    output reg  [17:0] out_bx;
+    output reg  [17:0] out_by;
+    output reg  [17:0] out_wx;
+    output reg  [17:0] out_wy;
+    output reg  [5:0] out_sh;
+    output reg  out_pass;
+    output reg  [31:0] passed;
+    output reg  [31:0] backward;
+    output reg  [31:0] back_facing;
+    output reg  [31:0] outside;
+    output reg  [31:0] near;
+    
+    // Constant declarations
+    localparam  pass_flag = 7'b1000000;
+    localparam  depth6 = 6'b100000;
+    localparam  zero6 = 6'b0;
+    localparam  one6 = 6'b1;
+    localparam  one5 = 5'b1;
+    localparam  zero18 = 18'b0;
+    localparam  zero32 = 32'h0;
+    localparam  one32 = 32'h1;
+    localparam  msb32 = 32'h80000000;
+    localparam  thr_f = 32'h7fffff00;
+    localparam  thr_l = 32'h80000100;
+    localparam  zero16 = 16'h0;
+    localparam  zero8 = 8'h0;
+    localparam  zero4 = 4'h0;
+    localparam  zero2 = 2'b0;
+    localparam  zero3 = 3'b0;
+    localparam  sh16 = 32'h10;
+    localparam  sh8 = 32'h8;
+    localparam  sh4 = 32'h4;
+    localparam  sh2 = 32'h2;
+    localparam  sh1 = 32'h1;
+    localparam  sh3 = 32'h3;
+    localparam  sh1_3 = 3'b1;
+    localparam  sh2_3 = 3'b10;
+    localparam  c16_6 = 6'b10000;
+    localparam  c8_6 = 6'b1000;
+    localparam  c4_6 = 6'b100;
+    localparam  c2_6 = 6'b10;
+    localparam  c1_6 = 6'b1;
+    localparam  sh_lo = 6'b111101;
+    localparam  sh_m1 = 6'b111111;
+    localparam  sh_m2 = 6'b111110;
+    localparam  tag_pass = 3'b1;
+    localparam  tag_negx = 3'b10;
+    localparam  tag_negy = 3'b100;
+    
+    // Stub signals
+    reg  [5:0] used$d;
+    wire  [5:0] used$q;
+    reg  used$clock;
+    reg  [5:0] done$d;
+    wire  [5:0] done$q;
+    reg  done$clock;
+    reg  [4:0] res_ptr$d;
+    wire  [4:0] res_ptr$q;
+    reg  res_ptr$clock;
+    reg  [4:0] fill_ptr$d;
+    wire  [4:0] fill_ptr$q;
+    reg  fill_ptr$clock;
+    reg  [4:0] rd_ptr$d;
+    wire  [4:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    reg  lane_id$clock;
+    reg  [4:0] lane_id$read_address;
+    wire  [15:0] lane_id$read_data;
+    reg  [4:0] lane_id$write_address;
+    reg  [15:0] lane_id$write_data;
+    reg  lane_id$write_enable;
+    reg  lane_ax$clock;
+    reg  [4:0] lane_ax$read_address;
+    wire  [17:0] lane_ax$read_data;
+    reg  [4:0] lane_ax$write_address;
+    reg  [17:0] lane_ax$write_data;
+    reg  lane_ax$write_enable;
+    reg  lane_ay$clock;
+    reg  [4:0] lane_ay$read_address;
+    wire  [17:0] lane_ay$read_data;
+    reg  [4:0] lane_ay$write_address;
+    reg  [17:0] lane_ay$write_data;
+    reg  lane_ay$write_enable;
+    reg  lane_bx$clock;
+    reg  [4:0] lane_bx$read_address;
+    wire  [17:0] lane_bx$read_data;
+    reg  [4:0] lane_bx$write_address;
+    reg  [17:0] lane_bx$write_data;
+    reg  lane_bx$write_enable;
+    reg  lane_by$clock;
+    reg  [4:0] lane_by$read_address;
+    wire  [17:0] lane_by$read_data;
+    reg  [4:0] lane_by$write_address;
+    reg  [17:0] lane_by$write_data;
+    reg  lane_by$write_enable;
+    reg  lane_sh$clock;
+    reg  [4:0] lane_sh$read_address;
+    wire  [6:0] lane_sh$read_data;
+    reg  [4:0] lane_sh$write_address;
+    reg  [6:0] lane_sh$write_data;
+    reg  lane_sh$write_enable;
+    reg  lane_wx$clock;
+    reg  [4:0] lane_wx$read_address;
+    wire  [17:0] lane_wx$read_data;
+    reg  [4:0] lane_wx$write_address;
+    reg  [17:0] lane_wx$write_data;
+    reg  lane_wx$write_enable;
+    reg  lane_wy$clock;
+    reg  [4:0] lane_wy$read_address;
+    wire  [17:0] lane_wy$read_data;
+    reg  [4:0] lane_wy$write_address;
+    reg  [17:0] lane_wy$write_data;
+    reg  lane_wy$write_enable;
+    reg  v1$d;
+    wire  v1$q;
+    reg  v1$clock;
+    reg  [15:0] id1$d;
+    wire  [15:0] id1$q;
+    reg  id1$clock;
+    reg  [17:0] ax1$d;
+    wire  [17:0] ax1$q;
+    reg  ax1$clock;
+    reg  [17:0] ay1$d;
+    wire  [17:0] ay1$q;
+    reg  ay1$clock;
+    reg  [17:0] bx1$d;
+    wire  [17:0] bx1$q;
+    reg  bx1$clock;
+    reg  [17:0] by1$d;
+    wire  [17:0] by1$q;
+    reg  by1$clock;
+    reg  m_nax$clock;
+    reg  [17:0] m_nax$a;
+    reg  [17:0] m_nax$b;
+    wire  [31:0] m_nax$p;
+    reg  m_nay$clock;
+    reg  [17:0] m_nay$a;
+    reg  [17:0] m_nay$b;
+    wire  [31:0] m_nay$p;
+    reg  m_nbx$clock;
+    reg  [17:0] m_nbx$a;
+    reg  [17:0] m_nbx$b;
+    wire  [31:0] m_nbx$p;
+    reg  m_nby$clock;
+    reg  [17:0] m_nby$a;
+    reg  [17:0] m_nby$b;
+    wire  [31:0] m_nby$p;
+    reg  m_aby$clock;
+    reg  [17:0] m_aby$a;
+    reg  [17:0] m_aby$b;
+    wire  [31:0] m_aby$p;
+    reg  m_abx$clock;
+    reg  [17:0] m_abx$a;
+    reg  [17:0] m_abx$b;
+    wire  [31:0] m_abx$p;
+    reg  m_fby$clock;
+    reg  [17:0] m_fby$a;
+    reg  [17:0] m_fby$b;
+    wire  [31:0] m_fby$p;
+    reg  m_fbx$clock;
+    reg  [17:0] m_fbx$a;
+    reg  [17:0] m_fbx$b;
+    wire  [31:0] m_fbx$p;
+    reg  m_lay$clock;
+    reg  [17:0] m_lay$a;
+    reg  [17:0] m_lay$b;
+    wire  [31:0] m_lay$p;
+    reg  m_lax$clock;
+    reg  [17:0] m_lax$a;
+    reg  [17:0] m_lax$b;
+    wire  [31:0] m_lax$p;
+    reg  v2$d;
+    wire  v2$q;
+    reg  v2$clock;
+    reg  [15:0] id2$d;
+    wire  [15:0] id2$q;
+    reg  id2$clock;
+    reg  [17:0] ax2$d;
+    wire  [17:0] ax2$q;
+    reg  ax2$clock;
+    reg  [17:0] ay2$d;
+    wire  [17:0] ay2$q;
+    reg  ay2$clock;
+    reg  [17:0] bx2$d;
+    wire  [17:0] bx2$q;
+    reg  bx2$clock;
+    reg  [17:0] by2$d;
+    wire  [17:0] by2$q;
+    reg  by2$clock;
+    reg  [17:0] absnx2$d;
+    wire  [17:0] absnx2$q;
+    reg  absnx2$clock;
+    reg  [17:0] absny2$d;
+    wire  [17:0] absny2$q;
+    reg  absny2$clock;
+    reg  negx2$d;
+    wire  negx2$q;
+    reg  negx2$clock;
+    reg  negy2$d;
+    wire  negy2$q;
+    reg  negy2$clock;
+    reg  [17:0] nmax2$d;
+    wire  [17:0] nmax2$q;
+    reg  nmax2$clock;
+    reg  v3$d;
+    wire  v3$q;
+    reg  v3$clock;
+    reg  [15:0] id3$d;
+    wire  [15:0] id3$q;
+    reg  id3$clock;
+    reg  [17:0] ax3$d;
+    wire  [17:0] ax3$q;
+    reg  ax3$clock;
+    reg  [17:0] ay3$d;
+    wire  [17:0] ay3$q;
+    reg  ay3$clock;
+    reg  [17:0] bx3$d;
+    wire  [17:0] bx3$q;
+    reg  bx3$clock;
+    reg  [17:0] by3$d;
+    wire  [17:0] by3$q;
+    reg  by3$clock;
+    reg  [17:0] absnx3$d;
+    wire  [17:0] absnx3$q;
+    reg  absnx3$clock;
+    reg  [17:0] absny3$d;
+    wire  [17:0] absny3$q;
+    reg  absny3$clock;
+    reg  negx3$d;
+    wire  negx3$q;
+    reg  negx3$clock;
+    reg  negy3$d;
+    wire  negy3$q;
+    reg  negy3$clock;
+    reg  [5:0] clz_n3$d;
+    wire  [5:0] clz_n3$q;
+    reg  clz_n3$clock;
+    reg  [31:0] norm_n3$d;
+    wire  [31:0] norm_n3$q;
+    reg  norm_n3$clock;
+    reg  v4$d;
+    wire  v4$q;
+    reg  v4$clock;
+    reg  [15:0] id4$d;
+    wire  [15:0] id4$q;
+    reg  id4$clock;
+    reg  [17:0] ax4$d;
+    wire  [17:0] ax4$q;
+    reg  ax4$clock;
+    reg  [17:0] ay4$d;
+    wire  [17:0] ay4$q;
+    reg  ay4$clock;
+    reg  [17:0] bx4$d;
+    wire  [17:0] bx4$q;
+    reg  bx4$clock;
+    reg  [17:0] by4$d;
+    wire  [17:0] by4$q;
+    reg  by4$clock;
+    reg  [17:0] absnx4$d;
+    wire  [17:0] absnx4$q;
+    reg  absnx4$clock;
+    reg  [17:0] absny4$d;
+    wire  [17:0] absny4$q;
+    reg  absny4$clock;
+    reg  negx4$d;
+    wire  negx4$q;
+    reg  negx4$clock;
+    reg  negy4$d;
+    wire  negy4$q;
+    reg  negy4$clock;
+    reg  [5:0] clz_n4$d;
+    wire  [5:0] clz_n4$q;
+    reg  clz_n4$clock;
+    reg  [31:0] norm_n4$d;
+    wire  [31:0] norm_n4$q;
+    reg  norm_n4$clock;
+    reg  [31:0] k4$d;
+    wire  [31:0] k4$q;
+    reg  k4$clock;
+    reg  [5:0] clz_e4$d;
+    wire  [5:0] clz_e4$q;
+    reg  clz_e4$clock;
+    reg  [31:0] norm_e4$d;
+    wire  [31:0] norm_e4$q;
+    reg  norm_e4$clock;
+    reg  backward4$d;
+    wire  backward4$q;
+    reg  backward4$clock;
+    reg  back_facing4$d;
+    wire  back_facing4$q;
+    reg  back_facing4$clock;
+    reg  outside4$d;
+    wire  outside4$q;
+    reg  outside4$clock;
+    reg  divider$clock;
+    reg  [31:0] divider$rx;
+    reg  [31:0] divider$ry;
+    reg  [2:0] divider$fx;
+    reg  [2:0] divider$fy;
+    reg  [31:0] divider$k;
+    reg  [2:0] divider$tag;
+    wire  [16:0] divider$qx;
+    wire  [16:0] divider$qy;
+    wire  [2:0] divider$tag_out;
+    reg  [31:0] c_passed$d;
+    wire  [31:0] c_passed$q;
+    reg  c_passed$clock;
+    reg  [31:0] c_backward$d;
+    wire  [31:0] c_backward$q;
+    reg  c_backward$clock;
+    reg  [31:0] c_back_facing$d;
+    wire  [31:0] c_back_facing$q;
+    reg  c_back_facing$clock;
+    reg  [31:0] c_outside$d;
+    wire  [31:0] c_outside$q;
+    reg  c_outside$clock;
+    reg  [31:0] c_near$d;
+    wire  [31:0] c_near$q;
+    reg  c_near$clock;
+    
+    // Local signals
+    reg  [6:0] sh_pass;
+    reg  room;
+    reg  take;
+    reg  pop;
+    reg  reserve;
+    reg  fill;
+    reg  [5:0] used_inc;
+    reg  [5:0] used_dec;
+    reg  [5:0] done_inc;
+    reg  [5:0] done_dec;
+    reg  [5:0] done_left;
+    reg  [4:0] res_inc;
+    reg  [4:0] fill_inc;
+    reg  [4:0] rd_inc;
+    reg  [4:0] rd_addr;
+    reg  [17:0] ext_ox;
+    reg  [17:0] ext_oy;
+    reg  [17:0] ext_ax;
+    reg  [17:0] ext_ay;
+    reg  [17:0] ext_bx;
+    reg  [17:0] ext_by;
+    reg  [17:0] nx;
+    reg  [17:0] ny;
+    reg  [17:0] nx_neg;
+    reg  [17:0] ny_neg;
+    reg  [17:0] absnx;
+    reg  [17:0] absny;
+    reg  [17:0] nmax;
+    reg  [31:0] zn0;
+    reg  [31:0] zn1;
+    reg  [31:0] zn2;
+    reg  [31:0] zn3;
+    reg  [31:0] zn4;
+    reg  [31:0] zn5;
+    reg  [5:0] cn16_n;
+    reg  [5:0] cn8_n;
+    reg  [5:0] cn4_n;
+    reg  [5:0] cn2_n;
+    reg  [5:0] cn1_n;
+    reg  [15:0] top16_n;
+    reg  [7:0] top8_n;
+    reg  [3:0] top4_n;
+    reg  [1:0] top2_n;
+    reg  [31:0] ha;
+    reg  [31:0] hb;
+    reg  [31:0] kk;
+    reg  [31:0] side_f;
+    reg  [31:0] side_l;
+    reg  [31:0] side_f_x;
+    reg  [31:0] side_l_x;
+    reg  ha_pos;
+    reg  hb_pos;
+    reg  is_backward;
+    reg  is_back_facing;
+    reg  is_outside;
+    reg  [31:0] k2;
+    reg  [31:0] ze0;
+    reg  [31:0] ze1;
+    reg  [31:0] ze2;
+    reg  [31:0] ze3;
+    reg  [31:0] ze4;
+    reg  [31:0] ze5;
+    reg  [5:0] ce16_e;
+    reg  [5:0] ce8_e;
+    reg  [5:0] ce4_e;
+    reg  [5:0] ce2_e;
+    reg  [5:0] ce1_e;
+    reg  [15:0] top16_e;
+    reg  [7:0] top8_e;
+    reg  [3:0] top4_e;
+    reg  [1:0] top2_e;
+    reg  [5:0] s0;
+    reg  [5:0] s0_m1;
+    reg  [5:0] sh;
+    reg  [4:0] sh5;
+    reg  is_near;
+    reg  is_pass;
+    reg  [31:0] absnx32;
+    reg  [31:0] absny32;
+    reg  [2:0] low_nx;
+    reg  [2:0] low_ny;
+    reg  [2:0] tag_p;
+    reg  [2:0] tag_x;
+    reg  [2:0] tag_y;
+    reg  [17:0] qx18;
+    reg  [17:0] qy18;
+    reg  [17:0] wx_neg;
+    reg  [17:0] wy_neg;
+    
+    // Sub module instances
+    processing_element$screener$used used(
+        .d(used$d),
+        .q(used$q),
+        .clock(used$clock)
+    );
+    processing_element$screener$done done(
+        .d(done$d),
+        .q(done$q),
+        .clock(done$clock)
+    );
+    processing_element$screener$res_ptr res_ptr(
+        .d(res_ptr$d),
+        .q(res_ptr$q),
+        .clock(res_ptr$clock)
+    );
+    processing_element$screener$fill_ptr fill_ptr(
+        .d(fill_ptr$d),
+        .q(fill_ptr$q),
+        .clock(fill_ptr$clock)
+    );
+    processing_element$screener$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$screener$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    processing_element$screener$lane_id lane_id(
+        .clock(lane_id$clock),
+        .read_address(lane_id$read_address),
+        .read_data(lane_id$read_data),
+        .write_address(lane_id$write_address),
+        .write_data(lane_id$write_data),
+        .write_enable(lane_id$write_enable)
+    );
+    processing_element$screener$lane_ax lane_ax(
+        .clock(lane_ax$clock),
+        .read_address(lane_ax$read_address),
+        .read_data(lane_ax$read_data),
+        .write_address(lane_ax$write_address),
+        .write_data(lane_ax$write_data),
+        .write_enable(lane_ax$write_enable)
+    );
+    processing_element$screener$lane_ay lane_ay(
+        .clock(lane_ay$clock),
+        .read_address(lane_ay$read_address),
+        .read_data(lane_ay$read_data),
+        .write_address(lane_ay$write_address),
+        .write_data(lane_ay$write_data),
+        .write_enable(lane_ay$write_enable)
+    );
+    processing_element$screener$lane_bx lane_bx(
+        .clock(lane_bx$clock),
+        .read_address(lane_bx$read_address),
+        .read_data(lane_bx$read_data),
+        .write_address(lane_bx$write_address),
+        .write_data(lane_bx$write_data),
+        .write_enable(lane_bx$write_enable)
+    );
+    processing_element$screener$lane_by lane_by(
+        .clock(lane_by$clock),
+        .read_address(lane_by$read_address),
+        .read_data(lane_by$read_data),
+        .write_address(lane_by$write_address),
+        .write_data(lane_by$write_data),
+        .write_enable(lane_by$write_enable)
+    );
+    processing_element$screener$lane_sh lane_sh(
+        .clock(lane_sh$clock),
+        .read_address(lane_sh$read_address),
+        .read_data(lane_sh$read_data),
+        .write_address(lane_sh$write_address),
+        .write_data(lane_sh$write_data),
+        .write_enable(lane_sh$write_enable)
+    );
+    processing_element$screener$lane_wx lane_wx(
+        .clock(lane_wx$clock),
+        .read_address(lane_wx$read_address),
+        .read_data(lane_wx$read_data),
+        .write_address(lane_wx$write_address),
+        .write_data(lane_wx$write_data),
+        .write_enable(lane_wx$write_enable)
+    );
+    processing_element$screener$lane_wy lane_wy(
+        .clock(lane_wy$clock),
+        .read_address(lane_wy$read_address),
+        .read_data(lane_wy$read_data),
+        .write_address(lane_wy$write_address),
+        .write_data(lane_wy$write_data),
+        .write_enable(lane_wy$write_enable)
+    );
+    processing_element$screener$v1 v1(
+        .d(v1$d),
+        .q(v1$q),
+        .clock(v1$clock)
+    );
+    processing_element$screener$id1 id1(
+        .d(id1$d),
+        .q(id1$q),
+        .clock(id1$clock)
+    );
+    processing_element$screener$ax1 ax1(
+        .d(ax1$d),
+        .q(ax1$q),
+        .clock(ax1$clock)
+    );
+    processing_element$screener$ay1 ay1(
+        .d(ay1$d),
+        .q(ay1$q),
+        .clock(ay1$clock)
+    );
+    processing_element$screener$bx1 bx1(
+        .d(bx1$d),
+        .q(bx1$q),
+        .clock(bx1$clock)
+    );
+    processing_element$screener$by1 by1(
+        .d(by1$d),
+        .q(by1$q),
+        .clock(by1$clock)
+    );
+    processing_element$screener$m_nax m_nax(
+        .clock(m_nax$clock),
+        .a(m_nax$a),
+        .b(m_nax$b),
+        .p(m_nax$p)
+    );
+    processing_element$screener$m_nay m_nay(
+        .clock(m_nay$clock),
+        .a(m_nay$a),
+        .b(m_nay$b),
+        .p(m_nay$p)
+    );
+    processing_element$screener$m_nbx m_nbx(
+        .clock(m_nbx$clock),
+        .a(m_nbx$a),
+        .b(m_nbx$b),
+        .p(m_nbx$p)
+    );
+    processing_element$screener$m_nby m_nby(
+        .clock(m_nby$clock),
+        .a(m_nby$a),
+        .b(m_nby$b),
+        .p(m_nby$p)
+    );
+    processing_element$screener$m_aby m_aby(
+        .clock(m_aby$clock),
+        .a(m_aby$a),
+        .b(m_aby$b),
+        .p(m_aby$p)
+    );
+    processing_element$screener$m_abx m_abx(
+        .clock(m_abx$clock),
+        .a(m_abx$a),
+        .b(m_abx$b),
+        .p(m_abx$p)
+    );
+    processing_element$screener$m_fby m_fby(
+        .clock(m_fby$clock),
+        .a(m_fby$a),
+        .b(m_fby$b),
+        .p(m_fby$p)
+    );
+    processing_element$screener$m_fbx m_fbx(
+        .clock(m_fbx$clock),
+        .a(m_fbx$a),
+        .b(m_fbx$b),
+        .p(m_fbx$p)
+    );
+    processing_element$screener$m_lay m_lay(
+        .clock(m_lay$clock),
+        .a(m_lay$a),
+        .b(m_lay$b),
+        .p(m_lay$p)
+    );
+    processing_element$screener$m_lax m_lax(
+        .clock(m_lax$clock),
+        .a(m_lax$a),
+        .b(m_lax$b),
+        .p(m_lax$p)
+    );
+    processing_element$screener$v2 v2(
+        .d(v2$d),
+        .q(v2$q),
+        .clock(v2$clock)
+    );
+    processing_element$screener$id2 id2(
+        .d(id2$d),
+        .q(id2$q),
+        .clock(id2$clock)
+    );
+    processing_element$screener$ax2 ax2(
+        .d(ax2$d),
+        .q(ax2$q),
+        .clock(ax2$clock)
+    );
+    processing_element$screener$ay2 ay2(
+        .d(ay2$d),
+        .q(ay2$q),
+        .clock(ay2$clock)
+    );
+    processing_element$screener$bx2 bx2(
+        .d(bx2$d),
+        .q(bx2$q),
+        .clock(bx2$clock)
+    );
+    processing_element$screener$by2 by2(
+        .d(by2$d),
+        .q(by2$q),
+        .clock(by2$clock)
+    );
+    processing_element$screener$absnx2 absnx2(
+        .d(absnx2$d),
+        .q(absnx2$q),
+        .clock(absnx2$clock)
+    );
+    processing_element$screener$absny2 absny2(
+        .d(absny2$d),
+        .q(absny2$q),
+        .clock(absny2$clock)
+    );
+    processing_element$screener$negx2 negx2(
+        .d(negx2$d),
+        .q(negx2$q),
+        .clock(negx2$clock)
+    );
+    processing_element$screener$negy2 negy2(
+        .d(negy2$d),
+        .q(negy2$q),
+        .clock(negy2$clock)
+    );
+    processing_element$screener$nmax2 nmax2(
+        .d(nmax2$d),
+        .q(nmax2$q),
+        .clock(nmax2$clock)
+    );
+    processing_element$screener$v3 v3(
+        .d(v3$d),
+        .q(v3$q),
+        .clock(v3$clock)
+    );
+    processing_element$screener$id3 id3(
+        .d(id3$d),
+        .q(id3$q),
+        .clock(id3$clock)
+    );
+    processing_element$screener$ax3 ax3(
+        .d(ax3$d),
+        .q(ax3$q),
+        .clock(ax3$clock)
+    );
+    processing_element$screener$ay3 ay3(
+        .d(ay3$d),
+        .q(ay3$q),
+        .clock(ay3$clock)
+    );
+    processing_element$screener$bx3 bx3(
+        .d(bx3$d),
+        .q(bx3$q),
+        .clock(bx3$clock)
+    );
+    processing_element$screener$by3 by3(
+        .d(by3$d),
+        .q(by3$q),
+        .clock(by3$clock)
+    );
+    processing_element$screener$absnx3 absnx3(
+        .d(absnx3$d),
+        .q(absnx3$q),
+        .clock(absnx3$clock)
+    );
+    processing_element$screener$absny3 absny3(
+        .d(absny3$d),
+        .q(absny3$q),
+        .clock(absny3$clock)
+    );
+    processing_element$screener$negx3 negx3(
+        .d(negx3$d),
+        .q(negx3$q),
+        .clock(negx3$clock)
+    );
+    processing_element$screener$negy3 negy3(
+        .d(negy3$d),
+        .q(negy3$q),
+        .clock(negy3$clock)
+    );
+    processing_element$screener$clz_n3 clz_n3(
+        .d(clz_n3$d),
+        .q(clz_n3$q),
+        .clock(clz_n3$clock)
+    );
+    processing_element$screener$norm_n3 norm_n3(
+        .d(norm_n3$d),
+        .q(norm_n3$q),
+        .clock(norm_n3$clock)
+    );
+    processing_element$screener$v4 v4(
+        .d(v4$d),
+        .q(v4$q),
+        .clock(v4$clock)
+    );
+    processing_element$screener$id4 id4(
+        .d(id4$d),
+        .q(id4$q),
+        .clock(id4$clock)
+    );
+    processing_element$screener$ax4 ax4(
+        .d(ax4$d),
+        .q(ax4$q),
+        .clock(ax4$clock)
+    );
+    processing_element$screener$ay4 ay4(
+        .d(ay4$d),
+        .q(ay4$q),
+        .clock(ay4$clock)
+    );
+    processing_element$screener$bx4 bx4(
+        .d(bx4$d),
+        .q(bx4$q),
+        .clock(bx4$clock)
+    );
+    processing_element$screener$by4 by4(
+        .d(by4$d),
+        .q(by4$q),
+        .clock(by4$clock)
+    );
+    processing_element$screener$absnx4 absnx4(
+        .d(absnx4$d),
+        .q(absnx4$q),
+        .clock(absnx4$clock)
+    );
+    processing_element$screener$absny4 absny4(
+        .d(absny4$d),
+        .q(absny4$q),
+        .clock(absny4$clock)
+    );
+    processing_element$screener$negx4 negx4(
+        .d(negx4$d),
+        .q(negx4$q),
+        .clock(negx4$clock)
+    );
+    processing_element$screener$negy4 negy4(
+        .d(negy4$d),
+        .q(negy4$q),
+        .clock(negy4$clock)
+    );
+    processing_element$screener$clz_n4 clz_n4(
+        .d(clz_n4$d),
+        .q(clz_n4$q),
+        .clock(clz_n4$clock)
+    );
+    processing_element$screener$norm_n4 norm_n4(
+        .d(norm_n4$d),
+        .q(norm_n4$q),
+        .clock(norm_n4$clock)
+    );
+    processing_element$screener$k4 k4(
+        .d(k4$d),
+        .q(k4$q),
+        .clock(k4$clock)
+    );
+    processing_element$screener$clz_e4 clz_e4(
+        .d(clz_e4$d),
+        .q(clz_e4$q),
+        .clock(clz_e4$clock)
+    );
+    processing_element$screener$norm_e4 norm_e4(
+        .d(norm_e4$d),
+        .q(norm_e4$q),
+        .clock(norm_e4$clock)
+    );
+    processing_element$screener$backward4 backward4(
+        .d(backward4$d),
+        .q(backward4$q),
+        .clock(backward4$clock)
+    );
+    processing_element$screener$back_facing4 back_facing4(
+        .d(back_facing4$d),
+        .q(back_facing4$q),
+        .clock(back_facing4$clock)
+    );
+    processing_element$screener$outside4 outside4(
+        .d(outside4$d),
+        .q(outside4$q),
+        .clock(outside4$clock)
+    );
+    processing_element$screener$divider divider(
+        .clock(divider$clock),
+        .rx(divider$rx),
+        .ry(divider$ry),
+        .fx(divider$fx),
+        .fy(divider$fy),
+        .k(divider$k),
+        .tag(divider$tag),
+        .qx(divider$qx),
+        .qy(divider$qy),
+        .tag_out(divider$tag_out)
+    );
+    processing_element$screener$c_passed c_passed(
+        .d(c_passed$d),
+        .q(c_passed$q),
+        .clock(c_passed$clock)
+    );
+    processing_element$screener$c_backward c_backward(
+        .d(c_backward$d),
+        .q(c_backward$q),
+        .clock(c_backward$clock)
+    );
+    processing_element$screener$c_back_facing c_back_facing(
+        .d(c_back_facing$d),
+        .q(c_back_facing$q),
+        .clock(c_back_facing$clock)
+    );
+    processing_element$screener$c_outside c_outside(
+        .d(c_outside$d),
+        .q(c_outside$q),
+        .clock(c_outside$clock)
+    );
+    processing_element$screener$c_near c_near(
+        .d(c_near$d),
+        .q(c_near$q),
+        .clock(c_near$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        used$clock = clock;
+        done$clock = clock;
+        res_ptr$clock = clock;
+        fill_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        head_valid$clock = clock;
+        v1$clock = clock;
+        id1$clock = clock;
+        ax1$clock = clock;
+        ay1$clock = clock;
+        bx1$clock = clock;
+        by1$clock = clock;
+        v2$clock = clock;
+        id2$clock = clock;
+        ax2$clock = clock;
+        ay2$clock = clock;
+        bx2$clock = clock;
+        by2$clock = clock;
+        absnx2$clock = clock;
+        absny2$clock = clock;
+        negx2$clock = clock;
+        negy2$clock = clock;
+        nmax2$clock = clock;
+        v3$clock = clock;
+        id3$clock = clock;
+        ax3$clock = clock;
+        ay3$clock = clock;
+        bx3$clock = clock;
+        by3$clock = clock;
+        absnx3$clock = clock;
+        absny3$clock = clock;
+        negx3$clock = clock;
+        negy3$clock = clock;
+        clz_n3$clock = clock;
+        norm_n3$clock = clock;
+        v4$clock = clock;
+        id4$clock = clock;
+        ax4$clock = clock;
+        ay4$clock = clock;
+        bx4$clock = clock;
+        by4$clock = clock;
+        absnx4$clock = clock;
+        absny4$clock = clock;
+        negx4$clock = clock;
+        negy4$clock = clock;
+        clz_n4$clock = clock;
+        norm_n4$clock = clock;
+        k4$clock = clock;
+        clz_e4$clock = clock;
+        norm_e4$clock = clock;
+        backward4$clock = clock;
+        back_facing4$clock = clock;
+        outside4$clock = clock;
+        c_passed$clock = clock;
+        c_backward$clock = clock;
+        c_back_facing$clock = clock;
+        c_outside$clock = clock;
+        c_near$clock = clock;
+        used$d = used$q;
+        done$d = done$q;
+        res_ptr$d = res_ptr$q;
+        fill_ptr$d = fill_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        head_valid$d = head_valid$q;
+        v1$d = v1$q;
+        id1$d = id1$q;
+        ax1$d = ax1$q;
+        ay1$d = ay1$q;
+        bx1$d = bx1$q;
+        by1$d = by1$q;
+        v2$d = v2$q;
+        id2$d = id2$q;
+        ax2$d = ax2$q;
+        ay2$d = ay2$q;
+        bx2$d = bx2$q;
+        by2$d = by2$q;
+        absnx2$d = absnx2$q;
+        absny2$d = absny2$q;
+        negx2$d = negx2$q;
+        negy2$d = negy2$q;
+        nmax2$d = nmax2$q;
+        v3$d = v3$q;
+        id3$d = id3$q;
+        ax3$d = ax3$q;
+        ay3$d = ay3$q;
+        bx3$d = bx3$q;
+        by3$d = by3$q;
+        absnx3$d = absnx3$q;
+        absny3$d = absny3$q;
+        negx3$d = negx3$q;
+        negy3$d = negy3$q;
+        clz_n3$d = clz_n3$q;
+        norm_n3$d = norm_n3$q;
+        v4$d = v4$q;
+        id4$d = id4$q;
+        ax4$d = ax4$q;
+        ay4$d = ay4$q;
+        bx4$d = bx4$q;
+        by4$d = by4$q;
+        absnx4$d = absnx4$q;
+        absny4$d = absny4$q;
+        negx4$d = negx4$q;
+        negy4$d = negy4$q;
+        clz_n4$d = clz_n4$q;
+        norm_n4$d = norm_n4$q;
+        k4$d = k4$q;
+        clz_e4$d = clz_e4$q;
+        norm_e4$d = norm_e4$q;
+        backward4$d = backward4$q;
+        back_facing4$d = back_facing4$q;
+        outside4$d = outside4$q;
+        c_passed$d = c_passed$q;
+        c_backward$d = c_backward$q;
+        c_back_facing$d = c_back_facing$q;
+        c_outside$d = c_outside$q;
+        c_near$d = c_near$q;
+        m_nax$clock = clock;
+        m_nay$clock = clock;
+        m_nbx$clock = clock;
+        m_nby$clock = clock;
+        m_aby$clock = clock;
+        m_abx$clock = clock;
+        m_fby$clock = clock;
+        m_fbx$clock = clock;
+        m_lay$clock = clock;
+        m_lax$clock = clock;
+        divider$clock = clock;
+        lane_id$clock = clock;
+        lane_ax$clock = clock;
+        lane_ay$clock = clock;
+        lane_bx$clock = clock;
+        lane_by$clock = clock;
+        lane_sh$clock = clock;
+        lane_wx$clock = clock;
+        lane_wy$clock = clock;
+        room = used$q != depth6;
+        in_ready = room;
+        take = in_valid & room;
+        ext_ox = ((origin_x) & 18'h3ffff);
+        ext_oy = ((origin_y) & 18'h3ffff);
+        ext_ax = ((in_ax) & 18'h3ffff);
+        ext_ay = ((in_ay) & 18'h3ffff);
+        ext_bx = ((in_bx) & 18'h3ffff);
+        ext_by = ((in_by) & 18'h3ffff);
+        v1$d = take;
+        id1$d = in_id;
+        ax1$d = ext_ax - ext_ox;
+        ay1$d = ext_ay - ext_oy;
+        bx1$d = ext_bx - ext_ox;
+        by1$d = ext_by - ext_oy;
+        m_nax$a = normal_x;
+        m_nax$b = ax1$q;
+        m_nay$a = normal_y;
+        m_nay$b = ay1$q;
+        m_nbx$a = normal_x;
+        m_nbx$b = bx1$q;
+        m_nby$a = normal_y;
+        m_nby$b = by1$q;
+        m_aby$a = ax1$q;
+        m_aby$b = by1$q;
+        m_abx$a = ay1$q;
+        m_abx$b = bx1$q;
+        m_fby$a = first_x;
+        m_fby$b = by1$q;
+        m_fbx$a = first_y;
+        m_fbx$b = bx1$q;
+        m_lay$a = last_x;
+        m_lay$b = ay1$q;
+        m_lax$a = last_y;
+        m_lax$b = ax1$q;
+        nx = by1$q - ay1$q;
+        ny = ax1$q - bx1$q;
+        nx_neg = zero18 - nx;
+        ny_neg = zero18 - ny;
+        absnx = nx;
+        if (nx[32'h11]) begin
+            absnx = nx_neg;
+        end
+        absny = ny;
+        if (ny[32'h11]) begin
+            absny = ny_neg;
+        end
+        nmax = absny;
+        if (absnx > absny) begin
+            nmax = absnx;
+        end
+        v2$d = v1$q;
+        id2$d = id1$q;
+        ax2$d = ax1$q;
+        ay2$d = ay1$q;
+        bx2$d = bx1$q;
+        by2$d = by1$q;
+        absnx2$d = absnx;
+        absny2$d = absny;
+        negx2$d = nx[32'h11];
+        negy2$d = ny[32'h11];
+        nmax2$d = nmax;
+        zn0 = ((nmax2$q) & 32'hffffffff);
+        top16_n = zn0[(32'h10)+:(16)];
+        zn1 = zn0;
+        cn16_n = zero6;
+        if (top16_n == zero16) begin
+            zn1 = zn0 << sh16;
+            cn16_n = c16_6;
+        end
+        top8_n = zn1[(32'h18)+:(8)];
+        zn2 = zn1;
+        cn8_n = zero6;
+        if (top8_n == zero8) begin
+            zn2 = zn1 << sh8;
+            cn8_n = c8_6;
+        end
+        top4_n = zn2[(32'h1c)+:(4)];
+        zn3 = zn2;
+        cn4_n = zero6;
+        if (top4_n == zero4) begin
+            zn3 = zn2 << sh4;
+            cn4_n = c4_6;
+        end
+        top2_n = zn3[(32'h1e)+:(2)];
+        zn4 = zn3;
+        cn2_n = zero6;
+        if (top2_n == zero2) begin
+            zn4 = zn3 << sh2;
+            cn2_n = c2_6;
+        end
+        zn5 = zn4;
+        cn1_n = zero6;
+        if (~zn4[32'h1f]) begin
+            zn5 = zn4 << sh1;
+            cn1_n = c1_6;
+        end
+        v3$d = v2$q;
+        id3$d = id2$q;
+        ax3$d = ax2$q;
+        ay3$d = ay2$q;
+        bx3$d = bx2$q;
+        by3$d = by2$q;
+        absnx3$d = absnx2$q;
+        absny3$d = absny2$q;
+        negx3$d = negx2$q;
+        negy3$d = negy2$q;
+        clz_n3$d = cn16_n | cn8_n | cn4_n | cn2_n | cn1_n;
+        norm_n3$d = zn5;
+        ha = m_nax$p + m_nay$p;
+        hb = m_nbx$p + m_nby$p;
+        kk = m_aby$p - m_abx$p;
+        side_f = m_fby$p - m_fbx$p;
+        side_l = m_lay$p - m_lax$p;
+        side_f_x = side_f ^ msb32;
+        side_l_x = side_l ^ msb32;
+        ha_pos = ~ha[32'h1f] & (ha != zero32);
+        hb_pos = ~hb[32'h1f] & (hb != zero32);
+        is_backward = ~ha_pos & ~hb_pos;
+        is_back_facing = ~is_backward & (kk[32'h1f] | (kk == zero32));
+        is_outside = ~is_backward & ~is_back_facing & ((hb_pos & (side_f_x < thr_f)) | (ha_pos & (side_l_x > thr_l)));
+        k2 = kk << sh1;
+        ze0 = k2;
+        top16_e = ze0[(32'h10)+:(16)];
+        ze1 = ze0;
+        ce16_e = zero6;
+        if (top16_e == zero16) begin
+            ze1 = ze0 << sh16;
+            ce16_e = c16_6;
+        end
+        top8_e = ze1[(32'h18)+:(8)];
+        ze2 = ze1;
+        ce8_e = zero6;
+        if (top8_e == zero8) begin
+            ze2 = ze1 << sh8;
+            ce8_e = c8_6;
+        end
+        top4_e = ze2[(32'h1c)+:(4)];
+        ze3 = ze2;
+        ce4_e = zero6;
+        if (top4_e == zero4) begin
+            ze3 = ze2 << sh4;
+            ce4_e = c4_6;
+        end
+        top2_e = ze3[(32'h1e)+:(2)];
+        ze4 = ze3;
+        ce2_e = zero6;
+        if (top2_e == zero2) begin
+            ze4 = ze3 << sh2;
+            ce2_e = c2_6;
+        end
+        ze5 = ze4;
+        ce1_e = zero6;
+        if (~ze4[32'h1f]) begin
+            ze5 = ze4 << sh1;
+            ce1_e = c1_6;
+        end
+        v4$d = v3$q;
+        id4$d = id3$q;
+        ax4$d = ax3$q;
+        ay4$d = ay3$q;
+        bx4$d = bx3$q;
+        by4$d = by3$q;
+        absnx4$d = absnx3$q;
+        absny4$d = absny3$q;
+        negx4$d = negx3$q;
+        negy4$d = negy3$q;
+        clz_n4$d = clz_n3$q;
+        norm_n4$d = norm_n3$q;
+        k4$d = kk;
+        clz_e4$d = ce16_e | ce8_e | ce4_e | ce2_e | ce1_e;
+        norm_e4$d = ze5;
+        backward4$d = is_backward;
+        back_facing4$d = is_back_facing;
+        outside4$d = is_outside;
+        s0 = clz_n4$q - clz_e4$q;
+        s0_m1 = s0 - one6;
+        sh = s0_m1;
+        if (norm_n4$q < norm_e4$q) begin
+            sh = s0;
+        end
+        sh5 = sh[(32'h0)+:(5)];
+        is_near = ~backward4$q & ~back_facing4$q & ~outside4$q & sh[32'h5] & (sh < sh_lo);
+        is_pass = ~backward4$q & ~back_facing4$q & ~outside4$q & ~is_near;
+        reserve = v4$q;
+        if (v4$q) begin
+            if (is_pass) begin
+                c_passed$d = c_passed$q + one32;
+            end
+            if (backward4$q) begin
+                c_backward$d = c_backward$q + one32;
+            end
+            if (back_facing4$q) begin
+                c_back_facing$d = c_back_facing$q + one32;
+            end
+            if (outside4$q) begin
+                c_outside$d = c_outside$q + one32;
+            end
+            if (is_near) begin
+                c_near$d = c_near$q + one32;
+            end
+        end
+        passed = c_passed$q;
+        backward = c_backward$q;
+        back_facing = c_back_facing$q;
+        outside = c_outside$q;
+        near = c_near$q;
+        absnx32 = ((absnx4$q) & 32'hffffffff);
+        absny32 = ((absny4$q) & 32'hffffffff);
+        low_nx = absnx4$q[(32'h0)+:(3)];
+        low_ny = absny4$q[(32'h0)+:(3)];
+        divider$rx = absnx32 << sh5;
+        divider$ry = absny32 << sh5;
+        divider$fx = zero3;
+        divider$fy = zero3;
+        if (sh == sh_m1) begin
+            divider$rx = absnx32 >> sh1;
+            divider$ry = absny32 >> sh1;
+            divider$fx = low_nx << sh2_3;
+            divider$fy = low_ny << sh2_3;
+        end
+        else if (sh == sh_m2) begin
+            divider$rx = absnx32 >> sh2;
+            divider$ry = absny32 >> sh2;
+            divider$fx = low_nx << sh1_3;
+            divider$fy = low_ny << sh1_3;
+        end
+        else if (sh == sh_lo) begin
+            divider$rx = absnx32 >> sh3;
+            divider$ry = absny32 >> sh3;
+            divider$fx = low_nx;
+            divider$fy = low_ny;
+        end
+        divider$k = k4$q;
+        tag_p = zero3;
+        if (reserve) begin
+            tag_p = tag_pass;
+        end
+        tag_x = zero3;
+        if (negx4$q) begin
+            tag_x = tag_negx;
+        end
+        tag_y = zero3;
+        if (negy4$q) begin
+            tag_y = tag_negy;
+        end
+        divider$tag = tag_p | tag_x | tag_y;
+        lane_id$write_address = res_ptr$q;
+        lane_ax$write_address = res_ptr$q;
+        lane_ay$write_address = res_ptr$q;
+        lane_bx$write_address = res_ptr$q;
+        lane_by$write_address = res_ptr$q;
+        lane_sh$write_address = res_ptr$q;
+        lane_id$write_data = id4$q;
+        lane_ax$write_data = ax4$q;
+        lane_ay$write_data = ay4$q;
+        lane_bx$write_data = bx4$q;
+        lane_by$write_data = by4$q;
+        sh_pass = ((sh) & 7'h7f);
+        if (is_pass) begin
+            sh_pass = ((sh) & 7'h7f) | pass_flag;
+        end
+        lane_sh$write_data = sh_pass;
+        lane_id$write_enable = reserve;
+        lane_ax$write_enable = reserve;
+        lane_ay$write_enable = reserve;
+        lane_bx$write_enable = reserve;
+        lane_by$write_enable = reserve;
+        lane_sh$write_enable = reserve;
+        res_inc = res_ptr$q + one5;
+        if (reserve) begin
+            res_ptr$d = res_inc;
+        end
+        fill = divider$tag_out[32'h0];
+        qx18 = ((divider$qx) & 18'h3ffff);
+        qy18 = ((divider$qy) & 18'h3ffff);
+        wx_neg = zero18 - qx18;
+        wy_neg = zero18 - qy18;
+        lane_wx$write_address = fill_ptr$q;
+        lane_wy$write_address = fill_ptr$q;
+        lane_wx$write_data = qx18;
+        if (divider$tag_out[32'h1]) begin
+            lane_wx$write_data = wx_neg;
+        end
+        lane_wy$write_data = qy18;
+        if (divider$tag_out[32'h2]) begin
+            lane_wy$write_data = wy_neg;
+        end
+        lane_wx$write_enable = fill;
+        lane_wy$write_enable = fill;
+        fill_inc = fill_ptr$q + one5;
+        if (fill) begin
+            fill_ptr$d = fill_inc;
+        end
+        pop = head_valid$q & out_ready;
+        rd_inc = rd_ptr$q + one5;
+        done_dec = done$q - one6;
+        rd_addr = rd_ptr$q;
+        done_left = done$q;
+        if (pop) begin
+            rd_addr = rd_inc;
+            rd_ptr$d = rd_inc;
+            done_left = done_dec;
+        end
+        lane_id$read_address = rd_addr;
+        lane_ax$read_address = rd_addr;
+        lane_ay$read_address = rd_addr;
+        lane_bx$read_address = rd_addr;
+        lane_by$read_address = rd_addr;
+        lane_sh$read_address = rd_addr;
+        lane_wx$read_address = rd_addr;
+        lane_wy$read_address = rd_addr;
+        head_valid$d = done_left != zero6;
+        out_valid = head_valid$q;
+        out_id = lane_id$read_data;
+        out_ax = lane_ax$read_data;
+        out_ay = lane_ay$read_data;
+        out_bx = lane_bx$read_data;
+        out_by = lane_by$read_data;
+        out_sh = ((lane_sh$read_data) & 6'h3f);
+        out_pass = lane_sh$read_data[32'h6];
+        out_wx = lane_wx$read_data;
+        out_wy = lane_wy$read_data;
+        used_inc = used$q + one6;
+        used_dec = used$q - one6;
+        if (take & ~pop) begin
+            used$d = used_inc;
+        end
+        if (~take & pop) begin
+            used$d = used_dec;
+        end
+        done_inc = done$q + one6;
+        if (fill & ~pop) begin
+            done$d = done_inc;
+        end
+        if (~fill & pop) begin
+            done$d = done_dec;
+        end
+    end
+    
+endmodule // processing_element$screener
+
+
+module processing_element$screener$absnx2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx2
+
+
+module processing_element$screener$absnx3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx3
+
+
+module processing_element$screener$absnx4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx4
+
+
+module processing_element$screener$absny2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny2
+
+
+module processing_element$screener$absny3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny3
+
+
+module processing_element$screener$absny4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny4
+
+
+module processing_element$screener$ax1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax1
+
+
+module processing_element$screener$ax2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax2
+
+
+module processing_element$screener$ax3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax3
+
+
+module processing_element$screener$ax4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax4
+
+
+module processing_element$screener$ay1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay1
+
+
+module processing_element$screener$ay2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay2
+
+
+module processing_element$screener$ay3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay3
+
+
+module processing_element$screener$ay4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay4
+
+
+module processing_element$screener$back_facing4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$back_facing4
+
+
+module processing_element$screener$backward4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$backward4
+
+
+module processing_element$screener$bx1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx1
+
+
+module processing_element$screener$bx2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx2
+
+
+module processing_element$screener$bx3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx3
+
+
+module processing_element$screener$bx4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx4
+
+
+module processing_element$screener$by1(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by1
+
+
+module processing_element$screener$by2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by2
+
+
+module processing_element$screener$by3(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by3
+
+
+module processing_element$screener$by4(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by4
+
+
+module processing_element$screener$c_back_facing(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$c_back_facing
+
+
+module processing_element$screener$c_backward(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$c_backward
+
+
+module processing_element$screener$c_near(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$c_near
+
+
+module processing_element$screener$c_outside(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$c_outside
+
+
+module processing_element$screener$c_passed(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$c_passed
+
+
+module processing_element$screener$clz_e4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$clz_e4
+
+
+module processing_element$screener$clz_n3(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$clz_n3
+
+
+module processing_element$screener$clz_n4(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$clz_n4
+
+
+module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] rx;
+    input wire  [31:0] ry;
+    input wire  [2:0] fx;
+    input wire  [2:0] fy;
+    input wire  [31:0] k;
+    input wire  [2:0] tag;
+    output reg  [16:0] qx;
+    output reg  [16:0] qy;
+    output reg  [2:0] tag_out;
+    
+    // Update code (custom)
+    localparam N = 17;
+    reg [32*(N+1)-1:0] kp;
+    reg [32*(N+1)-1:0] rxp;
+    reg [32*(N+1)-1:0] ryp;
+    reg [3*(N+1)-1:0] fxp;
+    reg [3*(N+1)-1:0] fyp;
+    reg [17*(N+1)-1:0] qxp;
+    reg [17*(N+1)-1:0] qyp;
+    reg [3*(N+1)-1:0] tgp;
+    initial begin
+       kp = 0;
+       rxp = 0;
+       ryp = 0;
+       fxp = 0;
+       fyp = 0;
+       qxp = 0;
+       qyp = 0;
+       tgp = 0;
+    end
+    always @(posedge clock) begin
+       kp[31:0] <= k;
+       rxp[31:0] <= rx;
+       ryp[31:0] <= ry;
+       fxp[2:0] <= fx;
+       fyp[2:0] <= fy;
+       qxp[16:0] <= 17'd0;
+       qyp[16:0] <= 17'd0;
+       tgp[2:0] <= tag;
+    end
+    genvar s;
+    generate
+       for (s = 1; s <= N; s = s + 1) begin : step
+          wire [31:0] dk = kp[32*(s-1) +: 32];
+          wire [31:0] ax = rxp[32*(s-1) +: 32];
+          wire [31:0] ay = ryp[32*(s-1) +: 32];
+          wire [2:0] bx = fxp[3*(s-1) +: 3];
+          wire [2:0] by = fyp[3*(s-1) +: 3];
+          wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
+          wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
+          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
+          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
+          always @(posedge clock) begin
+             kp[32*s +: 32] <= dk;
+             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
+             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
+             fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
+             fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
+             qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};
+             qyp[17*s +: 17] <= {qyp[17*(s-1) +: 16], ~dy[32]};
+             tgp[3*s +: 3] <= tgp[3*(s-1) +: 3];
+          end
+       end
+    endgenerate
+    always @(*) begin
+       qx = qxp[17*N +: 17];
+       qy = qyp[17*N +: 17];
+       tag_out = tgp[3*N +: 3];
+    end
+endmodule // processing_element$screener$divider
+
+
+module processing_element$screener$done(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$done
+
+
+module processing_element$screener$fill_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$fill_ptr
+
+
+module processing_element$screener$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$head_valid
+
+
+module processing_element$screener$id1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id1
+
+
+module processing_element$screener$id2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id2
+
+
+module processing_element$screener$id3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id3
+
+
+module processing_element$screener$id4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id4
+
+
+module processing_element$screener$k4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$k4
+
+
+module processing_element$screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_ax
+
+
+module processing_element$screener$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_ay
+
+
+module processing_element$screener$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_bx
+
+
+module processing_element$screener$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_by
+
+
+module processing_element$screener$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [15:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [15:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 16'd0;
+       read_data = 16'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_id
+
+
+module processing_element$screener$lane_sh(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [6:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [6:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [6:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 7'd0;
+       read_data = 7'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_sh
+
+
+module processing_element$screener$lane_wx(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_wx
+
+
+module processing_element$screener$lane_wy(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [4:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [4:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:31];
+    integer i;
+    initial begin
+       for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$screener$lane_wy
+
+
+module processing_element$screener$m_abx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_abx
+
+
+module processing_element$screener$m_aby(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_aby
+
+
+module processing_element$screener$m_fbx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_fbx
+
+
+module processing_element$screener$m_fby(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_fby
+
+
+module processing_element$screener$m_lax(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_lax
+
+
+module processing_element$screener$m_lay(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_lay
+
+
+module processing_element$screener$m_nax(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_nax
+
+
+module processing_element$screener$m_nay(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_nay
+
+
+module processing_element$screener$m_nbx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_nbx
+
+
+module processing_element$screener$m_nby(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$screener$m_nby
+
+
+module processing_element$screener$negx2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx2
+
+
+module processing_element$screener$negx3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx3
+
+
+module processing_element$screener$negx4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx4
+
+
+module processing_element$screener$negy2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy2
+
+
+module processing_element$screener$negy3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy3
+
+
+module processing_element$screener$negy4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy4
+
+
+module processing_element$screener$nmax2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$nmax2
+
+
+module processing_element$screener$norm_e4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$norm_e4
+
+
+module processing_element$screener$norm_n3(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$norm_n3
+
+
+module processing_element$screener$norm_n4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$norm_n4
+
+
+module processing_element$screener$outside4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$outside4
+
+
+module processing_element$screener$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$rd_ptr
+
+
+module processing_element$screener$res_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$res_ptr
+
+
+module processing_element$screener$used(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$used
+
+
+module processing_element$screener$v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v1
+
+
+module processing_element$screener$v2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v2
+
+
+module processing_element$screener$v3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v3
+
+
+module processing_element$screener$v4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v4
+
+
+module processing_element$tag_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tag_count
+
+
+module processing_element$tags(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [5:0] read_address;
+    output reg  [21:0] read_data;
+    input wire  [5:0] write_address;
+    input wire  [21:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [21:0] mem [0:63];
+    integer i;
+    initial begin
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
+       read_data = 22'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$tags
+
+
+module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  dir_we;
+    input wire  [9:0] dir_addr;
+    input wire  [17:0] dir_x;
+    input wire  [17:0] dir_y;
+    input wire  patch_valid;
+    output reg  patch_ready;
+    input wire  [17:0] patch_ax;
+    input wire  [17:0] patch_ay;
+    input wire  [17:0] patch_bx;
+    input wire  [17:0] patch_by;
+    input wire  [17:0] patch_wx;
+    input wire  [17:0] patch_wy;
+    input wire  [5:0] patch_sh;
+    input wire  [15:0] patch_id;
+    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_count;
+    input wire  patch_retire;
+    input wire  res_re;
+    input wire  [9:0] res_addr;
+    output reg  res_hit;
+    output reg  [15:0] res_id;
+    output reg  [31:0] res_key;
+    output reg  busy;
+    output reg  [31:0] tests;
+    
+    // Constant declarations
+    localparam  zero11 = 11'b0;
+    localparam  one11 = 11'b1;
+    localparam  one10 = 10'b1;
+    localparam  one32 = 32'h1;
+    localparam  zero32 = 32'h0;
+    localparam  hit_flag = 17'b10000000000000000;
+    localparam  zero17 = 17'b0;
+    
+    // Stub signals
+    reg  [10:0] remaining$d;
+    wire  [10:0] remaining$q;
+    reg  remaining$clock;
+    reg  [9:0] cur$d;
+    wire  [9:0] cur$q;
+    reg  cur$clock;
+    reg  [17:0] p_ax$d;
+    wire  [17:0] p_ax$q;
+    reg  p_ax$clock;
+    reg  [17:0] p_ay$d;
+    wire  [17:0] p_ay$q;
+    reg  p_ay$clock;
+    reg  [17:0] p_bx$d;
+    wire  [17:0] p_bx$q;
+    reg  p_bx$clock;
+    reg  [17:0] p_by$d;
+    wire  [17:0] p_by$q;
+    reg  p_by$clock;
+    reg  [17:0] p_wx$d;
+    wire  [17:0] p_wx$q;
+    reg  p_wx$clock;
+    reg  [17:0] p_wy$d;
+    wire  [17:0] p_wy$q;
+    reg  p_wy$clock;
+    reg  [5:0] p_sh$d;
+    wire  [5:0] p_sh$q;
+    reg  p_sh$clock;
+    reg  [15:0] p_id$d;
+    wire  [15:0] p_id$q;
+    reg  p_id$clock;
+    reg  p_retire$d;
+    wire  p_retire$q;
+    reg  p_retire$clock;
+    reg  alive_mem$clock;
+    reg  [9:0] alive_mem$read_address;
+    wire  alive_mem$read_data;
+    reg  [9:0] alive_mem$write_address;
+    reg  alive_mem$write_data;
+    reg  alive_mem$write_enable;
+    reg  [31:0] test_count$d;
+    wire  [31:0] test_count$q;
+    reg  test_count$clock;
+    reg  v1$d;
+    wire  v1$q;
+    reg  v1$clock;
+    reg  [9:0] ray1$d;
+    wire  [9:0] ray1$q;
+    reg  ray1$clock;
+    reg  [17:0] a1x$d;
+    wire  [17:0] a1x$q;
+    reg  a1x$clock;
+    reg  [17:0] a1y$d;
+    wire  [17:0] a1y$q;
+    reg  a1y$clock;
+    reg  [17:0] b1x$d;
+    wire  [17:0] b1x$q;
+    reg  b1x$clock;
+    reg  [17:0] b1y$d;
+    wire  [17:0] b1y$q;
+    reg  b1y$clock;
+    reg  [17:0] w1x$d;
+    wire  [17:0] w1x$q;
+    reg  w1x$clock;
+    reg  [17:0] w1y$d;
+    wire  [17:0] w1y$q;
+    reg  w1y$clock;
+    reg  [5:0] sh1$d;
+    wire  [5:0] sh1$q;
+    reg  sh1$clock;
+    reg  [15:0] id1$d;
+    wire  [15:0] id1$q;
+    reg  id1$clock;
+    reg  dir_mem_x$clock;
+    reg  [9:0] dir_mem_x$read_address;
+    wire  [17:0] dir_mem_x$read_data;
+    reg  [9:0] dir_mem_x$write_address;
+    reg  [17:0] dir_mem_x$write_data;
+    reg  dir_mem_x$write_enable;
+    reg  dir_mem_y$clock;
+    reg  [9:0] dir_mem_y$read_address;
+    wire  [17:0] dir_mem_y$read_data;
+    reg  [9:0] dir_mem_y$write_address;
+    reg  [17:0] dir_mem_y$write_data;
+    reg  dir_mem_y$write_enable;
+    reg  mul_dx_ay$clock;
+    reg  [17:0] mul_dx_ay$a;
+    reg  [17:0] mul_dx_ay$b;
+    wire  [31:0] mul_dx_ay$p;
+    reg  mul_dy_ax$clock;
+    reg  [17:0] mul_dy_ax$a;
+    reg  [17:0] mul_dy_ax$b;
+    wire  [31:0] mul_dy_ax$p;
+    reg  mul_dx_by$clock;
+    reg  [17:0] mul_dx_by$a;
+    reg  [17:0] mul_dx_by$b;
+    wire  [31:0] mul_dx_by$p;
+    reg  mul_dy_bx$clock;
+    reg  [17:0] mul_dy_bx$a;
+    reg  [17:0] mul_dy_bx$b;
+    wire  [31:0] mul_dy_bx$p;
+    reg  mul_dx_wx$clock;
+    reg  [17:0] mul_dx_wx$a;
+    reg  [17:0] mul_dx_wx$b;
+    wire  [31:0] mul_dx_wx$p;
+    reg  mul_dy_wy$clock;
+    reg  [17:0] mul_dy_wy$a;
+    reg  [17:0] mul_dy_wy$b;
+    wire  [31:0] mul_dy_wy$p;
+    reg  v2$d;
+    wire  v2$q;
+    reg  v2$clock;
+    reg  [9:0] ray2$d;
+    wire  [9:0] ray2$q;
+    reg  ray2$clock;
+    reg  [5:0] sh2$d;
+    wire  [5:0] sh2$q;
+    reg  sh2$clock;
+    reg  [15:0] id2$d;
+    wire  [15:0] id2$q;
+    reg  id2$clock;
+    reg  v3$d;
+    wire  v3$q;
+    reg  v3$clock;
+    reg  [9:0] ray3$d;
+    wire  [9:0] ray3$q;
+    reg  ray3$clock;
+    reg  [5:0] sh3$d;
+    wire  [5:0] sh3$q;
+    reg  sh3$clock;
+    reg  [15:0] id3$d;
+    wire  [15:0] id3$q;
+    reg  id3$clock;
+    reg  v4$d;
+    wire  v4$q;
+    reg  v4$clock;
+    reg  [9:0] ray4$d;
+    wire  [9:0] ray4$q;
+    reg  ray4$clock;
+    reg  [15:0] id4$d;
+    wire  [15:0] id4$q;
+    reg  id4$clock;
+    reg  key_scale$clock;
+    reg  [31:0] key_scale$q;
+    reg  [5:0] key_scale$sh;
+    wire  [31:0] key_scale$key;
+    reg  v5$d;
+    wire  v5$q;
+    reg  v5$clock;
+    reg  [9:0] ray5$d;
+    wire  [9:0] ray5$q;
+    reg  ray5$clock;
+    reg  [15:0] id5$d;
+    wire  [15:0] id5$q;
+    reg  id5$clock;
+    reg  mem_key$clock;
+    reg  [9:0] mem_key$read_address;
+    wire  [31:0] mem_key$read_data;
+    reg  [9:0] mem_key$write_address;
+    reg  [31:0] mem_key$write_data;
+    reg  mem_key$write_enable;
+    reg  mem_meta$clock;
+    reg  [9:0] mem_meta$read_address;
+    wire  [16:0] mem_meta$read_data;
+    reg  [9:0] mem_meta$write_address;
+    reg  [16:0] mem_meta$write_data;
+    reg  mem_meta$write_enable;
+    reg  fw_valid$d;
+    wire  fw_valid$q;
+    reg  fw_valid$clock;
+    reg  [9:0] fw_ray$d;
+    wire  [9:0] fw_ray$q;
+    reg  fw_ray$clock;
+    reg  [31:0] fw_key$d;
+    wire  [31:0] fw_key$q;
+    reg  fw_key$clock;
+    reg  [15:0] fw_id$d;
+    wire  [15:0] fw_id$q;
+    reg  fw_id$clock;
+    
+    // Local signals
+    reg  live;
+    reg  issue;
+    reg  take;
+    reg  [31:0] side_a;
+    reg  [31:0] side_b;
+    reg  [31:0] q;
+    reg  old_hit;
+    reg  [31:0] old_key;
+    reg  [15:0] old_id;
+    reg  meta_hit;
+    reg  [15:0] meta_id;
+    reg  better;
+    reg  [16:0] new_meta;
+    
+    // Sub module instances
+    processing_element$unit$remaining remaining(
+        .d(remaining$d),
+        .q(remaining$q),
+        .clock(remaining$clock)
+    );
+    processing_element$unit$cur cur(
+        .d(cur$d),
+        .q(cur$q),
+        .clock(cur$clock)
+    );
+    processing_element$unit$p_ax p_ax(
+        .d(p_ax$d),
+        .q(p_ax$q),
+        .clock(p_ax$clock)
+    );
+    processing_element$unit$p_ay p_ay(
+        .d(p_ay$d),
+        .q(p_ay$q),
+        .clock(p_ay$clock)
+    );
+    processing_element$unit$p_bx p_bx(
+        .d(p_bx$d),
+        .q(p_bx$q),
+        .clock(p_bx$clock)
+    );
+    processing_element$unit$p_by p_by(
+        .d(p_by$d),
+        .q(p_by$q),
+        .clock(p_by$clock)
+    );
+    processing_element$unit$p_wx p_wx(
+        .d(p_wx$d),
+        .q(p_wx$q),
+        .clock(p_wx$clock)
+    );
+    processing_element$unit$p_wy p_wy(
+        .d(p_wy$d),
+        .q(p_wy$q),
+        .clock(p_wy$clock)
+    );
+    processing_element$unit$p_sh p_sh(
+        .d(p_sh$d),
+        .q(p_sh$q),
+        .clock(p_sh$clock)
+    );
+    processing_element$unit$p_id p_id(
+        .d(p_id$d),
+        .q(p_id$q),
+        .clock(p_id$clock)
+    );
+    processing_element$unit$p_retire p_retire(
+        .d(p_retire$d),
+        .q(p_retire$q),
+        .clock(p_retire$clock)
+    );
+    processing_element$unit$alive_mem alive_mem(
+        .clock(alive_mem$clock),
+        .read_address(alive_mem$read_address),
+        .read_data(alive_mem$read_data),
+        .write_address(alive_mem$write_address),
+        .write_data(alive_mem$write_data),
+        .write_enable(alive_mem$write_enable)
+    );
+    processing_element$unit$test_count test_count(
+        .d(test_count$d),
+        .q(test_count$q),
+        .clock(test_count$clock)
+    );
+    processing_element$unit$v1 v1(
+        .d(v1$d),
+        .q(v1$q),
+        .clock(v1$clock)
+    );
+    processing_element$unit$ray1 ray1(
+        .d(ray1$d),
+        .q(ray1$q),
+        .clock(ray1$clock)
+    );
+    processing_element$unit$a1x a1x(
+        .d(a1x$d),
+        .q(a1x$q),
+        .clock(a1x$clock)
+    );
+    processing_element$unit$a1y a1y(
+        .d(a1y$d),
+        .q(a1y$q),
+        .clock(a1y$clock)
+    );
+    processing_element$unit$b1x b1x(
+        .d(b1x$d),
+        .q(b1x$q),
+        .clock(b1x$clock)
+    );
+    processing_element$unit$b1y b1y(
+        .d(b1y$d),
+        .q(b1y$q),
+        .clock(b1y$clock)
+    );
+    processing_element$unit$w1x w1x(
+        .d(w1x$d),
+        .q(w1x$q),
+        .clock(w1x$clock)
+    );
+    processing_element$unit$w1y w1y(
+        .d(w1y$d),
+        .q(w1y$q),
+        .clock(w1y$clock)
+    );
+    processing_element$unit$sh1 sh1(
+        .d(sh1$d),
+        .q(sh1$q),
+        .clock(sh1$clock)
+    );
+    processing_element$unit$id1 id1(
+        .d(id1$d),
+        .q(id1$q),
+        .clock(id1$clock)
+    );
+    processing_element$unit$dir_mem_x dir_mem_x(
+        .clock(dir_mem_x$clock),
+        .read_address(dir_mem_x$read_address),
+        .read_data(dir_mem_x$read_data),
+        .write_address(dir_mem_x$write_address),
+        .write_data(dir_mem_x$write_data),
+        .write_enable(dir_mem_x$write_enable)
+    );
+    processing_element$unit$dir_mem_y dir_mem_y(
+        .clock(dir_mem_y$clock),
+        .read_address(dir_mem_y$read_address),
+        .read_data(dir_mem_y$read_data),
+        .write_address(dir_mem_y$write_address),
+        .write_data(dir_mem_y$write_data),
+        .write_enable(dir_mem_y$write_enable)
+    );
+    processing_element$unit$mul_dx_ay mul_dx_ay(
+        .clock(mul_dx_ay$clock),
+        .a(mul_dx_ay$a),
+        .b(mul_dx_ay$b),
+        .p(mul_dx_ay$p)
+    );
+    processing_element$unit$mul_dy_ax mul_dy_ax(
+        .clock(mul_dy_ax$clock),
+        .a(mul_dy_ax$a),
+        .b(mul_dy_ax$b),
+        .p(mul_dy_ax$p)
+    );
+    processing_element$unit$mul_dx_by mul_dx_by(
+        .clock(mul_dx_by$clock),
+        .a(mul_dx_by$a),
+        .b(mul_dx_by$b),
+        .p(mul_dx_by$p)
+    );
+    processing_element$unit$mul_dy_bx mul_dy_bx(
+        .clock(mul_dy_bx$clock),
+        .a(mul_dy_bx$a),
+        .b(mul_dy_bx$b),
+        .p(mul_dy_bx$p)
+    );
+    processing_element$unit$mul_dx_wx mul_dx_wx(
+        .clock(mul_dx_wx$clock),
+        .a(mul_dx_wx$a),
+        .b(mul_dx_wx$b),
+        .p(mul_dx_wx$p)
+    );
+    processing_element$unit$mul_dy_wy mul_dy_wy(
+        .clock(mul_dy_wy$clock),
+        .a(mul_dy_wy$a),
+        .b(mul_dy_wy$b),
+        .p(mul_dy_wy$p)
+    );
+    processing_element$unit$v2 v2(
+        .d(v2$d),
+        .q(v2$q),
+        .clock(v2$clock)
+    );
+    processing_element$unit$ray2 ray2(
+        .d(ray2$d),
+        .q(ray2$q),
+        .clock(ray2$clock)
+    );
+    processing_element$unit$sh2 sh2(
+        .d(sh2$d),
+        .q(sh2$q),
+        .clock(sh2$clock)
+    );
+    processing_element$unit$id2 id2(
+        .d(id2$d),
+        .q(id2$q),
+        .clock(id2$clock)
+    );
+    processing_element$unit$v3 v3(
+        .d(v3$d),
+        .q(v3$q),
+        .clock(v3$clock)
+    );
+    processing_element$unit$ray3 ray3(
+        .d(ray3$d),
+        .q(ray3$q),
+        .clock(ray3$clock)
+    );
+    processing_element$unit$sh3 sh3(
+        .d(sh3$d),
+        .q(sh3$q),
+        .clock(sh3$clock)
+    );
+    processing_element$unit$id3 id3(
+        .d(id3$d),
+        .q(id3$q),
+        .clock(id3$clock)
+    );
+    processing_element$unit$v4 v4(
+        .d(v4$d),
+        .q(v4$q),
+        .clock(v4$clock)
+    );
+    processing_element$unit$ray4 ray4(
+        .d(ray4$d),
+        .q(ray4$q),
+        .clock(ray4$clock)
+    );
+    processing_element$unit$id4 id4(
+        .d(id4$d),
+        .q(id4$q),
+        .clock(id4$clock)
+    );
+    processing_element$unit$key_scale key_scale(
+        .clock(key_scale$clock),
+        .q(key_scale$q),
+        .sh(key_scale$sh),
+        .key(key_scale$key)
+    );
+    processing_element$unit$v5 v5(
+        .d(v5$d),
+        .q(v5$q),
+        .clock(v5$clock)
+    );
+    processing_element$unit$ray5 ray5(
+        .d(ray5$d),
+        .q(ray5$q),
+        .clock(ray5$clock)
+    );
+    processing_element$unit$id5 id5(
+        .d(id5$d),
+        .q(id5$q),
+        .clock(id5$clock)
+    );
+    processing_element$unit$mem_key mem_key(
+        .clock(mem_key$clock),
+        .read_address(mem_key$read_address),
+        .read_data(mem_key$read_data),
+        .write_address(mem_key$write_address),
+        .write_data(mem_key$write_data),
+        .write_enable(mem_key$write_enable)
+    );
+    processing_element$unit$mem_meta mem_meta(
+        .clock(mem_meta$clock),
+        .read_address(mem_meta$read_address),
+        .read_data(mem_meta$read_data),
+        .write_address(mem_meta$write_address),
+        .write_data(mem_meta$write_data),
+        .write_enable(mem_meta$write_enable)
+    );
+    processing_element$unit$fw_valid fw_valid(
+        .d(fw_valid$d),
+        .q(fw_valid$q),
+        .clock(fw_valid$clock)
+    );
+    processing_element$unit$fw_ray fw_ray(
+        .d(fw_ray$d),
+        .q(fw_ray$q),
+        .clock(fw_ray$clock)
+    );
+    processing_element$unit$fw_key fw_key(
+        .d(fw_key$d),
+        .q(fw_key$q),
+        .clock(fw_key$clock)
+    );
+    processing_element$unit$fw_id fw_id(
+        .d(fw_id$d),
+        .q(fw_id$q),
+        .clock(fw_id$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        remaining$clock = clock;
+        cur$clock = clock;
+        p_ax$clock = clock;
+        p_ay$clock = clock;
+        p_bx$clock = clock;
+        p_by$clock = clock;
+        p_wx$clock = clock;
+        p_wy$clock = clock;
+        p_sh$clock = clock;
+        p_id$clock = clock;
+        p_retire$clock = clock;
+        test_count$clock = clock;
+        v1$clock = clock;
+        ray1$clock = clock;
+        a1x$clock = clock;
+        a1y$clock = clock;
+        b1x$clock = clock;
+        b1y$clock = clock;
+        w1x$clock = clock;
+        w1y$clock = clock;
+        sh1$clock = clock;
+        id1$clock = clock;
+        v2$clock = clock;
+        ray2$clock = clock;
+        sh2$clock = clock;
+        id2$clock = clock;
+        v3$clock = clock;
+        ray3$clock = clock;
+        sh3$clock = clock;
+        id3$clock = clock;
+        v4$clock = clock;
+        ray4$clock = clock;
+        id4$clock = clock;
+        v5$clock = clock;
+        ray5$clock = clock;
+        id5$clock = clock;
+        fw_valid$clock = clock;
+        fw_ray$clock = clock;
+        fw_key$clock = clock;
+        fw_id$clock = clock;
+        remaining$d = remaining$q;
+        cur$d = cur$q;
+        p_ax$d = p_ax$q;
+        p_ay$d = p_ay$q;
+        p_bx$d = p_bx$q;
+        p_by$d = p_by$q;
+        p_wx$d = p_wx$q;
+        p_wy$d = p_wy$q;
+        p_sh$d = p_sh$q;
+        p_id$d = p_id$q;
+        p_retire$d = p_retire$q;
+        test_count$d = test_count$q;
+        v1$d = v1$q;
+        ray1$d = ray1$q;
+        a1x$d = a1x$q;
+        a1y$d = a1y$q;
+        b1x$d = b1x$q;
+        b1y$d = b1y$q;
+        w1x$d = w1x$q;
+        w1y$d = w1y$q;
+        sh1$d = sh1$q;
+        id1$d = id1$q;
+        v2$d = v2$q;
+        ray2$d = ray2$q;
+        sh2$d = sh2$q;
+        id2$d = id2$q;
+        v3$d = v3$q;
+        ray3$d = ray3$q;
+        sh3$d = sh3$q;
+        id3$d = id3$q;
+        v4$d = v4$q;
+        ray4$d = ray4$q;
+        id4$d = id4$q;
+        v5$d = v5$q;
+        ray5$d = ray5$q;
+        id5$d = id5$q;
+        fw_valid$d = fw_valid$q;
+        fw_ray$d = fw_ray$q;
+        fw_key$d = fw_key$q;
+        fw_id$d = fw_id$q;
+        dir_mem_x$clock = clock;
+        alive_mem$clock = clock;
+        dir_mem_y$clock = clock;
+        mem_key$clock = clock;
+        mem_meta$clock = clock;
+        mul_dx_ay$clock = clock;
+        mul_dy_ax$clock = clock;
+        mul_dx_by$clock = clock;
+        mul_dy_bx$clock = clock;
+        mul_dx_wx$clock = clock;
+        mul_dy_wy$clock = clock;
+        key_scale$clock = clock;
+        issue = remaining$q != zero11;
+        patch_ready = (remaining$q == zero11) | (remaining$q == one11);
+        take = patch_valid & ((remaining$q == zero11) | (remaining$q == one11));
+        if (take) begin
+            remaining$d = patch_count;
+            cur$d = patch_first;
+            p_ax$d = patch_ax;
+            p_ay$d = patch_ay;
+            p_bx$d = patch_bx;
+            p_by$d = patch_by;
+            p_wx$d = patch_wx;
+            p_wy$d = patch_wy;
+            p_sh$d = patch_sh;
+            p_id$d = patch_id;
+            p_retire$d = patch_retire;
+        end
+        else if (issue) begin
+            remaining$d = remaining$q - one11;
+            cur$d = cur$q + one10;
+        end
+        tests = test_count$q;
+        dir_mem_x$read_address = cur$q;
+        dir_mem_y$read_address = cur$q;
+        dir_mem_x$write_address = dir_addr;
+        dir_mem_y$write_address = dir_addr;
+        dir_mem_x$write_data = dir_x;
+        dir_mem_y$write_data = dir_y;
+        dir_mem_x$write_enable = dir_we;
+        dir_mem_y$write_enable = dir_we;
+        alive_mem$read_address = cur$q;
+        alive_mem$write_address = cur$q;
+        alive_mem$write_data = 1'b0;
+        alive_mem$write_enable = issue & p_retire$q;
+        if (dir_we) begin
+            alive_mem$write_address = dir_addr;
+            alive_mem$write_data = 1'b1;
+            alive_mem$write_enable = 1'b1;
+        end
+        v1$d = issue & ~p_retire$q;
+        ray1$d = cur$q;
+        a1x$d = p_ax$q;
+        a1y$d = p_ay$q;
+        b1x$d = p_bx$q;
+        b1y$d = p_by$q;
+        w1x$d = p_wx$q;
+        w1y$d = p_wy$q;
+        sh1$d = p_sh$q;
+        id1$d = p_id$q;
+        mul_dx_ay$a = dir_mem_x$read_data;
+        mul_dx_ay$b = a1y$q;
+        mul_dy_ax$a = dir_mem_y$read_data;
+        mul_dy_ax$b = a1x$q;
+        mul_dx_by$a = dir_mem_x$read_data;
+        mul_dx_by$b = b1y$q;
+        mul_dy_bx$a = dir_mem_y$read_data;
+        mul_dy_bx$b = b1x$q;
+        mul_dx_wx$a = dir_mem_x$read_data;
+        mul_dx_wx$b = w1x$q;
+        mul_dy_wy$a = dir_mem_y$read_data;
+        mul_dy_wy$b = w1y$q;
+        live = v1$q & |alive_mem$read_data;
+        if (live) begin
+            test_count$d = test_count$q + one32;
+        end
+        v2$d = live;
+        ray2$d = ray1$q;
+        sh2$d = sh1$q;
+        id2$d = id1$q;
+        v3$d = v2$q;
+        ray3$d = ray2$q;
+        sh3$d = sh2$q;
+        id3$d = id2$q;
+        side_a = mul_dx_ay$p - mul_dy_ax$p;
+        side_b = mul_dx_by$p - mul_dy_bx$p;
+        q = mul_dx_wx$p + mul_dy_wy$p;
+        v4$d = v3$q & ((side_a == zero32) | side_a[32'h1f]) & ~side_b[32'h1f];
+        ray4$d = ray3$q;
+        id4$d = id3$q;
+        key_scale$q = q;
+        key_scale$sh = sh3$q;
+        v5$d = v4$q;
+        ray5$d = ray4$q;
+        id5$d = id4$q;
+        mem_key$read_address = ray4$q;
+        mem_meta$read_address = ray4$q;
+        if (res_re) begin
+            mem_key$read_address = res_addr;
+            mem_meta$read_address = res_addr;
+        end
+        meta_hit = mem_meta$read_data[32'h10];
+        meta_id = ((mem_meta$read_data) & 16'hffff);
+        old_hit = meta_hit;
+        old_key = mem_key$read_data;
+        old_id = meta_id;
+        if (fw_valid$q & (fw_ray$q == ray5$q)) begin
+            old_hit = 1'b1;
+            old_key = fw_key$q;
+            old_id = fw_id$q;
+        end
+        better = v5$q & (~old_hit | (key_scale$key > old_key) | ((key_scale$key == old_key) & (id5$q < old_id)));
+        new_meta = hit_flag | ((id5$q) & 17'h1ffff);
+        mem_key$write_address = ray5$q;
+        mem_meta$write_address = ray5$q;
+        mem_key$write_data = key_scale$key;
+        mem_meta$write_data = new_meta;
+        mem_key$write_enable = better;
+        mem_meta$write_enable = better;
+        if (res_re) begin
+            mem_key$write_address = res_addr;
+            mem_meta$write_address = res_addr;
+            mem_key$write_data = zero32;
+            mem_meta$write_data = zero17;
+            mem_key$write_enable = 1'b1;
+            mem_meta$write_enable = 1'b1;
+        end
+        fw_valid$d = better;
+        fw_ray$d = ray5$q;
+        fw_key$d = key_scale$key;
+        fw_id$d = id5$q;
+        res_hit = meta_hit;
+        res_id = meta_id;
+        res_key = mem_key$read_data;
+        busy = issue | v1$q | v2$q | v3$q | v4$q | v5$q;
+    end
+    
+endmodule // processing_element$unit
+
+
+module processing_element$unit$a1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$a1x
+
+
+module processing_element$unit$a1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$a1y
+
+
+module processing_element$unit$alive_mem(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  read_data;
+    input wire  [9:0] write_address;
+    input wire  write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [0:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 1'd0;
+       read_data = 1'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$unit$alive_mem
+
+
+module processing_element$unit$b1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$b1x
+
+
+module processing_element$unit$b1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$b1y
+
+
+module processing_element$unit$cur(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$cur
+
+
+module processing_element$unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$unit$dir_mem_x
+
+
+module processing_element$unit$dir_mem_y(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       read_data = 18'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$unit$dir_mem_y
+
+
+module processing_element$unit$fw_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$fw_id
+
+
+module processing_element$unit$fw_key(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$fw_key
+
+
+module processing_element$unit$fw_ray(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$fw_ray
+
+
+module processing_element$unit$fw_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$fw_valid
+
+
+module processing_element$unit$id1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$id1
+
+
+module processing_element$unit$id2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$id2
+
+
+module processing_element$unit$id3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$id3
+
+
+module processing_element$unit$id4(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$id4
+
+
+module processing_element$unit$id5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$id5
+
+
+module processing_element$unit$key_scale(clock,q,sh,key);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] q;
+    input wire  [5:0] sh;
+    output reg  [31:0] key;
+    
+    // Update code (custom)
+    reg [31:0] q_r;
+    reg [5:0] sh_r;
+    reg [31:0] k;
+    wire [31:0] right = q_r >> sh_r[4:0];
+    initial begin
+       q_r = 32'd0;
+       sh_r = 6'd0;
+       key = 32'd0;
+    end
+    always @(*) begin
+       if (q_r[31] || q_r == 32'd0) k = 32'd1;
+       else if (!sh_r[5]) k = (right == 32'd0) ? 32'd1 : right;
+       else if (sh_r == 6'h3f) k = {q_r[30:0], 1'b0};
+       else if (sh_r == 6'h3e) k = (q_r[31:30] == 2'd0) ? {q_r[29:0], 2'b0} : 32'hffffffff;
+       else k = (q_r[31:29] == 3'd0) ? {q_r[28:0], 3'b0} : 32'hffffffff;
+    end
+    always @(posedge clock) begin
+       q_r <= q;
+       sh_r <= sh;
+       key <= k;
+    end
+endmodule // processing_element$unit$key_scale
+
+
+module processing_element$unit$mem_key(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [31:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [31:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 32'd0;
+       read_data = 32'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$unit$mem_key
+
+
+module processing_element$unit$mem_meta(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:1023];
+    integer i;
+    initial begin
+       for (i = 0; i <= 1023; i = i + 1) mem[i] = 17'd0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$unit$mem_meta
+
+
+module processing_element$unit$mul_dx_ay(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$unit$mul_dx_ay
+
+
+module processing_element$unit$mul_dx_by(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$unit$mul_dx_by
+
+
+module processing_element$unit$mul_dx_wx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$unit$mul_dx_wx
+
+
+module processing_element$unit$mul_dy_ax(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$unit$mul_dy_ax
+
+
+module processing_element$unit$mul_dy_bx(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$unit$mul_dy_bx
+
+
+module processing_element$unit$mul_dy_wy(clock,a,b,p);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] a;
+    input wire  [17:0] b;
+    output reg  [31:0] p;
+    
+    // Update code (custom)
+    reg signed [17:0] a_r;
+    reg signed [17:0] b_r;
+    wire signed [35:0] prod;
+    initial begin
+       a_r = 18'sd0;
+       b_r = 18'sd0;
+       p = 32'd0;
+    end
+    assign prod = a_r * b_r;
+    always @(posedge clock) begin
+       a_r <= a;
+       b_r <= b;
+       p <= prod[35:4];
+    end
+endmodule // processing_element$unit$mul_dy_wy
+
+
+module processing_element$unit$p_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_ax
+
+
+module processing_element$unit$p_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_ay
+
+
+module processing_element$unit$p_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_bx
+
+
+module processing_element$unit$p_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_by
+
+
+module processing_element$unit$p_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_id
+
+
+module processing_element$unit$p_retire(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_retire
+
+
+module processing_element$unit$p_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_sh
+
+
+module processing_element$unit$p_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_wx
+
+
+module processing_element$unit$p_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$p_wy
+
+
+module processing_element$unit$ray1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$ray1
+
+
+module processing_element$unit$ray2(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$ray2
+
+
+module processing_element$unit$ray3(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$ray3
+
+
+module processing_element$unit$ray4(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$ray4
+
+
+module processing_element$unit$ray5(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$ray5
+
+
+module processing_element$unit$remaining(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$remaining
+
+
+module processing_element$unit$sh1(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$sh1
+
+
+module processing_element$unit$sh2(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$sh2
+
+
+module processing_element$unit$sh3(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$sh3
+
+
+module processing_element$unit$test_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$test_count
+
+
+module processing_element$unit$v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$v1
+
+
+module processing_element$unit$v2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$v2
+
+
+module processing_element$unit$v3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$v3
+
+
+module processing_element$unit$v4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$v4
+
+
+module processing_element$unit$v5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$v5
+
+
+module processing_element$unit$w1x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$w1x
+
+
+module processing_element$unit$w1y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$unit$w1y
+
+
+module processing_element$wr_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$wr_ptr

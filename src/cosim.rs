@@ -1,0 +1,117 @@
+//! Co-simulation: a source's work stream through the RTL processing element, cycle by cycle,
+//! against the bit-true model and the host memory model.
+//!
+//! The shell scheduler ([`Prepared::schedule`](crate::run::Prepared::schedule)) records the work
+//! stream on the bit-true backend; [`run`] turns it into the host's commands, simulates the
+//! processing element of `shelling-hdl` in rust-hdl with a host memory of load time `T_c`
+//! (optionally behind the PE's patch cache), reads every ray's nearest hit back and checks it,
+//! and the PE's counters, against the bit-true execution of the same commands (rung 3 for the
+//! whole system). The golden `f64` hits are compared by the caller within the documented bound
+//! (rung 2, [`crate::agreement`]).
+
+use crate::run::Scheduled;
+use crate::workstream::{commands, StreamError};
+use serde::Serialize;
+use shelling_hdl::intersection::model::Nearest;
+use shelling_hdl::pe::ProcessingElement;
+use shelling_testbench::memory::HostMemory;
+use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
+use shelling_testbench::Driver;
+use std::path::PathBuf;
+
+/// How the hardware is set up for a co-simulation.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CosimConfig {
+    /// Cycles the host memory takes per patch (`T_c ≥ 1`).
+    pub tc: u32,
+    /// The PE's patch cache: `None` off, `Some(lines)` on (a power of two up to 4096).
+    pub cache: Option<u32>,
+    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up).
+    pub vcd: Option<VcdWindow>,
+}
+
+impl Default for CosimConfig {
+    fn default() -> Self {
+        CosimConfig { tc: 1, cache: None, vcd: None }
+    }
+}
+
+/// A VCD file and the cycles it covers.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VcdWindow {
+    pub path: PathBuf,
+    pub from: u64,
+    pub to: u64,
+}
+
+/// The result of a co-simulation: the PE's hits (equal to the bit-true model's), its counters
+/// and the model's.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Cosim {
+    #[serde(skip)]
+    pub hits: Vec<Option<Nearest>>,
+    pub hardware: PeCounters,
+    pub model: ModelCounts,
+}
+
+/// What keeps a co-simulation from running or passing.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CosimError {
+    #[error("invalid work stream: {0}")]
+    Stream(#[from] StreamError),
+    #[error("{0}")]
+    Config(String),
+    #[error("simulation: {0}")]
+    Sim(String),
+    #[error("the PE disagrees with the bit-true model: {0}")]
+    Mismatch(String),
+}
+
+fn sim(e: shelling_testbench::Error) -> CosimError {
+    CosimError::Sim(e.message().to_string())
+}
+
+/// Co-simulates a scheduled source on the PE; `progress(done, total)` reports commands sent.
+pub fn run(
+    scheduled: &Scheduled,
+    config: &CosimConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<Cosim, CosimError> {
+    if config.tc == 0 {
+        return Err(CosimError::Config("--tc must be at least 1 cycle per patch, got 0".into()));
+    }
+    let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
+    let (want, model) = pe::model(&setup, &patches, &cmds);
+    let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;
+    let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
+    if let Some(v) = &config.vcd {
+        if v.from >= v.to {
+            return Err(CosimError::Config(format!("empty VCD window {}..{}", v.from, v.to)));
+        }
+        drv.stream_vcd(&v.path, v.from..v.to).map_err(sim)?;
+    }
+    let cache = CacheConfig { lines: config.cache };
+    cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
+    let (hits, hardware) = pe::run(&mut drv, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
+    drv.finish_vcd().map_err(sim)?;
+    if let Some(r) = (0..hits.len()).find(|&r| hits[r] != want[r]) {
+        return Err(CosimError::Mismatch(format!(
+            "ray {r}: PE {:?}, model {:?} ({} rays differ)",
+            hits[r],
+            want[r],
+            (0..hits.len()).filter(|&r| hits[r] != want[r]).count()
+        )));
+    }
+    let pairs = [
+        ("patch loads", hardware.patch_loads, model.loads),
+        ("memory loads", hardware.memory_loads + hardware.cache_hits, model.loads),
+        ("patches passed", hardware.passed, model.passed),
+        ("tests", hardware.tests, model.tests),
+    ];
+    for (what, hw, m) in pairs {
+        if hw != m {
+            return Err(CosimError::Mismatch(format!("{what}: PE {hw}, model {m}")));
+        }
+    }
+    Ok(Cosim { hits, hardware, model })
+}

@@ -1,0 +1,347 @@
+//! Driving the processing element ([`ProcessingElement`]) through a whole source, as the host
+//! does: ray directions, then the command stream with the sector changes between, the host
+//! memory answering the PE's requests, then the readout. [`model`] is what it must return.
+//!
+//! The host changes the sector (the screener's setup) only while the PE is idle, so a sector
+//! change drains the PE: those cycles are counted apart ([`PeCounters::drain_cycles`]).
+
+use crate::memory::HostMemory;
+use crate::{impl_clocked, Driver, Error, Result};
+use rust_hdl::prelude::*;
+use shelling_hdl::cache::LINES;
+use shelling_hdl::formats::to_bits;
+use shelling_hdl::intersection::model::{replaces, test, Nearest};
+use shelling_hdl::intersection::RAY_BITS;
+use shelling_hdl::pe::ProcessingElement;
+use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
+
+impl_clocked!(ProcessingElement);
+
+/// Rays a PE holds.
+pub const MAX_RAYS: usize = 1 << RAY_BITS;
+
+/// One command of the host, in stream order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// Drain the PE, then set the sector's first and last ray directions (Q2.16).
+    Sector { first: [i32; 2], last: [i32; 2] },
+    /// Load patch `id`, screen it, and test it against the live rays `first .. first + count`.
+    Job { id: u16, first: u16, count: u16 },
+    /// Rays `first .. first + count` leave the bundle.
+    Retire { first: u16, count: u16 },
+}
+
+/// The source: ray origin (Q11.6 world coordinates), normal and ray directions (Q2.16).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PeSetup {
+    pub origin: [i32; 2],
+    pub normal: [i32; 2],
+    pub dirs: Vec<[i32; 2]>,
+}
+
+impl PeSetup {
+    fn bundle(&self, first: [i32; 2], last: [i32; 2]) -> BundleSetup {
+        BundleSetup { origin: self.origin, normal: self.normal, first, last }
+    }
+
+    fn check(&self, commands: &[Command], patches: usize) -> Result<()> {
+        let n = self.dirs.len();
+        if n == 0 || n > MAX_RAYS {
+            return Err(Error::new(format!("a PE traces 1 to {MAX_RAYS} rays, got {n}")));
+        }
+        for (k, c) in commands.iter().enumerate() {
+            let bad = match *c {
+                Command::Job { id, first, count }
+                    if id as usize >= patches || first as usize + count as usize > n =>
+                {
+                    Some(format!("job for patch {id} of {patches}, rays {first}+{count} of {n}"))
+                }
+                Command::Retire { first, count } if first as usize + count as usize > n => {
+                    Some(format!("retire of rays {first}+{count} of {n}"))
+                }
+                _ => None,
+            };
+            if let Some(what) = bad {
+                return Err(Error::new(format!("command {k}: {what}")));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// What the bit-true model counts of a command stream.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct ModelCounts {
+    pub sectors: u64,
+    /// Jobs, i.e. patches loaded.
+    pub loads: u64,
+    /// Jobs whose patch the screener passed.
+    pub passed: u64,
+    /// Ray slots of passed jobs: the cycles the intersection unit issues.
+    pub ray_slots: u64,
+    /// Ray-patch tests of live rays.
+    pub tests: u64,
+    /// Rays retired.
+    pub retires: u64,
+}
+
+/// The bit-true model of a PE running `commands` for `setup` on a host memory holding
+/// `patches` (`[ax, ay, bx, by]`, Q11.6): every ray's nearest hit and the counts. Before the
+/// first sector command the sector is the whole bundle (first and last ray).
+pub fn model(
+    setup: &PeSetup,
+    patches: &[[i32; 4]],
+    commands: &[Command],
+) -> (Vec<Option<Nearest>>, ModelCounts) {
+    let n = setup.dirs.len();
+    let mut best: Vec<Option<Nearest>> = vec![None; n];
+    let mut live = vec![true; n];
+    let mut c = ModelCounts::default();
+    let mut bundle = setup.bundle(setup.dirs[0], setup.dirs[n - 1]);
+    for cmd in commands {
+        match *cmd {
+            Command::Sector { first, last } => {
+                c.sectors += 1;
+                bundle = setup.bundle(first, last);
+            }
+            Command::Job { id, first, count } => {
+                c.loads += 1;
+                let m = patches[id as usize];
+                let Verdict::Pass(p) = screen(&bundle, &Patch { id, a: [m[0], m[1]], b: [m[2], m[3]] })
+                else {
+                    continue;
+                };
+                c.passed += 1;
+                c.ray_slots += count as u64;
+                for r in first as usize..first as usize + count as usize {
+                    if !live[r] {
+                        continue;
+                    }
+                    c.tests += 1;
+                    if let Some(key) = test(&p, setup.dirs[r]) {
+                        if replaces(key, id, best[r]) {
+                            best[r] = Some(Nearest { key, id });
+                        }
+                    }
+                }
+            }
+            Command::Retire { first, count } => {
+                c.retires += count as u64;
+                live[first as usize..first as usize + count as usize].fill(false);
+            }
+        }
+    }
+    (best, c)
+}
+
+/// What the PE did, counted by the host from the PE's outputs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct PeCounters {
+    /// Cycles from the first command to the PE idle after the last one.
+    pub cycles: u64,
+    /// Cycles the intersection unit tested a live ray (one test per clock).
+    pub intersection_busy_cycles: u64,
+    /// `intersection_busy_cycles / cycles`.
+    pub pipeline_efficiency: f64,
+    /// Cycles the PE held work but the intersection unit tested nothing (waiting for patches,
+    /// filling its pipeline, bubbles of retired rays), sector drains included.
+    pub stall_cycles: u64,
+    /// Cycles spent draining the PE before a sector change.
+    pub drain_cycles: u64,
+    /// Patches loaded by the PE's loader.
+    pub patch_loads: u64,
+    /// Patches the host memory delivered.
+    pub memory_loads: u64,
+    pub cache_hits: u64,
+    pub passed: u64,
+    pub backward: u64,
+    pub back_facing: u64,
+    pub outside: u64,
+    pub near: u64,
+    /// Ray-patch tests of live rays.
+    pub tests: u64,
+    /// Cycles writing the directions and reading the hits back (not in `cycles`).
+    pub setup_cycles: u64,
+    pub readout_cycles: u64,
+}
+
+fn field<const N: usize>(v: i64) -> Bits<N> {
+    Bits::from(to_bits(v, N as u32))
+}
+
+/// The patch cache's setting for a run: off, or on with `lines` lines (a power of two from 1 to
+/// [`shelling_hdl::cache::LINES`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CacheConfig {
+    pub lines: Option<u32>,
+}
+
+impl CacheConfig {
+    /// Checks the size; the error names it.
+    pub fn check(&self) -> Result<()> {
+        match self.lines {
+            Some(n) if n == 0 || !n.is_power_of_two() || n as usize > LINES => Err(Error::new(format!(
+                "the patch cache holds a power of two from 1 to {LINES} patches, got {n}"
+            ))),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Runs a whole source on a PE fresh from power-up (or after a previous run's readout):
+/// directions, commands, readout. `progress(done, total)` is called now and then with the
+/// commands sent so far. A run that stops making progress is an error naming where it stopped.
+pub fn run(
+    drv: &mut Driver<ProcessingElement>,
+    memory: &mut HostMemory,
+    setup: &PeSetup,
+    cache: CacheConfig,
+    commands: &[Command],
+    mut progress: impl FnMut(usize, usize),
+) -> Result<(Vec<Option<Nearest>>, PeCounters)> {
+    setup.check(commands, memory.len())?;
+    cache.check()?;
+    let mut k = PeCounters::default();
+    let n = setup.dirs.len();
+
+    // Directions, source and the whole bundle as the first sector.
+    let start = drv.cycles();
+    let (o, nm, d0, d1) = (setup.origin, setup.normal, setup.dirs[0], setup.dirs[n - 1]);
+    drv.drive(|u| {
+        u.origin_x.next = field(o[0] as i64);
+        u.origin_y.next = field(o[1] as i64);
+        u.normal_x.next = field(nm[0] as i64);
+        u.normal_y.next = field(nm[1] as i64);
+        set_sector(u, d0, d1);
+        u.cfg_cache_enable.next = cache.lines.is_some();
+        u.cfg_cache_mask.next = (cache.lines.unwrap_or(1) as u64 - 1).into();
+    })?;
+    for (i, d) in setup.dirs.iter().enumerate() {
+        drv.cycle(|u| {
+            u.dir_we.next = true;
+            u.dir_addr.next = (i as u64).into();
+            u.dir_x.next = field(d[0] as i64);
+            u.dir_y.next = field(d[1] as i64);
+        })?;
+    }
+    drv.cycle(|u| u.dir_we.next = false)?;
+    k.setup_cycles = drv.cycles() - start;
+
+    // Commands. The memory's answer to a request is presented from the next cycle on.
+    let start = drv.cycles();
+    let u = drv.uut();
+    let (loads0, tests0, hits0) =
+        (u.loads.val().to_u64(), u.tests.val().to_u64(), u.cache_hits.val().to_u64());
+    let mut response: Option<[i32; 4]> = None;
+    let mut next = 0usize;
+    let mut last_progress = 0u64;
+    let mut idle_since = drv.cycles();
+    let mut tests_before = tests0;
+    loop {
+        let cmd = commands.get(next).copied();
+        let draining = matches!(cmd, Some(Command::Sector { .. }));
+        drv.drive(|u| {
+            u.mem_valid.next = response.is_some();
+            if let Some(m) = response {
+                u.mem_ax.next = field(m[0] as i64);
+                u.mem_ay.next = field(m[1] as i64);
+                u.mem_bx.next = field(m[2] as i64);
+                u.mem_by.next = field(m[3] as i64);
+            }
+            u.cmd_valid.next = false;
+            match cmd {
+                Some(Command::Sector { first, last }) if !u.busy.val() => set_sector(u, first, last),
+                Some(Command::Job { id, first, count }) => {
+                    u.cmd_valid.next = true;
+                    u.cmd_retire.next = false;
+                    u.cmd_id.next = (id as u64).into();
+                    u.cmd_first.next = (first as u64).into();
+                    u.cmd_count.next = (count as u64).into();
+                }
+                Some(Command::Retire { first, count }) => {
+                    u.cmd_valid.next = true;
+                    u.cmd_retire.next = true;
+                    u.cmd_first.next = (first as u64).into();
+                    u.cmd_count.next = (count as u64).into();
+                }
+                _ => {}
+            }
+        })?;
+        let u = drv.uut();
+        let busy = u.busy.val();
+        match cmd {
+            Some(Command::Sector { .. }) if !busy => next += 1,
+            Some(Command::Job { .. } | Command::Retire { .. }) if u.cmd_ready.val() => next += 1,
+            _ => {}
+        }
+        let request = u.mem_req.val().then(|| u.mem_addr.val().to_u16());
+        response = memory.cycle(request)?;
+        drv.tick()?;
+        let tests = drv.uut().tests.val().to_u64();
+        let tested = tests != tests_before;
+        tests_before = tests;
+        k.intersection_busy_cycles += tested as u64;
+        if !tested && (busy || next < commands.len()) {
+            k.stall_cycles += 1;
+            k.drain_cycles += draining as u64;
+        }
+        if tested || next as u64 != last_progress {
+            idle_since = drv.cycles();
+        }
+        if next as u64 != last_progress {
+            last_progress = next as u64;
+            if next % 256 == 0 {
+                progress(next, commands.len());
+            }
+        }
+        if next == commands.len() && !drv.uut().busy.val() && response.is_none() && memory.pending() == 0 {
+            break;
+        }
+        if drv.cycles() - idle_since > 64 * (memory.tc() as u64 + 64) {
+            return Err(Error::new(format!(
+                "no progress for {} cycles at command {next} of {} ({:?})",
+                drv.cycles() - idle_since,
+                commands.len(),
+                commands.get(next)
+            )));
+        }
+    }
+    progress(commands.len(), commands.len());
+    k.cycles = drv.cycles() - start;
+    k.pipeline_efficiency =
+        if k.cycles > 0 { k.intersection_busy_cycles as f64 / k.cycles as f64 } else { 0.0 };
+    let u = drv.uut();
+    k.patch_loads = u.loads.val().to_u64() - loads0;
+    k.memory_loads = memory.loads();
+    k.cache_hits = u.cache_hits.val().to_u64() - hits0;
+    k.tests = u.tests.val().to_u64() - tests0;
+    k.passed = u.passed.val().to_u64();
+    k.backward = u.backward.val().to_u64();
+    k.back_facing = u.back_facing.val().to_u64();
+    k.outside = u.outside.val().to_u64();
+    k.near = u.near.val().to_u64();
+
+    // Readout (read and clear).
+    let start = drv.cycles();
+    let mut hits = Vec::with_capacity(n);
+    for i in 0..n {
+        drv.cycle(|u| {
+            u.res_re.next = true;
+            u.res_addr.next = (i as u64).into();
+        })?;
+        let u = drv.uut();
+        hits.push(
+            u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() }),
+        );
+    }
+    drv.cycle(|u| u.res_re.next = false)?;
+    k.readout_cycles = drv.cycles() - start;
+    Ok((hits, k))
+}
+
+fn set_sector(u: &mut ProcessingElement, first: [i32; 2], last: [i32; 2]) {
+    u.first_x.next = field(first[0] as i64);
+    u.first_y.next = field(first[1] as i64);
+    u.last_x.next = field(last[0] as i64);
+    u.last_y.next = field(last[1] as i64);
+}

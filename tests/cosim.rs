@@ -1,0 +1,57 @@
+//! The whole system, rungs 2 and 3: the shell scheduler's work stream co-simulated on the RTL
+//! processing element returns, for every ray, the bit-true tracer's nearest hit, and the f64
+//! golden model's within the documented bound; the PE's counters equal the scheduler's.
+
+use shelling::agreement;
+use shelling::cosim::{self, CosimConfig};
+use shelling::geom::Hit;
+use shelling::grid::GridParams;
+use shelling::rays::RaySet;
+use shelling::run::Prepared;
+use shelling::scene::{self, PAPER_WORLD};
+use shelling::trace::{Method, ShellParams};
+use shelling_hdl::formats::key_distance;
+
+#[test]
+fn the_pe_returns_the_schedulers_hits_for_every_technique_and_length() {
+    let params = ShellParams::default();
+    // One source per length; T_c 1 and 16 alternate.
+    for (i, length) in [4.0, 8.0, 16.0, 32.0, 64.0, 128.0].into_iter().enumerate() {
+        let seed = 40 + i as u64;
+        let scene = scene::generate(1000, length, seed, PAPER_WORLD).expect("scene");
+        let prepared = Prepared::new(scene, GridParams::default());
+        let k = 137 * (i + 1) % 1000;
+        let bundle = prepared.patch_bundle(k, RaySet::Angle, 1024).expect("source");
+        for m in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
+            let what = format!("length {length} seed {seed} source {k} {m}");
+            let tc = if i % 2 == 0 { 1 } else { 16 };
+            let scheduled = prepared.schedule(m, &bundle, &params).expect("fits");
+            let run = cosim::run(
+                &scheduled,
+                &CosimConfig { tc, cache: if i % 3 == 2 { Some(1024) } else { None }, vcd: None },
+                |_, _| {},
+            )
+            .unwrap_or_else(|e| panic!("{what}: {e}"));
+            let hits: Vec<Option<Hit>> = run
+                .hits
+                .iter()
+                .map(|h| h.map(|n| Hit { t: key_distance(n.key), segment: n.id as u32 }))
+                .collect();
+            assert_eq!(hits, scheduled.trace.hits, "{what}: the PE against the bit-true tracer");
+            let c = &scheduled.trace.counters;
+            let h = &run.hardware;
+            assert_eq!(h.patch_loads, c.patches_read_before_screening, "{what}: loads");
+            assert!(h.tests <= c.intersection_computations && h.tests > 0, "{what}: {h:?} vs {c:?}");
+            assert!(h.cycles >= h.memory_loads * tc as u64, "{what}: the memory bounds the cycles: {h:?}");
+            let golden = prepared.trace(m, &bundle, &params).expect("traces");
+            let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &golden, &scheduled.trace);
+            assert!(
+                rung2.unexplained.is_empty() && rung2.distance_violations.is_empty(),
+                "{what}: beyond the bound: {:?} {:?}",
+                rung2.unexplained,
+                rung2.distance_violations
+            );
+            println!("{what} T_c {tc}: {h:?}");
+        }
+    }
+}
