@@ -55,3 +55,48 @@ fn the_pe_returns_the_schedulers_hits_for_every_technique_and_length() {
         }
     }
 }
+
+#[test]
+fn the_waveform_of_a_whole_source_keeps_the_stream_protocol() {
+    use shelling::cosim::VcdWindow;
+    use shelling_testbench::pe::check_protocol;
+    use shelling_testbench::waves::{gtkw_signals, Waves};
+    let scene = scene::generate(1000, 32.0, 5, PAPER_WORLD).expect("scene");
+    let prepared = Prepared::new(scene, GridParams::default());
+    let bundle = prepared.patch_bundle(300, RaySet::Angle, 1024).expect("source");
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cosim-vcd");
+    for (m, tc, cache) in [(Method::Stochastic, 4, None), (Method::Conventional, 2, Some(256))] {
+        let scheduled = prepared.schedule(m, &bundle, &ShellParams::default()).expect("fits");
+        let path = dir.join(format!("{m}.vcd"));
+        let vcd = Some(VcdWindow { path: path.clone(), from: 0, to: u64::MAX });
+        let run = cosim::run(&scheduled, &CosimConfig { tc, cache, vcd }, |_, _| {}).expect("co-simulates");
+        let report = check_protocol(&path).unwrap_or_else(|e| panic!("{m}: {e}"));
+        assert_eq!(report.ids.len() as u64, run.hardware.patch_loads, "{m}");
+        assert!(
+            report.max_loader_reserved > 1 && report.max_tags > 1,
+            "{m}: the FIFOs never filled: {report:?}"
+        );
+        // The committed GTKWave save file names signals this VCD has.
+        let gtkw = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("waveforms").join("demo.gtkw");
+        let signals = gtkw_signals(&gtkw).expect("readable");
+        assert!(signals.len() > 40, "{signals:?}");
+        let names: Vec<&str> = signals.iter().map(String::as_str).collect();
+        Waves::read(&path, &names).unwrap_or_else(|e| panic!("demo.gtkw: {e}"));
+        println!(
+            "{m}: {} cycles, {} ids, FIFO peaks: loader {}, screener {}, tags {}",
+            report.cycles,
+            report.ids.len(),
+            report.max_loader_reserved,
+            report.max_screener_in_flight,
+            report.max_tags
+        );
+    }
+    // A window writes only its cycles.
+    let scheduled = prepared.schedule(Method::Stochastic, &bundle, &ShellParams::default()).expect("fits");
+    let path = dir.join("window.vcd");
+    let vcd = Some(VcdWindow { path: path.clone(), from: 1500, to: 1700 });
+    cosim::run(&scheduled, &CosimConfig { tc: 4, cache: None, vcd }, |_, _| {}).expect("co-simulates");
+    let w = Waves::read(&path, &["uut.busy", "uut.clock"]).expect("readable");
+    assert_eq!((w.first_cycle, w.cycles()), (1500, 200));
+    assert!(check_protocol(&path).is_err(), "a window is not a whole run");
+}

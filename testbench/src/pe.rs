@@ -345,3 +345,141 @@ fn set_sector(u: &mut ProcessingElement, first: [i32; 2], last: [i32; 2]) {
     u.last_x.next = field(last[0] as i64);
     u.last_y.next = field(last[1] as i64);
 }
+
+/// The PE's signals [`check_protocol`] reads from a VCD.
+const PROTOCOL_SIGNALS: [&str; 20] = [
+    "uut.loader.reserved.q",
+    "uut.loader.id_valid",
+    "uut.loader.id_ready",
+    "uut.loader.id",
+    "uut.loader.mem_req",
+    "uut.loader.mem_addr",
+    "uut.loader.mem_valid",
+    "uut.loader.out_valid",
+    "uut.loader.out_ready",
+    "uut.loader.out_id",
+    "uut.screener.in_valid",
+    "uut.screener.in_ready",
+    "uut.screener.in_id",
+    "uut.screener.out_valid",
+    "uut.screener.out_ready",
+    "uut.screener.out_id",
+    "uut.screener.used.q",
+    "uut.tag_count.q",
+    "uut.tags.write_enable",
+    "uut.busy",
+];
+
+/// What [`check_protocol`] saw.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ProtocolReport {
+    pub cycles: usize,
+    /// Ids accepted by the loader, in order.
+    pub ids: Vec<u16>,
+    pub max_loader_reserved: u64,
+    pub max_screener_in_flight: u64,
+    pub max_tags: u64,
+}
+
+/// Checks the PE's stream protocol on a VCD of a whole run (from power-up until the PE is idle
+/// after its last command): the loader's FIFO never holds more than its depth and takes no id
+/// while full; the tag FIFO likewise; the screener never has more than its credit limit in
+/// flight; and every id the loader accepted was requested from memory, answered, handed to the
+/// screener and left it exactly once, in order. An error names the first cycle that breaks it.
+pub fn check_protocol(path: &std::path::Path) -> Result<ProtocolReport> {
+    use shelling_hdl::{loader, pe, screener};
+    let w = crate::waves::Waves::read(path, &PROTOCOL_SIGNALS)?;
+    let s = |name: &str| w.get(name);
+    let (reserved, id_valid, id_ready, id) = (
+        s("uut.loader.reserved.q")?,
+        s("uut.loader.id_valid")?,
+        s("uut.loader.id_ready")?,
+        s("uut.loader.id")?,
+    );
+    let (mem_req, mem_addr, mem_valid) =
+        (s("uut.loader.mem_req")?, s("uut.loader.mem_addr")?, s("uut.loader.mem_valid")?);
+    let (l_valid, l_ready, l_id) =
+        (s("uut.loader.out_valid")?, s("uut.loader.out_ready")?, s("uut.loader.out_id")?);
+    let (s_in_valid, s_in_ready, s_in_id) =
+        (s("uut.screener.in_valid")?, s("uut.screener.in_ready")?, s("uut.screener.in_id")?);
+    let (s_valid, s_ready, s_id) =
+        (s("uut.screener.out_valid")?, s("uut.screener.out_ready")?, s("uut.screener.out_id")?);
+    let (used, tags, tag_we, busy) =
+        (s("uut.screener.used.q")?, s("uut.tag_count.q")?, s("uut.tags.write_enable")?, s("uut.busy")?);
+    let n = w.cycles();
+    if n == 0 || w.first_cycle != 0 {
+        return Err(Error::new(format!(
+            "{}: the protocol check needs a whole run from cycle 0 (the file starts at cycle {}, {n} cycles)",
+            path.display(),
+            w.first_cycle
+        )));
+    }
+    let mut r = ProtocolReport { cycles: n, ..Default::default() };
+    let (mut requested, mut answered, mut to_screener, mut from_screener) = (vec![], 0usize, vec![], vec![]);
+    for c in 0..n {
+        let bad = |what: String| Err(Error::new(format!("{}: cycle {c}: {what}", path.display())));
+        r.max_loader_reserved = r.max_loader_reserved.max(reserved[c]);
+        r.max_screener_in_flight = r.max_screener_in_flight.max(used[c]);
+        r.max_tags = r.max_tags.max(tags[c]);
+        if reserved[c] > loader::DEPTH as u64 {
+            return bad(format!("the loader holds {} patches (depth {})", reserved[c], loader::DEPTH));
+        }
+        if id_valid[c] & id_ready[c] == 1 {
+            if reserved[c] == loader::DEPTH as u64 {
+                return bad("the loader took an id while full".into());
+            }
+            r.ids.push(id[c] as u16);
+        }
+        if used[c] > screener::DEPTH as u64 {
+            return bad(format!("{} patches in the screener (credit limit {})", used[c], screener::DEPTH));
+        }
+        if tags[c] > pe::TAG_DEPTH as u64 || (tag_we[c] == 1 && tags[c] == pe::TAG_DEPTH as u64) {
+            return bad(format!(
+                "the tag FIFO holds {} and writes {} (depth {})",
+                tags[c],
+                tag_we[c],
+                pe::TAG_DEPTH
+            ));
+        }
+        if mem_req[c] == 1 {
+            requested.push(mem_addr[c] as u16);
+        }
+        answered += mem_valid[c] as usize;
+        if l_valid[c] & l_ready[c] == 1 {
+            if s_in_valid[c] & s_in_ready[c] != 1 || s_in_id[c] != l_id[c] {
+                return bad("the loader's transfer is not the screener's".into());
+            }
+            to_screener.push(l_id[c] as u16);
+        }
+        if s_valid[c] & s_ready[c] == 1 {
+            from_screener.push(s_id[c] as u16);
+        }
+    }
+    if busy[n - 1] != 0 {
+        return Err(Error::new(format!("{}: the PE is still busy at the end of the file", path.display())));
+    }
+    let stages = [
+        ("requested from memory", &requested),
+        ("handed to the screener", &to_screener),
+        ("out of the screener", &from_screener),
+    ];
+    for (what, seen) in stages {
+        if *seen != r.ids {
+            let k = seen.iter().zip(&r.ids).position(|(a, b)| a != b).unwrap_or(seen.len().min(r.ids.len()));
+            return Err(Error::new(format!(
+                "{}: the ids {what} ({}) are not the {} ids accepted, in order: first difference at {k}",
+                path.display(),
+                seen.len(),
+                r.ids.len()
+            )));
+        }
+    }
+    if answered != r.ids.len() {
+        return Err(Error::new(format!(
+            "{}: {answered} memory answers for {} ids",
+            path.display(),
+            r.ids.len()
+        )));
+    }
+    Ok(r)
+}

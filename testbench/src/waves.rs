@@ -105,3 +105,16 @@ impl Waves {
             .ok_or_else(|| Error::new(format!("`{signal}` was not read")))
     }
 }
+
+/// The signals a GTKWave save file (`.gtkw`) shows: its lines that are not directives (`[..]`),
+/// flags (`@..`), group and comment markers (`-..`, `*..`).
+pub fn gtkw_signals(path: &Path) -> Result<Vec<String>> {
+    let text =
+        std::fs::read_to_string(path).map_err(|e| Error::new(format!("reading {}: {e}", path.display())))?;
+    Ok(text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with(['[', '@', '-', '*']))
+        .map(String::from)
+        .collect())
+}
