@@ -377,7 +377,7 @@ fn cli_trace_rejects_bad_options() {
 
 #[test]
 fn cli_help_mentions_every_option() {
-    let cases: [(&[&str], &[&str]); 4] = [
+    let cases: [(&[&str], &[&str]); 5] = [
         (
             &["trace"],
             &[
@@ -417,7 +417,25 @@ fn cli_help_mentions_every_option() {
                 "--max-sector",
             ],
         ),
-        (&["demo"], &["--seed", "--length", "--source", "--rays"]),
+        (&["demo"], &["--seed", "--length", "--source", "--rays", "--tc", "--vcd", "--verilog"]),
+        (
+            &["cosim"],
+            &[
+                "--scene",
+                "--source",
+                "--origin",
+                "--normal",
+                "--rays",
+                "--ray-set",
+                "--method",
+                "--tc",
+                "--cache",
+                "--vcd",
+                "--vcd-from",
+                "--vcd-to",
+                "--json",
+            ],
+        ),
     ];
     for (command, options) in cases {
         let mut args = command.to_vec();
@@ -428,7 +446,7 @@ fn cli_help_mentions_every_option() {
         }
     }
     let top = ok(&["--help"]);
-    for c in ["demo", "scene", "trace", "figures"] {
+    for c in ["demo", "scene", "trace", "figures", "cosim", "agreement", "export-verilog"] {
         assert!(top.contains(c), "--help does not list {c}:\n{top}");
     }
 }
@@ -517,12 +535,23 @@ fn cli_figures_rejects_bad_values() {
 
 #[test]
 fn cli_demo_prints_the_table() {
-    let out = ok(&["demo", "--rays", "128"]);
+    let dir = TempDir::new("demo");
+    let (vcd, verilog) = (dir.join("demo.vcd"), dir.join("v"));
+    let out =
+        ok(&["demo", "--rays", "128", "--tc", "4", "--vcd", path_arg(&vcd), "--verilog", path_arg(&verilog)]);
     for method in METHODS {
         assert!(out.lines().any(|l| l.starts_with(method)), "demo: no row for {method}:\n{out}");
     }
     assert!(out.contains("every technique returned the brute-force nearest hit"), "demo:\n{out}");
     assert!(out.contains("128 rays"), "demo:\n{out}");
+    // The co-simulation rows: conventional twice (without and with cache), stochastic once.
+    let rows: Vec<&str> = out.lines().skip_while(|l| !l.starts_with("co-simulation")).collect();
+    assert_eq!(rows.iter().filter(|l| l.starts_with("conventional")).count(), 2, "demo:\n{out}");
+    assert_eq!(rows.iter().filter(|l| l.starts_with("stochastic")).count(), 1, "demo:\n{out}");
+    assert!(out.contains("every PE hit equals the bit-true model's"), "demo:\n{out}");
+    let text = std::fs::read_to_string(&vcd).expect("the demo writes its VCD");
+    assert!(text.contains("$scope module uut") && text.contains("$enddefinitions"), "the demo's VCD header");
+    assert!(verilog.join("files.f").exists() && verilog.join("processing_element.v").exists());
 }
 
 #[test]
@@ -530,6 +559,94 @@ fn cli_demo_rejects_bad_values() {
     fails(&["demo", "--rays", "0"], &["rays"]);
     fails(&["demo", "--source", "5000"], &["5000", "1000 segments"]);
     fails(&["demo", "--length", "-1"], &["length", "-1"]);
+}
+
+// ----- co-simulation -----
+
+#[test]
+fn cli_cosim_json_is_the_trace_json_plus_the_hardware() {
+    let dir = TempDir::new("cosim");
+    let scene = gen_scene(&dir, "s.json", 300, 32.0, 4);
+    let fixed = parse_json(
+        &ok(&[
+            "trace",
+            "--scene",
+            path_arg(&scene),
+            "--source",
+            "7",
+            "--rays",
+            "128",
+            "--arith",
+            "fixed",
+            "--json",
+        ]),
+        "fixed",
+    );
+    let want = check_trace_json(&fixed, "stochastic", 128);
+    for (extra, cached) in [(&[][..], false), (&["--cache", "512"][..], true)] {
+        let mut args = vec![
+            "cosim",
+            "--scene",
+            path_arg(&scene),
+            "--source",
+            "7",
+            "--rays",
+            "128",
+            "--tc",
+            "8",
+            "--json",
+        ];
+        args.extend_from_slice(extra);
+        let doc = parse_json(&ok(&args), "cosim");
+        assert_eq!(check_trace_json(&doc, "stochastic", 128), want, "the PE's hits are the bit-true trace's");
+        let hw = doc["hardware"].as_object().expect("hardware object");
+        for k in [
+            "cycles",
+            "intersection_busy_cycles",
+            "pipeline_efficiency",
+            "patch_loads",
+            "cache_hits",
+            "stall_cycles",
+        ] {
+            assert!(hw[k].is_number(), "hardware.{k}: {:?}", hw.get(k));
+        }
+        let loads = hw["patch_loads"].as_u64().unwrap();
+        assert_eq!(Some(loads), doc["counters"]["patches_read_before_screening"].as_u64());
+        let eff = hw["pipeline_efficiency"].as_f64().unwrap();
+        assert!(eff > 0.0 && eff <= 1.0, "efficiency {eff}");
+        if !cached {
+            assert!(hw["cycles"].as_u64().unwrap() >= 8 * loads, "{hw:?}");
+        }
+    }
+    let text = ok(&[
+        "cosim",
+        "--scene",
+        path_arg(&scene),
+        "--source",
+        "7",
+        "--rays",
+        "64",
+        "--method",
+        "deterministic",
+    ]);
+    assert!(
+        text.contains("every hit equals the bit-true model's") && text.contains("pipeline efficiency"),
+        "{text}"
+    );
+}
+
+#[test]
+fn cli_cosim_rejects_bad_options() {
+    let dir = TempDir::new("cosim-bad");
+    let scene = gen_scene(&dir, "s.json", 100, 16.0, 5);
+    let base = ["cosim", "--scene", path_arg(&scene), "--source", "3"];
+    let with =
+        |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
+    fails(&with(&["--method", "brute"]), &["brute", "no hardware mapping"]);
+    fails(&with(&["--cache", "1000"]), &["power of two", "1000"]);
+    fails(&with(&["--tc", "0"]), &["--tc", "0"]);
+    fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
+    fails(&with(&["--vcd", "x.vcd", "--vcd-from", "10", "--vcd-to", "5"]), &["VCD window", "10..5"]);
 }
 
 // ----- fixed point, agreement, Verilog export -----
