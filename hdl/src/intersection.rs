@@ -60,7 +60,8 @@
 //!
 //! [`model::test`], [`model::key`] and [`model::replaces`] are the bit-true model; the
 //! testbench's `intersection::model_bundle` applies them to a whole job stream. Resources
-//! (Yosys `synth_ecp5`): 6 `MULT18X18D`, 5 `DP16KD`, about 700 LUT4 and 1100 flip-flops.
+//! (Yosys `synth_ecp5`): 6 `MULT18X18D`, 6 `DP16KD` (directions, live bits, keys, ids), about 700 LUT4
+//! and 1100 flip-flops.
 
 use crate::formats::{cross, dot, SH_MAX, SH_MIN};
 use crate::leaf::{Bram, KeyScale, Mul18};
