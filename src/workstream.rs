@@ -4,7 +4,7 @@
 //! The tracers of [`crate::trace`] are the scheduler: they decide which patches are loaded for
 //! which sector and which rays each one is tested against, and they announce it through the
 //! hooks of [`HitTest`]. A [`Recorder`] wraps any backend and writes those announcements down as
-//! a [`WorkStream`], the one input every backend consumes (DESIGN.md's seam):
+//! a [`WorkStream`], the one input every backend consumes (the seam between scheduler and backends):
 //!
 //! * [`Item::Sector`]: a new sector (its rays bound the screener's angular test);
 //! * [`Item::Job`]: one patch loaded from host memory, screened, and tested against the rays of

@@ -152,3 +152,17 @@ fn patch_cache_synthesizes_to_block_ram_without_latches() {
     assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
     println!("{stat}");
 }
+
+/// The whole processing element: its blocks' products on DSPs (6 + 10), its memories in block
+/// RAM (cache, ray and direction memories) and LUT RAM (FIFOs), no latch anywhere.
+#[test]
+fn processing_element_synthesizes_without_latches() {
+    let stat = synth_ecp5("processing_element");
+    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
+        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
+    }
+    assert_eq!(cells(&stat, "MULT18X18D"), 16, "{stat}");
+    assert!(cells(&stat, "DP16KD") >= 24, "{stat}");
+    assert!(cells(&stat, "TRELLIS_DPR16X4") > 0, "{stat}");
+    println!("{stat}");
+}

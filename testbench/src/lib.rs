@@ -17,7 +17,7 @@
 //!   one patch at a time, `T_c` cycles per load, requests answered in order.
 //! - [`intersection`]: the intersection unit's bundle setup, paced patch stream and readout,
 //!   with the bit-true model's answer ([`intersection::model_bundle`]).
-//! - [`replay`]: rung 4 of the equivalence ladder (`DESIGN.md` §4): the ports recorded during a
+//! - [`replay`]: rung 4 of the equivalence ladder (the project's equivalence ladder, rung 4): the ports recorded during a
 //!   rust-hdl run are replayed against the block's exported Verilog under Icarus Verilog (or
 //!   Verilator), which must reproduce every output bit-exactly.
 //!

@@ -2,7 +2,7 @@
 //!
 //! rust-hdl's Verilog generator and its simulator disagree on expression widths in known cases
 //! (`/work/shared/rust-hdl-notes.md` §1), so a block is only done when its exported Verilog
-//! reproduces the rust-hdl simulation bit-exactly (`DESIGN.md` §4). This module checks that on
+//! reproduces the rust-hdl simulation bit-exactly (rung 4 of the equivalence ladder). This module checks that on
 //! any block, without hand-written port lists:
 //!
 //! 1. [`Driver::record_ports`](crate::Driver::record_ports) finds the block's top-level ports
