@@ -17,8 +17,12 @@
 //!   one patch at a time, `T_c` cycles per load, requests answered in order.
 //! - [`intersection`]: the intersection unit's bundle setup, paced patch stream and readout,
 //!   with the bit-true model's answer ([`intersection::model_bundle`]).
-//! - [`replay`]: rung 4 of the equivalence ladder (the project's equivalence ladder, rung 4): the ports recorded during a
-//!   rust-hdl run are replayed against the block's exported Verilog under Icarus Verilog (or
+//! - [`pe`]: the host's side of a whole source on the processing element (directions, commands
+//!   with sector drains, host memory, readout), the PE's bit-true model and the stream-protocol
+//!   check on a VCD ([`pe::check_protocol`]).
+//! - [`waves`]: reading a VCD back (signals sampled per cycle) and the signals of a `.gtkw`.
+//! - [`replay`]: rung 4 of the equivalence ladder: the ports recorded during a rust-hdl
+//!   run are replayed against the block's exported Verilog under Icarus Verilog (or
 //!   Verilator), which must reproduce every output bit-exactly.
 //!
 //! Every fallible operation returns [`Result`] with the crate's [`Error`], whose `Debug` output

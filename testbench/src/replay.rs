@@ -1,7 +1,7 @@
 //! Rung 4 of the equivalence ladder: replay a rust-hdl run against the block's exported Verilog.
 //!
 //! rust-hdl's Verilog generator and its simulator disagree on expression widths in known cases
-//! (`/work/shared/rust-hdl-notes.md` §1), so a block is only done when its exported Verilog
+//! (rust-hdl 0.46), so a block is only done when its exported Verilog
 //! reproduces the rust-hdl simulation bit-exactly (rung 4 of the equivalence ladder). This module checks that on
 //! any block, without hand-written port lists:
 //!
