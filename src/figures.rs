@@ -17,6 +17,12 @@
 //! on the number of threads.
 //!
 //! [`run`] writes `figures.csv` and one SVG per figure into [`FigureOptions::out`].
+//!
+//! With [`FigureOptions::cosim_sources`] above zero, [`run`] also co-simulates a sample of the
+//! sources on the RTL processing element for every host memory load time of
+//! [`FigureOptions::tcs`], without and with the PE's patch cache, and writes the cycle counts
+//! beside the speedup the paper's Eqs. 10–11 predict ([`cycles`]: `cycles.csv` and the
+//! `cycles_*.svg` plots).
 
 use crate::counters::Counters;
 use crate::grid::GridParams;
@@ -32,6 +38,8 @@ use rayon::prelude::*;
 use std::fmt;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
+
+pub mod cycles;
 
 /// The techniques measured, in row order.
 pub const METHODS: [Method; 3] = [Method::Conventional, Method::Stochastic, Method::Deterministic];
@@ -70,6 +78,13 @@ pub struct FigureOptions {
     pub shells: ShellParams,
     /// Show a progress bar on standard error.
     pub progress: bool,
+    /// Sources co-simulated on the processing element per segment length: the first seed's
+    /// scene, `source_patches(count, cosim_sources)`. Zero skips the cycle-accurate figures.
+    pub cosim_sources: usize,
+    /// Host memory load times `T_c` (cycles per patch) co-simulated.
+    pub tcs: Vec<u32>,
+    /// Lines of the PE's patch cache in the runs with the cache (a power of two up to 4096).
+    pub cache_lines: u32,
 }
 
 impl FigureOptions {
@@ -112,6 +127,9 @@ impl FigureOptions {
             bail!("cells per axis must be at least 1");
         }
         self.shells.validate().map_err(|e| anyhow!("{e}"))?;
+        if self.cosim_sources > 0 {
+            cycles::validate(self)?;
+        }
         Ok(())
     }
 }
@@ -166,6 +184,13 @@ pub struct FigureReport {
     pub disagreements: u64,
     /// Wall time of the measurement.
     pub elapsed: Duration,
+    /// The co-simulated cycle counts (empty when [`FigureOptions::cosim_sources`] is 0), in the
+    /// order of [`cycles::measure`].
+    pub cycles: Vec<cycles::CycleRow>,
+    /// Co-simulation runs (source × technique × `T_c` × cache setting).
+    pub cosim_runs: usize,
+    /// Wall time of the co-simulations.
+    pub cosim_elapsed: Duration,
 }
 
 impl fmt::Display for FigureReport {
@@ -221,6 +246,16 @@ impl fmt::Display for FigureReport {
                 r.mean_sectors,
                 r.mean_shells
             )?;
+        }
+        if !self.cycles.is_empty() {
+            writeln!(
+                f,
+                "co-simulation: {} sources per length, {} runs in {:.1} s; per-source means:",
+                o.cosim_sources,
+                self.cosim_runs,
+                self.cosim_elapsed.as_secs_f64()
+            )?;
+            cycles::write_table(f, &self.cycles)?;
         }
         if self.disagreements > 0 {
             writeln!(
@@ -382,7 +417,30 @@ pub fn run(opts: &FigureOptions) -> Result<FigureReport> {
     for (name, svg) in figure_svgs(opts, &rows)? {
         write(name, svg)?;
     }
-    Ok(FigureReport { options: opts.clone(), rows, files, scenes, jobs, disagreements, elapsed })
+    let (cycle_rows, cosim_runs, cosim_elapsed) = if opts.cosim_sources > 0 {
+        let start = Instant::now();
+        let (cycle_rows, runs) = cycles::measure_runs(opts)?;
+        let cosim_elapsed = start.elapsed();
+        write("cycles.csv", cycles::csv(&cycle_rows))?;
+        for (name, svg) in cycles::svgs(opts, &cycle_rows)? {
+            write(name, svg)?;
+        }
+        (cycle_rows, runs, cosim_elapsed)
+    } else {
+        (Vec::new(), 0, Duration::ZERO)
+    };
+    Ok(FigureReport {
+        options: opts.clone(),
+        rows,
+        files,
+        scenes,
+        jobs,
+        disagreements,
+        elapsed,
+        cycles: cycle_rows,
+        cosim_runs,
+        cosim_elapsed,
+    })
 }
 
 /// Formats a number for the CSV: at most 6 decimals, no trailing zeros.
@@ -458,11 +516,21 @@ struct Series {
     marker: Marker,
     /// Text drawn next to each point (empty: none).
     point_labels: Vec<String>,
+    /// Draw the line dashed.
+    dashed: bool,
 }
 
 impl Series {
     fn new(label: impl Into<String>, points: Vec<(f64, f64)>, color: RGBColor, marker: Marker) -> Series {
-        Series { label: label.into(), points, color, line: true, marker, point_labels: Vec::new() }
+        Series {
+            label: label.into(),
+            points,
+            color,
+            line: true,
+            marker,
+            point_labels: Vec::new(),
+            dashed: false,
+        }
     }
 }
 
@@ -478,12 +546,17 @@ enum XAxis {
 /// A chart: title, axis labels, series. The y axis is logarithmic when every value is positive
 /// and they span a factor of 10 or more, linear otherwise.
 struct Chart {
+    /// Width and height in pixels.
+    size: (u32, u32),
     title: String,
     x_label: String,
     y_label: String,
     x: XAxis,
     series: Vec<Series>,
 }
+
+/// The size of a chart with a few series, in pixels.
+const CHART_SIZE: (u32, u32) = (960, 640);
 
 /// Formats a tick value compactly (at most 4 significant digits; powers of ten as `1e6`).
 fn tick_label(v: f64) -> String {
@@ -578,6 +651,7 @@ fn set_legend<'a, DB: DrawingBackend + 'a>(
     color: RGBColor,
     line: bool,
     marker: Marker,
+    dashed: bool,
 ) {
     let path_style =
         ShapeStyle { color: color.mix(if line { 1.0 } else { 0.0 }), filled: false, stroke_width: 2 };
@@ -585,6 +659,11 @@ fn set_legend<'a, DB: DrawingBackend + 'a>(
         EmptyElement::at((x, y)) + PathElement::new(vec![(-10, 0), (10, 0)], path_style)
     };
     match marker {
+        Marker::None if dashed => anno.legend(move |(x, y)| {
+            EmptyElement::at((x, y))
+                + PathElement::new(vec![(-12, 0), (-4, 0)], path_style)
+                + PathElement::new(vec![(4, 0), (12, 0)], path_style)
+        }),
         Marker::None => anno.legend(path),
         Marker::Circle => anno.legend(move |p| path(p) + Circle::new((0, 0), 4, color.filled())),
         Marker::Triangle => anno.legend(move |p| path(p) + TriangleMarker::new((0, 0), 5, color.filled())),
@@ -600,6 +679,8 @@ fn render(chart: &Chart) -> Result<String> {
     let (ymin, ymax) = ys.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &y| (a.min(y), b.max(y)));
     let (ymin, ymax) = if ys.is_empty() { (0.0, 1.0) } else { (ymin, ymax) };
     let log_y = ymin > 0.0 && ymax / ymin >= 10.0;
+    // Headroom for the legend: more for a long legend (unchanged up to four entries).
+    let legend_room = (chart.series.len() as f64 / 4.0).max(1.0);
 
     // Transformed coordinates: log₁₀ y on a log axis, log₂ x on a log₂ axis.
     let ty = |y: f64| if log_y { y.log10() } else { y };
@@ -611,12 +692,12 @@ fn render(chart: &Chart) -> Result<String> {
     // y range with headroom for the legend.
     let (y_lo, y_hi, y_bold, y_light) = if log_y {
         let lo = ymin / 1.5;
-        let hi = ymax * 3.0;
+        let hi = ymax * 3f64.powf(legend_room);
         let (b, l) = log_ticks(lo, hi);
         (lo.log10(), hi.log10(), b, l)
     } else {
         let lo = if ymin >= 0.0 { 0.0 } else { ymin - 0.05 * (ymax - ymin) };
-        let hi = if ymax > lo { ymax + 0.35 * (ymax - lo) } else { lo + 1.0 };
+        let hi = if ymax > lo { ymax + 0.35 * legend_room * (ymax - lo) } else { lo + 1.0 };
         (lo, hi, linear_ticks(lo, hi), Vec::new())
     };
     let (x_lo, x_hi, x_bold) = match &chart.x {
@@ -646,7 +727,7 @@ fn render(chart: &Chart) -> Result<String> {
 
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (960, 640)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, chart.size).into_drawing_area();
         let err = |e: &dyn fmt::Display| anyhow!("drawing {:?}: {e}", chart.title);
         root.fill(&WHITE).map_err(|e| err(&e))?;
         let mut ctx = ChartBuilder::on(&root)
@@ -686,10 +767,14 @@ fn render(chart: &Chart) -> Result<String> {
             let fill = color.filled();
             let marker = s.marker;
             if s.line {
-                let anno =
-                    ctx.draw_series(LineSeries::new(data.iter().copied(), stroke)).map_err(|e| err(&e))?;
+                let anno = if s.dashed {
+                    ctx.draw_series(DashedLineSeries::new(data.iter().copied(), 9, 6, stroke))
+                        .map_err(|e| err(&e))?
+                } else {
+                    ctx.draw_series(LineSeries::new(data.iter().copied(), stroke)).map_err(|e| err(&e))?
+                };
                 if marker == Marker::None {
-                    set_legend(anno.label(s.label.as_str()), color, true, marker);
+                    set_legend(anno.label(s.label.as_str()), color, true, marker, s.dashed);
                 }
             }
             let marker_anno = match marker {
@@ -712,7 +797,7 @@ fn render(chart: &Chart) -> Result<String> {
                 ),
             };
             if let Some(anno) = marker_anno {
-                set_legend(anno.label(s.label.as_str()), color, s.line, marker);
+                set_legend(anno.label(s.label.as_str()), color, s.line, marker, s.dashed);
             }
             if !s.point_labels.is_empty() {
                 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -765,6 +850,7 @@ fn figure_svgs(opts: &FigureOptions, rows: &[Row]) -> Result<Vec<(&'static str, 
             .collect()
     };
     let chart = |title: &str, y_label: &str, series: Vec<Series>| Chart {
+        size: CHART_SIZE,
         title: format!("{title} ({workload})"),
         x_label: x_label.clone(),
         y_label: y_label.to_string(),
@@ -868,6 +954,7 @@ fn k1_chart(rows: &[Row], workload: &str) -> Result<Chart> {
     marks.line = false;
     marks.point_labels = labels;
     Ok(Chart {
+        size: CHART_SIZE,
         title: format!("Fig. 7: K₁(S) with the measured S ({workload})"),
         x_label: "S (fraction of rays leaving a shell)".into(),
         y_label: "K₁(S)".into(),
@@ -892,6 +979,9 @@ mod tests {
             grid: GridParams::default(),
             shells: ShellParams::default(),
             progress: false,
+            cosim_sources: 0,
+            tcs: vec![1, 16],
+            cache_lines: 1024,
         }
     }
 

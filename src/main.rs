@@ -283,6 +283,17 @@ struct FiguresArgs {
     /// No progress bar.
     #[arg(long)]
     quiet: bool,
+    /// Sources per segment length co-simulated on the processing element for the cycle figures
+    /// (of the first seed's scene, spread over its patches); 0 skips them.
+    #[arg(long, default_value_t = 2, allow_negative_numbers = true)]
+    cosim_sources: usize,
+    /// Host memory load times T_c (cycles per patch) co-simulated, comma separated; each runs
+    /// without and with the patch cache.
+    #[arg(long = "tc", value_delimiter = ',', default_value = "1,4,16,64", allow_hyphen_values = true)]
+    tcs: Vec<u32>,
+    /// Lines of the patch cache in the co-simulations with the cache (a power of two up to 4096).
+    #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
+    cache_lines: u32,
     #[command(flatten)]
     tune: TuneArgs,
 }
@@ -390,6 +401,9 @@ fn run(cli: Cli) -> Result<()> {
                 grid: a.tune.grid()?,
                 shells: a.tune.shells()?,
                 progress: !a.quiet,
+                cosim_sources: a.cosim_sources,
+                tcs: a.tcs,
+                cache_lines: a.cache_lines,
             };
             let report = figures::run(&opts)?;
             println!("{report}");

@@ -471,9 +471,17 @@ fn cli_figures_writes_csv_and_svgs() {
         "100",
         "--lengths",
         "8,32",
+        "--cosim-sources",
+        "1",
+        "--tc",
+        "1,4",
         "--quiet",
     ];
     ok(&args);
+    let cycles = std::fs::read_to_string(out.join("cycles.csv")).expect("no cycles.csv");
+    assert!(cycles.starts_with("length,method,tc,cache_lines,sources,cycles,"), "cycles.csv:\n{cycles}");
+    // 2 lengths × 2 cache settings × 2 T_c × 3 techniques.
+    assert_eq!(cycles.lines().count(), 1 + 2 * 2 * 2 * 3, "cycles.csv:\n{cycles}");
     let csv = std::fs::read_to_string(out.join("figures.csv")).expect("no figures.csv");
     let lines: Vec<&str> = csv.lines().collect();
     assert!(
@@ -498,6 +506,8 @@ fn cli_figures_writes_csv_and_svgs() {
         "fig10_cells_traversed.svg",
         "fig11_intersection_computations.svg",
         "fig13_adlc.svg",
+        "cycles_speedup_shared.svg",
+        "cycles_efficiency_shared.svg",
     ] {
         let body = std::fs::read_to_string(out.join(svg)).unwrap_or_else(|e| panic!("{svg}: {e}"));
         assert!(body.contains("<svg"), "{svg} is not an SVG");
@@ -521,6 +531,11 @@ fn cli_figures_rejects_bad_values() {
     t(&["--lengths", "8,x"], &["--lengths", "x"]);
     t(&["--cells-per-segment", "0"], &["--cells-per-segment"]);
     t(&["--max-sector", "0"], &["--max-sector"]);
+    t(&["--tc", "1,0"], &["T_c", "0"]);
+    t(&["--tc", "4,4"], &["T_c", "4"]);
+    t(&["--tc", "x"], &["--tc", "x"]);
+    t(&["--cache-lines", "1000"], &["cache", "1000"]);
+    fails(&["figures", "--out", o, "--seeds", "1", "--rays", "2048", "--count", "100", "--quiet"], &["2048"]);
     fails(&["figures", "--quiet"], &["--out"]);
     // --out naming an existing file.
     let file = dir.join("a-file");

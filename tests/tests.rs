@@ -1,5 +1,6 @@
 mod cli;
 mod cosim;
+mod figures;
 mod hardware;
 mod scene_loader;
 mod tracers;

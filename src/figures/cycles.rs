@@ -1,0 +1,780 @@
+//! The paper's hardware claim, measured: a sample of the Section 5 workload co-simulated on the
+//! RTL processing element ([`crate::cosim`]), cycle by cycle, for every host memory load time
+//! `T_c` of [`FigureOptions::tcs`], without and with the PE's patch cache, beside the speedup
+//! that Eqs. 10–11 predict from the measured `S` and ADLC.
+//!
+//! # Sample
+//!
+//! For the `i`-th segment length, the scene of the first seed ([`scene_seed`]`(i, 0)`, the
+//! golden part's first scene) and the sources [`source_patches`]`(count,
+//! cosim_sources)`; each source's bundle (the golden part's ray set and ray count) is scheduled
+//! by the three techniques on the bit-true backend ([`Prepared::schedule`]) and every schedule is
+//! co-simulated for every `T_c`, once on the shared host memory (no cache) and once behind a
+//! patch cache of [`FigureOptions::cache_lines`] lines. Every run checks every hit against the
+//! bit-true model ([`crate::cosim::run`]); a mismatch fails the command.
+//!
+//! # Speedups and predictions
+//!
+//! The measured speedup of a shelling technique is the conventional technique's mean cycles
+//! over its own, for the same `T_c`, in three pairings ([`Scenario`]): both on the shared memory;
+//! both with the cache; and the pairing of the paper's cache remark (§4: "when a high speed
+//! cache memory is allowed for each PE and the next patch can be loaded immediately from that
+//! memory, the speedup factor will be the ratio of `T_c` over `T_λ`"): shelling with the cache
+//! against the conventional technique on the shared memory. The predictions ([`prediction`])
+//! use `T_λ = 1` (the intersection unit tests one ray–patch pair per clock), the mean measured
+//! `S` ([`crate::trace::ShellStats::leaving_fraction`]) and the mean true ADLC of the
+//! co-simulated sources (INTERPRETATION.md, "Eqs. 10–11 against the co-simulation").
+
+use super::{
+    csv_num, scene_seed, source_patches, tick_label, Chart, FigureOptions, Marker, Series, XAxis, METHODS,
+};
+use crate::cosim::{self, CosimConfig};
+use crate::run::{Prepared, Scheduled};
+use crate::scene;
+use crate::trace::Method;
+use anyhow::{anyhow, bail, Result};
+use plotters::style::RGBColor;
+use rayon::prelude::*;
+use shelling_testbench::pe::{CacheConfig, ModelCounts, PeCounters, MAX_RAYS as PE_MAX_RAYS};
+use std::fmt;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// `T_λ`: cycles per ray–patch test of the intersection unit (one test per clock).
+pub const T_LAMBDA: f64 = 1.0;
+
+/// Checks the co-simulation options (called by [`FigureOptions::validate`] when
+/// `cosim_sources > 0`).
+pub(super) fn validate(o: &FigureOptions) -> Result<()> {
+    if o.cosim_sources > o.count {
+        bail!(
+            "cosim sources ({}) cannot exceed the number of segments per scene ({})",
+            o.cosim_sources,
+            o.count
+        );
+    }
+    if o.rays > PE_MAX_RAYS {
+        bail!(
+            "the processing element holds at most {PE_MAX_RAYS} rays; co-simulating {} is not possible",
+            o.rays
+        );
+    }
+    if o.tcs.is_empty() {
+        bail!("at least one T_c is needed for the co-simulation");
+    }
+    for (i, &tc) in o.tcs.iter().enumerate() {
+        if tc == 0 {
+            bail!("T_c must be at least 1 cycle per patch, got 0");
+        }
+        if o.tcs[..i].contains(&tc) {
+            bail!("T_c {tc} is listed twice");
+        }
+    }
+    CacheConfig { lines: Some(o.cache_lines) }
+        .check()
+        .map_err(|e| anyhow!("cache lines: {}", e.message()))?;
+    Ok(())
+}
+
+/// The PE's counters summed over the co-simulated sources of one row.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CycleTotals {
+    pub cycles: u64,
+    pub intersection_busy_cycles: u64,
+    pub stall_cycles: u64,
+    pub drain_cycles: u64,
+    /// Patches the PE's loader loaded (cache hits included).
+    pub patch_loads: u64,
+    /// Patches the host memory delivered.
+    pub memory_loads: u64,
+    pub cache_hits: u64,
+    /// Loaded patches the screener passed.
+    pub passed: u64,
+    /// Ray slots of the passed patches' jobs: the cycles the intersection unit issues, live rays
+    /// (`tests`) and rays retired before the job reached it (bubbles).
+    pub ray_slots: u64,
+    /// Ray–patch tests of live rays.
+    pub tests: u64,
+    /// Sector changes (each drains the PE).
+    pub sectors: u64,
+    /// Σ over sources of `max(memory_loads · T_c, patch_loads, tests · T_λ)`: the cycles the host
+    /// memory, the loader (one patch per clock) or the intersection unit need at the least.
+    pub bound_cycles: u64,
+}
+
+impl CycleTotals {
+    fn add(&mut self, h: &PeCounters, m: &ModelCounts, tc: u32) {
+        self.cycles += h.cycles;
+        self.intersection_busy_cycles += h.intersection_busy_cycles;
+        self.stall_cycles += h.stall_cycles;
+        self.drain_cycles += h.drain_cycles;
+        self.patch_loads += h.patch_loads;
+        self.memory_loads += h.memory_loads;
+        self.cache_hits += h.cache_hits;
+        self.passed += h.passed;
+        self.ray_slots += m.ray_slots;
+        self.tests += h.tests;
+        self.sectors += m.sectors;
+        self.bound_cycles += (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests);
+    }
+}
+
+/// One technique at one segment length, `T_c` and cache setting.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CycleRow {
+    pub length: f64,
+    pub method: Method,
+    pub tc: u32,
+    /// The patch cache's lines; `None`: no cache (the shared host memory).
+    pub cache: Option<u32>,
+    /// Sources co-simulated.
+    pub sources: usize,
+    pub total: CycleTotals,
+    /// Mean over the sources of the measured `S` (shelling techniques only).
+    pub s_measured: Option<f64>,
+    /// Mean over the sources of the true ADLC.
+    pub adlc_true: f64,
+}
+
+impl CycleRow {
+    fn mean(&self, v: u64) -> f64 {
+        v as f64 / self.sources.max(1) as f64
+    }
+
+    pub fn mean_cycles(&self) -> f64 {
+        self.mean(self.total.cycles)
+    }
+
+    /// Intersection busy cycles over all cycles (of all the row's sources together).
+    pub fn pipeline_efficiency(&self) -> f64 {
+        if self.total.cycles == 0 {
+            0.0
+        } else {
+            self.total.intersection_busy_cycles as f64 / self.total.cycles as f64
+        }
+    }
+
+    /// Measured cycles over the bound of [`CycleTotals::bound_cycles`].
+    pub fn overhead(&self) -> f64 {
+        self.total.cycles as f64 / self.total.bound_cycles.max(1) as f64
+    }
+}
+
+/// Which two runs a speedup compares.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scenario {
+    /// Both techniques on the shared host memory, no cache (Eq. 10).
+    Shared,
+    /// Both techniques behind the patch cache.
+    Cached,
+    /// The paper's cache remark (Eq. 11): shelling behind the cache, the conventional technique
+    /// on the shared host memory.
+    PaperCache,
+}
+
+/// The branch of Eq. 10.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Branch {
+    /// `ADLC·T_λ ≤ T_c`: patches arrive slower than a bundle consumes them; `SF = S + ADLC`.
+    Memory,
+    /// `ADLC·T_λ > T_c`: the intersection unit is the bottleneck; `SF = (1 + S/ADLC)·T_c/T_λ`.
+    Compute,
+}
+
+impl Branch {
+    pub fn name(self) -> &'static str {
+        match self {
+            Branch::Memory => "memory",
+            Branch::Compute => "compute",
+        }
+    }
+}
+
+/// A speedup the paper's model predicts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Prediction {
+    pub value: f64,
+    pub branch: Branch,
+}
+
+/// The paper's predicted speedup of shelling over the conventional technique for a scenario,
+/// from the measured `S` and ADLC at `T_c` (and [`T_LAMBDA`]):
+///
+/// * [`Scenario::Shared`]: Eq. 10, the branch chosen by `ADLC·T_λ > T_c`;
+/// * [`Scenario::PaperCache`]: Eq. 10's compute branch `(1 + S/ADLC)·T_c/T_λ` (the cache delivers
+///   shelling's next patch "immediately", while the conventional technique still waits `T_c`
+///   per patch), which is Eq. 11's `T_c/T_λ` at `S = 0`;
+/// * [`Scenario::Cached`]: none (the model has no cache for the conventional technique).
+///
+/// `None` too where the model does not apply (`S ∉ [0, 1)` or no hit, ADLC = 0).
+pub fn prediction(scenario: Scenario, s: f64, adlc: f64, tc: u32) -> Option<Prediction> {
+    let tc = tc as f64;
+    match scenario {
+        Scenario::Shared => {
+            let value = crate::model::speedup(s, adlc, tc, T_LAMBDA).ok()?;
+            let branch = if adlc * T_LAMBDA > tc { Branch::Compute } else { Branch::Memory };
+            Some(Prediction { value, branch })
+        }
+        Scenario::PaperCache => {
+            // Checks S and ADLC as Eq. 10 does.
+            crate::model::speedup(s, adlc, tc, T_LAMBDA).ok()?;
+            Some(Prediction { value: (1.0 + s / adlc) * tc / T_LAMBDA, branch: Branch::Compute })
+        }
+        Scenario::Cached => None,
+    }
+}
+
+/// A measured speedup of a shelling technique with the paper's prediction beside it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Speedup {
+    pub length: f64,
+    pub method: Method,
+    pub tc: u32,
+    pub scenario: Scenario,
+    /// Conventional mean cycles over the shelling technique's.
+    pub measured: f64,
+    pub predicted: Option<Prediction>,
+}
+
+fn find(rows: &[CycleRow], length: f64, method: Method, tc: u32, cached: bool) -> Option<&CycleRow> {
+    rows.iter()
+        .find(|r| r.length == length && r.method == method && r.tc == tc && r.cache.is_some() == cached)
+}
+
+/// The speedups of every shelling row, in row order, for each scenario it takes part in
+/// (a row without the cache in [`Scenario::Shared`], one with it in [`Scenario::Cached`] and
+/// [`Scenario::PaperCache`]).
+pub fn speedups(rows: &[CycleRow]) -> Vec<Speedup> {
+    let mut out = Vec::new();
+    for r in rows.iter().filter(|r| r.method != Method::Conventional) {
+        let scenarios: &[(Scenario, bool)] = if r.cache.is_some() {
+            &[(Scenario::Cached, true), (Scenario::PaperCache, false)]
+        } else {
+            &[(Scenario::Shared, false)]
+        };
+        for &(scenario, conv_cached) in scenarios {
+            let Some(conv) = find(rows, r.length, Method::Conventional, r.tc, conv_cached) else {
+                continue;
+            };
+            let predicted = r.s_measured.and_then(|s| prediction(scenario, s, r.adlc_true, r.tc));
+            out.push(Speedup {
+                length: r.length,
+                method: r.method,
+                tc: r.tc,
+                scenario,
+                measured: conv.mean_cycles() / r.mean_cycles().max(f64::MIN_POSITIVE),
+                predicted,
+            });
+        }
+    }
+    out
+}
+
+fn speedup_of(sp: &[Speedup], r: &CycleRow, scenario: Scenario) -> Option<Speedup> {
+    sp.iter()
+        .find(|s| s.length == r.length && s.method == r.method && s.tc == r.tc && s.scenario == scenario)
+        .copied()
+}
+
+/// One co-simulation: a schedule, a technique, a `T_c` and a cache setting.
+struct Job {
+    source: usize,
+    method: usize,
+    tc: u32,
+    cache: Option<u32>,
+    /// Rough cycle estimate (for the order and the progress bar).
+    cost: u64,
+}
+
+fn estimate(s: &Scheduled, tc: u32, cache: Option<u32>, patches: usize) -> u64 {
+    let loads = s.trace.counters.patches_read_before_screening;
+    let tests = s.trace.counters.intersection_computations;
+    let tc = tc as u64;
+    let memory = match cache {
+        None => loads * tc,
+        Some(_) => loads.min(patches as u64) * tc,
+    };
+    memory.max(tests) + loads + 1
+}
+
+/// Co-simulates the sample; returns one row per length (in the order given), cache setting (off,
+/// then on), `T_c` (in the order given) and technique (in [`METHODS`] order). Writes nothing.
+pub fn measure(opts: &FigureOptions) -> Result<Vec<CycleRow>> {
+    Ok(measure_runs(opts)?.0)
+}
+
+/// [`measure`] and the number of co-simulation runs.
+pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize)> {
+    opts.validate()?;
+    if opts.cosim_sources == 0 {
+        return Ok((Vec::new(), 0));
+    }
+    let scenes: Vec<Prepared> = (0..opts.lengths.len())
+        .into_par_iter()
+        .map(|i| {
+            let (length, seed) = (opts.lengths[i], scene_seed(i, 0));
+            let sc = scene::generate(opts.count, length, seed, scene::PAPER_WORLD)
+                .map_err(|e| anyhow!("generating the scene of length {length}, seed {seed}: {e}"))?;
+            Ok(Prepared::new(sc, opts.grid))
+        })
+        .collect::<Result<_>>()?;
+    let sources: Vec<(usize, usize)> = (0..opts.lengths.len())
+        .flat_map(|i| source_patches(opts.count, opts.cosim_sources).into_iter().map(move |k| (i, k)))
+        .collect();
+    let schedules: Vec<Vec<Scheduled>> = sources
+        .par_iter()
+        .map(|&(i, k)| {
+            let what = || format!("source patch {k} of the scene of length {}", opts.lengths[i]);
+            let bundle =
+                scenes[i].patch_bundle(k, opts.ray_set, opts.rays).map_err(|e| anyhow!("{}: {e}", what()))?;
+            METHODS
+                .iter()
+                .map(|&m| {
+                    scenes[i].schedule(m, &bundle, &opts.shells).map_err(|e| anyhow!("{} ({m}): {e}", what()))
+                })
+                .collect::<Result<Vec<_>>>()
+        })
+        .collect::<Result<_>>()?;
+
+    let configs: Vec<(u32, Option<u32>)> = [None, Some(opts.cache_lines)]
+        .into_iter()
+        .flat_map(|c| opts.tcs.iter().map(move |&tc| (tc, c)))
+        .collect();
+    let mut jobs: Vec<Job> = Vec::new();
+    for (source, sched) in schedules.iter().enumerate() {
+        for (method, s) in sched.iter().enumerate() {
+            for &(tc, cache) in &configs {
+                let cost = estimate(s, tc, cache, opts.count);
+                jobs.push(Job { source, method, tc, cache, cost });
+            }
+        }
+    }
+    // Longest first, handed out one at a time: the workers finish close together.
+    let mut order: Vec<usize> = (0..jobs.len()).collect();
+    order.sort_by_key(|&j| std::cmp::Reverse(jobs[j].cost));
+
+    let total_cost: u64 = jobs.iter().map(|j| j.cost).sum();
+    let bar = if opts.progress {
+        let b = indicatif::ProgressBar::new(total_cost);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "co-simulating {bar:40} {msg} runs [{elapsed_precise}, eta {eta}]",
+        ) {
+            b.set_style(style);
+        }
+        b.set_message(format!("0/{}", jobs.len()));
+        b
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
+
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let failed = AtomicBool::new(false);
+    let results: Mutex<Vec<Option<Result<(PeCounters, ModelCounts)>>>> =
+        Mutex::new((0..jobs.len()).map(|_| None).collect());
+    rayon::scope(|scope| {
+        for _ in 0..rayon::current_num_threads() {
+            scope.spawn(|_| loop {
+                let n = next.fetch_add(1, Ordering::Relaxed);
+                if n >= order.len() || failed.load(Ordering::Relaxed) {
+                    break;
+                }
+                let j = &jobs[order[n]];
+                let sched = &schedules[j.source][j.method];
+                let mut reported = 0u64;
+                let config = CosimConfig { tc: j.tc, cache: j.cache, vcd: None };
+                let run = cosim::run(sched, &config, |d, t| {
+                    let now = j.cost * d as u64 / t.max(1) as u64;
+                    if now > reported {
+                        bar.inc(now - reported);
+                        reported = now;
+                    }
+                });
+                bar.inc(j.cost.saturating_sub(reported));
+                bar.set_message(format!("{}/{}", done.fetch_add(1, Ordering::Relaxed) + 1, jobs.len()));
+                let (i, k) = sources[j.source];
+                let result = run.map(|c| (c.hardware, c.model)).map_err(|e| {
+                    failed.store(true, Ordering::Relaxed);
+                    anyhow!(
+                        "co-simulating source patch {k} of the scene of length {} ({}, T_c {}, cache {:?}): {e}",
+                        opts.lengths[i],
+                        METHODS[j.method],
+                        j.tc,
+                        j.cache
+                    )
+                });
+                if let Ok(mut r) = results.lock() {
+                    r[order[n]] = Some(result);
+                }
+            });
+        }
+    });
+    bar.finish_and_clear();
+    let results = results.into_inner().map_err(|_| anyhow!("a co-simulation worker panicked"))?;
+    let mut counters: Vec<(PeCounters, ModelCounts)> = Vec::with_capacity(jobs.len());
+    for r in results {
+        match r {
+            Some(Ok(c)) => counters.push(c),
+            Some(Err(e)) => return Err(e),
+            None => {}
+        }
+    }
+    if counters.len() != jobs.len() {
+        bail!("{} of {} co-simulation runs did not finish", jobs.len() - counters.len(), jobs.len());
+    }
+
+    // Sum in a fixed order.
+    let mut rows = Vec::new();
+    for (i, &length) in opts.lengths.iter().enumerate() {
+        for cache in [None, Some(opts.cache_lines)] {
+            for &tc in &opts.tcs {
+                for (m, &method) in METHODS.iter().enumerate() {
+                    let mut total = CycleTotals::default();
+                    let (mut n, mut s_sum, mut adlc_sum) = (0usize, 0.0, 0.0);
+                    for (j, job) in jobs.iter().enumerate() {
+                        if sources[job.source].0 != i || job.method != m || job.tc != tc || job.cache != cache
+                        {
+                            continue;
+                        }
+                        total.add(&counters[j].0, &counters[j].1, tc);
+                        let trace = &schedules[job.source][m].trace;
+                        s_sum += trace.stats.leaving_fraction();
+                        adlc_sum += trace.counters.adlc_true;
+                        n += 1;
+                    }
+                    let nf = n.max(1) as f64;
+                    rows.push(CycleRow {
+                        length,
+                        method,
+                        tc,
+                        cache,
+                        sources: n,
+                        total,
+                        s_measured: (method != Method::Conventional).then(|| s_sum / nf),
+                        adlc_true: adlc_sum / nf,
+                    });
+                }
+            }
+        }
+    }
+    Ok((rows, jobs.len()))
+}
+
+/// The CSV header of `cycles.csv`.
+pub const CSV_HEADER: &str = "length,method,tc,cache_lines,sources,cycles,intersection_busy_cycles,\
+pipeline_efficiency,stall_cycles,drain_cycles,sectors,patch_loads,memory_loads,cache_hits,passed,ray_slots,\
+tests,bound_cycles,s_measured,adlc_true,speedup,speedup_vs_shared_conventional,predicted_speedup,predicted_branch";
+
+/// The text of `cycles.csv`: per-source means (pipeline efficiency over all cycles of the row);
+/// `cache_lines` 0 is the shared memory without cache. `speedup` is the conventional technique's
+/// cycles (same `T_c` and cache setting) over the row's; `speedup_vs_shared_conventional` the
+/// conventional technique's without the cache over the row's; `predicted_speedup` is Eq. 10 for
+/// rows without the cache and Eq. 10's compute branch (Eq. 11) for rows with it, to be read
+/// beside `speedup_vs_shared_conventional` ([`prediction`]).
+pub fn csv(rows: &[CycleRow]) -> String {
+    let sp = speedups(rows);
+    let mut out = format!("{CSV_HEADER}\n");
+    for r in rows {
+        let t = &r.total;
+        let mut cols = vec![
+            csv_num(r.length),
+            r.method.name().to_string(),
+            r.tc.to_string(),
+            r.cache.unwrap_or(0).to_string(),
+            r.sources.to_string(),
+        ];
+        for v in [t.cycles, t.intersection_busy_cycles] {
+            cols.push(csv_num(r.mean(v)));
+        }
+        cols.push(csv_num(r.pipeline_efficiency()));
+        for v in [
+            t.stall_cycles,
+            t.drain_cycles,
+            t.sectors,
+            t.patch_loads,
+            t.memory_loads,
+            t.cache_hits,
+            t.passed,
+            t.ray_slots,
+            t.tests,
+            t.bound_cycles,
+        ] {
+            cols.push(csv_num(r.mean(v)));
+        }
+        cols.push(r.s_measured.map(csv_num).unwrap_or_default());
+        cols.push(csv_num(r.adlc_true));
+        let (same, paper) = if r.cache.is_some() {
+            (speedup_of(&sp, r, Scenario::Cached), speedup_of(&sp, r, Scenario::PaperCache))
+        } else {
+            let s = speedup_of(&sp, r, Scenario::Shared);
+            (s, s)
+        };
+        let conventional = r.method == Method::Conventional;
+        let num = |s: Option<Speedup>| s.map(|s| csv_num(s.measured)).unwrap_or_default();
+        cols.push(if conventional { "1".into() } else { num(same) });
+        cols.push(if conventional && r.cache.is_none() { "1".into() } else { num(paper) });
+        let pred = paper.and_then(|s| s.predicted);
+        cols.push(pred.map(|p| csv_num(p.value)).unwrap_or_default());
+        cols.push(pred.map(|p| p.branch.name().to_string()).unwrap_or_default());
+        out.push_str(&cols.join(","));
+        out.push('\n');
+    }
+    out
+}
+
+/// The table of the report.
+pub(super) fn write_table(f: &mut fmt::Formatter<'_>, rows: &[CycleRow]) -> fmt::Result {
+    let sp = speedups(rows);
+    writeln!(
+        f,
+        "{:>8} {:>6} {:>4} {:<14}{:>11}{:>10}{:>7}{:>10}{:>9}{:>8}{:>9}{:>8}{:>8}{:>9}{:>8}",
+        "length",
+        "cache",
+        "T_c",
+        "method",
+        "cycles",
+        "busy",
+        "eff.",
+        "drains",
+        "loads",
+        "hits",
+        "/bound",
+        "SF",
+        "Eq.10",
+        "SF shr.",
+        "Eq.11"
+    )?;
+    for r in rows {
+        let t = &r.total;
+        let opt = |s: Option<f64>| s.map_or_else(|| "-".to_string(), |v| format!("{v:.2}"));
+        let (same, paper) = if r.cache.is_some() {
+            (speedup_of(&sp, r, Scenario::Cached), speedup_of(&sp, r, Scenario::PaperCache))
+        } else {
+            (speedup_of(&sp, r, Scenario::Shared), None)
+        };
+        writeln!(
+            f,
+            "{:>8} {:>6} {:>4} {:<14}{:>11.0}{:>10.0}{:>7.3}{:>10.0}{:>9.0}{:>8.0}{:>9.2}{:>8}{:>8}{:>9}{:>8}",
+            r.length,
+            r.cache.map_or_else(|| "off".to_string(), |l| l.to_string()),
+            r.tc,
+            r.method.name(),
+            r.mean_cycles(),
+            r.mean(t.intersection_busy_cycles),
+            r.pipeline_efficiency(),
+            r.mean(t.drain_cycles),
+            r.mean(t.memory_loads),
+            r.mean(t.cache_hits),
+            r.overhead(),
+            opt(same.map(|s| s.measured)),
+            opt(if r.cache.is_none() { same.and_then(|s| s.predicted).map(|p| p.value) } else { None }),
+            opt(paper.map(|s| s.measured)),
+            opt(paper.and_then(|s| s.predicted).map(|p| p.value)),
+        )?;
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------------------
+// Plots
+// ---------------------------------------------------------------------------------------------
+
+/// One colour per `T_c` (in the order of [`FigureOptions::tcs`], repeating after six).
+const TC_COLORS: [RGBColor; 6] = [
+    RGBColor(0x1f, 0x77, 0xb4),
+    RGBColor(0xff, 0x7f, 0x0e),
+    RGBColor(0x2c, 0xa0, 0x2c),
+    RGBColor(0xd6, 0x27, 0x28),
+    RGBColor(0x94, 0x67, 0xbd),
+    RGBColor(0x8c, 0x56, 0x4b),
+];
+
+fn short(m: Method) -> &'static str {
+    match m {
+        Method::Conventional => "conv.",
+        Method::Stochastic => "S",
+        Method::Deterministic => "D",
+        Method::Brute => "brute",
+    }
+}
+
+/// Size of the cycle charts (many series: room for the legend).
+const SIZE: (u32, u32) = (1040, 760);
+
+/// The cycle figures as `(file name, SVG text)`.
+pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'static str, String)>> {
+    let mut lengths = opts.lengths.clone();
+    lengths.sort_by(f64::total_cmp);
+    let sp = speedups(rows);
+    let workload = format!(
+        "N = {}, R = {}, {} source{}/length",
+        opts.count,
+        opts.rays,
+        opts.cosim_sources,
+        if opts.cosim_sources == 1 { "" } else { "s" }
+    );
+    let cache_name = format!("{}-line patch cache", opts.cache_lines);
+    let chart = |title: String, y_label: &str, series: Vec<Series>| Chart {
+        size: SIZE,
+        title: format!("{title} ({workload})"),
+        x_label: "segment length L (log₂ scale)".to_string(),
+        y_label: y_label.to_string(),
+        x: XAxis::Log2(lengths.clone()),
+        series,
+    };
+    let color = |ti: usize| TC_COLORS[ti % TC_COLORS.len()];
+    let tc_label = |tc: u32| format!("T_c = {}", tick_label(tc as f64));
+    let sorted = |mut v: Vec<(f64, f64)>| {
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+        v
+    };
+
+    // Per-row charts: one series per (T_c, technique).
+    let per_row = |cached: bool, value: &dyn Fn(&CycleRow) -> f64| -> Vec<Series> {
+        let mut out = Vec::new();
+        for (ti, &tc) in opts.tcs.iter().enumerate() {
+            for &m in &METHODS {
+                let pts = sorted(
+                    rows.iter()
+                        .filter(|r| r.method == m && r.tc == tc && r.cache.is_some() == cached)
+                        .map(|r| (r.length, value(r)))
+                        .collect(),
+                );
+                out.push(Series::new(
+                    format!("{} {}", short(m), tc_label(tc)),
+                    pts,
+                    color(ti),
+                    super::method_marker(m),
+                ));
+            }
+        }
+        out
+    };
+    // Speedup charts: S and D per T_c, and the prediction (dashed) where there is one.
+    let speedup_series = |scenario: Scenario, model: &str| -> Vec<Series> {
+        let mut out = Vec::new();
+        for (ti, &tc) in opts.tcs.iter().enumerate() {
+            for &m in &METHODS[1..] {
+                let pts = sorted(
+                    sp.iter()
+                        .filter(|s| s.scenario == scenario && s.method == m && s.tc == tc)
+                        .map(|s| (s.length, s.measured))
+                        .collect(),
+                );
+                out.push(Series::new(
+                    format!("{} {}", short(m), tc_label(tc)),
+                    pts,
+                    color(ti),
+                    super::method_marker(m),
+                ));
+            }
+            let pred = sorted(
+                sp.iter()
+                    .filter(|s| s.scenario == scenario && s.method == Method::Stochastic && s.tc == tc)
+                    .filter_map(|s| s.predicted.map(|p| (s.length, p.value)))
+                    .collect(),
+            );
+            if !pred.is_empty() {
+                let mut p = Series::new(format!("{model} {}", tc_label(tc)), pred, color(ti), Marker::None);
+                p.dashed = true;
+                out.push(p);
+            }
+        }
+        out
+    };
+
+    let mut out = Vec::new();
+    out.push((
+        "cycles_total_shared.svg",
+        super::render(&chart(
+            "Cycles per source, shared memory".into(),
+            "PE cycles per source",
+            per_row(false, &|r| r.mean_cycles()),
+        ))?,
+    ));
+    out.push((
+        "cycles_total_cache.svg",
+        super::render(&chart(
+            format!("Cycles per source, {cache_name}"),
+            "PE cycles per source",
+            per_row(true, &|r| r.mean_cycles()),
+        ))?,
+    ));
+    out.push((
+        "cycles_speedup_shared.svg",
+        super::render(&chart(
+            "Speedup over conventional, shared memory; Eq. 10 dashed".into(),
+            "conventional cycles / shelling cycles",
+            speedup_series(Scenario::Shared, "Eq. 10"),
+        ))?,
+    ));
+    out.push((
+        "cycles_speedup_paper_cache.svg",
+        super::render(&chart(
+            "Speedup, shelling with cache over conventional without; Eq. 11 dashed".into(),
+            "conventional (no cache) cycles / shelling (cache) cycles",
+            speedup_series(Scenario::PaperCache, "Eq. 11"),
+        ))?,
+    ));
+    out.push((
+        "cycles_speedup_cache.svg",
+        super::render(&chart(
+            format!("Speedup over conventional, both with a {cache_name}"),
+            "conventional cycles / shelling cycles",
+            speedup_series(Scenario::Cached, ""),
+        ))?,
+    ));
+    out.push((
+        "cycles_efficiency_shared.svg",
+        super::render(&chart(
+            "Pipeline efficiency, shared memory".into(),
+            "intersection busy cycles / cycles",
+            per_row(false, &|r| r.pipeline_efficiency()),
+        ))?,
+    ));
+    out.push((
+        "cycles_efficiency_cache.svg",
+        super::render(&chart(
+            format!("Pipeline efficiency, {cache_name}"),
+            "intersection busy cycles / cycles",
+            per_row(true, &|r| r.pipeline_efficiency()),
+        ))?,
+    ));
+    Ok(out)
+}
+
+/// The SVG files [`svgs`] writes, in order.
+pub const SVGS: [&str; 7] = [
+    "cycles_total_shared.svg",
+    "cycles_total_cache.svg",
+    "cycles_speedup_shared.svg",
+    "cycles_speedup_paper_cache.svg",
+    "cycles_speedup_cache.svg",
+    "cycles_efficiency_shared.svg",
+    "cycles_efficiency_cache.svg",
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn predictions_follow_eqs_10_and_11() {
+        // ADLC 32, S 0.5: compute-bound below T_c = 32, memory-bound from there.
+        let p = prediction(Scenario::Shared, 0.5, 32.0, 16).unwrap();
+        assert_eq!(p.branch, Branch::Compute);
+        assert!((p.value - (1.0 + 0.5 / 32.0) * 16.0).abs() < 1e-12);
+        let p = prediction(Scenario::Shared, 0.5, 32.0, 32).unwrap();
+        assert_eq!(p.branch, Branch::Memory);
+        assert!((p.value - 32.5).abs() < 1e-12);
+        // The cache: the compute branch at every T_c; T_c/T_λ at S = 0 (Eq. 11).
+        let p = prediction(Scenario::PaperCache, 0.5, 32.0, 64).unwrap();
+        assert_eq!(p.branch, Branch::Compute);
+        assert!((p.value - (1.0 + 0.5 / 32.0) * 64.0).abs() < 1e-12);
+        assert_eq!(prediction(Scenario::PaperCache, 0.0, 8.0, 64).unwrap().value, 64.0);
+        assert_eq!(prediction(Scenario::Shared, 0.0, 8.0, 64).unwrap().value, 8.0);
+        assert!(prediction(Scenario::Cached, 0.5, 32.0, 16).is_none());
+        assert!(prediction(Scenario::Shared, 1.0, 32.0, 16).is_none());
+        assert!(prediction(Scenario::Shared, 0.5, 0.0, 16).is_none());
+    }
+}
