@@ -42,7 +42,8 @@ enum Command {
     },
     /// Trace one source's ray bundle through a scene with one technique.
     Trace(TraceArgs),
-    /// Reproduce the paper's Figures 7, 8, 9, 10, 11 and 13 (CSV and SVG plots).
+    /// Reproduce the paper's Figures 7, 8, 9, 10, 11 and 13 (CSV and SVG plots), and measure its
+    /// claim on the RTL processing element (cycles, efficiency, speedup against Eqs. 10-11).
     Figures(FiguresArgs),
     /// Rung 2: trace the paper's workload in f64 and in the bit-true fixed point, compare the
     /// nearest patch of every ray and explain every disagreement by the documented error bound.
