@@ -281,11 +281,18 @@ fn arb_scene() -> impl Strategy<Value = Vec<Segment>> {
     })
 }
 
+/// `PROPTEST_CASES` if set, else `default` (a literal `cases` would override the variable).
+fn proptest_cases(default: u32) -> u32 {
+    std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(default)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: proptest_cases(96), ..ProptestConfig::default() })]
 
     /// Any scene, any source patch or free origin, any ray count: all tracers agree with brute
-    /// force. proptest prints the minimal failing scene; `PROPTEST_CASES` raises the count.
+    /// force. proptest prints the minimal failing scene and its seed (saved under
+    /// `proptest-regressions/`, replayed first on the next run); `PROPTEST_CASES` changes the
+    /// count (96 by default).
     #[test]
     fn tracers_agree_on_arbitrary_scenes(
         segments in arb_scene(),
