@@ -743,7 +743,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     Ok(out)
 }
 
-/// The SVG files [`svgs`] writes, in order.
+/// The SVG files the cycle figures write, in order.
 pub const SVGS: [&str; 7] = [
     "cycles_total_shared.svg",
     "cycles_total_cache.svg",
