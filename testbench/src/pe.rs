@@ -229,14 +229,17 @@ pub fn run(
 
     // Commands. The memory's answer to a request is presented from the next cycle on.
     let start = drv.cycles();
-    let u = drv.uut();
-    let (loads0, tests0, hits0) =
-        (u.loads.val().to_u64(), u.tests.val().to_u64(), u.cache_hits.val().to_u64());
+    // The PE's counters wrap and run from power-up: a run counts what they add.
+    let counters = |u: &ProcessingElement| {
+        [&u.loads, &u.tests, &u.cache_hits, &u.passed, &u.backward, &u.back_facing, &u.outside, &u.near]
+            .map(|c| c.val().to_u64())
+    };
+    let base = counters(drv.uut());
     let mut response: Option<[i32; 4]> = None;
     let mut next = 0usize;
     let mut last_progress = 0u64;
     let mut idle_since = drv.cycles();
-    let mut tests_before = tests0;
+    let mut tests_before = base[1];
     loop {
         let cmd = commands.get(next).copied();
         let draining = matches!(cmd, Some(Command::Sector { .. }));
@@ -311,15 +314,17 @@ pub fn run(
     k.pipeline_efficiency =
         if k.cycles > 0 { k.intersection_busy_cycles as f64 / k.cycles as f64 } else { 0.0 };
     let u = drv.uut();
-    k.patch_loads = u.loads.val().to_u64() - loads0;
+    let delta =
+        counters(u).iter().zip(base).map(|(c, b)| c.wrapping_sub(b) & 0xFFFF_FFFF).collect::<Vec<_>>();
+    k.patch_loads = delta[0];
     k.memory_loads = memory.loads();
-    k.cache_hits = u.cache_hits.val().to_u64() - hits0;
-    k.tests = u.tests.val().to_u64() - tests0;
-    k.passed = u.passed.val().to_u64();
-    k.backward = u.backward.val().to_u64();
-    k.back_facing = u.back_facing.val().to_u64();
-    k.outside = u.outside.val().to_u64();
-    k.near = u.near.val().to_u64();
+    k.cache_hits = delta[2];
+    k.tests = delta[1];
+    k.passed = delta[3];
+    k.backward = delta[4];
+    k.back_facing = delta[5];
+    k.outside = delta[6];
+    k.near = delta[7];
 
     // Readout (read and clear).
     let start = drv.cycles();

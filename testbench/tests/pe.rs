@@ -161,6 +161,12 @@ fn one_ray_jobs_and_back_to_back_retirements() -> Result<()> {
         assert_eq!((k.tests, k.patch_loads), (counts.tests, counts.loads), "T_c {tc}");
         // One patch per T_c from the host memory bounds the run from below.
         assert!(k.cycles >= counts.loads * tc as u64, "T_c {tc}: {k:?}");
+        // The same source again on the same PE (after the readout cleared it): the same hits,
+        // and counters that count this run only.
+        let mut memory = HostMemory::new(mem.clone(), tc)?;
+        let (again, k2) = run(&mut drv, &mut memory, &setup, cache, &cmds, |_, _| {})?;
+        assert_eq!(again, want, "T_c {tc}: a second run");
+        assert_eq!((k2.tests, k2.patch_loads, k2.passed), (k.tests, k.patch_loads, k.passed), "T_c {tc}");
     }
     Ok(())
 }
