@@ -100,6 +100,12 @@ impl Comparison {
         self.worst_distance_ratio = self.worst_distance_ratio.max(o.worst_distance_ratio);
     }
 
+    /// Rays beyond the documented bound: a disagreement the bound does not explain, or an
+    /// agreeing hit whose distance error exceeds it.
+    pub fn beyond_bound(&self) -> impl Iterator<Item = &Disagreement> {
+        self.unexplained.iter().chain(&self.distance_violations)
+    }
+
     /// The fraction of rays whose fixed-point hit names the float patch.
     pub fn rate(&self) -> f64 {
         if self.rays == 0 {
@@ -326,7 +332,7 @@ impl fmt::Display for Report {
                 c.endpoint,
                 c.grazing,
                 c.near_tie,
-                c.unexplained.len() + c.distance_violations.len(),
+                c.beyond_bound().count(),
                 c.worst_distance_ratio
             )?;
         }

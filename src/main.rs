@@ -374,15 +374,10 @@ fn run(cli: Cli) -> Result<()> {
             };
             let report = shelling::agreement::run(&w)?;
             print!("{report}");
-            let bad: usize = report
-                .rows
-                .iter()
-                .map(|r| r.comparison.unexplained.len() + r.comparison.distance_violations.len())
-                .sum();
+            let bad: usize = report.rows.iter().map(|r| r.comparison.beyond_bound().count()).sum();
             if bad > 0 {
                 for r in &report.rows {
-                    for d in r.comparison.unexplained.iter().chain(&r.comparison.distance_violations).take(5)
-                    {
+                    for d in r.comparison.beyond_bound().take(5) {
                         eprintln!("length {} {}: {d:?}", r.length, r.method);
                     }
                 }
@@ -465,12 +460,9 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     let result = result?;
     let golden = prepared.trace(a.method, &bundle, &params)?;
     let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &golden, &scheduled.trace);
-    if !rung2.unexplained.is_empty() || !rung2.distance_violations.is_empty() {
-        bail!(
-            "the PE's hits differ from the f64 golden model beyond the documented bound: {:?} {:?}",
-            rung2.unexplained,
-            rung2.distance_violations
-        );
+    let beyond: Vec<_> = rung2.beyond_bound().collect();
+    if !beyond.is_empty() {
+        bail!("the PE's hits differ from the f64 golden model beyond the documented bound: {beyond:?}");
     }
     if a.json {
         let json = CosimJson {
@@ -570,7 +562,7 @@ fn demo(a: DemoArgs) -> Result<()> {
             (method == Method::Stochastic).then(|| VcdWindow { path: a.vcd.clone(), from: 1000, to: 1600 });
         let run = cosim::run(&scheduled, &CosimConfig { tc: a.tc, cache, vcd }, |_, _| {})?;
         let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &oracle, &scheduled.trace);
-        if !rung2.unexplained.is_empty() || !rung2.distance_violations.is_empty() {
+        if rung2.beyond_bound().next().is_some() {
             bail!("{method}: the PE's hits differ from the golden model beyond the documented bound");
         }
         let h = &run.hardware;

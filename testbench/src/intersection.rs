@@ -12,6 +12,7 @@ use rust_hdl::prelude::*;
 use shelling_hdl::formats::to_bits;
 use shelling_hdl::intersection::model::{replaces, test, Nearest};
 use shelling_hdl::intersection::{IntersectionUnit, RAY_BITS};
+use shelling_hdl::pe::ProcessingElement;
 use shelling_hdl::screener::model::PatchSetup;
 
 impl_clocked!(IntersectionUnit);
@@ -91,20 +92,65 @@ pub fn model_bundle(dirs: &[[i32; 2]], jobs: &[Job]) -> Vec<Option<Nearest>> {
     model_bundle_counted(dirs, jobs).0
 }
 
+/// The ray ports the intersection unit and the processing element share, by the same names and
+/// protocol: direction writes (`dir_we`, `dir_addr`, `dir_x`, `dir_y`), the read-and-clear
+/// readout (`res_re`, `res_addr` in; `res_hit`, `res_id`, `res_key` the cycle after) and `busy`.
+pub trait RayPorts: Block {
+    /// Drives a direction write of ray `i`, or none.
+    fn write_direction(&mut self, write: Option<(usize, [i32; 2])>);
+    /// Drives a readout of ray `i`, or none.
+    fn request_readout(&mut self, ray: Option<usize>);
+    /// The ray read out in the previous cycle.
+    fn readout(&self) -> Option<Nearest>;
+    fn is_busy(&self) -> bool;
+}
+
+/// Implements [`RayPorts`] for blocks with the ports it names.
+macro_rules! impl_ray_ports {
+    ($($block:ty),+) => {
+        $(
+            impl RayPorts for $block {
+                fn write_direction(&mut self, write: Option<(usize, [i32; 2])>) {
+                    self.dir_we.next = write.is_some();
+                    if let Some((i, d)) = write {
+                        self.dir_addr.next = (i as u64).into();
+                        self.dir_x.next = field(d[0] as i64);
+                        self.dir_y.next = field(d[1] as i64);
+                    }
+                }
+
+                fn request_readout(&mut self, ray: Option<usize>) {
+                    self.res_re.next = ray.is_some();
+                    if let Some(i) = ray {
+                        self.res_addr.next = (i as u64).into();
+                    }
+                }
+
+                fn readout(&self) -> Option<Nearest> {
+                    self.res_hit
+                        .val()
+                        .then(|| Nearest { key: self.res_key.val().to_u32(), id: self.res_id.val().to_u16() })
+                }
+
+                fn is_busy(&self) -> bool {
+                    self.busy.val()
+                }
+            }
+        )+
+    };
+}
+
+impl_ray_ports!(IntersectionUnit, ProcessingElement);
+
 /// Writes the bundle's ray directions (one per cycle).
-pub fn load_directions(drv: &mut Driver<IntersectionUnit>, dirs: &[[i32; 2]]) -> Result<()> {
+pub fn load_directions<B: RayPorts>(drv: &mut Driver<B>, dirs: &[[i32; 2]]) -> Result<()> {
     if dirs.len() > MAX_BUNDLE {
         return Err(Error::new(format!("a bundle holds at most {MAX_BUNDLE} rays, got {}", dirs.len())));
     }
     for (i, d) in dirs.iter().enumerate() {
-        drv.cycle(|u| {
-            u.dir_we.next = true;
-            u.dir_addr.next = (i as u64).into();
-            u.dir_x.next = field(d[0] as i64);
-            u.dir_y.next = field(d[1] as i64);
-        })?;
+        drv.cycle(|u| u.write_direction(Some((i, *d))))?;
     }
-    drv.cycle(|u| u.dir_we.next = false)
+    drv.cycle(|u| u.write_direction(None))
 }
 
 /// Streams the jobs (random idle cycles if `pacing.idle`), then waits until the unit is idle.
@@ -156,24 +202,17 @@ pub fn stream_jobs(
     Ok(drv.cycles() - start)
 }
 
-/// Reads and clears the nearest hits of rays `0..rays`.
-pub fn read_hits(drv: &mut Driver<IntersectionUnit>, rays: usize) -> Result<Vec<Option<Nearest>>> {
+/// Reads and clears the nearest hits of rays `0..rays`, one per cycle.
+pub fn read_hits<B: RayPorts>(drv: &mut Driver<B>, rays: usize) -> Result<Vec<Option<Nearest>>> {
     let mut out = Vec::with_capacity(rays);
     for i in 0..rays {
-        if drv.uut().busy.val() {
+        if drv.uut().is_busy() {
             return Err(Error::new("readout while the unit is busy"));
         }
-        drv.cycle(|u| {
-            u.patch_valid.next = false;
-            u.res_re.next = true;
-            u.res_addr.next = (i as u64).into();
-        })?;
-        let u = drv.uut();
-        out.push(
-            u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() }),
-        );
+        drv.cycle(|u| u.request_readout(Some(i)))?;
+        out.push(drv.uut().readout());
     }
-    drv.cycle(|u| u.res_re.next = false)?;
+    drv.cycle(|u| u.request_readout(None))?;
     Ok(out)
 }
 

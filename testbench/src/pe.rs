@@ -5,6 +5,7 @@
 //! The host changes the sector (the screener's setup) only while the PE is idle, so a sector
 //! change drains the PE: those cycles are counted apart ([`PeCounters::drain_cycles`]).
 
+use crate::intersection::{load_directions, read_hits};
 use crate::memory::HostMemory;
 use crate::{impl_clocked, Driver, Error, Result};
 use rust_hdl::prelude::*;
@@ -216,15 +217,7 @@ pub fn run(
         u.cfg_cache_enable.next = cache.lines.is_some();
         u.cfg_cache_mask.next = (cache.lines.unwrap_or(1) as u64 - 1).into();
     })?;
-    for (i, d) in setup.dirs.iter().enumerate() {
-        drv.cycle(|u| {
-            u.dir_we.next = true;
-            u.dir_addr.next = (i as u64).into();
-            u.dir_x.next = field(d[0] as i64);
-            u.dir_y.next = field(d[1] as i64);
-        })?;
-    }
-    drv.cycle(|u| u.dir_we.next = false)?;
+    load_directions(drv, &setup.dirs)?;
     k.setup_cycles = drv.cycles() - start;
 
     // Commands. The memory's answer to a request is presented from the next cycle on.
@@ -328,18 +321,7 @@ pub fn run(
 
     // Readout (read and clear).
     let start = drv.cycles();
-    let mut hits = Vec::with_capacity(n);
-    for i in 0..n {
-        drv.cycle(|u| {
-            u.res_re.next = true;
-            u.res_addr.next = (i as u64).into();
-        })?;
-        let u = drv.uut();
-        hits.push(
-            u.res_hit.val().then(|| Nearest { key: u.res_key.val().to_u32(), id: u.res_id.val().to_u16() }),
-        );
-    }
-    drv.cycle(|u| u.res_re.next = false)?;
+    let hits = read_hits(drv, n)?;
     k.readout_cycles = drv.cycles() - start;
     Ok((hits, k))
 }
