@@ -36,7 +36,7 @@ impl Default for CosimConfig {
     }
 }
 
-/// A VCD file and the cycles it covers.
+/// A VCD file and the cycles it covers, counted from the PE's power-up.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct VcdWindow {
     pub path: PathBuf,
@@ -71,8 +71,23 @@ fn sim(e: shelling_testbench::Error) -> CosimError {
     CosimError::Sim(e.message().to_string())
 }
 
-/// Co-simulates a scheduled source on the PE; `progress(done, total)` reports commands sent.
+/// Co-simulates a scheduled source on a new PE; `progress(done, total)` reports commands sent.
 pub fn run(
+    scheduled: &Scheduled,
+    config: &CosimConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<Cosim, CosimError> {
+    let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
+    run_on(&mut drv, scheduled, config, progress)
+}
+
+/// Co-simulates a scheduled source on the PE of `drv`, which may have run sources before (its
+/// readout leaves it cleared) and may be recording its ports for a replay of the exported Verilog
+/// ([`Driver::record_ports`]): several sources then make one set of vectors. The PE's patch
+/// cache keeps its lines from run to run: before a source of another scene, flush it
+/// ([`shelling_testbench::pe::flush_cache`]), or its hits return the old scene's patches.
+pub fn run_on(
+    drv: &mut Driver<ProcessingElement>,
     scheduled: &Scheduled,
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
@@ -83,7 +98,6 @@ pub fn run(
     let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
     let (want, model) = pe::model(&setup, &patches, &cmds);
     let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;
-    let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
     if let Some(v) = &config.vcd {
         if v.from >= v.to {
             return Err(CosimError::Config(format!("empty VCD window {}..{}", v.from, v.to)));
@@ -92,8 +106,10 @@ pub fn run(
     }
     let cache = CacheConfig { lines: config.cache };
     cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
-    let (hits, hardware) = pe::run(&mut drv, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
-    drv.finish_vcd().map_err(sim)?;
+    let (hits, hardware) = pe::run(drv, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
+    if config.vcd.is_some() {
+        drv.finish_vcd().map_err(sim)?;
+    }
     if let Some(r) = (0..hits.len()).find(|&r| hits[r] != want[r]) {
         return Err(CosimError::Mismatch(format!(
             "ray {r}: PE {:?}, model {:?} ({} rays differ)",

@@ -10,6 +10,7 @@
 //! | `clock` | in | 1 | rising-edge clock |
 //! | `cfg_enable` | in | 1 | cache on; off: a combinational pass-through (see below) |
 //! | `cfg_mask` | in | 12 | lines − 1 (lines a power of two, 1 … [`LINES`]); line of id = `id & cfg_mask` |
+//! | `flush`, `flushing` | in, out | 1, 1 | invalidate every line: `flush` high starts it, `flushing` (a register) is high for the [`LINES`] cycles it takes |
 //! | `req`, `addr` | in | 1, 16 | loader side: request, one clock pulse per patch, `addr` = patch id |
 //! | `resp_valid`, `resp_ax`, `resp_ay`, `resp_bx`, `resp_by` | out | 1, 4 × 17 | loader side: response |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host side: request, one clock pulse per miss |
@@ -22,10 +23,16 @@
 //! memory serves the `mem_*` side.
 //!
 //! Configuration: `cfg_enable` and `cfg_mask` are held constant during a run and may change
-//! only while no request is outstanding. The cache contents survive a change of either (they
-//! are never flushed; memories are zero, i.e. all lines invalid, at power-up only): a line holds
-//! its patch's whole id, so whatever the mask, a hit always returns the right patch as long as
-//! the host memory's contents do not change.
+//! only while no request is outstanding. The cache contents survive a change of either: a line
+//! holds its patch's whole id, so whatever the mask, a hit always returns the right patch as
+//! long as the host memory's contents do not change.
+//!
+//! Flush: when the host memory's contents change (a new scene), the host raises `flush` while
+//! no request is outstanding. From the next cycle on `flushing` is high for [`LINES`] cycles,
+//! one per line, while the tag lane is cleared line by line through its write port (the data
+//! lanes keep their stale words, unreachable behind invalid tags); no request may be made
+//! until `flushing` is low again. `flush` is ignored while a flush runs. The tag lanes are also
+//! zero (every line invalid) at power-up.
 //!
 //! Number formats: ids are 16-bit unsigned; coordinates are world coordinates Q11.6 unsigned in
 //! 17 bits (`crate::formats`), stored and passed through unchanged.
@@ -137,6 +144,11 @@ pub mod model {
             cache
         }
 
+        /// Invalidates every line (the RTL's `flush`).
+        pub fn flush(&mut self) {
+            self.lines.fill(None);
+        }
+
         /// Changes the mask, keeping the contents (a new `cfg_mask` between runs).
         ///
         /// # Panics
@@ -224,6 +236,8 @@ pub struct PatchCache {
     // Configuration.
     pub cfg_enable: Signal<In, bool>,
     pub cfg_mask: Signal<In, Bits<12>>,
+    pub flush: Signal<In, bool>,
+    pub flushing: Signal<Out, bool>,
     // Loader side.
     pub req: Signal<In, bool>,
     pub addr: Signal<In, Bits<16>>,
@@ -255,6 +269,9 @@ pub struct PatchCache {
     b_key: DFF<Bits<17>>,
     b_line: DFF<Bits<12>>,
     w_valid: DFF<bool>,
+    // Flush: on, and the line being cleared.
+    fl_on: DFF<bool>,
+    fl_line: DFF<Bits<12>>,
     // Registered outputs.
     mreq: DFF<bool>,
     rv: DFF<bool>,
@@ -288,12 +305,17 @@ pub struct PatchCache {
     head_key: Signal<Local, Bits<17>>,
     hit_inc: Signal<Local, Bits<32>>,
     miss_inc: Signal<Local, Bits<32>>,
+    fl_inc: Signal<Local, Bits<12>>,
     // Constants.
     valid_flag: Constant<Bits<17>>,
     zero5: Constant<Bits<5>>,
     one5: Constant<Bits<5>>,
     one4: Constant<Bits<4>>,
     one32: Constant<Bits<32>>,
+    one12: Constant<Bits<12>>,
+    last_line: Constant<Bits<12>>,
+    zero12: Constant<Bits<12>>,
+    zero17: Constant<Bits<17>>,
 }
 
 impl Default for PatchCache {
@@ -303,6 +325,8 @@ impl Default for PatchCache {
             clock: Default::default(),
             cfg_enable: Default::default(),
             cfg_mask: Default::default(),
+            flush: Default::default(),
+            flushing: Default::default(),
             req: Default::default(),
             addr: Default::default(),
             resp_valid: Default::default(),
@@ -329,6 +353,8 @@ impl Default for PatchCache {
             b_key: Default::default(),
             b_line: Default::default(),
             w_valid: Default::default(),
+            fl_on: Default::default(),
+            fl_line: Default::default(),
             mreq: Default::default(),
             rv: Default::default(),
             rax: Default::default(),
@@ -359,11 +385,16 @@ impl Default for PatchCache {
             head_key: Default::default(),
             hit_inc: Default::default(),
             miss_inc: Default::default(),
+            fl_inc: Default::default(),
             valid_flag: Constant::new(0x1_0000u64.into()),
             zero5: Constant::new(0.into()),
             one5: Constant::new(1.into()),
             one4: Constant::new(1.into()),
             one32: Constant::new(1.into()),
+            one12: Constant::new(1.into()),
+            last_line: Constant::new(((LINES - 1) as u64).into()),
+            zero12: Constant::new(0.into()),
+            zero17: Constant::new(0.into()),
         }
     }
 }
@@ -385,8 +416,8 @@ impl Logic for PatchCache {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, wr_ptr, rd_ptr, count, head_valid, b_valid, b_id, b_key, b_line, w_valid, mreq, rv,
-            rax, ray, rbx, rby, hit_count, miss_count
+            self, clock, wr_ptr, rd_ptr, count, head_valid, b_valid, b_id, b_key, b_line, w_valid, fl_on,
+            fl_line, mreq, rv, rax, ray, rbx, rby, hit_count, miss_count
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -470,6 +501,22 @@ impl Logic for PatchCache {
         self.lane_bx.write_data.next = self.mem_bx.val();
         self.lane_by.write_data.next = self.mem_by.val();
         self.tag.write_enable.next = self.fill.val();
+        // The flush: clear one tag per cycle, line 0 to the last (no fill can be pending).
+        self.fl_inc.next = self.fl_line.q.val() + self.one12.val();
+        if self.fl_on.q.val() {
+            self.tag.write_address.next = self.fl_line.q.val();
+            self.tag.write_data.next = self.zero17.val();
+            self.tag.write_enable.next = true;
+            self.fl_line.d.next = self.fl_inc.val();
+            if self.fl_line.q.val() == self.last_line.val() {
+                self.fl_on.d.next = false;
+            }
+        }
+        if self.flush.val() & !self.fl_on.q.val() {
+            self.fl_on.d.next = true;
+            self.fl_line.d.next = self.zero12.val();
+        }
+        self.flushing.next = self.fl_on.q.val();
         self.lane_ax.write_enable.next = self.fill.val();
         self.lane_ay.write_enable.next = self.fill.val();
         self.lane_bx.write_enable.next = self.fill.val();

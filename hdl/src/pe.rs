@@ -26,10 +26,11 @@
 //! | `cmd_valid`, `cmd_ready` | in, out | 1, 1 | command stream (valid/ready) |
 //! | `cmd_retire`, `cmd_id`, `cmd_first`, `cmd_count` | in | 1, 16, 10, 11 | retire or job; patch id; ray range |
 //! | `cfg_cache_enable`, `cfg_cache_mask` | in | 1, 12 | the patch cache: on, and its lines − 1 (a power of two up to 4096), held during a run |
+//! | `cfg_cache_flush` | in | 1 | invalidate the cache (a new scene in the host memory): raise while not `busy`; `busy` stays high for the 4096 cycles it takes ([`PatchCache`]) |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host memory request (one pulse per patch) |
 //! | `mem_valid`, `mem_ax` … `mem_by` | in | 1, 4 × 17 | host memory response, in request order (world coordinates, Q11.6) |
 //! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (the cycle after; only while not `busy`) |
-//! | `busy` | out | 1 | a command is in flight |
+//! | `busy` | out | 1 | a command is in flight, or the cache is flushing |
 //! | `loads`, `cache_hits`, `cache_misses`, `passed`, `backward`, `back_facing`, `outside`, `near`, `tests` | out | 32 each | counters (wrapping): patches loaded, the cache's hits and misses, the screener's verdicts, ray-patch tests of live rays |
 //!
 //! # Structure
@@ -110,6 +111,7 @@ pub struct ProcessingElement {
     // The patch cache.
     pub cfg_cache_enable: Signal<In, bool>,
     pub cfg_cache_mask: Signal<In, Bits<12>>,
+    pub cfg_cache_flush: Signal<In, bool>,
     // Host memory.
     pub mem_req: Signal<Out, bool>,
     pub mem_addr: Signal<Out, Bits<16>>,
@@ -183,6 +185,7 @@ impl Default for ProcessingElement {
             cmd_count: Default::default(),
             cfg_cache_enable: Default::default(),
             cfg_cache_mask: Default::default(),
+            cfg_cache_flush: Default::default(),
             mem_req: Default::default(),
             mem_addr: Default::default(),
             mem_valid: Default::default(),
@@ -281,6 +284,7 @@ impl Logic for ProcessingElement {
         // Host memory: the loader's port through the cache.
         self.cache.cfg_enable.next = self.cfg_cache_enable.val();
         self.cache.cfg_mask.next = self.cfg_cache_mask.val();
+        self.cache.flush.next = self.cfg_cache_flush.val();
         self.cache.req.next = self.loader.mem_req.val();
         self.cache.addr.next = self.loader.mem_addr.val();
         self.loader.mem_valid.next = self.cache.resp_valid.val();
@@ -359,7 +363,8 @@ impl Logic for ProcessingElement {
         }
 
         // Status and counters.
-        self.busy.next = (self.tag_count.q.val() != self.zero7.val()) | self.unit.busy.val();
+        self.busy.next =
+            (self.tag_count.q.val() != self.zero7.val()) | self.unit.busy.val() | self.cache.flushing.val();
         self.loads.next = self.loader.loads.val();
         self.cache_hits.next = self.cache.hits.val();
         self.cache_misses.next = self.cache.misses.val();

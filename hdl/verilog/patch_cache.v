@@ -1,12 +1,14 @@
 // patch_cache: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay,resp_bx,resp_by,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,hits,misses);
+module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,resp_ax,resp_ay,resp_bx,resp_by,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,hits,misses);
     
     // Module arguments
     input wire  clock;
     input wire  cfg_enable;
     input wire  [11:0] cfg_mask;
+    input wire  flush;
+    output reg  flushing;
     input wire  req;
     input wire  [15:0] addr;
     output reg  resp_valid;
@@ -30,6 +32,10 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
+    localparam  one12 = 12'h1;
+    localparam  last_line = 12'hfff;
+    localparam  zero12 = 12'h0;
+    localparam  zero17 = 17'b0;
     
     // Stub signals
     reg  q_lane$clock;
@@ -65,6 +71,12 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
     reg  w_valid$d;
     wire  w_valid$q;
     reg  w_valid$clock;
+    reg  fl_on$d;
+    wire  fl_on$q;
+    reg  fl_on$clock;
+    reg  [11:0] fl_line$d;
+    wire  [11:0] fl_line$q;
+    reg  fl_line$clock;
     reg  mreq$d;
     wire  mreq$q;
     reg  mreq$clock;
@@ -138,6 +150,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
     reg  [16:0] head_key;
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
+    reg  [11:0] fl_inc;
     
     // Sub module instances
     patch_cache$q_lane q_lane(
@@ -192,6 +205,16 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
         .d(w_valid$d),
         .q(w_valid$q),
         .clock(w_valid$clock)
+    );
+    patch_cache$fl_on fl_on(
+        .d(fl_on$d),
+        .q(fl_on$q),
+        .clock(fl_on$clock)
+    );
+    patch_cache$fl_line fl_line(
+        .d(fl_line$d),
+        .q(fl_line$q),
+        .clock(fl_line$clock)
     );
     patch_cache$mreq mreq(
         .d(mreq$d),
@@ -285,6 +308,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
         b_key$clock = clock;
         b_line$clock = clock;
         w_valid$clock = clock;
+        fl_on$clock = clock;
+        fl_line$clock = clock;
         mreq$clock = clock;
         rv$clock = clock;
         rax$clock = clock;
@@ -302,6 +327,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
         b_key$d = b_key$q;
         b_line$d = b_line$q;
         w_valid$d = w_valid$q;
+        fl_on$d = fl_on$q;
+        fl_line$d = fl_line$q;
         mreq$d = mreq$q;
         rv$d = rv$q;
         rax$d = rax$q;
@@ -376,6 +403,21 @@ module patch_cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay
         lane_bx$write_data = mem_bx;
         lane_by$write_data = mem_by;
         tag$write_enable = fill;
+        fl_inc = fl_line$q + one12;
+        if (fl_on$q) begin
+            tag$write_address = fl_line$q;
+            tag$write_data = zero17;
+            tag$write_enable = 1'b1;
+            fl_line$d = fl_inc;
+            if (fl_line$q == last_line) begin
+                fl_on$d = 1'b0;
+            end
+        end
+        if (flush & ~fl_on$q) begin
+            fl_on$d = 1'b1;
+            fl_line$d = zero12;
+        end
+        flushing = fl_on$q;
         lane_ax$write_enable = fill;
         lane_ay$write_enable = fill;
         lane_bx$write_enable = fill;
@@ -515,6 +557,44 @@ module patch_cache$count(d,q,clock);
     end
           
 endmodule // patch_cache$count
+
+
+module patch_cache$fl_line(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$fl_line
+
+
+module patch_cache$fl_on(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$fl_on
 
 
 module patch_cache$head_valid(d,q,clock);

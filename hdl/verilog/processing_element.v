@@ -1,7 +1,7 @@
 // processing_element: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
+module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
     
     // Module arguments
     input wire  clock;
@@ -25,6 +25,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     input wire  [10:0] cmd_count;
     input wire  cfg_cache_enable;
     input wire  [11:0] cfg_cache_mask;
+    input wire  cfg_cache_flush;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
     input wire  mem_valid;
@@ -78,6 +79,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  cache$clock;
     reg  cache$cfg_enable;
     reg  [11:0] cache$cfg_mask;
+    reg  cache$flush;
+    wire  cache$flushing;
     reg  cache$req;
     reg  [15:0] cache$addr;
     wire  cache$resp_valid;
@@ -204,6 +207,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .clock(cache$clock),
         .cfg_enable(cache$cfg_enable),
         .cfg_mask(cache$cfg_mask),
+        .flush(cache$flush),
+        .flushing(cache$flushing),
         .req(cache$req),
         .addr(cache$addr),
         .resp_valid(cache$resp_valid),
@@ -359,6 +364,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         end
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
+        cache$flush = cfg_cache_flush;
         cache$req = loader$mem_req;
         cache$addr = loader$mem_addr;
         loader$mem_valid = cache$resp_valid;
@@ -429,7 +435,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         if (~accept & pop) begin
             tag_count$d = tag_count$q - one7;
         end
-        busy = (tag_count$q != zero7) | unit$busy;
+        busy = (tag_count$q != zero7) | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
         cache_misses = cache$misses;
@@ -444,12 +450,14 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
 endmodule // processing_element
 
 
-module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,resp_ax,resp_ay,resp_bx,resp_by,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,hits,misses);
+module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,resp_ax,resp_ay,resp_bx,resp_by,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,hits,misses);
     
     // Module arguments
     input wire  clock;
     input wire  cfg_enable;
     input wire  [11:0] cfg_mask;
+    input wire  flush;
+    output reg  flushing;
     input wire  req;
     input wire  [15:0] addr;
     output reg  resp_valid;
@@ -473,6 +481,10 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
+    localparam  one12 = 12'h1;
+    localparam  last_line = 12'hfff;
+    localparam  zero12 = 12'h0;
+    localparam  zero17 = 17'b0;
     
     // Stub signals
     reg  q_lane$clock;
@@ -508,6 +520,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
     reg  w_valid$d;
     wire  w_valid$q;
     reg  w_valid$clock;
+    reg  fl_on$d;
+    wire  fl_on$q;
+    reg  fl_on$clock;
+    reg  [11:0] fl_line$d;
+    wire  [11:0] fl_line$q;
+    reg  fl_line$clock;
     reg  mreq$d;
     wire  mreq$q;
     reg  mreq$clock;
@@ -581,6 +599,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
     reg  [16:0] head_key;
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
+    reg  [11:0] fl_inc;
     
     // Sub module instances
     processing_element$cache$q_lane q_lane(
@@ -635,6 +654,16 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
         .d(w_valid$d),
         .q(w_valid$q),
         .clock(w_valid$clock)
+    );
+    processing_element$cache$fl_on fl_on(
+        .d(fl_on$d),
+        .q(fl_on$q),
+        .clock(fl_on$clock)
+    );
+    processing_element$cache$fl_line fl_line(
+        .d(fl_line$d),
+        .q(fl_line$q),
+        .clock(fl_line$clock)
     );
     processing_element$cache$mreq mreq(
         .d(mreq$d),
@@ -728,6 +757,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
         b_key$clock = clock;
         b_line$clock = clock;
         w_valid$clock = clock;
+        fl_on$clock = clock;
+        fl_line$clock = clock;
         mreq$clock = clock;
         rv$clock = clock;
         rax$clock = clock;
@@ -745,6 +776,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
         b_key$d = b_key$q;
         b_line$d = b_line$q;
         w_valid$d = w_valid$q;
+        fl_on$d = fl_on$q;
+        fl_line$d = fl_line$q;
         mreq$d = mreq$q;
         rv$d = rv$q;
         rax$d = rax$q;
@@ -819,6 +852,21 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,req,addr,resp_valid,re
         lane_bx$write_data = mem_bx;
         lane_by$write_data = mem_by;
         tag$write_enable = fill;
+        fl_inc = fl_line$q + one12;
+        if (fl_on$q) begin
+            tag$write_address = fl_line$q;
+            tag$write_data = zero17;
+            tag$write_enable = 1'b1;
+            fl_line$d = fl_inc;
+            if (fl_line$q == last_line) begin
+                fl_on$d = 1'b0;
+            end
+        end
+        if (flush & ~fl_on$q) begin
+            fl_on$d = 1'b1;
+            fl_line$d = zero12;
+        end
+        flushing = fl_on$q;
         lane_ax$write_enable = fill;
         lane_ay$write_enable = fill;
         lane_bx$write_enable = fill;
@@ -958,6 +1006,44 @@ module processing_element$cache$count(d,q,clock);
     end
           
 endmodule // processing_element$cache$count
+
+
+module processing_element$cache$fl_line(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$fl_line
+
+
+module processing_element$cache$fl_on(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$fl_on
 
 
 module processing_element$cache$head_valid(d,q,clock);

@@ -94,7 +94,7 @@ pub mod waves;
 pub use driver::{Clocked, Driver};
 pub use error::{Error, Result};
 pub use memory::HostMemory;
-pub use replay::{Port, PortDir, Recording, ReplayReport, Simulator};
+pub use replay::{Design, Port, PortDir, Recording, ReplayReport, Simulator};
 pub use scoreboard::Scoreboard;
 pub use stream::{Monitor, Pacing, Received, Source};
 pub use vcd::waveform_path;

@@ -326,6 +326,30 @@ pub fn run(
     Ok((hits, k))
 }
 
+/// Invalidates the PE's patch cache, as the host must before the first run on new host memory
+/// contents (a new scene): waits until the PE is idle, raises `cfg_cache_flush` for one cycle and
+/// waits out the flush ([`LINES`] cycles, `busy` high). Returns the cycles it took.
+pub fn flush_cache(drv: &mut Driver<ProcessingElement>) -> Result<u64> {
+    let start = drv.cycles();
+    let limit = start + 4 * LINES as u64;
+    let mut flushed = false;
+    loop {
+        let idle = !drv.uut().busy.val();
+        if idle && flushed {
+            return Ok(drv.cycles() - start);
+        }
+        if drv.cycles() > limit {
+            return Err(Error::new(format!(
+                "the cache flush did not end within {} cycles (busy since cycle {start})",
+                limit - start
+            )));
+        }
+        let raise = idle && !flushed;
+        drv.cycle(|u| u.cfg_cache_flush.next = raise)?;
+        flushed |= raise;
+    }
+}
+
 fn set_sector(u: &mut ProcessingElement, first: [i32; 2], last: [i32; 2]) {
     u.first_x.next = field(first[0] as i64);
     u.first_y.next = field(first[1] as i64);

@@ -1,4 +1,5 @@
-//! Rung 4 of the equivalence ladder: replay a rust-hdl run against the block's exported Verilog.
+//! Rungs 4 and 5 of the equivalence ladder: replay a rust-hdl run against the block's exported
+//! Verilog, or against a Yosys netlist of it.
 //!
 //! rust-hdl's Verilog generator and its simulator disagree on expression widths in known cases
 //! (rust-hdl 0.46), so a block is only done when its exported Verilog
@@ -14,6 +15,8 @@
 //!    recorded inputs cycle by cycle and compares every output with `!==` (an `x` from the
 //!    Verilog is a mismatch), then runs it under Icarus Verilog (`iverilog -g2012` + `vvp`) or
 //!    Verilator (`--binary --timing`) and parses the testbench's summary line.
+//! 3. [`Recording::replay_netlist`] does the same through a Yosys netlist of the exported
+//!    Verilog instead ([`Design`]: word-level or gate-level), rung 5 of the ladder.
 //!
 //! The first mismatches are printed in detail (cycle, port, phase, expected, got) and returned in
 //! the [`Error`]; all artefacts stay in the directory given to [`Recording::replay`] for a
@@ -320,6 +323,64 @@ pub enum Simulator {
     Verilator,
 }
 
+/// What a [`Recording`] is replayed through: the exported Verilog itself (rung 4) or a Yosys
+/// netlist of it (rung 5, [`Recording::replay_netlist`]), written to `netlist.v` beside the
+/// testbench with Yosys' log in `netlist.log`. A netlist catches what synthesis reads
+/// differently from simulation: initial values, `x` propagation, sensitivity lists, width and
+/// sign rules, memory inference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Design {
+    /// The exported Verilog (`dut.v`).
+    Rtl,
+    /// Yosys' word-level netlist ([`WORD_PASSES`]): processes turned into multiplexers and
+    /// flip-flops, the hierarchy flattened, expressions optimised and narrowed, block RAMs
+    /// inferred as `$mem` cells; operators stay words (`$add`, `$mul`, …).
+    Words,
+    /// Yosys' gate-level netlist ([`GATE_PASSES`]): generic synthesis down to single-bit gates
+    /// and flip-flops (`techmap`, `abc`); block RAMs stay `$mem` arrays. Tens of thousands of
+    /// gates for the PE: event-driven simulators crawl through it (Icarus: a few cycles a
+    /// second), Verilator does not.
+    Gates,
+}
+
+/// The Yosys passes of [`Design::Words`], after `read_verilog dut.v`.
+pub const WORD_PASSES: &str = "hierarchy -top dut; proc; flatten; opt_expr; opt_clean; opt -full; wreduce; \
+     peepopt; opt_clean; memory -nomap; opt -full; stat";
+/// The Yosys passes of [`Design::Gates`], after `read_verilog dut.v`: Yosys' generic `synth` up
+/// to (not including) its mapping of memories to flip-flops, then its gate mapping.
+pub const GATE_PASSES: &str =
+    "synth -flatten -top dut -run begin:fine; opt -fast -full; techmap; opt -fast; abc -fast; opt_clean; stat";
+
+impl Design {
+    /// The Yosys script that makes `netlist.v` from `dut.v`, or `None` for [`Design::Rtl`].
+    fn script(self) -> Option<String> {
+        let passes = match self {
+            Design::Rtl => return None,
+            Design::Words => WORD_PASSES,
+            Design::Gates => GATE_PASSES,
+        };
+        Some(format!("read_verilog dut.v; {passes}; write_verilog -noattr netlist.v"))
+    }
+
+    /// The file the simulator compiles.
+    fn file(self) -> &'static str {
+        match self {
+            Design::Rtl => "dut.v",
+            Design::Words | Design::Gates => "netlist.v",
+        }
+    }
+}
+
+impl fmt::Display for Design {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Design::Rtl => "exported Verilog",
+            Design::Words => "Yosys word-level netlist",
+            Design::Gates => "Yosys gate-level netlist",
+        })
+    }
+}
+
 impl fmt::Display for Simulator {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
@@ -334,6 +395,8 @@ impl fmt::Display for Simulator {
 pub struct ReplayReport {
     /// The simulator that ran it.
     pub simulator: Simulator,
+    /// What it simulated.
+    pub design: Design,
     /// Cycles replayed.
     pub cycles: usize,
     /// Output values compared (don't-care samples excluded), all equal.
@@ -346,7 +409,8 @@ impl fmt::Display for ReplayReport {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "{}: {} cycles, {} output values, all equal to the rust-hdl simulation ({})",
+            "{} under {}: {} cycles, {} output values, all equal to the rust-hdl simulation ({})",
+            self.design,
             self.simulator,
             self.cycles,
             self.checks,
@@ -457,6 +521,18 @@ impl Recording {
     /// the error lists the first mismatches. `uut` is the recorded block (its structure, not its
     /// state, is exported): typically `driver.uut()`.
     pub fn replay(&self, uut: &dyn Block, dir: &Path, simulator: Simulator) -> Result<ReplayReport> {
+        self.replay_netlist(uut, dir, Design::Rtl, simulator)
+    }
+
+    /// As [`Self::replay`], through `design`: the exported Verilog, or a Yosys netlist of it
+    /// (rung 5) made in `dir` by the `yosys` on PATH.
+    pub fn replay_netlist(
+        &self,
+        uut: &dyn Block,
+        dir: &Path,
+        design: Design,
+        simulator: Simulator,
+    ) -> Result<ReplayReport> {
         if self.cycles == 0 {
             return Err(Error::new("nothing to replay: no cycle was recorded"));
         }
@@ -474,13 +550,16 @@ impl Recording {
             write(&file, &text)?;
         }
         write("tb.v", &self.testbench())?;
+        if let Some(script) = design.script() {
+            run_tool(dir, "yosys", &["-q", "-l", "netlist.log", "-p", &script], "apt-get install -y yosys")?;
+        }
         let output = match simulator {
-            Simulator::Icarus => run_icarus(dir)?,
-            Simulator::Verilator => run_verilator(dir)?,
+            Simulator::Icarus => run_icarus(dir, design.file())?,
+            Simulator::Verilator => run_verilator(dir, design.file())?,
         };
         let (cycles, checks) = parse_summary(&output, self.cycles)
-            .map_err(|e| e.context(format_args!("{simulator} replay in {}", dir.display())))?;
-        Ok(ReplayReport { simulator, cycles, checks, dir: dir.to_owned() })
+            .map_err(|e| e.context(format_args!("{design} under {simulator}, replay in {}", dir.display())))?;
+        Ok(ReplayReport { simulator, design, cycles, checks, dir: dir.to_owned() })
     }
 
     /// Whether any sample of output column `i` in `phase` is a don't-care.
@@ -645,15 +724,17 @@ fn tail(text: &str) -> String {
     out
 }
 
-fn run_icarus(dir: &Path) -> Result<String> {
+/// Compiles `tb.v` with the design in `design` (the exported Verilog or a netlist of it).
+fn run_icarus(dir: &Path, design: &str) -> Result<String> {
     const INSTALL: &str = "apt-get install -y iverilog";
-    let compile = ["-g2012", "-s", TB_MODULE, "-o", "replay.vvp", "tb.v", "dut.v"];
+    let compile = ["-g2012", "-s", TB_MODULE, "-o", "replay.vvp", "tb.v", design];
     run_tool(dir, "iverilog", &compile, INSTALL)?;
     let run = run_tool(dir, "vvp", &["-n", "replay.vvp"], INSTALL)?;
     Ok(String::from_utf8_lossy(&run.stdout).into_owned())
 }
 
-fn run_verilator(dir: &Path) -> Result<String> {
+/// Builds `tb.v` with the design in `design` into a binary and runs it.
+fn run_verilator(dir: &Path, design: &str) -> Result<String> {
     let build = [
         "--binary",
         "--timing",
@@ -669,7 +750,7 @@ fn run_verilator(dir: &Path) -> Result<String> {
         "-o",
         "replay",
         "tb.v",
-        "dut.v",
+        design,
     ];
     run_tool(dir, "verilator", &build, "apt-get install -y verilator")?;
     let run = run_tool(dir, "verilator/replay", &[], "it was just built")?;

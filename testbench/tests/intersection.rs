@@ -12,7 +12,7 @@ use shelling_hdl::formats::{direction, Quantizer};
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
 use shelling_testbench::intersection::{model_bundle, model_bundle_counted, run_bundle, Job, MAX_BUNDLE};
-use shelling_testbench::{waveform_path, Driver, Error, Pacing, Result, Scoreboard, Simulator};
+use shelling_testbench::{waveform_path, Design, Driver, Error, Pacing, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
 
 fn driver() -> Result<Driver<IntersectionUnit>> {
@@ -226,10 +226,19 @@ fn exported_verilog_reproduces_the_simulation() -> Result<()> {
     drv.record_ports()?;
     run_bundle(&mut drv, &dirs, &jobs, Pacing { idle: true, backpressure: false }, seed)?;
     let rec = drv.take_recording().ok_or("recording was on")?;
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("intersection_unit");
-    let report =
-        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
-    println!("{report:?}");
+    // Rung 4 under both simulators, and rung 5: Yosys' gate-level netlist of the same Verilog.
+    for (design, simulator, name) in [
+        (Design::Rtl, Simulator::Icarus, "intersection_unit"),
+        (Design::Rtl, Simulator::Verilator, "intersection_unit-verilator"),
+        (Design::Gates, Simulator::Icarus, "intersection_unit-gates"),
+    ] {
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(name);
+        let report = rec
+            .replay_netlist(drv.uut(), &dir, design, simulator)
+            .map_err(|e| e.context(format!("seed {seed:#x}")))?;
+        assert_eq!(report.cycles, rec.cycles());
+        println!("{report}");
+    }
     Ok(())
 }
 

@@ -8,7 +8,8 @@ use rand_chacha::ChaCha8Rng;
 use shelling_hdl::formats::{direction, Quantizer};
 use shelling_hdl::pe::ProcessingElement;
 use shelling_testbench::memory::HostMemory;
-use shelling_testbench::pe::{model, run, CacheConfig, Command, PeSetup};
+use shelling_hdl::cache::LINES;
+use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
 use shelling_testbench::{Driver, Error, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
 
@@ -187,5 +188,39 @@ fn exported_verilog_reproduces_the_simulation() -> Result<()> {
     let report =
         rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
     println!("{report:?}");
+    Ok(())
+}
+
+#[test]
+fn a_cache_flush_forgets_the_last_scene() -> Result<()> {
+    let seed = 0xf1u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let (setup, scene_a) = scene(&mut rng, 32, 40);
+    let cmds = commands(&mut rng, &setup, 40, 4);
+    // Scene B: the same patches under other ids.
+    let scene_b: Vec<[i32; 4]> = scene_a.iter().rev().copied().collect();
+    let (want_b, counts) = model(&setup, &scene_b, &cmds);
+    let cache = CacheConfig { lines: Some(64) };
+    let mut drv = Driver::new(ProcessingElement::default())?;
+    run(&mut drv, &mut HostMemory::new(scene_a, 2)?, &setup, cache, &cmds, |_, _| {})?;
+    // Without a flush, B's ids hit A's lines: wrong patches (so this test can tell).
+    let (stale, _) = run(&mut drv, &mut HostMemory::new(scene_b.clone(), 2)?, &setup, cache, &cmds, |_, _| {})?;
+    assert_ne!(stale, want_b, "seed {seed:#x}: the stale cache went unnoticed");
+    // The flush: one cycle to raise it, then one cycle per line with `busy` high.
+    assert_eq!(flush_cache(&mut drv)?, LINES as u64 + 1, "seed {seed:#x}");
+    let mut memory = HostMemory::new(scene_b, 2)?;
+    let (fresh, k) = run(&mut drv, &mut memory, &setup, cache, &cmds, |_, _| {})?;
+    let mut board = Scoreboard::new("after a flush", seed, want_b).with_context("cache on, T_c 2");
+    board.check_all(fresh.into_iter().enumerate().map(|(i, h)| (i as u64, h)))?;
+    board.finish()?;
+    // Every id's first load after the flush misses.
+    let mut ids = cmds
+        .iter()
+        .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
+        .collect::<Vec<_>>();
+    ids.sort_unstable();
+    ids.dedup();
+    assert!(k.memory_loads >= ids.len() as u64, "seed {seed:#x}: {k:?}");
+    assert_eq!(k.memory_loads + k.cache_hits, counts.loads, "seed {seed:#x}");
     Ok(())
 }
