@@ -743,6 +743,10 @@ fn run_verilator(dir: &Path, design: &str) -> Result<String> {
         "-Wno-fatal",
         "-Wno-lint",
         "-Wno-style",
+        // The generated C++ unoptimised: builds in well under half the time of Verilator's
+        // default `-Os`, and a replay's few hundred thousand cycles still run in seconds.
+        "-MAKEFLAGS",
+        "OPT_FAST=-O0",
         "--top-module",
         TB_MODULE,
         "--Mdir",
