@@ -12,7 +12,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "cargo xtask", about = "Project automation for shelling")]
+#[command(name = "cargo xtask", bin_name = "cargo xtask", about = "Project automation for shelling")]
 struct Cli {
     #[command(subcommand)]
     task: Task,

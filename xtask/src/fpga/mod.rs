@@ -37,7 +37,7 @@ use tools::{Tool, ToolKind};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, ValueEnum, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Family {
-    /// Lattice ECP5, LFE5U-85F (CABGA381, speed grade 6): nextpnr-ecp5.
+    /// Lattice ECP5, LFE5U-85F (CABGA381, speed grade 6 unless --ecp5-speed): nextpnr-ecp5.
     Ecp5,
     /// Lattice iCE40 (UP5K SG48 or HX8K CT256, see --ice40-device): nextpnr-ice40.
     Ice40,
@@ -76,6 +76,9 @@ pub struct FpgaArgs {
     /// The iCE40 part.
     #[arg(long, value_enum, default_value = "up5k")]
     pub ice40_device: Ice40Device,
+    /// ECP5 speed grade (nextpnr --speed): 6 is the slowest and nextpnr's default.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(6..=8))]
+    pub ecp5_speed: u8,
     /// Target clock frequency on ECP5, MHz (nextpnr --freq).
     #[arg(long, default_value_t = 150.0)]
     pub ecp5_mhz: f64,
@@ -130,9 +133,9 @@ pub struct Row {
 #[derive(Clone, Debug)]
 struct Target {
     family: Family,
-    device: &'static str,
+    device: String,
     synth: &'static str,
-    nextpnr_device: &'static [&'static str],
+    nextpnr_device: Vec<String>,
     mhz: f64,
     tool: ToolKind,
 }
@@ -142,30 +145,40 @@ impl Target {
         match (family, args.ice40_device) {
             (Family::Ecp5, _) => Target {
                 family,
-                device: "LFE5U-85F-6 CABGA381",
+                device: format!("LFE5U-85F-{} CABGA381", args.ecp5_speed),
                 synth: "synth_ecp5",
-                nextpnr_device: &["--85k", "--package", "CABGA381"],
+                nextpnr_device: strings(&[
+                    "--85k",
+                    "--speed",
+                    &args.ecp5_speed.to_string(),
+                    "--package",
+                    "CABGA381",
+                ]),
                 mhz: args.ecp5_mhz,
                 tool: ToolKind::NextpnrEcp5,
             },
             (Family::Ice40, Ice40Device::Up5k) => Target {
                 family,
-                device: "iCE40UP5K SG48",
+                device: "iCE40UP5K SG48".into(),
                 synth: "synth_ice40 -dsp",
-                nextpnr_device: &["--up5k", "--package", "sg48"],
+                nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
             },
             (Family::Ice40, Ice40Device::Hx8k) => Target {
                 family,
-                device: "iCE40HX8K CT256",
+                device: "iCE40HX8K CT256".into(),
                 synth: "synth_ice40",
-                nextpnr_device: &["--hx8k", "--package", "ct256"],
+                nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
             },
         }
     }
+}
+
+fn strings(s: &[&str]) -> Vec<String> {
+    s.iter().map(|s| s.to_string()).collect()
 }
 
 /// What every job shares.
@@ -309,7 +322,7 @@ fn run_job(ctx: &Flow, block: &str, target: &Target) -> Row {
     let mut row = Row {
         block: block.to_string(),
         family: target.family,
-        device: target.device.to_string(),
+        device: target.device.clone(),
         luts: None,
         ffs: None,
         dsps: None,
@@ -376,7 +389,7 @@ fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()
     let report_json = "report.json";
     // A stale report from an earlier run must not be read as this one's.
     let _ = std::fs::remove_file(dir.join(report_json));
-    let mut args: Vec<String> = target.nextpnr_device.iter().map(|s| s.to_string()).collect();
+    let mut args = target.nextpnr_device.clone();
     args.extend([
         "--json".to_string(),
         netlist_json.to_string(),

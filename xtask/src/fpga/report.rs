@@ -138,13 +138,12 @@ pub fn round(x: f64, digits: i32) -> f64 {
 mod tests {
     use super::*;
 
-    /// A report nextpnr-ecp5 0.11 wrote for the patch loader in its wrapper (critical paths cut
-    /// to their first and last segments).
+    /// The report nextpnr-ecp5 0.11 (YoWASP) wrote for the patch loader in its wrapper, seed 1.
     const ECP5_REPORT: &str = include_str!("testdata/nextpnr-ecp5-report.json");
     /// The same from Debian's nextpnr-ice40 0.4, for the UP5K.
     const ICE40_REPORT: &str = include_str!("testdata/nextpnr-ice40-report.json");
-    /// The utilisation table of a nextpnr-ice40 log for the screener on the UP5K, which does not
-    /// fit.
+    /// The head, the utilisation table and the error of the nextpnr-ice40 log for the whole PE on
+    /// the UP5K, which does not fit.
     const ICE40_LOG: &str = include_str!("testdata/nextpnr-ice40-nofit.log");
 
     #[test]
@@ -158,7 +157,9 @@ mod tests {
         assert_eq!(r.utilization["MULT18X18D"], Use { used: 0, available: 156 });
         let p = r.critical_path().unwrap();
         assert_eq!(p.clock, "posedge $glbnet$clock$TRELLIS_IO_IN");
-        assert!(p.from.ends_with(".Q") && p.delay_ns > 0.0 && !p.nets.is_empty(), "{p:?}");
+        assert_eq!(p.from, "sout_TRELLIS_FF_Q.Q", "the wrapper's last input stage (out_ready)");
+        assert!((p.delay_ns - 1000.0 / fmax).abs() < 0.01, "the path sets the fmax: {p:?}");
+        assert!(p.logic_levels > 0 && !p.nets.is_empty(), "{p:?}");
     }
 
     #[test]
@@ -173,10 +174,11 @@ mod tests {
     #[test]
     fn utilisation_of_a_design_that_does_not_fit_comes_from_the_log() {
         let t = log_utilisation(ICE40_LOG);
-        assert_eq!(t["ICESTORM_LC"], Use { used: 6405, available: 5280 });
-        assert_eq!(t["ICESTORM_DSP"], Use { used: 30, available: 8 });
-        assert_eq!(t["SB_RGBA_DRV"], Use { used: 0, available: 1 });
-        assert_eq!(over_capacity(&t), ["ICESTORM_DSP 30/8", "ICESTORM_LC 6405/5280"]);
+        assert_eq!(t["ICESTORM_LC"], Use { used: 9610, available: 5280 });
+        assert_eq!(t["ICESTORM_DSP"], Use { used: 48, available: 8 });
+        assert_eq!(t["ICESTORM_SPRAM"], Use { used: 0, available: 4 });
+        assert_eq!(t.len(), 15);
+        assert_eq!(over_capacity(&t), ["ICESTORM_DSP 48/8", "ICESTORM_LC 9610/5280", "ICESTORM_RAM 135/30"]);
         assert!(log_utilisation("no table").is_empty());
     }
 
