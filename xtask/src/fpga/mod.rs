@@ -1,0 +1,593 @@
+//! `cargo xtask fpga --out DIR`: resources and post-route clock rate of every RTL block.
+//!
+//! 1. The Verilog of every block is exported fresh from the Rust source
+//!    (`shelling_testbench::export::write`) into `DIR/verilog/`.
+//! 2. Each block is wrapped in registers (see [`wrapper`]), synthesized by Yosys (`synth_ecp5`,
+//!    `synth_ice40 -dsp`) and placed and routed by nextpnr with a fixed seed, a target frequency
+//!    and `--timing-allow-fail`, so that a missed target is measured rather than refused.
+//! 3. The counts come from nextpnr's report (its log's utilisation table for a design that does
+//!    not fit), less the wrapper's flip-flops, which the netlist tells apart; fmax and the
+//!    critical path come from the report.
+//!
+//! Writes `DIR/fpga.json`, `DIR/fpga.md`, `DIR/logs/BLOCK-FAMILY-{yosys,nextpnr}.log` and the
+//! intermediate files under `DIR/work/BLOCK-FAMILY/`. A design that does not fit the device is a
+//! result (`"fits": false`, the bel types over capacity named, no fmax); a tool that fails is an
+//! error row, and the command then exits non-zero after writing everything else.
+
+mod netlist;
+mod report;
+mod tools;
+mod wrapper;
+
+use anyhow::{bail, Context, Result};
+use clap::{Args, ValueEnum};
+use report::{PathSummary, Report, Use};
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::fs::File;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode, Stdio};
+use std::sync::Mutex;
+use std::time::Instant;
+use tools::{Tool, ToolKind};
+
+/// The FPGA families.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, ValueEnum, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Family {
+    /// Lattice ECP5, LFE5U-85F (CABGA381, speed grade 6 unless --ecp5-speed): nextpnr-ecp5.
+    Ecp5,
+    /// Lattice iCE40 (UP5K SG48 or HX8K CT256, see --ice40-device): nextpnr-ice40.
+    Ice40,
+}
+
+impl Family {
+    fn name(self) -> &'static str {
+        match self {
+            Family::Ecp5 => "ecp5",
+            Family::Ice40 => "ice40",
+        }
+    }
+}
+
+/// The iCE40 part.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Ice40Device {
+    /// iCE40UP5K, SG48: 5280 logic cells, 8 DSP (SB_MAC16), 30 block RAMs.
+    Up5k,
+    /// iCE40HX8K, CT256: 7680 logic cells, no DSP, 32 block RAMs.
+    Hx8k,
+}
+
+/// Options of `cargo xtask fpga`.
+#[derive(Args, Debug)]
+pub struct FpgaArgs {
+    /// Output directory: fpga.json, fpga.md, verilog/, logs/ and work/ (created).
+    #[arg(long)]
+    pub out: PathBuf,
+    /// Blocks to run, comma-separated (default: every exported block).
+    #[arg(long, value_delimiter = ',')]
+    pub blocks: Vec<String>,
+    /// FPGA families, comma-separated.
+    #[arg(long, value_delimiter = ',', default_values = ["ecp5", "ice40"])]
+    pub families: Vec<Family>,
+    /// The iCE40 part.
+    #[arg(long, value_enum, default_value = "up5k")]
+    pub ice40_device: Ice40Device,
+    /// ECP5 speed grade (nextpnr --speed): 6 is the slowest and nextpnr's default.
+    #[arg(long, default_value_t = 6, value_parser = clap::value_parser!(u8).range(6..=8))]
+    pub ecp5_speed: u8,
+    /// Target clock frequency on ECP5, MHz (nextpnr --freq).
+    #[arg(long, default_value_t = 150.0)]
+    pub ecp5_mhz: f64,
+    /// Target clock frequency on iCE40, MHz (nextpnr --freq).
+    #[arg(long, default_value_t = 50.0)]
+    pub ice40_mhz: f64,
+    /// nextpnr's placement seed (fixed, for reproducible results).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Jobs (one block on one family: Yosys then nextpnr) run at once.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
+    pub jobs: u64,
+    /// Install the missing tools from PyPI (YoWASP) into the virtual environment
+    /// $SHELLING_FPGA_VENV (default .venv-fpga at the repository root) first.
+    #[arg(long)]
+    pub install: bool,
+}
+
+/// One block on one family, as `fpga.json` records it.
+#[derive(Serialize, Debug, Clone)]
+pub struct Row {
+    pub block: String,
+    pub family: Family,
+    pub device: String,
+    /// ECP5: LUT4s (TRELLIS_COMB: logic, carry and LUT RAM); iCE40: logic cells (ICESTORM_LC).
+    pub luts: Option<u64>,
+    pub ffs: Option<u64>,
+    pub dsps: Option<u64>,
+    pub brams: Option<u64>,
+    /// ECP5 16x4 LUT RAMs (TRELLIS_RAMW; their LUTs are in `luts`); iCE40 has none.
+    pub lutrams: Option<u64>,
+    /// Post-route fmax; `null` when the design does not fit or a tool failed.
+    pub fmax_mhz: Option<f64>,
+    pub target_mhz: f64,
+    /// Whether nextpnr placed and routed it; `null` when a tool failed first.
+    pub fits: Option<bool>,
+    /// Bel types over the device's capacity (`TYPE used/available`) when it does not fit.
+    pub over_capacity: Vec<String>,
+    /// A tool's failure: the tool, its command line and the tail of its log.
+    pub error: Option<String>,
+    /// The wrapper's flip-flops, subtracted from `ffs` (and, on iCE40, from `luts`).
+    pub wrapper_ffs: Option<u64>,
+    pub seed: u64,
+    /// Wall-clock seconds of Yosys and of nextpnr.
+    pub yosys_s: Option<f64>,
+    pub nextpnr_s: Option<f64>,
+    pub critical_path: Option<PathSummary>,
+    pub tool_versions: BTreeMap<String, String>,
+}
+
+/// A family on its part: what Yosys and nextpnr are told.
+#[derive(Clone, Debug)]
+struct Target {
+    family: Family,
+    device: String,
+    synth: &'static str,
+    nextpnr_device: Vec<String>,
+    mhz: f64,
+    tool: ToolKind,
+}
+
+impl Target {
+    fn new(family: Family, args: &FpgaArgs) -> Target {
+        match (family, args.ice40_device) {
+            (Family::Ecp5, _) => Target {
+                family,
+                device: format!("LFE5U-85F-{} CABGA381", args.ecp5_speed),
+                synth: "synth_ecp5",
+                nextpnr_device: strings(&[
+                    "--85k",
+                    "--speed",
+                    &args.ecp5_speed.to_string(),
+                    "--package",
+                    "CABGA381",
+                ]),
+                mhz: args.ecp5_mhz,
+                tool: ToolKind::NextpnrEcp5,
+            },
+            (Family::Ice40, Ice40Device::Up5k) => Target {
+                family,
+                device: "iCE40UP5K SG48".into(),
+                synth: "synth_ice40 -dsp",
+                nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
+                mhz: args.ice40_mhz,
+                tool: ToolKind::NextpnrIce40,
+            },
+            (Family::Ice40, Ice40Device::Hx8k) => Target {
+                family,
+                device: "iCE40HX8K CT256".into(),
+                synth: "synth_ice40",
+                nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
+                mhz: args.ice40_mhz,
+                tool: ToolKind::NextpnrIce40,
+            },
+        }
+    }
+}
+
+fn strings(s: &[&str]) -> Vec<String> {
+    s.iter().map(|s| s.to_string()).collect()
+}
+
+/// What every job shares.
+struct Flow {
+    /// The output directory (absolute); the tools run in it, on paths relative to it.
+    out: PathBuf,
+    tools: BTreeMap<ToolKind, Tool>,
+    seed: u64,
+}
+
+/// Runs `cargo xtask fpga`.
+pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
+    let repo = PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().map(Path::to_path_buf).unwrap_or_default();
+    let known: Vec<&str> = shelling_testbench::export::blocks().into_iter().map(|(name, _)| name).collect();
+    let blocks: Vec<String> = if args.blocks.is_empty() {
+        known.iter().map(|s| s.to_string()).collect()
+    } else {
+        for b in &args.blocks {
+            if !known.contains(&b.as_str()) {
+                bail!("no block `{b}`; the blocks are {}", known.join(", "));
+            }
+        }
+        args.blocks.clone()
+    };
+    let mut families = args.families.clone();
+    families.sort();
+    families.dedup();
+    if families.is_empty() {
+        bail!("no family given");
+    }
+    let targets: Vec<Target> = families.iter().map(|&f| Target::new(f, args)).collect();
+
+    // The tools, before anything is written.
+    let mut kinds = vec![ToolKind::Yosys];
+    kinds.extend(targets.iter().map(|t| t.tool));
+    let venv = tools::venv_dir(&repo);
+    let found = tools::resolve(&kinds, &venv, args.install)?;
+    for t in &found {
+        eprintln!("{:<14} {} ({}; found as {})", t.kind.native(), t.path.display(), t.version, t.found_as);
+    }
+    let tools: BTreeMap<ToolKind, Tool> = found.into_iter().map(|t| (t.kind, t)).collect();
+
+    std::fs::create_dir_all(&args.out).with_context(|| format!("creating {}", args.out.display()))?;
+    let out = args.out.canonicalize().with_context(|| format!("resolving {}", args.out.display()))?;
+    for sub in ["logs", "work"] {
+        std::fs::create_dir_all(out.join(sub))
+            .with_context(|| format!("creating {}/{sub}", out.display()))?;
+    }
+    let written = shelling_testbench::export::write(&out.join("verilog"))
+        .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
+    eprintln!("exported {} files into {}", written.len(), out.join("verilog").display());
+
+    let ctx = Flow { out: out.clone(), tools, seed: args.seed };
+    // Every (block, target), reported in this order; run longest first (the whole PE).
+    let jobs: Vec<(String, Target)> =
+        blocks.iter().flat_map(|b| targets.iter().map(move |t| (b.clone(), t.clone()))).collect();
+    let mut order: Vec<usize> = (0..jobs.len()).collect();
+    order.sort_by_key(|&i| jobs[i].0 != "processing_element");
+    let rows = run_all(&ctx, &jobs, &order, args.jobs as usize);
+
+    let json = serde_json::to_string_pretty(&rows)? + "\n";
+    std::fs::write(out.join("fpga.json"), json)
+        .with_context(|| format!("writing {}/fpga.json", out.display()))?;
+    let md = markdown(&rows, &ctx);
+    std::fs::write(out.join("fpga.md"), &md).with_context(|| format!("writing {}/fpga.md", out.display()))?;
+    println!("{md}");
+    println!(
+        "written: {}/fpga.json, {}/fpga.md, logs in {}/logs",
+        out.display(),
+        out.display(),
+        out.display()
+    );
+
+    for r in rows.iter().filter(|r| r.block == "processing_element" && r.family == Family::Ecp5) {
+        match r.fmax_mhz {
+            Some(f) if f >= r.target_mhz => {
+                println!("goal met: the PE on ECP5 at {f:.1} MHz >= {} MHz", r.target_mhz)
+            }
+            Some(f) => println!("goal missed: the PE on ECP5 at {f:.1} MHz < {} MHz", r.target_mhz),
+            None => println!("goal not measured: the PE on ECP5 has no fmax"),
+        }
+    }
+    let failed: Vec<&Row> = rows.iter().filter(|r| r.error.is_some()).collect();
+    if failed.is_empty() {
+        Ok(ExitCode::SUCCESS)
+    } else {
+        for r in &failed {
+            eprintln!(
+                "error: {} on {}: {}",
+                r.block,
+                r.family.name(),
+                r.error.as_deref().unwrap_or_default()
+            );
+        }
+        eprintln!("{} of {} runs failed", failed.len(), rows.len());
+        Ok(ExitCode::FAILURE)
+    }
+}
+
+/// Runs the jobs on `workers` threads, in `order`; returns the rows in the jobs' order.
+fn run_all(ctx: &Flow, jobs: &[(String, Target)], order: &[usize], workers: usize) -> Vec<Row> {
+    let queue = Mutex::new(order.iter().copied());
+    let results: Mutex<Vec<Option<Row>>> = Mutex::new(vec![None; jobs.len()]);
+    let done = Mutex::new(0usize);
+    std::thread::scope(|s| {
+        for _ in 0..workers.min(jobs.len()).max(1) {
+            s.spawn(|| loop {
+                let Some(i) = queue.lock().expect("queue").next() else { break };
+                let (block, target) = &jobs[i];
+                let row = run_job(ctx, block, target);
+                let mut n = done.lock().expect("counter");
+                *n += 1;
+                eprintln!("[{}/{}] {}", *n, jobs.len(), summary(&row));
+                results.lock().expect("results")[i] = Some(row);
+            });
+        }
+    });
+    results.into_inner().expect("results").into_iter().map(|r| r.expect("every job ran")).collect()
+}
+
+fn summary(r: &Row) -> String {
+    let time = |t: Option<f64>| t.map(|t| format!("{t:.1} s")).unwrap_or_else(|| "-".into());
+    let outcome = match (&r.error, r.fits, r.fmax_mhz) {
+        (Some(_), _, _) => "FAILED".to_string(),
+        (None, Some(false), _) => format!("does not fit ({})", r.over_capacity.join(", ")),
+        (None, _, Some(f)) => format!("{f:.1} MHz (target {})", r.target_mhz),
+        _ => "no clocked path".to_string(),
+    };
+    format!(
+        "{} {}: yosys {}, nextpnr {}: {outcome}",
+        r.block,
+        r.family.name(),
+        time(r.yosys_s),
+        time(r.nextpnr_s)
+    )
+}
+
+fn run_job(ctx: &Flow, block: &str, target: &Target) -> Row {
+    let yosys = &ctx.tools[&ToolKind::Yosys];
+    let nextpnr = &ctx.tools[&target.tool];
+    let mut row = Row {
+        block: block.to_string(),
+        family: target.family,
+        device: target.device.clone(),
+        luts: None,
+        ffs: None,
+        dsps: None,
+        brams: None,
+        lutrams: None,
+        fmax_mhz: None,
+        target_mhz: target.mhz,
+        fits: None,
+        over_capacity: Vec::new(),
+        error: None,
+        wrapper_ffs: None,
+        seed: ctx.seed,
+        yosys_s: None,
+        nextpnr_s: None,
+        critical_path: None,
+        tool_versions: BTreeMap::from([
+            ("yosys".to_string(), yosys.version.clone()),
+            ("nextpnr".to_string(), nextpnr.version.clone()),
+        ]),
+    };
+    if let Err(e) = measure(ctx, block, target, &mut row) {
+        row.error = Some(format!("{e:#}"));
+    }
+    row
+}
+
+/// Yosys then nextpnr on one block; fills `row` as it goes.
+fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()> {
+    let family = target.family.name();
+    let job = format!("{block}-{family}");
+    // The tools run in the job's directory on bare file names: the YoWASP builds resolve a
+    // relative path with a directory against the host's root directories first (`work/x` would
+    // be `/work/x`), so every file they read or write is in that directory.
+    let dir = ctx.out.join("work").join(&job);
+    std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
+    let exported = ctx.out.join("verilog").join(format!("{block}.v"));
+    let text =
+        std::fs::read_to_string(&exported).with_context(|| format!("reading {}", exported.display()))?;
+    let ports = wrapper::ports(&text, block)?;
+    let wrap = wrapper::wrap(block, &ports);
+    let source = format!("{block}.v");
+    let wrapper_v = "wrapper.v";
+    for (name, body) in [(source.as_str(), text.as_str()), (wrapper_v, wrap.verilog.as_str())] {
+        std::fs::write(dir.join(name), body)
+            .with_context(|| format!("writing {}", dir.join(name).display()))?;
+    }
+
+    let netlist_json = "synth.json";
+    let script = format!(
+        "read_verilog {source} {wrapper_v}; {} -top {} -json {netlist_json}; stat",
+        target.synth, wrap.top
+    );
+    eprintln!("{job}: yosys ({} {} bits in, {} bits out)", target.synth, wrap.in_bits, wrap.out_bits);
+    let yosys_args = vec!["-p".to_string(), script];
+    let t = Instant::now();
+    let log = ctx.out.join("logs").join(format!("{job}-yosys.log"));
+    let status = tool_run(&dir, &ctx.tools[&ToolKind::Yosys], &yosys_args, &log)?;
+    row.yosys_s = Some(report::round(t.elapsed().as_secs_f64(), 1));
+    status.check()?;
+    let cells = netlist::count(&dir.join(netlist_json), &wrap.top)?;
+    row.wrapper_ffs = Some(cells.wrapper_ffs);
+    row.ffs = Some(cells.ffs - cells.wrapper_ffs);
+
+    let report_json = "report.json";
+    // A stale report from an earlier run must not be read as this one's.
+    let _ = std::fs::remove_file(dir.join(report_json));
+    let mut args = target.nextpnr_device.clone();
+    args.extend([
+        "--json".to_string(),
+        netlist_json.to_string(),
+        "--freq".to_string(),
+        target.mhz.to_string(),
+        "--seed".to_string(),
+        ctx.seed.to_string(),
+        "--timing-allow-fail".to_string(),
+        "--report".to_string(),
+        report_json.to_string(),
+    ]);
+    eprintln!("{job}: nextpnr ({}, {} MHz target)", target.device, target.mhz);
+    let log = ctx.out.join("logs").join(format!("{job}-nextpnr.log"));
+    let t = Instant::now();
+    let status = tool_run(&dir, &ctx.tools[&target.tool], &args, &log)?;
+    row.nextpnr_s = Some(report::round(t.elapsed().as_secs_f64(), 1));
+    let log_text = std::fs::read_to_string(&log).unwrap_or_default();
+    let packed = report::log_utilisation(&log_text);
+    let (used, fits) = if status.ok {
+        let path = dir.join(report_json);
+        let text = std::fs::read_to_string(&path).with_context(|| {
+            format!("nextpnr succeeded but wrote no {}; {}", path.display(), status.describe())
+        })?;
+        let rep = Report::parse(&text).with_context(|| path.display().to_string())?;
+        row.fmax_mhz = rep.fmax_mhz().map(|f| report::round(f, 2));
+        row.critical_path = rep.critical_path();
+        (rep.utilization, true)
+    } else {
+        let over = report::over_capacity(&packed);
+        if over.is_empty() {
+            // Not a capacity problem: a real failure.
+            status.check()?;
+        }
+        row.over_capacity = over;
+        (packed, false)
+    };
+    row.fits = Some(fits);
+    let n = |bel: &str| used.get(bel).map(|u: &Use| u.used).unwrap_or(0);
+    match target.family {
+        Family::Ecp5 => {
+            row.luts = Some(n("TRELLIS_COMB"));
+            row.dsps = Some(n("MULT18X18D") + n("ALU54B"));
+            row.brams = Some(n("DP16KD"));
+            row.lutrams = Some(n("TRELLIS_RAMW"));
+        }
+        Family::Ice40 => {
+            // Every wrapper flip-flop sits alone in a logic cell (see `wrapper`).
+            row.luts = Some(n("ICESTORM_LC").saturating_sub(cells.wrapper_ffs));
+            row.dsps = Some(n("ICESTORM_DSP"));
+            row.brams = Some(n("ICESTORM_RAM") + n("ICESTORM_SPRAM"));
+        }
+    }
+    Ok(())
+}
+
+/// How a tool run ended, with what it takes to report a failure.
+struct Status {
+    ok: bool,
+    tool: String,
+    command: String,
+    log: PathBuf,
+    code: String,
+}
+
+impl Status {
+    fn describe(&self) -> String {
+        let text = std::fs::read_to_string(&self.log).unwrap_or_default();
+        let lines: Vec<&str> = text.lines().collect();
+        let tail = lines[lines.len().saturating_sub(20)..].join("\n    ");
+        format!(
+            "{} failed ({})\n  command: {}\n  log: {}\n  last lines:\n    {tail}",
+            self.tool,
+            self.code,
+            self.command,
+            self.log.display()
+        )
+    }
+
+    fn check(&self) -> Result<()> {
+        if self.ok {
+            Ok(())
+        } else {
+            bail!(self.describe())
+        }
+    }
+}
+
+fn shell_quote(s: &str) -> String {
+    if !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || "-_./=:+,".contains(c)) {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', r"'\''"))
+    }
+}
+
+/// Runs `tool` with `args` in `dir`, its stdout and stderr into `log` after a header with the
+/// command line.
+fn tool_run(dir: &Path, tool: &Tool, args: &[String], log: &Path) -> Result<Status> {
+    let command = format!(
+        "cd {} && {} {}",
+        shell_quote(&dir.to_string_lossy()),
+        shell_quote(&tool.path.to_string_lossy()),
+        args.iter().map(|a| shell_quote(a)).collect::<Vec<_>>().join(" ")
+    );
+    let mut file = File::create(log).with_context(|| format!("creating {}", log.display()))?;
+    writeln!(file, "# {}\n# $ {command}\n", tool.version)?;
+    let stderr = file.try_clone()?;
+    let status = Command::new(&tool.path)
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(file)
+        .stderr(stderr)
+        .status()
+        .with_context(|| format!("starting {} ({command})", tool.kind.native()))?;
+    Ok(Status {
+        ok: status.success(),
+        tool: tool.kind.native().to_string(),
+        command,
+        log: log.to_path_buf(),
+        code: status.to_string(),
+    })
+}
+
+fn cell(v: Option<u64>) -> String {
+    v.map(|v| v.to_string()).unwrap_or_else(|| "–".into())
+}
+
+/// The Markdown of `fpga.md`: the table, the tools, the critical paths and the run times.
+fn markdown(rows: &[Row], ctx: &Flow) -> String {
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "| block | family | device | LUTs | FFs | DSPs | BRAMs | LUT RAMs | fmax (MHz) | target (MHz) |\n\
+         |---|---|---|--:|--:|--:|--:|--:|--:|--:|"
+    );
+    for r in rows {
+        let fmax = match (&r.error, r.fits, r.fmax_mhz) {
+            (Some(_), _, _) => "tool failed".to_string(),
+            (None, Some(false), _) => format!("does not fit: {}", r.over_capacity.join(", ")),
+            (None, _, Some(f)) => format!("{f:.1}"),
+            _ => "–".to_string(),
+        };
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {fmax} | {} |",
+            r.block,
+            r.family.name(),
+            r.device,
+            cell(r.luts),
+            cell(r.ffs),
+            cell(r.dsps),
+            cell(r.brams),
+            cell(r.lutrams),
+            r.target_mhz
+        );
+    }
+    let _ = writeln!(
+        md,
+        "\nLUTs: ECP5 LUT4s (logic, carry and LUT RAM); iCE40 logic cells. LUT RAMs: ECP5 16x4 \
+         distributed RAMs (6 LUT4s each, counted in LUTs). BRAMs: DP16KD (18 Kbit) / SB_RAM40_4K \
+         (4 Kbit). Each block is placed in a register wrapper (every port bit a flip-flop); the \
+         wrapper's flip-flops are not counted. Seed {}.\n",
+        ctx.seed
+    );
+    let _ = writeln!(md, "Tools:\n");
+    for t in ctx.tools.values() {
+        let _ = writeln!(md, "- {}: {} ({})", t.kind.native(), t.version, t.found_as);
+    }
+    let _ = writeln!(md, "\nCritical paths (register to register):\n");
+    for r in rows {
+        if let Some(p) = &r.critical_path {
+            let _ = writeln!(
+                md,
+                "- {} on {}: {:.2} ns, {} logic levels, from `{}` to `{}`",
+                r.block,
+                r.family.name(),
+                p.delay_ns,
+                p.logic_levels,
+                p.from,
+                p.to
+            );
+        }
+    }
+    let _ = writeln!(md, "\nRun times:\n\n| block | family | Yosys (s) | nextpnr (s) |\n|---|---|--:|--:|");
+    let secs = |t: Option<f64>| t.map(|t| format!("{t:.1}")).unwrap_or_else(|| "–".into());
+    let mut total = 0.0;
+    for r in rows {
+        total += r.yosys_s.unwrap_or(0.0) + r.nextpnr_s.unwrap_or(0.0);
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} |",
+            r.block,
+            r.family.name(),
+            secs(r.yosys_s),
+            secs(r.nextpnr_s)
+        );
+    }
+    let _ = writeln!(md, "\nTotal tool time: {total:.0} s.");
+    md
+}
