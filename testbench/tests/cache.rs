@@ -534,6 +534,7 @@ impl Logic for LoaderWithCache {
         self.cache.clock.next = self.clock.val();
         self.cache.cfg_enable.next = self.cfg_enable.val();
         self.cache.cfg_mask.next = self.cfg_mask.val();
+        self.cache.flush.next = false;
         self.loader.id_valid.next = self.id_valid.val();
         self.id_ready.next = self.loader.id_ready.val();
         self.loader.id.next = self.id.val();
@@ -668,8 +669,8 @@ fn recorded_run_replays_bit_exactly_under_icarus() -> Result<()> {
     let report = rec.replay(bench.drv.uut(), &dir, Simulator::Icarus)?;
     println!("{report}");
     assert_eq!(report.cycles, rec.cycles());
-    // Nine outputs (resp_valid, 4 coordinates, mem_req, mem_addr, hits, misses), compared before
+    // Ten outputs (resp_valid, 4 coordinates, mem_req, mem_addr, hits, misses, flushing), compared before
     // and after every rising edge.
-    assert_eq!(report.checks, 2 * 9 * rec.cycles());
+    assert_eq!(report.checks, 2 * 10 * rec.cycles());
     Ok(())
 }
