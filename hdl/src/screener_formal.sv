@@ -1,0 +1,290 @@
+// Formal harness of the backface screener (`screener.rs`), run by `screener.sby` on the exported
+// Verilog (`hdl/verilog/screener.v`, top module `screener`). See `hdl/FORMAL.md`.
+//
+// A bounded proof (the depth is in screener.sby): for every input sequence of that length,
+// every input free in every cycle (bundle setup, patch stream, `out_ready`), with no
+// assumption at all (the handshake needs none; the bundle setup being held constant only
+// matters for the verdicts, which the simulation tests check bit for bit against the model):
+//
+// * credits: at most DEPTH (32) patches are in flight (accepted, not yet out), and `in_ready`
+//   is high exactly while fewer are;
+// * no output without an input: `out_valid` only while a patch is in flight;
+// * every patch that enters leaves exactly once, in order: the n-th patch out is the n-th in
+//   (the harness follows one patch, chosen freely by `pick`); it is presented exactly from
+//   LATENCY (24) cycles after its acceptance on, as soon as the patches before it have left;
+// * every patch is counted in exactly one verdict counter, in the cycle of its verdict
+//   (VERDICT_LATENCY = 4 cycles after acceptance): the five counters sum to the number of
+//   patches accepted at least five cycles ago; and a patch leaves with `out_pass` set exactly
+//   when its verdict was counted in `passed` (passed, or counted as screened);
+// * the output holds (`out_valid` and all data stable) while it waits for `out_ready`, and
+//   `in_ready` is not withdrawn without a transfer.
+
+`default_nettype none
+
+// Thirty-two port connections `.lane_mem_<i>_(arr[i])` of one exposed FIFO lane.
+`define LANE32(lane, arr) \
+    .lane``_mem_0_(arr[0]), .lane``_mem_1_(arr[1]), .lane``_mem_2_(arr[2]), .lane``_mem_3_(arr[3]), \
+    .lane``_mem_4_(arr[4]), .lane``_mem_5_(arr[5]), .lane``_mem_6_(arr[6]), .lane``_mem_7_(arr[7]), \
+    .lane``_mem_8_(arr[8]), .lane``_mem_9_(arr[9]), .lane``_mem_10_(arr[10]), .lane``_mem_11_(arr[11]), \
+    .lane``_mem_12_(arr[12]), .lane``_mem_13_(arr[13]), .lane``_mem_14_(arr[14]), .lane``_mem_15_(arr[15]), \
+    .lane``_mem_16_(arr[16]), .lane``_mem_17_(arr[17]), .lane``_mem_18_(arr[18]), .lane``_mem_19_(arr[19]), \
+    .lane``_mem_20_(arr[20]), .lane``_mem_21_(arr[21]), .lane``_mem_22_(arr[22]), .lane``_mem_23_(arr[23]), \
+    .lane``_mem_24_(arr[24]), .lane``_mem_25_(arr[25]), .lane``_mem_26_(arr[26]), .lane``_mem_27_(arr[27]), \
+    .lane``_mem_28_(arr[28]), .lane``_mem_29_(arr[29]), .lane``_mem_30_(arr[30]), .lane``_mem_31_(arr[31])
+
+module screener_formal (
+    input wire        clock,
+    // The environment: free in every cycle.
+    input wire [16:0] origin_x,
+    input wire [16:0] origin_y,
+    input wire [17:0] normal_x,
+    input wire [17:0] normal_y,
+    input wire [17:0] first_x,
+    input wire [17:0] first_y,
+    input wire [17:0] last_x,
+    input wire [17:0] last_y,
+    input wire        in_valid,
+    input wire [15:0] in_id,
+    input wire [16:0] in_ax,
+    input wire [16:0] in_ay,
+    input wire [16:0] in_bx,
+    input wire [16:0] in_by,
+    input wire        out_ready,
+    // Chooses the patch the harness follows: the first one accepted while `pick` is high and
+    // no patch is followed.
+    input wire        pick
+);
+    localparam DEPTH = 32;
+    localparam LATENCY = 24;
+    localparam VERDICT_LATENCY = 4;
+
+    wire        in_ready, out_valid, out_pass;
+    wire [15:0] out_id;
+    wire [17:0] out_ax, out_ay, out_bx, out_by, out_wx, out_wy;
+    wire [5:0]  out_sh;
+    wire [31:0] passed, backward, back_facing, outside, near;
+    // Internal state, exposed by screener.sby for the induction (not ports of the exported
+    // module): the stage valid bits and ids, the verdict registers of stage 4, the divider's
+    // tag pipeline (3 bits per stage, bit 0: a slot to complete), the credit and FIFO counters
+    // and pointers, and the output FIFO's lanes.
+    wire        v1, v2, v3, v4, backward4, back_facing4, outside4;
+    wire [15:0] id1, id2, id3, id4;
+    wire [53:0] tgp;
+    wire [5:0]  used, done;
+    wire [4:0]  res_ptr, fill_ptr, rd_ptr;
+    wire [15:0] lane_id [0:31];
+    wire [6:0]  lane_sh [0:31];
+
+    screener dut (
+        .clock(clock),
+        .origin_x(origin_x), .origin_y(origin_y), .normal_x(normal_x), .normal_y(normal_y),
+        .first_x(first_x), .first_y(first_y), .last_x(last_x), .last_y(last_y),
+        .in_valid(in_valid), .in_ready(in_ready), .in_id(in_id),
+        .in_ax(in_ax), .in_ay(in_ay), .in_bx(in_bx), .in_by(in_by),
+        .out_valid(out_valid), .out_ready(out_ready), .out_id(out_id),
+        .out_ax(out_ax), .out_ay(out_ay), .out_bx(out_bx), .out_by(out_by),
+        .out_wx(out_wx), .out_wy(out_wy), .out_sh(out_sh), .out_pass(out_pass),
+        .passed(passed), .backward(backward), .back_facing(back_facing), .outside(outside),
+        .near(near)
+`ifdef INDUCTION
+        , .v1$q(v1), .v2$q(v2), .v3$q(v3), .v4$q(v4),
+        .id1$q(id1), .id2$q(id2), .id3$q(id3), .id4$q(id4),
+        .backward4$q(backward4), .back_facing4$q(back_facing4), .outside4$q(outside4),
+        .divider_tgp(tgp), .used$q(used), .done$q(done),
+        .res_ptr$q(res_ptr), .fill_ptr$q(fill_ptr), .rd_ptr$q(rd_ptr),
+        `LANE32(lane_id, lane_id), `LANE32(lane_sh, lane_sh)
+`endif
+    );
+
+    // Transfers: `valid && ready` before the edge (screener.rs, "Ports").
+    wire take = in_valid && in_ready;
+    wire pop = out_valid && out_ready;
+
+    // ---- The harness's counts, from the ports only. ----
+    reg        f_past = 1'b0;
+    reg [6:0]  f_held = 7'd0;       // accepted, not yet out
+    reg [23:1] f_sr = 23'd0;        // f_sr[k]: a patch was taken k cycles ago
+    reg        f_full = 1'b0;       // all credits have been taken (for the covers)
+
+    always @(posedge clock) begin
+        f_past <= 1'b1;
+        f_held <= f_held + take - pop;
+        f_sr <= {f_sr[22:1], take};
+        if (f_held == DEPTH) f_full <= 1'b1;
+    end
+
+    // The counters in the previous cycle (zero before the first).
+    reg [31:0] f_p_passed = 32'd0, f_p_backward = 32'd0, f_p_back_facing = 32'd0;
+    reg [31:0] f_p_outside = 32'd0, f_p_near = 32'd0;
+    always @(posedge clock) begin
+        f_p_passed <= passed;
+        f_p_backward <= backward;
+        f_p_back_facing <= back_facing;
+        f_p_outside <= outside;
+        f_p_near <= near;
+    end
+
+    // ---- The followed patch. ----
+    reg        f_trk = 1'b0;      // following a patch that has been accepted, not yet out
+    reg [15:0] f_id = 16'd0;
+    reg [6:0]  f_ahead = 7'd0;    // patches to leave before it
+    reg [5:0]  f_age = 6'd0;      // cycles since its acceptance (saturating)
+    reg        f_vpass = 1'b0;    // its verdict was counted in `passed`
+    wire       f_out = f_trk && pop && f_ahead == 7'd0;
+
+    always @(posedge clock) begin
+        if (!f_trk) begin
+            if (take && pick) begin
+                f_trk <= 1'b1;
+                f_id <= in_id;
+                f_ahead <= f_held - pop;
+                f_age <= 6'd1;
+            end
+        end else begin
+            if (f_age != 6'd63) f_age <= f_age + 6'd1;
+            // In cycle a + 5 the counters show its verdict for the first time.
+            if (f_age == VERDICT_LATENCY + 1) f_vpass <= passed != f_p_passed;
+            if (pop) begin
+                if (f_ahead == 7'd0) f_trk <= 1'b0;
+                else f_ahead <= f_ahead - 7'd1;
+            end
+        end
+    end
+
+    // ---- The properties. ----
+    always @(*) begin
+        // Credits: never more than DEPTH in flight; a patch is taken exactly while fewer are.
+        a_credits: assert(f_held <= DEPTH);
+        a_in_ready: assert(in_ready == (f_held != DEPTH));
+        // No output without an input.
+        a_no_spurious: assert(!out_valid || f_held != 7'd0);
+        // The counters start at zero.
+        if (!f_past) a_counters_init: assert(passed == 32'd0 && backward == 32'd0
+                                             && back_facing == 32'd0 && outside == 32'd0
+                                             && near == 32'd0);
+        if (f_trk) begin
+            a_ahead: assert(f_ahead < f_held);
+            // The followed patch is presented exactly from LATENCY cycles after its acceptance
+            // on, once the patches before it have left.
+            if (f_ahead == 7'd0) a_latency: assert(out_valid == (f_age >= LATENCY));
+        end
+        if (f_out) begin
+            // It leaves in order (the n-th out is the n-th in), with the verdict it was
+            // counted with.
+            a_order: assert(out_id == f_id);
+            a_pass: assert(out_pass == f_vpass);
+        end
+    end
+
+    // Which counters grew since the previous cycle.
+    wire [4:0] f_grew = {passed != f_p_passed, backward != f_p_backward,
+                         back_facing != f_p_back_facing, outside != f_p_outside,
+                         near != f_p_near};
+    always @(posedge clock) begin
+        if (f_past) begin
+            // Every patch is counted in exactly one counter, once, in the cycle of its verdict
+            // (VERDICT_LATENCY cycles after its acceptance; shown from the next cycle on): the
+            // counters only ever grow by one, and exactly one grows for each patch taken five
+            // cycles before, none otherwise. (With a_counters_init: the five counters sum to
+            // the number of patches taken at least five cycles ago.)
+            a_count_step: assert((passed == f_p_passed || passed == f_p_passed + 32'd1)
+                                 && (backward == f_p_backward || backward == f_p_backward + 32'd1)
+                                 && (back_facing == f_p_back_facing
+                                     || back_facing == f_p_back_facing + 32'd1)
+                                 && (outside == f_p_outside || outside == f_p_outside + 32'd1)
+                                 && (near == f_p_near || near == f_p_near + 32'd1));
+            a_count_one: assert(f_grew == 5'd0 || f_grew == 5'b00001 || f_grew == 5'b00010
+                                || f_grew == 5'b00100 || f_grew == 5'b01000 || f_grew == 5'b10000);
+            a_count_when: assert((f_grew != 5'd0) == f_sr[VERDICT_LATENCY + 1]);
+            // Handshake stability.
+            if ($past(in_ready && !in_valid)) a_in_hold: assert(in_ready);
+            if ($past(out_valid && !out_ready)) begin
+                a_out_hold: assert(out_valid);
+                a_out_stable: assert($stable(out_id) && $stable(out_pass) && $stable(out_sh));
+            end
+        end
+    end
+
+`ifdef INDUCTION
+    // ---- Invariants over the internal state (the induction's strengthening). ----
+    // The pipeline never stalls, so the take history locates every patch: one taken k cycles
+    // ago is in stage k (k <= 4), in divider stage k - 5 (5 <= k <= 22), complete from k = 23.
+    reg [6:0] f_young4, f_young22, f_young23, f_younger;  // takes in the last 4, 22, 23 cycles,
+                                                          // and in the followed patch's life
+    integer k;
+    always @(*) begin
+        f_young4 = 7'd0;
+        f_young22 = 7'd0;
+        f_young23 = 7'd0;
+        f_younger = 7'd0;
+        for (k = 1; k <= 23; k = k + 1) begin
+            if (k <= 4) f_young4 = f_young4 + f_sr[k];
+            if (k <= 22) f_young22 = f_young22 + f_sr[k];
+            f_young23 = f_young23 + f_sr[k];
+            if (k <= f_age) f_younger = f_younger + f_sr[k];
+        end
+    end
+    wire [17:0] f_tags;  // bit 0 of each divider stage's tag
+    genvar g;
+    generate
+        for (g = 0; g < 18; g = g + 1) begin : tags
+            assign f_tags[g] = tgp[3 * g];
+        end
+    endgenerate
+    wire [4:0] f_slot = rd_ptr + f_ahead[4:0];  // the followed patch's slot (from stage 5 on)
+
+    always @(*) begin
+        i_stages: assert(v1 == f_sr[1] && v2 == f_sr[2] && v3 == f_sr[3] && v4 == f_sr[4]);
+        i_tags: assert(f_tags == f_sr[22:5]);
+        // At most one screen's register is set (the verdict is one of five).
+        i_verdict: assert(!(backward4 && back_facing4) && !(backward4 && outside4)
+                          && !(back_facing4 && outside4));
+        i_used: assert(used == f_held[5:0]);
+        // Patches leave no earlier than LATENCY cycles after their acceptance.
+        i_young: assert(f_young23 <= f_held);
+        // Slots rd_ptr .. are reserved by the patches past stage 4, complete for those past
+        // the divider (done).
+        i_res_ptr: assert(res_ptr == rd_ptr + f_held[4:0] - f_young4[4:0]);
+        i_done: assert({1'b0, done} == f_held - f_young22);
+        i_fill_ptr: assert(fill_ptr == rd_ptr + done[4:0]);
+        // The head is presented exactly when it was complete before this cycle.
+        i_head_valid: assert(out_valid == (done - f_sr[23] != 6'd0));
+        // The read registers show the head slot whenever they are presented.
+        if (out_valid) begin
+            i_head: assert(out_id == lane_id[rd_ptr] && out_pass == lane_sh[rd_ptr][6]
+                           && out_sh == lane_sh[rd_ptr][5:0]);
+        end
+        // The followed patch: in its stage, then in its slot.
+        if (f_trk) begin
+            i_trk_age: assert(f_age != 6'd0);
+            if (f_age <= 23) begin
+                i_trk_young: assert(f_sr[f_age] && f_ahead == f_held - f_younger);
+            end else begin
+                i_trk_done: assert({1'b0, done} >= f_ahead + 7'd1 + f_sr[23]);
+            end
+            if (f_age == 1) i_trk_id1: assert(id1 == f_id);
+            if (f_age == 2) i_trk_id2: assert(id2 == f_id);
+            if (f_age == 3) i_trk_id3: assert(id3 == f_id);
+            if (f_age == 4) i_trk_id4: assert(id4 == f_id);
+            if (f_age >= 5) i_trk_slot: assert(lane_id[f_slot] == f_id);
+            if (f_age >= 6) i_trk_pass: assert(lane_sh[f_slot][6] == f_vpass);
+        end
+    end
+    always @(posedge clock) begin
+        if (f_past && f_trk && f_age == 5) begin
+            i_trk_pass5: assert(lane_sh[f_slot][6] == (passed != f_p_passed));
+        end
+    end
+`endif
+
+    // ---- Covers: the environment is not over-constrained. ----
+    always @(*) begin
+        // All credits taken: the input stalls.
+        c_full: cover(f_held == DEPTH && !in_ready);
+        // The followed patch leaves passed, and one leaves screened out.
+        c_out_pass: cover(f_out && out_pass);
+        c_out_screened: cover(f_out && !out_pass);
+        // A patch leaves while another enters, after all credits were taken.
+        c_out_after_full: cover(f_out && take && f_full);
+    end
+endmodule
