@@ -8,8 +8,9 @@
 //! Workload: bundles of 64 rays, 400 patches each with arbitrary 18-bit fields, each tested
 //! against all 64 rays (25 600 tests per bundle, one per clock). Median of interleaved rounds.
 //!
-//! Run: `cargo bench --bench rtl` (`-- --rounds N` for more rounds, `-- --plain` for the no-VCD
-//! simulation alone, e.g. under a profiler).
+//! Run: `cargo bench --bench rtl` (`-- --rounds N` for more rounds, `-- --plain` for the
+//! intersection unit's no-VCD simulation alone and `-- --pe` for the processing element alone,
+//! e.g. under a profiler).
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -33,6 +34,11 @@ fn main() {
         .unwrap_or(5usize);
     // `--plain`: only the no-VCD simulation (for profiling it alone).
     let plain_only = std::env::args().any(|a| a == "--plain");
+    // `--pe`: only the processing element (for profiling it alone).
+    if std::env::args().any(|a| a == "--pe") {
+        processing_element(rounds);
+        return;
+    }
     let mut rng = ChaCha8Rng::seed_from_u64(1);
     let mut raw = |bits: u32| rng.random_range(-(1i32 << (bits - 1))..(1i32 << (bits - 1)));
     let dirs: Vec<[i32; 2]> = (0..64).map(|_| [raw(18), raw(18)]).collect();
@@ -50,11 +56,13 @@ fn main() {
         .collect();
     let vcd = std::env::temp_dir().join(format!("shelling-bench-{}.vcd", std::process::id()));
     let (mut plain, mut traced, mut model) = (Vec::new(), Vec::new(), Vec::new());
+    let mut passes = 0.0;
     for _ in 0..rounds {
         let mut drv = Driver::new(IntersectionUnit::default()).expect("the unit connects");
         let t = Instant::now();
         run_bundle(&mut drv, &dirs, &jobs, Pacing::NONE, 1).expect("runs");
         plain.push(drv.cycles() as f64 / t.elapsed().as_secs_f64());
+        passes = drv.passes() as f64 / drv.cycles() as f64;
 
         if plain_only {
             continue;
@@ -72,12 +80,18 @@ fn main() {
     }
     let _ = std::fs::remove_file(&vcd);
     if plain_only {
-        println!("RTL simulation, no VCD: {:.0} cycles/s", median(plain));
+        println!(
+            "RTL simulation, no VCD: {:.0} cycles/s, {passes:.2} update passes per cycle",
+            median(plain)
+        );
         return;
     }
     let (p, v, m) = (median(plain), median(traced), median(model));
     println!("intersection unit, {rounds} rounds, median:");
-    println!("  {:<32} {:>12.0} cycles/s", "RTL simulation, no VCD", p);
+    println!(
+        "  {:<32} {:>12.0} cycles/s  ({passes:.2} update passes per cycle)",
+        "RTL simulation, no VCD", p
+    );
     println!("  {:<32} {:>12.0} cycles/s  ({:.2}x of no VCD)", "RTL simulation, VCD streamed", v, v / p);
     println!("  {:<32} {:>12.0} tests/s   (RTL is {:.4}x of it)", "bit-true model (baseline)", m, p / m);
     println!("  goal: >= 500000 cycles/s without VCD: {}", if p >= 5e5 { "met" } else { "NOT met" });

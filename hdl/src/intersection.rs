@@ -45,8 +45,9 @@
 //! ray-memory write:
 //!
 //! * stage 0: the sequencer issues ray `cur` of the current patch (direction memory read);
-//! * stage 1: direction and live bit arrive; the six products start in [`Mul18`] DSP leaves
-//!   (latency 2); a dead ray's test goes on as a bubble;
+//! * stage 1: direction and live bit arrive; the six products start in the [`RayProducts`]
+//!   leaf (six 18×18 DSP multipliers, latency 2, the patch operands held there one clock
+//!   longer); a dead ray's test goes on as a bubble;
 //! * stage 3: side values `s_a`, `s_b` and `q = dot(d, W)`;
 //! * stage 4: the key (shift by `sh`, saturating, in the [`KeyScale`] leaf); the ray memory is read;
 //! * stage 5: compare with the ray's nearest hit and write back.
@@ -64,7 +65,7 @@
 //! and 1100 flip-flops.
 
 use crate::formats::{cross, dot, SH_MAX, SH_MIN};
-use crate::leaf::{Bram, KeyScale, Mul18};
+use crate::leaf::{Bram, KeyScale, RayProducts};
 use crate::screener::model::PatchSetup;
 use rust_hdl::prelude::*;
 
@@ -175,34 +176,22 @@ pub struct IntersectionUnit {
     test_count: DFF<Bits<32>>,
     issue: Signal<Local, bool>,
     take: Signal<Local, bool>,
-    // Stage 1: directions arrive; operands to the multipliers.
+    // Stage 1: directions arrive; the products start (the patch operands' stage-1 registers
+    // are inside the products leaf). `tagN` is stage N's ray (bits 31…22), `sh` (21…16) and
+    // patch id (15…0).
     v1: DFF<bool>,
-    ray1: DFF<Bits<10>>,
-    a1x: DFF<Bits<18>>,
-    a1y: DFF<Bits<18>>,
-    b1x: DFF<Bits<18>>,
-    b1y: DFF<Bits<18>>,
-    w1x: DFF<Bits<18>>,
-    w1y: DFF<Bits<18>>,
-    sh1: DFF<Bits<6>>,
-    id1: DFF<Bits<16>>,
+    tag1: DFF<Bits<32>>,
     dir_mem_x: Bram<18, 10>,
     dir_mem_y: Bram<18, 10>,
-    mul_dx_ay: Mul18,
-    mul_dy_ax: Mul18,
-    mul_dx_by: Mul18,
-    mul_dy_bx: Mul18,
-    mul_dx_wx: Mul18,
-    mul_dy_wy: Mul18,
+    products: RayProducts,
     // Stages 2 and 3: inside the multipliers; products arrive in stage 3.
     v2: DFF<bool>,
-    ray2: DFF<Bits<10>>,
-    sh2: DFF<Bits<6>>,
-    id2: DFF<Bits<16>>,
+    tag2: DFF<Bits<32>>,
     v3: DFF<bool>,
-    ray3: DFF<Bits<10>>,
-    sh3: DFF<Bits<6>>,
-    id3: DFF<Bits<16>>,
+    tag3: DFF<Bits<32>>,
+    ray3: Signal<Local, Bits<10>>,
+    sh3: Signal<Local, Bits<6>>,
+    id3: Signal<Local, Bits<16>>,
     side_a: Signal<Local, Bits<32>>,
     side_b: Signal<Local, Bits<32>>,
     q: Signal<Local, Bits<32>>,
@@ -283,28 +272,14 @@ impl Default for IntersectionUnit {
             issue: Default::default(),
             take: Default::default(),
             v1: Default::default(),
-            ray1: Default::default(),
-            a1x: Default::default(),
-            a1y: Default::default(),
-            b1x: Default::default(),
-            b1y: Default::default(),
-            w1x: Default::default(),
-            w1y: Default::default(),
-            sh1: Default::default(),
-            id1: Default::default(),
+            tag1: Default::default(),
             dir_mem_x: Default::default(),
             dir_mem_y: Default::default(),
-            mul_dx_ay: Default::default(),
-            mul_dy_ax: Default::default(),
-            mul_dx_by: Default::default(),
-            mul_dy_bx: Default::default(),
-            mul_dx_wx: Default::default(),
-            mul_dy_wy: Default::default(),
+            products: Default::default(),
             v2: Default::default(),
-            ray2: Default::default(),
-            sh2: Default::default(),
-            id2: Default::default(),
+            tag2: Default::default(),
             v3: Default::default(),
+            tag3: Default::default(),
             ray3: Default::default(),
             sh3: Default::default(),
             id3: Default::default(),
@@ -348,20 +323,15 @@ impl Logic for IntersectionUnit {
         // Clocks and register defaults (hold).
         dff_setup!(
             self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, p_retire,
-            test_count, v1, ray1, a1x, a1y, b1x, b1y, w1x, w1y, sh1, id1, v2, ray2, sh2, id2, v3, ray3, sh3,
-            id3, v4, ray4, id4, v5, ray5, id5, fw_valid, fw_ray, fw_key, fw_id
+            test_count, v1, tag1, v2, tag2, v3, tag3, v4, ray4, id4, v5, ray5, id5, fw_valid, fw_ray, fw_key,
+            fw_id
         );
         self.dir_mem_x.clock.next = self.clock.val();
         self.alive_mem.clock.next = self.clock.val();
         self.dir_mem_y.clock.next = self.clock.val();
         self.mem_key.clock.next = self.clock.val();
         self.mem_meta.clock.next = self.clock.val();
-        self.mul_dx_ay.clock.next = self.clock.val();
-        self.mul_dy_ax.clock.next = self.clock.val();
-        self.mul_dx_by.clock.next = self.clock.val();
-        self.mul_dy_bx.clock.next = self.clock.val();
-        self.mul_dx_wx.clock.next = self.clock.val();
-        self.mul_dy_wy.clock.next = self.clock.val();
+        self.products.clock.next = self.clock.val();
         self.key_scale.clock.next = self.clock.val();
 
         // Stage 0: sequencer. A patch is accepted while the current one issues its last ray
@@ -407,57 +377,47 @@ impl Logic for IntersectionUnit {
             self.alive_mem.write_enable.next = true;
         }
         self.v1.d.next = self.issue.val() & !self.p_retire.q.val();
-        self.ray1.d.next = self.cur.q.val();
-        self.a1x.d.next = self.p_ax.q.val();
-        self.a1y.d.next = self.p_ay.q.val();
-        self.b1x.d.next = self.p_bx.q.val();
-        self.b1y.d.next = self.p_by.q.val();
-        self.w1x.d.next = self.p_wx.q.val();
-        self.w1y.d.next = self.p_wy.q.val();
-        self.sh1.d.next = self.p_sh.q.val();
-        self.id1.d.next = self.p_id.q.val();
+        self.tag1.d.next = (bit_cast::<32, 10>(self.cur.q.val()) << 22)
+            | (bit_cast::<32, 6>(self.p_sh.q.val()) << 16)
+            | bit_cast::<32, 16>(self.p_id.q.val());
+        // The patch operands enter the products leaf now; its stage-1 registers hold them.
+        self.products.ax.next = self.p_ax.q.val();
+        self.products.ay.next = self.p_ay.q.val();
+        self.products.bx.next = self.p_bx.q.val();
+        self.products.by.next = self.p_by.q.val();
+        self.products.wx.next = self.p_wx.q.val();
+        self.products.wy.next = self.p_wy.q.val();
 
         // Stage 1: the ray's direction is read; the six products start.
-        self.mul_dx_ay.a.next = self.dir_mem_x.read_data.val();
-        self.mul_dx_ay.b.next = self.a1y.q.val();
-        self.mul_dy_ax.a.next = self.dir_mem_y.read_data.val();
-        self.mul_dy_ax.b.next = self.a1x.q.val();
-        self.mul_dx_by.a.next = self.dir_mem_x.read_data.val();
-        self.mul_dx_by.b.next = self.b1y.q.val();
-        self.mul_dy_bx.a.next = self.dir_mem_y.read_data.val();
-        self.mul_dy_bx.b.next = self.b1x.q.val();
-        self.mul_dx_wx.a.next = self.dir_mem_x.read_data.val();
-        self.mul_dx_wx.b.next = self.w1x.q.val();
-        self.mul_dy_wy.a.next = self.dir_mem_y.read_data.val();
-        self.mul_dy_wy.b.next = self.w1y.q.val();
+        self.products.dx.next = self.dir_mem_x.read_data.val();
+        self.products.dy.next = self.dir_mem_y.read_data.val();
         // A test of a dead ray goes on as a bubble.
         self.live.next = self.v1.q.val() & self.alive_mem.read_data.val().any();
         if self.live.val() {
             self.test_count.d.next = self.test_count.q.val() + self.one32.val();
         }
         self.v2.d.next = self.live.val();
-        self.ray2.d.next = self.ray1.q.val();
-        self.sh2.d.next = self.sh1.q.val();
-        self.id2.d.next = self.id1.q.val();
+        self.tag2.d.next = self.tag1.q.val();
         self.v3.d.next = self.v2.q.val();
-        self.ray3.d.next = self.ray2.q.val();
-        self.sh3.d.next = self.sh2.q.val();
-        self.id3.d.next = self.id2.q.val();
+        self.tag3.d.next = self.tag2.q.val();
 
         // Stage 3: side values and the inverse distance.
-        self.side_a.next = self.mul_dx_ay.p.val() - self.mul_dy_ax.p.val();
-        self.side_b.next = self.mul_dx_by.p.val() - self.mul_dy_bx.p.val();
-        self.q.next = self.mul_dx_wx.p.val() + self.mul_dy_wy.p.val();
+        self.ray3.next = self.tag3.q.val().get_bits::<10>(22);
+        self.sh3.next = self.tag3.q.val().get_bits::<6>(16);
+        self.id3.next = self.tag3.q.val().get_bits::<16>(0);
+        self.side_a.next = self.products.dx_ay.val() - self.products.dy_ax.val();
+        self.side_b.next = self.products.dx_by.val() - self.products.dy_bx.val();
+        self.q.next = self.products.dx_wx.val() + self.products.dy_wy.val();
         self.v4.d.next = self.v3.q.val()
             & ((self.side_a.val() == self.zero32.val()) | self.side_a.val().get_bit(31))
             & !self.side_b.val().get_bit(31);
-        self.ray4.d.next = self.ray3.q.val();
-        self.id4.d.next = self.id3.q.val();
+        self.ray4.d.next = self.ray3.val();
+        self.id4.d.next = self.id3.val();
 
         // Stages 4 and 5: the key q·2^-sh, clamped into [1, 2^32 − 1], in a leaf (its input
         // registers are stage 4, its output register stage 5).
         self.key_scale.q.next = self.q.val();
-        self.key_scale.sh.next = self.sh3.q.val();
+        self.key_scale.sh.next = self.sh3.val();
         self.v5.d.next = self.v4.q.val();
         self.ray5.d.next = self.ray4.q.val();
         self.id5.d.next = self.id4.q.val();

@@ -5180,33 +5180,9 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
     reg  v1$d;
     wire  v1$q;
     reg  v1$clock;
-    reg  [9:0] ray1$d;
-    wire  [9:0] ray1$q;
-    reg  ray1$clock;
-    reg  [17:0] a1x$d;
-    wire  [17:0] a1x$q;
-    reg  a1x$clock;
-    reg  [17:0] a1y$d;
-    wire  [17:0] a1y$q;
-    reg  a1y$clock;
-    reg  [17:0] b1x$d;
-    wire  [17:0] b1x$q;
-    reg  b1x$clock;
-    reg  [17:0] b1y$d;
-    wire  [17:0] b1y$q;
-    reg  b1y$clock;
-    reg  [17:0] w1x$d;
-    wire  [17:0] w1x$q;
-    reg  w1x$clock;
-    reg  [17:0] w1y$d;
-    wire  [17:0] w1y$q;
-    reg  w1y$clock;
-    reg  [5:0] sh1$d;
-    wire  [5:0] sh1$q;
-    reg  sh1$clock;
-    reg  [15:0] id1$d;
-    wire  [15:0] id1$q;
-    reg  id1$clock;
+    reg  [31:0] tag1$d;
+    wire  [31:0] tag1$q;
+    reg  tag1$clock;
     reg  dir_mem_x$clock;
     reg  [9:0] dir_mem_x$read_address;
     wire  [17:0] dir_mem_x$read_data;
@@ -5219,54 +5195,33 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
     reg  [9:0] dir_mem_y$write_address;
     reg  [17:0] dir_mem_y$write_data;
     reg  dir_mem_y$write_enable;
-    reg  mul_dx_ay$clock;
-    reg  [17:0] mul_dx_ay$a;
-    reg  [17:0] mul_dx_ay$b;
-    wire  [31:0] mul_dx_ay$p;
-    reg  mul_dy_ax$clock;
-    reg  [17:0] mul_dy_ax$a;
-    reg  [17:0] mul_dy_ax$b;
-    wire  [31:0] mul_dy_ax$p;
-    reg  mul_dx_by$clock;
-    reg  [17:0] mul_dx_by$a;
-    reg  [17:0] mul_dx_by$b;
-    wire  [31:0] mul_dx_by$p;
-    reg  mul_dy_bx$clock;
-    reg  [17:0] mul_dy_bx$a;
-    reg  [17:0] mul_dy_bx$b;
-    wire  [31:0] mul_dy_bx$p;
-    reg  mul_dx_wx$clock;
-    reg  [17:0] mul_dx_wx$a;
-    reg  [17:0] mul_dx_wx$b;
-    wire  [31:0] mul_dx_wx$p;
-    reg  mul_dy_wy$clock;
-    reg  [17:0] mul_dy_wy$a;
-    reg  [17:0] mul_dy_wy$b;
-    wire  [31:0] mul_dy_wy$p;
+    reg  products$clock;
+    reg  [17:0] products$dx;
+    reg  [17:0] products$dy;
+    reg  [17:0] products$ax;
+    reg  [17:0] products$ay;
+    reg  [17:0] products$bx;
+    reg  [17:0] products$by;
+    reg  [17:0] products$wx;
+    reg  [17:0] products$wy;
+    wire  [31:0] products$dx_ay;
+    wire  [31:0] products$dy_ax;
+    wire  [31:0] products$dx_by;
+    wire  [31:0] products$dy_bx;
+    wire  [31:0] products$dx_wx;
+    wire  [31:0] products$dy_wy;
     reg  v2$d;
     wire  v2$q;
     reg  v2$clock;
-    reg  [9:0] ray2$d;
-    wire  [9:0] ray2$q;
-    reg  ray2$clock;
-    reg  [5:0] sh2$d;
-    wire  [5:0] sh2$q;
-    reg  sh2$clock;
-    reg  [15:0] id2$d;
-    wire  [15:0] id2$q;
-    reg  id2$clock;
+    reg  [31:0] tag2$d;
+    wire  [31:0] tag2$q;
+    reg  tag2$clock;
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
-    reg  [9:0] ray3$d;
-    wire  [9:0] ray3$q;
-    reg  ray3$clock;
-    reg  [5:0] sh3$d;
-    wire  [5:0] sh3$q;
-    reg  sh3$clock;
-    reg  [15:0] id3$d;
-    wire  [15:0] id3$q;
-    reg  id3$clock;
+    reg  [31:0] tag3$d;
+    wire  [31:0] tag3$q;
+    reg  tag3$clock;
     reg  v4$d;
     wire  v4$q;
     reg  v4$clock;
@@ -5318,6 +5273,9 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
     reg  live;
     reg  issue;
     reg  take;
+    reg  [9:0] ray3;
+    reg  [5:0] sh3;
+    reg  [15:0] id3;
     reg  [31:0] side_a;
     reg  [31:0] side_b;
     reg  [31:0] q;
@@ -5403,50 +5361,10 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         .q(v1$q),
         .clock(v1$clock)
     );
-    processing_element$unit$ray1 ray1(
-        .d(ray1$d),
-        .q(ray1$q),
-        .clock(ray1$clock)
-    );
-    processing_element$unit$a1x a1x(
-        .d(a1x$d),
-        .q(a1x$q),
-        .clock(a1x$clock)
-    );
-    processing_element$unit$a1y a1y(
-        .d(a1y$d),
-        .q(a1y$q),
-        .clock(a1y$clock)
-    );
-    processing_element$unit$b1x b1x(
-        .d(b1x$d),
-        .q(b1x$q),
-        .clock(b1x$clock)
-    );
-    processing_element$unit$b1y b1y(
-        .d(b1y$d),
-        .q(b1y$q),
-        .clock(b1y$clock)
-    );
-    processing_element$unit$w1x w1x(
-        .d(w1x$d),
-        .q(w1x$q),
-        .clock(w1x$clock)
-    );
-    processing_element$unit$w1y w1y(
-        .d(w1y$d),
-        .q(w1y$q),
-        .clock(w1y$clock)
-    );
-    processing_element$unit$sh1 sh1(
-        .d(sh1$d),
-        .q(sh1$q),
-        .clock(sh1$clock)
-    );
-    processing_element$unit$id1 id1(
-        .d(id1$d),
-        .q(id1$q),
-        .clock(id1$clock)
+    processing_element$unit$tag1 tag1(
+        .d(tag1$d),
+        .q(tag1$q),
+        .clock(tag1$clock)
     );
     processing_element$unit$dir_mem_x dir_mem_x(
         .clock(dir_mem_x$clock),
@@ -5464,81 +5382,42 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         .write_data(dir_mem_y$write_data),
         .write_enable(dir_mem_y$write_enable)
     );
-    processing_element$unit$mul_dx_ay mul_dx_ay(
-        .clock(mul_dx_ay$clock),
-        .a(mul_dx_ay$a),
-        .b(mul_dx_ay$b),
-        .p(mul_dx_ay$p)
-    );
-    processing_element$unit$mul_dy_ax mul_dy_ax(
-        .clock(mul_dy_ax$clock),
-        .a(mul_dy_ax$a),
-        .b(mul_dy_ax$b),
-        .p(mul_dy_ax$p)
-    );
-    processing_element$unit$mul_dx_by mul_dx_by(
-        .clock(mul_dx_by$clock),
-        .a(mul_dx_by$a),
-        .b(mul_dx_by$b),
-        .p(mul_dx_by$p)
-    );
-    processing_element$unit$mul_dy_bx mul_dy_bx(
-        .clock(mul_dy_bx$clock),
-        .a(mul_dy_bx$a),
-        .b(mul_dy_bx$b),
-        .p(mul_dy_bx$p)
-    );
-    processing_element$unit$mul_dx_wx mul_dx_wx(
-        .clock(mul_dx_wx$clock),
-        .a(mul_dx_wx$a),
-        .b(mul_dx_wx$b),
-        .p(mul_dx_wx$p)
-    );
-    processing_element$unit$mul_dy_wy mul_dy_wy(
-        .clock(mul_dy_wy$clock),
-        .a(mul_dy_wy$a),
-        .b(mul_dy_wy$b),
-        .p(mul_dy_wy$p)
+    processing_element$unit$products products(
+        .clock(products$clock),
+        .dx(products$dx),
+        .dy(products$dy),
+        .ax(products$ax),
+        .ay(products$ay),
+        .bx(products$bx),
+        .by(products$by),
+        .wx(products$wx),
+        .wy(products$wy),
+        .dx_ay(products$dx_ay),
+        .dy_ax(products$dy_ax),
+        .dx_by(products$dx_by),
+        .dy_bx(products$dy_bx),
+        .dx_wx(products$dx_wx),
+        .dy_wy(products$dy_wy)
     );
     processing_element$unit$v2 v2(
         .d(v2$d),
         .q(v2$q),
         .clock(v2$clock)
     );
-    processing_element$unit$ray2 ray2(
-        .d(ray2$d),
-        .q(ray2$q),
-        .clock(ray2$clock)
-    );
-    processing_element$unit$sh2 sh2(
-        .d(sh2$d),
-        .q(sh2$q),
-        .clock(sh2$clock)
-    );
-    processing_element$unit$id2 id2(
-        .d(id2$d),
-        .q(id2$q),
-        .clock(id2$clock)
+    processing_element$unit$tag2 tag2(
+        .d(tag2$d),
+        .q(tag2$q),
+        .clock(tag2$clock)
     );
     processing_element$unit$v3 v3(
         .d(v3$d),
         .q(v3$q),
         .clock(v3$clock)
     );
-    processing_element$unit$ray3 ray3(
-        .d(ray3$d),
-        .q(ray3$q),
-        .clock(ray3$clock)
-    );
-    processing_element$unit$sh3 sh3(
-        .d(sh3$d),
-        .q(sh3$q),
-        .clock(sh3$clock)
-    );
-    processing_element$unit$id3 id3(
-        .d(id3$d),
-        .q(id3$q),
-        .clock(id3$clock)
+    processing_element$unit$tag3 tag3(
+        .d(tag3$d),
+        .q(tag3$q),
+        .clock(tag3$clock)
     );
     processing_element$unit$v4 v4(
         .d(v4$d),
@@ -5628,23 +5507,11 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         p_retire$clock = clock;
         test_count$clock = clock;
         v1$clock = clock;
-        ray1$clock = clock;
-        a1x$clock = clock;
-        a1y$clock = clock;
-        b1x$clock = clock;
-        b1y$clock = clock;
-        w1x$clock = clock;
-        w1y$clock = clock;
-        sh1$clock = clock;
-        id1$clock = clock;
+        tag1$clock = clock;
         v2$clock = clock;
-        ray2$clock = clock;
-        sh2$clock = clock;
-        id2$clock = clock;
+        tag2$clock = clock;
         v3$clock = clock;
-        ray3$clock = clock;
-        sh3$clock = clock;
-        id3$clock = clock;
+        tag3$clock = clock;
         v4$clock = clock;
         ray4$clock = clock;
         id4$clock = clock;
@@ -5668,23 +5535,11 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         p_retire$d = p_retire$q;
         test_count$d = test_count$q;
         v1$d = v1$q;
-        ray1$d = ray1$q;
-        a1x$d = a1x$q;
-        a1y$d = a1y$q;
-        b1x$d = b1x$q;
-        b1y$d = b1y$q;
-        w1x$d = w1x$q;
-        w1y$d = w1y$q;
-        sh1$d = sh1$q;
-        id1$d = id1$q;
+        tag1$d = tag1$q;
         v2$d = v2$q;
-        ray2$d = ray2$q;
-        sh2$d = sh2$q;
-        id2$d = id2$q;
+        tag2$d = tag2$q;
         v3$d = v3$q;
-        ray3$d = ray3$q;
-        sh3$d = sh3$q;
-        id3$d = id3$q;
+        tag3$d = tag3$q;
         v4$d = v4$q;
         ray4$d = ray4$q;
         id4$d = id4$q;
@@ -5700,12 +5555,7 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         dir_mem_y$clock = clock;
         mem_key$clock = clock;
         mem_meta$clock = clock;
-        mul_dx_ay$clock = clock;
-        mul_dy_ax$clock = clock;
-        mul_dx_by$clock = clock;
-        mul_dy_bx$clock = clock;
-        mul_dx_wx$clock = clock;
-        mul_dy_wy$clock = clock;
+        products$clock = clock;
         key_scale$clock = clock;
         issue = remaining$q != zero11;
         patch_ready = (remaining$q == zero11) | (remaining$q == one11);
@@ -5746,47 +5596,34 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
             alive_mem$write_enable = 1'b1;
         end
         v1$d = issue & ~p_retire$q;
-        ray1$d = cur$q;
-        a1x$d = p_ax$q;
-        a1y$d = p_ay$q;
-        b1x$d = p_bx$q;
-        b1y$d = p_by$q;
-        w1x$d = p_wx$q;
-        w1y$d = p_wy$q;
-        sh1$d = p_sh$q;
-        id1$d = p_id$q;
-        mul_dx_ay$a = dir_mem_x$read_data;
-        mul_dx_ay$b = a1y$q;
-        mul_dy_ax$a = dir_mem_y$read_data;
-        mul_dy_ax$b = a1x$q;
-        mul_dx_by$a = dir_mem_x$read_data;
-        mul_dx_by$b = b1y$q;
-        mul_dy_bx$a = dir_mem_y$read_data;
-        mul_dy_bx$b = b1x$q;
-        mul_dx_wx$a = dir_mem_x$read_data;
-        mul_dx_wx$b = w1x$q;
-        mul_dy_wy$a = dir_mem_y$read_data;
-        mul_dy_wy$b = w1y$q;
+        tag1$d = (((cur$q) & 32'hffffffff) << 32'h16) | (((p_sh$q) & 32'hffffffff) << 32'h10) | ((p_id$q) & 32'hffffffff);
+        products$ax = p_ax$q;
+        products$ay = p_ay$q;
+        products$bx = p_bx$q;
+        products$by = p_by$q;
+        products$wx = p_wx$q;
+        products$wy = p_wy$q;
+        products$dx = dir_mem_x$read_data;
+        products$dy = dir_mem_y$read_data;
         live = v1$q & |alive_mem$read_data;
         if (live) begin
             test_count$d = test_count$q + one32;
         end
         v2$d = live;
-        ray2$d = ray1$q;
-        sh2$d = sh1$q;
-        id2$d = id1$q;
+        tag2$d = tag1$q;
         v3$d = v2$q;
-        ray3$d = ray2$q;
-        sh3$d = sh2$q;
-        id3$d = id2$q;
-        side_a = mul_dx_ay$p - mul_dy_ax$p;
-        side_b = mul_dx_by$p - mul_dy_bx$p;
-        q = mul_dx_wx$p + mul_dy_wy$p;
+        tag3$d = tag2$q;
+        ray3 = tag3$q[(32'h16)+:(10)];
+        sh3 = tag3$q[(32'h10)+:(6)];
+        id3 = tag3$q[(32'h0)+:(16)];
+        side_a = products$dx_ay - products$dy_ax;
+        side_b = products$dx_by - products$dy_bx;
+        q = products$dx_wx + products$dy_wy;
         v4$d = v3$q & ((side_a == zero32) | side_a[32'h1f]) & ~side_b[32'h1f];
-        ray4$d = ray3$q;
-        id4$d = id3$q;
+        ray4$d = ray3;
+        id4$d = id3;
         key_scale$q = q;
-        key_scale$sh = sh3$q;
+        key_scale$sh = sh3;
         v5$d = v4$q;
         ray5$d = ray4$q;
         id5$d = id4$q;
@@ -5835,44 +5672,6 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
 endmodule // processing_element$unit
 
 
-module processing_element$unit$a1x(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$a1x
-
-
-module processing_element$unit$a1y(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$a1y
-
-
 module processing_element$unit$alive_mem(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
@@ -5897,44 +5696,6 @@ module processing_element$unit$alive_mem(clock,read_address,read_data,write_addr
        end
     end
 endmodule // processing_element$unit$alive_mem
-
-
-module processing_element$unit$b1x(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$b1x
-
-
-module processing_element$unit$b1y(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$b1y
 
 
 module processing_element$unit$cur(d,q,clock);
@@ -6084,63 +5845,6 @@ module processing_element$unit$fw_valid(d,q,clock);
 endmodule // processing_element$unit$fw_valid
 
 
-module processing_element$unit$id1(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$id1
-
-
-module processing_element$unit$id2(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$id2
-
-
-module processing_element$unit$id3(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$id3
-
-
 module processing_element$unit$id4(d,q,clock);
     
     // Module arguments
@@ -6262,162 +5966,6 @@ module processing_element$unit$mem_meta(clock,read_address,read_data,write_addre
        end
     end
 endmodule // processing_element$unit$mem_meta
-
-
-module processing_element$unit$mul_dx_ay(clock,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [17:0] a;
-    input wire  [17:0] b;
-    output reg  [31:0] p;
-    
-    // Update code (custom)
-    reg signed [17:0] a_r;
-    reg signed [17:0] b_r;
-    wire signed [35:0] prod;
-    initial begin
-       a_r = 18'sd0;
-       b_r = 18'sd0;
-       p = 32'd0;
-    end
-    assign prod = a_r * b_r;
-    always @(posedge clock) begin
-       a_r <= a;
-       b_r <= b;
-       p <= prod[35:4];
-    end
-endmodule // processing_element$unit$mul_dx_ay
-
-
-module processing_element$unit$mul_dx_by(clock,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [17:0] a;
-    input wire  [17:0] b;
-    output reg  [31:0] p;
-    
-    // Update code (custom)
-    reg signed [17:0] a_r;
-    reg signed [17:0] b_r;
-    wire signed [35:0] prod;
-    initial begin
-       a_r = 18'sd0;
-       b_r = 18'sd0;
-       p = 32'd0;
-    end
-    assign prod = a_r * b_r;
-    always @(posedge clock) begin
-       a_r <= a;
-       b_r <= b;
-       p <= prod[35:4];
-    end
-endmodule // processing_element$unit$mul_dx_by
-
-
-module processing_element$unit$mul_dx_wx(clock,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [17:0] a;
-    input wire  [17:0] b;
-    output reg  [31:0] p;
-    
-    // Update code (custom)
-    reg signed [17:0] a_r;
-    reg signed [17:0] b_r;
-    wire signed [35:0] prod;
-    initial begin
-       a_r = 18'sd0;
-       b_r = 18'sd0;
-       p = 32'd0;
-    end
-    assign prod = a_r * b_r;
-    always @(posedge clock) begin
-       a_r <= a;
-       b_r <= b;
-       p <= prod[35:4];
-    end
-endmodule // processing_element$unit$mul_dx_wx
-
-
-module processing_element$unit$mul_dy_ax(clock,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [17:0] a;
-    input wire  [17:0] b;
-    output reg  [31:0] p;
-    
-    // Update code (custom)
-    reg signed [17:0] a_r;
-    reg signed [17:0] b_r;
-    wire signed [35:0] prod;
-    initial begin
-       a_r = 18'sd0;
-       b_r = 18'sd0;
-       p = 32'd0;
-    end
-    assign prod = a_r * b_r;
-    always @(posedge clock) begin
-       a_r <= a;
-       b_r <= b;
-       p <= prod[35:4];
-    end
-endmodule // processing_element$unit$mul_dy_ax
-
-
-module processing_element$unit$mul_dy_bx(clock,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [17:0] a;
-    input wire  [17:0] b;
-    output reg  [31:0] p;
-    
-    // Update code (custom)
-    reg signed [17:0] a_r;
-    reg signed [17:0] b_r;
-    wire signed [35:0] prod;
-    initial begin
-       a_r = 18'sd0;
-       b_r = 18'sd0;
-       p = 32'd0;
-    end
-    assign prod = a_r * b_r;
-    always @(posedge clock) begin
-       a_r <= a;
-       b_r <= b;
-       p <= prod[35:4];
-    end
-endmodule // processing_element$unit$mul_dy_bx
-
-
-module processing_element$unit$mul_dy_wy(clock,a,b,p);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [17:0] a;
-    input wire  [17:0] b;
-    output reg  [31:0] p;
-    
-    // Update code (custom)
-    reg signed [17:0] a_r;
-    reg signed [17:0] b_r;
-    wire signed [35:0] prod;
-    initial begin
-       a_r = 18'sd0;
-       b_r = 18'sd0;
-       p = 32'd0;
-    end
-    assign prod = a_r * b_r;
-    always @(posedge clock) begin
-       a_r <= a;
-       b_r <= b;
-       p <= prod[35:4];
-    end
-endmodule // processing_element$unit$mul_dy_wy
 
 
 module processing_element$unit$p_ax(d,q,clock);
@@ -6591,61 +6139,91 @@ module processing_element$unit$p_wy(d,q,clock);
 endmodule // processing_element$unit$p_wy
 
 
-module processing_element$unit$ray1(d,q,clock);
+module processing_element$unit$products(clock,dx,dy,ax,ay,bx,by,wx,wy,dx_ay,dy_ax,dx_by,dy_bx,dx_wx,dy_wy);
     
     // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
     input wire  clock;
+    input wire  [17:0] dx;
+    input wire  [17:0] dy;
+    input wire  [17:0] ax;
+    input wire  [17:0] ay;
+    input wire  [17:0] bx;
+    input wire  [17:0] by;
+    input wire  [17:0] wx;
+    input wire  [17:0] wy;
+    output reg  [31:0] dx_ay;
+    output reg  [31:0] dy_ax;
+    output reg  [31:0] dx_by;
+    output reg  [31:0] dy_bx;
+    output reg  [31:0] dx_wx;
+    output reg  [31:0] dy_wy;
     
     // Update code (custom)
+    reg signed [17:0] dx_r;
+    reg signed [17:0] dy_r;
+    reg signed [17:0] ax_1;
+    reg signed [17:0] ax_r;
+    reg signed [17:0] ay_1;
+    reg signed [17:0] ay_r;
+    reg signed [17:0] bx_1;
+    reg signed [17:0] bx_r;
+    reg signed [17:0] by_1;
+    reg signed [17:0] by_r;
+    reg signed [17:0] wx_1;
+    reg signed [17:0] wx_r;
+    reg signed [17:0] wy_1;
+    reg signed [17:0] wy_r;
+    wire signed [35:0] dx_ay_m = dx_r * ay_r;
+    wire signed [35:0] dy_ax_m = dy_r * ax_r;
+    wire signed [35:0] dx_by_m = dx_r * by_r;
+    wire signed [35:0] dy_bx_m = dy_r * bx_r;
+    wire signed [35:0] dx_wx_m = dx_r * wx_r;
+    wire signed [35:0] dy_wy_m = dy_r * wy_r;
     initial begin
-       q = 10'h0;
+       dx_r = 18'sd0;
+       dy_r = 18'sd0;
+       ax_1 = 18'sd0;
+       ax_r = 18'sd0;
+       ay_1 = 18'sd0;
+       ay_r = 18'sd0;
+       bx_1 = 18'sd0;
+       bx_r = 18'sd0;
+       by_1 = 18'sd0;
+       by_r = 18'sd0;
+       wx_1 = 18'sd0;
+       wx_r = 18'sd0;
+       wy_1 = 18'sd0;
+       wy_r = 18'sd0;
+       dx_ay = 32'd0;
+       dy_ax = 32'd0;
+       dx_by = 32'd0;
+       dy_bx = 32'd0;
+       dx_wx = 32'd0;
+       dy_wy = 32'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       dx_r <= dx;
+       dy_r <= dy;
+       ax_1 <= ax;
+       ax_r <= ax_1;
+       ay_1 <= ay;
+       ay_r <= ay_1;
+       bx_1 <= bx;
+       bx_r <= bx_1;
+       by_1 <= by;
+       by_r <= by_1;
+       wx_1 <= wx;
+       wx_r <= wx_1;
+       wy_1 <= wy;
+       wy_r <= wy_1;
+       dx_ay <= dx_ay_m[35:4];
+       dy_ax <= dy_ax_m[35:4];
+       dx_by <= dx_by_m[35:4];
+       dy_bx <= dy_bx_m[35:4];
+       dx_wx <= dx_wx_m[35:4];
+       dy_wy <= dy_wy_m[35:4];
     end
-          
-endmodule // processing_element$unit$ray1
-
-
-module processing_element$unit$ray2(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$ray2
-
-
-module processing_element$unit$ray3(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$ray3
+endmodule // processing_element$unit$products
 
 
 module processing_element$unit$ray4(d,q,clock);
@@ -6705,61 +6283,61 @@ module processing_element$unit$remaining(d,q,clock);
 endmodule // processing_element$unit$remaining
 
 
-module processing_element$unit$sh1(d,q,clock);
+module processing_element$unit$tag1(d,q,clock);
     
     // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 6'h0;
+       q = 32'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // processing_element$unit$sh1
+endmodule // processing_element$unit$tag1
 
 
-module processing_element$unit$sh2(d,q,clock);
+module processing_element$unit$tag2(d,q,clock);
     
     // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 6'h0;
+       q = 32'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // processing_element$unit$sh2
+endmodule // processing_element$unit$tag2
 
 
-module processing_element$unit$sh3(d,q,clock);
+module processing_element$unit$tag3(d,q,clock);
     
     // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 6'h0;
+       q = 32'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // processing_element$unit$sh3
+endmodule // processing_element$unit$tag3
 
 
 module processing_element$unit$test_count(d,q,clock);
@@ -6874,44 +6452,6 @@ module processing_element$unit$v5(d,q,clock);
     end
           
 endmodule // processing_element$unit$v5
-
-
-module processing_element$unit$w1x(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$w1x
-
-
-module processing_element$unit$w1y(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$unit$w1y
 
 
 module processing_element$wr_ptr(d,q,clock);

@@ -2,7 +2,8 @@
 //!
 //! rust-hdl's own `Simulation` runs every testbench and the clock in threads and hands the whole
 //! design across channels on every edge (~6–9k cycles/s). [`Driver`] instead owns the block and
-//! calls rust-hdl's settle loop ([`simulate`]) directly, which is 100× faster.
+//! runs rust-hdl's settle loop (update passes over the whole design until nothing changes)
+//! directly, which is 100× faster.
 //!
 //! # Cycle convention
 //!
@@ -23,6 +24,19 @@
 //! `neg_edge`). Inputs must only change in the drive phase: an input changed in
 //! the same settle as the rising edge would be captured as its *new* value.
 //!
+//! # Cost: update passes
+//!
+//! Every settle pass runs every block's `update` and moves every signal's `.next` into its
+//! value, so the simulation's cost is the passes per cycle ([`Driver::passes`]) times the design's
+//! size. The clock is set with `force` (vendored rust-hdl-core, `vendor/README.md`): the top
+//! block sees the new level in the first pass instead of the second, and a child block sees its
+//! clock's edge in the pass its parent forwards it, not one pass later. A flat block such as the
+//! intersection unit settles a cycle in five passes (eight with upstream rust-hdl): one in which
+//! the registers capture, one in which the logic after them computes, one that finds nothing
+//! changed, and two for the drive phase. Every register still captures the value its input had
+//! before the edge: a value takes at least one pass to climb out of a block and one to enter
+//! another, and a block `k` levels deep captures in pass `k`, one pass after its parent.
+//!
 //! # Clock access
 //!
 //! Every block of this project has a field `pub clock: Signal<In, Clock>`. [`Driver::new`]
@@ -35,7 +49,7 @@
 use std::ops::RangeBounds;
 use std::path::{Path, PathBuf};
 
-use rust_hdl::core::prelude::{check_all, simulate, Atom, Block, Clock, In, Signal};
+use rust_hdl::core::prelude::{check_all, Atom, Block, Clock, In, Signal};
 
 use crate::replay::{Recorder, Recording};
 use crate::vcd::VcdStream;
@@ -79,6 +93,7 @@ pub struct Driver<B: Block> {
     uut: Box<B>,
     clock: fn(&mut B) -> &mut Signal<In, Clock>,
     cycles: u64,
+    passes: u64,
     settle_limit: usize,
     vcd: Option<VcdStream>,
     recorder: Option<Recorder>,
@@ -101,8 +116,15 @@ impl<B: Block> Driver<B> {
         uut.connect_all();
         check_all(uut.as_ref())
             .map_err(|e| Error::new(format!("rust-hdl connectivity check failed: {e:?}")))?;
-        let mut driver =
-            Self { uut, clock, cycles: 0, settle_limit: DEFAULT_SETTLE_LIMIT, vcd: None, recorder: None };
+        let mut driver = Self {
+            uut,
+            clock,
+            cycles: 0,
+            passes: 0,
+            settle_limit: DEFAULT_SETTLE_LIMIT,
+            vcd: None,
+            recorder: None,
+        };
         driver.settle("power-up")?;
         Ok(driver)
     }
@@ -124,10 +146,16 @@ impl<B: Block> Driver<B> {
         self.cycles
     }
 
+    /// Update passes over the whole design so far (every settle, power-up included): the
+    /// simulation's cost. A cycle of a flat block takes about five.
+    pub fn passes(&self) -> u64 {
+        self.passes
+    }
+
     /// Drive phase: clock low, `set_inputs` writes the inputs' `.next`, the design settles.
     /// May be called more than once before a [`tick`](Self::tick); the last values count.
     pub fn drive(&mut self, set_inputs: impl FnOnce(&mut B)) -> Result<()> {
-        (self.clock)(&mut self.uut).next = Clock::from(false);
+        (self.clock)(&mut self.uut).force(Clock::from(false));
         set_inputs(&mut self.uut);
         self.settle("drive")
     }
@@ -141,7 +169,7 @@ impl<B: Block> Driver<B> {
         if let Some(vcd) = &mut self.vcd {
             vcd.sample(self.uut.as_ref(), self.cycles, false);
         }
-        (self.clock)(&mut self.uut).next = Clock::from(true);
+        (self.clock)(&mut self.uut).force(Clock::from(true));
         self.settle("rising edge")?;
         if let Some(rec) = &mut self.recorder {
             rec.sample_after_edge(self.uut.as_ref())?;
@@ -208,14 +236,18 @@ impl<B: Block> Driver<B> {
     }
 
     fn settle(&mut self, phase: &str) -> Result<()> {
-        if simulate(self.uut.as_mut(), self.settle_limit) {
-            Ok(())
-        } else {
-            Err(Error::new(format!(
-                "design did not settle within {} update passes at cycle {} ({phase}): a \
-                 combinational loop, or a hierarchy deeper than the limit (Driver::with_settle_limit)",
-                self.settle_limit, self.cycles
-            )))
+        // rust-hdl's `simulate`, counting the passes.
+        for _ in 0..self.settle_limit {
+            self.uut.update_all();
+            self.passes += 1;
+            if !self.uut.has_changed() {
+                return Ok(());
+            }
         }
+        Err(Error::new(format!(
+            "design did not settle within {} update passes at cycle {} ({phase}): a \
+             combinational loop, or a hierarchy deeper than the limit (Driver::with_settle_limit)",
+            self.settle_limit, self.cycles
+        )))
     }
 }

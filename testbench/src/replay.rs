@@ -557,8 +557,9 @@ impl Recording {
             Simulator::Icarus => run_icarus(dir, design.file())?,
             Simulator::Verilator => run_verilator(dir, design.file())?,
         };
-        let (cycles, checks) = parse_summary(&output, self.cycles)
-            .map_err(|e| e.context(format_args!("{design} under {simulator}, replay in {}", dir.display())))?;
+        let (cycles, checks) = parse_summary(&output, self.cycles).map_err(|e| {
+            e.context(format_args!("{design} under {simulator}, replay in {}", dir.display()))
+        })?;
         Ok(ReplayReport { simulator, design, cycles, checks, dir: dir.to_owned() })
     }
 

@@ -5,10 +5,10 @@
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use shelling_hdl::cache::LINES;
 use shelling_hdl::formats::{direction, Quantizer};
 use shelling_hdl::pe::ProcessingElement;
 use shelling_testbench::memory::HostMemory;
-use shelling_hdl::cache::LINES;
 use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
 use shelling_testbench::{Driver, Error, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
@@ -204,7 +204,8 @@ fn a_cache_flush_forgets_the_last_scene() -> Result<()> {
     let mut drv = Driver::new(ProcessingElement::default())?;
     run(&mut drv, &mut HostMemory::new(scene_a, 2)?, &setup, cache, &cmds, |_, _| {})?;
     // Without a flush, B's ids hit A's lines: wrong patches (so this test can tell).
-    let (stale, _) = run(&mut drv, &mut HostMemory::new(scene_b.clone(), 2)?, &setup, cache, &cmds, |_, _| {})?;
+    let (stale, _) =
+        run(&mut drv, &mut HostMemory::new(scene_b.clone(), 2)?, &setup, cache, &cmds, |_, _| {})?;
     assert_ne!(stale, want_b, "seed {seed:#x}: the stale cache went unnoticed");
     // The flush: one cycle to raise it, then one cycle per line with `busy` high.
     assert_eq!(flush_cache(&mut drv)?, LINES as u64 + 1, "seed {seed:#x}");

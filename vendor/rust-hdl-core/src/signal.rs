@@ -25,6 +25,7 @@ pub struct Signal<D: Direction, T: Synth> {
     val: T,
     prev: T,
     pub changed: bool,
+    forced_edge: bool,
     claimed: bool,
     id: usize,
     tristate_is_output: bool,
@@ -221,6 +222,7 @@ impl<D: Direction, T: Synth> Block for Signal<D, T> {
     fn connect_all(&mut self) {}
 
     fn update_all(&mut self) {
+        self.forced_edge = false;
         self.changed = self.val != self.next;
         if self.changed {
             self.prev = self.val;
@@ -238,13 +240,29 @@ impl<D: Direction, T: Synth> Block for Signal<D, T> {
 }
 
 impl Signal<In, Clock> {
+    /// Sets the clock now, as if a settle pass had already moved `.next` into it. For a
+    /// top-level clock driven from a cycle loop: the owning block's next `update` sees the new
+    /// level (and, rising, the edge: [`Signal::pos_edge`]), and its children see `.next` change
+    /// in that same pass.
+    pub fn force(&mut self, level: Clock) {
+        self.forced_edge = level != self.val;
+        self.changed = level != self.val;
+        self.prev = self.val;
+        self.val = level;
+        self.next = level;
+    }
+    /// An edge is seen exactly once, by the owning block's `update` in the settle pass that
+    /// drives `.next` to the new level (before `update_all` moves it into `.val`), or, for a
+    /// clock set by [`Signal::force`], in the pass after the force. Upstream sees it one pass
+    /// later, from the `changed` flag; a clock forwarded down the hierarchy therefore reaches
+    /// each level one pass earlier here, and every level still one pass after its parent.
     #[inline(always)]
     pub fn pos_edge(&self) -> bool {
-        self.changed && self.val.clk && !self.prev.clk
+        (self.next.clk && !self.val.clk) || (self.forced_edge && self.val.clk)
     }
     #[inline(always)]
     pub fn neg_edge(&self) -> bool {
-        self.changed && !self.val.clk && self.prev.clk
+        (!self.next.clk && self.val.clk) || (self.forced_edge && !self.val.clk)
     }
 }
 
@@ -255,6 +273,7 @@ impl<T: Synth> Signal<Out, T> {
             val: init,
             prev: init,
             changed: false,
+            forced_edge: false,
             claimed: false,
             id: get_signal_id(),
             tristate_is_output: false,
@@ -281,6 +300,7 @@ impl<D: Direction, T: Synth> Default for Signal<D, T> {
             val: T::default(),
             prev: T::default(),
             changed: false,
+            forced_edge: false,
             claimed: false,
             id: get_signal_id(),
             tristate_is_output: false,
