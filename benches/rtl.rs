@@ -107,21 +107,26 @@ fn processing_element(rounds: usize) {
     use shelling::scene::{self, PAPER_WORLD};
     use shelling::trace::{Method, ShellParams};
     use shelling::workstream::execute;
+    use shelling_hdl::pe::ProcessingElement;
     let scene = scene::generate(1000, 32.0, 7, PAPER_WORLD).expect("scene");
     let prepared = Prepared::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(250, RaySet::Angle, 1024).expect("source");
     let (mut rate, mut wall, mut model, mut cycles) = (Vec::new(), Vec::new(), Vec::new(), 0);
+    let mut passes = 0.0;
     for _ in 0..rounds {
         let t = Instant::now();
         let scheduled =
             prepared.schedule(Method::Stochastic, &bundle, &ShellParams::default()).expect("fits");
-        let run = cosim::run(&scheduled, &CosimConfig { tc: 16, cache: None, vcd: None }, |_, _| {})
-            .expect("co-simulates");
+        let mut drv = Driver::new(ProcessingElement::default()).expect("the PE connects");
+        let run =
+            cosim::run_on(&mut drv, &scheduled, &CosimConfig { tc: 16, cache: None, vcd: None }, |_, _| {})
+                .expect("co-simulates");
         let all = run.hardware.cycles + run.hardware.setup_cycles + run.hardware.readout_cycles;
         let elapsed = t.elapsed().as_secs_f64();
         wall.push(elapsed);
         rate.push(all as f64 / elapsed);
         cycles = all;
+        passes = drv.passes() as f64 / drv.cycles() as f64;
         let t = Instant::now();
         black_box(execute(black_box(&scheduled.stream), &scheduled.fixed).expect("valid"));
         model.push(t.elapsed().as_secs_f64());
@@ -131,7 +136,10 @@ fn processing_element(rounds: usize) {
         "processing element, one source (L = 32, R = 1024, stochastic, T_c = 16), {rounds} rounds, median:"
     );
     println!("  {:<32} {:>12} cycles (setup, stream and readout)", "simulated", cycles);
-    println!("  {:<32} {:>12.0} cycles/s, {:.2} s per source", "RTL co-simulation, no VCD", r, w);
+    println!(
+        "  {:<32} {:>12.0} cycles/s, {:.2} s per source ({passes:.2} update passes per cycle)",
+        "RTL co-simulation, no VCD", r, w
+    );
     println!(
         "  {:<32} {:>12.6} s per source (RTL takes {:.0}x as long)",
         "bit-true execution (baseline)",
