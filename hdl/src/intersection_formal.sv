@@ -23,7 +23,9 @@
 //   1 to 6 are checked): `tests` grows for a test ray issued two cycles before exactly when the
 //   ray was live (a_tests_live, a_tests_dead; the harness keeps the live bit of one arbitrary
 //   ray F_RAY: a direction write makes it live, a retire job's issue of it kills it);
-// * task `bmc_results`, depth 11 (the earliest such readout is in cycle 9: c_hit): no result
+// * task `bmc_results`, depth 10 (the earliest such readout is in cycle 9, c_hit, so only the
+//   shortest sequences that end in one are checked; depth 11 passes too, in about 45 s to three
+//   minutes here, too long for `cargo test`): no result
 //   without an input: a readout that reports a hit on ray F_RAY follows a live test of F_RAY
 //   since its last readout, by a job with id F_ID if the reported id is F_ID (F_RAY and F_ID
 //   arbitrary; a_hit_tested, a_hit_id).
