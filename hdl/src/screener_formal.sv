@@ -39,7 +39,7 @@
 // The bound does not reach a full FIFO (32 patches) or the wrap of its 5-bit pointers; the
 // induction covers those for the credit, pointer and head invariants (i_used .. i_head), but
 // not for the followed patch's identity (its invariants i_trk_* are written below, but the
-// induction step with them did not finish within 4 minutes, so screener.sby removes them).
+// induction step with them did not finish in 200-240 s here, so screener.sby removes them).
 //
 // Covers (task `cover`, depth 40): a full FIFO stalling the input, the followed patch leaving
 // passed and screened out, and a patch leaving while another enters after all credits were
