@@ -4,8 +4,8 @@
 //
 // Every input is free in every cycle except for the two rules of the module documentation (the
 // host writes directions and reads results only while the unit is not busy). Proved for all
-// time (k-induction, task `prove`, with INDUCTION defined) and to the bounded depth (task
-// `bmc`):
+// time (k-induction, task `prove`, k = 2, with INDUCTION defined; also checked by the bounded
+// task `bmc`):
 //
 // * the patch handshake is the documented one: `patch_ready` is high exactly while fewer than
 //   two rays of the current patch remain to be issued, the harness following the sequencer from
@@ -16,14 +16,23 @@
 // * `busy` is high while a ray is issued and in the cycle after a test ray, and never without
 //   a ray issued in the last five cycles.
 //
-// Proved to the bounded depth only (task `bmc`; they need the ray memories' contents):
+// Proved to a bounded depth only (they need the ray memories' contents):
 //
-// * `tests` grows for a test ray issued two cycles before exactly when the ray was live (the
-//   harness keeps the live bit of one arbitrary ray F_RAY: a direction write makes it live, a
-//   retire job's issue of it kills it), and `busy` stays high three cycles after such a test;
-// * no result without an input: a readout that reports a hit on ray F_RAY follows a live test
-//   of F_RAY since its last readout, by a job with id F_ID if the reported id is F_ID (F_RAY and
-//   F_ID arbitrary).
+// * task `bmc_live`, depth 9 (every input sequence of 9 cycles; a test ray can first be issued
+//   in cycle 1, after a direction write and a patch in cycle 0, so the tests issued in cycles
+//   1 to 6 are checked): `tests` grows for a test ray issued two cycles before exactly when the
+//   ray was live (a_tests_live, a_tests_dead; the harness keeps the live bit of one arbitrary
+//   ray F_RAY: a direction write makes it live, a retire job's issue of it kills it);
+// * task `bmc_results`, depth 10 (the earliest such readout is in cycle 9, c_hit, so only the
+//   shortest sequences that end in one are checked; depth 11 passes too, in about 45 s to three
+//   minutes here, too long for `cargo test`): no result
+//   without an input: a readout that reports a hit on ray F_RAY follows a live test of F_RAY
+//   since its last readout, by a job with id F_ID if the reported id is F_ID (F_RAY and F_ID
+//   arbitrary; a_hit_tested, a_hit_id).
+//
+// Task `bmc` checks all the properties together to depth 12; it takes minutes and is run by
+// hand, not by `cargo test`. The two split tasks' depths are the largest that finish in well
+// under a minute here (one more step of bmc_live took over two minutes).
 
 `default_nettype none
 

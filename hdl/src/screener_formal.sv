@@ -1,23 +1,50 @@
 // Formal harness of the backface screener (`screener.rs`), run by `screener.sby` on the exported
 // Verilog (`hdl/verilog/screener.v`, top module `screener`). See `hdl/FORMAL.md`.
 //
-// A bounded proof (the depth is in screener.sby): for every input sequence of that length,
-// every input free in every cycle (bundle setup, patch stream, `out_ready`), with no
-// assumption at all (the handshake needs none; the bundle setup being held constant only
-// matters for the verdicts, which the simulation tests check bit for bit against the model):
+// Every input is free in every cycle: bundle setup, patch stream, `out_ready` and `pick`. There
+// is no `assume` at all: the handshake needs none (the documented rule that the bundle setup is
+// held while its patches stream matters only for the verdicts' values, which the simulation
+// tests check bit for bit against the model; here any verdict may come of any setup). The
+// script (screener.sby) also cuts the ten products and the divider's quotients free, which only
+// widens the behaviours checked (the verdicts and the `W` words become arbitrary).
+//
+// Proved for all time (task `prove`, k-induction with k = 2, INDUCTION defined: the internal
+// invariants below are asserted in the base case and assumed only in the induction step):
 //
 // * credits: at most DEPTH (32) patches are in flight (accepted, not yet out), and `in_ready`
-//   is high exactly while fewer are;
-// * no output without an input: `out_valid` only while a patch is in flight;
+//   is high exactly while fewer are (a_credits, a_in_ready);
+// * no output without an input: `out_valid` only while a patch is in flight (a_no_spurious);
+// * every patch is counted in exactly one verdict counter, once, in the cycle of its verdict
+//   (VERDICT_LATENCY = 4 cycles after acceptance, shown from the next cycle on): the counters
+//   start at zero and only ever grow by one, at most one of them in a cycle, and one exactly
+//   when a patch was taken five cycles before (a_counters_init, a_count_step, a_count_one,
+//   a_count_when); so the five counters sum to the number of patches taken at least five
+//   cycles ago;
+// * the output holds (`out_valid`, `out_id`, `out_pass`, `out_sh` stable) while it waits for
+//   `out_ready`, and `in_ready` is not withdrawn without a transfer (a_out_hold, a_out_stable,
+//   a_in_hold).
+//
+// Proved to depth 30 only (task `bmc`: every input sequence of 30 cycles; the latency, 24, plus
+// six cycles, so a patch accepted in the first six cycles is followed out under any
+// backpressure), besides all the above:
+//
 // * every patch that enters leaves exactly once, in order: the n-th patch out is the n-th in
-//   (the harness follows one patch, chosen freely by `pick`); it is presented exactly from
-//   LATENCY (24) cycles after its acceptance on, as soon as the patches before it have left;
-// * every patch is counted in exactly one verdict counter, in the cycle of its verdict
-//   (VERDICT_LATENCY = 4 cycles after acceptance): the five counters sum to the number of
-//   patches accepted at least five cycles ago; and a patch leaves with `out_pass` set exactly
-//   when its verdict was counted in `passed` (passed, or counted as screened);
-// * the output holds (`out_valid` and all data stable) while it waits for `out_ready`, and
-//   `in_ready` is not withdrawn without a transfer.
+//   (the harness follows one patch, chosen freely by `pick`; a_ahead, a_order); it is presented
+//   exactly from LATENCY (24) cycles after its acceptance on, as soon as the patches before it
+//   have left (a_latency);
+// * it leaves passed (`out_pass` set) exactly when its verdict was counted in `passed`, and
+//   screened out otherwise, counted in one of the other four (a_pass with the counting
+//   properties): passed or counted as screened.
+//
+// The bound does not reach a full FIFO (32 patches) or the wrap of its 5-bit pointers; the
+// induction covers those for the credit, pointer and head invariants (i_used .. i_head), but
+// not for the followed patch's identity (its invariants i_trk_* are written below, but the
+// induction step with them did not finish in 200-240 s here, so screener.sby removes them).
+//
+// Covers (task `cover`, depth 40): a full FIFO stalling the input, the followed patch leaving
+// passed and screened out, and a patch leaving while another enters after all credits were
+// taken. Mutants (`mutant_count`, `mutant_lost`, expected to FAIL): the passed counter never
+// incremented is caught by a_count_when; the FIFO's id lane never written by a_order.
 
 `default_nettype none
 

