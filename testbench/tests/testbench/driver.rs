@@ -2,7 +2,7 @@
 
 use shelling_testbench::{Driver, Pacing, Result};
 
-use crate::toy::{random_vectors, run_pipeline, MulAddPipe, Undriven, PIPE_LATENCY};
+use crate::toy::{random_vectors, run_pipeline, MulAddPipe, Ring, Undriven, PIPE_LATENCY};
 
 #[test]
 fn pipeline_matches_model_over_random_vectors() -> Result<()> {
@@ -17,6 +17,24 @@ fn pipeline_matches_model_over_random_vectors() -> Result<()> {
             // Back to back: one result per cycle after the pipeline filled.
             assert_eq!(drv.cycles(), vectors.len() as u64 + PIPE_LATENCY - 1);
         }
+    }
+    Ok(())
+}
+
+/// Registers one, two and three levels below the top each capture their input as it was before
+/// the edge (the driver forces the top clock, and rust-hdl-core is vendored to show an edge one
+/// pass earlier: `vendor/README.md`), whatever the input pattern.
+#[test]
+fn registers_at_every_depth_capture_their_pre_edge_inputs() -> Result<()> {
+    let mut drv = Driver::new(Ring::default())?;
+    let (mut r1, mut r2, mut r3) = (0u16, 0u16, 0u16);
+    for cycle in 0..200u64 {
+        let step = (cycle * 7919 % 13) as u16;
+        drv.cycle(|u| u.step.next = (step as u64).into())?;
+        (r1, r2, r3) = (r3.wrapping_add(step), r1, r2);
+        let u = drv.uut();
+        let got = (u.q1.val().index() as u16, u.q2.val().index() as u16, u.q3.val().index() as u16);
+        assert_eq!(got, (r1, r2, r3), "cycle {cycle} (step {step})");
     }
     Ok(())
 }

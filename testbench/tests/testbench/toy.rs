@@ -1,7 +1,8 @@
 //! Toy blocks for the test-bench's own tests: a 6-stage 32-bit pipeline with a valid bit (with
 //! its Rust model and the loop that checks it against the model), an 8-entry write/full FIFO
 //! built on rust-hdl's `SynchronousFIFO`, a block with an interface port, a block whose exported Verilog is known to disagree
-//! with its rust-hdl simulation, and one that fails rust-hdl's checks.
+//! with its rust-hdl simulation, one that fails rust-hdl's checks, and a ring of registers at
+//! three depths of the hierarchy.
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -190,7 +191,76 @@ impl Logic for Undriven {
     fn update(&mut self) {}
 }
 
-impl_clocked!(MulAddPipe, Fifo, ScaledProduct, BusSum, Undriven);
+/// The innermost level of [`Ring`]: one register (three levels below the top).
+#[derive(LogicBlock, Default)]
+pub struct RingLeaf {
+    pub clock: Signal<In, Clock>,
+    pub d: Signal<In, Bits<16>>,
+    pub q: Signal<Out, Bits<16>>,
+    r3: DFF<Bits<16>>,
+}
+
+impl Logic for RingLeaf {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, r3);
+        self.r3.d.next = self.d.val();
+        self.q.next = self.r3.q.val();
+    }
+}
+
+/// The middle level of [`Ring`]: one register (two levels below the top) feeding a
+/// [`RingLeaf`]; the leaf's register comes back out combinationally.
+#[derive(LogicBlock, Default)]
+pub struct RingMid {
+    pub clock: Signal<In, Clock>,
+    pub d: Signal<In, Bits<16>>,
+    pub q2: Signal<Out, Bits<16>>,
+    pub q3: Signal<Out, Bits<16>>,
+    r2: DFF<Bits<16>>,
+    leaf: RingLeaf,
+}
+
+impl Logic for RingMid {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, r2);
+        self.leaf.clock.next = self.clock.val();
+        self.r2.d.next = self.d.val();
+        self.leaf.d.next = self.r2.q.val();
+        self.q2.next = self.r2.q.val();
+        self.q3.next = self.leaf.q.val();
+    }
+}
+
+/// Registers one, two and three levels deep in a ring: `r1 ← r3 + step`, `r2 ← r1`, `r3 ← r2`
+/// at every rising edge. Every register must capture its input as it was before the edge,
+/// whatever its depth: the check of the driver's edge timing across the hierarchy.
+#[derive(LogicBlock, Default)]
+pub struct Ring {
+    pub clock: Signal<In, Clock>,
+    pub step: Signal<In, Bits<16>>,
+    pub q1: Signal<Out, Bits<16>>,
+    pub q2: Signal<Out, Bits<16>>,
+    pub q3: Signal<Out, Bits<16>>,
+    r1: DFF<Bits<16>>,
+    mid: RingMid,
+}
+
+impl Logic for Ring {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, r1);
+        self.mid.clock.next = self.clock.val();
+        self.r1.d.next = self.mid.q3.val() + self.step.val();
+        self.mid.d.next = self.r1.q.val();
+        self.q1.next = self.r1.q.val();
+        self.q2.next = self.mid.q2.val();
+        self.q3.next = self.mid.q3.val();
+    }
+}
+
+impl_clocked!(MulAddPipe, Fifo, ScaledProduct, BusSum, Undriven, Ring);
 
 /// Runs `vectors` through [`MulAddPipe`] in `drv`, presenting them with the source's idle
 /// pattern (`pacing.idle`; the pipeline cannot stall, so backpressure does not apply), and
