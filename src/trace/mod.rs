@@ -15,7 +15,7 @@ mod shelling;
 pub use shelling::{ShellParams, ShellStats};
 
 use crate::counters::Counters;
-use crate::geom::{angle_of, facing, hit_front, Facing, Hit, Segment, Vec2};
+use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, Segment, Vec2};
 use crate::grid::Grid;
 use crate::rays::Bundle;
 use std::fmt;
@@ -92,6 +92,30 @@ pub enum TraceError {
 pub trait HitTest {
     fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64>;
 
+    /// [`HitTest::hit`] of patch `p` for the rays `base + k`, one for each set bit `k` of
+    /// `rays`, in increasing order: `found(i, key)` is called for each ray `i` that hits. A
+    /// backend may override it to share per-patch work between the rays, answering exactly as
+    /// `hit` does ray by ray (which the default does).
+    #[inline(always)]
+    fn hit_rays(
+        &self,
+        bundle: &Bundle,
+        p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        mut found: impl FnMut(usize, f64),
+    ) {
+        let mut rays = rays;
+        while rays != 0 {
+            let i = base + rays.trailing_zeros() as usize;
+            rays &= rays - 1;
+            if let Some(t) = self.hit(bundle, i, p, seg) {
+                found(i, t);
+            }
+        }
+    }
+
     /// A sector starts: its rays (the conventional technique: one sector of the whole bundle).
     #[inline(always)]
     fn sector(&self, _rays: Range<usize>) {}
@@ -117,6 +141,34 @@ impl HitTest for FloatHits {
     #[inline(always)]
     fn hit(&self, bundle: &Bundle, i: usize, _p: u32, seg: &Segment) -> Option<f64> {
         hit_front(&bundle.rays[i], seg)
+    }
+
+    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch`]), for the rays whose
+    /// origin is the source's (every ray of a bundle built by [`Bundle::new`]); any other ray
+    /// takes [`hit_front`] itself.
+    #[inline(always)]
+    fn hit_rays(
+        &self,
+        bundle: &Bundle,
+        _p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        mut found: impl FnMut(usize, f64),
+    ) {
+        let patch = FrontPatch::new(bundle.source.origin, seg);
+        let o = patch.origin();
+        let mut rays = rays;
+        while rays != 0 {
+            let i = base + rays.trailing_zeros() as usize;
+            rays &= rays - 1;
+            let ray = &bundle.rays[i];
+            let same = ray.origin.x.to_bits() == o.x.to_bits() && ray.origin.y.to_bits() == o.y.to_bits();
+            let t = if same { patch.hit(ray) } else { hit_front(ray, seg) };
+            if let Some(t) = t {
+                found(i, t);
+            }
+        }
     }
 }
 

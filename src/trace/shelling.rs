@@ -280,15 +280,12 @@ impl SectorRays {
                 word &= !0u64 >> (64 - b % 64);
             }
             c.intersection_computations += word.count_ones() as u64;
-            while word != 0 {
-                let bit = word.trailing_zeros();
-                word &= word - 1;
-                let i = self.s + w * 64 + bit as usize;
-                if let Some(t) = test.hit(bundle, i, p, seg) {
-                    offer(&mut best[i], Hit { t, segment: p });
-                    self.hit[w] |= 1u64 << bit;
-                }
-            }
+            let base = self.s + w * 64;
+            let hit = &mut self.hit[w];
+            test.hit_rays(bundle, p, seg, base, word, |i, t| {
+                offer(&mut best[i], Hit { t, segment: p });
+                *hit |= 1u64 << (i - base);
+            });
         }
     }
 
