@@ -236,7 +236,16 @@ fn hit_summary(hits: &[Option<Hit>]) -> (usize, f64) {
     // Distinct patches: a bit set over the patch indices when it is small against the hits
     // (a miss marks the spare bit `max + 1`, discounted after), else sort and count.
     let distinct = if (max as usize) < 64 * 64 + 64 * hits.len() {
-        let mut seen = vec![0u64; (max as usize + 1) / 64 + 1];
+        // Small sets (every scene of up to 4096 patches) live on the stack.
+        let words = (max as usize + 1) / 64 + 1;
+        let mut stack = [0u64; 64];
+        let mut heap = Vec::new();
+        let seen: &mut [u64] = if words <= stack.len() {
+            &mut stack[..words]
+        } else {
+            heap.resize(words, 0);
+            &mut heap
+        };
         let (mut n, mut last) = (0usize, usize::MAX);
         for h in hits {
             let id = h.map_or(max as usize + 1, |h| h.segment as usize);

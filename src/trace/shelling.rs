@@ -366,7 +366,7 @@ impl RegionSet {
     }
 
     /// Adds region `r`; `true` when it is new. `stamps` and `tick` hold the overflow.
-    #[inline]
+    #[inline(always)]
     fn insert(&mut self, r: u32, stamps: &mut [u64], tick: u64) -> bool {
         if self.n <= Self::CAP {
             if self.list[..self.n].contains(&r) {
