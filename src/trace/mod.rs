@@ -481,7 +481,7 @@ impl<'a> PatchCache<'a> {
         let rb = (seg.b - o).length();
         let r_min = (seg.distance_to(o) - self.margin).max(0.0);
         let flatness = (ra - rb).abs();
-        let (lo, hi) = self.span(seg);
+        let (lo, hi) = self.span(seg, ra, rb);
         let r = self.bundle.rays_between(lo, hi);
         PatchInfo { screen, rays: r.start as u32..r.end as u32, r_min, flatness, angle_lo: lo }
     }
@@ -489,30 +489,31 @@ impl<'a> PatchCache<'a> {
     /// The conservative angular span `[lo, hi]` of a front-facing, not backward patch: the
     /// endpoints' angles (the part behind the source's plane clipped away), each widened by a
     /// bound on its rounding error.
-    fn span(&self, seg: &Segment) -> (f64, f64) {
+    /// `ra` and `rb` are the endpoints' distances from the source, `(a − O).length()` and
+    /// `(b − O).length()`.
+    fn span(&self, seg: &Segment, ra: f64, rb: f64) -> (f64, f64) {
         use std::f64::consts::FRAC_PI_2;
         let src = &self.bundle.source;
         let (o, n) = (src.origin, src.normal);
-        let slack =
-            |p: Vec2| 1e-12 + 64.0 * f64::EPSILON * self.scale / (p - o).length().max(f64::MIN_POSITIVE);
+        let slack = |r: f64| 1e-12 + 64.0 * f64::EPSILON * self.scale / r.max(f64::MIN_POSITIVE);
         let ha = (seg.a - o).dot(n);
         let hb = (seg.b - o).dot(n);
-        let angle = |p: Vec2| {
-            let (a, e) = (angle_of(o, n, p), slack(p));
+        let angle = |p: Vec2, r: f64| {
+            let (a, e) = (angle_of(o, n, p), slack(r));
             (a - e, a + e)
         };
         if ha > 0.0 && hb > 0.0 {
-            let (a0, a1) = angle(seg.a);
-            let (b0, b1) = angle(seg.b);
+            let (a0, a1) = angle(seg.a, ra);
+            let (b0, b1) = angle(seg.b, rb);
             return (a0.min(b0), a1.max(b1));
         }
         // One endpoint is behind (or on) the plane: the span runs from the front endpoint to the
         // plane on the side where the segment crosses it.
-        let (front, hf, hback) = if ha > 0.0 { (seg.a, ha, hb) } else { (seg.b, hb, ha) };
+        let (front, rf, hf, hback) = if ha > 0.0 { (seg.a, ra, ha, hb) } else { (seg.b, rb, hb, ha) };
         let back = if ha > 0.0 { seg.b } else { seg.a };
         let cut = front + (back - front) * (hf / (hf - hback));
         let side = (cut - o).dot(crate::geom::perp(n));
-        let (f0, f1) = angle(front);
+        let (f0, f1) = angle(front, rf);
         let tol = 1e-9 * self.scale;
         if side > tol {
             (f0, FRAC_PI_2)

@@ -421,11 +421,14 @@ fn trace_bundle<H: HitTest>(
     let mut est_sum = 0.0;
     let mut est_weight = 0.0;
 
-    let mut prev: Vec<Option<ShellEstimate>> = Vec::new();
-    let mut cur: Vec<Option<ShellEstimate>> = Vec::new();
+    // Room for a sector's shells across the grid and a shell's relevant patches, so that the
+    // common trace does not regrow them.
+    let shells_hint = (far / depth).ceil().min(1024.0) as usize + 1;
+    let mut prev: Vec<Option<ShellEstimate>> = Vec::with_capacity(shells_hint);
+    let mut cur: Vec<Option<ShellEstimate>> = Vec::with_capacity(shells_hint);
     let mut width = params.first_sector;
     let mut s = 0usize;
-    let mut relevant: Vec<u32> = Vec::new();
+    let mut relevant: Vec<u32> = Vec::with_capacity(256);
     let mut regions = RegionSet::new();
 
     while s < r {
