@@ -52,14 +52,15 @@ pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> f64 {
     )
 }
 
-/// The first stage of [`orient`] (Shewchuk's predicate as the `robust` crate implements it): the
-/// floating-point determinant, and whether its error bound proves its sign, in which case it is
-/// exactly what [`orient`] returns.
+/// The first stage of [`orient`]`(a, b, c)` (Shewchuk's predicate as the `robust` crate
+/// implements it), given the differences `a − c` and `b − c` it starts from: the floating-point
+/// determinant, and whether its error bound proves its sign, in which case it is exactly what
+/// [`orient`] returns.
 #[inline(always)]
-fn orient_filter(a: Vec2, b: Vec2, c: Vec2) -> (f64, bool) {
+fn orient_filter(ac: Vec2, bc: Vec2) -> (f64, bool) {
     const THETA: f64 = 3.3306690621773722e-16;
-    let detleft = (a.x - c.x) * (b.y - c.y);
-    let detright = (a.y - c.y) * (b.x - c.x);
+    let detleft = ac.x * bc.y;
+    let detright = ac.y * bc.x;
     let det = detleft - detright;
     let errbound = THETA * (detleft + detright).abs();
     (det, det >= errbound || -det >= errbound)
@@ -147,27 +148,82 @@ pub fn facing(origin: Vec2, normal: Vec2, seg: &Segment) -> Facing {
 /// returns the distance `t > 0` at which the ray meets the segment, or `None`.
 #[inline(always)]
 pub fn hit_front(ray: &Ray, seg: &Segment) -> Option<f64> {
-    // The ray's line must have `a` on its right (or on it) and `b` on its left (or on it). Both
-    // orientations go through the floating-point filter of `orient` first, side by side; only
-    // when either is too close to call does the exact predicate decide.
-    let (o, p) = (ray.origin, ray.probe);
-    let (da, certain_a) = orient_filter(o, p, seg.a);
-    let (db, certain_b) = orient_filter(o, p, seg.b);
-    let miss = if certain_a & certain_b { (da > 0.0) | (db < 0.0) } else { misses_exactly(o, p, seg) };
-    if miss {
-        return None;
+    FrontPatch::new(ray.origin, seg).hit(ray)
+}
+
+/// [`hit_front`] for one patch and many rays from one origin: what depends only on the origin
+/// and the patch is computed once. [`FrontPatch::hit`] performs exactly the operations of
+/// [`hit_front`] on exactly the same operands (`hit_front` is built from it), so its answers are
+/// bit-identical.
+#[derive(Clone, Copy, Debug)]
+pub struct FrontPatch {
+    /// The rays' common origin `O`.
+    origin: Vec2,
+    seg: Segment,
+    /// `O − a` and `O − b`: the first operands of the orientation filter's products.
+    oa: Vec2,
+    ob: Vec2,
+    /// `e = b − a`, `w = a − O`, `b − O`, and `cross(w, e)` (the numerator of `t`).
+    e: Vec2,
+    w: Vec2,
+    wb: Vec2,
+    num: f64,
+}
+
+impl FrontPatch {
+    #[inline(always)]
+    pub fn new(origin: Vec2, seg: &Segment) -> FrontPatch {
+        let e = seg.b - seg.a;
+        let w = seg.a - origin;
+        FrontPatch {
+            origin,
+            seg: *seg,
+            oa: origin - seg.a,
+            ob: origin - seg.b,
+            e,
+            w,
+            wb: seg.b - origin,
+            num: cross(w, e),
+        }
     }
-    let e = seg.b - seg.a;
-    let w = seg.a - ray.origin;
-    let t = cross(w, e) / cross(ray.dir, e);
-    // Clamp into the projection interval of the endpoints so `t` names a point of the segment
-    // even when the ray grazes it and the quotient is ill-conditioned.
-    let ta = w.dot(ray.dir);
-    let tb = (seg.b - ray.origin).dot(ray.dir);
-    let (lo, hi) = if ta <= tb { (ta, tb) } else { (tb, ta) };
-    let t = if t.is_nan() { lo } else { t.clamp(lo, hi) };
-    // A hit is at t > 0 by the predicates; keep it strictly positive after rounding too.
-    Some(t.max(f64::MIN_POSITIVE))
+
+    /// The rays' origin this patch was prepared for.
+    #[inline(always)]
+    pub fn origin(&self) -> Vec2 {
+        self.origin
+    }
+
+    /// [`hit_front`] of `ray`, whose origin must be [`FrontPatch::origin`] (bit for bit).
+    #[inline(always)]
+    pub fn hit(&self, ray: &Ray) -> Option<f64> {
+        debug_assert!(
+            ray.origin.x.to_bits() == self.origin.x.to_bits()
+                && ray.origin.y.to_bits() == self.origin.y.to_bits()
+        );
+        // The ray's line must have `a` on its right (or on it) and `b` on its left (or on it).
+        // Both orientations go through the floating-point filter of `orient` first, side by
+        // side; only when either is too close to call does the exact predicate decide.
+        let p = ray.probe;
+        let (da, certain_a) = orient_filter(self.oa, p - self.seg.a);
+        let (db, certain_b) = orient_filter(self.ob, p - self.seg.b);
+        let miss = if certain_a & certain_b {
+            (da > 0.0) | (db < 0.0)
+        } else {
+            misses_exactly(self.origin, p, &self.seg)
+        };
+        if miss {
+            return None;
+        }
+        let t = self.num / cross(ray.dir, self.e);
+        // Clamp into the projection interval of the endpoints so `t` names a point of the
+        // segment even when the ray grazes it and the quotient is ill-conditioned.
+        let ta = self.w.dot(ray.dir);
+        let tb = self.wb.dot(ray.dir);
+        let (lo, hi) = if ta <= tb { (ta, tb) } else { (tb, ta) };
+        let t = if t.is_nan() { lo } else { t.clamp(lo, hi) };
+        // A hit is at t > 0 by the predicates; keep it strictly positive after rounding too.
+        Some(t.max(f64::MIN_POSITIVE))
+    }
 }
 
 /// The orientation test of [`hit_front`] by the exact predicate, for when the filter cannot

@@ -102,6 +102,19 @@ impl<H: HitTest> HitTest for Recorder<'_, H> {
         self.inner.hit(bundle, i, p, seg)
     }
 
+    #[inline]
+    fn hit_rays(
+        &self,
+        bundle: &Bundle,
+        p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        found: impl FnMut(usize, f64),
+    ) {
+        self.inner.hit_rays(bundle, p, seg, base, rays, found)
+    }
+
     fn sector(&self, rays: Range<usize>) {
         let mut rec = self.rec.borrow_mut();
         rec.flush();

@@ -15,7 +15,7 @@ mod shelling;
 pub use shelling::{ShellParams, ShellStats};
 
 use crate::counters::Counters;
-use crate::geom::{angle_of, facing, hit_front, Facing, Hit, Segment, Vec2};
+use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, Segment, Vec2};
 use crate::grid::Grid;
 use crate::rays::Bundle;
 use std::fmt;
@@ -92,6 +92,30 @@ pub enum TraceError {
 pub trait HitTest {
     fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64>;
 
+    /// [`HitTest::hit`] of patch `p` for the rays `base + k`, one for each set bit `k` of
+    /// `rays`, in increasing order: `found(i, key)` is called for each ray `i` that hits. A
+    /// backend may override it to share per-patch work between the rays, answering exactly as
+    /// `hit` does ray by ray (which the default does).
+    #[inline(always)]
+    fn hit_rays(
+        &self,
+        bundle: &Bundle,
+        p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        mut found: impl FnMut(usize, f64),
+    ) {
+        let mut rays = rays;
+        while rays != 0 {
+            let i = base + rays.trailing_zeros() as usize;
+            rays &= rays - 1;
+            if let Some(t) = self.hit(bundle, i, p, seg) {
+                found(i, t);
+            }
+        }
+    }
+
     /// A sector starts: its rays (the conventional technique: one sector of the whole bundle).
     #[inline(always)]
     fn sector(&self, _rays: Range<usize>) {}
@@ -117,6 +141,34 @@ impl HitTest for FloatHits {
     #[inline(always)]
     fn hit(&self, bundle: &Bundle, i: usize, _p: u32, seg: &Segment) -> Option<f64> {
         hit_front(&bundle.rays[i], seg)
+    }
+
+    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch`]), for the rays whose
+    /// origin is the source's (every ray of a bundle built by [`Bundle::new`]); any other ray
+    /// takes [`hit_front`] itself.
+    #[inline(always)]
+    fn hit_rays(
+        &self,
+        bundle: &Bundle,
+        _p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        mut found: impl FnMut(usize, f64),
+    ) {
+        let patch = FrontPatch::new(bundle.source.origin, seg);
+        let o = patch.origin();
+        let mut rays = rays;
+        while rays != 0 {
+            let i = base + rays.trailing_zeros() as usize;
+            rays &= rays - 1;
+            let ray = &bundle.rays[i];
+            let same = ray.origin.x.to_bits() == o.x.to_bits() && ray.origin.y.to_bits() == o.y.to_bits();
+            let t = if same { patch.hit(ray) } else { hit_front(ray, seg) };
+            if let Some(t) = t {
+                found(i, t);
+            }
+        }
     }
 }
 
@@ -184,7 +236,16 @@ fn hit_summary(hits: &[Option<Hit>]) -> (usize, f64) {
     // Distinct patches: a bit set over the patch indices when it is small against the hits
     // (a miss marks the spare bit `max + 1`, discounted after), else sort and count.
     let distinct = if (max as usize) < 64 * 64 + 64 * hits.len() {
-        let mut seen = vec![0u64; (max as usize + 1) / 64 + 1];
+        // Small sets (every scene of up to 4096 patches) live on the stack.
+        let words = (max as usize + 1) / 64 + 1;
+        let mut stack = [0u64; 64];
+        let mut heap = Vec::new();
+        let seen: &mut [u64] = if words <= stack.len() {
+            &mut stack[..words]
+        } else {
+            heap.resize(words, 0);
+            &mut heap
+        };
         let (mut n, mut last) = (0usize, usize::MAX);
         for h in hits {
             let id = h.map_or(max as usize + 1, |h| h.segment as usize);
@@ -420,7 +481,7 @@ impl<'a> PatchCache<'a> {
         let rb = (seg.b - o).length();
         let r_min = (seg.distance_to(o) - self.margin).max(0.0);
         let flatness = (ra - rb).abs();
-        let (lo, hi) = self.span(seg);
+        let (lo, hi) = self.span(seg, ra, rb);
         let r = self.bundle.rays_between(lo, hi);
         PatchInfo { screen, rays: r.start as u32..r.end as u32, r_min, flatness, angle_lo: lo }
     }
@@ -428,30 +489,31 @@ impl<'a> PatchCache<'a> {
     /// The conservative angular span `[lo, hi]` of a front-facing, not backward patch: the
     /// endpoints' angles (the part behind the source's plane clipped away), each widened by a
     /// bound on its rounding error.
-    fn span(&self, seg: &Segment) -> (f64, f64) {
+    /// `ra` and `rb` are the endpoints' distances from the source, `(a − O).length()` and
+    /// `(b − O).length()`.
+    fn span(&self, seg: &Segment, ra: f64, rb: f64) -> (f64, f64) {
         use std::f64::consts::FRAC_PI_2;
         let src = &self.bundle.source;
         let (o, n) = (src.origin, src.normal);
-        let slack =
-            |p: Vec2| 1e-12 + 64.0 * f64::EPSILON * self.scale / (p - o).length().max(f64::MIN_POSITIVE);
+        let slack = |r: f64| 1e-12 + 64.0 * f64::EPSILON * self.scale / r.max(f64::MIN_POSITIVE);
         let ha = (seg.a - o).dot(n);
         let hb = (seg.b - o).dot(n);
-        let angle = |p: Vec2| {
-            let (a, e) = (angle_of(o, n, p), slack(p));
+        let angle = |p: Vec2, r: f64| {
+            let (a, e) = (angle_of(o, n, p), slack(r));
             (a - e, a + e)
         };
         if ha > 0.0 && hb > 0.0 {
-            let (a0, a1) = angle(seg.a);
-            let (b0, b1) = angle(seg.b);
+            let (a0, a1) = angle(seg.a, ra);
+            let (b0, b1) = angle(seg.b, rb);
             return (a0.min(b0), a1.max(b1));
         }
         // One endpoint is behind (or on) the plane: the span runs from the front endpoint to the
         // plane on the side where the segment crosses it.
-        let (front, hf, hback) = if ha > 0.0 { (seg.a, ha, hb) } else { (seg.b, hb, ha) };
+        let (front, rf, hf, hback) = if ha > 0.0 { (seg.a, ra, ha, hb) } else { (seg.b, rb, hb, ha) };
         let back = if ha > 0.0 { seg.b } else { seg.a };
         let cut = front + (back - front) * (hf / (hf - hback));
         let side = (cut - o).dot(crate::geom::perp(n));
-        let (f0, f1) = angle(front);
+        let (f0, f1) = angle(front, rf);
         let tol = 1e-9 * self.scale;
         if side > tol {
             (f0, FRAC_PI_2)

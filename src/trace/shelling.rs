@@ -280,15 +280,12 @@ impl SectorRays {
                 word &= !0u64 >> (64 - b % 64);
             }
             c.intersection_computations += word.count_ones() as u64;
-            while word != 0 {
-                let bit = word.trailing_zeros();
-                word &= word - 1;
-                let i = self.s + w * 64 + bit as usize;
-                if let Some(t) = test.hit(bundle, i, p, seg) {
-                    offer(&mut best[i], Hit { t, segment: p });
-                    self.hit[w] |= 1u64 << bit;
-                }
-            }
+            let base = self.s + w * 64;
+            let hit = &mut self.hit[w];
+            test.hit_rays(bundle, p, seg, base, word, |i, t| {
+                offer(&mut best[i], Hit { t, segment: p });
+                *hit |= 1u64 << (i - base);
+            });
         }
     }
 
@@ -369,7 +366,7 @@ impl RegionSet {
     }
 
     /// Adds region `r`; `true` when it is new. `stamps` and `tick` hold the overflow.
-    #[inline]
+    #[inline(always)]
     fn insert(&mut self, r: u32, stamps: &mut [u64], tick: u64) -> bool {
         if self.n <= Self::CAP {
             if self.list[..self.n].contains(&r) {
@@ -424,11 +421,14 @@ fn trace_bundle<H: HitTest>(
     let mut est_sum = 0.0;
     let mut est_weight = 0.0;
 
-    let mut prev: Vec<Option<ShellEstimate>> = Vec::new();
-    let mut cur: Vec<Option<ShellEstimate>> = Vec::new();
+    // Room for a sector's shells across the grid and a shell's relevant patches, so that the
+    // common trace does not regrow them.
+    let shells_hint = (far / depth).ceil().min(1024.0) as usize + 1;
+    let mut prev: Vec<Option<ShellEstimate>> = Vec::with_capacity(shells_hint);
+    let mut cur: Vec<Option<ShellEstimate>> = Vec::with_capacity(shells_hint);
     let mut width = params.first_sector;
     let mut s = 0usize;
-    let mut relevant: Vec<u32> = Vec::new();
+    let mut relevant: Vec<u32> = Vec::with_capacity(256);
     let mut regions = RegionSet::new();
 
     while s < r {
