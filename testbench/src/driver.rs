@@ -33,9 +33,10 @@
 //! clock's edge in the pass its parent forwards it, not one pass later. A flat block such as the
 //! intersection unit settles a cycle in five passes (eight with upstream rust-hdl): one in which
 //! the registers capture, one in which the logic after them computes, one that finds nothing
-//! changed, and two for the drive phase. Every register still captures the value its input had
-//! before the edge: a value takes at least one pass to climb out of a block and one to enter
-//! another, and a block `k` levels deep captures in pass `k`, one pass after its parent.
+//! changed, and two for the drive phase (three when an input changes). Every register still
+//! captures the value its input had before the edge: a value takes at least one pass to climb
+//! out of a block and one to enter another, and a block `k` levels deep captures in pass `k`,
+//! one pass after its parent.
 //!
 //! # Clock access
 //!
