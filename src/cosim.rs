@@ -3,7 +3,9 @@
 //!
 //! The shell scheduler ([`Prepared::schedule`](crate::run::Prepared::schedule)) records the work
 //! stream on the bit-true backend; [`run`] turns it into the host's commands, simulates the
-//! processing element of `shelling-hdl` in rust-hdl with a host memory of load time `T_c`
+//! processing element of `shelling-hdl` ([`Engine`]: rust-hdl's simulation of the block, or its
+//! exported Verilog compiled by Verilator, cycle for cycle the same) with a host memory of load
+//! time `T_c`
 //! (optionally behind the PE's patch cache), reads every ray's nearest hit back and checks it,
 //! and the PE's counters, against the bit-true execution of the same commands (rung 3 for the
 //! whole system). The golden `f64` hits are compared by the caller within the documented bound
@@ -16,8 +18,21 @@ use shelling_hdl::intersection::model::Nearest;
 use shelling_hdl::pe::ProcessingElement;
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
-use shelling_testbench::Driver;
+use shelling_testbench::verilated::VerilatedPe;
+use shelling_testbench::{Driver, PeSim};
 use std::path::PathBuf;
+
+/// The simulator the processing element runs on.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
+pub enum Engine {
+    /// rust-hdl's own simulation of the block: VCD windows, about 40k cycles a second.
+    #[default]
+    RustHdl,
+    /// The exported Verilog compiled by Verilator and loaded as a shared library (built once
+    /// and cached, about 15 s; needs `verilator` and a C++ compiler): tens of times faster, no
+    /// VCD ([`shelling_testbench::verilated`]).
+    Verilator,
+}
 
 /// How the hardware is set up for a co-simulation.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -26,13 +41,16 @@ pub struct CosimConfig {
     pub tc: u32,
     /// The PE's patch cache: `None` off, `Some(lines)` on (a power of two up to 4096).
     pub cache: Option<u32>,
-    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up).
+    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up);
+    /// rust-hdl's engine only.
     pub vcd: Option<VcdWindow>,
+    /// The simulator.
+    pub engine: Engine,
 }
 
 impl Default for CosimConfig {
     fn default() -> Self {
-        CosimConfig { tc: 1, cache: None, vcd: None }
+        CosimConfig { tc: 1, cache: None, vcd: None, engine: Engine::RustHdl }
     }
 }
 
@@ -71,14 +89,28 @@ fn sim(e: shelling_testbench::Error) -> CosimError {
     CosimError::Sim(e.message().to_string())
 }
 
-/// Co-simulates a scheduled source on a new PE; `progress(done, total)` reports commands sent.
+/// Co-simulates a scheduled source on a new PE of `config.engine`; `progress(done, total)`
+/// reports commands sent.
 pub fn run(
     scheduled: &Scheduled,
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
-    let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
-    run_on(&mut drv, scheduled, config, progress)
+    match config.engine {
+        Engine::RustHdl => {
+            let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
+            run_on(&mut drv, scheduled, config, progress)
+        }
+        Engine::Verilator => {
+            if config.vcd.is_some() {
+                return Err(CosimError::Config(
+                    "a VCD needs the rust-hdl engine: the compiled PE writes no waveforms".into(),
+                ));
+            }
+            let mut pe = VerilatedPe::new().map_err(sim)?;
+            run_sim(&mut pe, scheduled, config, progress)
+        }
+    }
 }
 
 /// Co-simulates a scheduled source on the PE of `drv`, which may have run sources before (its
@@ -92,24 +124,36 @@ pub fn run_on(
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
-    if config.tc == 0 {
-        return Err(CosimError::Config("--tc must be at least 1 cycle per patch, got 0".into()));
-    }
-    let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
-    let (want, model) = pe::model(&setup, &patches, &cmds);
-    let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;
     if let Some(v) = &config.vcd {
         if v.from >= v.to {
             return Err(CosimError::Config(format!("empty VCD window {}..{}", v.from, v.to)));
         }
         drv.stream_vcd(&v.path, v.from..v.to).map_err(sim)?;
     }
-    let cache = CacheConfig { lines: config.cache };
-    cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
-    let (hits, hardware) = pe::run(drv, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
+    let result = run_sim(drv, scheduled, config, progress);
     if config.vcd.is_some() {
         drv.finish_vcd().map_err(sim)?;
     }
+    result
+}
+
+/// Co-simulates a scheduled source on any simulator of the PE (fresh, or after earlier sources
+/// as in [`run_on`]), without a VCD (`config.vcd` and `config.engine` are not read).
+pub fn run_sim<S: PeSim>(
+    sim_pe: &mut S,
+    scheduled: &Scheduled,
+    config: &CosimConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<Cosim, CosimError> {
+    if config.tc == 0 {
+        return Err(CosimError::Config("--tc must be at least 1 cycle per patch, got 0".into()));
+    }
+    let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
+    let (want, model) = pe::model(&setup, &patches, &cmds);
+    let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;
+    let cache = CacheConfig { lines: config.cache };
+    cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
+    let (hits, hardware) = pe::run(sim_pe, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
     if let Some(r) = (0..hits.len()).find(|&r| hits[r] != want[r]) {
         return Err(CosimError::Mismatch(format!(
             "ray {r}: PE {:?}, model {:?} ({} rays differ)",

@@ -24,6 +24,7 @@
 //! beside the speedup the paper's Eqs. 10–11 predict ([`cycles`]: `cycles.csv` and the
 //! `cycles_*.svg` plots).
 
+use crate::cosim::Engine;
 use crate::counters::Counters;
 use crate::grid::GridParams;
 use crate::rays::{RaySet, MAX_RAYS};
@@ -85,6 +86,8 @@ pub struct FigureOptions {
     pub tcs: Vec<u32>,
     /// Lines of the PE's patch cache in the runs with the cache (a power of two up to 4096).
     pub cache_lines: u32,
+    /// The simulator of the co-simulations.
+    pub engine: Engine,
 }
 
 impl FigureOptions {
@@ -980,6 +983,7 @@ mod tests {
             shells: ShellParams::default(),
             progress: false,
             cosim_sources: 0,
+            engine: Engine::RustHdl,
             tcs: vec![1, 16],
             cache_lines: 1024,
         }

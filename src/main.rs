@@ -4,7 +4,7 @@ use anyhow::{bail, Context, Result};
 use clap::{ArgGroup, Args, Parser, Subcommand};
 use shelling::agreement;
 use shelling::arith::Arith;
-use shelling::cosim::{self, CosimConfig, VcdWindow};
+use shelling::cosim::{self, CosimConfig, Engine, VcdWindow};
 use shelling::counters::Counters;
 use shelling::figures::{self, FigureOptions};
 use shelling::geom::Vec2;
@@ -211,6 +211,10 @@ struct CosimArgs {
     /// Print the trace JSON (the PE's hits) with the hardware counters.
     #[arg(long)]
     json: bool,
+    /// The PE's simulator: rust-hdl's (VCD windows) or the exported Verilog compiled by
+    /// Verilator (built once and cached; tens of times faster, no VCD).
+    #[arg(long, value_enum, default_value_t = Engine::RustHdl, conflicts_with = "vcd")]
+    engine: Engine,
     #[command(flatten)]
     tune: TuneArgs,
 }
@@ -295,6 +299,10 @@ struct FiguresArgs {
     /// Lines of the patch cache in the co-simulations with the cache (a power of two up to 4096).
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     cache_lines: u32,
+    /// The PE's simulator for the co-simulations: rust-hdl's, or the exported Verilog compiled
+    /// by Verilator (built once and cached; tens of times faster).
+    #[arg(long, value_enum, default_value_t = Engine::RustHdl)]
+    engine: Engine,
     #[command(flatten)]
     tune: TuneArgs,
 }
@@ -400,6 +408,7 @@ fn run(cli: Cli) -> Result<()> {
                 cosim_sources: a.cosim_sources,
                 tcs: a.tcs,
                 cache_lines: a.cache_lines,
+                engine: a.engine,
             };
             let report = figures::run(&opts)?;
             println!("{report}");
@@ -450,7 +459,7 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     let scheduled = prepared.schedule(a.method, &bundle, &params)?;
     let vcd =
         a.vcd.map(|path| VcdWindow { path, from: a.vcd_from, to: a.vcd_to.unwrap_or(a.vcd_from + 2000) });
-    let config = CosimConfig { tc: a.tc, cache: a.cache, vcd };
+    let config = CosimConfig { tc: a.tc, cache: a.cache, vcd, engine: a.engine };
     let bar = indicatif::ProgressBar::new(scheduled.stream.items.len() as u64);
     if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} commands {elapsed}") {
         bar.set_style(style);
@@ -560,7 +569,11 @@ fn demo(a: DemoArgs) -> Result<()> {
         let scheduled = prepared.schedule(method, &bundle, &params)?;
         let vcd =
             (method == Method::Stochastic).then(|| VcdWindow { path: a.vcd.clone(), from: 1000, to: 1600 });
-        let run = cosim::run(&scheduled, &CosimConfig { tc: a.tc, cache, vcd }, |_, _| {})?;
+        let run = cosim::run(
+            &scheduled,
+            &CosimConfig { tc: a.tc, cache, vcd, ..CosimConfig::default() },
+            |_, _| {},
+        )?;
         let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &oracle, &scheduled.trace);
         if rung2.beyond_bound().next().is_some() {
             bail!("{method}: the PE's hits differ from the golden model beyond the documented bound");

@@ -28,7 +28,12 @@ fn the_pe_returns_the_schedulers_hits_for_every_technique_and_length() {
             let scheduled = prepared.schedule(m, &bundle, &params).expect("fits");
             let run = cosim::run(
                 &scheduled,
-                &CosimConfig { tc, cache: if i % 3 == 2 { Some(1024) } else { None }, vcd: None },
+                &CosimConfig {
+                    tc,
+                    cache: if i % 3 == 2 { Some(1024) } else { None },
+                    vcd: None,
+                    ..CosimConfig::default()
+                },
                 |_, _| {},
             )
             .unwrap_or_else(|e| panic!("{what}: {e}"));
@@ -69,7 +74,9 @@ fn the_waveform_of_a_whole_source_keeps_the_stream_protocol() {
         let scheduled = prepared.schedule(m, &bundle, &ShellParams::default()).expect("fits");
         let path = dir.join(format!("{m}.vcd"));
         let vcd = Some(VcdWindow { path: path.clone(), from: 0, to: u64::MAX });
-        let run = cosim::run(&scheduled, &CosimConfig { tc, cache, vcd }, |_, _| {}).expect("co-simulates");
+        let run =
+            cosim::run(&scheduled, &CosimConfig { tc, cache, vcd, ..CosimConfig::default() }, |_, _| {})
+                .expect("co-simulates");
         let report = check_protocol(&path).unwrap_or_else(|e| panic!("{m}: {e}"));
         assert_eq!(report.ids.len() as u64, run.hardware.patch_loads, "{m}");
         assert!(
@@ -95,7 +102,8 @@ fn the_waveform_of_a_whole_source_keeps_the_stream_protocol() {
     let scheduled = prepared.schedule(Method::Stochastic, &bundle, &ShellParams::default()).expect("fits");
     let path = dir.join("window.vcd");
     let vcd = Some(VcdWindow { path: path.clone(), from: 1500, to: 1700 });
-    cosim::run(&scheduled, &CosimConfig { tc: 4, cache: None, vcd }, |_, _| {}).expect("co-simulates");
+    cosim::run(&scheduled, &CosimConfig { tc: 4, cache: None, vcd, ..CosimConfig::default() }, |_, _| {})
+        .expect("co-simulates");
     let w = Waves::read(&path, &["uut.busy", "uut.clock"]).expect("readable");
     assert_eq!((w.first_cycle, w.cycles()), (1500, 200));
     assert!(check_protocol(&path).is_err(), "a window is not a whole run");

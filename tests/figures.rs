@@ -2,6 +2,7 @@
 //! source, T_c 1 and 16, without and with the patch cache. The CSV has a row per technique and
 //! setting, and its values obey what the hardware guarantees.
 
+use shelling::cosim::Engine;
 use shelling::figures::cycles::{self, CSV_HEADER, SVGS};
 use shelling::figures::{self, FigureOptions, METHODS};
 use shelling::grid::GridParams;
@@ -33,6 +34,7 @@ fn cycle_figures_on_a_tiny_sample() {
         cosim_sources: 1,
         tcs: vec![1, 16],
         cache_lines: 1024,
+        engine: Engine::RustHdl,
     };
     let report = figures::run(&opts).expect("figures with the co-simulation");
     assert_eq!(report.cosim_runs, 3 * 2 * 2);
@@ -131,6 +133,7 @@ fn cycle_figures_can_be_skipped_and_reject_bad_options() {
         cosim_sources: 0,
         tcs: vec![1, 16],
         cache_lines: 1024,
+        engine: Engine::RustHdl,
     };
     let report = figures::run(&base).expect("figures without the co-simulation");
     assert!(report.cycles.is_empty() && report.cosim_runs == 0);

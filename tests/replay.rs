@@ -50,7 +50,7 @@ fn vectors() -> &'static Recording {
             for m in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
                 let scheduled = prepared.schedule(m, &bundle, &params).expect("fits");
                 for cache in [None, Some(CACHE_LINES)] {
-                    let config = CosimConfig { tc: TC, cache, vcd: None };
+                    let config = CosimConfig { tc: TC, cache, ..CosimConfig::default() };
                     let from = drv.cycles();
                     let run = cosim::run_on(&mut drv, &scheduled, &config, |_, _| {}).unwrap_or_else(|e| {
                         panic!("length {length} seed {seed} source {k} {m} cache {cache:?}: {e}")

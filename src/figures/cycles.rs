@@ -382,7 +382,7 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
                 let j = &jobs[order[n]];
                 let sched = &schedules[j.source][j.method];
                 let mut reported = 0u64;
-                let config = CosimConfig { tc: j.tc, cache: j.cache, vcd: None };
+                let config = CosimConfig { tc: j.tc, cache: j.cache, vcd: None, engine: opts.engine };
                 let run = cosim::run(sched, &config, |d, t| {
                     let now = j.cost * d as u64 / t.max(1) as u64;
                     if now > reported {

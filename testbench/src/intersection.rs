@@ -142,15 +142,42 @@ macro_rules! impl_ray_ports {
 
 impl_ray_ports!(IntersectionUnit, ProcessingElement);
 
+/// A simulator of a block with [`RayPorts`], one cycle at a time: a [`Driver`] of the block, or
+/// a whole PE under any simulator ([`crate::pe_sim::PeRays`]).
+pub trait RayBench {
+    /// One cycle with a direction write and a readout request (or none of either).
+    fn cycle_rays(&mut self, write: Option<(usize, [i32; 2])>, read: Option<usize>) -> Result<()>;
+    /// The ray read out in the previous cycle.
+    fn readout(&self) -> Option<Nearest>;
+    fn is_busy(&self) -> bool;
+}
+
+impl<B: RayPorts> RayBench for Driver<B> {
+    fn cycle_rays(&mut self, write: Option<(usize, [i32; 2])>, read: Option<usize>) -> Result<()> {
+        self.cycle(|u| {
+            u.write_direction(write);
+            u.request_readout(read);
+        })
+    }
+
+    fn readout(&self) -> Option<Nearest> {
+        self.uut().readout()
+    }
+
+    fn is_busy(&self) -> bool {
+        self.uut().is_busy()
+    }
+}
+
 /// Writes the bundle's ray directions (one per cycle).
-pub fn load_directions<B: RayPorts>(drv: &mut Driver<B>, dirs: &[[i32; 2]]) -> Result<()> {
+pub fn load_directions(drv: &mut impl RayBench, dirs: &[[i32; 2]]) -> Result<()> {
     if dirs.len() > MAX_BUNDLE {
         return Err(Error::new(format!("a bundle holds at most {MAX_BUNDLE} rays, got {}", dirs.len())));
     }
     for (i, d) in dirs.iter().enumerate() {
-        drv.cycle(|u| u.write_direction(Some((i, *d))))?;
+        drv.cycle_rays(Some((i, *d)), None)?;
     }
-    drv.cycle(|u| u.write_direction(None))
+    drv.cycle_rays(None, None)
 }
 
 /// Streams the jobs (random idle cycles if `pacing.idle`), then waits until the unit is idle.
@@ -203,16 +230,16 @@ pub fn stream_jobs(
 }
 
 /// Reads and clears the nearest hits of rays `0..rays`, one per cycle.
-pub fn read_hits<B: RayPorts>(drv: &mut Driver<B>, rays: usize) -> Result<Vec<Option<Nearest>>> {
+pub fn read_hits(drv: &mut impl RayBench, rays: usize) -> Result<Vec<Option<Nearest>>> {
     let mut out = Vec::with_capacity(rays);
     for i in 0..rays {
-        if drv.uut().is_busy() {
+        if drv.is_busy() {
             return Err(Error::new("readout while the unit is busy"));
         }
-        drv.cycle(|u| u.request_readout(Some(i)))?;
-        out.push(drv.uut().readout());
+        drv.cycle_rays(None, Some(i))?;
+        out.push(drv.readout());
     }
-    drv.cycle(|u| u.request_readout(None))?;
+    drv.cycle_rays(None, None)?;
     Ok(out)
 }
 

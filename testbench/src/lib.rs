@@ -20,6 +20,10 @@
 //! - [`pe`]: the host's side of a whole source on the processing element (directions, commands
 //!   with sector drains, host memory, readout), the PE's bit-true model and the stream-protocol
 //!   check on a VCD ([`pe::check_protocol`]).
+//! - [`pe_sim`]: the PE's ports as plain values and [`PeSim`], the seam between the host loop
+//!   and the simulator under it.
+//! - [`verilated`]: [`verilated::VerilatedPe`], the PE's exported Verilog compiled by Verilator
+//!   and loaded as a shared library: the same cycles as rust-hdl's simulation, many times faster.
 //! - [`waves`]: reading a VCD back (signals sampled per cycle) and the signals of a `.gtkw`.
 //! - [`replay`]: rung 4 of the equivalence ladder: the ports recorded during a rust-hdl
 //!   run are replayed against the block's exported Verilog under Icarus Verilog (or
@@ -85,15 +89,18 @@ pub mod export;
 pub mod intersection;
 pub mod memory;
 pub mod pe;
+pub mod pe_sim;
 pub mod replay;
 pub mod scoreboard;
 pub mod stream;
 pub mod vcd;
+pub mod verilated;
 pub mod waves;
 
 pub use driver::{Clocked, Driver};
 pub use error::{Error, Result};
 pub use memory::HostMemory;
+pub use pe_sim::PeSim;
 pub use replay::{Design, Port, PortDir, Recording, ReplayReport, Simulator};
 pub use scoreboard::Scoreboard;
 pub use stream::{Monitor, Pacing, Received, Source};

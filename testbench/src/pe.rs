@@ -7,10 +7,9 @@
 
 use crate::intersection::{load_directions, read_hits};
 use crate::memory::HostMemory;
-use crate::{impl_clocked, Driver, Error, Result};
-use rust_hdl::prelude::*;
+use crate::pe_sim::{PeInputs, PeOutputs, PeRays, PeSim};
+use crate::{impl_clocked, Error, Result};
 use shelling_hdl::cache::LINES;
-use shelling_hdl::formats::to_bits;
 use shelling_hdl::intersection::model::{replaces, test, Nearest};
 use shelling_hdl::intersection::RAY_BITS;
 use shelling_hdl::pe::ProcessingElement;
@@ -166,10 +165,6 @@ pub struct PeCounters {
     pub readout_cycles: u64,
 }
 
-fn field<const N: usize>(v: i64) -> Bits<N> {
-    Bits::from(to_bits(v, N as u32))
-}
-
 /// The patch cache's setting for a run: off, or on with `lines` lines (a power of two from 1 to
 /// [`shelling_hdl::cache::LINES`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -192,8 +187,10 @@ impl CacheConfig {
 /// Runs a whole source on a PE fresh from power-up (or after a previous run's readout):
 /// directions, commands, readout. `progress(done, total)` is called now and then with the
 /// commands sent so far. A run that stops making progress is an error naming where it stopped.
-pub fn run(
-    drv: &mut Driver<ProcessingElement>,
+/// `sim` is any simulator of the PE: rust-hdl's ([`crate::Driver`]) or the compiled one
+/// ([`crate::verilated::VerilatedPe`]); both give the same cycles.
+pub fn run<S: PeSim>(
+    sim: &mut S,
     memory: &mut HostMemory,
     setup: &PeSetup,
     cache: CacheConfig,
@@ -206,83 +203,78 @@ pub fn run(
     let n = setup.dirs.len();
 
     // Directions, source and the whole bundle as the first sector.
-    let start = drv.cycles();
+    let start = sim.cycles();
     let (o, nm, d0, d1) = (setup.origin, setup.normal, setup.dirs[0], setup.dirs[n - 1]);
-    drv.drive(|u| {
-        u.origin_x.next = field(o[0] as i64);
-        u.origin_y.next = field(o[1] as i64);
-        u.normal_x.next = field(nm[0] as i64);
-        u.normal_y.next = field(nm[1] as i64);
-        set_sector(u, d0, d1);
-        u.cfg_cache_enable.next = cache.lines.is_some();
-        u.cfg_cache_mask.next = (cache.lines.unwrap_or(1) as u64 - 1).into();
+    sim.drive(|i| {
+        [i.origin_x, i.origin_y] = o;
+        [i.normal_x, i.normal_y] = nm;
+        set_sector(i, d0, d1);
+        i.cfg_cache_enable = cache.lines.is_some();
+        i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
     })?;
-    load_directions(drv, &setup.dirs)?;
-    k.setup_cycles = drv.cycles() - start;
+    load_directions(&mut PeRays(sim), &setup.dirs)?;
+    k.setup_cycles = sim.cycles() - start;
 
     // Commands. The memory's answer to a request is presented from the next cycle on.
-    let start = drv.cycles();
+    let start = sim.cycles();
     // The PE's counters wrap and run from power-up: a run counts what they add.
-    let counters = |u: &ProcessingElement| {
-        [&u.loads, &u.tests, &u.cache_hits, &u.passed, &u.backward, &u.back_facing, &u.outside, &u.near]
-            .map(|c| c.val().to_u64())
+    let counters = |o: PeOutputs| {
+        [o.loads, o.tests, o.cache_hits, o.passed, o.backward, o.back_facing, o.outside, o.near]
     };
-    let base = counters(drv.uut());
+    let base = counters(sim.outputs());
     let mut response: Option<[i32; 4]> = None;
     let mut next = 0usize;
     let mut last_progress = 0u64;
-    let mut idle_since = drv.cycles();
+    let mut idle_since = sim.cycles();
     let mut tests_before = base[1];
     loop {
         let cmd = commands.get(next).copied();
         let draining = matches!(cmd, Some(Command::Sector { .. }));
-        drv.drive(|u| {
-            u.mem_valid.next = response.is_some();
+        let busy_before = sim.outputs().busy;
+        sim.drive(|i| {
+            i.mem_valid = response.is_some();
             if let Some(m) = response {
-                u.mem_ax.next = field(m[0] as i64);
-                u.mem_ay.next = field(m[1] as i64);
-                u.mem_bx.next = field(m[2] as i64);
-                u.mem_by.next = field(m[3] as i64);
+                [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = m;
             }
-            u.cmd_valid.next = false;
+            i.cmd_valid = false;
             match cmd {
-                Some(Command::Sector { first, last }) if !u.busy.val() => set_sector(u, first, last),
+                Some(Command::Sector { first, last }) if !busy_before => set_sector(i, first, last),
                 Some(Command::Job { id, first, count }) => {
-                    u.cmd_valid.next = true;
-                    u.cmd_retire.next = false;
-                    u.cmd_id.next = (id as u64).into();
-                    u.cmd_first.next = (first as u64).into();
-                    u.cmd_count.next = (count as u64).into();
+                    i.cmd_valid = true;
+                    i.cmd_retire = false;
+                    i.cmd_id = id;
+                    i.cmd_first = first;
+                    i.cmd_count = count;
                 }
                 Some(Command::Retire { first, count }) => {
-                    u.cmd_valid.next = true;
-                    u.cmd_retire.next = true;
-                    u.cmd_first.next = (first as u64).into();
-                    u.cmd_count.next = (count as u64).into();
+                    i.cmd_valid = true;
+                    i.cmd_retire = true;
+                    i.cmd_first = first;
+                    i.cmd_count = count;
                 }
                 _ => {}
             }
         })?;
-        let u = drv.uut();
-        let busy = u.busy.val();
+        let out = sim.outputs();
+        let busy = out.busy;
         match cmd {
             Some(Command::Sector { .. }) if !busy => next += 1,
-            Some(Command::Job { .. } | Command::Retire { .. }) if u.cmd_ready.val() => next += 1,
+            Some(Command::Job { .. } | Command::Retire { .. }) if out.cmd_ready => next += 1,
             _ => {}
         }
-        let request = u.mem_req.val().then(|| u.mem_addr.val().to_u16());
+        let request = out.mem_req.then_some(out.mem_addr);
         response = memory.cycle(request)?;
-        drv.tick()?;
-        let tests = drv.uut().tests.val().to_u64();
-        let tested = tests != tests_before;
-        tests_before = tests;
+        sim.tick()?;
+        let out = sim.outputs();
+        let tested = out.tests != tests_before;
+        tests_before = out.tests;
         k.intersection_busy_cycles += tested as u64;
         if !tested && (busy || next < commands.len()) {
             k.stall_cycles += 1;
             k.drain_cycles += draining as u64;
         }
         if tested || next as u64 != last_progress {
-            idle_since = drv.cycles();
+            idle_since = sim.cycles();
         }
         if next as u64 != last_progress {
             last_progress = next as u64;
@@ -290,25 +282,24 @@ pub fn run(
                 progress(next, commands.len());
             }
         }
-        if next == commands.len() && !drv.uut().busy.val() && response.is_none() && memory.pending() == 0 {
+        if next == commands.len() && !out.busy && response.is_none() && memory.pending() == 0 {
             break;
         }
-        if drv.cycles() - idle_since > 64 * (memory.tc() as u64 + 64) {
+        if sim.cycles() - idle_since > 64 * (memory.tc() as u64 + 64) {
             return Err(Error::new(format!(
                 "no progress for {} cycles at command {next} of {} ({:?})",
-                drv.cycles() - idle_since,
+                sim.cycles() - idle_since,
                 commands.len(),
                 commands.get(next)
             )));
         }
     }
     progress(commands.len(), commands.len());
-    k.cycles = drv.cycles() - start;
+    k.cycles = sim.cycles() - start;
     k.pipeline_efficiency =
         if k.cycles > 0 { k.intersection_busy_cycles as f64 / k.cycles as f64 } else { 0.0 };
-    let u = drv.uut();
     let delta =
-        counters(u).iter().zip(base).map(|(c, b)| c.wrapping_sub(b) & 0xFFFF_FFFF).collect::<Vec<_>>();
+        counters(sim.outputs()).iter().zip(base).map(|(c, b)| c.wrapping_sub(b) as u64).collect::<Vec<_>>();
     k.patch_loads = delta[0];
     k.memory_loads = memory.loads();
     k.cache_hits = delta[2];
@@ -320,41 +311,39 @@ pub fn run(
     k.near = delta[7];
 
     // Readout (read and clear).
-    let start = drv.cycles();
-    let hits = read_hits(drv, n)?;
-    k.readout_cycles = drv.cycles() - start;
+    let start = sim.cycles();
+    let hits = read_hits(&mut PeRays(sim), n)?;
+    k.readout_cycles = sim.cycles() - start;
     Ok((hits, k))
 }
 
 /// Invalidates the PE's patch cache, as the host must before the first run on new host memory
 /// contents (a new scene): waits until the PE is idle, raises `cfg_cache_flush` for one cycle and
 /// waits out the flush ([`LINES`] cycles, `busy` high). Returns the cycles it took.
-pub fn flush_cache(drv: &mut Driver<ProcessingElement>) -> Result<u64> {
-    let start = drv.cycles();
+pub fn flush_cache(sim: &mut impl PeSim) -> Result<u64> {
+    let start = sim.cycles();
     let limit = start + 4 * LINES as u64;
     let mut flushed = false;
     loop {
-        let idle = !drv.uut().busy.val();
+        let idle = !sim.outputs().busy;
         if idle && flushed {
-            return Ok(drv.cycles() - start);
+            return Ok(sim.cycles() - start);
         }
-        if drv.cycles() > limit {
+        if sim.cycles() > limit {
             return Err(Error::new(format!(
                 "the cache flush did not end within {} cycles (busy since cycle {start})",
                 limit - start
             )));
         }
         let raise = idle && !flushed;
-        drv.cycle(|u| u.cfg_cache_flush.next = raise)?;
+        sim.cycle(|i| i.cfg_cache_flush = raise)?;
         flushed |= raise;
     }
 }
 
-fn set_sector(u: &mut ProcessingElement, first: [i32; 2], last: [i32; 2]) {
-    u.first_x.next = field(first[0] as i64);
-    u.first_y.next = field(first[1] as i64);
-    u.last_x.next = field(last[0] as i64);
-    u.last_y.next = field(last[1] as i64);
+fn set_sector(i: &mut PeInputs, first: [i32; 2], last: [i32; 2]) {
+    [i.first_x, i.first_y] = first;
+    [i.last_x, i.last_y] = last;
 }
 
 /// The PE's signals [`check_protocol`] reads from a VCD.

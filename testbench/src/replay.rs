@@ -686,7 +686,7 @@ impl Recording {
 
 /// Runs `program` with `args` in `dir`; a missing program or a non-zero exit is an error that
 /// quotes the program's output.
-fn run_tool(dir: &Path, program: &str, args: &[&str], install: &str) -> Result<Output> {
+pub(crate) fn run_tool(dir: &Path, program: &str, args: &[&str], install: &str) -> Result<Output> {
     // A program given as a path is resolved against `dir`, not against our working directory.
     let output = Command::new(if program.contains('/') { dir.join(program) } else { program.into() })
         .args(args)

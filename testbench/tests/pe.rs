@@ -1,7 +1,8 @@
 //! The processing element, rungs 3 and 4: random command streams (sectors, jobs, retirements)
 //! against the bit-true model under several host memory latencies, the stream-order semantics
-//! of retirements, and its exported Verilog replayed under Icarus Verilog. Every failure names
-//! its seed.
+//! of retirements, its exported Verilog replayed under Icarus Verilog, and the compiled PE
+//! (Verilator) against rust-hdl's simulation, port by port and source by source. Every failure
+//! names its seed.
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -10,7 +11,9 @@ use shelling_hdl::formats::{direction, Quantizer};
 use shelling_hdl::pe::ProcessingElement;
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
-use shelling_testbench::{Driver, Error, Result, Scoreboard, Simulator};
+use shelling_testbench::pe_sim::PeInputs;
+use shelling_testbench::verilated::VerilatedPe;
+use shelling_testbench::{Driver, Error, PeSim, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
 
 /// A source with `rays` rays over its half-circle and `patches` random patches around it.
@@ -223,5 +226,98 @@ fn a_cache_flush_forgets_the_last_scene() -> Result<()> {
     ids.dedup();
     assert!(k.memory_loads >= ids.len() as u64, "seed {seed:#x}: {k:?}");
     assert_eq!(k.memory_loads + k.cache_hits, counts.loads, "seed {seed:#x}");
+    Ok(())
+}
+
+/// Both simulators of the PE under the same random inputs, every input changing at random
+/// (protocol or not) for 20k cycles, the cache flushed now and then: every output must agree on
+/// every cycle, before and after each rising edge.
+#[test]
+fn the_compiled_pe_agrees_with_rust_hdl_port_by_port() -> Result<()> {
+    let seed = 0xc0_3e11u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut rtl = Driver::new(ProcessingElement::default())?;
+    let mut fast = VerilatedPe::new()?;
+    let mut busy_cycles = 0;
+    for cycle in 0..20_000u64 {
+        let mut i = PeInputs::default();
+        let (w, d) =
+            (|rng: &mut ChaCha8Rng, bits: u32| rng.random_range(0..1u64 << bits), rng.random_range(0..4));
+        // Long runs of one kind of traffic, so the pipelines fill.
+        let phase = (cycle / 1000) % 4;
+        i.dir_we = phase == 0 && d != 0;
+        i.dir_addr = w(&mut rng, 10) as u16;
+        [i.dir_x, i.dir_y] = [rng.random_range(-65536..65536), rng.random_range(-65536..65536)];
+        [i.origin_x, i.origin_y] = [rng.random_range(-65536..65536), rng.random_range(-65536..65536)];
+        for v in
+            [&mut i.normal_x, &mut i.normal_y, &mut i.first_x, &mut i.first_y, &mut i.last_x, &mut i.last_y]
+        {
+            *v = rng.random_range(-131072..131072);
+        }
+        i.cmd_valid = phase != 0 && d != 0;
+        i.cmd_retire = d == 3;
+        i.cmd_id = w(&mut rng, 16) as u16;
+        i.cmd_first = w(&mut rng, 10) as u16;
+        i.cmd_count = w(&mut rng, 6) as u16;
+        i.cfg_cache_enable = phase >= 2;
+        i.cfg_cache_mask = (1u16 << rng.random_range(0..13)) - 1;
+        i.cfg_cache_flush = cycle % 5000 == 4999;
+        i.mem_valid = rng.random_range(0..3) == 0;
+        for v in [&mut i.mem_ax, &mut i.mem_ay, &mut i.mem_bx, &mut i.mem_by] {
+            *v = rng.random_range(-65536..65536);
+        }
+        i.res_re = phase == 3 && d == 0;
+        i.res_addr = w(&mut rng, 10) as u16;
+        for (edge, f) in [("before", false), ("after", true)] {
+            if f {
+                rtl.tick()?;
+                fast.tick()?;
+            } else {
+                PeSim::drive(&mut rtl, |x| *x = i)?;
+                fast.drive(|x| *x = i)?;
+            }
+            let (a, b) = (PeSim::outputs(&rtl), fast.outputs());
+            if a != b {
+                return Err(Error::new(format!(
+                    "seed {seed:#x}: cycle {cycle}, {edge} the rising edge: rust-hdl {a:?}, compiled {b:?}; inputs {i:?}"
+                )));
+            }
+        }
+        busy_cycles += PeSim::outputs(&rtl).busy as u64;
+    }
+    let o = fast.outputs();
+    println!("seed {seed:#x}: {o:?}, busy {busy_cycles} cycles");
+    assert!(o.tests > 200 && o.loads > 1000 && o.passed > 50 && busy_cycles > 5000, "seed {seed:#x}: {o:?}");
+    Ok(())
+}
+
+/// Whole sources through the host loop on both simulators: the same hits and the same
+/// counters, cycles included, with the cache off and on.
+#[test]
+fn the_compiled_pe_runs_whole_sources_cycle_for_cycle() -> Result<()> {
+    let mut fast = VerilatedPe::new()?;
+    let mut tests = 0;
+    for (k, (tc, lines)) in [(1u32, None), (4, Some(64)), (16, None), (3, Some(4096))].into_iter().enumerate()
+    {
+        let seed = 0xfa57_00 + k as u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let (setup, mem) = scene(&mut rng, 256, 300);
+        let cmds = commands(&mut rng, &setup, 300, 96);
+        let cache = CacheConfig { lines };
+        let (want, _) = model(&setup, &mem, &cmds);
+        let mut rtl = Driver::new(ProcessingElement::default())?;
+        let a = run(&mut rtl, &mut HostMemory::new(mem.clone(), tc)?, &setup, cache, &cmds, |_, _| {})?;
+        // The compiled PE runs source after source without a power-up: flush between.
+        flush_cache(&mut fast)?;
+        let b = run(&mut fast, &mut HostMemory::new(mem, tc)?, &setup, cache, &cmds, |_, _| {})?;
+        assert_eq!(a.0, want, "seed {seed:#x}: rust-hdl against the model");
+        assert_eq!(b.0, want, "seed {seed:#x}: compiled against the model");
+        assert_eq!(
+            a.1, b.1,
+            "seed {seed:#x}: T_c {tc}, {cache:?}: rust-hdl's counters, then the compiled PE's"
+        );
+        tests += a.1.tests;
+    }
+    assert!(tests > 4000, "only {tests} ray-patch tests");
     Ok(())
 }
