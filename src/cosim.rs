@@ -22,9 +22,12 @@ use shelling_testbench::verilated::VerilatedPe;
 use shelling_testbench::{Driver, PeSim};
 use std::path::PathBuf;
 
-/// The simulator the processing element runs on.
+/// The simulator the processing element runs on. Both give the same cycles, hits and counters.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, clap::ValueEnum)]
 pub enum Engine {
+    /// Verilator where `verilator` is on the `PATH` and no VCD is asked for, rust-hdl otherwise
+    /// ([`Engine::resolve`]).
+    Auto,
     /// rust-hdl's own simulation of the block: VCD windows, about 40k cycles a second.
     #[default]
     RustHdl,
@@ -32,6 +35,28 @@ pub enum Engine {
     /// and cached, about 15 s; needs `verilator` and a C++ compiler): tens of times faster, no
     /// VCD ([`shelling_testbench::verilated`]).
     Verilator,
+}
+
+impl Engine {
+    /// The engine a run uses: [`Engine::Auto`] becomes Verilator where
+    /// [`verilated::available`](shelling_testbench::verilated::available) and `vcd` is false,
+    /// rust-hdl otherwise; the others stay as they are.
+    pub fn resolve(self, vcd: bool) -> Engine {
+        match self {
+            Engine::Auto if !vcd && shelling_testbench::verilated::available() => Engine::Verilator,
+            Engine::Auto => Engine::RustHdl,
+            e => e,
+        }
+    }
+
+    /// The engine's name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Engine::Auto => "auto",
+            Engine::RustHdl => "rust-hdl",
+            Engine::Verilator => "verilator",
+        }
+    }
 }
 
 /// How the hardware is set up for a co-simulation.
@@ -96,8 +121,8 @@ pub fn run(
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
-    match config.engine {
-        Engine::RustHdl => {
+    match config.engine.resolve(config.vcd.is_some()) {
+        Engine::RustHdl | Engine::Auto => {
             let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
             run_on(&mut drv, scheduled, config, progress)
         }
@@ -107,7 +132,9 @@ pub fn run(
                     "a VCD needs the rust-hdl engine: the compiled PE writes no waveforms".into(),
                 ));
             }
-            let mut pe = VerilatedPe::new().map_err(sim)?;
+            let mut pe = VerilatedPe::new().map_err(|e| {
+                CosimError::Sim(format!("{}; the rust-hdl engine needs no Verilator", e.message()))
+            })?;
             run_sim(&mut pe, scheduled, config, progress)
         }
     }

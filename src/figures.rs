@@ -253,10 +253,11 @@ impl fmt::Display for FigureReport {
         if !self.cycles.is_empty() {
             writeln!(
                 f,
-                "co-simulation: {} sources per length, {} runs in {:.1} s; per-source means:",
+                "co-simulation: {} sources per length, {} runs in {:.1} s ({} simulation); per-source means:",
                 o.cosim_sources,
                 self.cosim_runs,
-                self.cosim_elapsed.as_secs_f64()
+                self.cosim_elapsed.as_secs_f64(),
+                o.engine.name()
             )?;
             cycles::write_table(f, &self.cycles)?;
         }

@@ -212,8 +212,9 @@ struct CosimArgs {
     #[arg(long)]
     json: bool,
     /// The PE's simulator: rust-hdl's (VCD windows) or the exported Verilog compiled by
-    /// Verilator (built once and cached; tens of times faster, no VCD).
-    #[arg(long, value_enum, default_value_t = Engine::RustHdl, conflicts_with = "vcd")]
+    /// Verilator (built once and cached; tens of times faster, no VCD); auto takes Verilator
+    /// where it is installed and no VCD is asked for. All give the same cycles.
+    #[arg(long, value_enum, default_value_t = Engine::Auto)]
     engine: Engine,
     #[command(flatten)]
     tune: TuneArgs,
@@ -300,8 +301,9 @@ struct FiguresArgs {
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     cache_lines: u32,
     /// The PE's simulator for the co-simulations: rust-hdl's, or the exported Verilog compiled
-    /// by Verilator (built once and cached; tens of times faster).
-    #[arg(long, value_enum, default_value_t = Engine::RustHdl)]
+    /// by Verilator (built once and cached; tens of times faster); auto takes Verilator where it
+    /// is installed. All give the same cycles.
+    #[arg(long, value_enum, default_value_t = Engine::Auto)]
     engine: Engine,
     #[command(flatten)]
     tune: TuneArgs,
@@ -408,7 +410,7 @@ fn run(cli: Cli) -> Result<()> {
                 cosim_sources: a.cosim_sources,
                 tcs: a.tcs,
                 cache_lines: a.cache_lines,
-                engine: a.engine,
+                engine: a.engine.resolve(false),
             };
             let report = figures::run(&opts)?;
             println!("{report}");
@@ -459,7 +461,10 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     let scheduled = prepared.schedule(a.method, &bundle, &params)?;
     let vcd =
         a.vcd.map(|path| VcdWindow { path, from: a.vcd_from, to: a.vcd_to.unwrap_or(a.vcd_from + 2000) });
-    let config = CosimConfig { tc: a.tc, cache: a.cache, vcd, engine: a.engine };
+    if a.engine == Engine::Verilator && vcd.is_some() {
+        bail!("--vcd needs --engine rust-hdl (or auto): the compiled PE writes no waveforms");
+    }
+    let config = CosimConfig { tc: a.tc, cache: a.cache, engine: a.engine.resolve(vcd.is_some()), vcd };
     let bar = indicatif::ProgressBar::new(scheduled.stream.items.len() as u64);
     if let Ok(style) = indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} commands {elapsed}") {
         bar.set_style(style);
@@ -485,10 +490,11 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     }
     let h = &result.hardware;
     println!(
-        "{} rays, {} on the PE (T_c = {}): every hit equals the bit-true model's; {} of {} equal the f64 golden model's, the rest within the documented bound",
+        "{} rays, {} on the PE (T_c = {}, {} simulation): every hit equals the bit-true model's; {} of {} equal the f64 golden model's, the rest within the documented bound",
         bundle.len(),
         a.method,
         a.tc,
+        config.engine.name(),
         rung2.agree,
         rung2.rays
     );

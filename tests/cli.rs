@@ -610,6 +610,8 @@ fn cli_cosim_json_is_the_trace_json_plus_the_hardware() {
             "--tc",
             "8",
             "--json",
+            "--engine",
+            "rust-hdl",
         ];
         args.extend_from_slice(extra);
         let doc = parse_json(&ok(&args), "cosim");
@@ -633,7 +635,8 @@ fn cli_cosim_json_is_the_trace_json_plus_the_hardware() {
             assert!(hw["cycles"].as_u64().unwrap() >= 8 * loads, "{hw:?}");
         }
         // The compiled PE: the same document, cycle counts included.
-        args.extend_from_slice(&["--engine", "verilator"]);
+        let n = args.len();
+        args[n - extra.len() - 1] = "verilator";
         assert_eq!(parse_json(&ok(&args), "cosim, compiled"), doc, "{extra:?}: rust-hdl's, then Verilator's");
     }
     let text = ok(&[
@@ -665,7 +668,7 @@ fn cli_cosim_rejects_bad_options() {
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
     fails(&with(&["--vcd", "x.vcd", "--vcd-from", "10", "--vcd-to", "5"]), &["VCD window", "10..5"]);
-    fails(&with(&["--engine", "verilator", "--vcd", "x.vcd"]), &["--engine", "--vcd"]);
+    fails(&with(&["--engine", "verilator", "--vcd", "x.vcd"]), &["--vcd", "--engine rust-hdl"]);
     fails(&with(&["--engine", "icarus"]), &["icarus", "rust-hdl", "verilator"]);
 }
 

@@ -51,6 +51,11 @@ const TOP: &str = "shelling_pe";
 /// The environment variable that overrides [`cache_dir`].
 pub const CACHE_ENV: &str = "SHELLING_VERILATED_DIR";
 
+/// Whether `verilator` runs here (`verilator --version`): the compiled PE can be tried.
+pub fn available() -> bool {
+    std::process::Command::new("verilator").arg("--version").output().is_ok_and(|o| o.status.success())
+}
+
 /// Where compiled models are kept: `$SHELLING_VERILATED_DIR`, else `shelling-verilated` in
 /// the system's temporary folder.
 pub fn cache_dir() -> PathBuf {
