@@ -290,8 +290,10 @@ struct FiguresArgs {
     #[arg(long)]
     quiet: bool,
     /// Sources per segment length co-simulated on the processing element for the cycle figures
-    /// (of the first seed's scene, spread over its patches); 0 skips them.
-    #[arg(long, default_value_t = 2, allow_negative_numbers = true)]
+    /// (of the first seed's scene, spread over its patches); 0 skips them. The default 20 take
+    /// under a minute on 2 cores with the compiled PE (--engine auto finds Verilator), about
+    /// 50 minutes on rust-hdl's simulation.
+    #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
     cosim_sources: usize,
     /// Host memory load times T_c (cycles per patch) co-simulated, comma separated; each runs
     /// without and with the patch cache.
