@@ -108,3 +108,52 @@ fn the_waveform_of_a_whole_source_keeps_the_stream_protocol() {
     assert_eq!((w.first_cycle, w.cycles()), (1500, 200));
     assert!(check_protocol(&path).is_err(), "a window is not a whole run");
 }
+
+/// The compiled PE (Verilator) over a broader sample than rust-hdl's simulation can afford in a
+/// test: four sources per length, every technique, host memory and cache settings that vary
+/// from run to run (small caches that evict, T_c from 1 to 16). Every hit and counter is checked
+/// against the bit-true model by `cosim::run`, and the hits against the bit-true tracer here.
+#[test]
+fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
+    let params = ShellParams::default();
+    let mut runs = 0;
+    let mut tests = 0;
+    for (i, length) in [4.0, 8.0, 16.0, 32.0, 64.0, 128.0].into_iter().enumerate() {
+        let seed = 70 + i as u64;
+        let scene = scene::generate(1000, length, seed, PAPER_WORLD).expect("scene");
+        let prepared = Prepared::new(scene, GridParams::default());
+        for s in 0..4 {
+            let k = (251 * s + 97 * i + 13) % 1000;
+            let bundle = prepared.patch_bundle(k, RaySet::Angle, 1024).expect("source");
+            for (j, m) in
+                [Method::Conventional, Method::Stochastic, Method::Deterministic].into_iter().enumerate()
+            {
+                let v = i + s + j;
+                let (tc, cache) = ([1, 3, 16][v % 3], [None, Some(16), Some(256), Some(4096)][v % 4]);
+                let what = format!("length {length} seed {seed} source {k} {m} T_c {tc} cache {cache:?}");
+                let scheduled = prepared.schedule(m, &bundle, &params).expect("fits");
+                let config =
+                    CosimConfig { tc, cache, engine: cosim::Engine::Verilator, ..CosimConfig::default() };
+                let run =
+                    cosim::run(&scheduled, &config, |_, _| {}).unwrap_or_else(|e| panic!("{what}: {e}"));
+                let hits: Vec<Option<Hit>> = run
+                    .hits
+                    .iter()
+                    .map(|h| h.map(|n| Hit { t: key_distance(n.key), segment: n.id as u32 }))
+                    .collect();
+                assert_eq!(hits, scheduled.trace.hits, "{what}: the PE against the bit-true tracer");
+                assert_eq!(
+                    run.hardware.patch_loads, scheduled.trace.counters.patches_read_before_screening,
+                    "{what}: loads"
+                );
+                if cache.is_some_and(|n| n >= 256) && m != Method::Conventional {
+                    assert!(run.hardware.cache_hits > 0, "{what}: the cache never hit: {:?}", run.hardware);
+                }
+                runs += 1;
+                tests += run.hardware.tests;
+            }
+        }
+    }
+    println!("{runs} runs, {tests} ray-patch tests on the compiled PE");
+    assert!(runs == 72 && tests > 100_000, "{runs} runs, {tests} tests");
+}
