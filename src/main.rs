@@ -291,8 +291,8 @@ struct FiguresArgs {
     quiet: bool,
     /// Sources per segment length co-simulated on the processing element for the cycle figures
     /// (of the first seed's scene, spread over its patches); 0 skips them. The default 20 take
-    /// under a minute on 2 cores with the compiled PE (--engine auto finds Verilator), about
-    /// 50 minutes on rust-hdl's simulation.
+    /// about 80 s of CPU on the compiled PE (--engine auto finds Verilator), about an hour on
+    /// rust-hdl's simulation.
     #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
     cosim_sources: usize,
     /// Host memory load times T_c (cycles per patch) co-simulated, comma separated; each runs
