@@ -12,6 +12,11 @@ use shelling::scene::{self, PAPER_WORLD};
 use shelling::trace::{Method, ShellParams};
 use shelling_hdl::formats::key_distance;
 
+/// The PE's nearest hits in the tracer's terms (distance from the key, segment from the id).
+fn tracer_hits(run: &cosim::Cosim) -> Vec<Option<Hit>> {
+    run.hits.iter().map(|h| h.map(|n| Hit { t: key_distance(n.key), segment: n.id as u32 })).collect()
+}
+
 #[test]
 fn the_pe_returns_the_schedulers_hits_for_every_technique_and_length() {
     let params = ShellParams::default();
@@ -37,12 +42,7 @@ fn the_pe_returns_the_schedulers_hits_for_every_technique_and_length() {
                 |_, _| {},
             )
             .unwrap_or_else(|e| panic!("{what}: {e}"));
-            let hits: Vec<Option<Hit>> = run
-                .hits
-                .iter()
-                .map(|h| h.map(|n| Hit { t: key_distance(n.key), segment: n.id as u32 }))
-                .collect();
-            assert_eq!(hits, scheduled.trace.hits, "{what}: the PE against the bit-true tracer");
+            assert_eq!(tracer_hits(&run), scheduled.trace.hits, "{what}: the PE against the bit-true tracer");
             let c = &scheduled.trace.counters;
             let h = &run.hardware;
             assert_eq!(h.patch_loads, c.patches_read_before_screening, "{what}: loads");
@@ -136,12 +136,11 @@ fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
                     CosimConfig { tc, cache, engine: cosim::Engine::Verilator, ..CosimConfig::default() };
                 let run =
                     cosim::run(&scheduled, &config, |_, _| {}).unwrap_or_else(|e| panic!("{what}: {e}"));
-                let hits: Vec<Option<Hit>> = run
-                    .hits
-                    .iter()
-                    .map(|h| h.map(|n| Hit { t: key_distance(n.key), segment: n.id as u32 }))
-                    .collect();
-                assert_eq!(hits, scheduled.trace.hits, "{what}: the PE against the bit-true tracer");
+                assert_eq!(
+                    tracer_hits(&run),
+                    scheduled.trace.hits,
+                    "{what}: the PE against the bit-true tracer"
+                );
                 assert_eq!(
                     run.hardware.patch_loads, scheduled.trace.counters.patches_read_before_screening,
                     "{what}: loads"

@@ -278,7 +278,7 @@ pub fn run<S: PeSim>(
         }
         if next as u64 != last_progress {
             last_progress = next as u64;
-            if next % 256 == 0 {
+            if next.is_multiple_of(256) {
                 progress(next, commands.len());
             }
         }
