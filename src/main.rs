@@ -291,7 +291,7 @@ struct FiguresArgs {
     quiet: bool,
     /// Sources per segment length co-simulated on the processing element for the cycle figures
     /// (of the first seed's scene, spread over its patches); 0 skips them. The default 20 take
-    /// about 80 s of CPU on the compiled PE (--engine auto finds Verilator), about an hour on
+    /// about 80 s of CPU on the compiled PE (--engine auto finds Verilator), about an hour of CPU on
     /// rust-hdl's simulation.
     #[arg(long, default_value_t = 20, allow_negative_numbers = true)]
     cosim_sources: usize,
