@@ -178,7 +178,9 @@ pub(super) fn trace<H: HitTest>(
             tick, hot, cold, patch_stamp, cell_stamp: cell_seen, region_stamp: region_seen, ..
         } = scratch;
         *tick += 1;
-        let cache = PatchCache::new(scene, bundle, hot, cold, patch_stamp, *tick);
+        // Only the stochastic tracker reads the patches' distances (its radial subshells).
+        let with_r_min = tracking == Tracking::Stochastic;
+        let cache = PatchCache::new(scene, bundle, hot, cold, patch_stamp, *tick, with_r_min);
         trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
     })
 }
