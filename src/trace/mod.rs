@@ -140,9 +140,7 @@ impl HitTest for FloatHits {
         hit_front(&bundle.rays[i], seg)
     }
 
-    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch`]), for the rays whose
-    /// origin is the source's (every ray of a bundle built by [`Bundle::new`]); any other ray
-    /// takes [`hit_front`] itself.
+    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch::hit_rays`]).
     #[inline(always)]
     fn hit_rays(
         &self,
@@ -151,18 +149,9 @@ impl HitTest for FloatHits {
         seg: &Segment,
         base: usize,
         rays: u64,
-        mut found: impl FnMut(usize, f64),
+        found: impl FnMut(usize, f64),
     ) {
-        let patch = FrontPatch::new(bundle.source.origin, seg);
-        let o = patch.origin();
-        for i in set_bits(base, rays) {
-            let ray = &bundle.rays[i];
-            let same = ray.origin.x.to_bits() == o.x.to_bits() && ray.origin.y.to_bits() == o.y.to_bits();
-            let t = if same { patch.hit(ray) } else { hit_front(ray, seg) };
-            if let Some(t) = t {
-                found(i, t);
-            }
-        }
+        FrontPatch::new(bundle.source.origin, seg).hit_rays(&bundle.rays, base, rays, found);
     }
 }
 
