@@ -52,13 +52,15 @@ pub fn orient(a: Vec2, b: Vec2, c: Vec2) -> f64 {
     )
 }
 
+/// The error-bound factor of [`orient_filter`] (`robust`'s `CCWERRBOUND_A`).
+const THETA: f64 = 3.3306690621773722e-16;
+
 /// The first stage of [`orient`]`(a, b, c)` (Shewchuk's predicate as the `robust` crate
 /// implements it), given the differences `a − c` and `b − c` it starts from: the floating-point
 /// determinant, and whether its error bound proves its sign, in which case it is exactly what
 /// [`orient`] returns.
 #[inline(always)]
 fn orient_filter(ac: Vec2, bc: Vec2) -> (f64, bool) {
-    const THETA: f64 = 3.3306690621773722e-16;
     let detleft = ac.x * bc.y;
     let detright = ac.y * bc.x;
     let det = detleft - detright;
@@ -215,15 +217,174 @@ impl FrontPatch {
             return None;
         }
         let t = self.num / cross(ray.dir, self.e);
-        // Clamp into the projection interval of the endpoints so `t` names a point of the
-        // segment even when the ray grazes it and the quotient is ill-conditioned.
-        let ta = self.w.dot(ray.dir);
-        let tb = self.wb.dot(ray.dir);
-        let (lo, hi) = if ta <= tb { (ta, tb) } else { (tb, ta) };
-        let t = if t.is_nan() { lo } else { t.clamp(lo, hi) };
-        // A hit is at t > 0 by the predicates; keep it strictly positive after rounding too.
-        Some(t.max(f64::MIN_POSITIVE))
+        Some(settle(t, self.w.dot(ray.dir), self.wb.dot(ray.dir)))
     }
+
+    /// The hits of the rays `rays[base + k]`, one for each set bit `k` of `word`, in increasing
+    /// order: `found(i, t)` for each ray `i` that hits. A ray with this patch's origin (bit for
+    /// bit) is answered as by [`FrontPatch::hit`], any other as by [`hit_front`]. On x86-64 the
+    /// rays go through SSE2 two at a time, each lane performing the operations of `hit` on the
+    /// same operands (IEEE arithmetic rounds lane by lane as it does a scalar), so the answers
+    /// are the same bits.
+    #[inline(always)]
+    pub fn hit_rays(&self, rays: &[Ray], base: usize, word: u64, found: impl FnMut(usize, f64)) {
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        {
+            self.hit_rays_sse2(rays, base, word, found)
+        }
+        #[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+        {
+            let (mut word, mut found) = (word, found);
+            while word != 0 {
+                let i = base + word.trailing_zeros() as usize;
+                word &= word - 1;
+                if let Some(t) = self.hit_any(&rays[i]) {
+                    found(i, t);
+                }
+            }
+        }
+    }
+
+    /// [`FrontPatch::hit`] of `ray` if it has this patch's origin, else [`hit_front`].
+    #[inline(always)]
+    fn hit_any(&self, ray: &Ray) -> Option<f64> {
+        let o = self.origin;
+        if ray.origin.x.to_bits() == o.x.to_bits() && ray.origin.y.to_bits() == o.y.to_bits() {
+            self.hit(ray)
+        } else {
+            hit_front(ray, &self.seg)
+        }
+    }
+
+    /// The SSE2 body of [`FrontPatch::hit_rays`]: two rays per step, lane 0 and lane 1 (an odd
+    /// last ray fills both). A pair not both from this patch's origin, and a lane that the
+    /// filter cannot decide or whose quotient or projections are NaN, take
+    /// [`FrontPatch::hit_any`]. In the other lanes the clamp of [`settle`] is
+    /// `max(min(max(t, lo), hi), MIN_POSITIVE)` of SSE2's `max` and `min`: the same value for
+    /// operands that are not NaN but for the sign of a zero, which the final `max` turns into
+    /// `MIN_POSITIVE` either way.
+    ///
+    /// It is inlined into its callers (so a caller compiled for newer instructions, such as the
+    /// shelling tracers' x86-64-v3 copy, encodes it with them).
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    #[inline(always)]
+    fn hit_rays_sse2(&self, rays: &[Ray], base: usize, mut word: u64, mut found: impl FnMut(usize, f64)) {
+        // SAFETY: the build targets SSE2 (the `cfg`), so every CPU it runs on has it.
+        unsafe {
+            use sse2::*;
+            use std::arch::x86_64::*;
+            let (ax, ay, bx, by) =
+                (splat(self.seg.a.x), splat(self.seg.a.y), splat(self.seg.b.x), splat(self.seg.b.y));
+            let (oax, oay, obx, oby) =
+                (splat(self.oa.x), splat(self.oa.y), splat(self.ob.x), splat(self.ob.y));
+            let (ex, ey, num) = (splat(self.e.x), splat(self.e.y), splat(self.num));
+            let (wx, wy, wbx, wby) = (splat(self.w.x), splat(self.w.y), splat(self.wb.x), splat(self.wb.y));
+            let (zero, tiny) = (_mm_setzero_pd(), splat(f64::MIN_POSITIVE));
+            let origin = _mm_castpd_si128(vec(self.origin));
+            while word != 0 {
+                let i = base + word.trailing_zeros() as usize;
+                word &= word - 1;
+                let j = if word != 0 { base + word.trailing_zeros() as usize } else { i };
+                word &= word.wrapping_sub(1);
+                let (ri, rj) = (&rays[i], &rays[j]);
+                let same = _mm_and_si128(
+                    _mm_cmpeq_epi32(_mm_castpd_si128(vec(ri.origin)), origin),
+                    _mm_cmpeq_epi32(_mm_castpd_si128(vec(rj.origin)), origin),
+                );
+                if _mm_movemask_epi8(same) != 0xffff {
+                    if let Some(t) = self.hit_any(ri) {
+                        found(i, t);
+                    }
+                    if j != i {
+                        if let Some(t) = self.hit_any(rj) {
+                            found(j, t);
+                        }
+                    }
+                    continue;
+                }
+                let (p0, p1) = (vec(ri.probe), vec(rj.probe));
+                let (px, py) = (_mm_unpacklo_pd(p0, p1), _mm_unpackhi_pd(p0, p1));
+                let (da, certain_a) = filter(oax, oay, _mm_sub_pd(px, ax), _mm_sub_pd(py, ay));
+                let (db, certain_b) = filter(obx, oby, _mm_sub_pd(px, bx), _mm_sub_pd(py, by));
+                let certain = _mm_movemask_pd(_mm_and_pd(certain_a, certain_b));
+                let miss = _mm_movemask_pd(_mm_or_pd(_mm_cmpgt_pd(da, zero), _mm_cmplt_pd(db, zero)));
+                // `num / cross(d, e)`, `w · d` and `wb · d` in both lanes, then `settle`.
+                let (d0, d1) = (vec(ri.dir), vec(rj.dir));
+                let (dx, dy) = (_mm_unpacklo_pd(d0, d1), _mm_unpackhi_pd(d0, d1));
+                let t = _mm_div_pd(num, _mm_sub_pd(_mm_mul_pd(dx, ey), _mm_mul_pd(dy, ex)));
+                let ta = _mm_add_pd(_mm_mul_pd(wx, dx), _mm_mul_pd(wy, dy));
+                let tb = _mm_add_pd(_mm_mul_pd(wbx, dx), _mm_mul_pd(wby, dy));
+                let tame = _mm_movemask_pd(_mm_and_pd(_mm_cmpord_pd(ta, tb), _mm_cmpord_pd(t, t)));
+                let x = _mm_max_pd(_mm_min_pd(_mm_max_pd(t, _mm_min_pd(ta, tb)), _mm_max_pd(ta, tb)), tiny);
+                // Lanes the vector answer does not settle: undecided, or a hit with a NaN about.
+                let slow = !certain | (!miss & !tame);
+                let fast_hit = !slow & !miss;
+                if slow & 1 != 0 {
+                    if let Some(t) = self.hit_any(ri) {
+                        found(i, t);
+                    }
+                } else if fast_hit & 1 != 0 {
+                    found(i, _mm_cvtsd_f64(x));
+                }
+                if j != i {
+                    if slow & 2 != 0 {
+                        if let Some(t) = self.hit_any(rj) {
+                            found(j, t);
+                        }
+                    } else if fast_hit & 2 != 0 {
+                        found(j, _mm_cvtsd_f64(_mm_unpackhi_pd(x, x)));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Helpers of [`FrontPatch::hit_rays`] on x86-64. They use SSE2 intrinsics, so they may only
+/// be called where SSE2 is known to be present (the `cfg` of this module).
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+mod sse2 {
+    use super::{Vec2, THETA};
+    use std::arch::x86_64::*;
+
+    #[inline(always)]
+    pub(super) unsafe fn splat(v: f64) -> __m128d {
+        _mm_set1_pd(v)
+    }
+
+    /// `[v.x, v.y]`.
+    #[inline(always)]
+    pub(super) unsafe fn vec(v: Vec2) -> __m128d {
+        _mm_set_pd(v.y, v.x)
+    }
+
+    /// `orient_filter(ac, bc)` in both lanes: the determinant and whether it is certain.
+    #[inline(always)]
+    pub(super) unsafe fn filter(
+        acx: __m128d,
+        acy: __m128d,
+        bcx: __m128d,
+        bcy: __m128d,
+    ) -> (__m128d, __m128d) {
+        let sign = _mm_set1_pd(-0.0);
+        let detleft = _mm_mul_pd(acx, bcy);
+        let detright = _mm_mul_pd(acy, bcx);
+        let det = _mm_sub_pd(detleft, detright);
+        let errbound = _mm_mul_pd(_mm_set1_pd(THETA), _mm_andnot_pd(sign, _mm_add_pd(detleft, detright)));
+        let certain = _mm_or_pd(_mm_cmpge_pd(det, errbound), _mm_cmpge_pd(_mm_xor_pd(det, sign), errbound));
+        (det, certain)
+    }
+}
+
+/// The end of [`FrontPatch::hit`] for a ray that hits: the quotient `t` clamped into the
+/// interval spanned by the endpoints' projections `ta` and `tb` (their lower end if `t` is NaN),
+/// so that it names a point of the segment even when the ray grazes it and the quotient is
+/// ill-conditioned; then kept strictly positive (a hit is at `t > 0` by the predicates).
+#[inline(always)]
+fn settle(t: f64, ta: f64, tb: f64) -> f64 {
+    let (lo, hi) = if ta <= tb { (ta, tb) } else { (tb, ta) };
+    let t = if t.is_nan() { lo } else { t.clamp(lo, hi) };
+    t.max(f64::MIN_POSITIVE)
 }
 
 /// The orientation test of [`hit_front`] by the exact predicate, for when the filter cannot

@@ -140,9 +140,7 @@ impl HitTest for FloatHits {
         hit_front(&bundle.rays[i], seg)
     }
 
-    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch`]), for the rays whose
-    /// origin is the source's (every ray of a bundle built by [`Bundle::new`]); any other ray
-    /// takes [`hit_front`] itself.
+    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch::hit_rays`]).
     #[inline(always)]
     fn hit_rays(
         &self,
@@ -151,18 +149,9 @@ impl HitTest for FloatHits {
         seg: &Segment,
         base: usize,
         rays: u64,
-        mut found: impl FnMut(usize, f64),
+        found: impl FnMut(usize, f64),
     ) {
-        let patch = FrontPatch::new(bundle.source.origin, seg);
-        let o = patch.origin();
-        for i in set_bits(base, rays) {
-            let ray = &bundle.rays[i];
-            let same = ray.origin.x.to_bits() == o.x.to_bits() && ray.origin.y.to_bits() == o.y.to_bits();
-            let t = if same { patch.hit(ray) } else { hit_front(ray, seg) };
-            if let Some(t) = t {
-                found(i, t);
-            }
-        }
+        FrontPatch::new(bundle.source.origin, seg).hit_rays(&bundle.rays, base, rays, found);
     }
 }
 
@@ -212,7 +201,7 @@ pub fn trace_with<H: HitTest>(
             shelling::trace(scene, bundle, params, shelling::Tracking::Deterministic, hits)
         }
     };
-    let (hitting, adlc_true) = hit_summary(&hits);
+    let (hitting, adlc_true) = hit_summary_below(&hits, scene.segments.len());
     counters.actual_intersections = hitting as u64;
     counters.adlc_true = adlc_true;
     if matches!(method, Method::Brute | Method::Conventional) {
@@ -230,20 +219,18 @@ pub fn adlc(hits: &[Option<Hit>]) -> f64 {
 
 /// The number of rays that hit something, and the [`adlc`] of `hits`.
 fn hit_summary(hits: &[Option<Hit>]) -> (usize, f64) {
-    // Branch-free passes (which rays hit is data, not a pattern a predictor learns).
-    let (mut total, mut max) = (0usize, 0u32);
-    for h in hits {
-        total += h.is_some() as usize;
-        max = max.max(h.map_or(0, |h| h.segment));
-    }
-    if total == 0 {
-        return (0, 0.0);
-    }
+    let max = hits.iter().fold(0u32, |m, h| m.max(h.map_or(0, |h| h.segment)));
+    hit_summary_below(hits, max as usize + 1)
+}
+
+/// [`hit_summary`] of hits whose patch indices lie below `n` (a trace's hits, `n` the scene's
+/// patch count), in one pass.
+fn hit_summary_below(hits: &[Option<Hit>], n: usize) -> (usize, f64) {
     // Distinct patches: a bit set over the patch indices when it is small against the hits
-    // (a miss marks the spare bit `max + 1`, discounted after), else sort and count.
-    let distinct = if (max as usize) < 64 * 64 + 64 * hits.len() {
-        // Small sets (every scene of up to 4096 patches) live on the stack.
-        let words = (max as usize + 1) / 64 + 1;
+    // (a miss marks the spare bit `n`, discounted after), else sort and count.
+    let (total, distinct) = if n <= 64 * 64 + 64 * hits.len() {
+        // Small sets (every scene of up to 4095 patches) live on the stack.
+        let words = n / 64 + 1;
         let mut stack = [0u64; 64];
         let mut heap = Vec::new();
         let seen: &mut [u64] = if words <= stack.len() {
@@ -252,24 +239,33 @@ fn hit_summary(hits: &[Option<Hit>]) -> (usize, f64) {
             heap.resize(words, 0);
             &mut heap
         };
-        let (mut n, mut last) = (0usize, usize::MAX);
+        let (mut total, mut distinct, mut last) = (0usize, 0usize, usize::MAX);
         for h in hits {
-            let id = h.map_or(max as usize + 1, |h| h.segment as usize);
+            total += h.is_some() as usize;
+            let id = h.map_or(n, |h| h.segment as usize);
             // Neighbouring rays mostly hit the same patch: skip the set's read-modify-write.
             if id != last {
+                if id > n || (id == n && h.is_some()) {
+                    // An index not below `n` (not a trace's hits): count the general way.
+                    return hit_summary(hits);
+                }
                 let (w, b) = (id / 64, 1u64 << (id % 64));
-                n += (seen[w] & b == 0) as usize;
+                distinct += (seen[w] & b == 0) as usize;
                 seen[w] |= b;
                 last = id;
             }
         }
-        n - (total < hits.len()) as usize
+        (total, distinct - (total < hits.len()) as usize)
     } else {
         let mut ids: Vec<u32> = hits.iter().flatten().map(|h| h.segment).collect();
+        let total = ids.len();
         ids.sort_unstable();
         ids.dedup();
-        ids.len()
+        (total, ids.len())
     };
+    if total == 0 {
+        return (0, 0.0);
+    }
     (total, total as f64 / distinct as f64)
 }
 
@@ -289,7 +285,8 @@ pub(crate) struct PatchInfo {
     pub screen: Screen,
     /// Rays whose angle lies in the patch's (conservatively widened) angular span.
     pub rays: Range<u32>,
-    /// A lower bound of the distance from the source to the patch.
+    /// A lower bound of the distance from the source to the patch (0, the trivial bound, unless
+    /// the cache was asked for it: only the stochastic tracker reads it).
     pub r_min: f64,
     /// Flatness (Def 2.4): the spread of the endpoints' distances from the source.
     pub flatness: f64,
@@ -404,6 +401,8 @@ pub(crate) struct PatchCache<'a> {
     scale: f64,
     /// Distance margin (the grid's registration margin).
     margin: f64,
+    /// Whether [`PatchInfo::r_min`] is computed (else it is 0).
+    with_r_min: bool,
     hot: &'a mut [PatchHot],
     cold: &'a mut [PatchCold],
     /// Per patch, the tick of the sector that last loaded it (a dense array of its own: most
@@ -421,6 +420,7 @@ impl<'a> PatchCache<'a> {
         cold: &'a mut [PatchCold],
         loaded: &'a mut [u64],
         tick: u64,
+        with_r_min: bool,
     ) -> Self {
         let (lo, hi) = scene.grid.extent();
         let o = bundle.source.origin;
@@ -430,6 +430,7 @@ impl<'a> PatchCache<'a> {
             bundle,
             scale,
             margin: 4.0 * scene.grid.eps,
+            with_r_min,
             hot,
             cold,
             loaded,
@@ -485,7 +486,7 @@ impl<'a> PatchCache<'a> {
         let o = self.bundle.source.origin;
         let ra = (seg.a - o).length();
         let rb = (seg.b - o).length();
-        let r_min = (seg.distance_to(o) - self.margin).max(0.0);
+        let r_min = if self.with_r_min { (seg.distance_to(o) - self.margin).max(0.0) } else { 0.0 };
         let flatness = (ra - rb).abs();
         let (lo, hi) = self.span(seg, ra, rb);
         let r = self.bundle.rays_between(lo, hi);

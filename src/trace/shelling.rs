@@ -50,8 +50,15 @@
 //! * **Patches**: [`PatchCache::load`] checks a dense per-sector stamp first; what a load needs
 //!   of a patch's per-source information (computed on its first load) takes 16 bytes, the rest
 //!   (read for relevant patches only) lies apart.
+//! * **Hit tests** go a word of rays at a time through the backend's `hit_rays`; the golden
+//!   one tests two rays per step in SSE2 lanes on x86-64 ([`FrontPatch::hit_rays`]), each lane
+//!   doing the scalar test's operations on the same operands.
+//! * **Instructions**: on x86-64 CPUs with AVX2 (x86-64-v3 less FMA), the body runs as a copy
+//!   compiled for those instructions (`trace_bundle_v3`): the same operations in the same
+//!   order, as Rust never fuses a multiply and an add by itself.
 //!
 //! [`Grid::raster_convex_n`]: crate::grid::Grid::raster_convex_n
+//! [`FrontPatch::hit_rays`]: crate::geom::FrontPatch::hit_rays
 //! [`Grid::scan_cell`]: crate::grid::Grid::scan_cell
 //! [`PatchCache::load`]: super::PatchCache::load
 
@@ -178,9 +185,51 @@ pub(super) fn trace<H: HitTest>(
             tick, hot, cold, patch_stamp, cell_stamp: cell_seen, region_stamp: region_seen, ..
         } = scratch;
         *tick += 1;
-        let cache = PatchCache::new(scene, bundle, hot, cold, patch_stamp, *tick);
+        // Only the stochastic tracker reads the patches' distances (its radial subshells).
+        let with_r_min = tracking == Tracking::Stochastic;
+        let cache = PatchCache::new(scene, bundle, hot, cold, patch_stamp, *tick, with_r_min);
+        #[cfg(target_arch = "x86_64")]
+        if x86_64_v3() {
+            // SAFETY: the CPU has the features `trace_bundle_v3` is compiled for (just checked).
+            return unsafe {
+                trace_bundle_v3(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
+            };
+        }
         trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
     })
+}
+
+/// Whether the CPU has the features of [`trace_bundle_v3`].
+#[cfg(target_arch = "x86_64")]
+fn x86_64_v3() -> bool {
+    std::is_x86_feature_detected!("avx")
+        && std::is_x86_feature_detected!("avx2")
+        && std::is_x86_feature_detected!("bmi1")
+        && std::is_x86_feature_detected!("bmi2")
+        && std::is_x86_feature_detected!("lzcnt")
+        && std::is_x86_feature_detected!("popcnt")
+}
+
+/// [`trace_bundle`] compiled for the newer x86-64 CPUs most machines have (x86-64-v3 without
+/// FMA): the same operations in the same order, only encoded with more instructions to choose
+/// from (three-operand AVX forms, a native population count, ...). Floating-point results
+/// cannot change: Rust never contracts a multiply and an add into an FMA, and FMA is not
+/// enabled here anyway.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
+#[allow(clippy::too_many_arguments)]
+fn trace_bundle_v3<H: HitTest>(
+    scene: SceneView<'_>,
+    bundle: &Bundle,
+    params: &ShellParams,
+    tracking: Tracking,
+    test: &H,
+    cache: PatchCache<'_>,
+    tick: &mut u64,
+    cell_seen: &mut [u64],
+    region_seen: &mut [u64],
+) -> (Vec<Option<Hit>>, Counters, ShellStats) {
+    trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
 }
 
 /// The rays of the current sector `[s, e)` as bit sets over sector-local indices (bit `i % 64`
@@ -391,6 +440,7 @@ impl RegionSet {
 /// The body of [`trace`], on this thread's scratch memory: `cell_seen` and `region_seen` hold
 /// stamps compared against a fresh tick per shell, the cache's load stamps one per sector.
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 fn trace_bundle<H: HitTest>(
     scene: SceneView<'_>,
     bundle: &Bundle,
