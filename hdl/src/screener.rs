@@ -56,20 +56,24 @@
 //! The pipeline never stalls; a patch accepted in cycle `a` is in stage `s` in cycle `a + s`:
 //!
 //! * stage 0: acceptance; the coordinates relative to the origin are registered;
-//! * stage 1: the ten products start ([`Mul18`] leaves, latency 2, one DSP each);
+//! * stage 1: the products start ([`Mul18`] leaves, latency 2, one DSP each), in three groups
+//!   one stage apart so that no operand register drives two multipliers: the two of `K` now;
 //!   `n = (b.y − a.y, a.x − b.x)` and `|n_c|` (each negation as the reversed difference, in
 //!   parallel with it);
-//! * stage 2: `nmax = max(|n_x|, |n_y|)`;
-//! * stage 3: the products arrive and are registered as they are, so that nothing but routing
-//!   lies between a multiplier and a register; the leading zeros of `nmax`, first two of five
-//!   conditional shifts (16, 8);
-//! * stage 4: `dot(n_s, a)`, `dot(n_s, b)`, `K` and the side values against the sector's edges;
-//!   the last three shifts of `nmax` (4, 2, 1);
-//! * stage 5: the backward, back-facing and outside-the-sector screens; the leading zeros of
-//!   `2K`, first two shifts;
-//! * stage 6: the last three shifts of `2K`;
+//! * stage 2: the four products of `dot(n_s, a)` and `dot(n_s, b)` start;
+//!   `nmax = max(|n_x|, |n_y|)`;
+//! * stage 3: the four side products (against the sector's edges) start; the products of `K`
+//!   arrive and are registered once more, as they are (the multiplier's product register
+//!   drives that register only); the leading zeros of `nmax`, first two of five conditional
+//!   shifts (16, 8);
+//! * stage 4: `K`; the products of the dot products arrive; the last three shifts of `nmax`
+//!   (4, 2, 1);
+//! * stage 5: the leading zeros of `2K`, first two shifts; `dot(n_s, a)`, `dot(n_s, b)`; the
+//!   side products arrive;
+//! * stage 6: the last three shifts of `2K`; the backward and back-facing screens; the side
+//!   values;
 //! * stage 7: the exponent `sh` (from the two leading-zero counts and one comparison of the
-//!   normalised values);
+//!   normalised values); the outside-the-sector screen;
 //! * stage 8 ([`VERDICT_LATENCY`]): the near screen and the verdict, counted. The patch takes
 //!   the next slot of the output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters
 //!   the divider with its initial remainders `floor(|n_c|·2^sh)`;
@@ -82,7 +86,12 @@
 //!
 //! The stages are cut for an ECP5 (LFE5U-85F, speed grade 6) clock of 150 MHz: at most one
 //! carry chain, or two or three conditional shifts, between registers; `rd_ptr + 1` is kept in a
-//! register so that the output FIFO's read address is one multiplexer after `out_ready`.
+//! register so that the output FIFO's read address is one multiplexer after `out_ready`. Measured
+//! (`cargo xtask fpga --blocks screener --families ecp5`) the block reaches about 125 MHz: every
+//! remaining slow path is a multiplier's, from its operand register through the `MULT18X18D`
+//! (3.9 ns combinational: Yosys maps the product without the DSP's own registers) to its product
+//! register, 1.3–2.2 ns of routing on either side. Reaching 150 MHz needs the DSP's input and
+//! output registers, that is a `MULT18X18D` instantiated in [`Mul18`].
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
@@ -115,7 +124,7 @@
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
 //! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 72 `TRELLIS_DPR16X4` (the
-//! FIFO), about 2400 LUT4, 900 `CCU2C` carry cells and 3400 flip-flops, of which the divider
+//! FIFO), about 2300 LUT4, 900 `CCU2C` carry cells and 4600 flip-flops, of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` and 2000 flip-flops.
 
 use crate::formats::{cross, dot, SECTOR_MARGIN, SH_MAX, SH_MIN};
@@ -346,7 +355,7 @@ pub struct Screener {
     ext_ay: Signal<Local, Bits<18>>,
     ext_bx: Signal<Local, Bits<18>>,
     ext_by: Signal<Local, Bits<18>>,
-    // Stage 1: the products start; n and |n|.
+    // Stage 1: the products of K start; n and |n|.
     v1: DFF<bool>,
     id1: DFF<Bits<16>>,
     ax1: DFF<Bits<18>>,
@@ -369,7 +378,7 @@ pub struct Screener {
     ny_neg: Signal<Local, Bits<18>>,
     absnx: Signal<Local, Bits<18>>,
     absny: Signal<Local, Bits<18>>,
-    // Stage 2: nmax.
+    // Stage 2: the products of dot(n_s, a), dot(n_s, b) start; nmax.
     v2: DFF<bool>,
     id2: DFF<Bits<16>>,
     ax2: DFF<Bits<18>>,
@@ -380,8 +389,10 @@ pub struct Screener {
     absny2: DFF<Bits<18>>,
     negx2: DFF<bool>,
     negy2: DFF<bool>,
+    normal_x2: DFF<Bits<18>>,
+    normal_y2: DFF<Bits<18>>,
     nmax: Signal<Local, Bits<18>>,
-    // Stage 3: the products arrive and are registered; the first two shifts of clz(nmax).
+    // Stage 3: the side products start; those of K arrive; the first two shifts of clz(nmax).
     v3: DFF<bool>,
     id3: DFF<Bits<16>>,
     ax3: DFF<Bits<18>>,
@@ -400,7 +411,7 @@ pub struct Screener {
     cn8_n: Signal<Local, Bits<6>>,
     top16_n: Signal<Local, Bits<16>>,
     top8_n: Signal<Local, Bits<8>>,
-    // Stage 4: the sums; the last three shifts of clz(nmax).
+    // Stage 4: K; the products of dot(n_s, a), dot(n_s, b) arrive; the last three shifts of clz(nmax).
     v4: DFF<bool>,
     id4: DFF<Bits<16>>,
     ax4: DFF<Bits<18>>,
@@ -411,23 +422,11 @@ pub struct Screener {
     absny4: DFF<Bits<18>>,
     negx4: DFF<bool>,
     negy4: DFF<bool>,
-    p_nax4: DFF<Bits<32>>,
-    p_nay4: DFF<Bits<32>>,
-    p_nbx4: DFF<Bits<32>>,
-    p_nby4: DFF<Bits<32>>,
     p_aby4: DFF<Bits<32>>,
     p_abx4: DFF<Bits<32>>,
-    p_fby4: DFF<Bits<32>>,
-    p_fbx4: DFF<Bits<32>>,
-    p_lay4: DFF<Bits<32>>,
-    p_lax4: DFF<Bits<32>>,
     clz_n4: DFF<Bits<6>>,
     norm_n4: DFF<Bits<32>>,
-    ha: Signal<Local, Bits<32>>,
-    hb: Signal<Local, Bits<32>>,
     kk: Signal<Local, Bits<32>>,
-    side_f: Signal<Local, Bits<32>>,
-    side_l: Signal<Local, Bits<32>>,
     zn3: Signal<Local, Bits<32>>,
     zn4: Signal<Local, Bits<32>>,
     zn5: Signal<Local, Bits<32>>,
@@ -436,7 +435,7 @@ pub struct Screener {
     cn1_n: Signal<Local, Bits<6>>,
     top4_n: Signal<Local, Bits<4>>,
     top2_n: Signal<Local, Bits<2>>,
-    // Stage 5: the screens; the first two shifts of clz(2K).
+    // Stage 5: the first two shifts of clz(2K); the dot products; the side products arrive.
     v5: DFF<bool>,
     id5: DFF<Bits<16>>,
     ax5: DFF<Bits<18>>,
@@ -447,20 +446,15 @@ pub struct Screener {
     absny5: DFF<Bits<18>>,
     negx5: DFF<bool>,
     negy5: DFF<bool>,
-    ha5: DFF<Bits<32>>,
-    hb5: DFF<Bits<32>>,
     k5: DFF<Bits<32>>,
-    side_f5: DFF<Bits<32>>,
-    side_l5: DFF<Bits<32>>,
+    p_nax5: DFF<Bits<32>>,
+    p_nay5: DFF<Bits<32>>,
+    p_nbx5: DFF<Bits<32>>,
+    p_nby5: DFF<Bits<32>>,
     clz_n5: DFF<Bits<6>>,
     norm_n5: DFF<Bits<32>>,
-    side_f_x: Signal<Local, Bits<32>>,
-    side_l_x: Signal<Local, Bits<32>>,
-    ha_pos: Signal<Local, bool>,
-    hb_pos: Signal<Local, bool>,
-    is_backward: Signal<Local, bool>,
-    is_back_facing: Signal<Local, bool>,
-    is_outside: Signal<Local, bool>,
+    ha: Signal<Local, Bits<32>>,
+    hb: Signal<Local, Bits<32>>,
     k2: Signal<Local, Bits<32>>,
     ze0: Signal<Local, Bits<32>>,
     ze1: Signal<Local, Bits<32>>,
@@ -469,7 +463,7 @@ pub struct Screener {
     ce8_e: Signal<Local, Bits<6>>,
     top16_e: Signal<Local, Bits<16>>,
     top8_e: Signal<Local, Bits<8>>,
-    // Stage 6: the last three shifts of clz(2K).
+    // Stage 6: the last three shifts of clz(2K); the backward and back-facing screens; the side values.
     v6: DFF<bool>,
     id6: DFF<Bits<16>>,
     ax6: DFF<Bits<18>>,
@@ -481,13 +475,16 @@ pub struct Screener {
     negx6: DFF<bool>,
     negy6: DFF<bool>,
     k6: DFF<Bits<32>>,
+    ha6: DFF<Bits<32>>,
+    hb6: DFF<Bits<32>>,
+    p_fby6: DFF<Bits<32>>,
+    p_fbx6: DFF<Bits<32>>,
+    p_lay6: DFF<Bits<32>>,
+    p_lax6: DFF<Bits<32>>,
     clz_n6: DFF<Bits<6>>,
     norm_n6: DFF<Bits<32>>,
     clz_e6: DFF<Bits<6>>,
     norm_e6: DFF<Bits<32>>,
-    backward6: DFF<bool>,
-    back_facing6: DFF<bool>,
-    outside6: DFF<bool>,
     ze3: Signal<Local, Bits<32>>,
     ze4: Signal<Local, Bits<32>>,
     ze5: Signal<Local, Bits<32>>,
@@ -496,7 +493,13 @@ pub struct Screener {
     ce1_e: Signal<Local, Bits<6>>,
     top4_e: Signal<Local, Bits<4>>,
     top2_e: Signal<Local, Bits<2>>,
-    // Stage 7: the exponent.
+    ha_pos: Signal<Local, bool>,
+    hb_pos: Signal<Local, bool>,
+    is_backward: Signal<Local, bool>,
+    is_back_facing: Signal<Local, bool>,
+    side_f: Signal<Local, Bits<32>>,
+    side_l: Signal<Local, Bits<32>>,
+    // Stage 7: the exponent; the outside-the-sector screen.
     v7: DFF<bool>,
     id7: DFF<Bits<16>>,
     ax7: DFF<Bits<18>>,
@@ -508,16 +511,22 @@ pub struct Screener {
     negx7: DFF<bool>,
     negy7: DFF<bool>,
     k7: DFF<Bits<32>>,
+    side_f7: DFF<Bits<32>>,
+    side_l7: DFF<Bits<32>>,
     clz_n7: DFF<Bits<6>>,
     norm_n7: DFF<Bits<32>>,
     clz_e7: DFF<Bits<6>>,
     norm_e7: DFF<Bits<32>>,
     backward7: DFF<bool>,
     back_facing7: DFF<bool>,
-    outside7: DFF<bool>,
+    ha_pos7: DFF<bool>,
+    hb_pos7: DFF<bool>,
     s0: Signal<Local, Bits<6>>,
     s0_m1: Signal<Local, Bits<6>>,
     sh: Signal<Local, Bits<6>>,
+    side_f_x: Signal<Local, Bits<32>>,
+    side_l_x: Signal<Local, Bits<32>>,
+    is_outside: Signal<Local, bool>,
     // Stage 8: the verdict, the divider's inputs; the patch takes a slot.
     v8: DFF<bool>,
     id8: DFF<Bits<16>>,
@@ -700,6 +709,8 @@ impl Default for Screener {
             absny2: Default::default(),
             negx2: Default::default(),
             negy2: Default::default(),
+            normal_x2: Default::default(),
+            normal_y2: Default::default(),
             nmax: Default::default(),
             v3: Default::default(),
             id3: Default::default(),
@@ -729,23 +740,11 @@ impl Default for Screener {
             absny4: Default::default(),
             negx4: Default::default(),
             negy4: Default::default(),
-            p_nax4: Default::default(),
-            p_nay4: Default::default(),
-            p_nbx4: Default::default(),
-            p_nby4: Default::default(),
             p_aby4: Default::default(),
             p_abx4: Default::default(),
-            p_fby4: Default::default(),
-            p_fbx4: Default::default(),
-            p_lay4: Default::default(),
-            p_lax4: Default::default(),
             clz_n4: Default::default(),
             norm_n4: Default::default(),
-            ha: Default::default(),
-            hb: Default::default(),
             kk: Default::default(),
-            side_f: Default::default(),
-            side_l: Default::default(),
             zn3: Default::default(),
             zn4: Default::default(),
             zn5: Default::default(),
@@ -764,20 +763,15 @@ impl Default for Screener {
             absny5: Default::default(),
             negx5: Default::default(),
             negy5: Default::default(),
-            ha5: Default::default(),
-            hb5: Default::default(),
             k5: Default::default(),
-            side_f5: Default::default(),
-            side_l5: Default::default(),
+            p_nax5: Default::default(),
+            p_nay5: Default::default(),
+            p_nbx5: Default::default(),
+            p_nby5: Default::default(),
             clz_n5: Default::default(),
             norm_n5: Default::default(),
-            side_f_x: Default::default(),
-            side_l_x: Default::default(),
-            ha_pos: Default::default(),
-            hb_pos: Default::default(),
-            is_backward: Default::default(),
-            is_back_facing: Default::default(),
-            is_outside: Default::default(),
+            ha: Default::default(),
+            hb: Default::default(),
             k2: Default::default(),
             ze0: Default::default(),
             ze1: Default::default(),
@@ -797,13 +791,16 @@ impl Default for Screener {
             negx6: Default::default(),
             negy6: Default::default(),
             k6: Default::default(),
+            ha6: Default::default(),
+            hb6: Default::default(),
+            p_fby6: Default::default(),
+            p_fbx6: Default::default(),
+            p_lay6: Default::default(),
+            p_lax6: Default::default(),
             clz_n6: Default::default(),
             norm_n6: Default::default(),
             clz_e6: Default::default(),
             norm_e6: Default::default(),
-            backward6: Default::default(),
-            back_facing6: Default::default(),
-            outside6: Default::default(),
             ze3: Default::default(),
             ze4: Default::default(),
             ze5: Default::default(),
@@ -812,6 +809,12 @@ impl Default for Screener {
             ce1_e: Default::default(),
             top4_e: Default::default(),
             top2_e: Default::default(),
+            ha_pos: Default::default(),
+            hb_pos: Default::default(),
+            is_backward: Default::default(),
+            is_back_facing: Default::default(),
+            side_f: Default::default(),
+            side_l: Default::default(),
             v7: Default::default(),
             id7: Default::default(),
             ax7: Default::default(),
@@ -823,16 +826,22 @@ impl Default for Screener {
             negx7: Default::default(),
             negy7: Default::default(),
             k7: Default::default(),
+            side_f7: Default::default(),
+            side_l7: Default::default(),
             clz_n7: Default::default(),
             norm_n7: Default::default(),
             clz_e7: Default::default(),
             norm_e7: Default::default(),
             backward7: Default::default(),
             back_facing7: Default::default(),
-            outside7: Default::default(),
+            ha_pos7: Default::default(),
+            hb_pos7: Default::default(),
             s0: Default::default(),
             s0_m1: Default::default(),
             sh: Default::default(),
+            side_f_x: Default::default(),
+            side_l_x: Default::default(),
+            is_outside: Default::default(),
             v8: Default::default(),
             id8: Default::default(),
             ax8: Default::default(),
@@ -949,6 +958,8 @@ impl Logic for Screener {
             absny2,
             negx2,
             negy2,
+            normal_x2,
+            normal_y2,
             v3,
             id3,
             ax3,
@@ -970,16 +981,8 @@ impl Logic for Screener {
             absny4,
             negx4,
             negy4,
-            p_nax4,
-            p_nay4,
-            p_nbx4,
-            p_nby4,
             p_aby4,
             p_abx4,
-            p_fby4,
-            p_fbx4,
-            p_lay4,
-            p_lax4,
             clz_n4,
             norm_n4,
             v5,
@@ -992,11 +995,11 @@ impl Logic for Screener {
             absny5,
             negx5,
             negy5,
-            ha5,
-            hb5,
             k5,
-            side_f5,
-            side_l5,
+            p_nax5,
+            p_nay5,
+            p_nbx5,
+            p_nby5,
             clz_n5,
             norm_n5,
             v6,
@@ -1010,13 +1013,16 @@ impl Logic for Screener {
             negx6,
             negy6,
             k6,
+            ha6,
+            hb6,
+            p_fby6,
+            p_fbx6,
+            p_lay6,
+            p_lax6,
             clz_n6,
             norm_n6,
             clz_e6,
             norm_e6,
-            backward6,
-            back_facing6,
-            outside6,
             v7,
             id7,
             ax7,
@@ -1028,13 +1034,16 @@ impl Logic for Screener {
             negx7,
             negy7,
             k7,
+            side_f7,
+            side_l7,
             clz_n7,
             norm_n7,
             clz_e7,
             norm_e7,
             backward7,
             back_facing7,
-            outside7,
+            ha_pos7,
+            hb_pos7,
             v8,
             id8,
             ax8,
@@ -1095,29 +1104,16 @@ impl Logic for Screener {
         self.bx1.d.next = self.ext_bx.val() - self.ext_ox.val();
         self.by1.d.next = self.ext_by.val() - self.ext_oy.val();
 
-        // Stage 1: the ten products start (Mul18 leaves, latency 2); n = (b.y − a.y, a.x − b.x)
+        // Stage 1: the products start in three groups, one stage apart, so that every
+        // multiplier's operand register is a stage register of its own (no register drives two
+        // multipliers): those of K now, those of the dot products with n_s in stage 2, the side
+        // products in stage 3 (the bundle setup is held meanwhile). n = (b.y − a.y, a.x − b.x)
         // = (B.y − A.y, A.x − B.x), so |n_c| < 2^17, and its magnitudes (each negation as the
         // reversed difference, in parallel: the same 18 bits as 0 − n_c).
-        self.m_nax.a.next = self.normal_x.val();
-        self.m_nax.b.next = self.ax1.q.val();
-        self.m_nay.a.next = self.normal_y.val();
-        self.m_nay.b.next = self.ay1.q.val();
-        self.m_nbx.a.next = self.normal_x.val();
-        self.m_nbx.b.next = self.bx1.q.val();
-        self.m_nby.a.next = self.normal_y.val();
-        self.m_nby.b.next = self.by1.q.val();
         self.m_aby.a.next = self.ax1.q.val();
         self.m_aby.b.next = self.by1.q.val();
         self.m_abx.a.next = self.ay1.q.val();
         self.m_abx.b.next = self.bx1.q.val();
-        self.m_fby.a.next = self.first_x.val();
-        self.m_fby.b.next = self.by1.q.val();
-        self.m_fbx.a.next = self.first_y.val();
-        self.m_fbx.b.next = self.bx1.q.val();
-        self.m_lay.a.next = self.last_x.val();
-        self.m_lay.b.next = self.ay1.q.val();
-        self.m_lax.a.next = self.last_y.val();
-        self.m_lax.b.next = self.ax1.q.val();
         self.nx.next = self.by1.q.val() - self.ay1.q.val();
         self.ny.next = self.ax1.q.val() - self.bx1.q.val();
         self.nx_neg.next = self.ay1.q.val() - self.by1.q.val();
@@ -1140,8 +1136,19 @@ impl Logic for Screener {
         self.absny2.d.next = self.absny.val();
         self.negx2.d.next = self.nx.val().get_bit(17);
         self.negy2.d.next = self.ny.val().get_bit(17);
+        self.normal_x2.d.next = self.normal_x.val();
+        self.normal_y2.d.next = self.normal_y.val();
 
-        // Stage 2: nmax = max(|n_x|, |n_y|).
+        // Stage 2: the products of dot(n_s, a) and dot(n_s, b) start (the normal for b from a
+        // register of its own); nmax = max(|n_x|, |n_y|).
+        self.m_nax.a.next = self.normal_x.val();
+        self.m_nax.b.next = self.ax2.q.val();
+        self.m_nay.a.next = self.normal_y.val();
+        self.m_nay.b.next = self.ay2.q.val();
+        self.m_nbx.a.next = self.normal_x2.q.val();
+        self.m_nbx.b.next = self.bx2.q.val();
+        self.m_nby.a.next = self.normal_y2.q.val();
+        self.m_nby.b.next = self.by2.q.val();
         self.nmax.next = self.absny2.q.val();
         if self.absnx2.q.val() > self.absny2.q.val() {
             self.nmax.next = self.absnx2.q.val();
@@ -1158,20 +1165,20 @@ impl Logic for Screener {
         self.negy3.d.next = self.negy2.q.val();
         self.nmax3.d.next = self.nmax.val();
 
-        // Stage 3: the products arrive and are registered as they are (no logic between a
-        // multiplier and its register). The leading zeros of nmax (as 32 bits) by five
-        // conditional shifts, which also normalise it (its leading one at bit 31): the first two
-        // here, the last three in stage 4.
-        self.p_nax4.d.next = self.m_nax.p.val();
-        self.p_nay4.d.next = self.m_nay.p.val();
-        self.p_nbx4.d.next = self.m_nbx.p.val();
-        self.p_nby4.d.next = self.m_nby.p.val();
+        // Stage 3: the side products start; the products of K arrive and are registered once
+        // more, as they are (the multiplier's product register drives nothing else). The
+        // leading zeros of nmax (as 32 bits) by five conditional shifts, which also normalise it
+        // (its leading one at bit 31): the first two here, the last three in stage 4.
+        self.m_fby.a.next = self.first_x.val();
+        self.m_fby.b.next = self.by3.q.val();
+        self.m_fbx.a.next = self.first_y.val();
+        self.m_fbx.b.next = self.bx3.q.val();
+        self.m_lay.a.next = self.last_x.val();
+        self.m_lay.b.next = self.ay3.q.val();
+        self.m_lax.a.next = self.last_y.val();
+        self.m_lax.b.next = self.ax3.q.val();
         self.p_aby4.d.next = self.m_aby.p.val();
         self.p_abx4.d.next = self.m_abx.p.val();
-        self.p_fby4.d.next = self.m_fby.p.val();
-        self.p_fbx4.d.next = self.m_fbx.p.val();
-        self.p_lay4.d.next = self.m_lay.p.val();
-        self.p_lax4.d.next = self.m_lax.p.val();
         self.zn0.next = bit_cast::<32, 18>(self.nmax3.q.val());
         self.top16_n.next = self.zn0.val().get_bits::<16>(16);
         self.zn1.next = self.zn0.val();
@@ -1200,12 +1207,13 @@ impl Logic for Screener {
         self.clz_n4.d.next = self.cn16_n.val() | self.cn8_n.val();
         self.norm_n4.d.next = self.zn2.val();
 
-        // Stage 4: the sums and differences of the products; the last three shifts of nmax.
-        self.ha.next = self.p_nax4.q.val() + self.p_nay4.q.val();
-        self.hb.next = self.p_nbx4.q.val() + self.p_nby4.q.val();
+        // Stage 4: K; the products of the dot products arrive and are registered; the last
+        // three shifts of nmax.
         self.kk.next = self.p_aby4.q.val() - self.p_abx4.q.val();
-        self.side_f.next = self.p_fby4.q.val() - self.p_fbx4.q.val();
-        self.side_l.next = self.p_lay4.q.val() - self.p_lax4.q.val();
+        self.p_nax5.d.next = self.m_nax.p.val();
+        self.p_nay5.d.next = self.m_nay.p.val();
+        self.p_nbx5.d.next = self.m_nbx.p.val();
+        self.p_nby5.d.next = self.m_nby.p.val();
         self.top4_n.next = self.norm_n4.q.val().get_bits::<4>(28);
         self.zn3.next = self.norm_n4.q.val();
         self.cn4_n.next = self.zero6.val();
@@ -1236,28 +1244,13 @@ impl Logic for Screener {
         self.absny5.d.next = self.absny4.q.val();
         self.negx5.d.next = self.negx4.q.val();
         self.negy5.d.next = self.negy4.q.val();
-        self.ha5.d.next = self.ha.val();
-        self.hb5.d.next = self.hb.val();
         self.k5.d.next = self.kk.val();
-        self.side_f5.d.next = self.side_f.val();
-        self.side_l5.d.next = self.side_l.val();
         self.clz_n5.d.next = self.clz_n4.q.val() | self.cn4_n.val() | self.cn2_n.val() | self.cn1_n.val();
         self.norm_n5.d.next = self.zn5.val();
 
-        // Stage 5: the screens by priority (backward, back-facing, outside the sector); the
-        // leading zeros of 2K (K < 2^31 when it passes, so 2K fits 32 bits): the first two
-        // shifts. Signed comparisons with the margin as unsigned ones on the sign-flipped values.
-        self.side_f_x.next = self.side_f5.q.val() ^ self.msb32.val();
-        self.side_l_x.next = self.side_l5.q.val() ^ self.msb32.val();
-        self.ha_pos.next = !self.ha5.q.val().get_bit(31) & (self.ha5.q.val() != self.zero32.val());
-        self.hb_pos.next = !self.hb5.q.val().get_bit(31) & (self.hb5.q.val() != self.zero32.val());
-        self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
-        self.is_back_facing.next =
-            !self.is_backward.val() & (self.k5.q.val().get_bit(31) | (self.k5.q.val() == self.zero32.val()));
-        self.is_outside.next = !self.is_backward.val()
-            & !self.is_back_facing.val()
-            & ((self.hb_pos.val() & (self.side_f_x.val() < self.thr_f.val()))
-                | (self.ha_pos.val() & (self.side_l_x.val() > self.thr_l.val())));
+        // Stage 5: the leading zeros of 2K (K < 2^31 when it passes, so 2K fits 32 bits): the
+        // first two shifts; dot(n_s, a), dot(n_s, b); the side products arrive and are
+        // registered.
         self.k2.next = self.k5.q.val() << self.sh1.val();
         self.ze0.next = self.k2.val();
         self.top16_e.next = self.ze0.val().get_bits::<16>(16);
@@ -1274,6 +1267,12 @@ impl Logic for Screener {
             self.ze2.next = self.ze1.val() << self.sh8.val();
             self.ce8_e.next = self.c8_6.val();
         }
+        self.ha.next = self.p_nax5.q.val() + self.p_nay5.q.val();
+        self.hb.next = self.p_nbx5.q.val() + self.p_nby5.q.val();
+        self.p_fby6.d.next = self.m_fby.p.val();
+        self.p_fbx6.d.next = self.m_fbx.p.val();
+        self.p_lay6.d.next = self.m_lay.p.val();
+        self.p_lax6.d.next = self.m_lax.p.val();
         self.v6.d.next = self.v5.q.val();
         self.id6.d.next = self.id5.q.val();
         self.ax6.d.next = self.ax5.q.val();
@@ -1285,15 +1284,15 @@ impl Logic for Screener {
         self.negx6.d.next = self.negx5.q.val();
         self.negy6.d.next = self.negy5.q.val();
         self.k6.d.next = self.k5.q.val();
+        self.ha6.d.next = self.ha.val();
+        self.hb6.d.next = self.hb.val();
         self.clz_n6.d.next = self.clz_n5.q.val();
         self.norm_n6.d.next = self.norm_n5.q.val();
         self.clz_e6.d.next = self.ce16_e.val() | self.ce8_e.val();
         self.norm_e6.d.next = self.ze2.val();
-        self.backward6.d.next = self.is_backward.val();
-        self.back_facing6.d.next = self.is_back_facing.val();
-        self.outside6.d.next = self.is_outside.val();
 
-        // Stage 6: the last three shifts of 2K.
+        // Stage 6: the last three shifts of 2K; the backward and back-facing screens, by
+        // priority; the side values against the sector's edges.
         self.top4_e.next = self.norm_e6.q.val().get_bits::<4>(28);
         self.ze3.next = self.norm_e6.q.val();
         self.ce4_e.next = self.zero6.val();
@@ -1314,6 +1313,13 @@ impl Logic for Screener {
             self.ze5.next = self.ze4.val() << self.sh1.val();
             self.ce1_e.next = self.c1_6.val();
         }
+        self.ha_pos.next = !self.ha6.q.val().get_bit(31) & (self.ha6.q.val() != self.zero32.val());
+        self.hb_pos.next = !self.hb6.q.val().get_bit(31) & (self.hb6.q.val() != self.zero32.val());
+        self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
+        self.is_back_facing.next =
+            !self.is_backward.val() & (self.k6.q.val().get_bit(31) | (self.k6.q.val() == self.zero32.val()));
+        self.side_f.next = self.p_fby6.q.val() - self.p_fbx6.q.val();
+        self.side_l.next = self.p_lay6.q.val() - self.p_lax6.q.val();
         self.v7.d.next = self.v6.q.val();
         self.id7.d.next = self.id6.q.val();
         self.ax7.d.next = self.ax6.q.val();
@@ -1327,22 +1333,32 @@ impl Logic for Screener {
         self.k7.d.next = self.k6.q.val();
         self.clz_n7.d.next = self.clz_n6.q.val();
         self.norm_n7.d.next = self.norm_n6.q.val();
-        self.backward7.d.next = self.backward6.q.val();
-        self.back_facing7.d.next = self.back_facing6.q.val();
-        self.outside7.d.next = self.outside6.q.val();
         self.clz_e7.d.next = self.clz_e6.q.val() | self.ce4_e.val() | self.ce2_e.val() | self.ce1_e.val();
         self.norm_e7.d.next = self.ze5.val();
+        self.backward7.d.next = self.is_backward.val();
+        self.back_facing7.d.next = self.is_back_facing.val();
+        self.ha_pos7.d.next = self.ha_pos.val();
+        self.hb_pos7.d.next = self.hb_pos.val();
+        self.side_f7.d.next = self.side_f.val();
+        self.side_l7.d.next = self.side_l.val();
 
         // Stage 7: the exponent. With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their
         // leading one: the largest sh with nmax·2^sh < 2K is s0 when the normalised nmax is
         // below the normalised 2K, else s0 − 1. It lies in [−17, 31]; below −3 the patch is
-        // near.
+        // near. The outside-the-sector screen: signed comparisons with the margin as unsigned
+        // ones on the sign-flipped values.
         self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
         self.s0_m1.next = self.s0.val() - self.one6.val();
         self.sh.next = self.s0_m1.val();
         if self.norm_n7.q.val() < self.norm_e7.q.val() {
             self.sh.next = self.s0.val();
         }
+        self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
+        self.side_l_x.next = self.side_l7.q.val() ^ self.msb32.val();
+        self.is_outside.next = !self.backward7.q.val()
+            & !self.back_facing7.q.val()
+            & ((self.hb_pos7.q.val() & (self.side_f_x.val() < self.thr_f.val()))
+                | (self.ha_pos7.q.val() & (self.side_l_x.val() > self.thr_l.val())));
         self.v8.d.next = self.v7.q.val();
         self.id8.d.next = self.id7.q.val();
         self.ax8.d.next = self.ax7.q.val();
@@ -1356,7 +1372,7 @@ impl Logic for Screener {
         self.k8.d.next = self.k7.q.val();
         self.backward8.d.next = self.backward7.q.val();
         self.back_facing8.d.next = self.back_facing7.q.val();
-        self.outside8.d.next = self.outside7.q.val();
+        self.outside8.d.next = self.is_outside.val();
         self.exp8.d.next = self.sh.val();
 
         // Stage 8 (VERDICT_LATENCY): the near screen and the verdict, counted; the patch takes

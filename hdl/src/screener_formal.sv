@@ -92,13 +92,12 @@ module screener_formal (
     wire [5:0]  out_sh;
     wire [31:0] passed, backward, back_facing, outside, near;
     // Internal state, exposed by screener.sby for the induction (not ports of the exported
-    // module): the stage valid bits and ids, the screens' registers of stages 6 to 8, the
+    // module): the stage valid bits and ids, the screens' registers of stages 7 and 8, the
     // divider's tag pipeline (3 bits per stage, bit 0: a slot to complete), the credit and FIFO
     // counters and pointers (rd_inc_x: rd_ptr + 1 with bit 0 inverted), and the output FIFO's
     // lanes.
     wire        v1, v2, v3, v4, v5, v6, v7, v8;
-    wire        backward6, back_facing6, outside6, backward7, back_facing7, outside7;
-    wire        backward8, back_facing8, outside8;
+    wire        backward7, back_facing7, backward8, back_facing8, outside8;
     wire [15:0] id1, id2, id3, id4, id5, id6, id7, id8;
     wire [53:0] tgp;
     wire [5:0]  used, done;
@@ -122,8 +121,7 @@ module screener_formal (
         .v8$q(v8),
         .id1$q(id1), .id2$q(id2), .id3$q(id3), .id4$q(id4), .id5$q(id5), .id6$q(id6),
         .id7$q(id7), .id8$q(id8),
-        .backward6$q(backward6), .back_facing6$q(back_facing6), .outside6$q(outside6),
-        .backward7$q(backward7), .back_facing7$q(back_facing7), .outside7$q(outside7),
+        .backward7$q(backward7), .back_facing7$q(back_facing7),
         .backward8$q(backward8), .back_facing8$q(back_facing8), .outside8$q(outside8),
         .divider_tgp(tgp), .used$q(used), .done$q(done),
         .res_ptr$q(res_ptr), .fill_ptr$q(fill_ptr), .rd_ptr$q(rd_ptr), .rd_inc_x$q(rd_inc_x),
@@ -275,10 +273,8 @@ module screener_formal (
                          && v5 == f_sr[5] && v6 == f_sr[6] && v7 == f_sr[7] && v8 == f_sr[8]);
         i_tags: assert(f_tags == f_sr[VERDICT_LATENCY + DIV_LATENCY:VERDICT_LATENCY + 1]);
         // At most one screen's register is set in each stage (the verdict is one of five).
-        i_verdict: assert(!(backward6 && back_facing6) && !(backward6 && outside6)
-                          && !(back_facing6 && outside6)
-                          && !(backward7 && back_facing7) && !(backward7 && outside7)
-                          && !(back_facing7 && outside7)
+        // (The outside screen is decided in stage 7, from the other two's registers.)
+        i_verdict: assert(!(backward7 && back_facing7)
                           && !(backward8 && back_facing8) && !(backward8 && outside8)
                           && !(back_facing8 && outside8));
         i_used: assert(used == f_held[5:0]);

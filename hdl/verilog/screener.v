@@ -232,6 +232,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  negy2$d;
     wire  negy2$q;
     reg  negy2$clock;
+    reg  [17:0] normal_x2$d;
+    wire  [17:0] normal_x2$q;
+    reg  normal_x2$clock;
+    reg  [17:0] normal_y2$d;
+    wire  [17:0] normal_y2$q;
+    reg  normal_y2$clock;
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
@@ -295,36 +301,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  negy4$d;
     wire  negy4$q;
     reg  negy4$clock;
-    reg  [31:0] p_nax4$d;
-    wire  [31:0] p_nax4$q;
-    reg  p_nax4$clock;
-    reg  [31:0] p_nay4$d;
-    wire  [31:0] p_nay4$q;
-    reg  p_nay4$clock;
-    reg  [31:0] p_nbx4$d;
-    wire  [31:0] p_nbx4$q;
-    reg  p_nbx4$clock;
-    reg  [31:0] p_nby4$d;
-    wire  [31:0] p_nby4$q;
-    reg  p_nby4$clock;
     reg  [31:0] p_aby4$d;
     wire  [31:0] p_aby4$q;
     reg  p_aby4$clock;
     reg  [31:0] p_abx4$d;
     wire  [31:0] p_abx4$q;
     reg  p_abx4$clock;
-    reg  [31:0] p_fby4$d;
-    wire  [31:0] p_fby4$q;
-    reg  p_fby4$clock;
-    reg  [31:0] p_fbx4$d;
-    wire  [31:0] p_fbx4$q;
-    reg  p_fbx4$clock;
-    reg  [31:0] p_lay4$d;
-    wire  [31:0] p_lay4$q;
-    reg  p_lay4$clock;
-    reg  [31:0] p_lax4$d;
-    wire  [31:0] p_lax4$q;
-    reg  p_lax4$clock;
     reg  [5:0] clz_n4$d;
     wire  [5:0] clz_n4$q;
     reg  clz_n4$clock;
@@ -361,21 +343,21 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  negy5$d;
     wire  negy5$q;
     reg  negy5$clock;
-    reg  [31:0] ha5$d;
-    wire  [31:0] ha5$q;
-    reg  ha5$clock;
-    reg  [31:0] hb5$d;
-    wire  [31:0] hb5$q;
-    reg  hb5$clock;
     reg  [31:0] k5$d;
     wire  [31:0] k5$q;
     reg  k5$clock;
-    reg  [31:0] side_f5$d;
-    wire  [31:0] side_f5$q;
-    reg  side_f5$clock;
-    reg  [31:0] side_l5$d;
-    wire  [31:0] side_l5$q;
-    reg  side_l5$clock;
+    reg  [31:0] p_nax5$d;
+    wire  [31:0] p_nax5$q;
+    reg  p_nax5$clock;
+    reg  [31:0] p_nay5$d;
+    wire  [31:0] p_nay5$q;
+    reg  p_nay5$clock;
+    reg  [31:0] p_nbx5$d;
+    wire  [31:0] p_nbx5$q;
+    reg  p_nbx5$clock;
+    reg  [31:0] p_nby5$d;
+    wire  [31:0] p_nby5$q;
+    reg  p_nby5$clock;
     reg  [5:0] clz_n5$d;
     wire  [5:0] clz_n5$q;
     reg  clz_n5$clock;
@@ -415,6 +397,24 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] k6$d;
     wire  [31:0] k6$q;
     reg  k6$clock;
+    reg  [31:0] ha6$d;
+    wire  [31:0] ha6$q;
+    reg  ha6$clock;
+    reg  [31:0] hb6$d;
+    wire  [31:0] hb6$q;
+    reg  hb6$clock;
+    reg  [31:0] p_fby6$d;
+    wire  [31:0] p_fby6$q;
+    reg  p_fby6$clock;
+    reg  [31:0] p_fbx6$d;
+    wire  [31:0] p_fbx6$q;
+    reg  p_fbx6$clock;
+    reg  [31:0] p_lay6$d;
+    wire  [31:0] p_lay6$q;
+    reg  p_lay6$clock;
+    reg  [31:0] p_lax6$d;
+    wire  [31:0] p_lax6$q;
+    reg  p_lax6$clock;
     reg  [5:0] clz_n6$d;
     wire  [5:0] clz_n6$q;
     reg  clz_n6$clock;
@@ -427,15 +427,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] norm_e6$d;
     wire  [31:0] norm_e6$q;
     reg  norm_e6$clock;
-    reg  backward6$d;
-    wire  backward6$q;
-    reg  backward6$clock;
-    reg  back_facing6$d;
-    wire  back_facing6$q;
-    reg  back_facing6$clock;
-    reg  outside6$d;
-    wire  outside6$q;
-    reg  outside6$clock;
     reg  v7$d;
     wire  v7$q;
     reg  v7$clock;
@@ -469,6 +460,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] k7$d;
     wire  [31:0] k7$q;
     reg  k7$clock;
+    reg  [31:0] side_f7$d;
+    wire  [31:0] side_f7$q;
+    reg  side_f7$clock;
+    reg  [31:0] side_l7$d;
+    wire  [31:0] side_l7$q;
+    reg  side_l7$clock;
     reg  [5:0] clz_n7$d;
     wire  [5:0] clz_n7$q;
     reg  clz_n7$clock;
@@ -487,9 +484,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  back_facing7$d;
     wire  back_facing7$q;
     reg  back_facing7$clock;
-    reg  outside7$d;
-    wire  outside7$q;
-    reg  outside7$clock;
+    reg  ha_pos7$d;
+    wire  ha_pos7$q;
+    reg  ha_pos7$clock;
+    reg  hb_pos7$d;
+    wire  hb_pos7$q;
+    reg  hb_pos7$clock;
     reg  v8$d;
     wire  v8$q;
     reg  v8$clock;
@@ -598,11 +598,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] cn8_n;
     reg  [15:0] top16_n;
     reg  [7:0] top8_n;
-    reg  [31:0] ha;
-    reg  [31:0] hb;
     reg  [31:0] kk;
-    reg  [31:0] side_f;
-    reg  [31:0] side_l;
     reg  [31:0] zn3;
     reg  [31:0] zn4;
     reg  [31:0] zn5;
@@ -611,13 +607,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] cn1_n;
     reg  [3:0] top4_n;
     reg  [1:0] top2_n;
-    reg  [31:0] side_f_x;
-    reg  [31:0] side_l_x;
-    reg  ha_pos;
-    reg  hb_pos;
-    reg  is_backward;
-    reg  is_back_facing;
-    reg  is_outside;
+    reg  [31:0] ha;
+    reg  [31:0] hb;
     reg  [31:0] k2;
     reg  [31:0] ze0;
     reg  [31:0] ze1;
@@ -634,9 +625,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] ce1_e;
     reg  [3:0] top4_e;
     reg  [1:0] top2_e;
+    reg  ha_pos;
+    reg  hb_pos;
+    reg  is_backward;
+    reg  is_back_facing;
+    reg  [31:0] side_f;
+    reg  [31:0] side_l;
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
     reg  [5:0] sh;
+    reg  [31:0] side_f_x;
+    reg  [31:0] side_l_x;
+    reg  is_outside;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -892,6 +892,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(negy2$q),
         .clock(negy2$clock)
     );
+    screener$normal_x2 normal_x2(
+        .d(normal_x2$d),
+        .q(normal_x2$q),
+        .clock(normal_x2$clock)
+    );
+    screener$normal_y2 normal_y2(
+        .d(normal_y2$d),
+        .q(normal_y2$q),
+        .clock(normal_y2$clock)
+    );
     screener$v3 v3(
         .d(v3$d),
         .q(v3$q),
@@ -997,26 +1007,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(negy4$q),
         .clock(negy4$clock)
     );
-    screener$p_nax4 p_nax4(
-        .d(p_nax4$d),
-        .q(p_nax4$q),
-        .clock(p_nax4$clock)
-    );
-    screener$p_nay4 p_nay4(
-        .d(p_nay4$d),
-        .q(p_nay4$q),
-        .clock(p_nay4$clock)
-    );
-    screener$p_nbx4 p_nbx4(
-        .d(p_nbx4$d),
-        .q(p_nbx4$q),
-        .clock(p_nbx4$clock)
-    );
-    screener$p_nby4 p_nby4(
-        .d(p_nby4$d),
-        .q(p_nby4$q),
-        .clock(p_nby4$clock)
-    );
     screener$p_aby4 p_aby4(
         .d(p_aby4$d),
         .q(p_aby4$q),
@@ -1026,26 +1016,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(p_abx4$d),
         .q(p_abx4$q),
         .clock(p_abx4$clock)
-    );
-    screener$p_fby4 p_fby4(
-        .d(p_fby4$d),
-        .q(p_fby4$q),
-        .clock(p_fby4$clock)
-    );
-    screener$p_fbx4 p_fbx4(
-        .d(p_fbx4$d),
-        .q(p_fbx4$q),
-        .clock(p_fbx4$clock)
-    );
-    screener$p_lay4 p_lay4(
-        .d(p_lay4$d),
-        .q(p_lay4$q),
-        .clock(p_lay4$clock)
-    );
-    screener$p_lax4 p_lax4(
-        .d(p_lax4$d),
-        .q(p_lax4$q),
-        .clock(p_lax4$clock)
     );
     screener$clz_n4 clz_n4(
         .d(clz_n4$d),
@@ -1107,30 +1077,30 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(negy5$q),
         .clock(negy5$clock)
     );
-    screener$ha5 ha5(
-        .d(ha5$d),
-        .q(ha5$q),
-        .clock(ha5$clock)
-    );
-    screener$hb5 hb5(
-        .d(hb5$d),
-        .q(hb5$q),
-        .clock(hb5$clock)
-    );
     screener$k5 k5(
         .d(k5$d),
         .q(k5$q),
         .clock(k5$clock)
     );
-    screener$side_f5 side_f5(
-        .d(side_f5$d),
-        .q(side_f5$q),
-        .clock(side_f5$clock)
+    screener$p_nax5 p_nax5(
+        .d(p_nax5$d),
+        .q(p_nax5$q),
+        .clock(p_nax5$clock)
     );
-    screener$side_l5 side_l5(
-        .d(side_l5$d),
-        .q(side_l5$q),
-        .clock(side_l5$clock)
+    screener$p_nay5 p_nay5(
+        .d(p_nay5$d),
+        .q(p_nay5$q),
+        .clock(p_nay5$clock)
+    );
+    screener$p_nbx5 p_nbx5(
+        .d(p_nbx5$d),
+        .q(p_nbx5$q),
+        .clock(p_nbx5$clock)
+    );
+    screener$p_nby5 p_nby5(
+        .d(p_nby5$d),
+        .q(p_nby5$q),
+        .clock(p_nby5$clock)
     );
     screener$clz_n5 clz_n5(
         .d(clz_n5$d),
@@ -1197,6 +1167,36 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(k6$q),
         .clock(k6$clock)
     );
+    screener$ha6 ha6(
+        .d(ha6$d),
+        .q(ha6$q),
+        .clock(ha6$clock)
+    );
+    screener$hb6 hb6(
+        .d(hb6$d),
+        .q(hb6$q),
+        .clock(hb6$clock)
+    );
+    screener$p_fby6 p_fby6(
+        .d(p_fby6$d),
+        .q(p_fby6$q),
+        .clock(p_fby6$clock)
+    );
+    screener$p_fbx6 p_fbx6(
+        .d(p_fbx6$d),
+        .q(p_fbx6$q),
+        .clock(p_fbx6$clock)
+    );
+    screener$p_lay6 p_lay6(
+        .d(p_lay6$d),
+        .q(p_lay6$q),
+        .clock(p_lay6$clock)
+    );
+    screener$p_lax6 p_lax6(
+        .d(p_lax6$d),
+        .q(p_lax6$q),
+        .clock(p_lax6$clock)
+    );
     screener$clz_n6 clz_n6(
         .d(clz_n6$d),
         .q(clz_n6$q),
@@ -1216,21 +1216,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(norm_e6$d),
         .q(norm_e6$q),
         .clock(norm_e6$clock)
-    );
-    screener$backward6 backward6(
-        .d(backward6$d),
-        .q(backward6$q),
-        .clock(backward6$clock)
-    );
-    screener$back_facing6 back_facing6(
-        .d(back_facing6$d),
-        .q(back_facing6$q),
-        .clock(back_facing6$clock)
-    );
-    screener$outside6 outside6(
-        .d(outside6$d),
-        .q(outside6$q),
-        .clock(outside6$clock)
     );
     screener$v7 v7(
         .d(v7$d),
@@ -1287,6 +1272,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(k7$q),
         .clock(k7$clock)
     );
+    screener$side_f7 side_f7(
+        .d(side_f7$d),
+        .q(side_f7$q),
+        .clock(side_f7$clock)
+    );
+    screener$side_l7 side_l7(
+        .d(side_l7$d),
+        .q(side_l7$q),
+        .clock(side_l7$clock)
+    );
     screener$clz_n7 clz_n7(
         .d(clz_n7$d),
         .q(clz_n7$q),
@@ -1317,10 +1312,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(back_facing7$q),
         .clock(back_facing7$clock)
     );
-    screener$outside7 outside7(
-        .d(outside7$d),
-        .q(outside7$q),
-        .clock(outside7$clock)
+    screener$ha_pos7 ha_pos7(
+        .d(ha_pos7$d),
+        .q(ha_pos7$q),
+        .clock(ha_pos7$clock)
+    );
+    screener$hb_pos7 hb_pos7(
+        .d(hb_pos7$d),
+        .q(hb_pos7$q),
+        .clock(hb_pos7$clock)
     );
     screener$v8 v8(
         .d(v8$d),
@@ -1460,6 +1460,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny2$clock = clock;
         negx2$clock = clock;
         negy2$clock = clock;
+        normal_x2$clock = clock;
+        normal_y2$clock = clock;
         v3$clock = clock;
         id3$clock = clock;
         ax3$clock = clock;
@@ -1481,16 +1483,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny4$clock = clock;
         negx4$clock = clock;
         negy4$clock = clock;
-        p_nax4$clock = clock;
-        p_nay4$clock = clock;
-        p_nbx4$clock = clock;
-        p_nby4$clock = clock;
         p_aby4$clock = clock;
         p_abx4$clock = clock;
-        p_fby4$clock = clock;
-        p_fbx4$clock = clock;
-        p_lay4$clock = clock;
-        p_lax4$clock = clock;
         clz_n4$clock = clock;
         norm_n4$clock = clock;
         v5$clock = clock;
@@ -1503,11 +1497,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny5$clock = clock;
         negx5$clock = clock;
         negy5$clock = clock;
-        ha5$clock = clock;
-        hb5$clock = clock;
         k5$clock = clock;
-        side_f5$clock = clock;
-        side_l5$clock = clock;
+        p_nax5$clock = clock;
+        p_nay5$clock = clock;
+        p_nbx5$clock = clock;
+        p_nby5$clock = clock;
         clz_n5$clock = clock;
         norm_n5$clock = clock;
         v6$clock = clock;
@@ -1521,13 +1515,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx6$clock = clock;
         negy6$clock = clock;
         k6$clock = clock;
+        ha6$clock = clock;
+        hb6$clock = clock;
+        p_fby6$clock = clock;
+        p_fbx6$clock = clock;
+        p_lay6$clock = clock;
+        p_lax6$clock = clock;
         clz_n6$clock = clock;
         norm_n6$clock = clock;
         clz_e6$clock = clock;
         norm_e6$clock = clock;
-        backward6$clock = clock;
-        back_facing6$clock = clock;
-        outside6$clock = clock;
         v7$clock = clock;
         id7$clock = clock;
         ax7$clock = clock;
@@ -1539,13 +1536,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx7$clock = clock;
         negy7$clock = clock;
         k7$clock = clock;
+        side_f7$clock = clock;
+        side_l7$clock = clock;
         clz_n7$clock = clock;
         norm_n7$clock = clock;
         clz_e7$clock = clock;
         norm_e7$clock = clock;
         backward7$clock = clock;
         back_facing7$clock = clock;
-        outside7$clock = clock;
+        ha_pos7$clock = clock;
+        hb_pos7$clock = clock;
         v8$clock = clock;
         id8$clock = clock;
         ax8$clock = clock;
@@ -1589,6 +1589,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny2$d = absny2$q;
         negx2$d = negx2$q;
         negy2$d = negy2$q;
+        normal_x2$d = normal_x2$q;
+        normal_y2$d = normal_y2$q;
         v3$d = v3$q;
         id3$d = id3$q;
         ax3$d = ax3$q;
@@ -1610,16 +1612,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny4$d = absny4$q;
         negx4$d = negx4$q;
         negy4$d = negy4$q;
-        p_nax4$d = p_nax4$q;
-        p_nay4$d = p_nay4$q;
-        p_nbx4$d = p_nbx4$q;
-        p_nby4$d = p_nby4$q;
         p_aby4$d = p_aby4$q;
         p_abx4$d = p_abx4$q;
-        p_fby4$d = p_fby4$q;
-        p_fbx4$d = p_fbx4$q;
-        p_lay4$d = p_lay4$q;
-        p_lax4$d = p_lax4$q;
         clz_n4$d = clz_n4$q;
         norm_n4$d = norm_n4$q;
         v5$d = v5$q;
@@ -1632,11 +1626,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny5$d = absny5$q;
         negx5$d = negx5$q;
         negy5$d = negy5$q;
-        ha5$d = ha5$q;
-        hb5$d = hb5$q;
         k5$d = k5$q;
-        side_f5$d = side_f5$q;
-        side_l5$d = side_l5$q;
+        p_nax5$d = p_nax5$q;
+        p_nay5$d = p_nay5$q;
+        p_nbx5$d = p_nbx5$q;
+        p_nby5$d = p_nby5$q;
         clz_n5$d = clz_n5$q;
         norm_n5$d = norm_n5$q;
         v6$d = v6$q;
@@ -1650,13 +1644,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx6$d = negx6$q;
         negy6$d = negy6$q;
         k6$d = k6$q;
+        ha6$d = ha6$q;
+        hb6$d = hb6$q;
+        p_fby6$d = p_fby6$q;
+        p_fbx6$d = p_fbx6$q;
+        p_lay6$d = p_lay6$q;
+        p_lax6$d = p_lax6$q;
         clz_n6$d = clz_n6$q;
         norm_n6$d = norm_n6$q;
         clz_e6$d = clz_e6$q;
         norm_e6$d = norm_e6$q;
-        backward6$d = backward6$q;
-        back_facing6$d = back_facing6$q;
-        outside6$d = outside6$q;
         v7$d = v7$q;
         id7$d = id7$q;
         ax7$d = ax7$q;
@@ -1668,13 +1665,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx7$d = negx7$q;
         negy7$d = negy7$q;
         k7$d = k7$q;
+        side_f7$d = side_f7$q;
+        side_l7$d = side_l7$q;
         clz_n7$d = clz_n7$q;
         norm_n7$d = norm_n7$q;
         clz_e7$d = clz_e7$q;
         norm_e7$d = norm_e7$q;
         backward7$d = backward7$q;
         back_facing7$d = back_facing7$q;
-        outside7$d = outside7$q;
+        ha_pos7$d = ha_pos7$q;
+        hb_pos7$d = hb_pos7$q;
         v8$d = v8$q;
         id8$d = id8$q;
         ax8$d = ax8$q;
@@ -1729,26 +1729,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         ay1$d = ext_ay - ext_oy;
         bx1$d = ext_bx - ext_ox;
         by1$d = ext_by - ext_oy;
-        m_nax$a = normal_x;
-        m_nax$b = ax1$q;
-        m_nay$a = normal_y;
-        m_nay$b = ay1$q;
-        m_nbx$a = normal_x;
-        m_nbx$b = bx1$q;
-        m_nby$a = normal_y;
-        m_nby$b = by1$q;
         m_aby$a = ax1$q;
         m_aby$b = by1$q;
         m_abx$a = ay1$q;
         m_abx$b = bx1$q;
-        m_fby$a = first_x;
-        m_fby$b = by1$q;
-        m_fbx$a = first_y;
-        m_fbx$b = bx1$q;
-        m_lay$a = last_x;
-        m_lay$b = ay1$q;
-        m_lax$a = last_y;
-        m_lax$b = ax1$q;
         nx = by1$q - ay1$q;
         ny = ax1$q - bx1$q;
         nx_neg = ay1$q - by1$q;
@@ -1771,6 +1755,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny2$d = absny;
         negx2$d = nx[32'h11];
         negy2$d = ny[32'h11];
+        normal_x2$d = normal_x;
+        normal_y2$d = normal_y;
+        m_nax$a = normal_x;
+        m_nax$b = ax2$q;
+        m_nay$a = normal_y;
+        m_nay$b = ay2$q;
+        m_nbx$a = normal_x2$q;
+        m_nbx$b = bx2$q;
+        m_nby$a = normal_y2$q;
+        m_nby$b = by2$q;
         nmax = absny2$q;
         if (absnx2$q > absny2$q) begin
             nmax = absnx2$q;
@@ -1786,16 +1780,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx3$d = negx2$q;
         negy3$d = negy2$q;
         nmax3$d = nmax;
-        p_nax4$d = m_nax$p;
-        p_nay4$d = m_nay$p;
-        p_nbx4$d = m_nbx$p;
-        p_nby4$d = m_nby$p;
+        m_fby$a = first_x;
+        m_fby$b = by3$q;
+        m_fbx$a = first_y;
+        m_fbx$b = bx3$q;
+        m_lay$a = last_x;
+        m_lay$b = ay3$q;
+        m_lax$a = last_y;
+        m_lax$b = ax3$q;
         p_aby4$d = m_aby$p;
         p_abx4$d = m_abx$p;
-        p_fby4$d = m_fby$p;
-        p_fbx4$d = m_fbx$p;
-        p_lay4$d = m_lay$p;
-        p_lax4$d = m_lax$p;
         zn0 = ((nmax3$q) & 32'hffffffff);
         top16_n = zn0[(32'h10)+:(16)];
         zn1 = zn0;
@@ -1823,11 +1817,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negy4$d = negy3$q;
         clz_n4$d = cn16_n | cn8_n;
         norm_n4$d = zn2;
-        ha = p_nax4$q + p_nay4$q;
-        hb = p_nbx4$q + p_nby4$q;
         kk = p_aby4$q - p_abx4$q;
-        side_f = p_fby4$q - p_fbx4$q;
-        side_l = p_lay4$q - p_lax4$q;
+        p_nax5$d = m_nax$p;
+        p_nay5$d = m_nay$p;
+        p_nbx5$d = m_nbx$p;
+        p_nby5$d = m_nby$p;
         top4_n = norm_n4$q[(32'h1c)+:(4)];
         zn3 = norm_n4$q;
         cn4_n = zero6;
@@ -1858,20 +1852,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny5$d = absny4$q;
         negx5$d = negx4$q;
         negy5$d = negy4$q;
-        ha5$d = ha;
-        hb5$d = hb;
         k5$d = kk;
-        side_f5$d = side_f;
-        side_l5$d = side_l;
         clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
         norm_n5$d = zn5;
-        side_f_x = side_f5$q ^ msb32;
-        side_l_x = side_l5$q ^ msb32;
-        ha_pos = ~ha5$q[32'h1f] & (ha5$q != zero32);
-        hb_pos = ~hb5$q[32'h1f] & (hb5$q != zero32);
-        is_backward = ~ha_pos & ~hb_pos;
-        is_back_facing = ~is_backward & (k5$q[32'h1f] | (k5$q == zero32));
-        is_outside = ~is_backward & ~is_back_facing & ((hb_pos & (side_f_x < thr_f)) | (ha_pos & (side_l_x > thr_l)));
         k2 = k5$q << sh1;
         ze0 = k2;
         top16_e = ze0[(32'h10)+:(16)];
@@ -1888,6 +1871,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             ze2 = ze1 << sh8;
             ce8_e = c8_6;
         end
+        ha = p_nax5$q + p_nay5$q;
+        hb = p_nbx5$q + p_nby5$q;
+        p_fby6$d = m_fby$p;
+        p_fbx6$d = m_fbx$p;
+        p_lay6$d = m_lay$p;
+        p_lax6$d = m_lax$p;
         v6$d = v5$q;
         id6$d = id5$q;
         ax6$d = ax5$q;
@@ -1899,13 +1888,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx6$d = negx5$q;
         negy6$d = negy5$q;
         k6$d = k5$q;
+        ha6$d = ha;
+        hb6$d = hb;
         clz_n6$d = clz_n5$q;
         norm_n6$d = norm_n5$q;
         clz_e6$d = ce16_e | ce8_e;
         norm_e6$d = ze2;
-        backward6$d = is_backward;
-        back_facing6$d = is_back_facing;
-        outside6$d = is_outside;
         top4_e = norm_e6$q[(32'h1c)+:(4)];
         ze3 = norm_e6$q;
         ce4_e = zero6;
@@ -1926,6 +1914,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             ze5 = ze4 << sh1;
             ce1_e = c1_6;
         end
+        ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
+        hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
+        is_backward = ~ha_pos & ~hb_pos;
+        is_back_facing = ~is_backward & (k6$q[32'h1f] | (k6$q == zero32));
+        side_f = p_fby6$q - p_fbx6$q;
+        side_l = p_lay6$q - p_lax6$q;
         v7$d = v6$q;
         id7$d = id6$q;
         ax7$d = ax6$q;
@@ -1939,17 +1933,23 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
         norm_n7$d = norm_n6$q;
-        backward7$d = backward6$q;
-        back_facing7$d = back_facing6$q;
-        outside7$d = outside6$q;
         clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
         norm_e7$d = ze5;
+        backward7$d = is_backward;
+        back_facing7$d = is_back_facing;
+        ha_pos7$d = ha_pos;
+        hb_pos7$d = hb_pos;
+        side_f7$d = side_f;
+        side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
         s0_m1 = s0 - one6;
         sh = s0_m1;
         if (norm_n7$q < norm_e7$q) begin
             sh = s0;
         end
+        side_f_x = side_f7$q ^ msb32;
+        side_l_x = side_l7$q ^ msb32;
+        is_outside = ~backward7$q & ~back_facing7$q & ((hb_pos7$q & (side_f_x < thr_f)) | (ha_pos7$q & (side_l_x > thr_l)));
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -1963,7 +1963,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
-        outside8$d = outside7$q;
+        outside8$d = is_outside;
         exp8$d = sh;
         sh5 = exp8$q[(32'h0)+:(5)];
         is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
@@ -2699,25 +2699,6 @@ module screener$ay8(d,q,clock);
 endmodule // screener$ay8
 
 
-module screener$back_facing6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$back_facing6
-
-
 module screener$back_facing7(d,q,clock);
     
     // Module arguments
@@ -2754,25 +2735,6 @@ module screener$back_facing8(d,q,clock);
     end
           
 endmodule // screener$back_facing8
-
-
-module screener$backward6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$backward6
 
 
 module screener$backward7(d,q,clock);
@@ -3459,7 +3421,7 @@ module screener$fill_ptr(d,q,clock);
 endmodule // screener$fill_ptr
 
 
-module screener$ha5(d,q,clock);
+module screener$ha6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3475,10 +3437,29 @@ module screener$ha5(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$ha5
+endmodule // screener$ha6
 
 
-module screener$hb5(d,q,clock);
+module screener$ha_pos7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ha_pos7
+
+
+module screener$hb6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -3494,7 +3475,26 @@ module screener$hb5(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$hb5
+endmodule // screener$hb6
+
+
+module screener$hb_pos7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$hb_pos7
 
 
 module screener$head_valid(d,q,clock);
@@ -4611,42 +4611,42 @@ module screener$norm_n7(d,q,clock);
 endmodule // screener$norm_n7
 
 
-module screener$outside6(d,q,clock);
+module screener$normal_x2(d,q,clock);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 18'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // screener$outside6
+endmodule // screener$normal_x2
 
 
-module screener$outside7(d,q,clock);
+module screener$normal_y2(d,q,clock);
     
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 18'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // screener$outside7
+endmodule // screener$normal_y2
 
 
 module screener$outside8(d,q,clock);
@@ -4706,7 +4706,7 @@ module screener$p_aby4(d,q,clock);
 endmodule // screener$p_aby4
 
 
-module screener$p_fbx4(d,q,clock);
+module screener$p_fbx6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4722,10 +4722,10 @@ module screener$p_fbx4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_fbx4
+endmodule // screener$p_fbx6
 
 
-module screener$p_fby4(d,q,clock);
+module screener$p_fby6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4741,10 +4741,10 @@ module screener$p_fby4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_fby4
+endmodule // screener$p_fby6
 
 
-module screener$p_lax4(d,q,clock);
+module screener$p_lax6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4760,10 +4760,10 @@ module screener$p_lax4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_lax4
+endmodule // screener$p_lax6
 
 
-module screener$p_lay4(d,q,clock);
+module screener$p_lay6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4779,10 +4779,10 @@ module screener$p_lay4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_lay4
+endmodule // screener$p_lay6
 
 
-module screener$p_nax4(d,q,clock);
+module screener$p_nax5(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4798,10 +4798,10 @@ module screener$p_nax4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_nax4
+endmodule // screener$p_nax5
 
 
-module screener$p_nay4(d,q,clock);
+module screener$p_nay5(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4817,10 +4817,10 @@ module screener$p_nay4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_nay4
+endmodule // screener$p_nay5
 
 
-module screener$p_nbx4(d,q,clock);
+module screener$p_nbx5(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4836,10 +4836,10 @@ module screener$p_nbx4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_nbx4
+endmodule // screener$p_nbx5
 
 
-module screener$p_nby4(d,q,clock);
+module screener$p_nby5(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4855,7 +4855,7 @@ module screener$p_nby4(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$p_nby4
+endmodule // screener$p_nby5
 
 
 module screener$rd_inc_x(d,q,clock);
@@ -4915,7 +4915,7 @@ module screener$res_ptr(d,q,clock);
 endmodule // screener$res_ptr
 
 
-module screener$side_f5(d,q,clock);
+module screener$side_f7(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4931,10 +4931,10 @@ module screener$side_f5(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$side_f5
+endmodule // screener$side_f7
 
 
-module screener$side_l5(d,q,clock);
+module screener$side_l7(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4950,7 +4950,7 @@ module screener$side_l5(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$side_l5
+endmodule // screener$side_l7
 
 
 module screener$used(d,q,clock);
