@@ -56,22 +56,42 @@
 //! The pipeline never stalls; a patch accepted in cycle `a` is in stage `s` in cycle `a + s`:
 //!
 //! * stage 0: acceptance; the coordinates relative to the origin are registered;
-//! * stage 1: the ten products start ([`Mul18`] leaves, latency 2, one DSP each);
-//!   `n = (b.y − a.y, a.x − b.x)`, `|n_c|`, `nmax`;
-//! * stage 2: the leading zeros of `nmax` (five conditional shifts);
-//! * stage 3: the products arrive: `dot(n_s, a)`, `dot(n_s, b)`, `K`, the side values against the
-//!   sector's edges; the backward, back-facing and outside-the-sector screens; the leading zeros
-//!   of `2K`;
-//! * stage 4 ([`VERDICT_LATENCY`]): the exponent `sh` (from the two leading-zero counts and one
-//!   comparison), the near screen and the verdict, counted. The patch takes the next slot of the
-//!   output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters the divider with its
-//!   initial remainders `floor(|n_c|·2^sh)`;
-//! * stages 5–22: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
+//! * stage 1: the products start ([`Mul18`] leaves, latency 2, one DSP each), in three groups
+//!   one stage apart so that no operand register drives two multipliers: the two of `K` now;
+//!   `n = (b.y − a.y, a.x − b.x)` and `|n_c|` (each negation as the reversed difference, in
+//!   parallel with it);
+//! * stage 2: the four products of `dot(n_s, a)` and `dot(n_s, b)` start;
+//!   `nmax = max(|n_x|, |n_y|)`;
+//! * stage 3: the four side products (against the sector's edges) start; the products of `K`
+//!   arrive and are registered once more, as they are (the multiplier's product register
+//!   drives that register only); the leading zeros of `nmax`, first two of five conditional
+//!   shifts (16, 8);
+//! * stage 4: `K`; the products of the dot products arrive; the last three shifts of `nmax`
+//!   (4, 2, 1);
+//! * stage 5: the leading zeros of `2K`, first two shifts; `dot(n_s, a)`, `dot(n_s, b)`; the
+//!   side products arrive;
+//! * stage 6: the last three shifts of `2K`; the backward and back-facing screens; the side
+//!   values;
+//! * stage 7: the exponent `sh` (from the two leading-zero counts and one comparison of the
+//!   normalised values); the outside-the-sector screen;
+//! * stage 8 ([`VERDICT_LATENCY`]): the near screen and the verdict, counted. The patch takes
+//!   the next slot of the output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters
+//!   the divider with its initial remainders `floor(|n_c|·2^sh)`;
+//! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
 //!   `K`, one stage per quotient bit ([`DIV_STEPS`](crate::leaf::DIV_STEPS) = 17 steps of a
-//!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 22
+//!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 26
 //!   `W = sign(n)·q` completes the patch's slot;
-//! * stages 23–24: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
-//!   (24) and leaves then if `out_ready` is high.
+//! * stages 27–28: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
+//!   (28) and leaves then if `out_ready` is high.
+//!
+//! The stages are cut for an ECP5 (LFE5U-85F, speed grade 6) clock of 150 MHz: at most one
+//! carry chain, or two or three conditional shifts, between registers; `rd_ptr + 1` is kept in a
+//! register so that the output FIFO's read address is one multiplexer after `out_ready`. Measured
+//! (`cargo xtask fpga --blocks screener --families ecp5`) the block reaches about 125 MHz: every
+//! remaining slow path is a multiplier's, from its operand register through the `MULT18X18D`
+//! (3.9 ns combinational: Yosys maps the product without the DSP's own registers) to its product
+//! register, 1.3–2.2 ns of routing on either side. Reaching 150 MHz needs the DSP's input and
+//! output registers, that is a `MULT18X18D` instantiated in [`Mul18`].
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
@@ -81,8 +101,8 @@
 //!
 //! The [`Mul18`] and divider stages have no clock enable, so the pipeline cannot stall; instead
 //! nothing is accepted that could not be stored. The output FIFO has [`DEPTH`] (32) slots in
-//! eight [`Bram`] lanes (LUT RAM) sharing one read pointer: the slot is reserved in stage 4 and
-//! completed in stage 22 (a second write pointer suffices, the divider's latency being fixed).
+//! eight [`Bram`] lanes (LUT RAM) sharing one read pointer: the slot is reserved in stage 8 and
+//! completed in stage 26 (a second write pointer suffices, the divider's latency being fixed).
 //! A credit counter counts the patches in flight: it is incremented when a patch is accepted and
 //! decremented when it leaves. A patch is accepted only while the count is below [`DEPTH`], so
 //! every patch in the pipeline has a slot waiting for it: nothing is dropped, and backpressure
@@ -90,13 +110,13 @@
 //!
 //! # Latency and throughput
 //!
-//! Without backpressure a patch accepted in cycle `a` is counted in cycle `a + 4` and leaves in
-//! cycle `a + 24` ([`LATENCY`]). A credit is taken in the cycle of acceptance and returned in
-//! the cycle of the transfer out (held 25 cycles); a returned credit can be taken again the next
-//! cycle. With `DEPTH = 32 ≥ 25` the screener therefore accepts one patch per clock (II = 1)
+//! Without backpressure a patch accepted in cycle `a` is counted in cycle `a + 8` and leaves in
+//! cycle `a + 28` ([`LATENCY`]). A credit is taken in the cycle of acceptance and returned in
+//! the cycle of the transfer out (held 29 cycles); a returned credit can be taken again the next
+//! cycle. With `DEPTH = 32 ≥ 29` the screener therefore accepts one patch per clock (II = 1)
 //! for any mix of verdicts, as long as the output is not backpressured. The cycle counts of an
 //! unstalled stream are [`model::unstalled_cycles`]: `N` patches offered back to back take
-//! `N + 24` cycles. Under sustained backpressure the screener holds 32 patches and takes no
+//! `N + 28` cycles. Under sustained backpressure the screener holds 32 patches and takes no
 //! more until one leaves.
 //!
 //! # Models
@@ -104,7 +124,7 @@
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
 //! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 72 `TRELLIS_DPR16X4` (the
-//! FIFO), about 2400 LUT4, 900 `CCU2C` carry cells and 3400 flip-flops, of which the divider
+//! FIFO), about 2300 LUT4, 900 `CCU2C` carry cells and 4600 flip-flops, of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` and 2000 flip-flops.
 
 use crate::formats::{cross, dot, SECTOR_MARGIN, SH_MAX, SH_MIN};
@@ -230,7 +250,7 @@ pub mod model {
     }
 
     /// Cycles (rising edges) until every patch has left, under the conditions of
-    /// [`accept_cycles`]: `N + LATENCY` (`N + 24`), with patch `k` accepted in cycle `k`.
+    /// [`accept_cycles`]: `N + LATENCY` (`N + 28`), with patch `k` accepted in cycle `k`.
     pub fn unstalled_cycles(n: usize) -> u64 {
         output_cycles(n).last().map_or(0, |c| c + 1)
     }
@@ -242,11 +262,11 @@ pub mod model {
 
 /// Pipeline stage of the verdict: a patch accepted in cycle `a` is decided and counted in cycle
 /// `a + VERDICT_LATENCY` (the counters show it from the next cycle on).
-pub const VERDICT_LATENCY: u64 = 4;
+pub const VERDICT_LATENCY: u64 = 8;
 /// Clocks from a patch's acceptance to its setup on the output: a patch accepted in
 /// cycle `a` is presented (`out_valid`) from cycle `a + LATENCY` on; with `out_ready` high it
 /// leaves in that cycle. The verdict, the divider ([`DIV_LATENCY`]) and the output FIFO's write
-/// and registered read: `4 + 18 + 2`.
+/// and registered read: `8 + 18 + 2`.
 pub const LATENCY: u64 = VERDICT_LATENCY + DIV_LATENCY + 2;
 /// Output FIFO capacity in patches, and the credit limit: a patch is accepted only while fewer
 /// than `DEPTH` patches are in flight (accepted and not yet out).
@@ -301,6 +321,7 @@ pub struct Screener {
     res_ptr: DFF<Bits<5>>,
     fill_ptr: DFF<Bits<5>>,
     rd_ptr: DFF<Bits<5>>,
+    rd_inc_x: DFF<Bits<5>>,
     head_valid: DFF<bool>,
     lane_id: Bram<16, 5>,
     lane_ax: Bram<18, 5>,
@@ -325,6 +346,7 @@ pub struct Screener {
     res_inc: Signal<Local, Bits<5>>,
     fill_inc: Signal<Local, Bits<5>>,
     rd_inc: Signal<Local, Bits<5>>,
+    rd_inc2: Signal<Local, Bits<5>>,
     rd_addr: Signal<Local, Bits<5>>,
     // Stage 0: coordinates relative to the origin.
     ext_ox: Signal<Local, Bits<18>>,
@@ -333,7 +355,7 @@ pub struct Screener {
     ext_ay: Signal<Local, Bits<18>>,
     ext_bx: Signal<Local, Bits<18>>,
     ext_by: Signal<Local, Bits<18>>,
-    // Stage 1: the products start; n, |n| and nmax.
+    // Stage 1: the products of K start; n and |n|.
     v1: DFF<bool>,
     id1: DFF<Bits<16>>,
     ax1: DFF<Bits<18>>,
@@ -356,8 +378,7 @@ pub struct Screener {
     ny_neg: Signal<Local, Bits<18>>,
     absnx: Signal<Local, Bits<18>>,
     absny: Signal<Local, Bits<18>>,
-    nmax: Signal<Local, Bits<18>>,
-    // Stage 2: the leading zeros of nmax (five conditional shifts).
+    // Stage 2: the products of dot(n_s, a), dot(n_s, b) start; nmax.
     v2: DFF<bool>,
     id2: DFF<Bits<16>>,
     ax2: DFF<Bits<18>>,
@@ -368,23 +389,10 @@ pub struct Screener {
     absny2: DFF<Bits<18>>,
     negx2: DFF<bool>,
     negy2: DFF<bool>,
-    nmax2: DFF<Bits<18>>,
-    zn0: Signal<Local, Bits<32>>,
-    zn1: Signal<Local, Bits<32>>,
-    zn2: Signal<Local, Bits<32>>,
-    zn3: Signal<Local, Bits<32>>,
-    zn4: Signal<Local, Bits<32>>,
-    zn5: Signal<Local, Bits<32>>,
-    cn16_n: Signal<Local, Bits<6>>,
-    cn8_n: Signal<Local, Bits<6>>,
-    cn4_n: Signal<Local, Bits<6>>,
-    cn2_n: Signal<Local, Bits<6>>,
-    cn1_n: Signal<Local, Bits<6>>,
-    top16_n: Signal<Local, Bits<16>>,
-    top8_n: Signal<Local, Bits<8>>,
-    top4_n: Signal<Local, Bits<4>>,
-    top2_n: Signal<Local, Bits<2>>,
-    // Stage 3: the products arrive: sums, the screens, the leading zeros of 2K.
+    normal_x2: DFF<Bits<18>>,
+    normal_y2: DFF<Bits<18>>,
+    nmax: Signal<Local, Bits<18>>,
+    // Stage 3: the side products start; those of K arrive; the first two shifts of clz(nmax).
     v3: DFF<bool>,
     id3: DFF<Bits<16>>,
     ax3: DFF<Bits<18>>,
@@ -395,37 +403,15 @@ pub struct Screener {
     absny3: DFF<Bits<18>>,
     negx3: DFF<bool>,
     negy3: DFF<bool>,
-    clz_n3: DFF<Bits<6>>,
-    norm_n3: DFF<Bits<32>>,
-    ha: Signal<Local, Bits<32>>,
-    hb: Signal<Local, Bits<32>>,
-    kk: Signal<Local, Bits<32>>,
-    side_f: Signal<Local, Bits<32>>,
-    side_l: Signal<Local, Bits<32>>,
-    side_f_x: Signal<Local, Bits<32>>,
-    side_l_x: Signal<Local, Bits<32>>,
-    ha_pos: Signal<Local, bool>,
-    hb_pos: Signal<Local, bool>,
-    is_backward: Signal<Local, bool>,
-    is_back_facing: Signal<Local, bool>,
-    is_outside: Signal<Local, bool>,
-    k2: Signal<Local, Bits<32>>,
-    ze0: Signal<Local, Bits<32>>,
-    ze1: Signal<Local, Bits<32>>,
-    ze2: Signal<Local, Bits<32>>,
-    ze3: Signal<Local, Bits<32>>,
-    ze4: Signal<Local, Bits<32>>,
-    ze5: Signal<Local, Bits<32>>,
-    ce16_e: Signal<Local, Bits<6>>,
-    ce8_e: Signal<Local, Bits<6>>,
-    ce4_e: Signal<Local, Bits<6>>,
-    ce2_e: Signal<Local, Bits<6>>,
-    ce1_e: Signal<Local, Bits<6>>,
-    top16_e: Signal<Local, Bits<16>>,
-    top8_e: Signal<Local, Bits<8>>,
-    top4_e: Signal<Local, Bits<4>>,
-    top2_e: Signal<Local, Bits<2>>,
-    // Stage 4: the verdict, the exponent, the divider's inputs; the patch takes a slot.
+    nmax3: DFF<Bits<18>>,
+    zn0: Signal<Local, Bits<32>>,
+    zn1: Signal<Local, Bits<32>>,
+    zn2: Signal<Local, Bits<32>>,
+    cn16_n: Signal<Local, Bits<6>>,
+    cn8_n: Signal<Local, Bits<6>>,
+    top16_n: Signal<Local, Bits<16>>,
+    top8_n: Signal<Local, Bits<8>>,
+    // Stage 4: K; the products of dot(n_s, a), dot(n_s, b) arrive; the last three shifts of clz(nmax).
     v4: DFF<bool>,
     id4: DFF<Bits<16>>,
     ax4: DFF<Bits<18>>,
@@ -436,17 +422,127 @@ pub struct Screener {
     absny4: DFF<Bits<18>>,
     negx4: DFF<bool>,
     negy4: DFF<bool>,
+    p_aby4: DFF<Bits<32>>,
+    p_abx4: DFF<Bits<32>>,
     clz_n4: DFF<Bits<6>>,
     norm_n4: DFF<Bits<32>>,
-    k4: DFF<Bits<32>>,
-    clz_e4: DFF<Bits<6>>,
-    norm_e4: DFF<Bits<32>>,
-    backward4: DFF<bool>,
-    back_facing4: DFF<bool>,
-    outside4: DFF<bool>,
+    kk: Signal<Local, Bits<32>>,
+    zn3: Signal<Local, Bits<32>>,
+    zn4: Signal<Local, Bits<32>>,
+    zn5: Signal<Local, Bits<32>>,
+    cn4_n: Signal<Local, Bits<6>>,
+    cn2_n: Signal<Local, Bits<6>>,
+    cn1_n: Signal<Local, Bits<6>>,
+    top4_n: Signal<Local, Bits<4>>,
+    top2_n: Signal<Local, Bits<2>>,
+    // Stage 5: the first two shifts of clz(2K); the dot products; the side products arrive.
+    v5: DFF<bool>,
+    id5: DFF<Bits<16>>,
+    ax5: DFF<Bits<18>>,
+    ay5: DFF<Bits<18>>,
+    bx5: DFF<Bits<18>>,
+    by5: DFF<Bits<18>>,
+    absnx5: DFF<Bits<18>>,
+    absny5: DFF<Bits<18>>,
+    negx5: DFF<bool>,
+    negy5: DFF<bool>,
+    k5: DFF<Bits<32>>,
+    p_nax5: DFF<Bits<32>>,
+    p_nay5: DFF<Bits<32>>,
+    p_nbx5: DFF<Bits<32>>,
+    p_nby5: DFF<Bits<32>>,
+    clz_n5: DFF<Bits<6>>,
+    norm_n5: DFF<Bits<32>>,
+    ha: Signal<Local, Bits<32>>,
+    hb: Signal<Local, Bits<32>>,
+    k2: Signal<Local, Bits<32>>,
+    ze0: Signal<Local, Bits<32>>,
+    ze1: Signal<Local, Bits<32>>,
+    ze2: Signal<Local, Bits<32>>,
+    ce16_e: Signal<Local, Bits<6>>,
+    ce8_e: Signal<Local, Bits<6>>,
+    top16_e: Signal<Local, Bits<16>>,
+    top8_e: Signal<Local, Bits<8>>,
+    // Stage 6: the last three shifts of clz(2K); the backward and back-facing screens; the side values.
+    v6: DFF<bool>,
+    id6: DFF<Bits<16>>,
+    ax6: DFF<Bits<18>>,
+    ay6: DFF<Bits<18>>,
+    bx6: DFF<Bits<18>>,
+    by6: DFF<Bits<18>>,
+    absnx6: DFF<Bits<18>>,
+    absny6: DFF<Bits<18>>,
+    negx6: DFF<bool>,
+    negy6: DFF<bool>,
+    k6: DFF<Bits<32>>,
+    ha6: DFF<Bits<32>>,
+    hb6: DFF<Bits<32>>,
+    p_fby6: DFF<Bits<32>>,
+    p_fbx6: DFF<Bits<32>>,
+    p_lay6: DFF<Bits<32>>,
+    p_lax6: DFF<Bits<32>>,
+    clz_n6: DFF<Bits<6>>,
+    norm_n6: DFF<Bits<32>>,
+    clz_e6: DFF<Bits<6>>,
+    norm_e6: DFF<Bits<32>>,
+    ze3: Signal<Local, Bits<32>>,
+    ze4: Signal<Local, Bits<32>>,
+    ze5: Signal<Local, Bits<32>>,
+    ce4_e: Signal<Local, Bits<6>>,
+    ce2_e: Signal<Local, Bits<6>>,
+    ce1_e: Signal<Local, Bits<6>>,
+    top4_e: Signal<Local, Bits<4>>,
+    top2_e: Signal<Local, Bits<2>>,
+    ha_pos: Signal<Local, bool>,
+    hb_pos: Signal<Local, bool>,
+    is_backward: Signal<Local, bool>,
+    is_back_facing: Signal<Local, bool>,
+    side_f: Signal<Local, Bits<32>>,
+    side_l: Signal<Local, Bits<32>>,
+    // Stage 7: the exponent; the outside-the-sector screen.
+    v7: DFF<bool>,
+    id7: DFF<Bits<16>>,
+    ax7: DFF<Bits<18>>,
+    ay7: DFF<Bits<18>>,
+    bx7: DFF<Bits<18>>,
+    by7: DFF<Bits<18>>,
+    absnx7: DFF<Bits<18>>,
+    absny7: DFF<Bits<18>>,
+    negx7: DFF<bool>,
+    negy7: DFF<bool>,
+    k7: DFF<Bits<32>>,
+    side_f7: DFF<Bits<32>>,
+    side_l7: DFF<Bits<32>>,
+    clz_n7: DFF<Bits<6>>,
+    norm_n7: DFF<Bits<32>>,
+    clz_e7: DFF<Bits<6>>,
+    norm_e7: DFF<Bits<32>>,
+    backward7: DFF<bool>,
+    back_facing7: DFF<bool>,
+    ha_pos7: DFF<bool>,
+    hb_pos7: DFF<bool>,
     s0: Signal<Local, Bits<6>>,
     s0_m1: Signal<Local, Bits<6>>,
     sh: Signal<Local, Bits<6>>,
+    side_f_x: Signal<Local, Bits<32>>,
+    side_l_x: Signal<Local, Bits<32>>,
+    is_outside: Signal<Local, bool>,
+    // Stage 8: the verdict, the divider's inputs; the patch takes a slot.
+    v8: DFF<bool>,
+    id8: DFF<Bits<16>>,
+    ax8: DFF<Bits<18>>,
+    ay8: DFF<Bits<18>>,
+    bx8: DFF<Bits<18>>,
+    by8: DFF<Bits<18>>,
+    absnx8: DFF<Bits<18>>,
+    absny8: DFF<Bits<18>>,
+    negx8: DFF<bool>,
+    negy8: DFF<bool>,
+    k8: DFF<Bits<32>>,
+    exp8: DFF<Bits<6>>,
+    backward8: DFF<bool>,
+    back_facing8: DFF<bool>,
+    outside8: DFF<bool>,
     sh5: Signal<Local, Bits<5>>,
     is_near: Signal<Local, bool>,
     is_pass: Signal<Local, bool>,
@@ -457,7 +553,7 @@ pub struct Screener {
     tag_p: Signal<Local, Bits<3>>,
     tag_x: Signal<Local, Bits<3>>,
     tag_y: Signal<Local, Bits<3>>,
-    // Stages 5–22: the divider; stage 22 writes W into the patch's slot.
+    // Stages 9–26: the divider; stage 26 writes W into the patch's slot.
     divider: PipeDivider,
     qx18: Signal<Local, Bits<18>>,
     qy18: Signal<Local, Bits<18>>,
@@ -548,6 +644,7 @@ impl Default for Screener {
             res_ptr: Default::default(),
             fill_ptr: Default::default(),
             rd_ptr: Default::default(),
+            rd_inc_x: Default::default(),
             head_valid: Default::default(),
             lane_id: Default::default(),
             lane_ax: Default::default(),
@@ -572,6 +669,7 @@ impl Default for Screener {
             res_inc: Default::default(),
             fill_inc: Default::default(),
             rd_inc: Default::default(),
+            rd_inc2: Default::default(),
             rd_addr: Default::default(),
             ext_ox: Default::default(),
             ext_oy: Default::default(),
@@ -601,7 +699,6 @@ impl Default for Screener {
             ny_neg: Default::default(),
             absnx: Default::default(),
             absny: Default::default(),
-            nmax: Default::default(),
             v2: Default::default(),
             id2: Default::default(),
             ax2: Default::default(),
@@ -612,22 +709,9 @@ impl Default for Screener {
             absny2: Default::default(),
             negx2: Default::default(),
             negy2: Default::default(),
-            nmax2: Default::default(),
-            zn0: Default::default(),
-            zn1: Default::default(),
-            zn2: Default::default(),
-            zn3: Default::default(),
-            zn4: Default::default(),
-            zn5: Default::default(),
-            cn16_n: Default::default(),
-            cn8_n: Default::default(),
-            cn4_n: Default::default(),
-            cn2_n: Default::default(),
-            cn1_n: Default::default(),
-            top16_n: Default::default(),
-            top8_n: Default::default(),
-            top4_n: Default::default(),
-            top2_n: Default::default(),
+            normal_x2: Default::default(),
+            normal_y2: Default::default(),
+            nmax: Default::default(),
             v3: Default::default(),
             id3: Default::default(),
             ax3: Default::default(),
@@ -638,36 +722,14 @@ impl Default for Screener {
             absny3: Default::default(),
             negx3: Default::default(),
             negy3: Default::default(),
-            clz_n3: Default::default(),
-            norm_n3: Default::default(),
-            ha: Default::default(),
-            hb: Default::default(),
-            kk: Default::default(),
-            side_f: Default::default(),
-            side_l: Default::default(),
-            side_f_x: Default::default(),
-            side_l_x: Default::default(),
-            ha_pos: Default::default(),
-            hb_pos: Default::default(),
-            is_backward: Default::default(),
-            is_back_facing: Default::default(),
-            is_outside: Default::default(),
-            k2: Default::default(),
-            ze0: Default::default(),
-            ze1: Default::default(),
-            ze2: Default::default(),
-            ze3: Default::default(),
-            ze4: Default::default(),
-            ze5: Default::default(),
-            ce16_e: Default::default(),
-            ce8_e: Default::default(),
-            ce4_e: Default::default(),
-            ce2_e: Default::default(),
-            ce1_e: Default::default(),
-            top16_e: Default::default(),
-            top8_e: Default::default(),
-            top4_e: Default::default(),
-            top2_e: Default::default(),
+            nmax3: Default::default(),
+            zn0: Default::default(),
+            zn1: Default::default(),
+            zn2: Default::default(),
+            cn16_n: Default::default(),
+            cn8_n: Default::default(),
+            top16_n: Default::default(),
+            top8_n: Default::default(),
             v4: Default::default(),
             id4: Default::default(),
             ax4: Default::default(),
@@ -678,17 +740,123 @@ impl Default for Screener {
             absny4: Default::default(),
             negx4: Default::default(),
             negy4: Default::default(),
+            p_aby4: Default::default(),
+            p_abx4: Default::default(),
             clz_n4: Default::default(),
             norm_n4: Default::default(),
-            k4: Default::default(),
-            clz_e4: Default::default(),
-            norm_e4: Default::default(),
-            backward4: Default::default(),
-            back_facing4: Default::default(),
-            outside4: Default::default(),
+            kk: Default::default(),
+            zn3: Default::default(),
+            zn4: Default::default(),
+            zn5: Default::default(),
+            cn4_n: Default::default(),
+            cn2_n: Default::default(),
+            cn1_n: Default::default(),
+            top4_n: Default::default(),
+            top2_n: Default::default(),
+            v5: Default::default(),
+            id5: Default::default(),
+            ax5: Default::default(),
+            ay5: Default::default(),
+            bx5: Default::default(),
+            by5: Default::default(),
+            absnx5: Default::default(),
+            absny5: Default::default(),
+            negx5: Default::default(),
+            negy5: Default::default(),
+            k5: Default::default(),
+            p_nax5: Default::default(),
+            p_nay5: Default::default(),
+            p_nbx5: Default::default(),
+            p_nby5: Default::default(),
+            clz_n5: Default::default(),
+            norm_n5: Default::default(),
+            ha: Default::default(),
+            hb: Default::default(),
+            k2: Default::default(),
+            ze0: Default::default(),
+            ze1: Default::default(),
+            ze2: Default::default(),
+            ce16_e: Default::default(),
+            ce8_e: Default::default(),
+            top16_e: Default::default(),
+            top8_e: Default::default(),
+            v6: Default::default(),
+            id6: Default::default(),
+            ax6: Default::default(),
+            ay6: Default::default(),
+            bx6: Default::default(),
+            by6: Default::default(),
+            absnx6: Default::default(),
+            absny6: Default::default(),
+            negx6: Default::default(),
+            negy6: Default::default(),
+            k6: Default::default(),
+            ha6: Default::default(),
+            hb6: Default::default(),
+            p_fby6: Default::default(),
+            p_fbx6: Default::default(),
+            p_lay6: Default::default(),
+            p_lax6: Default::default(),
+            clz_n6: Default::default(),
+            norm_n6: Default::default(),
+            clz_e6: Default::default(),
+            norm_e6: Default::default(),
+            ze3: Default::default(),
+            ze4: Default::default(),
+            ze5: Default::default(),
+            ce4_e: Default::default(),
+            ce2_e: Default::default(),
+            ce1_e: Default::default(),
+            top4_e: Default::default(),
+            top2_e: Default::default(),
+            ha_pos: Default::default(),
+            hb_pos: Default::default(),
+            is_backward: Default::default(),
+            is_back_facing: Default::default(),
+            side_f: Default::default(),
+            side_l: Default::default(),
+            v7: Default::default(),
+            id7: Default::default(),
+            ax7: Default::default(),
+            ay7: Default::default(),
+            bx7: Default::default(),
+            by7: Default::default(),
+            absnx7: Default::default(),
+            absny7: Default::default(),
+            negx7: Default::default(),
+            negy7: Default::default(),
+            k7: Default::default(),
+            side_f7: Default::default(),
+            side_l7: Default::default(),
+            clz_n7: Default::default(),
+            norm_n7: Default::default(),
+            clz_e7: Default::default(),
+            norm_e7: Default::default(),
+            backward7: Default::default(),
+            back_facing7: Default::default(),
+            ha_pos7: Default::default(),
+            hb_pos7: Default::default(),
             s0: Default::default(),
             s0_m1: Default::default(),
             sh: Default::default(),
+            side_f_x: Default::default(),
+            side_l_x: Default::default(),
+            is_outside: Default::default(),
+            v8: Default::default(),
+            id8: Default::default(),
+            ax8: Default::default(),
+            ay8: Default::default(),
+            bx8: Default::default(),
+            by8: Default::default(),
+            absnx8: Default::default(),
+            absny8: Default::default(),
+            negx8: Default::default(),
+            negy8: Default::default(),
+            k8: Default::default(),
+            exp8: Default::default(),
+            backward8: Default::default(),
+            back_facing8: Default::default(),
+            outside8: Default::default(),
             sh5: Default::default(),
             is_near: Default::default(),
             is_pass: Default::default(),
@@ -772,6 +940,7 @@ impl Logic for Screener {
             res_ptr,
             fill_ptr,
             rd_ptr,
+            rd_inc_x,
             head_valid,
             v1,
             id1,
@@ -789,7 +958,8 @@ impl Logic for Screener {
             absny2,
             negx2,
             negy2,
-            nmax2,
+            normal_x2,
+            normal_y2,
             v3,
             id3,
             ax3,
@@ -800,8 +970,7 @@ impl Logic for Screener {
             absny3,
             negx3,
             negy3,
-            clz_n3,
-            norm_n3,
+            nmax3,
             v4,
             id4,
             ax4,
@@ -812,14 +981,84 @@ impl Logic for Screener {
             absny4,
             negx4,
             negy4,
+            p_aby4,
+            p_abx4,
             clz_n4,
             norm_n4,
-            k4,
-            clz_e4,
-            norm_e4,
-            backward4,
-            back_facing4,
-            outside4,
+            v5,
+            id5,
+            ax5,
+            ay5,
+            bx5,
+            by5,
+            absnx5,
+            absny5,
+            negx5,
+            negy5,
+            k5,
+            p_nax5,
+            p_nay5,
+            p_nbx5,
+            p_nby5,
+            clz_n5,
+            norm_n5,
+            v6,
+            id6,
+            ax6,
+            ay6,
+            bx6,
+            by6,
+            absnx6,
+            absny6,
+            negx6,
+            negy6,
+            k6,
+            ha6,
+            hb6,
+            p_fby6,
+            p_fbx6,
+            p_lay6,
+            p_lax6,
+            clz_n6,
+            norm_n6,
+            clz_e6,
+            norm_e6,
+            v7,
+            id7,
+            ax7,
+            ay7,
+            bx7,
+            by7,
+            absnx7,
+            absny7,
+            negx7,
+            negy7,
+            k7,
+            side_f7,
+            side_l7,
+            clz_n7,
+            norm_n7,
+            clz_e7,
+            norm_e7,
+            backward7,
+            back_facing7,
+            ha_pos7,
+            hb_pos7,
+            v8,
+            id8,
+            ax8,
+            ay8,
+            bx8,
+            by8,
+            absnx8,
+            absny8,
+            negx8,
+            negy8,
+            k8,
+            exp8,
+            backward8,
+            back_facing8,
+            outside8,
             c_passed,
             c_backward,
             c_back_facing,
@@ -865,32 +1104,20 @@ impl Logic for Screener {
         self.bx1.d.next = self.ext_bx.val() - self.ext_ox.val();
         self.by1.d.next = self.ext_by.val() - self.ext_oy.val();
 
-        // Stage 1: the ten products start (Mul18 leaves, latency 2); n = (b.y − a.y, a.x − b.x)
-        // = (B.y − A.y, A.x − B.x), so |n_c| < 2^17; its magnitudes and nmax.
-        self.m_nax.a.next = self.normal_x.val();
-        self.m_nax.b.next = self.ax1.q.val();
-        self.m_nay.a.next = self.normal_y.val();
-        self.m_nay.b.next = self.ay1.q.val();
-        self.m_nbx.a.next = self.normal_x.val();
-        self.m_nbx.b.next = self.bx1.q.val();
-        self.m_nby.a.next = self.normal_y.val();
-        self.m_nby.b.next = self.by1.q.val();
+        // Stage 1: the products start in three groups, one stage apart, so that every
+        // multiplier's operand register is a stage register of its own (no register drives two
+        // multipliers): those of K now, those of the dot products with n_s in stage 2, the side
+        // products in stage 3 (the bundle setup is held meanwhile). n = (b.y − a.y, a.x − b.x)
+        // = (B.y − A.y, A.x − B.x), so |n_c| < 2^17, and its magnitudes (each negation as the
+        // reversed difference, in parallel: the same 18 bits as 0 − n_c).
         self.m_aby.a.next = self.ax1.q.val();
         self.m_aby.b.next = self.by1.q.val();
         self.m_abx.a.next = self.ay1.q.val();
         self.m_abx.b.next = self.bx1.q.val();
-        self.m_fby.a.next = self.first_x.val();
-        self.m_fby.b.next = self.by1.q.val();
-        self.m_fbx.a.next = self.first_y.val();
-        self.m_fbx.b.next = self.bx1.q.val();
-        self.m_lay.a.next = self.last_x.val();
-        self.m_lay.b.next = self.ay1.q.val();
-        self.m_lax.a.next = self.last_y.val();
-        self.m_lax.b.next = self.ax1.q.val();
         self.nx.next = self.by1.q.val() - self.ay1.q.val();
         self.ny.next = self.ax1.q.val() - self.bx1.q.val();
-        self.nx_neg.next = self.zero18.val() - self.nx.val();
-        self.ny_neg.next = self.zero18.val() - self.ny.val();
+        self.nx_neg.next = self.ay1.q.val() - self.by1.q.val();
+        self.ny_neg.next = self.bx1.q.val() - self.ax1.q.val();
         self.absnx.next = self.nx.val();
         if self.nx.val().get_bit(17) {
             self.absnx.next = self.nx_neg.val();
@@ -898,10 +1125,6 @@ impl Logic for Screener {
         self.absny.next = self.ny.val();
         if self.ny.val().get_bit(17) {
             self.absny.next = self.ny_neg.val();
-        }
-        self.nmax.next = self.absny.val();
-        if self.absnx.val() > self.absny.val() {
-            self.nmax.next = self.absnx.val();
         }
         self.v2.d.next = self.v1.q.val();
         self.id2.d.next = self.id1.q.val();
@@ -913,11 +1136,50 @@ impl Logic for Screener {
         self.absny2.d.next = self.absny.val();
         self.negx2.d.next = self.nx.val().get_bit(17);
         self.negy2.d.next = self.ny.val().get_bit(17);
-        self.nmax2.d.next = self.nmax.val();
+        self.normal_x2.d.next = self.normal_x.val();
+        self.normal_y2.d.next = self.normal_y.val();
 
-        // Stage 2: the leading zeros of nmax (as 32 bits) by five conditional shifts, and nmax
-        // normalised (its leading one at bit 31).
-        self.zn0.next = bit_cast::<32, 18>(self.nmax2.q.val());
+        // Stage 2: the products of dot(n_s, a) and dot(n_s, b) start (the normal for b from a
+        // register of its own); nmax = max(|n_x|, |n_y|).
+        self.m_nax.a.next = self.normal_x.val();
+        self.m_nax.b.next = self.ax2.q.val();
+        self.m_nay.a.next = self.normal_y.val();
+        self.m_nay.b.next = self.ay2.q.val();
+        self.m_nbx.a.next = self.normal_x2.q.val();
+        self.m_nbx.b.next = self.bx2.q.val();
+        self.m_nby.a.next = self.normal_y2.q.val();
+        self.m_nby.b.next = self.by2.q.val();
+        self.nmax.next = self.absny2.q.val();
+        if self.absnx2.q.val() > self.absny2.q.val() {
+            self.nmax.next = self.absnx2.q.val();
+        }
+        self.v3.d.next = self.v2.q.val();
+        self.id3.d.next = self.id2.q.val();
+        self.ax3.d.next = self.ax2.q.val();
+        self.ay3.d.next = self.ay2.q.val();
+        self.bx3.d.next = self.bx2.q.val();
+        self.by3.d.next = self.by2.q.val();
+        self.absnx3.d.next = self.absnx2.q.val();
+        self.absny3.d.next = self.absny2.q.val();
+        self.negx3.d.next = self.negx2.q.val();
+        self.negy3.d.next = self.negy2.q.val();
+        self.nmax3.d.next = self.nmax.val();
+
+        // Stage 3: the side products start; the products of K arrive and are registered once
+        // more, as they are (the multiplier's product register drives nothing else). The
+        // leading zeros of nmax (as 32 bits) by five conditional shifts, which also normalise it
+        // (its leading one at bit 31): the first two here, the last three in stage 4.
+        self.m_fby.a.next = self.first_x.val();
+        self.m_fby.b.next = self.by3.q.val();
+        self.m_fbx.a.next = self.first_y.val();
+        self.m_fbx.b.next = self.bx3.q.val();
+        self.m_lay.a.next = self.last_x.val();
+        self.m_lay.b.next = self.ay3.q.val();
+        self.m_lax.a.next = self.last_y.val();
+        self.m_lax.b.next = self.ax3.q.val();
+        self.p_aby4.d.next = self.m_aby.p.val();
+        self.p_abx4.d.next = self.m_abx.p.val();
+        self.zn0.next = bit_cast::<32, 18>(self.nmax3.q.val());
         self.top16_n.next = self.zn0.val().get_bits::<16>(16);
         self.zn1.next = self.zn0.val();
         self.cn16_n.next = self.zero6.val();
@@ -932,11 +1194,31 @@ impl Logic for Screener {
             self.zn2.next = self.zn1.val() << self.sh8.val();
             self.cn8_n.next = self.c8_6.val();
         }
-        self.top4_n.next = self.zn2.val().get_bits::<4>(28);
-        self.zn3.next = self.zn2.val();
+        self.v4.d.next = self.v3.q.val();
+        self.id4.d.next = self.id3.q.val();
+        self.ax4.d.next = self.ax3.q.val();
+        self.ay4.d.next = self.ay3.q.val();
+        self.bx4.d.next = self.bx3.q.val();
+        self.by4.d.next = self.by3.q.val();
+        self.absnx4.d.next = self.absnx3.q.val();
+        self.absny4.d.next = self.absny3.q.val();
+        self.negx4.d.next = self.negx3.q.val();
+        self.negy4.d.next = self.negy3.q.val();
+        self.clz_n4.d.next = self.cn16_n.val() | self.cn8_n.val();
+        self.norm_n4.d.next = self.zn2.val();
+
+        // Stage 4: K; the products of the dot products arrive and are registered; the last
+        // three shifts of nmax.
+        self.kk.next = self.p_aby4.q.val() - self.p_abx4.q.val();
+        self.p_nax5.d.next = self.m_nax.p.val();
+        self.p_nay5.d.next = self.m_nay.p.val();
+        self.p_nbx5.d.next = self.m_nbx.p.val();
+        self.p_nby5.d.next = self.m_nby.p.val();
+        self.top4_n.next = self.norm_n4.q.val().get_bits::<4>(28);
+        self.zn3.next = self.norm_n4.q.val();
         self.cn4_n.next = self.zero6.val();
         if self.top4_n.val() == self.zero4.val() {
-            self.zn3.next = self.zn2.val() << self.sh4.val();
+            self.zn3.next = self.norm_n4.q.val() << self.sh4.val();
             self.cn4_n.next = self.c4_6.val();
         }
         self.top2_n.next = self.zn3.val().get_bits::<2>(30);
@@ -952,41 +1234,24 @@ impl Logic for Screener {
             self.zn5.next = self.zn4.val() << self.sh1.val();
             self.cn1_n.next = self.c1_6.val();
         }
-        self.v3.d.next = self.v2.q.val();
-        self.id3.d.next = self.id2.q.val();
-        self.ax3.d.next = self.ax2.q.val();
-        self.ay3.d.next = self.ay2.q.val();
-        self.bx3.d.next = self.bx2.q.val();
-        self.by3.d.next = self.by2.q.val();
-        self.absnx3.d.next = self.absnx2.q.val();
-        self.absny3.d.next = self.absny2.q.val();
-        self.negx3.d.next = self.negx2.q.val();
-        self.negy3.d.next = self.negy2.q.val();
-        self.clz_n3.d.next =
-            self.cn16_n.val() | self.cn8_n.val() | self.cn4_n.val() | self.cn2_n.val() | self.cn1_n.val();
-        self.norm_n3.d.next = self.zn5.val();
+        self.v5.d.next = self.v4.q.val();
+        self.id5.d.next = self.id4.q.val();
+        self.ax5.d.next = self.ax4.q.val();
+        self.ay5.d.next = self.ay4.q.val();
+        self.bx5.d.next = self.bx4.q.val();
+        self.by5.d.next = self.by4.q.val();
+        self.absnx5.d.next = self.absnx4.q.val();
+        self.absny5.d.next = self.absny4.q.val();
+        self.negx5.d.next = self.negx4.q.val();
+        self.negy5.d.next = self.negy4.q.val();
+        self.k5.d.next = self.kk.val();
+        self.clz_n5.d.next = self.clz_n4.q.val() | self.cn4_n.val() | self.cn2_n.val() | self.cn1_n.val();
+        self.norm_n5.d.next = self.zn5.val();
 
-        // Stage 3: the products arrive. Sums and differences, the screens by priority (backward,
-        // back-facing, outside the sector), and the leading zeros of 2K (K < 2^31 when it
-        // passes, so 2K fits 32 bits).
-        self.ha.next = self.m_nax.p.val() + self.m_nay.p.val();
-        self.hb.next = self.m_nbx.p.val() + self.m_nby.p.val();
-        self.kk.next = self.m_aby.p.val() - self.m_abx.p.val();
-        self.side_f.next = self.m_fby.p.val() - self.m_fbx.p.val();
-        self.side_l.next = self.m_lay.p.val() - self.m_lax.p.val();
-        // Signed comparisons with the margin as unsigned ones on the sign-flipped values.
-        self.side_f_x.next = self.side_f.val() ^ self.msb32.val();
-        self.side_l_x.next = self.side_l.val() ^ self.msb32.val();
-        self.ha_pos.next = !self.ha.val().get_bit(31) & (self.ha.val() != self.zero32.val());
-        self.hb_pos.next = !self.hb.val().get_bit(31) & (self.hb.val() != self.zero32.val());
-        self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
-        self.is_back_facing.next =
-            !self.is_backward.val() & (self.kk.val().get_bit(31) | (self.kk.val() == self.zero32.val()));
-        self.is_outside.next = !self.is_backward.val()
-            & !self.is_back_facing.val()
-            & ((self.hb_pos.val() & (self.side_f_x.val() < self.thr_f.val()))
-                | (self.ha_pos.val() & (self.side_l_x.val() > self.thr_l.val())));
-        self.k2.next = self.kk.val() << self.sh1.val();
+        // Stage 5: the leading zeros of 2K (K < 2^31 when it passes, so 2K fits 32 bits): the
+        // first two shifts; dot(n_s, a), dot(n_s, b); the side products arrive and are
+        // registered.
+        self.k2.next = self.k5.q.val() << self.sh1.val();
         self.ze0.next = self.k2.val();
         self.top16_e.next = self.ze0.val().get_bits::<16>(16);
         self.ze1.next = self.ze0.val();
@@ -1002,11 +1267,37 @@ impl Logic for Screener {
             self.ze2.next = self.ze1.val() << self.sh8.val();
             self.ce8_e.next = self.c8_6.val();
         }
-        self.top4_e.next = self.ze2.val().get_bits::<4>(28);
-        self.ze3.next = self.ze2.val();
+        self.ha.next = self.p_nax5.q.val() + self.p_nay5.q.val();
+        self.hb.next = self.p_nbx5.q.val() + self.p_nby5.q.val();
+        self.p_fby6.d.next = self.m_fby.p.val();
+        self.p_fbx6.d.next = self.m_fbx.p.val();
+        self.p_lay6.d.next = self.m_lay.p.val();
+        self.p_lax6.d.next = self.m_lax.p.val();
+        self.v6.d.next = self.v5.q.val();
+        self.id6.d.next = self.id5.q.val();
+        self.ax6.d.next = self.ax5.q.val();
+        self.ay6.d.next = self.ay5.q.val();
+        self.bx6.d.next = self.bx5.q.val();
+        self.by6.d.next = self.by5.q.val();
+        self.absnx6.d.next = self.absnx5.q.val();
+        self.absny6.d.next = self.absny5.q.val();
+        self.negx6.d.next = self.negx5.q.val();
+        self.negy6.d.next = self.negy5.q.val();
+        self.k6.d.next = self.k5.q.val();
+        self.ha6.d.next = self.ha.val();
+        self.hb6.d.next = self.hb.val();
+        self.clz_n6.d.next = self.clz_n5.q.val();
+        self.norm_n6.d.next = self.norm_n5.q.val();
+        self.clz_e6.d.next = self.ce16_e.val() | self.ce8_e.val();
+        self.norm_e6.d.next = self.ze2.val();
+
+        // Stage 6: the last three shifts of 2K; the backward and back-facing screens, by
+        // priority; the side values against the sector's edges.
+        self.top4_e.next = self.norm_e6.q.val().get_bits::<4>(28);
+        self.ze3.next = self.norm_e6.q.val();
         self.ce4_e.next = self.zero6.val();
         if self.top4_e.val() == self.zero4.val() {
-            self.ze3.next = self.ze2.val() << self.sh4.val();
+            self.ze3.next = self.norm_e6.q.val() << self.sh4.val();
             self.ce4_e.next = self.c4_6.val();
         }
         self.top2_e.next = self.ze3.val().get_bits::<2>(30);
@@ -1022,58 +1313,92 @@ impl Logic for Screener {
             self.ze5.next = self.ze4.val() << self.sh1.val();
             self.ce1_e.next = self.c1_6.val();
         }
-        self.v4.d.next = self.v3.q.val();
-        self.id4.d.next = self.id3.q.val();
-        self.ax4.d.next = self.ax3.q.val();
-        self.ay4.d.next = self.ay3.q.val();
-        self.bx4.d.next = self.bx3.q.val();
-        self.by4.d.next = self.by3.q.val();
-        self.absnx4.d.next = self.absnx3.q.val();
-        self.absny4.d.next = self.absny3.q.val();
-        self.negx4.d.next = self.negx3.q.val();
-        self.negy4.d.next = self.negy3.q.val();
-        self.clz_n4.d.next = self.clz_n3.q.val();
-        self.norm_n4.d.next = self.norm_n3.q.val();
-        self.k4.d.next = self.kk.val();
-        self.clz_e4.d.next =
-            self.ce16_e.val() | self.ce8_e.val() | self.ce4_e.val() | self.ce2_e.val() | self.ce1_e.val();
-        self.norm_e4.d.next = self.ze5.val();
-        self.backward4.d.next = self.is_backward.val();
-        self.back_facing4.d.next = self.is_back_facing.val();
-        self.outside4.d.next = self.is_outside.val();
+        self.ha_pos.next = !self.ha6.q.val().get_bit(31) & (self.ha6.q.val() != self.zero32.val());
+        self.hb_pos.next = !self.hb6.q.val().get_bit(31) & (self.hb6.q.val() != self.zero32.val());
+        self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
+        self.is_back_facing.next =
+            !self.is_backward.val() & (self.k6.q.val().get_bit(31) | (self.k6.q.val() == self.zero32.val()));
+        self.side_f.next = self.p_fby6.q.val() - self.p_fbx6.q.val();
+        self.side_l.next = self.p_lay6.q.val() - self.p_lax6.q.val();
+        self.v7.d.next = self.v6.q.val();
+        self.id7.d.next = self.id6.q.val();
+        self.ax7.d.next = self.ax6.q.val();
+        self.ay7.d.next = self.ay6.q.val();
+        self.bx7.d.next = self.bx6.q.val();
+        self.by7.d.next = self.by6.q.val();
+        self.absnx7.d.next = self.absnx6.q.val();
+        self.absny7.d.next = self.absny6.q.val();
+        self.negx7.d.next = self.negx6.q.val();
+        self.negy7.d.next = self.negy6.q.val();
+        self.k7.d.next = self.k6.q.val();
+        self.clz_n7.d.next = self.clz_n6.q.val();
+        self.norm_n7.d.next = self.norm_n6.q.val();
+        self.clz_e7.d.next = self.clz_e6.q.val() | self.ce4_e.val() | self.ce2_e.val() | self.ce1_e.val();
+        self.norm_e7.d.next = self.ze5.val();
+        self.backward7.d.next = self.is_backward.val();
+        self.back_facing7.d.next = self.is_back_facing.val();
+        self.ha_pos7.d.next = self.ha_pos.val();
+        self.hb_pos7.d.next = self.hb_pos.val();
+        self.side_f7.d.next = self.side_f.val();
+        self.side_l7.d.next = self.side_l.val();
 
-        // Stage 4: the verdict. With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their
+        // Stage 7: the exponent. With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their
         // leading one: the largest sh with nmax·2^sh < 2K is s0 when the normalised nmax is
         // below the normalised 2K, else s0 − 1. It lies in [−17, 31]; below −3 the patch is
-        // near.
-        self.s0.next = self.clz_n4.q.val() - self.clz_e4.q.val();
+        // near. The outside-the-sector screen: signed comparisons with the margin as unsigned
+        // ones on the sign-flipped values.
+        self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
         self.s0_m1.next = self.s0.val() - self.one6.val();
         self.sh.next = self.s0_m1.val();
-        if self.norm_n4.q.val() < self.norm_e4.q.val() {
+        if self.norm_n7.q.val() < self.norm_e7.q.val() {
             self.sh.next = self.s0.val();
         }
-        self.sh5.next = self.sh.val().get_bits::<5>(0);
-        self.is_near.next = !self.backward4.q.val()
-            & !self.back_facing4.q.val()
-            & !self.outside4.q.val()
-            & self.sh.val().get_bit(5)
-            & (self.sh.val() < self.sh_lo.val());
-        self.is_pass.next = !self.backward4.q.val()
-            & !self.back_facing4.q.val()
-            & !self.outside4.q.val()
+        self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
+        self.side_l_x.next = self.side_l7.q.val() ^ self.msb32.val();
+        self.is_outside.next = !self.backward7.q.val()
+            & !self.back_facing7.q.val()
+            & ((self.hb_pos7.q.val() & (self.side_f_x.val() < self.thr_f.val()))
+                | (self.ha_pos7.q.val() & (self.side_l_x.val() > self.thr_l.val())));
+        self.v8.d.next = self.v7.q.val();
+        self.id8.d.next = self.id7.q.val();
+        self.ax8.d.next = self.ax7.q.val();
+        self.ay8.d.next = self.ay7.q.val();
+        self.bx8.d.next = self.bx7.q.val();
+        self.by8.d.next = self.by7.q.val();
+        self.absnx8.d.next = self.absnx7.q.val();
+        self.absny8.d.next = self.absny7.q.val();
+        self.negx8.d.next = self.negx7.q.val();
+        self.negy8.d.next = self.negy7.q.val();
+        self.k8.d.next = self.k7.q.val();
+        self.backward8.d.next = self.backward7.q.val();
+        self.back_facing8.d.next = self.back_facing7.q.val();
+        self.outside8.d.next = self.is_outside.val();
+        self.exp8.d.next = self.sh.val();
+
+        // Stage 8 (VERDICT_LATENCY): the near screen and the verdict, counted; the patch takes
+        // the next slot of the output FIFO and enters the divider.
+        self.sh5.next = self.exp8.q.val().get_bits::<5>(0);
+        self.is_near.next = !self.backward8.q.val()
+            & !self.back_facing8.q.val()
+            & !self.outside8.q.val()
+            & self.exp8.q.val().get_bit(5)
+            & (self.exp8.q.val() < self.sh_lo.val());
+        self.is_pass.next = !self.backward8.q.val()
+            & !self.back_facing8.q.val()
+            & !self.outside8.q.val()
             & !self.is_near.val();
-        self.reserve.next = self.v4.q.val();
-        if self.v4.q.val() {
+        self.reserve.next = self.v8.q.val();
+        if self.v8.q.val() {
             if self.is_pass.val() {
                 self.c_passed.d.next = self.c_passed.q.val() + self.one32.val();
             }
-            if self.backward4.q.val() {
+            if self.backward8.q.val() {
                 self.c_backward.d.next = self.c_backward.q.val() + self.one32.val();
             }
-            if self.back_facing4.q.val() {
+            if self.back_facing8.q.val() {
                 self.c_back_facing.d.next = self.c_back_facing.q.val() + self.one32.val();
             }
-            if self.outside4.q.val() {
+            if self.outside8.q.val() {
                 self.c_outside.d.next = self.c_outside.q.val() + self.one32.val();
             }
             if self.is_near.val() {
@@ -1087,42 +1412,42 @@ impl Logic for Screener {
         self.near.next = self.c_near.q.val();
         // The dividend floor(|n_c|·2^sh)·2^16 + (bits shifted out)·2^13: the initial remainder
         // (below 2K) and, for sh < 0, the bits shifted out of |n_c|, fed in MSB first.
-        self.absnx32.next = bit_cast::<32, 18>(self.absnx4.q.val());
-        self.absny32.next = bit_cast::<32, 18>(self.absny4.q.val());
-        self.low_nx.next = self.absnx4.q.val().get_bits::<3>(0);
-        self.low_ny.next = self.absny4.q.val().get_bits::<3>(0);
+        self.absnx32.next = bit_cast::<32, 18>(self.absnx8.q.val());
+        self.absny32.next = bit_cast::<32, 18>(self.absny8.q.val());
+        self.low_nx.next = self.absnx8.q.val().get_bits::<3>(0);
+        self.low_ny.next = self.absny8.q.val().get_bits::<3>(0);
         self.divider.rx.next = self.absnx32.val() << self.sh5.val();
         self.divider.ry.next = self.absny32.val() << self.sh5.val();
         self.divider.fx.next = self.zero3.val();
         self.divider.fy.next = self.zero3.val();
-        if self.sh.val() == self.sh_m1.val() {
+        if self.exp8.q.val() == self.sh_m1.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh1.val();
             self.divider.ry.next = self.absny32.val() >> self.sh1.val();
             self.divider.fx.next = self.low_nx.val() << self.sh2_3.val();
             self.divider.fy.next = self.low_ny.val() << self.sh2_3.val();
-        } else if self.sh.val() == self.sh_m2.val() {
+        } else if self.exp8.q.val() == self.sh_m2.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh2.val();
             self.divider.ry.next = self.absny32.val() >> self.sh2.val();
             self.divider.fx.next = self.low_nx.val() << self.sh1_3.val();
             self.divider.fy.next = self.low_ny.val() << self.sh1_3.val();
-        } else if self.sh.val() == self.sh_lo.val() {
+        } else if self.exp8.q.val() == self.sh_lo.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh3.val();
             self.divider.ry.next = self.absny32.val() >> self.sh3.val();
             self.divider.fx.next = self.low_nx.val();
             self.divider.fy.next = self.low_ny.val();
         }
-        self.divider.k.next = self.k4.q.val();
+        self.divider.k.next = self.k8.q.val();
         // The tag the divider carries: a slot to complete (bit 0), the signs of n (bits 1 and 2).
         self.tag_p.next = self.zero3.val();
         if self.reserve.val() {
             self.tag_p.next = self.tag_pass.val();
         }
         self.tag_x.next = self.zero3.val();
-        if self.negx4.q.val() {
+        if self.negx8.q.val() {
             self.tag_x.next = self.tag_negx.val();
         }
         self.tag_y.next = self.zero3.val();
-        if self.negy4.q.val() {
+        if self.negy8.q.val() {
             self.tag_y.next = self.tag_negy.val();
         }
         self.divider.tag.next = self.tag_p.val() | self.tag_x.val() | self.tag_y.val();
@@ -1134,14 +1459,14 @@ impl Logic for Screener {
         self.lane_bx.write_address.next = self.res_ptr.q.val();
         self.lane_by.write_address.next = self.res_ptr.q.val();
         self.lane_sh.write_address.next = self.res_ptr.q.val();
-        self.lane_id.write_data.next = self.id4.q.val();
-        self.lane_ax.write_data.next = self.ax4.q.val();
-        self.lane_ay.write_data.next = self.ay4.q.val();
-        self.lane_bx.write_data.next = self.bx4.q.val();
-        self.lane_by.write_data.next = self.by4.q.val();
-        self.sh_pass.next = bit_cast::<7, 6>(self.sh.val());
+        self.lane_id.write_data.next = self.id8.q.val();
+        self.lane_ax.write_data.next = self.ax8.q.val();
+        self.lane_ay.write_data.next = self.ay8.q.val();
+        self.lane_bx.write_data.next = self.bx8.q.val();
+        self.lane_by.write_data.next = self.by8.q.val();
+        self.sh_pass.next = bit_cast::<7, 6>(self.exp8.q.val());
         if self.is_pass.val() {
-            self.sh_pass.next = bit_cast::<7, 6>(self.sh.val()) | self.pass_flag.val();
+            self.sh_pass.next = bit_cast::<7, 6>(self.exp8.q.val()) | self.pass_flag.val();
         }
         self.lane_sh.write_data.next = self.sh_pass.val();
         self.lane_id.write_enable.next = self.reserve.val();
@@ -1155,7 +1480,7 @@ impl Logic for Screener {
             self.res_ptr.d.next = self.res_inc.val();
         }
 
-        // Stage 22: the quotients of a patch arrive (slots fill in the order they were
+        // Stage 26: the quotients of a patch arrive (slots fill in the order they were
         // taken: the divider's latency is fixed); W = sign(n)·q completes the slot.
         self.fill.next = self.divider.tag_out.val().get_bit(0);
         self.qx18.next = bit_cast::<18, 17>(self.divider.qx.val());
@@ -1184,13 +1509,17 @@ impl Logic for Screener {
         // remains after this cycle's pop, excluding this cycle's fill (the lanes read before
         // they write).
         self.pop.next = self.head_valid.q.val() & self.out_ready.val();
-        self.rd_inc.next = self.rd_ptr.q.val() + self.one5.val();
+        // rd_ptr + 1 is kept in a register (rd_inc_x, bit 0 inverted so that its power-up zero
+        // stands for 1): no carry chain between out_ready and the lanes' read address.
+        self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one5.val();
+        self.rd_inc2.next = self.rd_inc.val() + self.one5.val();
         self.done_dec.next = self.done.q.val() - self.one6.val();
         self.rd_addr.next = self.rd_ptr.q.val();
         self.done_left.next = self.done.q.val();
         if self.pop.val() {
             self.rd_addr.next = self.rd_inc.val();
             self.rd_ptr.d.next = self.rd_inc.val();
+            self.rd_inc_x.d.next = self.rd_inc2.val() ^ self.one5.val();
             self.done_left.next = self.done_dec.val();
         }
         self.lane_id.read_address.next = self.rd_addr.val();

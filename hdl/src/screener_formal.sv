@@ -15,22 +15,22 @@
 //   is high exactly while fewer are (a_credits, a_in_ready);
 // * no output without an input: `out_valid` only while a patch is in flight (a_no_spurious);
 // * every patch is counted in exactly one verdict counter, once, in the cycle of its verdict
-//   (VERDICT_LATENCY = 4 cycles after acceptance, shown from the next cycle on): the counters
+//   (VERDICT_LATENCY = 8 cycles after acceptance, shown from the next cycle on): the counters
 //   start at zero and only ever grow by one, at most one of them in a cycle, and one exactly
-//   when a patch was taken five cycles before (a_counters_init, a_count_step, a_count_one,
-//   a_count_when); so the five counters sum to the number of patches taken at least five
+//   when a patch was taken nine cycles before (a_counters_init, a_count_step, a_count_one,
+//   a_count_when); so the five counters sum to the number of patches taken at least nine
 //   cycles ago;
 // * the output holds (`out_valid`, `out_id`, `out_pass`, `out_sh` stable) while it waits for
 //   `out_ready`, and `in_ready` is not withdrawn without a transfer (a_out_hold, a_out_stable,
 //   a_in_hold).
 //
-// Proved to depth 30 only (task `bmc`: every input sequence of 30 cycles; the latency, 24, plus
+// Proved to depth 34 only (task `bmc`: every input sequence of 34 cycles; the latency, 28, plus
 // six cycles, so a patch accepted in the first six cycles is followed out under any
 // backpressure), besides all the above:
 //
 // * every patch that enters leaves exactly once, in order: the n-th patch out is the n-th in
 //   (the harness follows one patch, chosen freely by `pick`; a_ahead, a_order); it is presented
-//   exactly from LATENCY (24) cycles after its acceptance on, as soon as the patches before it
+//   exactly from LATENCY (28) cycles after its acceptance on, as soon as the patches before it
 //   have left (a_latency);
 // * it leaves passed (`out_pass` set) exactly when its verdict was counted in `passed`, and
 //   screened out otherwise, counted in one of the other four (a_pass with the counting
@@ -82,8 +82,9 @@ module screener_formal (
     input wire        pick
 );
     localparam DEPTH = 32;
-    localparam LATENCY = 24;
-    localparam VERDICT_LATENCY = 4;
+    localparam LATENCY = 28;
+    localparam VERDICT_LATENCY = 8;
+    localparam DIV_LATENCY = 18;
 
     wire        in_ready, out_valid, out_pass;
     wire [15:0] out_id;
@@ -91,14 +92,16 @@ module screener_formal (
     wire [5:0]  out_sh;
     wire [31:0] passed, backward, back_facing, outside, near;
     // Internal state, exposed by screener.sby for the induction (not ports of the exported
-    // module): the stage valid bits and ids, the verdict registers of stage 4, the divider's
-    // tag pipeline (3 bits per stage, bit 0: a slot to complete), the credit and FIFO counters
-    // and pointers, and the output FIFO's lanes.
-    wire        v1, v2, v3, v4, backward4, back_facing4, outside4;
-    wire [15:0] id1, id2, id3, id4;
+    // module): the stage valid bits and ids, the screens' registers of stages 7 and 8, the
+    // divider's tag pipeline (3 bits per stage, bit 0: a slot to complete), the credit and FIFO
+    // counters and pointers (rd_inc_x: rd_ptr + 1 with bit 0 inverted), and the output FIFO's
+    // lanes.
+    wire        v1, v2, v3, v4, v5, v6, v7, v8;
+    wire        backward7, back_facing7, backward8, back_facing8, outside8;
+    wire [15:0] id1, id2, id3, id4, id5, id6, id7, id8;
     wire [53:0] tgp;
     wire [5:0]  used, done;
-    wire [4:0]  res_ptr, fill_ptr, rd_ptr;
+    wire [4:0]  res_ptr, fill_ptr, rd_ptr, rd_inc_x;
     wire [15:0] lane_id [0:31];
     wire [6:0]  lane_sh [0:31];
 
@@ -114,11 +117,14 @@ module screener_formal (
         .passed(passed), .backward(backward), .back_facing(back_facing), .outside(outside),
         .near(near)
 `ifdef INDUCTION
-        , .v1$q(v1), .v2$q(v2), .v3$q(v3), .v4$q(v4),
-        .id1$q(id1), .id2$q(id2), .id3$q(id3), .id4$q(id4),
-        .backward4$q(backward4), .back_facing4$q(back_facing4), .outside4$q(outside4),
+        , .v1$q(v1), .v2$q(v2), .v3$q(v3), .v4$q(v4), .v5$q(v5), .v6$q(v6), .v7$q(v7),
+        .v8$q(v8),
+        .id1$q(id1), .id2$q(id2), .id3$q(id3), .id4$q(id4), .id5$q(id5), .id6$q(id6),
+        .id7$q(id7), .id8$q(id8),
+        .backward7$q(backward7), .back_facing7$q(back_facing7),
+        .backward8$q(backward8), .back_facing8$q(back_facing8), .outside8$q(outside8),
         .divider_tgp(tgp), .used$q(used), .done$q(done),
-        .res_ptr$q(res_ptr), .fill_ptr$q(fill_ptr), .rd_ptr$q(rd_ptr),
+        .res_ptr$q(res_ptr), .fill_ptr$q(fill_ptr), .rd_ptr$q(rd_ptr), .rd_inc_x$q(rd_inc_x),
         `LANE32(lane_id, lane_id), `LANE32(lane_sh, lane_sh)
 `endif
     );
@@ -130,13 +136,13 @@ module screener_formal (
     // ---- The harness's counts, from the ports only. ----
     reg        f_past = 1'b0;
     reg [6:0]  f_held = 7'd0;       // accepted, not yet out
-    reg [23:1] f_sr = 23'd0;        // f_sr[k]: a patch was taken k cycles ago
+    reg [LATENCY-1:1] f_sr = 0;     // f_sr[k]: a patch was taken k cycles ago
     reg        f_full = 1'b0;       // all credits have been taken (for the covers)
 
     always @(posedge clock) begin
         f_past <= 1'b1;
         f_held <= f_held + take - pop;
-        f_sr <= {f_sr[22:1], take};
+        f_sr <= {f_sr[LATENCY-2:1], take};
         if (f_held == DEPTH) f_full <= 1'b1;
     end
 
@@ -169,7 +175,7 @@ module screener_formal (
             end
         end else begin
             if (f_age != 6'd63) f_age <= f_age + 6'd1;
-            // In cycle a + 5 the counters show its verdict for the first time.
+            // In cycle a + VERDICT_LATENCY + 1 the counters show its verdict for the first time.
             if (f_age == VERDICT_LATENCY + 1) f_vpass <= passed != f_p_passed;
             if (pop) begin
                 if (f_ahead == 7'd0) f_trk <= 1'b0;
@@ -211,9 +217,9 @@ module screener_formal (
         if (f_past) begin
             // Every patch is counted in exactly one counter, once, in the cycle of its verdict
             // (VERDICT_LATENCY cycles after its acceptance; shown from the next cycle on): the
-            // counters only ever grow by one, and exactly one grows for each patch taken five
-            // cycles before, none otherwise. (With a_counters_init: the five counters sum to
-            // the number of patches taken at least five cycles ago.)
+            // counters only ever grow by one, and exactly one grows for each patch taken
+            // VERDICT_LATENCY + 1 cycles before, none otherwise. (With a_counters_init: the
+            // five counters sum to the number of patches taken at least eight cycles ago.)
             a_count_step: assert((passed == f_p_passed || passed == f_p_passed + 32'd1)
                                  && (backward == f_p_backward || backward == f_p_backward + 32'd1)
                                  && (back_facing == f_p_back_facing
@@ -235,19 +241,21 @@ module screener_formal (
 `ifdef INDUCTION
     // ---- Invariants over the internal state (the induction's strengthening). ----
     // The pipeline never stalls, so the take history locates every patch: one taken k cycles
-    // ago is in stage k (k <= 4), in divider stage k - 5 (5 <= k <= 22), complete from k = 23.
-    reg [6:0] f_young4, f_young22, f_young23, f_younger;  // takes in the last 4, 22, 23 cycles,
-                                                          // and in the followed patch's life
+    // ago is in stage k (k <= 8 = VERDICT_LATENCY), in divider stage k - 9 (9 <= k <= 26),
+    // complete from k = 27 (LATENCY - 1).
+    reg [6:0] f_young_v, f_young_d, f_young_l, f_younger;  // takes in the last 8, 26 and 27
+                                                           // cycles, and in the followed
+                                                           // patch's life
     integer k;
     always @(*) begin
-        f_young4 = 7'd0;
-        f_young22 = 7'd0;
-        f_young23 = 7'd0;
+        f_young_v = 7'd0;
+        f_young_d = 7'd0;
+        f_young_l = 7'd0;
         f_younger = 7'd0;
-        for (k = 1; k <= 23; k = k + 1) begin
-            if (k <= 4) f_young4 = f_young4 + f_sr[k];
-            if (k <= 22) f_young22 = f_young22 + f_sr[k];
-            f_young23 = f_young23 + f_sr[k];
+        for (k = 1; k <= LATENCY - 1; k = k + 1) begin
+            if (k <= VERDICT_LATENCY) f_young_v = f_young_v + f_sr[k];
+            if (k <= VERDICT_LATENCY + DIV_LATENCY) f_young_d = f_young_d + f_sr[k];
+            f_young_l = f_young_l + f_sr[k];
             if (k <= f_age) f_younger = f_younger + f_sr[k];
         end
     end
@@ -258,24 +266,28 @@ module screener_formal (
             assign f_tags[g] = tgp[3 * g];
         end
     endgenerate
-    wire [4:0] f_slot = rd_ptr + f_ahead[4:0];  // the followed patch's slot (from stage 5 on)
+    wire [4:0] f_slot = rd_ptr + f_ahead[4:0];  // the followed patch's slot (from stage 9 on)
 
     always @(*) begin
-        i_stages: assert(v1 == f_sr[1] && v2 == f_sr[2] && v3 == f_sr[3] && v4 == f_sr[4]);
-        i_tags: assert(f_tags == f_sr[22:5]);
-        // At most one screen's register is set (the verdict is one of five).
-        i_verdict: assert(!(backward4 && back_facing4) && !(backward4 && outside4)
-                          && !(back_facing4 && outside4));
+        i_stages: assert(v1 == f_sr[1] && v2 == f_sr[2] && v3 == f_sr[3] && v4 == f_sr[4]
+                         && v5 == f_sr[5] && v6 == f_sr[6] && v7 == f_sr[7] && v8 == f_sr[8]);
+        i_tags: assert(f_tags == f_sr[VERDICT_LATENCY + DIV_LATENCY:VERDICT_LATENCY + 1]);
+        // At most one screen's register is set in each stage (the verdict is one of five).
+        // (The outside screen is decided in stage 7, from the other two's registers.)
+        i_verdict: assert(!(backward7 && back_facing7)
+                          && !(backward8 && back_facing8) && !(backward8 && outside8)
+                          && !(back_facing8 && outside8));
         i_used: assert(used == f_held[5:0]);
         // Patches leave no earlier than LATENCY cycles after their acceptance.
-        i_young: assert(f_young23 <= f_held);
-        // Slots rd_ptr .. are reserved by the patches past stage 4, complete for those past
+        i_young: assert(f_young_l <= f_held);
+        // Slots rd_ptr .. are reserved by the patches past stage 8, complete for those past
         // the divider (done).
-        i_res_ptr: assert(res_ptr == rd_ptr + f_held[4:0] - f_young4[4:0]);
-        i_done: assert({1'b0, done} == f_held - f_young22);
+        i_res_ptr: assert(res_ptr == rd_ptr + f_held[4:0] - f_young_v[4:0]);
+        i_done: assert({1'b0, done} == f_held - f_young_d);
         i_fill_ptr: assert(fill_ptr == rd_ptr + done[4:0]);
+        i_rd_inc: assert(rd_inc_x == ((rd_ptr + 5'd1) ^ 5'd1));
         // The head is presented exactly when it was complete before this cycle.
-        i_head_valid: assert(out_valid == (done - f_sr[23] != 6'd0));
+        i_head_valid: assert(out_valid == (done - f_sr[LATENCY - 1] != 6'd0));
         // The read registers show the head slot whenever they are presented.
         if (out_valid) begin
             i_head: assert(out_id == lane_id[rd_ptr] && out_pass == lane_sh[rd_ptr][6]
@@ -284,22 +296,26 @@ module screener_formal (
         // The followed patch: in its stage, then in its slot.
         if (f_trk) begin
             i_trk_age: assert(f_age != 6'd0);
-            if (f_age <= 23) begin
+            if (f_age <= LATENCY - 1) begin
                 i_trk_young: assert(f_sr[f_age] && f_ahead == f_held - f_younger);
             end else begin
-                i_trk_done: assert({1'b0, done} >= f_ahead + 7'd1 + f_sr[23]);
+                i_trk_done: assert({1'b0, done} >= f_ahead + 7'd1 + f_sr[LATENCY - 1]);
             end
             if (f_age == 1) i_trk_id1: assert(id1 == f_id);
             if (f_age == 2) i_trk_id2: assert(id2 == f_id);
             if (f_age == 3) i_trk_id3: assert(id3 == f_id);
             if (f_age == 4) i_trk_id4: assert(id4 == f_id);
-            if (f_age >= 5) i_trk_slot: assert(lane_id[f_slot] == f_id);
-            if (f_age >= 6) i_trk_pass: assert(lane_sh[f_slot][6] == f_vpass);
+            if (f_age == 5) i_trk_id5: assert(id5 == f_id);
+            if (f_age == 6) i_trk_id6: assert(id6 == f_id);
+            if (f_age == 7) i_trk_id7: assert(id7 == f_id);
+            if (f_age == 8) i_trk_id8: assert(id8 == f_id);
+            if (f_age >= VERDICT_LATENCY + 1) i_trk_slot: assert(lane_id[f_slot] == f_id);
+            if (f_age >= VERDICT_LATENCY + 2) i_trk_pass: assert(lane_sh[f_slot][6] == f_vpass);
         end
     end
     always @(posedge clock) begin
-        if (f_past && f_trk && f_age == 5) begin
-            i_trk_pass5: assert(lane_sh[f_slot][6] == (passed != f_p_passed));
+        if (f_past && f_trk && f_age == VERDICT_LATENCY + 1) begin
+            i_trk_pass_v: assert(lane_sh[f_slot][6] == (passed != f_p_passed));
         end
     end
 `endif

@@ -2149,6 +2149,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [4:0] rd_ptr$d;
     wire  [4:0] rd_ptr$q;
     reg  rd_ptr$clock;
+    reg  [4:0] rd_inc_x$d;
+    wire  [4:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
     reg  head_valid$d;
     wire  head_valid$q;
     reg  head_valid$clock;
@@ -2288,9 +2291,12 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  negy2$d;
     wire  negy2$q;
     reg  negy2$clock;
-    reg  [17:0] nmax2$d;
-    wire  [17:0] nmax2$q;
-    reg  nmax2$clock;
+    reg  [17:0] normal_x2$d;
+    wire  [17:0] normal_x2$q;
+    reg  normal_x2$clock;
+    reg  [17:0] normal_y2$d;
+    wire  [17:0] normal_y2$q;
+    reg  normal_y2$clock;
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
@@ -2321,12 +2327,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  negy3$d;
     wire  negy3$q;
     reg  negy3$clock;
-    reg  [5:0] clz_n3$d;
-    wire  [5:0] clz_n3$q;
-    reg  clz_n3$clock;
-    reg  [31:0] norm_n3$d;
-    wire  [31:0] norm_n3$q;
-    reg  norm_n3$clock;
+    reg  [17:0] nmax3$d;
+    wire  [17:0] nmax3$q;
+    reg  nmax3$clock;
     reg  v4$d;
     wire  v4$q;
     reg  v4$clock;
@@ -2357,30 +2360,240 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  negy4$d;
     wire  negy4$q;
     reg  negy4$clock;
+    reg  [31:0] p_aby4$d;
+    wire  [31:0] p_aby4$q;
+    reg  p_aby4$clock;
+    reg  [31:0] p_abx4$d;
+    wire  [31:0] p_abx4$q;
+    reg  p_abx4$clock;
     reg  [5:0] clz_n4$d;
     wire  [5:0] clz_n4$q;
     reg  clz_n4$clock;
     reg  [31:0] norm_n4$d;
     wire  [31:0] norm_n4$q;
     reg  norm_n4$clock;
-    reg  [31:0] k4$d;
-    wire  [31:0] k4$q;
-    reg  k4$clock;
-    reg  [5:0] clz_e4$d;
-    wire  [5:0] clz_e4$q;
-    reg  clz_e4$clock;
-    reg  [31:0] norm_e4$d;
-    wire  [31:0] norm_e4$q;
-    reg  norm_e4$clock;
-    reg  backward4$d;
-    wire  backward4$q;
-    reg  backward4$clock;
-    reg  back_facing4$d;
-    wire  back_facing4$q;
-    reg  back_facing4$clock;
-    reg  outside4$d;
-    wire  outside4$q;
-    reg  outside4$clock;
+    reg  v5$d;
+    wire  v5$q;
+    reg  v5$clock;
+    reg  [15:0] id5$d;
+    wire  [15:0] id5$q;
+    reg  id5$clock;
+    reg  [17:0] ax5$d;
+    wire  [17:0] ax5$q;
+    reg  ax5$clock;
+    reg  [17:0] ay5$d;
+    wire  [17:0] ay5$q;
+    reg  ay5$clock;
+    reg  [17:0] bx5$d;
+    wire  [17:0] bx5$q;
+    reg  bx5$clock;
+    reg  [17:0] by5$d;
+    wire  [17:0] by5$q;
+    reg  by5$clock;
+    reg  [17:0] absnx5$d;
+    wire  [17:0] absnx5$q;
+    reg  absnx5$clock;
+    reg  [17:0] absny5$d;
+    wire  [17:0] absny5$q;
+    reg  absny5$clock;
+    reg  negx5$d;
+    wire  negx5$q;
+    reg  negx5$clock;
+    reg  negy5$d;
+    wire  negy5$q;
+    reg  negy5$clock;
+    reg  [31:0] k5$d;
+    wire  [31:0] k5$q;
+    reg  k5$clock;
+    reg  [31:0] p_nax5$d;
+    wire  [31:0] p_nax5$q;
+    reg  p_nax5$clock;
+    reg  [31:0] p_nay5$d;
+    wire  [31:0] p_nay5$q;
+    reg  p_nay5$clock;
+    reg  [31:0] p_nbx5$d;
+    wire  [31:0] p_nbx5$q;
+    reg  p_nbx5$clock;
+    reg  [31:0] p_nby5$d;
+    wire  [31:0] p_nby5$q;
+    reg  p_nby5$clock;
+    reg  [5:0] clz_n5$d;
+    wire  [5:0] clz_n5$q;
+    reg  clz_n5$clock;
+    reg  [31:0] norm_n5$d;
+    wire  [31:0] norm_n5$q;
+    reg  norm_n5$clock;
+    reg  v6$d;
+    wire  v6$q;
+    reg  v6$clock;
+    reg  [15:0] id6$d;
+    wire  [15:0] id6$q;
+    reg  id6$clock;
+    reg  [17:0] ax6$d;
+    wire  [17:0] ax6$q;
+    reg  ax6$clock;
+    reg  [17:0] ay6$d;
+    wire  [17:0] ay6$q;
+    reg  ay6$clock;
+    reg  [17:0] bx6$d;
+    wire  [17:0] bx6$q;
+    reg  bx6$clock;
+    reg  [17:0] by6$d;
+    wire  [17:0] by6$q;
+    reg  by6$clock;
+    reg  [17:0] absnx6$d;
+    wire  [17:0] absnx6$q;
+    reg  absnx6$clock;
+    reg  [17:0] absny6$d;
+    wire  [17:0] absny6$q;
+    reg  absny6$clock;
+    reg  negx6$d;
+    wire  negx6$q;
+    reg  negx6$clock;
+    reg  negy6$d;
+    wire  negy6$q;
+    reg  negy6$clock;
+    reg  [31:0] k6$d;
+    wire  [31:0] k6$q;
+    reg  k6$clock;
+    reg  [31:0] ha6$d;
+    wire  [31:0] ha6$q;
+    reg  ha6$clock;
+    reg  [31:0] hb6$d;
+    wire  [31:0] hb6$q;
+    reg  hb6$clock;
+    reg  [31:0] p_fby6$d;
+    wire  [31:0] p_fby6$q;
+    reg  p_fby6$clock;
+    reg  [31:0] p_fbx6$d;
+    wire  [31:0] p_fbx6$q;
+    reg  p_fbx6$clock;
+    reg  [31:0] p_lay6$d;
+    wire  [31:0] p_lay6$q;
+    reg  p_lay6$clock;
+    reg  [31:0] p_lax6$d;
+    wire  [31:0] p_lax6$q;
+    reg  p_lax6$clock;
+    reg  [5:0] clz_n6$d;
+    wire  [5:0] clz_n6$q;
+    reg  clz_n6$clock;
+    reg  [31:0] norm_n6$d;
+    wire  [31:0] norm_n6$q;
+    reg  norm_n6$clock;
+    reg  [5:0] clz_e6$d;
+    wire  [5:0] clz_e6$q;
+    reg  clz_e6$clock;
+    reg  [31:0] norm_e6$d;
+    wire  [31:0] norm_e6$q;
+    reg  norm_e6$clock;
+    reg  v7$d;
+    wire  v7$q;
+    reg  v7$clock;
+    reg  [15:0] id7$d;
+    wire  [15:0] id7$q;
+    reg  id7$clock;
+    reg  [17:0] ax7$d;
+    wire  [17:0] ax7$q;
+    reg  ax7$clock;
+    reg  [17:0] ay7$d;
+    wire  [17:0] ay7$q;
+    reg  ay7$clock;
+    reg  [17:0] bx7$d;
+    wire  [17:0] bx7$q;
+    reg  bx7$clock;
+    reg  [17:0] by7$d;
+    wire  [17:0] by7$q;
+    reg  by7$clock;
+    reg  [17:0] absnx7$d;
+    wire  [17:0] absnx7$q;
+    reg  absnx7$clock;
+    reg  [17:0] absny7$d;
+    wire  [17:0] absny7$q;
+    reg  absny7$clock;
+    reg  negx7$d;
+    wire  negx7$q;
+    reg  negx7$clock;
+    reg  negy7$d;
+    wire  negy7$q;
+    reg  negy7$clock;
+    reg  [31:0] k7$d;
+    wire  [31:0] k7$q;
+    reg  k7$clock;
+    reg  [31:0] side_f7$d;
+    wire  [31:0] side_f7$q;
+    reg  side_f7$clock;
+    reg  [31:0] side_l7$d;
+    wire  [31:0] side_l7$q;
+    reg  side_l7$clock;
+    reg  [5:0] clz_n7$d;
+    wire  [5:0] clz_n7$q;
+    reg  clz_n7$clock;
+    reg  [31:0] norm_n7$d;
+    wire  [31:0] norm_n7$q;
+    reg  norm_n7$clock;
+    reg  [5:0] clz_e7$d;
+    wire  [5:0] clz_e7$q;
+    reg  clz_e7$clock;
+    reg  [31:0] norm_e7$d;
+    wire  [31:0] norm_e7$q;
+    reg  norm_e7$clock;
+    reg  backward7$d;
+    wire  backward7$q;
+    reg  backward7$clock;
+    reg  back_facing7$d;
+    wire  back_facing7$q;
+    reg  back_facing7$clock;
+    reg  ha_pos7$d;
+    wire  ha_pos7$q;
+    reg  ha_pos7$clock;
+    reg  hb_pos7$d;
+    wire  hb_pos7$q;
+    reg  hb_pos7$clock;
+    reg  v8$d;
+    wire  v8$q;
+    reg  v8$clock;
+    reg  [15:0] id8$d;
+    wire  [15:0] id8$q;
+    reg  id8$clock;
+    reg  [17:0] ax8$d;
+    wire  [17:0] ax8$q;
+    reg  ax8$clock;
+    reg  [17:0] ay8$d;
+    wire  [17:0] ay8$q;
+    reg  ay8$clock;
+    reg  [17:0] bx8$d;
+    wire  [17:0] bx8$q;
+    reg  bx8$clock;
+    reg  [17:0] by8$d;
+    wire  [17:0] by8$q;
+    reg  by8$clock;
+    reg  [17:0] absnx8$d;
+    wire  [17:0] absnx8$q;
+    reg  absnx8$clock;
+    reg  [17:0] absny8$d;
+    wire  [17:0] absny8$q;
+    reg  absny8$clock;
+    reg  negx8$d;
+    wire  negx8$q;
+    reg  negx8$clock;
+    reg  negy8$d;
+    wire  negy8$q;
+    reg  negy8$clock;
+    reg  [31:0] k8$d;
+    wire  [31:0] k8$q;
+    reg  k8$clock;
+    reg  [5:0] exp8$d;
+    wire  [5:0] exp8$q;
+    reg  exp8$clock;
+    reg  backward8$d;
+    wire  backward8$q;
+    reg  backward8$clock;
+    reg  back_facing8$d;
+    wire  back_facing8$q;
+    reg  back_facing8$clock;
+    reg  outside8$d;
+    wire  outside8$q;
+    reg  outside8$clock;
     reg  divider$clock;
     reg  [31:0] divider$rx;
     reg  [31:0] divider$ry;
@@ -2422,6 +2635,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [4:0] res_inc;
     reg  [4:0] fill_inc;
     reg  [4:0] rd_inc;
+    reg  [4:0] rd_inc2;
     reg  [4:0] rd_addr;
     reg  [17:0] ext_ox;
     reg  [17:0] ext_oy;
@@ -2439,49 +2653,49 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [31:0] zn0;
     reg  [31:0] zn1;
     reg  [31:0] zn2;
+    reg  [5:0] cn16_n;
+    reg  [5:0] cn8_n;
+    reg  [15:0] top16_n;
+    reg  [7:0] top8_n;
+    reg  [31:0] kk;
     reg  [31:0] zn3;
     reg  [31:0] zn4;
     reg  [31:0] zn5;
-    reg  [5:0] cn16_n;
-    reg  [5:0] cn8_n;
     reg  [5:0] cn4_n;
     reg  [5:0] cn2_n;
     reg  [5:0] cn1_n;
-    reg  [15:0] top16_n;
-    reg  [7:0] top8_n;
     reg  [3:0] top4_n;
     reg  [1:0] top2_n;
     reg  [31:0] ha;
     reg  [31:0] hb;
-    reg  [31:0] kk;
-    reg  [31:0] side_f;
-    reg  [31:0] side_l;
-    reg  [31:0] side_f_x;
-    reg  [31:0] side_l_x;
-    reg  ha_pos;
-    reg  hb_pos;
-    reg  is_backward;
-    reg  is_back_facing;
-    reg  is_outside;
     reg  [31:0] k2;
     reg  [31:0] ze0;
     reg  [31:0] ze1;
     reg  [31:0] ze2;
+    reg  [5:0] ce16_e;
+    reg  [5:0] ce8_e;
+    reg  [15:0] top16_e;
+    reg  [7:0] top8_e;
     reg  [31:0] ze3;
     reg  [31:0] ze4;
     reg  [31:0] ze5;
-    reg  [5:0] ce16_e;
-    reg  [5:0] ce8_e;
     reg  [5:0] ce4_e;
     reg  [5:0] ce2_e;
     reg  [5:0] ce1_e;
-    reg  [15:0] top16_e;
-    reg  [7:0] top8_e;
     reg  [3:0] top4_e;
     reg  [1:0] top2_e;
+    reg  ha_pos;
+    reg  hb_pos;
+    reg  is_backward;
+    reg  is_back_facing;
+    reg  [31:0] side_f;
+    reg  [31:0] side_l;
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
     reg  [5:0] sh;
+    reg  [31:0] side_f_x;
+    reg  [31:0] side_l_x;
+    reg  is_outside;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -2522,6 +2736,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
+    );
+    processing_element$screener$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
     );
     processing_element$screener$head_valid head_valid(
         .d(head_valid$d),
@@ -2732,10 +2951,15 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(negy2$q),
         .clock(negy2$clock)
     );
-    processing_element$screener$nmax2 nmax2(
-        .d(nmax2$d),
-        .q(nmax2$q),
-        .clock(nmax2$clock)
+    processing_element$screener$normal_x2 normal_x2(
+        .d(normal_x2$d),
+        .q(normal_x2$q),
+        .clock(normal_x2$clock)
+    );
+    processing_element$screener$normal_y2 normal_y2(
+        .d(normal_y2$d),
+        .q(normal_y2$q),
+        .clock(normal_y2$clock)
     );
     processing_element$screener$v3 v3(
         .d(v3$d),
@@ -2787,15 +3011,10 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(negy3$q),
         .clock(negy3$clock)
     );
-    processing_element$screener$clz_n3 clz_n3(
-        .d(clz_n3$d),
-        .q(clz_n3$q),
-        .clock(clz_n3$clock)
-    );
-    processing_element$screener$norm_n3 norm_n3(
-        .d(norm_n3$d),
-        .q(norm_n3$q),
-        .clock(norm_n3$clock)
+    processing_element$screener$nmax3 nmax3(
+        .d(nmax3$d),
+        .q(nmax3$q),
+        .clock(nmax3$clock)
     );
     processing_element$screener$v4 v4(
         .d(v4$d),
@@ -2847,6 +3066,16 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(negy4$q),
         .clock(negy4$clock)
     );
+    processing_element$screener$p_aby4 p_aby4(
+        .d(p_aby4$d),
+        .q(p_aby4$q),
+        .clock(p_aby4$clock)
+    );
+    processing_element$screener$p_abx4 p_abx4(
+        .d(p_abx4$d),
+        .q(p_abx4$q),
+        .clock(p_abx4$clock)
+    );
     processing_element$screener$clz_n4 clz_n4(
         .d(clz_n4$d),
         .q(clz_n4$q),
@@ -2857,35 +3086,375 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(norm_n4$q),
         .clock(norm_n4$clock)
     );
-    processing_element$screener$k4 k4(
-        .d(k4$d),
-        .q(k4$q),
-        .clock(k4$clock)
+    processing_element$screener$v5 v5(
+        .d(v5$d),
+        .q(v5$q),
+        .clock(v5$clock)
     );
-    processing_element$screener$clz_e4 clz_e4(
-        .d(clz_e4$d),
-        .q(clz_e4$q),
-        .clock(clz_e4$clock)
+    processing_element$screener$id5 id5(
+        .d(id5$d),
+        .q(id5$q),
+        .clock(id5$clock)
     );
-    processing_element$screener$norm_e4 norm_e4(
-        .d(norm_e4$d),
-        .q(norm_e4$q),
-        .clock(norm_e4$clock)
+    processing_element$screener$ax5 ax5(
+        .d(ax5$d),
+        .q(ax5$q),
+        .clock(ax5$clock)
     );
-    processing_element$screener$backward4 backward4(
-        .d(backward4$d),
-        .q(backward4$q),
-        .clock(backward4$clock)
+    processing_element$screener$ay5 ay5(
+        .d(ay5$d),
+        .q(ay5$q),
+        .clock(ay5$clock)
     );
-    processing_element$screener$back_facing4 back_facing4(
-        .d(back_facing4$d),
-        .q(back_facing4$q),
-        .clock(back_facing4$clock)
+    processing_element$screener$bx5 bx5(
+        .d(bx5$d),
+        .q(bx5$q),
+        .clock(bx5$clock)
     );
-    processing_element$screener$outside4 outside4(
-        .d(outside4$d),
-        .q(outside4$q),
-        .clock(outside4$clock)
+    processing_element$screener$by5 by5(
+        .d(by5$d),
+        .q(by5$q),
+        .clock(by5$clock)
+    );
+    processing_element$screener$absnx5 absnx5(
+        .d(absnx5$d),
+        .q(absnx5$q),
+        .clock(absnx5$clock)
+    );
+    processing_element$screener$absny5 absny5(
+        .d(absny5$d),
+        .q(absny5$q),
+        .clock(absny5$clock)
+    );
+    processing_element$screener$negx5 negx5(
+        .d(negx5$d),
+        .q(negx5$q),
+        .clock(negx5$clock)
+    );
+    processing_element$screener$negy5 negy5(
+        .d(negy5$d),
+        .q(negy5$q),
+        .clock(negy5$clock)
+    );
+    processing_element$screener$k5 k5(
+        .d(k5$d),
+        .q(k5$q),
+        .clock(k5$clock)
+    );
+    processing_element$screener$p_nax5 p_nax5(
+        .d(p_nax5$d),
+        .q(p_nax5$q),
+        .clock(p_nax5$clock)
+    );
+    processing_element$screener$p_nay5 p_nay5(
+        .d(p_nay5$d),
+        .q(p_nay5$q),
+        .clock(p_nay5$clock)
+    );
+    processing_element$screener$p_nbx5 p_nbx5(
+        .d(p_nbx5$d),
+        .q(p_nbx5$q),
+        .clock(p_nbx5$clock)
+    );
+    processing_element$screener$p_nby5 p_nby5(
+        .d(p_nby5$d),
+        .q(p_nby5$q),
+        .clock(p_nby5$clock)
+    );
+    processing_element$screener$clz_n5 clz_n5(
+        .d(clz_n5$d),
+        .q(clz_n5$q),
+        .clock(clz_n5$clock)
+    );
+    processing_element$screener$norm_n5 norm_n5(
+        .d(norm_n5$d),
+        .q(norm_n5$q),
+        .clock(norm_n5$clock)
+    );
+    processing_element$screener$v6 v6(
+        .d(v6$d),
+        .q(v6$q),
+        .clock(v6$clock)
+    );
+    processing_element$screener$id6 id6(
+        .d(id6$d),
+        .q(id6$q),
+        .clock(id6$clock)
+    );
+    processing_element$screener$ax6 ax6(
+        .d(ax6$d),
+        .q(ax6$q),
+        .clock(ax6$clock)
+    );
+    processing_element$screener$ay6 ay6(
+        .d(ay6$d),
+        .q(ay6$q),
+        .clock(ay6$clock)
+    );
+    processing_element$screener$bx6 bx6(
+        .d(bx6$d),
+        .q(bx6$q),
+        .clock(bx6$clock)
+    );
+    processing_element$screener$by6 by6(
+        .d(by6$d),
+        .q(by6$q),
+        .clock(by6$clock)
+    );
+    processing_element$screener$absnx6 absnx6(
+        .d(absnx6$d),
+        .q(absnx6$q),
+        .clock(absnx6$clock)
+    );
+    processing_element$screener$absny6 absny6(
+        .d(absny6$d),
+        .q(absny6$q),
+        .clock(absny6$clock)
+    );
+    processing_element$screener$negx6 negx6(
+        .d(negx6$d),
+        .q(negx6$q),
+        .clock(negx6$clock)
+    );
+    processing_element$screener$negy6 negy6(
+        .d(negy6$d),
+        .q(negy6$q),
+        .clock(negy6$clock)
+    );
+    processing_element$screener$k6 k6(
+        .d(k6$d),
+        .q(k6$q),
+        .clock(k6$clock)
+    );
+    processing_element$screener$ha6 ha6(
+        .d(ha6$d),
+        .q(ha6$q),
+        .clock(ha6$clock)
+    );
+    processing_element$screener$hb6 hb6(
+        .d(hb6$d),
+        .q(hb6$q),
+        .clock(hb6$clock)
+    );
+    processing_element$screener$p_fby6 p_fby6(
+        .d(p_fby6$d),
+        .q(p_fby6$q),
+        .clock(p_fby6$clock)
+    );
+    processing_element$screener$p_fbx6 p_fbx6(
+        .d(p_fbx6$d),
+        .q(p_fbx6$q),
+        .clock(p_fbx6$clock)
+    );
+    processing_element$screener$p_lay6 p_lay6(
+        .d(p_lay6$d),
+        .q(p_lay6$q),
+        .clock(p_lay6$clock)
+    );
+    processing_element$screener$p_lax6 p_lax6(
+        .d(p_lax6$d),
+        .q(p_lax6$q),
+        .clock(p_lax6$clock)
+    );
+    processing_element$screener$clz_n6 clz_n6(
+        .d(clz_n6$d),
+        .q(clz_n6$q),
+        .clock(clz_n6$clock)
+    );
+    processing_element$screener$norm_n6 norm_n6(
+        .d(norm_n6$d),
+        .q(norm_n6$q),
+        .clock(norm_n6$clock)
+    );
+    processing_element$screener$clz_e6 clz_e6(
+        .d(clz_e6$d),
+        .q(clz_e6$q),
+        .clock(clz_e6$clock)
+    );
+    processing_element$screener$norm_e6 norm_e6(
+        .d(norm_e6$d),
+        .q(norm_e6$q),
+        .clock(norm_e6$clock)
+    );
+    processing_element$screener$v7 v7(
+        .d(v7$d),
+        .q(v7$q),
+        .clock(v7$clock)
+    );
+    processing_element$screener$id7 id7(
+        .d(id7$d),
+        .q(id7$q),
+        .clock(id7$clock)
+    );
+    processing_element$screener$ax7 ax7(
+        .d(ax7$d),
+        .q(ax7$q),
+        .clock(ax7$clock)
+    );
+    processing_element$screener$ay7 ay7(
+        .d(ay7$d),
+        .q(ay7$q),
+        .clock(ay7$clock)
+    );
+    processing_element$screener$bx7 bx7(
+        .d(bx7$d),
+        .q(bx7$q),
+        .clock(bx7$clock)
+    );
+    processing_element$screener$by7 by7(
+        .d(by7$d),
+        .q(by7$q),
+        .clock(by7$clock)
+    );
+    processing_element$screener$absnx7 absnx7(
+        .d(absnx7$d),
+        .q(absnx7$q),
+        .clock(absnx7$clock)
+    );
+    processing_element$screener$absny7 absny7(
+        .d(absny7$d),
+        .q(absny7$q),
+        .clock(absny7$clock)
+    );
+    processing_element$screener$negx7 negx7(
+        .d(negx7$d),
+        .q(negx7$q),
+        .clock(negx7$clock)
+    );
+    processing_element$screener$negy7 negy7(
+        .d(negy7$d),
+        .q(negy7$q),
+        .clock(negy7$clock)
+    );
+    processing_element$screener$k7 k7(
+        .d(k7$d),
+        .q(k7$q),
+        .clock(k7$clock)
+    );
+    processing_element$screener$side_f7 side_f7(
+        .d(side_f7$d),
+        .q(side_f7$q),
+        .clock(side_f7$clock)
+    );
+    processing_element$screener$side_l7 side_l7(
+        .d(side_l7$d),
+        .q(side_l7$q),
+        .clock(side_l7$clock)
+    );
+    processing_element$screener$clz_n7 clz_n7(
+        .d(clz_n7$d),
+        .q(clz_n7$q),
+        .clock(clz_n7$clock)
+    );
+    processing_element$screener$norm_n7 norm_n7(
+        .d(norm_n7$d),
+        .q(norm_n7$q),
+        .clock(norm_n7$clock)
+    );
+    processing_element$screener$clz_e7 clz_e7(
+        .d(clz_e7$d),
+        .q(clz_e7$q),
+        .clock(clz_e7$clock)
+    );
+    processing_element$screener$norm_e7 norm_e7(
+        .d(norm_e7$d),
+        .q(norm_e7$q),
+        .clock(norm_e7$clock)
+    );
+    processing_element$screener$backward7 backward7(
+        .d(backward7$d),
+        .q(backward7$q),
+        .clock(backward7$clock)
+    );
+    processing_element$screener$back_facing7 back_facing7(
+        .d(back_facing7$d),
+        .q(back_facing7$q),
+        .clock(back_facing7$clock)
+    );
+    processing_element$screener$ha_pos7 ha_pos7(
+        .d(ha_pos7$d),
+        .q(ha_pos7$q),
+        .clock(ha_pos7$clock)
+    );
+    processing_element$screener$hb_pos7 hb_pos7(
+        .d(hb_pos7$d),
+        .q(hb_pos7$q),
+        .clock(hb_pos7$clock)
+    );
+    processing_element$screener$v8 v8(
+        .d(v8$d),
+        .q(v8$q),
+        .clock(v8$clock)
+    );
+    processing_element$screener$id8 id8(
+        .d(id8$d),
+        .q(id8$q),
+        .clock(id8$clock)
+    );
+    processing_element$screener$ax8 ax8(
+        .d(ax8$d),
+        .q(ax8$q),
+        .clock(ax8$clock)
+    );
+    processing_element$screener$ay8 ay8(
+        .d(ay8$d),
+        .q(ay8$q),
+        .clock(ay8$clock)
+    );
+    processing_element$screener$bx8 bx8(
+        .d(bx8$d),
+        .q(bx8$q),
+        .clock(bx8$clock)
+    );
+    processing_element$screener$by8 by8(
+        .d(by8$d),
+        .q(by8$q),
+        .clock(by8$clock)
+    );
+    processing_element$screener$absnx8 absnx8(
+        .d(absnx8$d),
+        .q(absnx8$q),
+        .clock(absnx8$clock)
+    );
+    processing_element$screener$absny8 absny8(
+        .d(absny8$d),
+        .q(absny8$q),
+        .clock(absny8$clock)
+    );
+    processing_element$screener$negx8 negx8(
+        .d(negx8$d),
+        .q(negx8$q),
+        .clock(negx8$clock)
+    );
+    processing_element$screener$negy8 negy8(
+        .d(negy8$d),
+        .q(negy8$q),
+        .clock(negy8$clock)
+    );
+    processing_element$screener$k8 k8(
+        .d(k8$d),
+        .q(k8$q),
+        .clock(k8$clock)
+    );
+    processing_element$screener$exp8 exp8(
+        .d(exp8$d),
+        .q(exp8$q),
+        .clock(exp8$clock)
+    );
+    processing_element$screener$backward8 backward8(
+        .d(backward8$d),
+        .q(backward8$q),
+        .clock(backward8$clock)
+    );
+    processing_element$screener$back_facing8 back_facing8(
+        .d(back_facing8$d),
+        .q(back_facing8$q),
+        .clock(back_facing8$clock)
+    );
+    processing_element$screener$outside8 outside8(
+        .d(outside8$d),
+        .q(outside8$q),
+        .clock(outside8$clock)
     );
     processing_element$screener$divider divider(
         .clock(divider$clock),
@@ -2932,6 +3501,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         res_ptr$clock = clock;
         fill_ptr$clock = clock;
         rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
         head_valid$clock = clock;
         v1$clock = clock;
         id1$clock = clock;
@@ -2949,7 +3519,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny2$clock = clock;
         negx2$clock = clock;
         negy2$clock = clock;
-        nmax2$clock = clock;
+        normal_x2$clock = clock;
+        normal_y2$clock = clock;
         v3$clock = clock;
         id3$clock = clock;
         ax3$clock = clock;
@@ -2960,8 +3531,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny3$clock = clock;
         negx3$clock = clock;
         negy3$clock = clock;
-        clz_n3$clock = clock;
-        norm_n3$clock = clock;
+        nmax3$clock = clock;
         v4$clock = clock;
         id4$clock = clock;
         ax4$clock = clock;
@@ -2972,14 +3542,84 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny4$clock = clock;
         negx4$clock = clock;
         negy4$clock = clock;
+        p_aby4$clock = clock;
+        p_abx4$clock = clock;
         clz_n4$clock = clock;
         norm_n4$clock = clock;
-        k4$clock = clock;
-        clz_e4$clock = clock;
-        norm_e4$clock = clock;
-        backward4$clock = clock;
-        back_facing4$clock = clock;
-        outside4$clock = clock;
+        v5$clock = clock;
+        id5$clock = clock;
+        ax5$clock = clock;
+        ay5$clock = clock;
+        bx5$clock = clock;
+        by5$clock = clock;
+        absnx5$clock = clock;
+        absny5$clock = clock;
+        negx5$clock = clock;
+        negy5$clock = clock;
+        k5$clock = clock;
+        p_nax5$clock = clock;
+        p_nay5$clock = clock;
+        p_nbx5$clock = clock;
+        p_nby5$clock = clock;
+        clz_n5$clock = clock;
+        norm_n5$clock = clock;
+        v6$clock = clock;
+        id6$clock = clock;
+        ax6$clock = clock;
+        ay6$clock = clock;
+        bx6$clock = clock;
+        by6$clock = clock;
+        absnx6$clock = clock;
+        absny6$clock = clock;
+        negx6$clock = clock;
+        negy6$clock = clock;
+        k6$clock = clock;
+        ha6$clock = clock;
+        hb6$clock = clock;
+        p_fby6$clock = clock;
+        p_fbx6$clock = clock;
+        p_lay6$clock = clock;
+        p_lax6$clock = clock;
+        clz_n6$clock = clock;
+        norm_n6$clock = clock;
+        clz_e6$clock = clock;
+        norm_e6$clock = clock;
+        v7$clock = clock;
+        id7$clock = clock;
+        ax7$clock = clock;
+        ay7$clock = clock;
+        bx7$clock = clock;
+        by7$clock = clock;
+        absnx7$clock = clock;
+        absny7$clock = clock;
+        negx7$clock = clock;
+        negy7$clock = clock;
+        k7$clock = clock;
+        side_f7$clock = clock;
+        side_l7$clock = clock;
+        clz_n7$clock = clock;
+        norm_n7$clock = clock;
+        clz_e7$clock = clock;
+        norm_e7$clock = clock;
+        backward7$clock = clock;
+        back_facing7$clock = clock;
+        ha_pos7$clock = clock;
+        hb_pos7$clock = clock;
+        v8$clock = clock;
+        id8$clock = clock;
+        ax8$clock = clock;
+        ay8$clock = clock;
+        bx8$clock = clock;
+        by8$clock = clock;
+        absnx8$clock = clock;
+        absny8$clock = clock;
+        negx8$clock = clock;
+        negy8$clock = clock;
+        k8$clock = clock;
+        exp8$clock = clock;
+        backward8$clock = clock;
+        back_facing8$clock = clock;
+        outside8$clock = clock;
         c_passed$clock = clock;
         c_backward$clock = clock;
         c_back_facing$clock = clock;
@@ -2990,6 +3630,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         res_ptr$d = res_ptr$q;
         fill_ptr$d = fill_ptr$q;
         rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
         head_valid$d = head_valid$q;
         v1$d = v1$q;
         id1$d = id1$q;
@@ -3007,7 +3648,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny2$d = absny2$q;
         negx2$d = negx2$q;
         negy2$d = negy2$q;
-        nmax2$d = nmax2$q;
+        normal_x2$d = normal_x2$q;
+        normal_y2$d = normal_y2$q;
         v3$d = v3$q;
         id3$d = id3$q;
         ax3$d = ax3$q;
@@ -3018,8 +3660,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny3$d = absny3$q;
         negx3$d = negx3$q;
         negy3$d = negy3$q;
-        clz_n3$d = clz_n3$q;
-        norm_n3$d = norm_n3$q;
+        nmax3$d = nmax3$q;
         v4$d = v4$q;
         id4$d = id4$q;
         ax4$d = ax4$q;
@@ -3030,14 +3671,84 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny4$d = absny4$q;
         negx4$d = negx4$q;
         negy4$d = negy4$q;
+        p_aby4$d = p_aby4$q;
+        p_abx4$d = p_abx4$q;
         clz_n4$d = clz_n4$q;
         norm_n4$d = norm_n4$q;
-        k4$d = k4$q;
-        clz_e4$d = clz_e4$q;
-        norm_e4$d = norm_e4$q;
-        backward4$d = backward4$q;
-        back_facing4$d = back_facing4$q;
-        outside4$d = outside4$q;
+        v5$d = v5$q;
+        id5$d = id5$q;
+        ax5$d = ax5$q;
+        ay5$d = ay5$q;
+        bx5$d = bx5$q;
+        by5$d = by5$q;
+        absnx5$d = absnx5$q;
+        absny5$d = absny5$q;
+        negx5$d = negx5$q;
+        negy5$d = negy5$q;
+        k5$d = k5$q;
+        p_nax5$d = p_nax5$q;
+        p_nay5$d = p_nay5$q;
+        p_nbx5$d = p_nbx5$q;
+        p_nby5$d = p_nby5$q;
+        clz_n5$d = clz_n5$q;
+        norm_n5$d = norm_n5$q;
+        v6$d = v6$q;
+        id6$d = id6$q;
+        ax6$d = ax6$q;
+        ay6$d = ay6$q;
+        bx6$d = bx6$q;
+        by6$d = by6$q;
+        absnx6$d = absnx6$q;
+        absny6$d = absny6$q;
+        negx6$d = negx6$q;
+        negy6$d = negy6$q;
+        k6$d = k6$q;
+        ha6$d = ha6$q;
+        hb6$d = hb6$q;
+        p_fby6$d = p_fby6$q;
+        p_fbx6$d = p_fbx6$q;
+        p_lay6$d = p_lay6$q;
+        p_lax6$d = p_lax6$q;
+        clz_n6$d = clz_n6$q;
+        norm_n6$d = norm_n6$q;
+        clz_e6$d = clz_e6$q;
+        norm_e6$d = norm_e6$q;
+        v7$d = v7$q;
+        id7$d = id7$q;
+        ax7$d = ax7$q;
+        ay7$d = ay7$q;
+        bx7$d = bx7$q;
+        by7$d = by7$q;
+        absnx7$d = absnx7$q;
+        absny7$d = absny7$q;
+        negx7$d = negx7$q;
+        negy7$d = negy7$q;
+        k7$d = k7$q;
+        side_f7$d = side_f7$q;
+        side_l7$d = side_l7$q;
+        clz_n7$d = clz_n7$q;
+        norm_n7$d = norm_n7$q;
+        clz_e7$d = clz_e7$q;
+        norm_e7$d = norm_e7$q;
+        backward7$d = backward7$q;
+        back_facing7$d = back_facing7$q;
+        ha_pos7$d = ha_pos7$q;
+        hb_pos7$d = hb_pos7$q;
+        v8$d = v8$q;
+        id8$d = id8$q;
+        ax8$d = ax8$q;
+        ay8$d = ay8$q;
+        bx8$d = bx8$q;
+        by8$d = by8$q;
+        absnx8$d = absnx8$q;
+        absny8$d = absny8$q;
+        negx8$d = negx8$q;
+        negy8$d = negy8$q;
+        k8$d = k8$q;
+        exp8$d = exp8$q;
+        backward8$d = backward8$q;
+        back_facing8$d = back_facing8$q;
+        outside8$d = outside8$q;
         c_passed$d = c_passed$q;
         c_backward$d = c_backward$q;
         c_back_facing$d = c_back_facing$q;
@@ -3077,30 +3788,14 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         ay1$d = ext_ay - ext_oy;
         bx1$d = ext_bx - ext_ox;
         by1$d = ext_by - ext_oy;
-        m_nax$a = normal_x;
-        m_nax$b = ax1$q;
-        m_nay$a = normal_y;
-        m_nay$b = ay1$q;
-        m_nbx$a = normal_x;
-        m_nbx$b = bx1$q;
-        m_nby$a = normal_y;
-        m_nby$b = by1$q;
         m_aby$a = ax1$q;
         m_aby$b = by1$q;
         m_abx$a = ay1$q;
         m_abx$b = bx1$q;
-        m_fby$a = first_x;
-        m_fby$b = by1$q;
-        m_fbx$a = first_y;
-        m_fbx$b = bx1$q;
-        m_lay$a = last_x;
-        m_lay$b = ay1$q;
-        m_lax$a = last_y;
-        m_lax$b = ax1$q;
         nx = by1$q - ay1$q;
         ny = ax1$q - bx1$q;
-        nx_neg = zero18 - nx;
-        ny_neg = zero18 - ny;
+        nx_neg = ay1$q - by1$q;
+        ny_neg = bx1$q - ax1$q;
         absnx = nx;
         if (nx[32'h11]) begin
             absnx = nx_neg;
@@ -3108,10 +3803,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny = ny;
         if (ny[32'h11]) begin
             absny = ny_neg;
-        end
-        nmax = absny;
-        if (absnx > absny) begin
-            nmax = absnx;
         end
         v2$d = v1$q;
         id2$d = id1$q;
@@ -3123,8 +3814,42 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         absny2$d = absny;
         negx2$d = nx[32'h11];
         negy2$d = ny[32'h11];
-        nmax2$d = nmax;
-        zn0 = ((nmax2$q) & 32'hffffffff);
+        normal_x2$d = normal_x;
+        normal_y2$d = normal_y;
+        m_nax$a = normal_x;
+        m_nax$b = ax2$q;
+        m_nay$a = normal_y;
+        m_nay$b = ay2$q;
+        m_nbx$a = normal_x2$q;
+        m_nbx$b = bx2$q;
+        m_nby$a = normal_y2$q;
+        m_nby$b = by2$q;
+        nmax = absny2$q;
+        if (absnx2$q > absny2$q) begin
+            nmax = absnx2$q;
+        end
+        v3$d = v2$q;
+        id3$d = id2$q;
+        ax3$d = ax2$q;
+        ay3$d = ay2$q;
+        bx3$d = bx2$q;
+        by3$d = by2$q;
+        absnx3$d = absnx2$q;
+        absny3$d = absny2$q;
+        negx3$d = negx2$q;
+        negy3$d = negy2$q;
+        nmax3$d = nmax;
+        m_fby$a = first_x;
+        m_fby$b = by3$q;
+        m_fbx$a = first_y;
+        m_fbx$b = bx3$q;
+        m_lay$a = last_x;
+        m_lay$b = ay3$q;
+        m_lax$a = last_y;
+        m_lax$b = ax3$q;
+        p_aby4$d = m_aby$p;
+        p_abx4$d = m_abx$p;
+        zn0 = ((nmax3$q) & 32'hffffffff);
         top16_n = zn0[(32'h10)+:(16)];
         zn1 = zn0;
         cn16_n = zero6;
@@ -3139,11 +3864,28 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             zn2 = zn1 << sh8;
             cn8_n = c8_6;
         end
-        top4_n = zn2[(32'h1c)+:(4)];
-        zn3 = zn2;
+        v4$d = v3$q;
+        id4$d = id3$q;
+        ax4$d = ax3$q;
+        ay4$d = ay3$q;
+        bx4$d = bx3$q;
+        by4$d = by3$q;
+        absnx4$d = absnx3$q;
+        absny4$d = absny3$q;
+        negx4$d = negx3$q;
+        negy4$d = negy3$q;
+        clz_n4$d = cn16_n | cn8_n;
+        norm_n4$d = zn2;
+        kk = p_aby4$q - p_abx4$q;
+        p_nax5$d = m_nax$p;
+        p_nay5$d = m_nay$p;
+        p_nbx5$d = m_nbx$p;
+        p_nby5$d = m_nby$p;
+        top4_n = norm_n4$q[(32'h1c)+:(4)];
+        zn3 = norm_n4$q;
         cn4_n = zero6;
         if (top4_n == zero4) begin
-            zn3 = zn2 << sh4;
+            zn3 = norm_n4$q << sh4;
             cn4_n = c4_6;
         end
         top2_n = zn3[(32'h1e)+:(2)];
@@ -3159,31 +3901,20 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             zn5 = zn4 << sh1;
             cn1_n = c1_6;
         end
-        v3$d = v2$q;
-        id3$d = id2$q;
-        ax3$d = ax2$q;
-        ay3$d = ay2$q;
-        bx3$d = bx2$q;
-        by3$d = by2$q;
-        absnx3$d = absnx2$q;
-        absny3$d = absny2$q;
-        negx3$d = negx2$q;
-        negy3$d = negy2$q;
-        clz_n3$d = cn16_n | cn8_n | cn4_n | cn2_n | cn1_n;
-        norm_n3$d = zn5;
-        ha = m_nax$p + m_nay$p;
-        hb = m_nbx$p + m_nby$p;
-        kk = m_aby$p - m_abx$p;
-        side_f = m_fby$p - m_fbx$p;
-        side_l = m_lay$p - m_lax$p;
-        side_f_x = side_f ^ msb32;
-        side_l_x = side_l ^ msb32;
-        ha_pos = ~ha[32'h1f] & (ha != zero32);
-        hb_pos = ~hb[32'h1f] & (hb != zero32);
-        is_backward = ~ha_pos & ~hb_pos;
-        is_back_facing = ~is_backward & (kk[32'h1f] | (kk == zero32));
-        is_outside = ~is_backward & ~is_back_facing & ((hb_pos & (side_f_x < thr_f)) | (ha_pos & (side_l_x > thr_l)));
-        k2 = kk << sh1;
+        v5$d = v4$q;
+        id5$d = id4$q;
+        ax5$d = ax4$q;
+        ay5$d = ay4$q;
+        bx5$d = bx4$q;
+        by5$d = by4$q;
+        absnx5$d = absnx4$q;
+        absny5$d = absny4$q;
+        negx5$d = negx4$q;
+        negy5$d = negy4$q;
+        k5$d = kk;
+        clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
+        norm_n5$d = zn5;
+        k2 = k5$q << sh1;
         ze0 = k2;
         top16_e = ze0[(32'h10)+:(16)];
         ze1 = ze0;
@@ -3199,11 +3930,34 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             ze2 = ze1 << sh8;
             ce8_e = c8_6;
         end
-        top4_e = ze2[(32'h1c)+:(4)];
-        ze3 = ze2;
+        ha = p_nax5$q + p_nay5$q;
+        hb = p_nbx5$q + p_nby5$q;
+        p_fby6$d = m_fby$p;
+        p_fbx6$d = m_fbx$p;
+        p_lay6$d = m_lay$p;
+        p_lax6$d = m_lax$p;
+        v6$d = v5$q;
+        id6$d = id5$q;
+        ax6$d = ax5$q;
+        ay6$d = ay5$q;
+        bx6$d = bx5$q;
+        by6$d = by5$q;
+        absnx6$d = absnx5$q;
+        absny6$d = absny5$q;
+        negx6$d = negx5$q;
+        negy6$d = negy5$q;
+        k6$d = k5$q;
+        ha6$d = ha;
+        hb6$d = hb;
+        clz_n6$d = clz_n5$q;
+        norm_n6$d = norm_n5$q;
+        clz_e6$d = ce16_e | ce8_e;
+        norm_e6$d = ze2;
+        top4_e = norm_e6$q[(32'h1c)+:(4)];
+        ze3 = norm_e6$q;
         ce4_e = zero6;
         if (top4_e == zero4) begin
-            ze3 = ze2 << sh4;
+            ze3 = norm_e6$q << sh4;
             ce4_e = c4_6;
         end
         top2_e = ze3[(32'h1e)+:(2)];
@@ -3219,45 +3973,72 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             ze5 = ze4 << sh1;
             ce1_e = c1_6;
         end
-        v4$d = v3$q;
-        id4$d = id3$q;
-        ax4$d = ax3$q;
-        ay4$d = ay3$q;
-        bx4$d = bx3$q;
-        by4$d = by3$q;
-        absnx4$d = absnx3$q;
-        absny4$d = absny3$q;
-        negx4$d = negx3$q;
-        negy4$d = negy3$q;
-        clz_n4$d = clz_n3$q;
-        norm_n4$d = norm_n3$q;
-        k4$d = kk;
-        clz_e4$d = ce16_e | ce8_e | ce4_e | ce2_e | ce1_e;
-        norm_e4$d = ze5;
-        backward4$d = is_backward;
-        back_facing4$d = is_back_facing;
-        outside4$d = is_outside;
-        s0 = clz_n4$q - clz_e4$q;
+        ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
+        hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
+        is_backward = ~ha_pos & ~hb_pos;
+        is_back_facing = ~is_backward & (k6$q[32'h1f] | (k6$q == zero32));
+        side_f = p_fby6$q - p_fbx6$q;
+        side_l = p_lay6$q - p_lax6$q;
+        v7$d = v6$q;
+        id7$d = id6$q;
+        ax7$d = ax6$q;
+        ay7$d = ay6$q;
+        bx7$d = bx6$q;
+        by7$d = by6$q;
+        absnx7$d = absnx6$q;
+        absny7$d = absny6$q;
+        negx7$d = negx6$q;
+        negy7$d = negy6$q;
+        k7$d = k6$q;
+        clz_n7$d = clz_n6$q;
+        norm_n7$d = norm_n6$q;
+        clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
+        norm_e7$d = ze5;
+        backward7$d = is_backward;
+        back_facing7$d = is_back_facing;
+        ha_pos7$d = ha_pos;
+        hb_pos7$d = hb_pos;
+        side_f7$d = side_f;
+        side_l7$d = side_l;
+        s0 = clz_n7$q - clz_e7$q;
         s0_m1 = s0 - one6;
         sh = s0_m1;
-        if (norm_n4$q < norm_e4$q) begin
+        if (norm_n7$q < norm_e7$q) begin
             sh = s0;
         end
-        sh5 = sh[(32'h0)+:(5)];
-        is_near = ~backward4$q & ~back_facing4$q & ~outside4$q & sh[32'h5] & (sh < sh_lo);
-        is_pass = ~backward4$q & ~back_facing4$q & ~outside4$q & ~is_near;
-        reserve = v4$q;
-        if (v4$q) begin
+        side_f_x = side_f7$q ^ msb32;
+        side_l_x = side_l7$q ^ msb32;
+        is_outside = ~backward7$q & ~back_facing7$q & ((hb_pos7$q & (side_f_x < thr_f)) | (ha_pos7$q & (side_l_x > thr_l)));
+        v8$d = v7$q;
+        id8$d = id7$q;
+        ax8$d = ax7$q;
+        ay8$d = ay7$q;
+        bx8$d = bx7$q;
+        by8$d = by7$q;
+        absnx8$d = absnx7$q;
+        absny8$d = absny7$q;
+        negx8$d = negx7$q;
+        negy8$d = negy7$q;
+        k8$d = k7$q;
+        backward8$d = backward7$q;
+        back_facing8$d = back_facing7$q;
+        outside8$d = is_outside;
+        exp8$d = sh;
+        sh5 = exp8$q[(32'h0)+:(5)];
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
+        is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
+        reserve = v8$q;
+        if (v8$q) begin
             if (is_pass) begin
                 c_passed$d = c_passed$q + one32;
             end
-            if (backward4$q) begin
+            if (backward8$q) begin
                 c_backward$d = c_backward$q + one32;
             end
-            if (back_facing4$q) begin
+            if (back_facing8$q) begin
                 c_back_facing$d = c_back_facing$q + one32;
             end
-            if (outside4$q) begin
+            if (outside8$q) begin
                 c_outside$d = c_outside$q + one32;
             end
             if (is_near) begin
@@ -3269,43 +4050,43 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        absnx32 = ((absnx4$q) & 32'hffffffff);
-        absny32 = ((absny4$q) & 32'hffffffff);
-        low_nx = absnx4$q[(32'h0)+:(3)];
-        low_ny = absny4$q[(32'h0)+:(3)];
+        absnx32 = ((absnx8$q) & 32'hffffffff);
+        absny32 = ((absny8$q) & 32'hffffffff);
+        low_nx = absnx8$q[(32'h0)+:(3)];
+        low_ny = absny8$q[(32'h0)+:(3)];
         divider$rx = absnx32 << sh5;
         divider$ry = absny32 << sh5;
         divider$fx = zero3;
         divider$fy = zero3;
-        if (sh == sh_m1) begin
+        if (exp8$q == sh_m1) begin
             divider$rx = absnx32 >> sh1;
             divider$ry = absny32 >> sh1;
             divider$fx = low_nx << sh2_3;
             divider$fy = low_ny << sh2_3;
         end
-        else if (sh == sh_m2) begin
+        else if (exp8$q == sh_m2) begin
             divider$rx = absnx32 >> sh2;
             divider$ry = absny32 >> sh2;
             divider$fx = low_nx << sh1_3;
             divider$fy = low_ny << sh1_3;
         end
-        else if (sh == sh_lo) begin
+        else if (exp8$q == sh_lo) begin
             divider$rx = absnx32 >> sh3;
             divider$ry = absny32 >> sh3;
             divider$fx = low_nx;
             divider$fy = low_ny;
         end
-        divider$k = k4$q;
+        divider$k = k8$q;
         tag_p = zero3;
         if (reserve) begin
             tag_p = tag_pass;
         end
         tag_x = zero3;
-        if (negx4$q) begin
+        if (negx8$q) begin
             tag_x = tag_negx;
         end
         tag_y = zero3;
-        if (negy4$q) begin
+        if (negy8$q) begin
             tag_y = tag_negy;
         end
         divider$tag = tag_p | tag_x | tag_y;
@@ -3315,14 +4096,14 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         lane_bx$write_address = res_ptr$q;
         lane_by$write_address = res_ptr$q;
         lane_sh$write_address = res_ptr$q;
-        lane_id$write_data = id4$q;
-        lane_ax$write_data = ax4$q;
-        lane_ay$write_data = ay4$q;
-        lane_bx$write_data = bx4$q;
-        lane_by$write_data = by4$q;
-        sh_pass = ((sh) & 7'h7f);
+        lane_id$write_data = id8$q;
+        lane_ax$write_data = ax8$q;
+        lane_ay$write_data = ay8$q;
+        lane_bx$write_data = bx8$q;
+        lane_by$write_data = by8$q;
+        sh_pass = ((exp8$q) & 7'h7f);
         if (is_pass) begin
-            sh_pass = ((sh) & 7'h7f) | pass_flag;
+            sh_pass = ((exp8$q) & 7'h7f) | pass_flag;
         end
         lane_sh$write_data = sh_pass;
         lane_id$write_enable = reserve;
@@ -3357,13 +4138,15 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             fill_ptr$d = fill_inc;
         end
         pop = head_valid$q & out_ready;
-        rd_inc = rd_ptr$q + one5;
+        rd_inc = rd_inc_x$q ^ one5;
+        rd_inc2 = rd_inc + one5;
         done_dec = done$q - one6;
         rd_addr = rd_ptr$q;
         done_left = done$q;
         if (pop) begin
             rd_addr = rd_inc;
             rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one5;
             done_left = done_dec;
         end
         lane_id$read_address = rd_addr;
@@ -3462,6 +4245,82 @@ module processing_element$screener$absnx4(d,q,clock);
 endmodule // processing_element$screener$absnx4
 
 
+module processing_element$screener$absnx5(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx5
+
+
+module processing_element$screener$absnx6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx6
+
+
+module processing_element$screener$absnx7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx7
+
+
+module processing_element$screener$absnx8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absnx8
+
+
 module processing_element$screener$absny2(d,q,clock);
     
     // Module arguments
@@ -3517,6 +4376,82 @@ module processing_element$screener$absny4(d,q,clock);
     end
           
 endmodule // processing_element$screener$absny4
+
+
+module processing_element$screener$absny5(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny5
+
+
+module processing_element$screener$absny6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny6
+
+
+module processing_element$screener$absny7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny7
+
+
+module processing_element$screener$absny8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$absny8
 
 
 module processing_element$screener$ax1(d,q,clock);
@@ -3595,6 +4530,82 @@ module processing_element$screener$ax4(d,q,clock);
 endmodule // processing_element$screener$ax4
 
 
+module processing_element$screener$ax5(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax5
+
+
+module processing_element$screener$ax6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax6
+
+
+module processing_element$screener$ax7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax7
+
+
+module processing_element$screener$ax8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ax8
+
+
 module processing_element$screener$ay1(d,q,clock);
     
     // Module arguments
@@ -3671,7 +4682,83 @@ module processing_element$screener$ay4(d,q,clock);
 endmodule // processing_element$screener$ay4
 
 
-module processing_element$screener$back_facing4(d,q,clock);
+module processing_element$screener$ay5(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay5
+
+
+module processing_element$screener$ay6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay6
+
+
+module processing_element$screener$ay7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay7
+
+
+module processing_element$screener$ay8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ay8
+
+
+module processing_element$screener$back_facing7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3687,10 +4774,10 @@ module processing_element$screener$back_facing4(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$back_facing4
+endmodule // processing_element$screener$back_facing7
 
 
-module processing_element$screener$backward4(d,q,clock);
+module processing_element$screener$back_facing8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3706,7 +4793,45 @@ module processing_element$screener$backward4(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$backward4
+endmodule // processing_element$screener$back_facing8
+
+
+module processing_element$screener$backward7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$backward7
+
+
+module processing_element$screener$backward8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$backward8
 
 
 module processing_element$screener$bx1(d,q,clock);
@@ -3785,6 +4910,82 @@ module processing_element$screener$bx4(d,q,clock);
 endmodule // processing_element$screener$bx4
 
 
+module processing_element$screener$bx5(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx5
+
+
+module processing_element$screener$bx6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx6
+
+
+module processing_element$screener$bx7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx7
+
+
+module processing_element$screener$bx8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bx8
+
+
 module processing_element$screener$by1(d,q,clock);
     
     // Module arguments
@@ -3859,6 +5060,82 @@ module processing_element$screener$by4(d,q,clock);
     end
           
 endmodule // processing_element$screener$by4
+
+
+module processing_element$screener$by5(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by5
+
+
+module processing_element$screener$by6(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by6
+
+
+module processing_element$screener$by7(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by7
+
+
+module processing_element$screener$by8(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$by8
 
 
 module processing_element$screener$c_back_facing(d,q,clock);
@@ -3956,7 +5233,7 @@ module processing_element$screener$c_passed(d,q,clock);
 endmodule // processing_element$screener$c_passed
 
 
-module processing_element$screener$clz_e4(d,q,clock);
+module processing_element$screener$clz_e6(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -3972,10 +5249,10 @@ module processing_element$screener$clz_e4(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$clz_e4
+endmodule // processing_element$screener$clz_e6
 
 
-module processing_element$screener$clz_n3(d,q,clock);
+module processing_element$screener$clz_e7(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -3991,7 +5268,7 @@ module processing_element$screener$clz_n3(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$clz_n3
+endmodule // processing_element$screener$clz_e7
 
 
 module processing_element$screener$clz_n4(d,q,clock);
@@ -4011,6 +5288,63 @@ module processing_element$screener$clz_n4(d,q,clock);
     end
           
 endmodule // processing_element$screener$clz_n4
+
+
+module processing_element$screener$clz_n5(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$clz_n5
+
+
+module processing_element$screener$clz_n6(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$clz_n6
+
+
+module processing_element$screener$clz_n7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$clz_n7
 
 
 module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
@@ -4108,6 +5442,25 @@ module processing_element$screener$done(d,q,clock);
 endmodule // processing_element$screener$done
 
 
+module processing_element$screener$exp8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$exp8
+
+
 module processing_element$screener$fill_ptr(d,q,clock);
     
     // Module arguments
@@ -4125,6 +5478,82 @@ module processing_element$screener$fill_ptr(d,q,clock);
     end
           
 endmodule // processing_element$screener$fill_ptr
+
+
+module processing_element$screener$ha6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ha6
+
+
+module processing_element$screener$ha_pos7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$ha_pos7
+
+
+module processing_element$screener$hb6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$hb6
+
+
+module processing_element$screener$hb_pos7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$hb_pos7
 
 
 module processing_element$screener$head_valid(d,q,clock);
@@ -4222,7 +5651,83 @@ module processing_element$screener$id4(d,q,clock);
 endmodule // processing_element$screener$id4
 
 
-module processing_element$screener$k4(d,q,clock);
+module processing_element$screener$id5(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id5
+
+
+module processing_element$screener$id6(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id6
+
+
+module processing_element$screener$id7(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id7
+
+
+module processing_element$screener$id8(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$id8
+
+
+module processing_element$screener$k5(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4238,7 +5743,64 @@ module processing_element$screener$k4(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$k4
+endmodule // processing_element$screener$k5
+
+
+module processing_element$screener$k6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$k6
+
+
+module processing_element$screener$k7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$k7
+
+
+module processing_element$screener$k8(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$k8
 
 
 module processing_element$screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -4766,6 +6328,82 @@ module processing_element$screener$negx4(d,q,clock);
 endmodule // processing_element$screener$negx4
 
 
+module processing_element$screener$negx5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx5
+
+
+module processing_element$screener$negx6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx6
+
+
+module processing_element$screener$negx7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx7
+
+
+module processing_element$screener$negx8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negx8
+
+
 module processing_element$screener$negy2(d,q,clock);
     
     // Module arguments
@@ -4823,7 +6461,83 @@ module processing_element$screener$negy4(d,q,clock);
 endmodule // processing_element$screener$negy4
 
 
-module processing_element$screener$nmax2(d,q,clock);
+module processing_element$screener$negy5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy5
+
+
+module processing_element$screener$negy6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy6
+
+
+module processing_element$screener$negy7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy7
+
+
+module processing_element$screener$negy8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$negy8
+
+
+module processing_element$screener$nmax3(d,q,clock);
     
     // Module arguments
     input wire  [17:0] d;
@@ -4839,10 +6553,10 @@ module processing_element$screener$nmax2(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$nmax2
+endmodule // processing_element$screener$nmax3
 
 
-module processing_element$screener$norm_e4(d,q,clock);
+module processing_element$screener$norm_e6(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4858,10 +6572,10 @@ module processing_element$screener$norm_e4(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$norm_e4
+endmodule // processing_element$screener$norm_e6
 
 
-module processing_element$screener$norm_n3(d,q,clock);
+module processing_element$screener$norm_e7(d,q,clock);
     
     // Module arguments
     input wire  [31:0] d;
@@ -4877,7 +6591,7 @@ module processing_element$screener$norm_n3(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$norm_n3
+endmodule // processing_element$screener$norm_e7
 
 
 module processing_element$screener$norm_n4(d,q,clock);
@@ -4899,7 +6613,102 @@ module processing_element$screener$norm_n4(d,q,clock);
 endmodule // processing_element$screener$norm_n4
 
 
-module processing_element$screener$outside4(d,q,clock);
+module processing_element$screener$norm_n5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$norm_n5
+
+
+module processing_element$screener$norm_n6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$norm_n6
+
+
+module processing_element$screener$norm_n7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$norm_n7
+
+
+module processing_element$screener$normal_x2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$normal_x2
+
+
+module processing_element$screener$normal_y2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$normal_y2
+
+
+module processing_element$screener$outside8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4915,7 +6724,216 @@ module processing_element$screener$outside4(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$outside4
+endmodule // processing_element$screener$outside8
+
+
+module processing_element$screener$p_abx4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_abx4
+
+
+module processing_element$screener$p_aby4(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_aby4
+
+
+module processing_element$screener$p_fbx6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_fbx6
+
+
+module processing_element$screener$p_fby6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_fby6
+
+
+module processing_element$screener$p_lax6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_lax6
+
+
+module processing_element$screener$p_lay6(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_lay6
+
+
+module processing_element$screener$p_nax5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_nax5
+
+
+module processing_element$screener$p_nay5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_nay5
+
+
+module processing_element$screener$p_nbx5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_nbx5
+
+
+module processing_element$screener$p_nby5(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$p_nby5
+
+
+module processing_element$screener$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$rd_inc_x
 
 
 module processing_element$screener$rd_ptr(d,q,clock);
@@ -4954,6 +6972,44 @@ module processing_element$screener$res_ptr(d,q,clock);
     end
           
 endmodule // processing_element$screener$res_ptr
+
+
+module processing_element$screener$side_f7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$side_f7
+
+
+module processing_element$screener$side_l7(d,q,clock);
+    
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$side_l7
 
 
 module processing_element$screener$used(d,q,clock);
@@ -5049,6 +7105,82 @@ module processing_element$screener$v4(d,q,clock);
     end
           
 endmodule // processing_element$screener$v4
+
+
+module processing_element$screener$v5(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v5
+
+
+module processing_element$screener$v6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v6
+
+
+module processing_element$screener$v7(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v7
+
+
+module processing_element$screener$v8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$v8
 
 
 module processing_element$tag_count(d,q,clock);

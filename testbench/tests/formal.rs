@@ -9,7 +9,7 @@
 //!   result properties checked to a bounded depth (9 and 11 cycles); its covers reached (the
 //!   all-properties bounded task, `intersection.sby bmc`, takes minutes: run it by hand);
 //! * the screener: its credit and counting invariants proved by induction; every patch leaving
-//!   once, in order, with its verdict and the documented latency checked to depth 30; its covers
+//!   once, in order, with its verdict and the documented latency checked to depth 34; its covers
 //!   reached; two broken variants (a verdict not counted, a patch's id lost) caught.
 //!
 //! SymbiYosys, the Yosys it drives and the yices solver: the test uses, in this order, a native
@@ -143,7 +143,7 @@ fn the_screeners_credits_and_counters_are_proved_by_induction() {
 }
 
 #[test]
-fn the_screener_passes_every_patch_once_in_order_to_depth_30() {
+fn the_screener_passes_every_patch_once_in_order_to_depth_34() {
     expect("screener", "bmc", "PASS");
 }
 
