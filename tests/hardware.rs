@@ -87,14 +87,19 @@ fn committed_verilog_is_current() {
     }
 }
 
-/// Runs Yosys' ECP5 synthesis on one exported block; returns its statistics.
+/// Runs Yosys' ECP5 synthesis on one exported block, as the FPGA flow does (`SHELLING_ECP5`
+/// defined: the `BramOut` leaves are hand-instantiated `DP16KD`s); returns its statistics.
 fn synth_ecp5(name: &str) -> String {
+    synth_ecp5_script(name, "synth_ecp5", "tee -o /dev/stdout stat")
+}
+
+fn synth_ecp5_script(name: &str, synth: &str, then: &str) -> String {
     let file = verilog_dir().join(format!("{name}.v"));
     let out = Command::new("yosys")
         .args([
             "-q",
             "-p",
-            &format!("read_verilog {}; synth_ecp5 -top {name}; tee -o /dev/stdout stat", file.display()),
+            &format!("read_verilog -DSHELLING_ECP5 {}; {synth} -top {name}; {then}", file.display()),
         ])
         .output()
         .expect("yosys is not installed: `apt-get install yosys` (.ci/run installs it)");
@@ -122,6 +127,20 @@ fn intersection_unit_synthesizes_to_dsps_without_latches() {
     assert_eq!(cells(&stat, "MULT18X18D"), 6, "six 18x18 multipliers, one DSP each:\n{stat}");
     assert!(cells(&stat, "DP16KD") >= 4, "the ray and direction memories map to block RAM:\n{stat}");
     assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
+}
+
+/// The intersection unit's memories are `BramOut`s: on ECP5 six hand-instantiated `DP16KD`s
+/// (directions 2, live bits 1, keys 2, valid + id 1), every one reading through its output
+/// register (`REGMODE_B = "OUTREG"`), none left to Yosys' memory mapping (which never sets it).
+#[test]
+fn intersection_unit_block_rams_use_their_output_register() {
+    let text = synth_ecp5_script(
+        "intersection_unit",
+        "synth_ecp5",
+        "tee -o /dev/stdout stat; select -list t:DP16KD r:REGMODE_B=OUTREG %i; \
+         select -assert-count 6 t:DP16KD; select -assert-count 6 t:DP16KD r:REGMODE_B=OUTREG %i",
+    );
+    assert_eq!(cells(&text, "DP16KD"), 6, "{text}");
 }
 
 /// The loader has no multiplier; the screener's ten products take one DSP each and its pipelined

@@ -14,7 +14,7 @@
 //! | `patch_id`, `patch_first`, `patch_count` | in | 16, 10, 11 | patch id; test rays `first .. first + count` (mod 1024) |
 //! | `patch_retire` | in | 1 | instead of testing, retire rays `first .. first + count` (the patch fields are ignored) |
 //! | `res_re`, `res_addr` | in | 1, 10 | readout: read and clear ray `res_addr` (only while not `busy`) |
-//! | `res_hit`, `res_id`, `res_key` | out | 1, 16, 32 | the ray's nearest hit, the cycle after `res_re` |
+//! | `res_hit`, `res_id`, `res_key` | out | 1, 16, 32 | the ray's nearest hit, two cycles after `res_re` ([`READOUT_LATENCY`]) |
 //! | `busy` | out | 1 | a test is issuing or may still update the ray memory |
 //! | `tests` | out | 32 | ray-patch tests of live rays so far (wraps) |
 //!
@@ -25,7 +25,7 @@
 //!
 //! # Live rays
 //!
-//! Each ray has a live bit (a one-bit [`Bram`] beside the direction memory): writing its
+//! Each ray has a live bit (a one-bit [`BramOut`] beside the direction memory): writing its
 //! direction makes it live, a retire job (`patch_retire`) kills the rays of its range, one per
 //! clock through the same sequencer as a test, so it takes effect in stream order. A test of a
 //! dead ray occupies its issue slot but neither counts nor writes (the shelling techniques'
@@ -41,31 +41,60 @@
 //!
 //! # Pipeline, latency and throughput
 //!
-//! One test per clock (II = 1) for any mix of bundle lengths; latency 5 clocks from issue to the
-//! ray-memory write:
+//! One test per clock (II = 1) for any mix of bundle lengths; latency [`WRITE_STAGE`] = 9 clocks
+//! from issue to the ray-memory write (5 before the unit was re-pipelined for 150 MHz on ECP5).
+//! Every memory is a [`BramOut`]: a block RAM read through its output register (on ECP5 a
+//! `DP16KD` with `REGMODE_B = "OUTREG"`, about 1 ns clock-to-out instead of 5.8 ns), so a read
+//! takes two clocks:
 //!
-//! * stage 0: the sequencer issues ray `cur` of the current patch (direction memory read);
-//! * stage 1: direction and live bit arrive; the six products start in the [`RayProducts`]
-//!   leaf (six 18×18 DSP multipliers, latency 2, the patch operands held there one clock
-//!   longer); a dead ray's test goes on as a bubble;
-//! * stage 3: side values `s_a`, `s_b` and `q = dot(d, W)`;
-//! * stage 4: the key (shift by `sh`, saturating, in the [`KeyScale`] leaf); the ray memory is read;
-//! * stage 5: compare with the ray's nearest hit and write back.
+//! * stage 0: the sequencer issues ray `cur` of the current patch (direction and live-bit read);
+//! * stage 1: the patch operands enter the [`RayProductsPipe`] leaf (which holds them a clock);
+//! * stage 2: direction and live bit arrive; the six products start (six 18×18 DSP
+//!   multipliers, latency 2); a dead ray's test goes on as a bubble and is not counted;
+//! * stage 4: side values `s_a`, `s_b` and `q = dot(d, W)` (registered); `q` enters the
+//!   [`KeyScalePipe`] leaf (shift by `sh`, saturating, in three register stages);
+//! * stage 5: the hit decision, `s_a ≤ 0 ≤ s_b`;
+//! * stage 6: the ray memory is read;
+//! * stage 8: the key and the ray memory's word arrive; the new key and id are compared with
+//!   each candidate for the ray's nearest hit (registered: larger key, equal key, lower id);
+//! * stage 9: the newest candidate picks the verdict; write back at the end of the clock.
 //!
-//! The ray memory (two [`Bram`]s: key, and valid + id) reads before it writes, so a test of the
-//! same ray one clock behind (a one-ray bundle, back to back) would see a stale entry: a
-//! forwarding register holds the last write and replaces the memory's word when the rays match.
-//! Two or more clocks apart, the memory already holds the write.
+//! `tests` counts a live test three clocks after its issue.
+//!
+//! **Forwarding.** The ray memory (two [`BramOut`]s: key, and valid + id) is read in stage 6,
+//! so the word arriving in stage 8 has seen the writes of the tests issued four or more clocks
+//! before, but not those of the three tests right before: their writes end stage 9 one and two
+//! clocks after the read, and in the clock of the read (a same-address read and write, whose
+//! result the block RAM does not define and [`BramOut`] poisons). In stage 8 the new key is
+//! compared, in parallel, with the memory's word, with the key of the test in stage 9 (whose
+//! verdict is being made) and with the last two writes (`fw_*`, `fw2_*`); whether the ray is
+//! theirs is compared there too (`m1`…`m3`). In stage 9 the newest write to the ray among the
+//! three (`fw_valid`…`fw3_valid`: the verdicts of the last three clocks) decides; without one,
+//! the memory's word. Every comparison starts from registers or from the block RAM's output
+//! register and ends in a register; dead tests and misses write nothing. Writes to the live
+//! bits never meet a read that should see them (a retire's issue reads its own ray and ignores
+//! it; directions are written only while not busy).
+//!
+//! **Readout.** `res_re` reads the ray memory (address in the clock of `res_re`, the word two
+//! clocks later on `res_*`) and clears the ray one clock later (a write in the clock of its own
+//! read would collide). A readout of the same ray in the next clock cannot see that clear, so
+//! it reports no hit (zero), which is what the clear leaves. Readouts stream one per clock;
+//! `busy` is high while any stage holds a test (so every write has ended before a readout's
+//! read).
+//!
+//! Resources (`cargo xtask fpga --blocks intersection_unit --families ecp5`: Yosys `synth_ecp5`
+//! with `SHELLING_ECP5`, nextpnr-ecp5 on the LFE5U-85F-6, seed 1): 6 `MULT18X18D` (with their
+//! input and output registers), 6 `DP16KD` (directions 2, live bits 1, keys 2, valid + id 1,
+//! all with the output register), 1146 LUT4s and 1017 flip-flops; 157.4 MHz (critical path
+//! 6.35 ns: the `mem_meta` block RAM's output register to the id comparison `cm_lt`).
 //!
 //! # Models
 //!
 //! [`model::test`], [`model::key`] and [`model::replaces`] are the bit-true model; the
-//! testbench's `intersection::model_bundle` applies them to a whole job stream. Resources
-//! (Yosys `synth_ecp5`): 6 `MULT18X18D`, 6 `DP16KD` (directions, live bits, keys, ids), about 700 LUT4
-//! and 1100 flip-flops.
+//! testbench's `intersection::model_bundle` applies them to a whole job stream.
 
 use crate::formats::{cross, dot, SH_MAX, SH_MIN};
-use crate::leaf::{Bram, KeyScale, RayProducts};
+use crate::leaf::{BramOut, KeyScalePipe, RayProductsPipe, KEY_PIPE_LATENCY};
 use crate::screener::model::PatchSetup;
 use rust_hdl::prelude::*;
 
@@ -127,6 +156,15 @@ pub mod model {
 /// Bundle size limit of the unit: ray indices are 10 bits.
 pub const RAY_BITS: usize = 10;
 
+/// Clocks from a ray's issue (stage 0) to its ray-memory write (the end of stage 6).
+pub const WRITE_STAGE: u64 = 9;
+
+// The key leaf takes `q` in stage 4; its key is compared in stage 8, the write stage's previous.
+const _: () = assert!(WRITE_STAGE == 5 + KEY_PIPE_LATENCY);
+
+/// Clocks from `res_re` to the ray's nearest hit on `res_hit`, `res_id`, `res_key`.
+pub const READOUT_LATENCY: u64 = 2;
+
 /// The intersection unit (see the [module documentation](self) for ports and timing).
 #[derive(LogicBlock)]
 pub struct IntersectionUnit {
@@ -171,58 +209,111 @@ pub struct IntersectionUnit {
     p_sh: DFF<Bits<6>>,
     p_id: DFF<Bits<16>>,
     p_retire: DFF<bool>,
-    alive_mem: Bram<1, 10>,
+    alive_mem: BramOut<1, 10>,
     live: Signal<Local, bool>,
     test_count: DFF<Bits<32>>,
     issue: Signal<Local, bool>,
     take: Signal<Local, bool>,
-    // Stage 1: directions arrive; the products start (the patch operands' stage-1 registers
-    // are inside the products leaf). `tagN` is stage N's ray (bits 31…22), `sh` (21…16) and
-    // patch id (15…0).
+    // Stage 1: the patch operands of the issued ray (they enter the products leaf, which holds
+    // them one clock longer). `tagN` is stage N's ray (bits 31…22), `sh` (21…16) and patch id
+    // (15…0).
     v1: DFF<bool>,
     tag1: DFF<Bits<32>>,
-    dir_mem_x: Bram<18, 10>,
-    dir_mem_y: Bram<18, 10>,
-    products: RayProducts,
-    // Stages 2 and 3: inside the multipliers; products arrive in stage 3.
+    o_ax: DFF<Bits<18>>,
+    o_ay: DFF<Bits<18>>,
+    o_bx: DFF<Bits<18>>,
+    o_by: DFF<Bits<18>>,
+    o_wx: DFF<Bits<18>>,
+    o_wy: DFF<Bits<18>>,
+    // Stage 2: directions and live bit arrive; the six products start.
     v2: DFF<bool>,
     tag2: DFF<Bits<32>>,
+    dir_mem_x: BramOut<18, 10>,
+    dir_mem_y: BramOut<18, 10>,
+    products: RayProductsPipe,
+    // Stages 3 and 4: inside the multipliers; products arrive in stage 4.
     v3: DFF<bool>,
     tag3: DFF<Bits<32>>,
-    ray3: Signal<Local, Bits<10>>,
-    sh3: Signal<Local, Bits<6>>,
-    id3: Signal<Local, Bits<16>>,
+    v4: DFF<bool>,
+    tag4: DFF<Bits<32>>,
+    ray4: Signal<Local, Bits<10>>,
+    sh4: Signal<Local, Bits<6>>,
+    id4: Signal<Local, Bits<16>>,
     side_a: Signal<Local, Bits<32>>,
     side_b: Signal<Local, Bits<32>>,
     q: Signal<Local, Bits<32>>,
-    // Stage 4: the key; the ray memory is read.
-    v4: DFF<bool>,
-    ray4: DFF<Bits<10>>,
-    id4: DFF<Bits<16>>,
-    key_scale: KeyScale,
-    // Stage 5: compare with the ray's nearest hit and write back (with forwarding).
+    // Stages 5 to 7: the key in its leaf (input registers in stage 5, key in stage 8); the ray
+    // memory is read in stage 6.
     v5: DFF<bool>,
+    sa5: DFF<Bits<32>>,
+    sb5: DFF<Bits<32>>,
     ray5: DFF<Bits<10>>,
     id5: DFF<Bits<16>>,
-    mem_key: Bram<32, 10>,
-    mem_meta: Bram<17, 10>,
+    key_scale: KeyScalePipe,
+    v6: DFF<bool>,
+    ray6: DFF<Bits<10>>,
+    id6: DFF<Bits<16>>,
+    v7: DFF<bool>,
+    ray7: DFF<Bits<10>>,
+    id7: DFF<Bits<16>>,
+    // Stage 8: the key and the ray memory's word arrive.
+    v8: DFF<bool>,
+    ray8: DFF<Bits<10>>,
+    id8: DFF<Bits<16>>,
+    mem_key: BramOut<32, 10>,
+    mem_meta: BramOut<17, 10>,
+    // Stage 8's comparisons of the new key and id with each candidate for the ray's nearest
+    // hit: the memory's word (`cm_*`, with its hit flag), and the writes one, two and three
+    // clocks before stage 9's (`c1_*`: stage 9's, `c2_*`: `fw`, `c3_*`: `fw2`); `gt`: larger
+    // key, `eq`: equal key, `lt`: lower id. `mK`: stage 9's ray is that of the write K back.
+    cm_hit: DFF<bool>,
+    cm_gt: DFF<bool>,
+    cm_eq: DFF<bool>,
+    cm_lt: DFF<bool>,
+    c1_gt: DFF<bool>,
+    c1_eq: DFF<bool>,
+    c1_lt: DFF<bool>,
+    c2_gt: DFF<bool>,
+    c2_eq: DFF<bool>,
+    c2_lt: DFF<bool>,
+    c3_gt: DFF<bool>,
+    c3_eq: DFF<bool>,
+    c3_lt: DFF<bool>,
+    m1: DFF<bool>,
+    m2: DFF<bool>,
+    m3: DFF<bool>,
+    // Stage 9: pick the verdict and write back.
+    v9: DFF<bool>,
+    ray9: DFF<Bits<10>>,
+    id9: DFF<Bits<16>>,
+    key9: DFF<Bits<32>>,
+    // The writes of the last three clocks (`fw`: the last).
     fw_valid: DFF<bool>,
     fw_ray: DFF<Bits<10>>,
     fw_key: DFF<Bits<32>>,
     fw_id: DFF<Bits<16>>,
-    old_hit: Signal<Local, bool>,
-    old_key: Signal<Local, Bits<32>>,
-    old_id: Signal<Local, Bits<16>>,
+    fw2_valid: DFF<bool>,
+    fw2_ray: DFF<Bits<10>>,
+    fw2_key: DFF<Bits<32>>,
+    fw2_id: DFF<Bits<16>>,
+    fw3_valid: DFF<bool>,
     meta_hit: Signal<Local, bool>,
     meta_id: Signal<Local, Bits<16>>,
     better: Signal<Local, bool>,
     new_meta: Signal<Local, Bits<17>>,
+    // Readout: the clear one clock after the read, and the zeroing of a read of the ray
+    // cleared in the same clock.
+    rd_valid: DFF<bool>,
+    rd_addr: DFF<Bits<10>>,
+    z1: DFF<bool>,
+    z2: DFF<bool>,
     // Constants (the Verilog-safe way to compare).
     zero11: Constant<Bits<11>>,
     one11: Constant<Bits<11>>,
     one10: Constant<Bits<10>>,
     one32: Constant<Bits<32>>,
     zero32: Constant<Bits<32>>,
+    zero16: Constant<Bits<16>>,
     hit_flag: Constant<Bits<17>>,
     zero17: Constant<Bits<17>>,
 }
@@ -273,44 +364,87 @@ impl Default for IntersectionUnit {
             take: Default::default(),
             v1: Default::default(),
             tag1: Default::default(),
+            o_ax: Default::default(),
+            o_ay: Default::default(),
+            o_bx: Default::default(),
+            o_by: Default::default(),
+            o_wx: Default::default(),
+            o_wy: Default::default(),
+            v2: Default::default(),
+            tag2: Default::default(),
             dir_mem_x: Default::default(),
             dir_mem_y: Default::default(),
             products: Default::default(),
-            v2: Default::default(),
-            tag2: Default::default(),
             v3: Default::default(),
             tag3: Default::default(),
-            ray3: Default::default(),
-            sh3: Default::default(),
-            id3: Default::default(),
+            v4: Default::default(),
+            tag4: Default::default(),
+            ray4: Default::default(),
+            sh4: Default::default(),
+            id4: Default::default(),
             side_a: Default::default(),
             side_b: Default::default(),
             q: Default::default(),
-            v4: Default::default(),
-            ray4: Default::default(),
-            id4: Default::default(),
-            key_scale: Default::default(),
             v5: Default::default(),
+            sa5: Default::default(),
+            sb5: Default::default(),
             ray5: Default::default(),
             id5: Default::default(),
+            key_scale: Default::default(),
+            v6: Default::default(),
+            ray6: Default::default(),
+            id6: Default::default(),
+            v7: Default::default(),
+            ray7: Default::default(),
+            id7: Default::default(),
+            v8: Default::default(),
+            ray8: Default::default(),
+            id8: Default::default(),
             mem_key: Default::default(),
             mem_meta: Default::default(),
+            cm_hit: Default::default(),
+            cm_gt: Default::default(),
+            cm_eq: Default::default(),
+            cm_lt: Default::default(),
+            c1_gt: Default::default(),
+            c1_eq: Default::default(),
+            c1_lt: Default::default(),
+            c2_gt: Default::default(),
+            c2_eq: Default::default(),
+            c2_lt: Default::default(),
+            c3_gt: Default::default(),
+            c3_eq: Default::default(),
+            c3_lt: Default::default(),
+            m1: Default::default(),
+            m2: Default::default(),
+            m3: Default::default(),
+            v9: Default::default(),
+            ray9: Default::default(),
+            id9: Default::default(),
+            key9: Default::default(),
             fw_valid: Default::default(),
             fw_ray: Default::default(),
             fw_key: Default::default(),
             fw_id: Default::default(),
-            old_hit: Default::default(),
-            old_key: Default::default(),
-            old_id: Default::default(),
+            fw2_valid: Default::default(),
+            fw2_ray: Default::default(),
+            fw2_key: Default::default(),
+            fw2_id: Default::default(),
+            fw3_valid: Default::default(),
             meta_hit: Default::default(),
             meta_id: Default::default(),
             better: Default::default(),
             new_meta: Default::default(),
+            rd_valid: Default::default(),
+            rd_addr: Default::default(),
+            z1: Default::default(),
+            z2: Default::default(),
             zero11: Constant::new(0.into()),
             one11: Constant::new(1.into()),
             one10: Constant::new(1.into()),
             one32: Constant::new(1.into()),
             zero32: Constant::new(0.into()),
+            zero16: Constant::new(0.into()),
             hit_flag: Constant::new(0x1_0000u64.into()),
             zero17: Constant::new(0.into()),
         }
@@ -323,8 +457,11 @@ impl Logic for IntersectionUnit {
         // Clocks and register defaults (hold).
         dff_setup!(
             self, clock, remaining, cur, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_sh, p_id, p_retire,
-            test_count, v1, tag1, v2, tag2, v3, tag3, v4, ray4, id4, v5, ray5, id5, fw_valid, fw_ray, fw_key,
-            fw_id
+            test_count, v1, tag1, o_ax, o_ay, o_bx, o_by, o_wx, o_wy, v2, tag2, v3, tag3, v4, tag4, v5, sa5,
+            sb5, ray5, id5, v6, ray6, id6, v7, ray7, id7, v8, ray8, id8, cm_hit, cm_gt, cm_eq, cm_lt, c1_gt,
+            c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt, m1, m2, m3, v9, ray9, id9, key9,
+            fw_valid, fw_ray, fw_key, fw_id, fw2_valid, fw2_ray, fw2_key, fw2_id, fw3_valid, rd_valid,
+            rd_addr, z1, z2
         );
         self.dir_mem_x.clock.next = self.clock.val();
         self.alive_mem.clock.next = self.clock.val();
@@ -367,6 +504,7 @@ impl Logic for IntersectionUnit {
         self.dir_mem_x.write_enable.next = self.dir_we.val();
         self.dir_mem_y.write_enable.next = self.dir_we.val();
         // The live bits: a direction write revives its ray, a retire job's issue kills one.
+        // (A retire's issue reads and writes the same word: its read is never used.)
         self.alive_mem.read_address.next = self.cur.q.val();
         self.alive_mem.write_address.next = self.cur.q.val();
         self.alive_mem.write_data.next = false.into();
@@ -380,103 +518,165 @@ impl Logic for IntersectionUnit {
         self.tag1.d.next = (bit_cast::<32, 10>(self.cur.q.val()) << 22)
             | (bit_cast::<32, 6>(self.p_sh.q.val()) << 16)
             | bit_cast::<32, 16>(self.p_id.q.val());
-        // The patch operands enter the products leaf now; its stage-1 registers hold them.
-        self.products.ax.next = self.p_ax.q.val();
-        self.products.ay.next = self.p_ay.q.val();
-        self.products.bx.next = self.p_bx.q.val();
-        self.products.by.next = self.p_by.q.val();
-        self.products.wx.next = self.p_wx.q.val();
-        self.products.wy.next = self.p_wy.q.val();
+        self.o_ax.d.next = self.p_ax.q.val();
+        self.o_ay.d.next = self.p_ay.q.val();
+        self.o_bx.d.next = self.p_bx.q.val();
+        self.o_by.d.next = self.p_by.q.val();
+        self.o_wx.d.next = self.p_wx.q.val();
+        self.o_wy.d.next = self.p_wy.q.val();
 
-        // Stage 1: the ray's direction is read; the six products start.
+        // Stage 1: the patch operands enter the products leaf; its registers hold them.
+        self.products.ax.next = self.o_ax.q.val();
+        self.products.ay.next = self.o_ay.q.val();
+        self.products.bx.next = self.o_bx.q.val();
+        self.products.by.next = self.o_by.q.val();
+        self.products.wx.next = self.o_wx.q.val();
+        self.products.wy.next = self.o_wy.q.val();
+        self.v2.d.next = self.v1.q.val();
+        self.tag2.d.next = self.tag1.q.val();
+
+        // Stage 2: the ray's direction arrives; the six products start.
         self.products.dx.next = self.dir_mem_x.read_data.val();
         self.products.dy.next = self.dir_mem_y.read_data.val();
         // A test of a dead ray goes on as a bubble.
-        self.live.next = self.v1.q.val() & self.alive_mem.read_data.val().any();
+        self.live.next = self.v2.q.val() & self.alive_mem.read_data.val().any();
         if self.live.val() {
             self.test_count.d.next = self.test_count.q.val() + self.one32.val();
         }
-        self.v2.d.next = self.live.val();
-        self.tag2.d.next = self.tag1.q.val();
-        self.v3.d.next = self.v2.q.val();
+        self.v3.d.next = self.live.val();
         self.tag3.d.next = self.tag2.q.val();
+        self.v4.d.next = self.v3.q.val();
+        self.tag4.d.next = self.tag3.q.val();
 
-        // Stage 3: side values and the inverse distance.
-        self.ray3.next = self.tag3.q.val().get_bits::<10>(22);
-        self.sh3.next = self.tag3.q.val().get_bits::<6>(16);
-        self.id3.next = self.tag3.q.val().get_bits::<16>(0);
+        // Stage 4: side values and the inverse distance.
+        self.ray4.next = self.tag4.q.val().get_bits::<10>(22);
+        self.sh4.next = self.tag4.q.val().get_bits::<6>(16);
+        self.id4.next = self.tag4.q.val().get_bits::<16>(0);
         self.side_a.next = self.products.dx_ay.val() - self.products.dy_ax.val();
         self.side_b.next = self.products.dx_by.val() - self.products.dy_bx.val();
         self.q.next = self.products.dx_wx.val() + self.products.dy_wy.val();
-        self.v4.d.next = self.v3.q.val()
-            & ((self.side_a.val() == self.zero32.val()) | self.side_a.val().get_bit(31))
-            & !self.side_b.val().get_bit(31);
-        self.ray4.d.next = self.ray3.val();
-        self.id4.d.next = self.id3.val();
-
-        // Stages 4 and 5: the key q·2^-sh, clamped into [1, 2^32 − 1], in a leaf (its input
-        // registers are stage 4, its output register stage 5).
-        self.key_scale.q.next = self.q.val();
-        self.key_scale.sh.next = self.sh3.val();
         self.v5.d.next = self.v4.q.val();
-        self.ray5.d.next = self.ray4.q.val();
-        self.id5.d.next = self.id4.q.val();
+        self.sa5.d.next = self.side_a.val();
+        self.sb5.d.next = self.side_b.val();
+        self.ray5.d.next = self.ray4.val();
+        self.id5.d.next = self.id4.val();
 
-        // The ray memory: read for stage 4's ray, or for the host's readout.
-        self.mem_key.read_address.next = self.ray4.q.val();
-        self.mem_meta.read_address.next = self.ray4.q.val();
+        // Stages 5 to 8: the key q·2^-sh, clamped into [1, 2^32 − 1], in a leaf (its input
+        // registers are stage 5, its output register stage 8).
+        self.key_scale.q.next = self.q.val();
+        self.key_scale.sh.next = self.sh4.val();
+        // Stage 5: does the ray hit (s_a ≤ 0 ≤ s_b)?
+        self.v6.d.next = self.v5.q.val()
+            & ((self.sa5.q.val() == self.zero32.val()) | self.sa5.q.val().get_bit(31))
+            & !self.sb5.q.val().get_bit(31);
+        self.ray6.d.next = self.ray5.q.val();
+        self.id6.d.next = self.id5.q.val();
+        self.v7.d.next = self.v6.q.val();
+        self.ray7.d.next = self.ray6.q.val();
+        self.id7.d.next = self.id6.q.val();
+        self.v8.d.next = self.v7.q.val();
+        self.ray8.d.next = self.ray7.q.val();
+        self.id8.d.next = self.id7.q.val();
+
+        // The ray memory: read for stage 6's ray, or for the host's readout.
+        self.mem_key.read_address.next = self.ray6.q.val();
+        self.mem_meta.read_address.next = self.ray6.q.val();
         if self.res_re.val() {
             self.mem_key.read_address.next = self.res_addr.val();
             self.mem_meta.read_address.next = self.res_addr.val();
         }
 
-        // Stage 5: the ray's nearest hit so far, forwarded from the previous cycle's write when
-        // it is the same ray (the read-modify-write hazard of a one-ray bundle).
+        // Stage 8: the new key and id against each candidate for the ray's nearest hit so far,
+        // in parallel: the memory's word (read in stage 6, it has seen the writes up to three
+        // clocks before stage 9's) and the three writes after it, stage 9's (this clock's), the
+        // last one (fw) and the one before (fw2); and whether the ray is theirs.
         self.meta_hit.next = self.mem_meta.read_data.val().get_bit(16);
         self.meta_id.next = bit_cast::<16, 17>(self.mem_meta.read_data.val());
-        self.old_hit.next = self.meta_hit.val();
-        self.old_key.next = self.mem_key.read_data.val();
-        self.old_id.next = self.meta_id.val();
-        if self.fw_valid.q.val() & (self.fw_ray.q.val() == self.ray5.q.val()) {
-            self.old_hit.next = true;
-            self.old_key.next = self.fw_key.q.val();
-            self.old_id.next = self.fw_id.q.val();
+        self.cm_hit.d.next = self.meta_hit.val();
+        self.cm_gt.d.next = self.key_scale.key.val() > self.mem_key.read_data.val();
+        self.cm_eq.d.next = self.key_scale.key.val() == self.mem_key.read_data.val();
+        self.cm_lt.d.next = self.id8.q.val() < self.meta_id.val();
+        self.c1_gt.d.next = self.key_scale.key.val() > self.key9.q.val();
+        self.c1_eq.d.next = self.key_scale.key.val() == self.key9.q.val();
+        self.c1_lt.d.next = self.id8.q.val() < self.id9.q.val();
+        self.c2_gt.d.next = self.key_scale.key.val() > self.fw_key.q.val();
+        self.c2_eq.d.next = self.key_scale.key.val() == self.fw_key.q.val();
+        self.c2_lt.d.next = self.id8.q.val() < self.fw_id.q.val();
+        self.c3_gt.d.next = self.key_scale.key.val() > self.fw2_key.q.val();
+        self.c3_eq.d.next = self.key_scale.key.val() == self.fw2_key.q.val();
+        self.c3_lt.d.next = self.id8.q.val() < self.fw2_id.q.val();
+        self.m1.d.next = self.ray8.q.val() == self.ray9.q.val();
+        self.m2.d.next = self.ray8.q.val() == self.fw_ray.q.val();
+        self.m3.d.next = self.ray8.q.val() == self.fw2_ray.q.val();
+        self.v9.d.next = self.v8.q.val();
+        self.ray9.d.next = self.ray8.q.val();
+        self.id9.d.next = self.id8.q.val();
+        self.key9.d.next = self.key_scale.key.val();
+
+        // Stage 9: the newest write to the ray decides (the last one, fw, is stage 9's of the
+        // previous clock); without one, the memory's word. Then write back.
+        if self.m1.q.val() & self.fw_valid.q.val() {
+            self.better.next =
+                self.v9.q.val() & (self.c1_gt.q.val() | (self.c1_eq.q.val() & self.c1_lt.q.val()));
+        } else if self.m2.q.val() & self.fw2_valid.q.val() {
+            self.better.next =
+                self.v9.q.val() & (self.c2_gt.q.val() | (self.c2_eq.q.val() & self.c2_lt.q.val()));
+        } else if self.m3.q.val() & self.fw3_valid.q.val() {
+            self.better.next =
+                self.v9.q.val() & (self.c3_gt.q.val() | (self.c3_eq.q.val() & self.c3_lt.q.val()));
+        } else {
+            self.better.next = self.v9.q.val()
+                & (!self.cm_hit.q.val() | self.cm_gt.q.val() | (self.cm_eq.q.val() & self.cm_lt.q.val()));
         }
-        self.better.next = self.v5.q.val()
-            & (!self.old_hit.val()
-                | (self.key_scale.key.val() > self.old_key.val())
-                | ((self.key_scale.key.val() == self.old_key.val())
-                    & (self.id5.q.val() < self.old_id.val())));
-        self.new_meta.next = self.hit_flag.val() | bit_cast::<17, 16>(self.id5.q.val());
-        self.mem_key.write_address.next = self.ray5.q.val();
-        self.mem_meta.write_address.next = self.ray5.q.val();
-        self.mem_key.write_data.next = self.key_scale.key.val();
+        self.new_meta.next = self.hit_flag.val() | bit_cast::<17, 16>(self.id9.q.val());
+        self.mem_key.write_address.next = self.ray9.q.val();
+        self.mem_meta.write_address.next = self.ray9.q.val();
+        self.mem_key.write_data.next = self.key9.q.val();
         self.mem_meta.write_data.next = self.new_meta.val();
         self.mem_key.write_enable.next = self.better.val();
         self.mem_meta.write_enable.next = self.better.val();
-        if self.res_re.val() {
-            // Read and clear.
-            self.mem_key.write_address.next = self.res_addr.val();
-            self.mem_meta.write_address.next = self.res_addr.val();
+        if self.rd_valid.q.val() {
+            // Clear a ray read out in the previous clock.
+            self.mem_key.write_address.next = self.rd_addr.q.val();
+            self.mem_meta.write_address.next = self.rd_addr.q.val();
             self.mem_key.write_data.next = self.zero32.val();
             self.mem_meta.write_data.next = self.zero17.val();
             self.mem_key.write_enable.next = true;
             self.mem_meta.write_enable.next = true;
         }
         self.fw_valid.d.next = self.better.val();
-        self.fw_ray.d.next = self.ray5.q.val();
-        self.fw_key.d.next = self.key_scale.key.val();
-        self.fw_id.d.next = self.id5.q.val();
+        self.fw_ray.d.next = self.ray9.q.val();
+        self.fw_key.d.next = self.key9.q.val();
+        self.fw_id.d.next = self.id9.q.val();
+        self.fw2_valid.d.next = self.fw_valid.q.val();
+        self.fw2_ray.d.next = self.fw_ray.q.val();
+        self.fw2_key.d.next = self.fw_key.q.val();
+        self.fw2_id.d.next = self.fw_id.q.val();
+        self.fw3_valid.d.next = self.fw2_valid.q.val();
 
-        // Readout and status.
-        self.res_hit.next = self.meta_hit.val();
+        // Readout: the word two clocks after `res_re`; zero when the same ray was read (and
+        // is being cleared) in the clock before, whose clear that read could not see.
+        self.rd_valid.d.next = self.res_re.val();
+        self.rd_addr.d.next = self.res_addr.val();
+        self.z1.d.next =
+            self.res_re.val() & self.rd_valid.q.val() & (self.res_addr.val() == self.rd_addr.q.val());
+        self.z2.d.next = self.z1.q.val();
+        self.res_hit.next = self.meta_hit.val() & !self.z2.q.val();
         self.res_id.next = self.meta_id.val();
         self.res_key.next = self.mem_key.read_data.val();
+        if self.z2.q.val() {
+            self.res_id.next = self.zero16.val();
+            self.res_key.next = self.zero32.val();
+        }
         self.busy.next = self.issue.val()
             | self.v1.q.val()
             | self.v2.q.val()
             | self.v3.q.val()
             | self.v4.q.val()
-            | self.v5.q.val();
+            | self.v5.q.val()
+            | self.v6.q.val()
+            | self.v7.q.val()
+            | self.v8.q.val()
+            | self.v9.q.val();
     }
 }

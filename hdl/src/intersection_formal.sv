@@ -12,27 +12,29 @@
 //   the ports (`patch_first`, `patch_count`, one ray per clock); so it is never withdrawn
 //   without a transfer;
 // * no test without an input: `tests` grows by at most one per cycle, and only for a ray of a
-//   test (not retire) job issued two cycles before; it never exceeds the number of such rays;
+//   test (not retire) job issued three cycles before; it never exceeds the number of such rays;
 // * `busy` is high while a ray is issued and in the cycle after a test ray, and never without
-//   a ray issued in the last five cycles.
+//   a ray issued in the last nine cycles (the write is at the end of stage 9).
 //
 // Proved to a bounded depth only (they need the ray memories' contents):
 //
-// * task `bmc_live`, depth 9 (every input sequence of 9 cycles; a test ray can first be issued
-//   in cycle 1, after a direction write and a patch in cycle 0, so the tests issued in cycles
-//   1 to 6 are checked): `tests` grows for a test ray issued two cycles before exactly when the
-//   ray was live (a_tests_live, a_tests_dead; the harness keeps the live bit of one arbitrary
-//   ray F_RAY: a direction write makes it live, a retire job's issue of it kills it);
-// * task `bmc_results`, depth 10 (the earliest such readout is in cycle 9, c_hit, so only the
-//   shortest sequences that end in one are checked; depth 11 passes too, in about 45 s to three
-//   minutes here, too long for `cargo test`): no result
-//   without an input: a readout that reports a hit on ray F_RAY follows a live test of F_RAY
+// * task `bmc_live`, depth 10 (every input sequence of 10 cycles; a test ray can first be
+//   issued in cycle 1, after a direction write and a patch in cycle 0, and counts three cycles
+//   later, so the tests issued in cycles 1 to 6 are checked): `tests` grows for a test ray
+//   issued three cycles before exactly when the ray was live (a_tests_live, a_tests_dead; the
+//   harness keeps the live bit of one arbitrary ray F_RAY: a direction write makes it live, a
+//   retire job's issue of it kills it);
+// * task `bmc_results`, depth 15: no result without an input: a readout that
+//   reports a hit on ray F_RAY (two cycles after its request) follows a live test of F_RAY
 //   since its last readout, by a job with id F_ID if the reported id is F_ID (F_RAY and F_ID
-//   arbitrary; a_hit_tested, a_hit_id).
+//   arbitrary; a_hit_tested, a_hit_id). The cover task reaches the first readout that reports
+//   a test's hit (c_hit) at step 14: a readout of F_RAY, then a test of it written nine
+//   cycles after its issue, then its readout answered two cycles after the request. Shorter
+//   sequences check readouts of a ray not tested since its last readout, among them two
+//   readouts of it in consecutive clocks (the second cannot see the first's clear).
 //
-// Task `bmc` checks all the properties together to depth 12; it takes minutes and is run by
-// hand, not by `cargo test`. The two split tasks' depths are the largest that finish in well
-// under a minute here (one more step of bmc_live took over two minutes).
+// Task `bmc` checks all the properties together to depth 15; it takes many minutes and is run
+// by hand, not by `cargo test`.
 
 `default_nettype none
 
@@ -65,7 +67,7 @@ module intersection_formal (
     // module): the sequencer and the stage valid bits.
     wire [10:0] remaining;
     wire [9:0]  cur;
-    wire        p_retire, v1, v2, v3, v4, v5;
+    wire        p_retire, v1, v2, v3, v4, v5, v6, v7, v8, v9;
 
     intersection_unit dut (
         .clock(clock),
@@ -78,7 +80,8 @@ module intersection_formal (
         .res_key(res_key), .busy(busy), .tests(tests)
 `ifdef INVARIANTS
         , .remaining$q(remaining), .cur$q(cur), .p_retire$q(p_retire),
-        .v1$q(v1), .v2$q(v2), .v3$q(v3), .v4$q(v4), .v5$q(v5)
+        .v1$q(v1), .v2$q(v2), .v3$q(v3), .v4$q(v4), .v5$q(v5), .v6$q(v6),
+        .v7$q(v7), .v8$q(v8), .v9$q(v9)
 `endif
     );
 
@@ -97,18 +100,20 @@ module intersection_formal (
     // (mod 1024), one per clock; a retire job kills them instead of testing them.
     wire take = patch_valid && patch_ready;
     reg         f_past = 1'b0;
+    reg         f_past2 = 1'b0;     // two cycles since power-up (for $past(.., 2))
     reg  [10:0] f_rem = 11'd0;     // rays of the current patch still to issue
     reg  [9:0]  f_cur = 10'd0;     // the ray issued in this cycle (when f_rem != 0)
     reg         f_retire = 1'b0;
     reg  [15:0] f_pid = 16'd0;
     wire        issue = f_rem != 11'd0;
     wire        test = issue && !f_retire;    // a ray of a test job is issued
-    reg  [5:1]  f_is = 5'd0;       // f_is[k]: a ray was issued k cycles ago
-    reg  [5:1]  f_test = 5'd0;     // f_test[k]: a test ray was issued k cycles ago
-    reg  [31:0] f_tests = 32'd0;   // test rays issued at least two cycles ago (saturating)
+    reg  [9:1]  f_is = 9'd0;       // f_is[k]: a ray was issued k cycles ago
+    reg  [9:1]  f_test = 9'd0;     // f_test[k]: a test ray was issued k cycles ago
+    reg  [31:0] f_tests = 32'd0;   // test rays issued at least three cycles ago (saturating)
 
     always @(posedge clock) begin
         f_past <= 1'b1;
+        f_past2 <= f_past;
         if (take) begin
             f_rem <= patch_count;
             f_cur <= patch_first;
@@ -118,30 +123,30 @@ module intersection_formal (
             f_rem <= f_rem - 11'd1;
             f_cur <= f_cur + 10'd1;
         end
-        f_is <= {f_is[4:1], issue};
-        f_test <= {f_test[4:1], test};
-        if (f_tests != 32'hffff_ffff) f_tests <= f_tests + f_test[1];
+        f_is <= {f_is[8:1], issue};
+        f_test <= {f_test[8:1], test};
+        if (f_tests != 32'hffff_ffff) f_tests <= f_tests + f_test[2];
     end
 
     // ---- The properties. ----
     always @(*) begin
         a_patch_ready: assert(patch_ready == (f_rem <= 11'd1));
-        // Never more tests than test rays issued (at least two cycles before).
+        // Never more tests than test rays issued (at least three cycles before).
         a_tests_bound: assert(tests <= f_tests);
         if (!f_past) a_tests_init: assert(tests == 32'd0);
         // busy: at least while a ray is issued and the cycle after a test ray; never without
-        // a ray issued in the last five cycles.
+        // a ray issued in the last nine cycles.
         a_busy_issue: assert(!(issue || f_test[1]) || busy);
-        a_busy_cause: assert(!busy || issue || f_is != 5'd0);
+        a_busy_cause: assert(!busy || issue || f_is != 9'd0);
     end
 
     always @(posedge clock) begin
         if (f_past) begin
             // A ready patch port stays ready until a transfer.
             if ($past(patch_ready && !patch_valid)) a_ready_hold: assert(patch_ready);
-            // tests grows by at most one, and only for a test ray issued two cycles before.
+            // tests grows by at most one, and only for a test ray issued three cycles before.
             a_tests_step: assert(tests == $past(tests)
-                                 || (tests == $past(tests) + 32'd1 && f_test[2]));
+                                 || (tests == $past(tests) + 32'd1 && f_test[3]));
         end
     end
 
@@ -150,10 +155,12 @@ module intersection_formal (
     // proof they are lemmas that spare the solver re-deriving them at every step). ----
     always @(*) begin
         i_sequencer: assert(remaining == f_rem && cur == f_cur && p_retire == f_retire);
-        i_history: assert((f_test & ~f_is) == 5'd0);
-        // A stage holds a test of a ray issued as many cycles before.
-        i_stages: assert(v1 == f_test[1] && (!v2 || f_test[2]) && (!v3 || f_test[3])
-                         && (!v4 || f_test[4]) && (!v5 || f_test[5]));
+        i_history: assert((f_test & ~f_is) == 9'd0);
+        // A stage holds a test of a ray issued as many cycles before (from stage 3 on, of a
+        // live ray only).
+        i_stages: assert(v1 == f_test[1] && v2 == f_test[2] && (!v3 || f_test[3])
+                         && (!v4 || f_test[4]) && (!v5 || f_test[5]) && (!v6 || f_test[6])
+                         && (!v7 || f_test[7]) && (!v8 || f_test[8]) && (!v9 || f_test[9]));
     end
 `endif
 
@@ -167,8 +174,8 @@ module intersection_formal (
     reg         f_alive = 1'b0;        // F_RAY is live
     reg         f_alive_known = 1'b0;  // ... and that is known (written or retired since power-up)
     wire        test_f = test && f_cur == F_RAY;
-    reg  [2:1]  f_live_f = 2'd0;       // f_live_f[k]: a test of F_RAY, known live, k cycles ago
-    reg  [2:1]  f_dead_f = 2'd0;       // f_dead_f[k]: a test of F_RAY, known dead, k cycles ago
+    reg  [3:1]  f_live_f = 3'd0;       // f_live_f[k]: a test of F_RAY, known live, k cycles ago
+    reg  [3:1]  f_dead_f = 3'd0;       // f_dead_f[k]: a test of F_RAY, known dead, k cycles ago
     reg         f_cleared = 1'b0;      // F_RAY has been read out
     reg         f_ray_tested = 1'b0;   // a live test of F_RAY since its last readout
     reg         f_pair_tested = 1'b0;  // ... by a job with id F_ID
@@ -182,8 +189,8 @@ module intersection_formal (
             f_alive <= 1'b0;
             f_alive_known <= 1'b1;
         end
-        f_live_f <= {f_live_f[1], test_f && f_alive_known && f_alive};
-        f_dead_f <= {f_dead_f[1], test_f && f_alive_known && !f_alive};
+        f_live_f <= {f_live_f[2:1], test_f && f_alive_known && f_alive};
+        f_dead_f <= {f_dead_f[2:1], test_f && f_alive_known && !f_alive};
         if (res_re && res_addr == F_RAY) begin
             f_cleared <= 1'b1;
             f_ray_tested <= 1'b0;
@@ -200,16 +207,19 @@ module intersection_formal (
     always @(posedge clock) begin
         if (f_past) begin
             // A test of F_RAY counts exactly when F_RAY was live.
-            if (f_live_f[2]) a_tests_live: assert(tests == $past(tests) + 32'd1);
-            if (f_dead_f[2]) a_tests_dead: assert(tests == $past(tests));
-            // No result without an input: a hit reported on F_RAY, read out before, follows a
-            // test of it since that readout, by a job with the reported id if that is F_ID.
-            if ($past(res_re && res_addr == F_RAY && f_cleared) && res_hit) begin
-                a_hit_tested: assert($past(f_ray_tested));
-                if (res_id == F_ID) a_hit_id: assert($past(f_pair_tested));
+            if (f_live_f[3]) a_tests_live: assert(tests == $past(tests) + 32'd1);
+            if (f_dead_f[3]) a_tests_dead: assert(tests == $past(tests));
+        end
+        if (f_past2) begin
+            // No result without an input: a hit reported on F_RAY (two cycles after its
+            // readout request), read out before, follows a test of it since that readout, by a
+            // job with the reported id if that is F_ID.
+            if ($past(res_re && res_addr == F_RAY && f_cleared, 2) && res_hit) begin
+                a_hit_tested: assert($past(f_ray_tested, 2));
+                if (res_id == F_ID) a_hit_id: assert($past(f_pair_tested, 2));
             end
             // Cover: such a readout reports a hit of F_ID on F_RAY.
-            c_hit: cover($past(res_re && res_addr == F_RAY && f_cleared) && res_hit
+            c_hit: cover($past(res_re && res_addr == F_RAY && f_cleared, 2) && res_hit
                          && res_id == F_ID);
         end
     end

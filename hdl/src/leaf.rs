@@ -623,3 +623,466 @@ mod tests {
         check::<40>();
     }
 }
+
+/// Simple dual-port block RAM with a two-clock registered read: `2^A` words of `D ≤ 32` bits,
+/// one write and one read per clock, all words and both read registers zero at power-up. The
+/// read address presented in one clock (sampled at its rising edge `t`) gives its word on
+/// `read_data` after edge `t + 1`; a write presented in the same clock as that read and to the
+/// same address is *not* seen by it (it is seen by reads sampled at later edges).
+///
+/// On ECP5 (Verilog define `SHELLING_ECP5`, set by the FPGA flow) its Verilog body instantiates
+/// `DP16KD` tiles by hand, port A writing and port B reading with its output register
+/// (`REGMODE_B = "OUTREG"`): about 1 ns clock-to-out instead of the 5.8 ns of the read Yosys'
+/// memory mapping gives (always `NOREG`). Tile widths: 18 bits for `A ≤ 10`, 9 for `A = 11`, 4
+/// for `A = 12`. Without the define (simulators, iCE40, the gate-level netlists of rung 5) the
+/// body is the behavioural two-register read that the Rust `update` models bit for bit.
+///
+/// **A read and a write of the same address in the same clock**: the block RAM's cross-port
+/// result is undefined, so the model and the behavioural Verilog both return a poison word, the
+/// bitwise NOT of the word before the write: a design relying on that read fails its tests. A
+/// user must forward over the write instead.
+#[derive(LogicBlock)]
+pub struct BramOut<const D: usize, const A: usize> {
+    pub clock: Signal<In, Clock>,
+    pub read_address: Signal<In, Bits<A>>,
+    pub read_data: Signal<Out, Bits<D>>,
+    pub write_address: Signal<In, Bits<A>>,
+    pub write_data: Signal<In, Bits<D>>,
+    pub write_enable: Signal<In, bool>,
+    _mem: Vec<u32>,
+    /// The first read register (the block RAM's latch stage).
+    _r1: u32,
+}
+
+impl<const D: usize, const A: usize> Default for BramOut<D, A> {
+    fn default() -> Self {
+        assert!(D <= 32, "BramOut words are at most 32 bits");
+        assert!(A <= 12, "BramOut has at most 4096 words");
+        BramOut {
+            clock: Default::default(),
+            read_address: Default::default(),
+            read_data: Default::default(),
+            write_address: Default::default(),
+            write_data: Default::default(),
+            write_enable: Default::default(),
+            _mem: vec![0; 1 << A],
+            _r1: 0,
+        }
+    }
+}
+
+/// The DP16KD data width per tile of a `BramOut` with `a` address bits.
+pub fn bram_out_tile_width(a: usize) -> usize {
+    match a {
+        0..=10 => 18,
+        11 => 9,
+        _ => 4,
+    }
+}
+
+impl<const D: usize, const A: usize> BramOut<D, A> {
+    /// The word the read of `read` returns when `write` (address, enabled) is presented in the
+    /// same clock: the memory's word, or its bitwise NOT on a same-address collision.
+    fn read_word(&self, read: usize, write: Option<usize>) -> u32 {
+        let mask = if D == 32 { u32::MAX } else { (1u32 << D) - 1 };
+        let w = self._mem[read];
+        if write == Some(read) {
+            !w & mask
+        } else {
+            w
+        }
+    }
+
+    fn ecp5_body() -> String {
+        let w = bram_out_tile_width(A);
+        let tiles = D.div_ceil(w);
+        // Address pins: the address in the top bits (13 down), the rest zero, except the two
+        // byte enables of an 18-bit write port.
+        let lsb = match w {
+            18 => 4,
+            9 => 3,
+            _ => 2,
+        };
+        let abits = 14 - lsb; // address bits the tile uses
+        let mut v = String::new();
+        v += &format!("wire [{}:0] bo_rd;\n", tiles * w - 1);
+        let pad = tiles * w - D;
+        if pad == 0 {
+            v += &format!("wire [{}:0] bo_wd = write_data;\n", tiles * w - 1);
+        } else {
+            v += &format!("wire [{}:0] bo_wd = {{{pad}'d0, write_data}};\n", tiles * w - 1);
+        }
+        v += &format!("wire [{}:0] bo_ra = read_address;\n", abits - 1);
+        v += &format!("wire [{}:0] bo_wa = write_address;\n", abits - 1);
+        for t in 0..tiles {
+            v += &format!(
+                "DP16KD #(.DATA_WIDTH_A({w}), .DATA_WIDTH_B({w}), .REGMODE_A(\"NOREG\"), \
+.REGMODE_B(\"OUTREG\"), .RESETMODE(\"SYNC\"), .ASYNC_RESET_RELEASE(\"SYNC\"), \
+.CSDECODE_A(\"0b000\"), .CSDECODE_B(\"0b000\"), .WRITEMODE_A(\"NORMAL\"), \
+.WRITEMODE_B(\"NORMAL\"), .GSR(\"DISABLED\")) bo_tile{t} (\n"
+            );
+            v += "   .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),\n";
+            v += "   .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),\n";
+            v += "   .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),\n";
+            v += "   .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0)";
+            for (port, addr) in [("A", "bo_wa"), ("B", "bo_ra")] {
+                for pin in 0..14 {
+                    let s = if pin >= lsb {
+                        format!("{addr}[{}]", pin - lsb)
+                    } else if w == 18 && pin < 2 && port == "A" {
+                        "1'b1".to_string()
+                    } else {
+                        "1'b0".to_string()
+                    };
+                    v += &format!(",\n   .AD{port}{pin}({s})");
+                }
+            }
+            for bit in 0..w {
+                v += &format!(",\n   .DIA{bit}(bo_wd[{}]), .DOB{bit}(bo_rd[{}])", t * w + bit, t * w + bit);
+            }
+            for bit in w..18 {
+                v += &format!(",\n   .DIA{bit}(1'b0)");
+            }
+            v += ",\n   .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), \
+.DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), \
+.DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)\n);\n";
+        }
+        v += &format!("always @(*) read_data = bo_rd[{}:0];\n", D - 1);
+        v
+    }
+}
+
+impl<const D: usize, const A: usize> Logic for BramOut<D, A> {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            self.read_data.next = Bits::from(self._r1 as u64);
+            let write = self.write_enable.val().then(|| self.write_address.val().index());
+            self._r1 = self.read_word(self.read_address.val().index(), write);
+            if let Some(a) = write {
+                self._mem[a] = self.write_data.val().to_u32();
+            }
+        }
+    }
+
+    fn connect(&mut self) {
+        self.read_data.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(format!(
+            "\
+`ifdef SHELLING_ECP5
+{ecp5}`else
+reg [{dm}:0] mem [0:{words}];
+reg [{dm}:0] r1;
+integer i;
+initial begin
+   for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
+   r1 = {d}'d0;
+   read_data = {d}'d0;
+end
+always @(posedge clock) begin
+   // A read and a write of the same address in one clock: poison (see the Rust docs).
+   r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
+   read_data <= r1;
+   if (write_enable) begin
+      mem[write_address] <= write_data;
+   end
+end
+`endif
+",
+            ecp5 = Self::ecp5_body(),
+            dm = D - 1,
+            d = D,
+            words = (1usize << A) - 1
+        ))
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        vec![TimingInfo {
+            name: "bram_out".into(),
+            clock: "clock".into(),
+            inputs: vec![
+                "read_address".into(),
+                "write_address".into(),
+                "write_data".into(),
+                "write_enable".into(),
+            ],
+            outputs: vec!["read_data".into()],
+        }]
+    }
+}
+
+#[cfg(test)]
+mod bram_out_tests {
+    use super::BramOut;
+    use rust_hdl::core::prelude::simulate;
+    use rust_hdl::prelude::*;
+
+    /// One clock of a `BramOut`: inputs set while the clock is low, then the rising edge.
+    fn clock<const D: usize, const A: usize>(m: &mut BramOut<D, A>, ra: u64, w: Option<(u64, u64)>) {
+        m.clock.next = false.into();
+        m.read_address.next = ra.into();
+        m.write_enable.next = w.is_some();
+        if let Some((a, d)) = w {
+            m.write_address.next = a.into();
+            m.write_data.next = d.into();
+        }
+        assert!(simulate(m, 100));
+        m.clock.next = true.into();
+        assert!(simulate(m, 100));
+    }
+
+    fn out<const D: usize, const A: usize>(m: &BramOut<D, A>) -> u64 {
+        m.read_data.val().to_u64()
+    }
+
+    /// Two-clock read, zero at power-up, a write seen by reads sampled at later edges only, and
+    /// the poison of a same-address read and write.
+    #[test]
+    fn two_clock_read_and_poison() {
+        let mut m = BramOut::<17, 10>::default();
+        m.connect_all();
+        clock(&mut m, 5, Some((5, 0x1_2345))); // edge 0: read 5 (collision: poison of 0), write 5
+        assert_eq!(out(&m), 0, "power-up");
+        clock(&mut m, 5, None); // edge 1: read 5 again
+        assert_eq!(out(&m), 0x1_ffff, "edge 0's read, one clock later: the poison (NOT of 0)");
+        clock(&mut m, 6, Some((7, 3))); // edge 2
+        assert_eq!(out(&m), 0x1_2345, "edge 1's read sees edge 0's write");
+        clock(&mut m, 7, None); // edge 3
+        assert_eq!(out(&m), 0, "ray 6 was never written");
+        clock(&mut m, 7, Some((7, 9))); // edge 4: collision, old word 3
+        assert_eq!(out(&m), 3);
+        clock(&mut m, 0, None);
+        assert_eq!(out(&m), !3u64 & 0x1_ffff, "poison: NOT of the old word");
+        clock(&mut m, 0, None);
+        assert_eq!(out(&m), 0);
+    }
+
+    /// The Verilog body has both branches, and the ECP5 one has one `DP16KD` per 18 bits with
+    /// the output register.
+    #[test]
+    fn verilog_has_the_ecp5_tiles() {
+        let m = BramOut::<32, 10>::default();
+        let Verilog::Custom(v) = m.hdl() else { panic!("custom Verilog") };
+        assert!(v.contains("`ifdef SHELLING_ECP5") && v.contains("`else") && v.contains("`endif"));
+        assert_eq!(v.matches("DP16KD #(").count(), 2);
+        assert_eq!(v.matches("REGMODE_B(\"OUTREG\")").count(), 2);
+        assert_eq!(super::bram_out_tile_width(11), 9);
+        let m = BramOut::<9, 11>::default();
+        let Verilog::Custom(v) = m.hdl() else { panic!("custom Verilog") };
+        assert_eq!(v.matches("DP16KD #(").count(), 1);
+    }
+}
+
+/// Clocks from presenting `q` and `sh` to [`KeyScalePipe`] to their key on `key`.
+pub const KEY_PIPE_LATENCY: u64 = 4;
+
+/// [`KeyScale`] in three register stages after its input registers, for a faster clock: the
+/// distance key of [`crate::intersection::model::key`] of the `q` and `sh` presented
+/// [`KEY_PIPE_LATENCY`] clocks earlier, one key per clock. Stage 1 selects the left shift (for
+/// `sh < 0`, saturating), the value 1 (for `q < 0`) or `q` shifted right by the multiple of 8 in
+/// `sh`; stage 2 shifts right by the rest (0 to 7); stage 3 raises a zero to 1.
+#[derive(LogicBlock, Default)]
+pub struct KeyScalePipe {
+    pub clock: Signal<In, Clock>,
+    pub q: Signal<In, Bits<32>>,
+    pub sh: Signal<In, Bits<6>>,
+    pub key: Signal<Out, Bits<32>>,
+    /// The inputs of the last three clocks, newest first.
+    _pipe: [(u32, i8); 3],
+}
+
+impl Logic for KeyScalePipe {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let (q, sh) = self._pipe[2];
+            self.key.next = Bits::from(key(q as i32, sh) as u64);
+            self._pipe = [
+                (self.q.val().to_u32(), from_bits(self.sh.val().to_u64(), 6) as i8),
+                self._pipe[0],
+                self._pipe[1],
+            ];
+        }
+    }
+
+    fn connect(&mut self) {
+        self.key.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        // sh < -3 is clamped to -3 (SH_MIN), as in the model. A zero q gives zero in stages 1
+        // and 2 (any shift) and 1 in stage 3, as a negative one does.
+        Verilog::Custom(
+            "\
+reg [31:0] q_r;
+reg [5:0] sh_r;
+reg [31:0] c1;
+reg [2:0] f1;
+reg [31:0] r2;
+reg [31:0] left;
+reg [31:0] coarse;
+initial begin
+   q_r = 32'd0;
+   sh_r = 6'd0;
+   c1 = 32'd0;
+   f1 = 3'd0;
+   r2 = 32'd0;
+   key = 32'd0;
+end
+always @(*) begin
+   if (sh_r == 6'h3f) left = {q_r[30:0], 1'b0};
+   else if (sh_r == 6'h3e) left = (q_r[31:30] == 2'd0) ? {q_r[29:0], 2'b0} : 32'hffffffff;
+   else left = (q_r[31:29] == 3'd0) ? {q_r[28:0], 3'b0} : 32'hffffffff;
+   case (sh_r[4:3])
+      2'd0: coarse = q_r;
+      2'd1: coarse = {8'd0, q_r[31:8]};
+      2'd2: coarse = {16'd0, q_r[31:16]};
+      default: coarse = {24'd0, q_r[31:24]};
+   endcase
+end
+always @(posedge clock) begin
+   q_r <= q;
+   sh_r <= sh;
+   if (q_r[31]) begin
+      c1 <= 32'd1;
+      f1 <= 3'd0;
+   end else if (sh_r[5]) begin
+      c1 <= left;
+      f1 <= 3'd0;
+   end else begin
+      c1 <= coarse;
+      f1 <= sh_r[2:0];
+   end
+   r2 <= c1 >> f1;
+   key <= (r2 == 32'd0) ? 32'd1 : r2;
+end
+"
+            .into(),
+        )
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        vec![TimingInfo {
+            name: "key_scale_pipe".into(),
+            clock: "clock".into(),
+            inputs: vec!["q".into(), "sh".into()],
+            outputs: vec!["key".into()],
+        }]
+    }
+}
+
+/// [`RayProducts`] with the multipliers' registers inside the DSP blocks on ECP5 (Verilog define
+/// `SHELLING_ECP5`): six hand-instantiated `MULT18X18D`s with their input and output registers
+/// (`REG_INPUTA_CLK`, `REG_INPUTB_CLK`, `REG_OUTPUT_CLK` = `"CLK0"`), because Yosys maps a
+/// product to a `MULT18X18D` without them, leaving about 4 ns of multiplier and 3 ns of
+/// routing between two fabric registers. Same ports, timing and Rust model as
+/// [`RayProducts`]; without the define its Verilog body is [`RayProducts`]'.
+#[derive(LogicBlock, Default)]
+pub struct RayProductsPipe {
+    pub clock: Signal<In, Clock>,
+    pub dx: Signal<In, Bits<18>>,
+    pub dy: Signal<In, Bits<18>>,
+    pub ax: Signal<In, Bits<18>>,
+    pub ay: Signal<In, Bits<18>>,
+    pub bx: Signal<In, Bits<18>>,
+    pub by: Signal<In, Bits<18>>,
+    pub wx: Signal<In, Bits<18>>,
+    pub wy: Signal<In, Bits<18>>,
+    pub dx_ay: Signal<Out, Bits<32>>,
+    pub dy_ax: Signal<Out, Bits<32>>,
+    pub dx_by: Signal<Out, Bits<32>>,
+    pub dy_bx: Signal<Out, Bits<32>>,
+    pub dx_wx: Signal<Out, Bits<32>>,
+    pub dy_wy: Signal<Out, Bits<32>>,
+    /// Stage-1 operand registers: ax, ay, bx, by, wx, wy.
+    _ops: [i64; 6],
+    /// Multiplier input registers: dx, dy, then the operands.
+    _mul: [i64; 8],
+}
+
+impl Logic for RayProductsPipe {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let [dx, dy, ax, ay, bx, by, wx, wy] = self._mul;
+            let p = |x: i64, y: i64| Bits::<32>::from(((x * y) >> PRODUCT_SHIFT) as u32 as u64);
+            self.dx_ay.next = p(dx, ay);
+            self.dy_ax.next = p(dy, ax);
+            self.dx_by.next = p(dx, by);
+            self.dy_bx.next = p(dy, bx);
+            self.dx_wx.next = p(dx, wx);
+            self.dy_wy.next = p(dy, wy);
+            let v = |b: Bits<18>| from_bits(b.to_u64(), 18);
+            let o = self._ops;
+            self._mul = [v(self.dx.val()), v(self.dy.val()), o[0], o[1], o[2], o[3], o[4], o[5]];
+            self._ops = [
+                v(self.ax.val()),
+                v(self.ay.val()),
+                v(self.bx.val()),
+                v(self.by.val()),
+                v(self.wx.val()),
+                v(self.wy.val()),
+            ];
+        }
+    }
+
+    fn connect(&mut self) {
+        self.dx_ay.connect();
+        self.dy_ax.connect();
+        self.dx_by.connect();
+        self.dy_bx.connect();
+        self.dx_wx.connect();
+        self.dy_wy.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let Verilog::Custom(generic) = RayProducts::default().hdl() else {
+            unreachable!("RayProducts has a custom body")
+        };
+        let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
+        let mut v = String::from("`ifdef SHELLING_ECP5\n");
+        for o in ops {
+            v += &format!("reg [17:0] {o}_1;\n");
+        }
+        v += "initial begin\n";
+        for o in ops {
+            v += &format!("   {o}_1 = 18'd0;\n");
+        }
+        v += "end\nalways @(posedge clock) begin\n";
+        for o in ops {
+            v += &format!("   {o}_1 <= {o};\n");
+        }
+        v += "end\n";
+        let products = [("dx", "ay"), ("dy", "ax"), ("dx", "by"), ("dy", "bx"), ("dx", "wx"), ("dy", "wy")];
+        for (d, o) in products {
+            v += &format!("wire [35:0] {d}_{o}_p;\n");
+            v += "MULT18X18D #(.REG_INPUTA_CLK(\"CLK0\"), .REG_INPUTB_CLK(\"CLK0\"), \
+.REG_OUTPUT_CLK(\"CLK0\"), .GSR(\"DISABLED\"), .RESETMODE(\"SYNC\")) ";
+            v += &format!("{d}_{o}_dsp (\n   .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0)");
+            for i in 0..18 {
+                v += &format!(",\n   .A{i}({d}[{i}]), .B{i}({o}_1[{i}]), .C{i}(1'b0)");
+            }
+            for i in 0..36 {
+                v += &format!(",\n   .P{i}({d}_{o}_p[{i}])");
+            }
+            v += "\n);\n";
+        }
+        v += "always @(*) begin\n";
+        for (d, o) in products {
+            v += &format!("   {d}_{o} = {d}_{o}_p[{}:{}];\n", 31 + PRODUCT_SHIFT, PRODUCT_SHIFT);
+        }
+        v += "end\n`else\n";
+        v += &generic;
+        v += "`endif\n";
+        Verilog::Custom(v)
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        vec![TimingInfo {
+            name: "ray_products_pipe".into(),
+            clock: "clock".into(),
+            inputs: ["dx", "dy", "ax", "ay", "bx", "by", "wx", "wy"].map(String::from).to_vec(),
+            outputs: ["dx_ay", "dy_ax", "dx_by", "dy_bx", "dx_wx", "dy_wy"].map(String::from).to_vec(),
+        }]
+    }
+}

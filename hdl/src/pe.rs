@@ -29,7 +29,7 @@
 //! | `cfg_cache_flush` | in | 1 | invalidate the cache (a new scene in the host memory): raise while not `busy`; `busy` stays high for the 4096 cycles it takes ([`PatchCache`]) |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host memory request (one pulse per patch) |
 //! | `mem_valid`, `mem_ax` … `mem_by` | in | 1, 4 × 17 | host memory response, in request order (world coordinates, Q11.6) |
-//! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (the cycle after; only while not `busy`) |
+//! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (two cycles after, [`crate::intersection::READOUT_LATENCY`]; only while not `busy`) |
 //! | `busy` | out | 1 | a command is in flight, or the cache is flushing |
 //! | `loads`, `cache_hits`, `cache_misses`, `passed`, `backward`, `back_facing`, `outside`, `near`, `tests` | out | 32 each | counters (wrapping): patches loaded, the cache's hits and misses, the screener's verdicts, ray-patch tests of live rays |
 //!

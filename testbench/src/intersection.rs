@@ -11,7 +11,7 @@ use crate::{impl_clocked, Driver, Error, Pacing, Result, Source};
 use rust_hdl::prelude::*;
 use shelling_hdl::formats::to_bits;
 use shelling_hdl::intersection::model::{replaces, test, Nearest};
-use shelling_hdl::intersection::{IntersectionUnit, RAY_BITS};
+use shelling_hdl::intersection::{IntersectionUnit, RAY_BITS, READOUT_LATENCY};
 use shelling_hdl::pe::ProcessingElement;
 use shelling_hdl::screener::model::PatchSetup;
 
@@ -94,13 +94,14 @@ pub fn model_bundle(dirs: &[[i32; 2]], jobs: &[Job]) -> Vec<Option<Nearest>> {
 
 /// The ray ports the intersection unit and the processing element share, by the same names and
 /// protocol: direction writes (`dir_we`, `dir_addr`, `dir_x`, `dir_y`), the read-and-clear
-/// readout (`res_re`, `res_addr` in; `res_hit`, `res_id`, `res_key` the cycle after) and `busy`.
+/// readout (`res_re`, `res_addr` in; `res_hit`, `res_id`, `res_key` [`READOUT_LATENCY`] = 2
+/// cycles after) and `busy`.
 pub trait RayPorts: Block {
     /// Drives a direction write of ray `i`, or none.
     fn write_direction(&mut self, write: Option<(usize, [i32; 2])>);
     /// Drives a readout of ray `i`, or none.
     fn request_readout(&mut self, ray: Option<usize>);
-    /// The ray read out in the previous cycle.
+    /// The ray whose readout was requested [`READOUT_LATENCY`] cycles before.
     fn readout(&self) -> Option<Nearest>;
     fn is_busy(&self) -> bool;
 }
@@ -147,7 +148,7 @@ impl_ray_ports!(IntersectionUnit, ProcessingElement);
 pub trait RayBench {
     /// One cycle with a direction write and a readout request (or none of either).
     fn cycle_rays(&mut self, write: Option<(usize, [i32; 2])>, read: Option<usize>) -> Result<()>;
-    /// The ray read out in the previous cycle.
+    /// The ray whose readout was requested [`READOUT_LATENCY`] cycles before.
     fn readout(&self) -> Option<Nearest>;
     fn is_busy(&self) -> bool;
 }
@@ -229,17 +230,20 @@ pub fn stream_jobs(
     Ok(drv.cycles() - start)
 }
 
-/// Reads and clears the nearest hits of rays `0..rays`, one per cycle.
+/// Reads and clears the nearest hits of rays `0..rays`, one per cycle: each hit arrives
+/// [`READOUT_LATENCY`] cycles after its request, so the readout takes `rays + 1` cycles (the
+/// last one also clears the last ray).
 pub fn read_hits(drv: &mut impl RayBench, rays: usize) -> Result<Vec<Option<Nearest>>> {
     let mut out = Vec::with_capacity(rays);
-    for i in 0..rays {
-        if drv.is_busy() {
+    for i in 0..rays + READOUT_LATENCY as usize - 1 {
+        if i < rays && drv.is_busy() {
             return Err(Error::new("readout while the unit is busy"));
         }
-        drv.cycle_rays(None, Some(i))?;
-        out.push(drv.readout());
+        drv.cycle_rays(None, (i < rays).then_some(i))?;
+        if i + 1 >= READOUT_LATENCY as usize {
+            out.push(drv.readout());
+        }
     }
-    drv.cycle_rays(None, None)?;
     Ok(out)
 }
 

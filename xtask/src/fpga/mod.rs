@@ -2,8 +2,9 @@
 //!
 //! 1. The Verilog of every block is exported fresh from the Rust source
 //!    (`shelling_testbench::export::write`) into `DIR/verilog/`.
-//! 2. Each block is wrapped in registers (see [`wrapper`]), synthesized by Yosys (`synth_ecp5`,
-//!    `synth_ice40 -dsp`) and placed and routed by nextpnr with a fixed seed, a target frequency
+//! 2. Each block is wrapped in registers (see [`wrapper`]), synthesized by Yosys (`synth_ecp5`
+//!    with `SHELLING_ECP5` defined, which instantiates the `DP16KD` block RAMs with their output
+//!    register; `synth_ice40 -dsp`) and placed and routed by nextpnr with a fixed seed, a target frequency
 //!    and `--timing-allow-fail`, so that a missed target is measured rather than refused.
 //! 3. The counts come from nextpnr's report (its log's utilisation table for a design that does
 //!    not fit), less the wrapper's flip-flops, which the netlist tells apart; fmax and the
@@ -135,6 +136,9 @@ struct Target {
     family: Family,
     device: String,
     synth: &'static str,
+    /// Verilog defines for `read_verilog` (`-DSHELLING_ECP5` selects the hand-instantiated
+    /// block RAMs of `shelling_hdl::leaf::BramOut`).
+    defines: &'static str,
     nextpnr_device: Vec<String>,
     mhz: f64,
     tool: ToolKind,
@@ -147,6 +151,7 @@ impl Target {
                 family,
                 device: format!("LFE5U-85F-{} CABGA381", args.ecp5_speed),
                 synth: "synth_ecp5",
+                defines: "-DSHELLING_ECP5 ",
                 nextpnr_device: strings(&[
                     "--85k",
                     "--speed",
@@ -161,6 +166,7 @@ impl Target {
                 family,
                 device: "iCE40UP5K SG48".into(),
                 synth: "synth_ice40 -dsp",
+                defines: "",
                 nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
@@ -169,6 +175,7 @@ impl Target {
                 family,
                 device: "iCE40HX8K CT256".into(),
                 synth: "synth_ice40",
+                defines: "",
                 nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
@@ -372,8 +379,8 @@ fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()
 
     let netlist_json = "synth.json";
     let script = format!(
-        "read_verilog {source} {wrapper_v}; {} -top {} -json {netlist_json}; stat",
-        target.synth, wrap.top
+        "read_verilog {}{source} {wrapper_v}; {} -top {} -json {netlist_json}; stat",
+        target.defines, target.synth, wrap.top
     );
     eprintln!("{job}: yosys ({} {} bits in, {} bits out)", target.synth, wrap.in_bits, wrap.out_bits);
     let yosys_args = vec!["-p".to_string(), script];
