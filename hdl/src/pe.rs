@@ -59,8 +59,10 @@
 //!
 //! # Resources
 //!
-//! Yosys `synth_ecp5` of the whole PE (with a 4096-line cache): 16 `MULT18X18D`, 26 `DP16KD`,
-//! 124 `TRELLIS_DPR16X4`, about 3900 LUT4, 1100 `CCU2C` and 5100 flip-flops.
+//! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 4096-line cache, in the FPGA
+//! flow's register wrapper): 16 `MULT18X18D`, 26 `DP16KD`, 124 `TRELLIS_RAMW`, 7030
+//! `TRELLIS_COMB` and 7218 `TRELLIS_FF` (the wrapper's included); 71.8 MHz on LFE5U-85F-6, the
+//! patch cache's tag path being the slowest (README, "FPGA resources and clock rate").
 //!
 //! # Models
 //!
