@@ -714,16 +714,21 @@ impl<const D: usize, const A: usize> Logic for BramOut<D, A> {
 {ecp5}`else
 reg [{dm}:0] mem [0:{words}];
 reg [{dm}:0] r1;
+reg collided;
 integer i;
 initial begin
    for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
    r1 = {d}'d0;
+   collided = 1'b0;
    read_data = {d}'d0;
 end
 always @(posedge clock) begin
-   // A read and a write of the same address in one clock: poison (see the Rust docs).
-   r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-   read_data <= r1;
+   // A plain registered read (read before write), so that synthesis infers block RAM; a read
+   // and a write of the same address in one clock are poisoned after the read register (see
+   // the Rust docs).
+   r1 <= mem[read_address];
+   collided <= write_enable && write_address == read_address;
+   read_data <= collided ? ~r1 : r1;
    if (write_enable) begin
       mem[write_address] <= write_data;
    end

@@ -1150,16 +1150,21 @@ module intersection_unit$alive_mem(clock,read_address,read_data,write_address,wr
     `else
     reg [0:0] mem [0:1023];
     reg [0:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 1'd0;
        r1 = 1'd0;
+       collided = 1'b0;
        read_data = 1'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -1507,16 +1512,21 @@ module intersection_unit$dir_mem_x(clock,read_address,read_data,write_address,wr
     `else
     reg [17:0] mem [0:1023];
     reg [17:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
+       collided = 1'b0;
        read_data = 18'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -1598,16 +1608,21 @@ module intersection_unit$dir_mem_y(clock,read_address,read_data,write_address,wr
     `else
     reg [17:0] mem [0:1023];
     reg [17:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
+       collided = 1'b0;
        read_data = 18'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -2138,16 +2153,21 @@ module intersection_unit$mem_key(clock,read_address,read_data,write_address,writ
     `else
     reg [31:0] mem [0:1023];
     reg [31:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 32'd0;
        r1 = 32'd0;
+       collided = 1'b0;
        read_data = 32'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -2229,16 +2249,21 @@ module intersection_unit$mem_meta(clock,read_address,read_data,write_address,wri
     `else
     reg [16:0] mem [0:1023];
     reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end

@@ -8377,16 +8377,21 @@ module processing_element$unit$alive_mem(clock,read_address,read_data,write_addr
     `else
     reg [0:0] mem [0:1023];
     reg [0:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 1'd0;
        r1 = 1'd0;
+       collided = 1'b0;
        read_data = 1'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -8734,16 +8739,21 @@ module processing_element$unit$dir_mem_x(clock,read_address,read_data,write_addr
     `else
     reg [17:0] mem [0:1023];
     reg [17:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
+       collided = 1'b0;
        read_data = 18'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -8825,16 +8835,21 @@ module processing_element$unit$dir_mem_y(clock,read_address,read_data,write_addr
     `else
     reg [17:0] mem [0:1023];
     reg [17:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
+       collided = 1'b0;
        read_data = 18'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -9365,16 +9380,21 @@ module processing_element$unit$mem_key(clock,read_address,read_data,write_addres
     `else
     reg [31:0] mem [0:1023];
     reg [31:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 32'd0;
        r1 = 32'd0;
+       collided = 1'b0;
        read_data = 32'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
@@ -9456,16 +9476,21 @@ module processing_element$unit$mem_meta(clock,read_address,read_data,write_addre
     `else
     reg [16:0] mem [0:1023];
     reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 1023; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       // A read and a write of the same address in one clock: poison (see the Rust docs).
-       r1 <= (write_enable && write_address == read_address) ? ~mem[read_address] : mem[read_address];
-       read_data <= r1;
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
