@@ -7,9 +7,10 @@
 //!   product per clock) that maps to one DSP block (ECP5 `MULT18X18D`, Xilinx `DSP48`). It
 //!   outputs the product arithmetically shifted right by [`PRODUCT_SHIFT`] as 32 bits, the
 //!   bit-true [`crate::formats::mul`].
-//! * [`RayProducts`]: the intersection unit's six products of a ray direction with a patch's
-//!   three vectors, six [`Mul18`]s and their stage-1 operand registers in one leaf (six DSP
-//!   blocks); a leaf so that a settle pass visits one block instead of twelve.
+//! * [`RayProductsPipe`]: the intersection unit's six products of a ray direction with a
+//!   patch's three vectors and their operand registers in one leaf (six DSP blocks; on ECP5 the
+//!   `MULT18X18D`s' own input and output registers); a leaf so that a settle pass visits one
+//!   block instead of twelve.
 //! * [`KeyScalePipe`]: the intersection unit's distance-key stage, `q·2^-sh` saturated into
 //!   `[1, 2³² − 1]` in four register stages, the bit-true
 //!   [`crate::intersection::model::key`]. It is a leaf because it is a barrel shifter: rust-hdl
@@ -26,8 +27,6 @@
 //! * [`BramOut`]: [`Bram`] with its read registered twice (two clocks from address to data); on
 //!   ECP5 (`SHELLING_ECP5` defined) hand-instantiated `DP16KD`s with their output register on,
 //!   0.96 ns from clock to data instead of 5.83.
-//! * [`RayProductsPipe`]: [`RayProducts`] with, on ECP5, the `MULT18X18D`s' own input and output
-//!   registers on; elsewhere [`RayProducts`]' Verilog.
 
 use crate::formats::{from_bits, PRODUCT_SHIFT};
 use crate::intersection::model::key;
@@ -93,122 +92,39 @@ end
     }
 }
 
-/// The intersection unit's six products of one ray direction `d` with a patch's three vectors
-/// `a`, `b`, `w`: six [`Mul18`]s in one leaf, with the patch operands held one clock longer
-/// than the direction. Outputs, each `(d·x) >> 4` as 32 bits ([`crate::formats::mul`]):
-/// `dx_ay`, `dy_ax`, `dx_by`, `dy_bx`, `dx_wx`, `dy_wy`.
-///
-/// Timing: `ax` … `wy` are presented in one clock (stage 0), `dx`, `dy` in the next (stage 1);
-/// their products appear two clocks after `dx`, `dy` (stage 3), one set per clock. The
-/// operand registers of stage 1 and the multipliers' input and output registers are inside the
-/// leaf: in simulation they are six integers instead of six `DFF`s and six `Mul18` blocks in
-/// every settle pass. Maps to six DSP blocks, as six `Mul18`s do.
-#[derive(LogicBlock, Default)]
-pub struct RayProducts {
-    pub clock: Signal<In, Clock>,
-    pub dx: Signal<In, Bits<18>>,
-    pub dy: Signal<In, Bits<18>>,
-    pub ax: Signal<In, Bits<18>>,
-    pub ay: Signal<In, Bits<18>>,
-    pub bx: Signal<In, Bits<18>>,
-    pub by: Signal<In, Bits<18>>,
-    pub wx: Signal<In, Bits<18>>,
-    pub wy: Signal<In, Bits<18>>,
-    pub dx_ay: Signal<Out, Bits<32>>,
-    pub dy_ax: Signal<Out, Bits<32>>,
-    pub dx_by: Signal<Out, Bits<32>>,
-    pub dy_bx: Signal<Out, Bits<32>>,
-    pub dx_wx: Signal<Out, Bits<32>>,
-    pub dy_wy: Signal<Out, Bits<32>>,
-    /// Stage-1 operand registers: ax, ay, bx, by, wx, wy.
-    _ops: [i64; 6],
-    /// Multiplier input registers: dx, dy, then the operands.
-    _mul: [i64; 8],
-}
-
-impl Logic for RayProducts {
-    fn update(&mut self) {
-        if self.clock.pos_edge() {
-            let [dx, dy, ax, ay, bx, by, wx, wy] = self._mul;
-            let p = |x: i64, y: i64| Bits::<32>::from(((x * y) >> PRODUCT_SHIFT) as u32 as u64);
-            self.dx_ay.next = p(dx, ay);
-            self.dy_ax.next = p(dy, ax);
-            self.dx_by.next = p(dx, by);
-            self.dy_bx.next = p(dy, bx);
-            self.dx_wx.next = p(dx, wx);
-            self.dy_wy.next = p(dy, wy);
-            let v = |b: Bits<18>| from_bits(b.to_u64(), 18);
-            self._mul = [
-                v(self.dx.val()),
-                v(self.dy.val()),
-                self._ops[0],
-                self._ops[1],
-                self._ops[2],
-                self._ops[3],
-                self._ops[4],
-                self._ops[5],
-            ];
-            self._ops = [
-                v(self.ax.val()),
-                v(self.ay.val()),
-                v(self.bx.val()),
-                v(self.by.val()),
-                v(self.wx.val()),
-                v(self.wy.val()),
-            ];
-        }
-    }
-
-    fn connect(&mut self) {
-        self.dx_ay.connect();
-        self.dy_ax.connect();
-        self.dx_by.connect();
-        self.dy_bx.connect();
-        self.dx_wx.connect();
-        self.dy_wy.connect();
-    }
-
-    fn hdl(&self) -> Verilog {
-        let mut v = String::from(
-            "\
+/// The plain Verilog of [`RayProductsPipe`] (every simulator, the formal tasks, iCE40 and the
+/// rung-5 netlists): operand registers, six signed products, registered outputs.
+fn ray_products_verilog() -> String {
+    let mut v = String::from(
+        "\
 reg signed [17:0] dx_r;
 reg signed [17:0] dy_r;
 ",
-        );
-        let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
-        for o in ops {
-            v += &format!("reg signed [17:0] {o}_1;\nreg signed [17:0] {o}_r;\n");
-        }
-        let products = [("dx", "ay"), ("dy", "ax"), ("dx", "by"), ("dy", "bx"), ("dx", "wx"), ("dy", "wy")];
-        for (d, o) in products {
-            v += &format!("wire signed [35:0] {d}_{o}_m = {d}_r * {o}_r;\n");
-        }
-        v += "initial begin\n   dx_r = 18'sd0;\n   dy_r = 18'sd0;\n";
-        for o in ops {
-            v += &format!("   {o}_1 = 18'sd0;\n   {o}_r = 18'sd0;\n");
-        }
-        for (d, o) in products {
-            v += &format!("   {d}_{o} = 32'd0;\n");
-        }
-        v += "end\nalways @(posedge clock) begin\n   dx_r <= dx;\n   dy_r <= dy;\n";
-        for o in ops {
-            v += &format!("   {o}_1 <= {o};\n   {o}_r <= {o}_1;\n");
-        }
-        for (d, o) in products {
-            v += &format!("   {d}_{o} <= {d}_{o}_m[{}:{}];\n", 31 + PRODUCT_SHIFT, PRODUCT_SHIFT);
-        }
-        v += "end\n";
-        Verilog::Custom(v)
+    );
+    let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
+    for o in ops {
+        v += &format!("reg signed [17:0] {o}_1;\nreg signed [17:0] {o}_r;\n");
     }
-
-    fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "ray_products".into(),
-            clock: "clock".into(),
-            inputs: ["dx", "dy", "ax", "ay", "bx", "by", "wx", "wy"].map(String::from).to_vec(),
-            outputs: ["dx_ay", "dy_ax", "dx_by", "dy_bx", "dx_wx", "dy_wy"].map(String::from).to_vec(),
-        }]
+    let products = [("dx", "ay"), ("dy", "ax"), ("dx", "by"), ("dy", "bx"), ("dx", "wx"), ("dy", "wy")];
+    for (d, o) in products {
+        v += &format!("wire signed [35:0] {d}_{o}_m = {d}_r * {o}_r;\n");
     }
+    v += "initial begin\n   dx_r = 18'sd0;\n   dy_r = 18'sd0;\n";
+    for o in ops {
+        v += &format!("   {o}_1 = 18'sd0;\n   {o}_r = 18'sd0;\n");
+    }
+    for (d, o) in products {
+        v += &format!("   {d}_{o} = 32'd0;\n");
+    }
+    v += "end\nalways @(posedge clock) begin\n   dx_r <= dx;\n   dy_r <= dy;\n";
+    for o in ops {
+        v += &format!("   {o}_1 <= {o};\n   {o}_r <= {o}_1;\n");
+    }
+    for (d, o) in products {
+        v += &format!("   {d}_{o} <= {d}_{o}_m[{}:{}];\n", 31 + PRODUCT_SHIFT, PRODUCT_SHIFT);
+    }
+    v += "end\n";
+    v
 }
 
 /// Quotient bits of [`PipeDivider`], one pipeline stage each.
@@ -916,12 +832,22 @@ end
     }
 }
 
-/// [`RayProducts`] with the multipliers' registers inside the DSP blocks on ECP5 (Verilog define
-/// `SHELLING_ECP5`): six hand-instantiated `MULT18X18D`s with their input and output registers
-/// (`REG_INPUTA_CLK`, `REG_INPUTB_CLK`, `REG_OUTPUT_CLK` = `"CLK0"`), because Yosys maps a
-/// product to a `MULT18X18D` without them, leaving about 4 ns of multiplier and 3 ns of
-/// routing between two fabric registers. Same ports, timing and Rust model as
-/// [`RayProducts`]; without the define its Verilog body is [`RayProducts`]'.
+/// The intersection unit's six products of one ray direction `d` with a patch's three vectors
+/// `a`, `b`, `w`: six [`Mul18`]s in one leaf, with the patch operands held one clock longer
+/// than the direction. Outputs, each `(d·x) >> 4` as 32 bits ([`crate::formats::mul`]):
+/// `dx_ay`, `dy_ax`, `dx_by`, `dy_bx`, `dx_wx`, `dy_wy`.
+///
+/// Timing: `ax` … `wy` are presented in one clock (stage 0), `dx`, `dy` in the next (stage 1);
+/// their products appear two clocks after `dx`, `dy` (stage 3), one set per clock. The
+/// operand registers of stage 1 and the multipliers' input and output registers are inside the
+/// leaf: in simulation they are six integers instead of six `DFF`s and six `Mul18` blocks in
+/// every settle pass. Maps to six DSP blocks, as six `Mul18`s do.
+///
+/// On ECP5 (Verilog define `SHELLING_ECP5`) the multipliers are six hand-instantiated
+/// `MULT18X18D`s with their input and output registers (`REG_INPUTA_CLK`, `REG_INPUTB_CLK`,
+/// `REG_OUTPUT_CLK` = `"CLK0"`), because Yosys maps a product to a `MULT18X18D` without them,
+/// leaving about 4 ns of multiplier and 3 ns of routing between two fabric registers; without
+/// the define the Verilog is plain registers and products.
 #[derive(LogicBlock, Default)]
 pub struct RayProductsPipe {
     pub clock: Signal<In, Clock>,
@@ -980,9 +906,7 @@ impl Logic for RayProductsPipe {
     }
 
     fn hdl(&self) -> Verilog {
-        let Verilog::Custom(generic) = RayProducts::default().hdl() else {
-            unreachable!("RayProducts has a custom body")
-        };
+        let generic = ray_products_verilog();
         let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
         let mut v = String::from("`ifdef SHELLING_ECP5\n");
         for o in ops {
