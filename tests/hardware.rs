@@ -143,6 +143,25 @@ fn intersection_unit_block_rams_use_their_output_register() {
     assert_eq!(cells(&text, "DP16KD"), 6, "{text}");
 }
 
+/// Every multiplier of the intersection unit (6) and the screener (10) is a hand-instantiated
+/// `MULT18X18D` with its own input and output registers (`REG_INPUTA_CLK`, `REG_OUTPUT_CLK` =
+/// `"CLK0"`), none left to Yosys' mapping of a Verilog product (which leaves them off).
+#[test]
+fn multipliers_use_their_own_registers() {
+    for (block, dsps) in [("intersection_unit", 6), ("screener", 10)] {
+        let text = synth_ecp5_script(
+            block,
+            "synth_ecp5",
+            &format!(
+                "tee -o /dev/stdout stat; select -assert-count {dsps} t:MULT18X18D; \
+                 select -assert-count {dsps} t:MULT18X18D r:REG_INPUTA_CLK=CLK0 %i r:REG_INPUTB_CLK=CLK0 %i \
+                 r:REG_OUTPUT_CLK=CLK0 %i"
+            ),
+        );
+        assert_eq!(cells(&text, "MULT18X18D"), dsps, "{block}: {text}");
+    }
+}
+
 /// The loader has no multiplier; the screener's ten products take one DSP each and its pipelined
 /// divider none (LUTs and carry chains). Both FIFOs map to LUT RAM.
 #[test]

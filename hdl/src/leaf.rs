@@ -6,7 +6,8 @@
 //! * [`Mul18`]: an 18×18 signed multiplier with registered inputs and output (latency 2, one
 //!   product per clock) that maps to one DSP block (ECP5 `MULT18X18D`, Xilinx `DSP48`). It
 //!   outputs the product arithmetically shifted right by [`PRODUCT_SHIFT`] as 32 bits, the
-//!   bit-true [`crate::formats::mul`].
+//!   bit-true [`crate::formats::mul`]. On ECP5 (`SHELLING_ECP5` defined) a hand-instantiated
+//!   `MULT18X18D` whose own input and output registers are the leaf's.
 //! * [`RayProductsPipe`]: the intersection unit's six products of a ray direction with a
 //!   patch's three vectors and their operand registers in one leaf (six DSP blocks; on ECP5 the
 //!   `MULT18X18D`s' own input and output registers); a leaf so that a settle pass visits one
@@ -35,6 +36,10 @@ use rust_hdl::prelude::*;
 /// 18×18 signed multiplier, registered inputs and output: `p = (a·b) >> 4`, two clocks after
 /// `a` and `b` are presented. Operands are two's complement in `Bits<18>`; `p` is two's
 /// complement in `Bits<32>`.
+///
+/// On ECP5 (Verilog define `SHELLING_ECP5`) the Verilog is one [`mult18x18d`] instance with its
+/// input and output registers on (the same latency); without the define, plain registers and a
+/// product.
 #[derive(LogicBlock, Default)]
 pub struct Mul18 {
     pub clock: Signal<In, Clock>,
@@ -60,7 +65,14 @@ impl Logic for Mul18 {
     }
 
     fn hdl(&self) -> Verilog {
-        Verilog::Custom(format!(
+        let mut v = String::from("`ifdef SHELLING_ECP5\nwire [35:0] p_w;\n");
+        v += &mult18x18d("dsp", "a", "b", "p_w");
+        v += &format!(
+            "always @(*) begin\n   p = p_w[{hi}:{lo}];\nend\n`else\n",
+            hi = 31 + PRODUCT_SHIFT,
+            lo = PRODUCT_SHIFT
+        );
+        v += &format!(
             "\
 reg signed [17:0] a_r;
 reg signed [17:0] b_r;
@@ -79,7 +91,9 @@ end
 ",
             hi = 31 + PRODUCT_SHIFT,
             lo = PRODUCT_SHIFT
-        ))
+        );
+        v += "`endif\n";
+        Verilog::Custom(v)
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
@@ -90,6 +104,29 @@ end
             outputs: vec!["p".into()],
         }]
     }
+}
+
+/// An ECP5 `MULT18X18D` instance named `name`: signed 18-bit `a` × `b` into the 36-bit wire
+/// `p`, with the block's own input and output registers (`REG_INPUTA_CLK`, `REG_INPUTB_CLK`,
+/// `REG_OUTPUT_CLK` = `"CLK0"`, latency 2, as [`Mul18`]'s model) on `clock`. Yosys maps a
+/// product written in Verilog to a `MULT18X18D` without them, leaving about 4 ns of multiplier
+/// and 3 ns of routing between two fabric registers.
+fn mult18x18d(name: &str, a: &str, b: &str, p: &str) -> String {
+    let mut v = String::from(
+        "MULT18X18D #(.REG_INPUTA_CLK(\"CLK0\"), .REG_INPUTB_CLK(\"CLK0\"), \
+.REG_OUTPUT_CLK(\"CLK0\"), .GSR(\"DISABLED\"), .RESETMODE(\"SYNC\")) ",
+    );
+    v += &format!(
+        "{name} (\n   .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0)"
+    );
+    for i in 0..18 {
+        v += &format!(",\n   .A{i}({a}[{i}]), .B{i}({b}[{i}]), .C{i}(1'b0)");
+    }
+    for i in 0..36 {
+        v += &format!(",\n   .P{i}({p}[{i}])");
+    }
+    v += "\n);\n";
+    v
 }
 
 /// The plain Verilog of [`RayProductsPipe`] (every simulator, the formal tasks, iCE40 and the
@@ -843,11 +880,9 @@ end
 /// leaf: in simulation they are six integers instead of six `DFF`s and six `Mul18` blocks in
 /// every settle pass. Maps to six DSP blocks, as six `Mul18`s do.
 ///
-/// On ECP5 (Verilog define `SHELLING_ECP5`) the multipliers are six hand-instantiated
-/// `MULT18X18D`s with their input and output registers (`REG_INPUTA_CLK`, `REG_INPUTB_CLK`,
-/// `REG_OUTPUT_CLK` = `"CLK0"`), because Yosys maps a product to a `MULT18X18D` without them,
-/// leaving about 4 ns of multiplier and 3 ns of routing between two fabric registers; without
-/// the define the Verilog is plain registers and products.
+/// On ECP5 (Verilog define `SHELLING_ECP5`) the multipliers are six [`mult18x18d`] instances
+/// with their own input and output registers; without the define the Verilog is plain
+/// registers and products.
 #[derive(LogicBlock, Default)]
 pub struct RayProductsPipe {
     pub clock: Signal<In, Clock>,
@@ -924,16 +959,7 @@ impl Logic for RayProductsPipe {
         let products = [("dx", "ay"), ("dy", "ax"), ("dx", "by"), ("dy", "bx"), ("dx", "wx"), ("dy", "wy")];
         for (d, o) in products {
             v += &format!("wire [35:0] {d}_{o}_p;\n");
-            v += "MULT18X18D #(.REG_INPUTA_CLK(\"CLK0\"), .REG_INPUTB_CLK(\"CLK0\"), \
-.REG_OUTPUT_CLK(\"CLK0\"), .GSR(\"DISABLED\"), .RESETMODE(\"SYNC\")) ";
-            v += &format!("{d}_{o}_dsp (\n   .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0)");
-            for i in 0..18 {
-                v += &format!(",\n   .A{i}({d}[{i}]), .B{i}({o}_1[{i}]), .C{i}(1'b0)");
-            }
-            for i in 0..36 {
-                v += &format!(",\n   .P{i}({d}_{o}_p[{i}])");
-            }
-            v += "\n);\n";
+            v += &mult18x18d(&format!("{d}_{o}_dsp"), d, &format!("{o}_1"), &format!("{d}_{o}_p"));
         }
         v += "always @(*) begin\n";
         for (d, o) in products {

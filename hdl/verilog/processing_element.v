@@ -6020,6 +6020,69 @@ module processing_element$screener$m_abx(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6034,6 +6097,7 @@ module processing_element$screener$m_abx(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_abx
 
 
@@ -6046,6 +6110,69 @@ module processing_element$screener$m_aby(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6060,6 +6187,7 @@ module processing_element$screener$m_aby(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_aby
 
 
@@ -6072,6 +6200,69 @@ module processing_element$screener$m_fbx(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6086,6 +6277,7 @@ module processing_element$screener$m_fbx(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_fbx
 
 
@@ -6098,6 +6290,69 @@ module processing_element$screener$m_fby(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6112,6 +6367,7 @@ module processing_element$screener$m_fby(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_fby
 
 
@@ -6124,6 +6380,69 @@ module processing_element$screener$m_lax(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6138,6 +6457,7 @@ module processing_element$screener$m_lax(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_lax
 
 
@@ -6150,6 +6470,69 @@ module processing_element$screener$m_lay(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6164,6 +6547,7 @@ module processing_element$screener$m_lay(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_lay
 
 
@@ -6176,6 +6560,69 @@ module processing_element$screener$m_nax(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6190,6 +6637,7 @@ module processing_element$screener$m_nax(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_nax
 
 
@@ -6202,6 +6650,69 @@ module processing_element$screener$m_nay(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6216,6 +6727,7 @@ module processing_element$screener$m_nay(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_nay
 
 
@@ -6228,6 +6740,69 @@ module processing_element$screener$m_nbx(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6242,6 +6817,7 @@ module processing_element$screener$m_nbx(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_nbx
 
 
@@ -6254,6 +6830,69 @@ module processing_element$screener$m_nby(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -6268,6 +6907,7 @@ module processing_element$screener$m_nby(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // processing_element$screener$m_nby
 
 

@@ -3961,6 +3961,69 @@ module screener$m_abx(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -3975,6 +4038,7 @@ module screener$m_abx(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_abx
 
 
@@ -3987,6 +4051,69 @@ module screener$m_aby(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4001,6 +4128,7 @@ module screener$m_aby(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_aby
 
 
@@ -4013,6 +4141,69 @@ module screener$m_fbx(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4027,6 +4218,7 @@ module screener$m_fbx(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_fbx
 
 
@@ -4039,6 +4231,69 @@ module screener$m_fby(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4053,6 +4308,7 @@ module screener$m_fby(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_fby
 
 
@@ -4065,6 +4321,69 @@ module screener$m_lax(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4079,6 +4398,7 @@ module screener$m_lax(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_lax
 
 
@@ -4091,6 +4411,69 @@ module screener$m_lay(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4105,6 +4488,7 @@ module screener$m_lay(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_lay
 
 
@@ -4117,6 +4501,69 @@ module screener$m_nax(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4131,6 +4578,7 @@ module screener$m_nax(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_nax
 
 
@@ -4143,6 +4591,69 @@ module screener$m_nay(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4157,6 +4668,7 @@ module screener$m_nay(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_nay
 
 
@@ -4169,6 +4681,69 @@ module screener$m_nbx(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4183,6 +4758,7 @@ module screener$m_nbx(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_nbx
 
 
@@ -4195,6 +4771,69 @@ module screener$m_nby(clock,a,b,p);
     output reg  [31:0] p;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] p_w;
+    MULT18X18D #(.REG_INPUTA_CLK("CLK0"), .REG_INPUTB_CLK("CLK0"), .REG_OUTPUT_CLK("CLK0"), .GSR("DISABLED"), .RESETMODE("SYNC")) dsp (
+       .CLK0(clock), .CE0(1'b1), .RST0(1'b0), .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
+       .A0(a[0]), .B0(b[0]), .C0(1'b0),
+       .A1(a[1]), .B1(b[1]), .C1(1'b0),
+       .A2(a[2]), .B2(b[2]), .C2(1'b0),
+       .A3(a[3]), .B3(b[3]), .C3(1'b0),
+       .A4(a[4]), .B4(b[4]), .C4(1'b0),
+       .A5(a[5]), .B5(b[5]), .C5(1'b0),
+       .A6(a[6]), .B6(b[6]), .C6(1'b0),
+       .A7(a[7]), .B7(b[7]), .C7(1'b0),
+       .A8(a[8]), .B8(b[8]), .C8(1'b0),
+       .A9(a[9]), .B9(b[9]), .C9(1'b0),
+       .A10(a[10]), .B10(b[10]), .C10(1'b0),
+       .A11(a[11]), .B11(b[11]), .C11(1'b0),
+       .A12(a[12]), .B12(b[12]), .C12(1'b0),
+       .A13(a[13]), .B13(b[13]), .C13(1'b0),
+       .A14(a[14]), .B14(b[14]), .C14(1'b0),
+       .A15(a[15]), .B15(b[15]), .C15(1'b0),
+       .A16(a[16]), .B16(b[16]), .C16(1'b0),
+       .A17(a[17]), .B17(b[17]), .C17(1'b0),
+       .P0(p_w[0]),
+       .P1(p_w[1]),
+       .P2(p_w[2]),
+       .P3(p_w[3]),
+       .P4(p_w[4]),
+       .P5(p_w[5]),
+       .P6(p_w[6]),
+       .P7(p_w[7]),
+       .P8(p_w[8]),
+       .P9(p_w[9]),
+       .P10(p_w[10]),
+       .P11(p_w[11]),
+       .P12(p_w[12]),
+       .P13(p_w[13]),
+       .P14(p_w[14]),
+       .P15(p_w[15]),
+       .P16(p_w[16]),
+       .P17(p_w[17]),
+       .P18(p_w[18]),
+       .P19(p_w[19]),
+       .P20(p_w[20]),
+       .P21(p_w[21]),
+       .P22(p_w[22]),
+       .P23(p_w[23]),
+       .P24(p_w[24]),
+       .P25(p_w[25]),
+       .P26(p_w[26]),
+       .P27(p_w[27]),
+       .P28(p_w[28]),
+       .P29(p_w[29]),
+       .P30(p_w[30]),
+       .P31(p_w[31]),
+       .P32(p_w[32]),
+       .P33(p_w[33]),
+       .P34(p_w[34]),
+       .P35(p_w[35])
+    );
+    always @(*) begin
+       p = p_w[35:4];
+    end
+    `else
     reg signed [17:0] a_r;
     reg signed [17:0] b_r;
     wire signed [35:0] prod;
@@ -4209,6 +4848,7 @@ module screener$m_nby(clock,a,b,p);
        b_r <= b;
        p <= prod[35:4];
     end
+    `endif
 endmodule // screener$m_nby
 
 
