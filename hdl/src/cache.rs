@@ -46,47 +46,56 @@
 //! # Enabled: structure
 //!
 //! * A request queue of [`QUEUE_DEPTH`] ids (a [`Bram`] lane with registered read, as the
-//!   loader's FIFO). The client must keep at most [`QUEUE_DEPTH`] requests outstanding (the
-//!   loader does: at most one per FIFO slot, `crate::loader::DEPTH` = 16); every queued request
-//!   is outstanding, so the queue cannot overflow.
-//! * Five [`Bram`] lanes of [`LINES`] words: the tag (bit 16: valid, bits 15…0: the whole id)
+//!   loader's FIFO, with five-bit pointers). The client must keep at most [`QUEUE_DEPTH`]
+//!   requests outstanding (the loader does: at most one per FIFO slot, `crate::loader::DEPTH` =
+//!   16); a request leaves the queue when it is answered, so the queue cannot overflow.
+//! * Five [`BramOut`] lanes of [`LINES`] words, two clocks from read address to data (on ECP5
+//!   block RAMs with their output register): the tag (bit 16: valid, bits 15…0: the whole id)
 //!   and the four 17-bit coordinates; zero (invalid) at power-up.
-//! * A three-stage pipeline, one request at a time in request order:
-//!   - **H** (head): the queue's head id is at the queue lane's read register; the tag and data
-//!     lanes are read at its line.
-//!   - **B** (lookup): the request advanced from H; the lanes' read registers hold its line, so
+//! * A speculative lookup pipeline, one request per clock, in request order:
+//!   - **Q** (issue): the id of the next request to look up is at the queue lane's read
+//!     register; its line is presented to the lanes and the request moves to S1, and the queue
+//!     lane reads the request after it.
+//!   - **S1**: the lanes' first read register.
+//!   - **S2** (lookup): the lanes' output registers hold the request's line, so
 //!     `hit = tag == {1, id}`. A hit is answered from the data lanes; a miss issues the host
 //!     request and goes to W.
 //!   - **W** (wait): the miss waits for `mem_valid`; the response is written into its line
 //!     (tag and data) and forwarded to the client. A `mem_valid` with no miss waiting is a
 //!     protocol violation and is ignored.
 //!
-//!   H advances into B when B is empty or hits, and W is empty. After a fill, H waits one more
-//!   cycle and its line is read again: the lanes read before they write, so the read made in
-//!   the fill cycle may be stale. There is no other hazard: only fills write, and nothing is
-//!   looked up while a fill is pending.
+//!   Requests are looked up before the ones ahead of them are answered. A miss voids the two
+//!   lookups behind it (in S1 and S2 while it waits) and rewinds the queue's read pointer to the
+//!   request after it: after the fill those are issued again, so they see the line it wrote
+//!   (the lanes read before they write, and nothing is issued until the cycle after the fill).
+//!   Only fills write, and nothing is issued while a fill is pending, so there is no other
+//!   hazard. The tag compare feeds registers only (the response, the counters, the host
+//!   request): no path runs from a block RAM through the compare into another memory's address.
 //! * With the cache enabled every output is a register (`mem_req`, `mem_addr`, `resp_*`,
-//!   counters): no combinational path crosses the block. `resp_*` keep their last value while
-//!   `resp_valid` is low (zero after power-up), identically in the rust-hdl simulation and in
-//!   the Verilog.
+//!   counters): no combinational path crosses the block. `resp_*` are meaningful only while
+//!   `resp_valid` is high (the data registers take every looked-up line's words), and
+//!   `mem_addr` only while `mem_req` is, identically in the rust-hdl simulation and in the
+//!   Verilog.
 //!
 //! # Latency and throughput (enabled)
 //!
 //! For a request seen (`req` high) in cycle `a` by an idle block ([`model::schedule`] gives
 //! the exact cycles of any stream):
 //!
-//! * it is looked up (in B) in cycle `a + 3` ([`model::LOOKUP_DELAY`]);
-//! * a **hit** is answered (`resp_valid`) in cycle `a + 4` ([`model::HIT_LATENCY`]);
-//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 4`; the host answers in
-//!   cycle `a + 4 + T_c`; the client's response follows in cycle `a + 5 + T_c`
+//! * it is looked up (in S2) in cycle `a + 4` ([`model::LOOKUP_DELAY`]);
+//! * a **hit** is answered (`resp_valid`) in cycle `a + 5` ([`model::HIT_LATENCY`]);
+//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 5`; the host answers in
+//!   cycle `a + 5 + T_c`; the client's response follows in cycle `a + 6 + T_c`
 //!   (`T_c +` [`model::MISS_OVERHEAD`]).
 //!
-//! Request `k` is looked up in cycle `b_k = max(a_k + 3, f_{k−1})`, where `f` is when the
-//! lookup stage is free again: `f_k = b_k + 1` after a hit, `b_k + T_c + 3` after a miss (its
-//! host request goes out in `b_k + 1`, the fill comes in `b_k + 1 + T_c`, the next line is read
-//! again in the cycle after it). So a stream of hits is answered **one per clock**, and each
-//! miss occupies the pipeline for `T_c + 3` cycles. The host sees at most one request
-//! outstanding.
+//! Request `k` is looked up in cycle `b_k = max(a_k + 4, f_{k−1})`, where `f` is when the
+//! lookup stage can next hold a valid request: `f_k = b_k + 1` after a hit, `b_k + T_c + 4`
+//! after a miss ([`model::MISS_RESTART`]: its host request goes out in `b_k + 1`, the fill
+//! comes in `b_k + 1 + T_c`, the next request is issued again in the cycle after it and looked
+//! up two cycles later). So a stream of hits is answered **one per clock**, and each miss
+//! occupies the pipeline for `T_c + 4` cycles (one more than with a one-clock read, the price of
+//! the output registers that take the block RAMs' clock-to-out off the tag compare). The host
+//! sees at most one request outstanding.
 //!
 //! # Model
 //!
@@ -96,7 +105,7 @@
 //! ids in request order. [`model::schedule`] gives the exact lookup, host request and response
 //! cycles from the request cycles, the hit/miss sequence and `T_c`.
 
-use crate::leaf::Bram;
+use crate::leaf::{Bram, BramOut};
 use rust_hdl::prelude::*;
 
 /// Address width of the cache lanes: at most `2^CACHE_BITS` lines.
@@ -113,12 +122,16 @@ pub mod model {
     use super::LINES;
 
     /// Cycles from a request (`req` high) to its lookup, in an idle block.
-    pub const LOOKUP_DELAY: u64 = 3;
+    pub const LOOKUP_DELAY: u64 = 4;
     /// Cycles from a request to its response when it hits, in an idle block.
-    pub const HIT_LATENCY: u64 = 4;
+    pub const HIT_LATENCY: u64 = 5;
     /// Cycles from a request to its response beyond the host's `T_c` when it misses, in an idle
     /// block: the response comes `T_c + MISS_OVERHEAD` cycles after the request.
-    pub const MISS_OVERHEAD: u64 = 5;
+    pub const MISS_OVERHEAD: u64 = 6;
+    /// Cycles from a miss's lookup, beyond the host's `T_c`, to the next lookup: the host
+    /// request (1), the fill, then the next request's read is issued again (1) and takes the
+    /// lanes' two read registers (2).
+    pub const MISS_RESTART: u64 = 4;
 
     /// The mask for `lines` lines (a power of two, 1 … [`LINES`]), or `None`.
     pub fn mask_for(lines: usize) -> Option<u16> {
@@ -199,8 +212,8 @@ pub mod model {
     /// (strictly increasing) and hits when `requests[k].1`; the host answers each request `tc`
     /// cycles after it (it serves only this cache, which keeps at most one request
     /// outstanding). `b_k = max(a_k + LOOKUP_DELAY, f_{k−1})`, `f_k = b_k + 1` after a hit and
-    /// `b_k + tc + 3` after a miss; a hit is answered in `b_k + 1`, a miss requested from the
-    /// host in `b_k + 1` and answered in `b_k + tc + 2`.
+    /// `b_k + tc + MISS_RESTART` after a miss; a hit is answered in `b_k + 1`, a miss requested
+    /// from the host in `b_k + 1` and answered in `b_k + tc + 2`.
     pub fn schedule(requests: &[(u64, bool)], tc: u64) -> Vec<RequestTiming> {
         let mut free = 0u64;
         requests
@@ -211,7 +224,7 @@ pub mod model {
                     free = lookup + 1;
                     RequestTiming { lookup, host_request: None, response: lookup + 1 }
                 } else {
-                    free = lookup + tc + 3;
+                    free = lookup + tc + MISS_RESTART;
                     RequestTiming { lookup, host_request: Some(lookup + 1), response: lookup + tc + 2 }
                 }
             })
@@ -257,18 +270,29 @@ pub struct PatchCache {
     // Counters.
     pub hits: Signal<Out, Bits<32>>,
     pub misses: Signal<Out, Bits<32>>,
-    // Request queue.
+    // Request queue: five-bit pointers (slot = low four bits), so that full and empty differ.
     q_lane: Bram<16, QUEUE_BITS>,
-    wr_ptr: DFF<Bits<4>>,
-    rd_ptr: DFF<Bits<4>>,
-    count: DFF<Bits<5>>,
-    head_valid: DFF<bool>,
-    // Stage B (lookup) and W (a miss waiting for the host; B's registers hold its id).
-    b_valid: DFF<bool>,
-    b_id: DFF<Bits<16>>,
-    b_key: DFF<Bits<17>>,
-    b_line: DFF<Bits<12>>,
+    wr_ptr: DFF<Bits<5>>,
+    /// The oldest request not yet answered.
+    rd_ptr: DFF<Bits<5>>,
+    /// The request whose id is at the queue lane's read register (stage Q).
+    sp: DFF<Bits<5>>,
+    /// That id was written before it was read: Q holds a request.
+    q_valid: DFF<bool>,
+    // Stages S1 and S2 (the lanes' two read registers): valid, id, tag key, line.
+    v1: DFF<bool>,
+    id1: DFF<Bits<16>>,
+    key1: DFF<Bits<17>>,
+    line1: DFF<Bits<12>>,
+    v2: DFF<bool>,
+    id2: DFF<Bits<16>>,
+    key2: DFF<Bits<17>>,
+    line2: DFF<Bits<12>>,
+    // W: a miss waiting for the host, its id, key and line.
     w_valid: DFF<bool>,
+    w_id: DFF<Bits<16>>,
+    w_key: DFF<Bits<17>>,
+    w_line: DFF<Bits<12>>,
     // Flush: on, and the line being cleared.
     fl_on: DFF<bool>,
     fl_line: DFF<Bits<12>>,
@@ -281,25 +305,24 @@ pub struct PatchCache {
     rby: DFF<Bits<17>>,
     hit_count: DFF<Bits<32>>,
     miss_count: DFF<Bits<32>>,
-    // The cache lanes.
-    tag: Bram<17, CACHE_BITS>,
-    lane_ax: Bram<17, CACHE_BITS>,
-    lane_ay: Bram<17, CACHE_BITS>,
-    lane_bx: Bram<17, CACHE_BITS>,
-    lane_by: Bram<17, CACHE_BITS>,
+    // The cache lanes: two-clock registered reads.
+    tag: BramOut<17, CACHE_BITS>,
+    lane_ax: BramOut<17, CACHE_BITS>,
+    lane_ay: BramOut<17, CACHE_BITS>,
+    lane_bx: BramOut<17, CACHE_BITS>,
+    lane_by: BramOut<17, CACHE_BITS>,
     // Combinational.
     push: Signal<Local, bool>,
+    issue: Signal<Local, bool>,
     tag_match: Signal<Local, bool>,
     hit: Signal<Local, bool>,
     miss: Signal<Local, bool>,
     fill: Signal<Local, bool>,
-    advance: Signal<Local, bool>,
-    wr_inc: Signal<Local, Bits<4>>,
-    rd_inc: Signal<Local, Bits<4>>,
-    rd_addr: Signal<Local, Bits<4>>,
-    count_inc: Signal<Local, Bits<5>>,
-    count_dec: Signal<Local, Bits<5>>,
-    count_left: Signal<Local, Bits<5>>,
+    wr_inc: Signal<Local, Bits<5>>,
+    rd_inc: Signal<Local, Bits<5>>,
+    rd_next: Signal<Local, Bits<5>>,
+    sp_inc: Signal<Local, Bits<5>>,
+    read_ptr: Signal<Local, Bits<5>>,
     head_low: Signal<Local, Bits<12>>,
     head_line: Signal<Local, Bits<12>>,
     head_key: Signal<Local, Bits<17>>,
@@ -308,9 +331,7 @@ pub struct PatchCache {
     fl_inc: Signal<Local, Bits<12>>,
     // Constants.
     valid_flag: Constant<Bits<17>>,
-    zero5: Constant<Bits<5>>,
     one5: Constant<Bits<5>>,
-    one4: Constant<Bits<4>>,
     one32: Constant<Bits<32>>,
     one12: Constant<Bits<12>>,
     last_line: Constant<Bits<12>>,
@@ -346,13 +367,20 @@ impl Default for PatchCache {
             q_lane: Default::default(),
             wr_ptr: Default::default(),
             rd_ptr: Default::default(),
-            count: Default::default(),
-            head_valid: Default::default(),
-            b_valid: Default::default(),
-            b_id: Default::default(),
-            b_key: Default::default(),
-            b_line: Default::default(),
+            sp: Default::default(),
+            q_valid: Default::default(),
+            v1: Default::default(),
+            id1: Default::default(),
+            key1: Default::default(),
+            line1: Default::default(),
+            v2: Default::default(),
+            id2: Default::default(),
+            key2: Default::default(),
+            line2: Default::default(),
             w_valid: Default::default(),
+            w_id: Default::default(),
+            w_key: Default::default(),
+            w_line: Default::default(),
             fl_on: Default::default(),
             fl_line: Default::default(),
             mreq: Default::default(),
@@ -369,17 +397,16 @@ impl Default for PatchCache {
             lane_bx: Default::default(),
             lane_by: Default::default(),
             push: Default::default(),
+            issue: Default::default(),
             tag_match: Default::default(),
             hit: Default::default(),
             miss: Default::default(),
             fill: Default::default(),
-            advance: Default::default(),
             wr_inc: Default::default(),
             rd_inc: Default::default(),
-            rd_addr: Default::default(),
-            count_inc: Default::default(),
-            count_dec: Default::default(),
-            count_left: Default::default(),
+            rd_next: Default::default(),
+            sp_inc: Default::default(),
+            read_ptr: Default::default(),
             head_low: Default::default(),
             head_line: Default::default(),
             head_key: Default::default(),
@@ -387,9 +414,7 @@ impl Default for PatchCache {
             miss_inc: Default::default(),
             fl_inc: Default::default(),
             valid_flag: Constant::new(0x1_0000u64.into()),
-            zero5: Constant::new(0.into()),
             one5: Constant::new(1.into()),
-            one4: Constant::new(1.into()),
             one32: Constant::new(1.into()),
             one12: Constant::new(1.into()),
             last_line: Constant::new(((LINES - 1) as u64).into()),
@@ -400,10 +425,9 @@ impl Default for PatchCache {
 }
 
 impl PatchCache {
-    /// Requests in the queue (not yet advanced to the lookup), `0..=QUEUE_DEPTH`: for
-    /// testbenches.
+    /// Requests held in the queue (not yet answered), `0..=QUEUE_DEPTH`: for testbenches.
     pub fn queued(&self) -> usize {
-        self.count.q.val().index()
+        (self.wr_ptr.q.val().index().wrapping_sub(self.rd_ptr.q.val().index())) % (2 * QUEUE_DEPTH)
     }
 
     /// Whether a miss is waiting for the host: for testbenches.
@@ -416,8 +440,8 @@ impl Logic for PatchCache {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, wr_ptr, rd_ptr, count, head_valid, b_valid, b_id, b_key, b_line, w_valid, fl_on,
-            fl_line, mreq, rv, rax, ray, rbx, rby, hit_count, miss_count
+            self, clock, wr_ptr, rd_ptr, sp, q_valid, v1, id1, key1, line1, v2, id2, key2, line2, w_valid,
+            w_id, w_key, w_line, fl_on, fl_line, mreq, rv, rax, ray, rbx, rby, hit_count, miss_count
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -427,49 +451,52 @@ impl Logic for PatchCache {
         self.lane_by.clock.next = self.clock.val();
 
         // Pointer and counter arithmetic, each at its exact width.
-        self.wr_inc.next = self.wr_ptr.q.val() + self.one4.val();
-        self.rd_inc.next = self.rd_ptr.q.val() + self.one4.val();
-        self.count_inc.next = self.count.q.val() + self.one5.val();
-        self.count_dec.next = self.count.q.val() - self.one5.val();
+        self.wr_inc.next = self.wr_ptr.q.val() + self.one5.val();
+        self.rd_inc.next = self.rd_ptr.q.val() + self.one5.val();
+        self.sp_inc.next = self.sp.q.val() + self.one5.val();
         self.hit_inc.next = self.hit_count.q.val() + self.one32.val();
         self.miss_inc.next = self.miss_count.q.val() + self.one32.val();
 
-        // Stage B: the lanes' read registers hold the line of B's id.
-        self.tag_match.next = self.tag.read_data.val() == self.b_key.q.val();
-        self.hit.next = self.b_valid.q.val() & self.tag_match.val();
-        self.miss.next = self.b_valid.q.val() & !self.tag_match.val();
-        // Stage W: the host's answer to the miss.
+        // S2: the lanes' output registers hold the line of S2's id. While a miss waits, every
+        // lookup in flight is void (it is issued again after the fill).
+        self.tag_match.next = self.tag.read_data.val() == self.key2.q.val();
+        self.hit.next = self.v2.q.val() & !self.w_valid.q.val() & self.tag_match.val();
+        self.miss.next = self.v2.q.val() & !self.w_valid.q.val() & !self.tag_match.val();
+        // W: the host's answer to the miss.
         self.fill.next = self.w_valid.q.val() & self.mem_valid.val();
-        // H advances into B when B is empty or hits and no miss is pending (nor filled this
-        // cycle: the lanes were read before the fill's write).
-        self.advance.next = self.head_valid.q.val() & !self.w_valid.q.val() & !self.miss.val();
 
-        // Request queue: push at the tail; read the head after this cycle's pop.
+        // Request queue: push at the tail.
         self.push.next = self.cfg_enable.val() & self.req.val();
-        self.q_lane.write_address.next = self.wr_ptr.q.val();
+        self.q_lane.write_address.next = self.wr_ptr.q.val().get_bits::<4>(0);
         self.q_lane.write_data.next = self.addr.val();
         self.q_lane.write_enable.next = self.push.val();
         if self.push.val() {
             self.wr_ptr.d.next = self.wr_inc.val();
         }
-        self.rd_addr.next = self.rd_ptr.q.val();
-        self.count_left.next = self.count.q.val();
-        if self.advance.val() {
-            self.rd_addr.next = self.rd_inc.val();
-            self.rd_ptr.d.next = self.rd_inc.val();
-            self.count_left.next = self.count_dec.val();
+        // A hit or a fill answers the oldest request.
+        self.rd_next.next = self.rd_ptr.q.val();
+        if self.hit.val() | self.fill.val() {
+            self.rd_next.next = self.rd_inc.val();
         }
-        self.q_lane.read_address.next = self.rd_addr.val();
-        // Valid next cycle when the head was written before this edge (read before write).
-        self.head_valid.d.next = self.count_left.val() != self.zero5.val();
-        if self.push.val() & !self.advance.val() {
-            self.count.d.next = self.count_inc.val();
-        }
-        if !self.push.val() & self.advance.val() {
-            self.count.d.next = self.count_dec.val();
-        }
+        self.rd_ptr.d.next = self.rd_next.val();
 
-        // Stage H: read the head's line in every lane.
+        // Q: issue the request at the queue lane's read register into S1, unless a miss waits;
+        // then read the next one. While a miss waits, read the oldest unanswered request: after
+        // the fill, the lookups start again from it.
+        self.issue.next = self.q_valid.q.val() & !self.w_valid.q.val();
+        self.read_ptr.next = self.sp.q.val();
+        if self.issue.val() {
+            self.read_ptr.next = self.sp_inc.val();
+        }
+        if self.w_valid.q.val() {
+            self.read_ptr.next = self.rd_next.val();
+        }
+        self.sp.d.next = self.read_ptr.val();
+        self.q_lane.read_address.next = self.read_ptr.val().get_bits::<4>(0);
+        // Valid next cycle when that request was written before this edge (read before write).
+        self.q_valid.d.next = self.read_ptr.val() != self.wr_ptr.q.val();
+
+        // Q: read the request's line in every lane.
         self.head_low.next = bit_cast::<12, 16>(self.q_lane.read_data.val());
         self.head_line.next = self.head_low.val() & self.cfg_mask.val();
         self.head_key.next = self.valid_flag.val() | bit_cast::<17, 16>(self.q_lane.read_data.val());
@@ -478,24 +505,31 @@ impl Logic for PatchCache {
         self.lane_ay.read_address.next = self.head_line.val();
         self.lane_bx.read_address.next = self.head_line.val();
         self.lane_by.read_address.next = self.head_line.val();
-        self.b_valid.d.next = self.advance.val();
-        if self.advance.val() {
-            self.b_id.d.next = self.q_lane.read_data.val();
-            self.b_key.d.next = self.head_key.val();
-            self.b_line.d.next = self.head_line.val();
-        }
+        self.v1.d.next = self.issue.val();
+        self.id1.d.next = self.q_lane.read_data.val();
+        self.key1.d.next = self.head_key.val();
+        self.line1.d.next = self.head_line.val();
+        self.v2.d.next = self.v1.q.val() & !self.w_valid.q.val();
+        self.id2.d.next = self.id1.q.val();
+        self.key2.d.next = self.key1.q.val();
+        self.line2.d.next = self.line1.q.val();
 
         // A miss: request the patch (next cycle) and wait for it.
         self.mreq.d.next = self.miss.val();
         self.w_valid.d.next = (self.w_valid.q.val() & !self.mem_valid.val()) | self.miss.val();
+        if !self.w_valid.q.val() {
+            self.w_id.d.next = self.id2.q.val();
+            self.w_key.d.next = self.key2.q.val();
+            self.w_line.d.next = self.line2.q.val();
+        }
 
         // The fill: write the line, tag and data.
-        self.tag.write_address.next = self.b_line.q.val();
-        self.lane_ax.write_address.next = self.b_line.q.val();
-        self.lane_ay.write_address.next = self.b_line.q.val();
-        self.lane_bx.write_address.next = self.b_line.q.val();
-        self.lane_by.write_address.next = self.b_line.q.val();
-        self.tag.write_data.next = self.b_key.q.val();
+        self.tag.write_address.next = self.w_line.q.val();
+        self.lane_ax.write_address.next = self.w_line.q.val();
+        self.lane_ay.write_address.next = self.w_line.q.val();
+        self.lane_bx.write_address.next = self.w_line.q.val();
+        self.lane_by.write_address.next = self.w_line.q.val();
+        self.tag.write_data.next = self.w_key.q.val();
         self.lane_ax.write_data.next = self.mem_ax.val();
         self.lane_ay.write_data.next = self.mem_ay.val();
         self.lane_bx.write_data.next = self.mem_bx.val();
@@ -522,15 +556,17 @@ impl Logic for PatchCache {
         self.lane_bx.write_enable.next = self.fill.val();
         self.lane_by.write_enable.next = self.fill.val();
 
-        // Responses: a hit from the lanes, a fill from the host.
+        // Responses: a hit from the lanes, a fill from the host. The data registers take S2's
+        // words whatever the tag says (fewer loads on the tag compare); they matter only with
+        // `rv`.
         self.rv.d.next = self.hit.val() | self.fill.val();
-        if self.hit.val() {
+        if self.v2.q.val() {
             self.rax.d.next = self.lane_ax.read_data.val();
             self.ray.d.next = self.lane_ay.read_data.val();
             self.rbx.d.next = self.lane_bx.read_data.val();
             self.rby.d.next = self.lane_by.read_data.val();
         }
-        if self.fill.val() {
+        if self.w_valid.q.val() {
             self.rax.d.next = self.mem_ax.val();
             self.ray.d.next = self.mem_ay.val();
             self.rbx.d.next = self.mem_bx.val();
@@ -557,7 +593,7 @@ impl Logic for PatchCache {
         self.resp_by.next = self.mem_by.val();
         if self.cfg_enable.val() {
             self.mem_req.next = self.mreq.q.val();
-            self.mem_addr.next = self.b_id.q.val();
+            self.mem_addr.next = self.w_id.q.val();
             self.resp_valid.next = self.rv.q.val();
             self.resp_ax.next = self.rax.q.val();
             self.resp_ay.next = self.ray.q.val();
@@ -590,16 +626,16 @@ mod tests {
     }
 
     #[test]
-    fn schedule_gives_one_hit_per_clock_and_t_c_plus_3_per_miss() {
+    fn schedule_gives_one_hit_per_clock_and_t_c_plus_4_per_miss() {
         let hits: Vec<(u64, bool)> = (0..5).map(|k| (k, true)).collect();
         let s = schedule(&hits, 8);
-        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [4, 5, 6, 7, 8]);
-        assert_eq!(all_hit_cycles(5), 9);
+        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [5, 6, 7, 8, 9]);
+        assert_eq!(all_hit_cycles(5), 10);
         let s = schedule(&[(0, false), (1, true), (2, false), (30, true)], 8);
-        assert_eq!(s[0], RequestTiming { lookup: 3, host_request: Some(4), response: 13 });
-        assert_eq!(s[1], RequestTiming { lookup: 14, host_request: None, response: 15 });
-        assert_eq!(s[2], RequestTiming { lookup: 15, host_request: Some(16), response: 25 });
-        assert_eq!(s[3], RequestTiming { lookup: 33, host_request: None, response: 34 });
+        assert_eq!(s[0], RequestTiming { lookup: 4, host_request: Some(5), response: 14 });
+        assert_eq!(s[1], RequestTiming { lookup: 16, host_request: None, response: 17 });
+        assert_eq!(s[2], RequestTiming { lookup: 17, host_request: Some(18), response: 27 });
+        assert_eq!(s[3], RequestTiming { lookup: 34, host_request: None, response: 35 });
     }
 
     /// A quick directed run: a miss, hits one per clock, then two ids that evict each other, at

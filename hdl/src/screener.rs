@@ -519,8 +519,8 @@ pub struct Screener {
     norm_e7: DFF<Bits<32>>,
     backward7: DFF<bool>,
     back_facing7: DFF<bool>,
-    ha_pos7: DFF<bool>,
-    hb_pos7: DFF<bool>,
+    ha_open7: DFF<bool>,
+    hb_open7: DFF<bool>,
     s0: Signal<Local, Bits<6>>,
     s0_m1: Signal<Local, Bits<6>>,
     sh: Signal<Local, Bits<6>>,
@@ -834,8 +834,8 @@ impl Default for Screener {
             norm_e7: Default::default(),
             backward7: Default::default(),
             back_facing7: Default::default(),
-            ha_pos7: Default::default(),
-            hb_pos7: Default::default(),
+            ha_open7: Default::default(),
+            hb_open7: Default::default(),
             s0: Default::default(),
             s0_m1: Default::default(),
             sh: Default::default(),
@@ -1042,8 +1042,8 @@ impl Logic for Screener {
             norm_e7,
             backward7,
             back_facing7,
-            ha_pos7,
-            hb_pos7,
+            ha_open7,
+            hb_open7,
             v8,
             id8,
             ax8,
@@ -1337,8 +1337,10 @@ impl Logic for Screener {
         self.norm_e7.d.next = self.ze5.val();
         self.backward7.d.next = self.is_backward.val();
         self.back_facing7.d.next = self.is_back_facing.val();
-        self.ha_pos7.d.next = self.ha_pos.val();
-        self.hb_pos7.d.next = self.hb_pos.val();
+        // The outside screen's gates, with "neither backward nor back-facing" folded in here
+        // (a positive h is not backward), so that stage 7 has one LUT after its comparisons.
+        self.ha_open7.d.next = self.ha_pos.val() & !self.is_back_facing.val();
+        self.hb_open7.d.next = self.hb_pos.val() & !self.is_back_facing.val();
         self.side_f7.d.next = self.side_f.val();
         self.side_l7.d.next = self.side_l.val();
 
@@ -1355,10 +1357,8 @@ impl Logic for Screener {
         }
         self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
         self.side_l_x.next = self.side_l7.q.val() ^ self.msb32.val();
-        self.is_outside.next = !self.backward7.q.val()
-            & !self.back_facing7.q.val()
-            & ((self.hb_pos7.q.val() & (self.side_f_x.val() < self.thr_f.val()))
-                | (self.ha_pos7.q.val() & (self.side_l_x.val() > self.thr_l.val())));
+        self.is_outside.next = (self.hb_open7.q.val() & (self.side_f_x.val() < self.thr_f.val()))
+            | (self.ha_open7.q.val() & (self.side_l_x.val() > self.thr_l.val()));
         self.v8.d.next = self.v7.q.val();
         self.id8.d.next = self.id7.q.val();
         self.ax8.d.next = self.ax7.q.val();

@@ -28,9 +28,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     
     // Constant declarations
     localparam  valid_flag = 17'b10000000000000000;
-    localparam  zero5 = 5'b0;
     localparam  one5 = 5'b1;
-    localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
     localparam  one12 = 12'h1;
     localparam  last_line = 12'hfff;
@@ -44,33 +42,54 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [3:0] q_lane$write_address;
     reg  [15:0] q_lane$write_data;
     reg  q_lane$write_enable;
-    reg  [3:0] wr_ptr$d;
-    wire  [3:0] wr_ptr$q;
+    reg  [4:0] wr_ptr$d;
+    wire  [4:0] wr_ptr$q;
     reg  wr_ptr$clock;
-    reg  [3:0] rd_ptr$d;
-    wire  [3:0] rd_ptr$q;
+    reg  [4:0] rd_ptr$d;
+    wire  [4:0] rd_ptr$q;
     reg  rd_ptr$clock;
-    reg  [4:0] count$d;
-    wire  [4:0] count$q;
-    reg  count$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
-    reg  b_valid$d;
-    wire  b_valid$q;
-    reg  b_valid$clock;
-    reg  [15:0] b_id$d;
-    wire  [15:0] b_id$q;
-    reg  b_id$clock;
-    reg  [16:0] b_key$d;
-    wire  [16:0] b_key$q;
-    reg  b_key$clock;
-    reg  [11:0] b_line$d;
-    wire  [11:0] b_line$q;
-    reg  b_line$clock;
+    reg  [4:0] sp$d;
+    wire  [4:0] sp$q;
+    reg  sp$clock;
+    reg  q_valid$d;
+    wire  q_valid$q;
+    reg  q_valid$clock;
+    reg  v1$d;
+    wire  v1$q;
+    reg  v1$clock;
+    reg  [15:0] id1$d;
+    wire  [15:0] id1$q;
+    reg  id1$clock;
+    reg  [16:0] key1$d;
+    wire  [16:0] key1$q;
+    reg  key1$clock;
+    reg  [11:0] line1$d;
+    wire  [11:0] line1$q;
+    reg  line1$clock;
+    reg  v2$d;
+    wire  v2$q;
+    reg  v2$clock;
+    reg  [15:0] id2$d;
+    wire  [15:0] id2$q;
+    reg  id2$clock;
+    reg  [16:0] key2$d;
+    wire  [16:0] key2$q;
+    reg  key2$clock;
+    reg  [11:0] line2$d;
+    wire  [11:0] line2$q;
+    reg  line2$clock;
     reg  w_valid$d;
     wire  w_valid$q;
     reg  w_valid$clock;
+    reg  [15:0] w_id$d;
+    wire  [15:0] w_id$q;
+    reg  w_id$clock;
+    reg  [16:0] w_key$d;
+    wire  [16:0] w_key$q;
+    reg  w_key$clock;
+    reg  [11:0] w_line$d;
+    wire  [11:0] w_line$q;
+    reg  w_line$clock;
     reg  fl_on$d;
     wire  fl_on$q;
     reg  fl_on$clock;
@@ -134,17 +153,16 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     
     // Local signals
     reg  push;
+    reg  issue;
     reg  tag_match;
     reg  hit;
     reg  miss;
     reg  fill;
-    reg  advance;
-    reg  [3:0] wr_inc;
-    reg  [3:0] rd_inc;
-    reg  [3:0] rd_addr;
-    reg  [4:0] count_inc;
-    reg  [4:0] count_dec;
-    reg  [4:0] count_left;
+    reg  [4:0] wr_inc;
+    reg  [4:0] rd_inc;
+    reg  [4:0] rd_next;
+    reg  [4:0] sp_inc;
+    reg  [4:0] read_ptr;
     reg  [11:0] head_low;
     reg  [11:0] head_line;
     reg  [16:0] head_key;
@@ -171,40 +189,75 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    patch_cache$count count(
-        .d(count$d),
-        .q(count$q),
-        .clock(count$clock)
+    patch_cache$sp sp(
+        .d(sp$d),
+        .q(sp$q),
+        .clock(sp$clock)
     );
-    patch_cache$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
+    patch_cache$q_valid q_valid(
+        .d(q_valid$d),
+        .q(q_valid$q),
+        .clock(q_valid$clock)
     );
-    patch_cache$b_valid b_valid(
-        .d(b_valid$d),
-        .q(b_valid$q),
-        .clock(b_valid$clock)
+    patch_cache$v1 v1(
+        .d(v1$d),
+        .q(v1$q),
+        .clock(v1$clock)
     );
-    patch_cache$b_id b_id(
-        .d(b_id$d),
-        .q(b_id$q),
-        .clock(b_id$clock)
+    patch_cache$id1 id1(
+        .d(id1$d),
+        .q(id1$q),
+        .clock(id1$clock)
     );
-    patch_cache$b_key b_key(
-        .d(b_key$d),
-        .q(b_key$q),
-        .clock(b_key$clock)
+    patch_cache$key1 key1(
+        .d(key1$d),
+        .q(key1$q),
+        .clock(key1$clock)
     );
-    patch_cache$b_line b_line(
-        .d(b_line$d),
-        .q(b_line$q),
-        .clock(b_line$clock)
+    patch_cache$line1 line1(
+        .d(line1$d),
+        .q(line1$q),
+        .clock(line1$clock)
+    );
+    patch_cache$v2 v2(
+        .d(v2$d),
+        .q(v2$q),
+        .clock(v2$clock)
+    );
+    patch_cache$id2 id2(
+        .d(id2$d),
+        .q(id2$q),
+        .clock(id2$clock)
+    );
+    patch_cache$key2 key2(
+        .d(key2$d),
+        .q(key2$q),
+        .clock(key2$clock)
+    );
+    patch_cache$line2 line2(
+        .d(line2$d),
+        .q(line2$q),
+        .clock(line2$clock)
     );
     patch_cache$w_valid w_valid(
         .d(w_valid$d),
         .q(w_valid$q),
         .clock(w_valid$clock)
+    );
+    patch_cache$w_id w_id(
+        .d(w_id$d),
+        .q(w_id$q),
+        .clock(w_id$clock)
+    );
+    patch_cache$w_key w_key(
+        .d(w_key$d),
+        .q(w_key$q),
+        .clock(w_key$clock)
+    );
+    patch_cache$w_line w_line(
+        .d(w_line$d),
+        .q(w_line$q),
+        .clock(w_line$clock)
     );
     patch_cache$fl_on fl_on(
         .d(fl_on$d),
@@ -301,13 +354,20 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     always @(*) begin
         wr_ptr$clock = clock;
         rd_ptr$clock = clock;
-        count$clock = clock;
-        head_valid$clock = clock;
-        b_valid$clock = clock;
-        b_id$clock = clock;
-        b_key$clock = clock;
-        b_line$clock = clock;
+        sp$clock = clock;
+        q_valid$clock = clock;
+        v1$clock = clock;
+        id1$clock = clock;
+        key1$clock = clock;
+        line1$clock = clock;
+        v2$clock = clock;
+        id2$clock = clock;
+        key2$clock = clock;
+        line2$clock = clock;
         w_valid$clock = clock;
+        w_id$clock = clock;
+        w_key$clock = clock;
+        w_line$clock = clock;
         fl_on$clock = clock;
         fl_line$clock = clock;
         mreq$clock = clock;
@@ -320,13 +380,20 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         miss_count$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
-        count$d = count$q;
-        head_valid$d = head_valid$q;
-        b_valid$d = b_valid$q;
-        b_id$d = b_id$q;
-        b_key$d = b_key$q;
-        b_line$d = b_line$q;
+        sp$d = sp$q;
+        q_valid$d = q_valid$q;
+        v1$d = v1$q;
+        id1$d = id1$q;
+        key1$d = key1$q;
+        line1$d = line1$q;
+        v2$d = v2$q;
+        id2$d = id2$q;
+        key2$d = key2$q;
+        line2$d = line2$q;
         w_valid$d = w_valid$q;
+        w_id$d = w_id$q;
+        w_key$d = w_key$q;
+        w_line$d = w_line$q;
         fl_on$d = fl_on$q;
         fl_line$d = fl_line$q;
         mreq$d = mreq$q;
@@ -343,39 +410,38 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         lane_ay$clock = clock;
         lane_bx$clock = clock;
         lane_by$clock = clock;
-        wr_inc = wr_ptr$q + one4;
-        rd_inc = rd_ptr$q + one4;
-        count_inc = count$q + one5;
-        count_dec = count$q - one5;
+        wr_inc = wr_ptr$q + one5;
+        rd_inc = rd_ptr$q + one5;
+        sp_inc = sp$q + one5;
         hit_inc = hit_count$q + one32;
         miss_inc = miss_count$q + one32;
-        tag_match = tag$read_data == b_key$q;
-        hit = b_valid$q & tag_match;
-        miss = b_valid$q & ~tag_match;
+        tag_match = tag$read_data == key2$q;
+        hit = v2$q & ~w_valid$q & tag_match;
+        miss = v2$q & ~w_valid$q & ~tag_match;
         fill = w_valid$q & mem_valid;
-        advance = head_valid$q & ~w_valid$q & ~miss;
         push = cfg_enable & req;
-        q_lane$write_address = wr_ptr$q;
+        q_lane$write_address = wr_ptr$q[(32'h0)+:(4)];
         q_lane$write_data = addr;
         q_lane$write_enable = push;
         if (push) begin
             wr_ptr$d = wr_inc;
         end
-        rd_addr = rd_ptr$q;
-        count_left = count$q;
-        if (advance) begin
-            rd_addr = rd_inc;
-            rd_ptr$d = rd_inc;
-            count_left = count_dec;
+        rd_next = rd_ptr$q;
+        if (hit | fill) begin
+            rd_next = rd_inc;
         end
-        q_lane$read_address = rd_addr;
-        head_valid$d = count_left != zero5;
-        if (push & ~advance) begin
-            count$d = count_inc;
+        rd_ptr$d = rd_next;
+        issue = q_valid$q & ~w_valid$q;
+        read_ptr = sp$q;
+        if (issue) begin
+            read_ptr = sp_inc;
         end
-        if (~push & advance) begin
-            count$d = count_dec;
+        if (w_valid$q) begin
+            read_ptr = rd_next;
         end
+        sp$d = read_ptr;
+        q_lane$read_address = read_ptr[(32'h0)+:(4)];
+        q_valid$d = read_ptr != wr_ptr$q;
         head_low = ((q_lane$read_data) & 12'hfff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
@@ -384,20 +450,27 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         lane_ay$read_address = head_line;
         lane_bx$read_address = head_line;
         lane_by$read_address = head_line;
-        b_valid$d = advance;
-        if (advance) begin
-            b_id$d = q_lane$read_data;
-            b_key$d = head_key;
-            b_line$d = head_line;
-        end
+        v1$d = issue;
+        id1$d = q_lane$read_data;
+        key1$d = head_key;
+        line1$d = head_line;
+        v2$d = v1$q & ~w_valid$q;
+        id2$d = id1$q;
+        key2$d = key1$q;
+        line2$d = line1$q;
         mreq$d = miss;
         w_valid$d = (w_valid$q & ~mem_valid) | miss;
-        tag$write_address = b_line$q;
-        lane_ax$write_address = b_line$q;
-        lane_ay$write_address = b_line$q;
-        lane_bx$write_address = b_line$q;
-        lane_by$write_address = b_line$q;
-        tag$write_data = b_key$q;
+        if (~w_valid$q) begin
+            w_id$d = id2$q;
+            w_key$d = key2$q;
+            w_line$d = line2$q;
+        end
+        tag$write_address = w_line$q;
+        lane_ax$write_address = w_line$q;
+        lane_ay$write_address = w_line$q;
+        lane_bx$write_address = w_line$q;
+        lane_by$write_address = w_line$q;
+        tag$write_data = w_key$q;
         lane_ax$write_data = mem_ax;
         lane_ay$write_data = mem_ay;
         lane_bx$write_data = mem_bx;
@@ -423,13 +496,13 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         lane_bx$write_enable = fill;
         lane_by$write_enable = fill;
         rv$d = hit | fill;
-        if (hit) begin
+        if (v2$q) begin
             rax$d = lane_ax$read_data;
             ray$d = lane_ay$read_data;
             rbx$d = lane_bx$read_data;
             rby$d = lane_by$read_data;
         end
-        if (fill) begin
+        if (w_valid$q) begin
             rax$d = mem_ax;
             ray$d = mem_ay;
             rbx$d = mem_bx;
@@ -452,7 +525,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         resp_by = mem_by;
         if (cfg_enable) begin
             mem_req = mreq$q;
-            mem_addr = b_id$q;
+            mem_addr = w_id$q;
             resp_valid = rv$q;
             resp_ax = rax$q;
             resp_ay = ray$q;
@@ -462,101 +535,6 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     end
     
 endmodule // patch_cache
-
-
-module patch_cache$b_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$b_id
-
-
-module patch_cache$b_key(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$b_key
-
-
-module patch_cache$b_line(d,q,clock);
-    
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$b_line
-
-
-module patch_cache$b_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$b_valid
-
-
-module patch_cache$count(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$count
 
 
 module patch_cache$fl_line(d,q,clock);
@@ -597,25 +575,6 @@ module patch_cache$fl_on(d,q,clock);
 endmodule // patch_cache$fl_on
 
 
-module patch_cache$head_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$head_valid
-
-
 module patch_cache$hit_count(d,q,clock);
     
     // Module arguments
@@ -635,6 +594,82 @@ module patch_cache$hit_count(d,q,clock);
 endmodule // patch_cache$hit_count
 
 
+module patch_cache$id1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$id1
+
+
+module patch_cache$id2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$id2
+
+
+module patch_cache$key1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$key1
+
+
+module patch_cache$key2(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$key2
+
+
 module patch_cache$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
@@ -646,18 +681,300 @@ module patch_cache$lane_ax(clock,read_address,read_data,write_address,write_data
     input wire  write_enable;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [19:0] bo_rd;
+    wire [19:0] bo_wd = {3'd0, write_data};
+    wire [11:0] bo_ra = read_address;
+    wire [11:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
+       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
+       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
+       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
+       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
+       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
+       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
+       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
+       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
+       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
+       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
+       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
+       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
     reg [16:0] mem [0:4095];
+    reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    `endif
 endmodule // patch_cache$lane_ax
 
 
@@ -672,18 +989,300 @@ module patch_cache$lane_ay(clock,read_address,read_data,write_address,write_data
     input wire  write_enable;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [19:0] bo_rd;
+    wire [19:0] bo_wd = {3'd0, write_data};
+    wire [11:0] bo_ra = read_address;
+    wire [11:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
+       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
+       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
+       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
+       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
+       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
+       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
+       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
+       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
+       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
+       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
+       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
+       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
     reg [16:0] mem [0:4095];
+    reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    `endif
 endmodule // patch_cache$lane_ay
 
 
@@ -698,18 +1297,300 @@ module patch_cache$lane_bx(clock,read_address,read_data,write_address,write_data
     input wire  write_enable;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [19:0] bo_rd;
+    wire [19:0] bo_wd = {3'd0, write_data};
+    wire [11:0] bo_ra = read_address;
+    wire [11:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
+       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
+       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
+       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
+       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
+       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
+       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
+       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
+       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
+       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
+       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
+       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
+       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
     reg [16:0] mem [0:4095];
+    reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    `endif
 endmodule // patch_cache$lane_bx
 
 
@@ -724,19 +1605,339 @@ module patch_cache$lane_by(clock,read_address,read_data,write_address,write_data
     input wire  write_enable;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [19:0] bo_rd;
+    wire [19:0] bo_wd = {3'd0, write_data};
+    wire [11:0] bo_ra = read_address;
+    wire [11:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
+       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
+       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
+       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
+       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
+       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
+       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
+       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
+       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
+       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
+       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
+       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
+       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
     reg [16:0] mem [0:4095];
+    reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    `endif
 endmodule // patch_cache$lane_by
+
+
+module patch_cache$line1(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$line1
+
+
+module patch_cache$line2(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$line2
 
 
 module patch_cache$miss_count(d,q,clock);
@@ -801,6 +2002,25 @@ module patch_cache$q_lane(clock,read_address,read_data,write_address,write_data,
        end
     end
 endmodule // patch_cache$q_lane
+
+
+module patch_cache$q_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$q_valid
 
 
 module patch_cache$rax(d,q,clock);
@@ -882,13 +2102,13 @@ endmodule // patch_cache$rby
 module patch_cache$rd_ptr(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 4'h0;
+       q = 5'h0;
     end
     
     always @(posedge clock) begin
@@ -917,6 +2137,25 @@ module patch_cache$rv(d,q,clock);
 endmodule // patch_cache$rv
 
 
+module patch_cache$sp(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$sp
+
+
 module patch_cache$tag(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
@@ -928,19 +2167,396 @@ module patch_cache$tag(clock,read_address,read_data,write_address,write_data,wri
     input wire  write_enable;
     
     // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [19:0] bo_rd;
+    wire [19:0] bo_wd = {3'd0, write_data};
+    wire [11:0] bo_ra = read_address;
+    wire [11:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
+       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
+       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
+       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
+       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
+       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
+       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
+       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
+       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
+       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(bo_wa[0]),
+       .ADA3(bo_wa[1]),
+       .ADA4(bo_wa[2]),
+       .ADA5(bo_wa[3]),
+       .ADA6(bo_wa[4]),
+       .ADA7(bo_wa[5]),
+       .ADA8(bo_wa[6]),
+       .ADA9(bo_wa[7]),
+       .ADA10(bo_wa[8]),
+       .ADA11(bo_wa[9]),
+       .ADA12(bo_wa[10]),
+       .ADA13(bo_wa[11]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(bo_ra[0]),
+       .ADB3(bo_ra[1]),
+       .ADB4(bo_ra[2]),
+       .ADB5(bo_ra[3]),
+       .ADB6(bo_ra[4]),
+       .ADB7(bo_ra[5]),
+       .ADB8(bo_ra[6]),
+       .ADB9(bo_ra[7]),
+       .ADB10(bo_ra[8]),
+       .ADB11(bo_ra[9]),
+       .ADB12(bo_ra[10]),
+       .ADB13(bo_ra[11]),
+       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
+       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
+       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
+       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
+       .DIA4(1'b0),
+       .DIA5(1'b0),
+       .DIA6(1'b0),
+       .DIA7(1'b0),
+       .DIA8(1'b0),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
     reg [16:0] mem [0:4095];
+    reg [16:0] r1;
+    reg collided;
     integer i;
     initial begin
        for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
        read_data = 17'd0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    `endif
 endmodule // patch_cache$tag
+
+
+module patch_cache$v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$v1
+
+
+module patch_cache$v2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$v2
+
+
+module patch_cache$w_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$w_id
+
+
+module patch_cache$w_key(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$w_key
+
+
+module patch_cache$w_line(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$w_line
 
 
 module patch_cache$w_valid(d,q,clock);
@@ -965,13 +2581,13 @@ endmodule // patch_cache$w_valid
 module patch_cache$wr_ptr(d,q,clock);
     
     // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
+    input wire  [4:0] d;
+    output reg  [4:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 4'h0;
+       q = 5'h0;
     end
     
     always @(posedge clock) begin

@@ -484,12 +484,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  back_facing7$d;
     wire  back_facing7$q;
     reg  back_facing7$clock;
-    reg  ha_pos7$d;
-    wire  ha_pos7$q;
-    reg  ha_pos7$clock;
-    reg  hb_pos7$d;
-    wire  hb_pos7$q;
-    reg  hb_pos7$clock;
+    reg  ha_open7$d;
+    wire  ha_open7$q;
+    reg  ha_open7$clock;
+    reg  hb_open7$d;
+    wire  hb_open7$q;
+    reg  hb_open7$clock;
     reg  v8$d;
     wire  v8$q;
     reg  v8$clock;
@@ -1312,15 +1312,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(back_facing7$q),
         .clock(back_facing7$clock)
     );
-    screener$ha_pos7 ha_pos7(
-        .d(ha_pos7$d),
-        .q(ha_pos7$q),
-        .clock(ha_pos7$clock)
+    screener$ha_open7 ha_open7(
+        .d(ha_open7$d),
+        .q(ha_open7$q),
+        .clock(ha_open7$clock)
     );
-    screener$hb_pos7 hb_pos7(
-        .d(hb_pos7$d),
-        .q(hb_pos7$q),
-        .clock(hb_pos7$clock)
+    screener$hb_open7 hb_open7(
+        .d(hb_open7$d),
+        .q(hb_open7$q),
+        .clock(hb_open7$clock)
     );
     screener$v8 v8(
         .d(v8$d),
@@ -1544,8 +1544,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         norm_e7$clock = clock;
         backward7$clock = clock;
         back_facing7$clock = clock;
-        ha_pos7$clock = clock;
-        hb_pos7$clock = clock;
+        ha_open7$clock = clock;
+        hb_open7$clock = clock;
         v8$clock = clock;
         id8$clock = clock;
         ax8$clock = clock;
@@ -1673,8 +1673,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         norm_e7$d = norm_e7$q;
         backward7$d = backward7$q;
         back_facing7$d = back_facing7$q;
-        ha_pos7$d = ha_pos7$q;
-        hb_pos7$d = hb_pos7$q;
+        ha_open7$d = ha_open7$q;
+        hb_open7$d = hb_open7$q;
         v8$d = v8$q;
         id8$d = id8$q;
         ax8$d = ax8$q;
@@ -1937,8 +1937,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         norm_e7$d = ze5;
         backward7$d = is_backward;
         back_facing7$d = is_back_facing;
-        ha_pos7$d = ha_pos;
-        hb_pos7$d = hb_pos;
+        ha_open7$d = ha_pos & ~is_back_facing;
+        hb_open7$d = hb_pos & ~is_back_facing;
         side_f7$d = side_f;
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
@@ -1949,7 +1949,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         end
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        is_outside = ~backward7$q & ~back_facing7$q & ((hb_pos7$q & (side_f_x < thr_f)) | (ha_pos7$q & (side_l_x > thr_l)));
+        is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -3440,7 +3440,7 @@ module screener$ha6(d,q,clock);
 endmodule // screener$ha6
 
 
-module screener$ha_pos7(d,q,clock);
+module screener$ha_open7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3456,7 +3456,7 @@ module screener$ha_pos7(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$ha_pos7
+endmodule // screener$ha_open7
 
 
 module screener$hb6(d,q,clock);
@@ -3478,7 +3478,7 @@ module screener$hb6(d,q,clock);
 endmodule // screener$hb6
 
 
-module screener$hb_pos7(d,q,clock);
+module screener$hb_open7(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3494,7 +3494,7 @@ module screener$hb_pos7(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$hb_pos7
+endmodule // screener$hb_open7
 
 
 module screener$head_valid(d,q,clock);
