@@ -488,8 +488,13 @@ impl Logic for PatchCache {
         if self.issue.val() {
             self.read_ptr.next = self.sp_inc.val();
         }
+        // (rd_next without the hit term: no hit while a miss waits. The tag compare must not
+        // reach the queue's pointers.)
         if self.w_valid.q.val() {
-            self.read_ptr.next = self.rd_next.val();
+            self.read_ptr.next = self.rd_ptr.q.val();
+            if self.mem_valid.val() {
+                self.read_ptr.next = self.rd_inc.val();
+            }
         }
         self.sp.d.next = self.read_ptr.val();
         self.q_lane.read_address.next = self.read_ptr.val().get_bits::<4>(0);

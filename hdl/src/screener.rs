@@ -1350,7 +1350,8 @@ impl Logic for Screener {
         // near. The outside-the-sector screen: signed comparisons with the margin as unsigned
         // ones on the sign-flipped values.
         self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
-        self.s0_m1.next = self.s0.val() - self.one6.val();
+        // s0 − 1 = clz_n + !clz_e (mod 64): one adder from the registers, beside s0's.
+        self.s0_m1.next = self.clz_n7.q.val() + !self.clz_e7.q.val();
         self.sh.next = self.s0_m1.val();
         if self.norm_n7.q.val() < self.norm_e7.q.val() {
             self.sh.next = self.s0.val();

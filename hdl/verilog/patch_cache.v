@@ -437,7 +437,10 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
             read_ptr = sp_inc;
         end
         if (w_valid$q) begin
-            read_ptr = rd_next;
+            read_ptr = rd_ptr$q;
+            if (mem_valid) begin
+                read_ptr = rd_inc;
+            end
         end
         sp$d = read_ptr;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];

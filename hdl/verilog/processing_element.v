@@ -886,7 +886,10 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
             read_ptr = sp_inc;
         end
         if (w_valid$q) begin
-            read_ptr = rd_next;
+            read_ptr = rd_ptr$q;
+            if (mem_valid) begin
+                read_ptr = rd_inc;
+            end
         end
         sp$d = read_ptr;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
@@ -5617,7 +5620,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         side_f7$d = side_f;
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
-        s0_m1 = s0 - one6;
+        s0_m1 = clz_n7$q + ~clz_e7$q;
         sh = s0_m1;
         if (norm_n7$q < norm_e7$q) begin
             sh = s0;

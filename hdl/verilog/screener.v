@@ -1942,7 +1942,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         side_f7$d = side_f;
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
-        s0_m1 = s0 - one6;
+        s0_m1 = clz_n7$q + ~clz_e7$q;
         sh = s0_m1;
         if (norm_n7$q < norm_e7$q) begin
             sh = s0;
