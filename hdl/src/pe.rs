@@ -146,12 +146,18 @@ pub struct ProcessingElement {
     unit: IntersectionUnit,
     // The tag FIFO.
     tags: Bram<TAG_WIDTH, TAG_BITS>,
+    /// A copy of `tags` (the same writes) that always reads the entry after the head.
+    tags_next: Bram<TAG_WIDTH, TAG_BITS>,
+    /// The head was popped in the last cycle: the head is at `tags_next`'s read register.
+    popped: DFF<bool>,
     wr_ptr: DFF<Bits<TAG_BITS>>,
     rd_ptr: DFF<Bits<TAG_BITS>>,
     tag_count: DFF<Bits<7>>,
     head_valid: DFF<bool>,
     accept: Signal<Local, bool>,
     pop: Signal<Local, bool>,
+    head_tag: Signal<Local, Bits<TAG_WIDTH>>,
+    rd_inc: Signal<Local, Bits<TAG_BITS>>,
     head_retire: Signal<Local, bool>,
     head_first: Signal<Local, Bits<10>>,
     head_count: Signal<Local, Bits<11>>,
@@ -215,12 +221,16 @@ impl Default for ProcessingElement {
             screener: Default::default(),
             unit: Default::default(),
             tags: Default::default(),
+            tags_next: Default::default(),
+            popped: Default::default(),
             wr_ptr: Default::default(),
             rd_ptr: Default::default(),
             tag_count: Default::default(),
             head_valid: Default::default(),
             accept: Default::default(),
             pop: Default::default(),
+            head_tag: Default::default(),
+            rd_inc: Default::default(),
             head_retire: Default::default(),
             head_first: Default::default(),
             head_count: Default::default(),
@@ -237,12 +247,13 @@ impl Default for ProcessingElement {
 impl Logic for ProcessingElement {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid);
+        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid, popped);
         self.loader.clock.next = self.clock.val();
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
         self.unit.clock.next = self.clock.val();
         self.tags.clock.next = self.clock.val();
+        self.tags_next.clock.next = self.clock.val();
 
         // Rays and readout: straight to the intersection unit.
         self.unit.dir_we.next = self.dir_we.val();
@@ -279,6 +290,9 @@ impl Logic for ProcessingElement {
         self.tags.write_address.next = self.wr_ptr.q.val();
         self.tags.write_data.next = self.new_tag.val();
         self.tags.write_enable.next = self.accept.val();
+        self.tags_next.write_address.next = self.wr_ptr.q.val();
+        self.tags_next.write_data.next = self.new_tag.val();
+        self.tags_next.write_enable.next = self.accept.val();
         if self.accept.val() {
             self.wr_ptr.d.next = self.wr_ptr.q.val() + self.one_ptr.val();
         }
@@ -312,9 +326,13 @@ impl Logic for ProcessingElement {
         self.screener.in_by.next = self.loader.out_by.val();
 
         // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job).
-        self.head_retire.next = self.tags.read_data.val().get_bit(21);
-        self.head_first.next = self.tags.read_data.val().get_bits::<10>(11);
-        self.head_count.next = self.tags.read_data.val().get_bits::<11>(0);
+        self.head_tag.next = self.tags.read_data.val();
+        if self.popped.q.val() {
+            self.head_tag.next = self.tags_next.read_data.val();
+        }
+        self.head_retire.next = self.head_tag.val().get_bit(21);
+        self.head_first.next = self.head_tag.val().get_bits::<10>(11);
+        self.head_count.next = self.head_tag.val().get_bits::<11>(0);
         self.unit.patch_id.next = self.screener.out_id.val();
         self.unit.patch_ax.next = self.screener.out_ax.val();
         self.unit.patch_ay.next = self.screener.out_ay.val();
@@ -345,13 +363,17 @@ impl Logic for ProcessingElement {
             }
         }
 
-        // The tag FIFO's read side: the head is read into the RAM's register every cycle at the
-        // address it will have after this cycle's pop. It is valid there next cycle when an entry
-        // written before this cycle remains (the RAM reads before it writes).
+        // The tag FIFO's read side: every cycle `tags` reads the entry at the read pointer
+        // and `tags_next` the one after it; after a pop the head is `tags_next`'s word, else
+        // `tags`'s (so no RAM address depends on this cycle's pop, which depends on the unit's
+        // `patch_ready`). The head is valid next cycle when an entry written before this cycle
+        // remains (the RAMs read before they write).
+        self.rd_inc.next = self.rd_ptr.q.val() + self.one_ptr.val();
         self.tags.read_address.next = self.rd_ptr.q.val();
+        self.tags_next.read_address.next = self.rd_inc.val();
+        self.popped.d.next = self.pop.val();
         if self.pop.val() {
-            self.rd_ptr.d.next = self.rd_ptr.q.val() + self.one_ptr.val();
-            self.tags.read_address.next = self.rd_ptr.q.val() + self.one_ptr.val();
+            self.rd_ptr.d.next = self.rd_inc.val();
         }
         self.head_valid.d.next = self.tag_count.q.val() > self.zero7.val();
         if self.pop.val() {

@@ -160,6 +160,15 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [5:0] tags$write_address;
     reg  [21:0] tags$write_data;
     reg  tags$write_enable;
+    reg  tags_next$clock;
+    reg  [5:0] tags_next$read_address;
+    wire  [21:0] tags_next$read_data;
+    reg  [5:0] tags_next$write_address;
+    reg  [21:0] tags_next$write_data;
+    reg  tags_next$write_enable;
+    reg  popped$d;
+    wire  popped$q;
+    reg  popped$clock;
     reg  [5:0] wr_ptr$d;
     wire  [5:0] wr_ptr$q;
     reg  wr_ptr$clock;
@@ -176,6 +185,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     // Local signals
     reg  accept;
     reg  pop;
+    reg  [21:0] head_tag;
+    reg  [5:0] rd_inc;
     reg  head_retire;
     reg  [9:0] head_first;
     reg  [10:0] head_count;
@@ -295,6 +306,19 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .write_data(tags$write_data),
         .write_enable(tags$write_enable)
     );
+    processing_element$tags_next tags_next(
+        .clock(tags_next$clock),
+        .read_address(tags_next$read_address),
+        .read_data(tags_next$read_data),
+        .write_address(tags_next$write_address),
+        .write_data(tags_next$write_data),
+        .write_enable(tags_next$write_enable)
+    );
+    processing_element$popped popped(
+        .d(popped$d),
+        .q(popped$q),
+        .clock(popped$clock)
+    );
     processing_element$wr_ptr wr_ptr(
         .d(wr_ptr$d),
         .q(wr_ptr$q),
@@ -322,15 +346,18 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         rd_ptr$clock = clock;
         tag_count$clock = clock;
         head_valid$clock = clock;
+        popped$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         tag_count$d = tag_count$q;
         head_valid$d = head_valid$q;
+        popped$d = popped$q;
         loader$clock = clock;
         cache$clock = clock;
         screener$clock = clock;
         unit$clock = clock;
         tags$clock = clock;
+        tags_next$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -359,6 +386,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         tags$write_address = wr_ptr$q;
         tags$write_data = new_tag;
         tags$write_enable = accept;
+        tags_next$write_address = wr_ptr$q;
+        tags_next$write_data = new_tag;
+        tags_next$write_enable = accept;
         if (accept) begin
             wr_ptr$d = wr_ptr$q + one_ptr;
         end
@@ -386,9 +416,13 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         screener$in_ay = loader$out_ay;
         screener$in_bx = loader$out_bx;
         screener$in_by = loader$out_by;
-        head_retire = tags$read_data[32'h15];
-        head_first = tags$read_data[(32'hb)+:(10)];
-        head_count = tags$read_data[(32'h0)+:(11)];
+        head_tag = tags$read_data;
+        if (popped$q) begin
+            head_tag = tags_next$read_data;
+        end
+        head_retire = head_tag[32'h15];
+        head_first = head_tag[(32'hb)+:(10)];
+        head_count = head_tag[(32'h0)+:(11)];
         unit$patch_id = screener$out_id;
         unit$patch_ax = screener$out_ax;
         unit$patch_ay = screener$out_ay;
@@ -420,10 +454,12 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
                 end
             end
         end
+        rd_inc = rd_ptr$q + one_ptr;
         tags$read_address = rd_ptr$q;
+        tags_next$read_address = rd_inc;
+        popped$d = pop;
         if (pop) begin
-            rd_ptr$d = rd_ptr$q + one_ptr;
-            tags$read_address = rd_ptr$q + one_ptr;
+            rd_ptr$d = rd_inc;
         end
         head_valid$d = tag_count$q > zero7;
         if (pop) begin
@@ -3658,6 +3694,25 @@ module processing_element$loader$resp_ptr(d,q,clock);
     end
           
 endmodule // processing_element$loader$resp_ptr
+
+
+module processing_element$popped(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$popped
 
 
 module processing_element$rd_ptr(d,q,clock);
@@ -9485,6 +9540,32 @@ module processing_element$tags(clock,read_address,read_data,write_address,write_
        end
     end
 endmodule // processing_element$tags
+
+
+module processing_element$tags_next(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [5:0] read_address;
+    output reg  [21:0] read_data;
+    input wire  [5:0] write_address;
+    input wire  [21:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    reg [21:0] mem [0:63];
+    integer i;
+    initial begin
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
+       read_data = 22'd0;
+    end
+    always @(posedge clock) begin
+       read_data <= mem[read_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+endmodule // processing_element$tags_next
 
 
 module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
