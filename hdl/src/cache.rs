@@ -15,7 +15,7 @@
 //! | `resp_valid`, `resp_ax`, `resp_ay`, `resp_bx`, `resp_by` | out | 1, 4 × 17 | loader side: response |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host side: request, one clock pulse per miss |
 //! | `mem_valid`, `mem_ax`, `mem_ay`, `mem_bx`, `mem_by` | in | 1, 4 × 17 | host side: response |
-//! | `hits`, `misses` | out | 32, 32 | lookups that hit / missed so far, wrap at 2³² |
+//! | `hits`, `misses` | out | 32, 32 | lookups that hit / missed so far (counted from the cycle after the lookup, with the response or the host request), wrap at 2³² |
 //!
 //! Both sides speak the protocol of the patch loader's memory port ([`crate::loader`], "The
 //! memory port"): one request pulse per patch, exactly one response per request, in request
@@ -305,6 +305,8 @@ pub struct PatchCache {
     rby: DFF<Bits<17>>,
     hit_count: DFF<Bits<32>>,
     miss_count: DFF<Bits<32>>,
+    /// A hit in the last cycle: counted a cycle after the lookup, off the tag compare's path.
+    hit_r: DFF<bool>,
     // The cache lanes: two-clock registered reads.
     tag: BramOut<17, CACHE_BITS>,
     lane_ax: BramOut<17, CACHE_BITS>,
@@ -391,6 +393,7 @@ impl Default for PatchCache {
             rby: Default::default(),
             hit_count: Default::default(),
             miss_count: Default::default(),
+            hit_r: Default::default(),
             tag: Default::default(),
             lane_ax: Default::default(),
             lane_ay: Default::default(),
@@ -441,7 +444,7 @@ impl Logic for PatchCache {
     fn update(&mut self) {
         dff_setup!(
             self, clock, wr_ptr, rd_ptr, sp, q_valid, v1, id1, key1, line1, v2, id2, key2, line2, w_valid,
-            w_id, w_key, w_line, fl_on, fl_line, mreq, rv, rax, ray, rbx, rby, hit_count, miss_count
+            w_id, w_key, w_line, fl_on, fl_line, mreq, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -578,11 +581,12 @@ impl Logic for PatchCache {
             self.rby.d.next = self.mem_by.val();
         }
 
-        // Counters.
-        if self.hit.val() {
+        // Counters, a cycle after the lookup (a miss's host request is that cycle's `mreq`).
+        self.hit_r.d.next = self.hit.val();
+        if self.hit_r.q.val() {
             self.hit_count.d.next = self.hit_inc.val();
         }
-        if self.miss.val() {
+        if self.mreq.q.val() {
             self.miss_count.d.next = self.miss_inc.val();
         }
         self.hits.next = self.hit_count.q.val();

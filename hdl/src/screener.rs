@@ -475,6 +475,9 @@ pub struct Screener {
     negx6: DFF<bool>,
     negy6: DFF<bool>,
     k6: DFF<Bits<32>>,
+    /// `k6 ≤ 0` (signed), from stage 5's register: the back-facing test without a 32-bit
+    /// compare in stage 6.
+    k_nonpos6: DFF<bool>,
     ha6: DFF<Bits<32>>,
     hb6: DFF<Bits<32>>,
     p_fby6: DFF<Bits<32>>,
@@ -791,6 +794,7 @@ impl Default for Screener {
             negx6: Default::default(),
             negy6: Default::default(),
             k6: Default::default(),
+            k_nonpos6: Default::default(),
             ha6: Default::default(),
             hb6: Default::default(),
             p_fby6: Default::default(),
@@ -1013,6 +1017,7 @@ impl Logic for Screener {
             negx6,
             negy6,
             k6,
+            k_nonpos6,
             ha6,
             hb6,
             p_fby6,
@@ -1284,6 +1289,7 @@ impl Logic for Screener {
         self.negx6.d.next = self.negx5.q.val();
         self.negy6.d.next = self.negy5.q.val();
         self.k6.d.next = self.k5.q.val();
+        self.k_nonpos6.d.next = self.k5.q.val().get_bit(31) | (self.k5.q.val() == self.zero32.val());
         self.ha6.d.next = self.ha.val();
         self.hb6.d.next = self.hb.val();
         self.clz_n6.d.next = self.clz_n5.q.val();
@@ -1316,8 +1322,7 @@ impl Logic for Screener {
         self.ha_pos.next = !self.ha6.q.val().get_bit(31) & (self.ha6.q.val() != self.zero32.val());
         self.hb_pos.next = !self.hb6.q.val().get_bit(31) & (self.hb6.q.val() != self.zero32.val());
         self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
-        self.is_back_facing.next =
-            !self.is_backward.val() & (self.k6.q.val().get_bit(31) | (self.k6.q.val() == self.zero32.val()));
+        self.is_back_facing.next = !self.is_backward.val() & self.k_nonpos6.q.val();
         self.side_f.next = self.p_fby6.q.val() - self.p_fbx6.q.val();
         self.side_l.next = self.p_lay6.q.val() - self.p_lax6.q.val();
         self.v7.d.next = self.v6.q.val();
@@ -1338,9 +1343,10 @@ impl Logic for Screener {
         self.backward7.d.next = self.is_backward.val();
         self.back_facing7.d.next = self.is_back_facing.val();
         // The outside screen's gates, with "neither backward nor back-facing" folded in here
-        // (a positive h is not backward), so that stage 7 has one LUT after its comparisons.
-        self.ha_open7.d.next = self.ha_pos.val() & !self.is_back_facing.val();
-        self.hb_open7.d.next = self.hb_pos.val() & !self.is_back_facing.val();
+        // (a positive h is not backward, so then back-facing is k ≤ 0), so that stage 7 has one
+        // LUT after its comparisons.
+        self.ha_open7.d.next = self.ha_pos.val() & !self.k_nonpos6.q.val();
+        self.hb_open7.d.next = self.hb_pos.val() & !self.k_nonpos6.q.val();
         self.side_f7.d.next = self.side_f.val();
         self.side_l7.d.next = self.side_l.val();
 

@@ -120,6 +120,9 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [31:0] miss_count$d;
     wire  [31:0] miss_count$q;
     reg  miss_count$clock;
+    reg  hit_r$d;
+    wire  hit_r$q;
+    reg  hit_r$clock;
     reg  tag$clock;
     reg  [11:0] tag$read_address;
     wire  [16:0] tag$read_data;
@@ -309,6 +312,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .q(miss_count$q),
         .clock(miss_count$clock)
     );
+    patch_cache$hit_r hit_r(
+        .d(hit_r$d),
+        .q(hit_r$q),
+        .clock(hit_r$clock)
+    );
     patch_cache$tag tag(
         .clock(tag$clock),
         .read_address(tag$read_address),
@@ -378,6 +386,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         rby$clock = clock;
         hit_count$clock = clock;
         miss_count$clock = clock;
+        hit_r$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
@@ -404,6 +413,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         rby$d = rby$q;
         hit_count$d = hit_count$q;
         miss_count$d = miss_count$q;
+        hit_r$d = hit_r$q;
         q_lane$clock = clock;
         tag$clock = clock;
         lane_ax$clock = clock;
@@ -511,10 +521,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
             rbx$d = mem_bx;
             rby$d = mem_by;
         end
-        if (hit) begin
+        hit_r$d = hit;
+        if (hit_r$q) begin
             hit_count$d = hit_inc;
         end
-        if (miss) begin
+        if (mreq$q) begin
             miss_count$d = miss_inc;
         end
         hits = hit_count$q;
@@ -595,6 +606,25 @@ module patch_cache$hit_count(d,q,clock);
     end
           
 endmodule // patch_cache$hit_count
+
+
+module patch_cache$hit_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$hit_r
 
 
 module patch_cache$id1(d,q,clock);

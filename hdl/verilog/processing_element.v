@@ -605,6 +605,9 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [31:0] miss_count$d;
     wire  [31:0] miss_count$q;
     reg  miss_count$clock;
+    reg  hit_r$d;
+    wire  hit_r$q;
+    reg  hit_r$clock;
     reg  tag$clock;
     reg  [11:0] tag$read_address;
     wire  [16:0] tag$read_data;
@@ -794,6 +797,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(miss_count$q),
         .clock(miss_count$clock)
     );
+    processing_element$cache$hit_r hit_r(
+        .d(hit_r$d),
+        .q(hit_r$q),
+        .clock(hit_r$clock)
+    );
     processing_element$cache$tag tag(
         .clock(tag$clock),
         .read_address(tag$read_address),
@@ -863,6 +871,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         rby$clock = clock;
         hit_count$clock = clock;
         miss_count$clock = clock;
+        hit_r$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
@@ -889,6 +898,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         rby$d = rby$q;
         hit_count$d = hit_count$q;
         miss_count$d = miss_count$q;
+        hit_r$d = hit_r$q;
         q_lane$clock = clock;
         tag$clock = clock;
         lane_ax$clock = clock;
@@ -996,10 +1006,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
             rbx$d = mem_bx;
             rby$d = mem_by;
         end
-        if (hit) begin
+        hit_r$d = hit;
+        if (hit_r$q) begin
             hit_count$d = hit_inc;
         end
-        if (miss) begin
+        if (mreq$q) begin
             miss_count$d = miss_inc;
         end
         hits = hit_count$q;
@@ -1080,6 +1091,25 @@ module processing_element$cache$hit_count(d,q,clock);
     end
           
 endmodule // processing_element$cache$hit_count
+
+
+module processing_element$cache$hit_r(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$hit_r
 
 
 module processing_element$cache$id1(d,q,clock);
@@ -4130,6 +4160,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [31:0] k6$d;
     wire  [31:0] k6$q;
     reg  k6$clock;
+    reg  k_nonpos6$d;
+    wire  k_nonpos6$q;
+    reg  k_nonpos6$clock;
     reg  [31:0] ha6$d;
     wire  [31:0] ha6$q;
     reg  ha6$clock;
@@ -4900,6 +4933,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(k6$q),
         .clock(k6$clock)
     );
+    processing_element$screener$k_nonpos6 k_nonpos6(
+        .d(k_nonpos6$d),
+        .q(k_nonpos6$q),
+        .clock(k_nonpos6$clock)
+    );
     processing_element$screener$ha6 ha6(
         .d(ha6$d),
         .q(ha6$q),
@@ -5248,6 +5286,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         negx6$clock = clock;
         negy6$clock = clock;
         k6$clock = clock;
+        k_nonpos6$clock = clock;
         ha6$clock = clock;
         hb6$clock = clock;
         p_fby6$clock = clock;
@@ -5377,6 +5416,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         negx6$d = negx6$q;
         negy6$d = negy6$q;
         k6$d = k6$q;
+        k_nonpos6$d = k_nonpos6$q;
         ha6$d = ha6$q;
         hb6$d = hb6$q;
         p_fby6$d = p_fby6$q;
@@ -5621,6 +5661,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         negx6$d = negx5$q;
         negy6$d = negy5$q;
         k6$d = k5$q;
+        k_nonpos6$d = k5$q[32'h1f] | (k5$q == zero32);
         ha6$d = ha;
         hb6$d = hb;
         clz_n6$d = clz_n5$q;
@@ -5650,7 +5691,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
         hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
         is_backward = ~ha_pos & ~hb_pos;
-        is_back_facing = ~is_backward & (k6$q[32'h1f] | (k6$q == zero32));
+        is_back_facing = ~is_backward & k_nonpos6$q;
         side_f = p_fby6$q - p_fbx6$q;
         side_l = p_lay6$q - p_lax6$q;
         v7$d = v6$q;
@@ -5670,8 +5711,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         norm_e7$d = ze5;
         backward7$d = is_backward;
         back_facing7$d = is_back_facing;
-        ha_open7$d = ha_pos & ~is_back_facing;
-        hb_open7$d = hb_pos & ~is_back_facing;
+        ha_open7$d = ha_pos & ~k_nonpos6$q;
+        hb_open7$d = hb_pos & ~k_nonpos6$q;
         side_f7$d = side_f;
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
@@ -7475,6 +7516,25 @@ module processing_element$screener$k8(d,q,clock);
     end
           
 endmodule // processing_element$screener$k8
+
+
+module processing_element$screener$k_nonpos6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$k_nonpos6
 
 
 module processing_element$screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);

@@ -397,6 +397,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] k6$d;
     wire  [31:0] k6$q;
     reg  k6$clock;
+    reg  k_nonpos6$d;
+    wire  k_nonpos6$q;
+    reg  k_nonpos6$clock;
     reg  [31:0] ha6$d;
     wire  [31:0] ha6$q;
     reg  ha6$clock;
@@ -1167,6 +1170,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(k6$q),
         .clock(k6$clock)
     );
+    screener$k_nonpos6 k_nonpos6(
+        .d(k_nonpos6$d),
+        .q(k_nonpos6$q),
+        .clock(k_nonpos6$clock)
+    );
     screener$ha6 ha6(
         .d(ha6$d),
         .q(ha6$q),
@@ -1515,6 +1523,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx6$clock = clock;
         negy6$clock = clock;
         k6$clock = clock;
+        k_nonpos6$clock = clock;
         ha6$clock = clock;
         hb6$clock = clock;
         p_fby6$clock = clock;
@@ -1644,6 +1653,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx6$d = negx6$q;
         negy6$d = negy6$q;
         k6$d = k6$q;
+        k_nonpos6$d = k_nonpos6$q;
         ha6$d = ha6$q;
         hb6$d = hb6$q;
         p_fby6$d = p_fby6$q;
@@ -1888,6 +1898,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx6$d = negx5$q;
         negy6$d = negy5$q;
         k6$d = k5$q;
+        k_nonpos6$d = k5$q[32'h1f] | (k5$q == zero32);
         ha6$d = ha;
         hb6$d = hb;
         clz_n6$d = clz_n5$q;
@@ -1917,7 +1928,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
         hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
         is_backward = ~ha_pos & ~hb_pos;
-        is_back_facing = ~is_backward & (k6$q[32'h1f] | (k6$q == zero32));
+        is_back_facing = ~is_backward & k_nonpos6$q;
         side_f = p_fby6$q - p_fbx6$q;
         side_l = p_lay6$q - p_lax6$q;
         v7$d = v6$q;
@@ -1937,8 +1948,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         norm_e7$d = ze5;
         backward7$d = is_backward;
         back_facing7$d = is_back_facing;
-        ha_open7$d = ha_pos & ~is_back_facing;
-        hb_open7$d = hb_pos & ~is_back_facing;
+        ha_open7$d = ha_pos & ~k_nonpos6$q;
+        hb_open7$d = hb_pos & ~k_nonpos6$q;
         side_f7$d = side_f;
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
@@ -3742,6 +3753,25 @@ module screener$k8(d,q,clock);
     end
           
 endmodule // screener$k8
+
+
+module screener$k_nonpos6(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$k_nonpos6
 
 
 module screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
