@@ -11,3 +11,4 @@ pub mod leaf;
 pub mod loader;
 pub mod pe;
 pub mod screener;
+pub mod slice;

@@ -75,6 +75,7 @@ use crate::intersection::IntersectionUnit;
 use crate::leaf::Bram;
 use crate::loader::PatchLoader;
 use crate::screener::Screener;
+use crate::slice::PatchSlice;
 use rust_hdl::prelude::*;
 
 /// Address bits of the tag FIFO.
@@ -142,6 +143,10 @@ pub struct ProcessingElement {
     // The datapath.
     loader: PatchLoader,
     cache: PatchCache,
+    /// The screener's patches into the merger.
+    sc_slice: PatchSlice,
+    /// The merger's jobs into the intersection unit.
+    iu_slice: PatchSlice,
     screener: Screener,
     unit: IntersectionUnit,
     // The tag FIFO.
@@ -218,6 +223,8 @@ impl Default for ProcessingElement {
             tests: Default::default(),
             loader: Default::default(),
             cache: Default::default(),
+            sc_slice: Default::default(),
+            iu_slice: Default::default(),
             screener: Default::default(),
             unit: Default::default(),
             tags: Default::default(),
@@ -252,6 +259,8 @@ impl Logic for ProcessingElement {
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
         self.unit.clock.next = self.clock.val();
+        self.sc_slice.clock.next = self.clock.val();
+        self.iu_slice.clock.next = self.clock.val();
         self.tags.clock.next = self.clock.val();
         self.tags_next.clock.next = self.clock.val();
 
@@ -325,7 +334,24 @@ impl Logic for ProcessingElement {
         self.screener.in_bx.next = self.loader.out_bx.val();
         self.screener.in_by.next = self.loader.out_by.val();
 
-        // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job).
+        // The screener's patches go through a slice: every merger input is a register.
+        self.sc_slice.in_valid.next = self.screener.out_valid.val();
+        self.screener.out_ready.next = self.sc_slice.in_ready.val();
+        self.sc_slice.in_id.next = self.screener.out_id.val();
+        self.sc_slice.in_ax.next = self.screener.out_ax.val();
+        self.sc_slice.in_ay.next = self.screener.out_ay.val();
+        self.sc_slice.in_bx.next = self.screener.out_bx.val();
+        self.sc_slice.in_by.next = self.screener.out_by.val();
+        self.sc_slice.in_wx.next = self.screener.out_wx.val();
+        self.sc_slice.in_wy.next = self.screener.out_wy.val();
+        self.sc_slice.in_sh.next = self.screener.out_sh.val();
+        self.sc_slice.in_pass.next = self.screener.out_pass.val();
+        self.sc_slice.in_first.next = 0.into();
+        self.sc_slice.in_count.next = 0.into();
+        self.sc_slice.in_retire.next = false;
+
+        // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job);
+        // what it sends goes through a second slice, whose `in_ready` is a register.
         self.head_tag.next = self.tags.read_data.val();
         if self.popped.q.val() {
             self.head_tag.next = self.tags_next.read_data.val();
@@ -333,35 +359,49 @@ impl Logic for ProcessingElement {
         self.head_retire.next = self.head_tag.val().get_bit(21);
         self.head_first.next = self.head_tag.val().get_bits::<10>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
-        self.unit.patch_id.next = self.screener.out_id.val();
-        self.unit.patch_ax.next = self.screener.out_ax.val();
-        self.unit.patch_ay.next = self.screener.out_ay.val();
-        self.unit.patch_bx.next = self.screener.out_bx.val();
-        self.unit.patch_by.next = self.screener.out_by.val();
-        self.unit.patch_wx.next = self.screener.out_wx.val();
-        self.unit.patch_wy.next = self.screener.out_wy.val();
-        self.unit.patch_sh.next = self.screener.out_sh.val();
-        self.unit.patch_first.next = self.head_first.val();
-        self.unit.patch_count.next = self.head_count.val();
-        self.unit.patch_retire.next = self.head_retire.val();
-        self.unit.patch_valid.next = false;
-        self.screener.out_ready.next = false;
+        self.iu_slice.in_id.next = self.sc_slice.out_id.val();
+        self.iu_slice.in_ax.next = self.sc_slice.out_ax.val();
+        self.iu_slice.in_ay.next = self.sc_slice.out_ay.val();
+        self.iu_slice.in_bx.next = self.sc_slice.out_bx.val();
+        self.iu_slice.in_by.next = self.sc_slice.out_by.val();
+        self.iu_slice.in_wx.next = self.sc_slice.out_wx.val();
+        self.iu_slice.in_wy.next = self.sc_slice.out_wy.val();
+        self.iu_slice.in_sh.next = self.sc_slice.out_sh.val();
+        self.iu_slice.in_pass.next = false;
+        self.iu_slice.in_first.next = self.head_first.val();
+        self.iu_slice.in_count.next = self.head_count.val();
+        self.iu_slice.in_retire.next = self.head_retire.val();
+        self.iu_slice.in_valid.next = false;
+        self.sc_slice.out_ready.next = false;
         self.pop.next = false;
         if self.head_valid.q.val() {
             if self.head_retire.val() {
-                self.unit.patch_valid.next = true;
-                self.pop.next = self.unit.patch_ready.val();
-            } else if self.screener.out_valid.val() {
-                if self.screener.out_pass.val() {
-                    self.unit.patch_valid.next = true;
-                    self.screener.out_ready.next = self.unit.patch_ready.val();
-                    self.pop.next = self.unit.patch_ready.val();
+                self.iu_slice.in_valid.next = true;
+                self.pop.next = self.iu_slice.in_ready.val();
+            } else if self.sc_slice.out_valid.val() {
+                if self.sc_slice.out_pass.val() {
+                    self.iu_slice.in_valid.next = true;
+                    self.sc_slice.out_ready.next = self.iu_slice.in_ready.val();
+                    self.pop.next = self.iu_slice.in_ready.val();
                 } else {
-                    self.screener.out_ready.next = true;
+                    self.sc_slice.out_ready.next = true;
                     self.pop.next = true;
                 }
             }
         }
+        self.unit.patch_valid.next = self.iu_slice.out_valid.val();
+        self.iu_slice.out_ready.next = self.unit.patch_ready.val();
+        self.unit.patch_id.next = self.iu_slice.out_id.val();
+        self.unit.patch_ax.next = self.iu_slice.out_ax.val();
+        self.unit.patch_ay.next = self.iu_slice.out_ay.val();
+        self.unit.patch_bx.next = self.iu_slice.out_bx.val();
+        self.unit.patch_by.next = self.iu_slice.out_by.val();
+        self.unit.patch_wx.next = self.iu_slice.out_wx.val();
+        self.unit.patch_wy.next = self.iu_slice.out_wy.val();
+        self.unit.patch_sh.next = self.iu_slice.out_sh.val();
+        self.unit.patch_first.next = self.iu_slice.out_first.val();
+        self.unit.patch_count.next = self.iu_slice.out_count.val();
+        self.unit.patch_retire.next = self.iu_slice.out_retire.val();
 
         // The tag FIFO's read side: every cycle `tags` reads the entry at the read pointer
         // and `tags_next` the one after it; after a pop the head is `tags_next`'s word, else
@@ -387,8 +427,10 @@ impl Logic for ProcessingElement {
         }
 
         // Status and counters.
-        self.busy.next =
-            (self.tag_count.q.val() != self.zero7.val()) | self.unit.busy.val() | self.cache.flushing.val();
+        self.busy.next = (self.tag_count.q.val() != self.zero7.val())
+            | self.iu_slice.occupied.val()
+            | self.unit.busy.val()
+            | self.cache.flushing.val();
         self.loads.next = self.loader.loads.val();
         self.cache_hits.next = self.cache.hits.val();
         self.cache_misses.next = self.cache.misses.val();

@@ -97,6 +97,66 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [16:0] cache$mem_by;
     wire  [31:0] cache$hits;
     wire  [31:0] cache$misses;
+    reg  sc_slice$clock;
+    reg  sc_slice$in_valid;
+    wire  sc_slice$in_ready;
+    reg  [15:0] sc_slice$in_id;
+    reg  [17:0] sc_slice$in_ax;
+    reg  [17:0] sc_slice$in_ay;
+    reg  [17:0] sc_slice$in_bx;
+    reg  [17:0] sc_slice$in_by;
+    reg  [17:0] sc_slice$in_wx;
+    reg  [17:0] sc_slice$in_wy;
+    reg  [5:0] sc_slice$in_sh;
+    reg  sc_slice$in_pass;
+    reg  [9:0] sc_slice$in_first;
+    reg  [10:0] sc_slice$in_count;
+    reg  sc_slice$in_retire;
+    wire  sc_slice$out_valid;
+    reg  sc_slice$out_ready;
+    wire  [15:0] sc_slice$out_id;
+    wire  [17:0] sc_slice$out_ax;
+    wire  [17:0] sc_slice$out_ay;
+    wire  [17:0] sc_slice$out_bx;
+    wire  [17:0] sc_slice$out_by;
+    wire  [17:0] sc_slice$out_wx;
+    wire  [17:0] sc_slice$out_wy;
+    wire  [5:0] sc_slice$out_sh;
+    wire  sc_slice$out_pass;
+    wire  [9:0] sc_slice$out_first;
+    wire  [10:0] sc_slice$out_count;
+    wire  sc_slice$out_retire;
+    wire  sc_slice$occupied;
+    reg  iu_slice$clock;
+    reg  iu_slice$in_valid;
+    wire  iu_slice$in_ready;
+    reg  [15:0] iu_slice$in_id;
+    reg  [17:0] iu_slice$in_ax;
+    reg  [17:0] iu_slice$in_ay;
+    reg  [17:0] iu_slice$in_bx;
+    reg  [17:0] iu_slice$in_by;
+    reg  [17:0] iu_slice$in_wx;
+    reg  [17:0] iu_slice$in_wy;
+    reg  [5:0] iu_slice$in_sh;
+    reg  iu_slice$in_pass;
+    reg  [9:0] iu_slice$in_first;
+    reg  [10:0] iu_slice$in_count;
+    reg  iu_slice$in_retire;
+    wire  iu_slice$out_valid;
+    reg  iu_slice$out_ready;
+    wire  [15:0] iu_slice$out_id;
+    wire  [17:0] iu_slice$out_ax;
+    wire  [17:0] iu_slice$out_ay;
+    wire  [17:0] iu_slice$out_bx;
+    wire  [17:0] iu_slice$out_by;
+    wire  [17:0] iu_slice$out_wx;
+    wire  [17:0] iu_slice$out_wy;
+    wire  [5:0] iu_slice$out_sh;
+    wire  iu_slice$out_pass;
+    wire  [9:0] iu_slice$out_first;
+    wire  [10:0] iu_slice$out_count;
+    wire  iu_slice$out_retire;
+    wire  iu_slice$occupied;
     reg  screener$clock;
     reg  [16:0] screener$origin_x;
     reg  [16:0] screener$origin_y;
@@ -237,6 +297,70 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .hits(cache$hits),
         .misses(cache$misses)
     );
+    processing_element$sc_slice sc_slice(
+        .clock(sc_slice$clock),
+        .in_valid(sc_slice$in_valid),
+        .in_ready(sc_slice$in_ready),
+        .in_id(sc_slice$in_id),
+        .in_ax(sc_slice$in_ax),
+        .in_ay(sc_slice$in_ay),
+        .in_bx(sc_slice$in_bx),
+        .in_by(sc_slice$in_by),
+        .in_wx(sc_slice$in_wx),
+        .in_wy(sc_slice$in_wy),
+        .in_sh(sc_slice$in_sh),
+        .in_pass(sc_slice$in_pass),
+        .in_first(sc_slice$in_first),
+        .in_count(sc_slice$in_count),
+        .in_retire(sc_slice$in_retire),
+        .out_valid(sc_slice$out_valid),
+        .out_ready(sc_slice$out_ready),
+        .out_id(sc_slice$out_id),
+        .out_ax(sc_slice$out_ax),
+        .out_ay(sc_slice$out_ay),
+        .out_bx(sc_slice$out_bx),
+        .out_by(sc_slice$out_by),
+        .out_wx(sc_slice$out_wx),
+        .out_wy(sc_slice$out_wy),
+        .out_sh(sc_slice$out_sh),
+        .out_pass(sc_slice$out_pass),
+        .out_first(sc_slice$out_first),
+        .out_count(sc_slice$out_count),
+        .out_retire(sc_slice$out_retire),
+        .occupied(sc_slice$occupied)
+    );
+    processing_element$iu_slice iu_slice(
+        .clock(iu_slice$clock),
+        .in_valid(iu_slice$in_valid),
+        .in_ready(iu_slice$in_ready),
+        .in_id(iu_slice$in_id),
+        .in_ax(iu_slice$in_ax),
+        .in_ay(iu_slice$in_ay),
+        .in_bx(iu_slice$in_bx),
+        .in_by(iu_slice$in_by),
+        .in_wx(iu_slice$in_wx),
+        .in_wy(iu_slice$in_wy),
+        .in_sh(iu_slice$in_sh),
+        .in_pass(iu_slice$in_pass),
+        .in_first(iu_slice$in_first),
+        .in_count(iu_slice$in_count),
+        .in_retire(iu_slice$in_retire),
+        .out_valid(iu_slice$out_valid),
+        .out_ready(iu_slice$out_ready),
+        .out_id(iu_slice$out_id),
+        .out_ax(iu_slice$out_ax),
+        .out_ay(iu_slice$out_ay),
+        .out_bx(iu_slice$out_bx),
+        .out_by(iu_slice$out_by),
+        .out_wx(iu_slice$out_wx),
+        .out_wy(iu_slice$out_wy),
+        .out_sh(iu_slice$out_sh),
+        .out_pass(iu_slice$out_pass),
+        .out_first(iu_slice$out_first),
+        .out_count(iu_slice$out_count),
+        .out_retire(iu_slice$out_retire),
+        .occupied(iu_slice$occupied)
+    );
     processing_element$screener screener(
         .clock(screener$clock),
         .origin_x(screener$origin_x),
@@ -356,6 +480,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         cache$clock = clock;
         screener$clock = clock;
         unit$clock = clock;
+        sc_slice$clock = clock;
+        iu_slice$clock = clock;
         tags$clock = clock;
         tags_next$clock = clock;
         unit$dir_we = dir_we;
@@ -416,6 +542,20 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         screener$in_ay = loader$out_ay;
         screener$in_bx = loader$out_bx;
         screener$in_by = loader$out_by;
+        sc_slice$in_valid = screener$out_valid;
+        screener$out_ready = sc_slice$in_ready;
+        sc_slice$in_id = screener$out_id;
+        sc_slice$in_ax = screener$out_ax;
+        sc_slice$in_ay = screener$out_ay;
+        sc_slice$in_bx = screener$out_bx;
+        sc_slice$in_by = screener$out_by;
+        sc_slice$in_wx = screener$out_wx;
+        sc_slice$in_wy = screener$out_wy;
+        sc_slice$in_sh = screener$out_sh;
+        sc_slice$in_pass = screener$out_pass;
+        sc_slice$in_first = 32'h0;
+        sc_slice$in_count = 32'h0;
+        sc_slice$in_retire = 1'b0;
         head_tag = tags$read_data;
         if (popped$q) begin
             head_tag = tags_next$read_data;
@@ -423,37 +563,51 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         head_retire = head_tag[32'h15];
         head_first = head_tag[(32'hb)+:(10)];
         head_count = head_tag[(32'h0)+:(11)];
-        unit$patch_id = screener$out_id;
-        unit$patch_ax = screener$out_ax;
-        unit$patch_ay = screener$out_ay;
-        unit$patch_bx = screener$out_bx;
-        unit$patch_by = screener$out_by;
-        unit$patch_wx = screener$out_wx;
-        unit$patch_wy = screener$out_wy;
-        unit$patch_sh = screener$out_sh;
-        unit$patch_first = head_first;
-        unit$patch_count = head_count;
-        unit$patch_retire = head_retire;
-        unit$patch_valid = 1'b0;
-        screener$out_ready = 1'b0;
+        iu_slice$in_id = sc_slice$out_id;
+        iu_slice$in_ax = sc_slice$out_ax;
+        iu_slice$in_ay = sc_slice$out_ay;
+        iu_slice$in_bx = sc_slice$out_bx;
+        iu_slice$in_by = sc_slice$out_by;
+        iu_slice$in_wx = sc_slice$out_wx;
+        iu_slice$in_wy = sc_slice$out_wy;
+        iu_slice$in_sh = sc_slice$out_sh;
+        iu_slice$in_pass = 1'b0;
+        iu_slice$in_first = head_first;
+        iu_slice$in_count = head_count;
+        iu_slice$in_retire = head_retire;
+        iu_slice$in_valid = 1'b0;
+        sc_slice$out_ready = 1'b0;
         pop = 1'b0;
         if (head_valid$q) begin
             if (head_retire) begin
-                unit$patch_valid = 1'b1;
-                pop = unit$patch_ready;
+                iu_slice$in_valid = 1'b1;
+                pop = iu_slice$in_ready;
             end
-            else if (screener$out_valid) begin
-                if (screener$out_pass) begin
-                    unit$patch_valid = 1'b1;
-                    screener$out_ready = unit$patch_ready;
-                    pop = unit$patch_ready;
+            else if (sc_slice$out_valid) begin
+                if (sc_slice$out_pass) begin
+                    iu_slice$in_valid = 1'b1;
+                    sc_slice$out_ready = iu_slice$in_ready;
+                    pop = iu_slice$in_ready;
                 end
                 else begin
-                    screener$out_ready = 1'b1;
+                    sc_slice$out_ready = 1'b1;
                     pop = 1'b1;
                 end
             end
         end
+        unit$patch_valid = iu_slice$out_valid;
+        iu_slice$out_ready = unit$patch_ready;
+        unit$patch_id = iu_slice$out_id;
+        unit$patch_ax = iu_slice$out_ax;
+        unit$patch_ay = iu_slice$out_ay;
+        unit$patch_bx = iu_slice$out_bx;
+        unit$patch_by = iu_slice$out_by;
+        unit$patch_wx = iu_slice$out_wx;
+        unit$patch_wy = iu_slice$out_wy;
+        unit$patch_sh = iu_slice$out_sh;
+        unit$patch_first = iu_slice$out_first;
+        unit$patch_count = iu_slice$out_count;
+        unit$patch_retire = iu_slice$out_retire;
         rd_inc = rd_ptr$q + one_ptr;
         tags$read_address = rd_ptr$q;
         tags_next$read_address = rd_inc;
@@ -471,7 +625,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         if (~accept & pop) begin
             tag_count$d = tag_count$q - one7;
         end
-        busy = (tag_count$q != zero7) | unit$busy | cache$flushing;
+        busy = (tag_count$q != zero7) | iu_slice$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
         cache_misses = cache$misses;
@@ -3134,6 +3288,875 @@ module processing_element$head_valid(d,q,clock);
 endmodule // processing_element$head_valid
 
 
+module processing_element$iu_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  in_valid;
+    output reg  in_ready;
+    input wire  [15:0] in_id;
+    input wire  [17:0] in_ax;
+    input wire  [17:0] in_ay;
+    input wire  [17:0] in_bx;
+    input wire  [17:0] in_by;
+    input wire  [17:0] in_wx;
+    input wire  [17:0] in_wy;
+    input wire  [5:0] in_sh;
+    input wire  in_pass;
+    input wire  [9:0] in_first;
+    input wire  [10:0] in_count;
+    input wire  in_retire;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_id;
+    output reg  [17:0] out_ax;
+    output reg  [17:0] out_ay;
+    output reg  [17:0] out_bx;
+    output reg  [17:0] out_by;
+    output reg  [17:0] out_wx;
+    output reg  [17:0] out_wy;
+    output reg  [5:0] out_sh;
+    output reg  out_pass;
+    output reg  [9:0] out_first;
+    output reg  [10:0] out_count;
+    output reg  out_retire;
+    output reg  occupied;
+    
+    // Stub signals
+    reg  m_v$d;
+    wire  m_v$q;
+    reg  m_v$clock;
+    reg  [15:0] m_id$d;
+    wire  [15:0] m_id$q;
+    reg  m_id$clock;
+    reg  [17:0] m_ax$d;
+    wire  [17:0] m_ax$q;
+    reg  m_ax$clock;
+    reg  [17:0] m_ay$d;
+    wire  [17:0] m_ay$q;
+    reg  m_ay$clock;
+    reg  [17:0] m_bx$d;
+    wire  [17:0] m_bx$q;
+    reg  m_bx$clock;
+    reg  [17:0] m_by$d;
+    wire  [17:0] m_by$q;
+    reg  m_by$clock;
+    reg  [17:0] m_wx$d;
+    wire  [17:0] m_wx$q;
+    reg  m_wx$clock;
+    reg  [17:0] m_wy$d;
+    wire  [17:0] m_wy$q;
+    reg  m_wy$clock;
+    reg  [5:0] m_sh$d;
+    wire  [5:0] m_sh$q;
+    reg  m_sh$clock;
+    reg  m_pass$d;
+    wire  m_pass$q;
+    reg  m_pass$clock;
+    reg  [9:0] m_first$d;
+    wire  [9:0] m_first$q;
+    reg  m_first$clock;
+    reg  [10:0] m_count$d;
+    wire  [10:0] m_count$q;
+    reg  m_count$clock;
+    reg  m_retire$d;
+    wire  m_retire$q;
+    reg  m_retire$clock;
+    reg  s_v$d;
+    wire  s_v$q;
+    reg  s_v$clock;
+    reg  [15:0] s_id$d;
+    wire  [15:0] s_id$q;
+    reg  s_id$clock;
+    reg  [17:0] s_ax$d;
+    wire  [17:0] s_ax$q;
+    reg  s_ax$clock;
+    reg  [17:0] s_ay$d;
+    wire  [17:0] s_ay$q;
+    reg  s_ay$clock;
+    reg  [17:0] s_bx$d;
+    wire  [17:0] s_bx$q;
+    reg  s_bx$clock;
+    reg  [17:0] s_by$d;
+    wire  [17:0] s_by$q;
+    reg  s_by$clock;
+    reg  [17:0] s_wx$d;
+    wire  [17:0] s_wx$q;
+    reg  s_wx$clock;
+    reg  [17:0] s_wy$d;
+    wire  [17:0] s_wy$q;
+    reg  s_wy$clock;
+    reg  [5:0] s_sh$d;
+    wire  [5:0] s_sh$q;
+    reg  s_sh$clock;
+    reg  s_pass$d;
+    wire  s_pass$q;
+    reg  s_pass$clock;
+    reg  [9:0] s_first$d;
+    wire  [9:0] s_first$q;
+    reg  s_first$clock;
+    reg  [10:0] s_count$d;
+    wire  [10:0] s_count$q;
+    reg  s_count$clock;
+    reg  s_retire$d;
+    wire  s_retire$q;
+    reg  s_retire$clock;
+    
+    // Local signals
+    reg  take;
+    reg  load_main;
+    
+    // Sub module instances
+    processing_element$iu_slice$m_v m_v(
+        .d(m_v$d),
+        .q(m_v$q),
+        .clock(m_v$clock)
+    );
+    processing_element$iu_slice$m_id m_id(
+        .d(m_id$d),
+        .q(m_id$q),
+        .clock(m_id$clock)
+    );
+    processing_element$iu_slice$m_ax m_ax(
+        .d(m_ax$d),
+        .q(m_ax$q),
+        .clock(m_ax$clock)
+    );
+    processing_element$iu_slice$m_ay m_ay(
+        .d(m_ay$d),
+        .q(m_ay$q),
+        .clock(m_ay$clock)
+    );
+    processing_element$iu_slice$m_bx m_bx(
+        .d(m_bx$d),
+        .q(m_bx$q),
+        .clock(m_bx$clock)
+    );
+    processing_element$iu_slice$m_by m_by(
+        .d(m_by$d),
+        .q(m_by$q),
+        .clock(m_by$clock)
+    );
+    processing_element$iu_slice$m_wx m_wx(
+        .d(m_wx$d),
+        .q(m_wx$q),
+        .clock(m_wx$clock)
+    );
+    processing_element$iu_slice$m_wy m_wy(
+        .d(m_wy$d),
+        .q(m_wy$q),
+        .clock(m_wy$clock)
+    );
+    processing_element$iu_slice$m_sh m_sh(
+        .d(m_sh$d),
+        .q(m_sh$q),
+        .clock(m_sh$clock)
+    );
+    processing_element$iu_slice$m_pass m_pass(
+        .d(m_pass$d),
+        .q(m_pass$q),
+        .clock(m_pass$clock)
+    );
+    processing_element$iu_slice$m_first m_first(
+        .d(m_first$d),
+        .q(m_first$q),
+        .clock(m_first$clock)
+    );
+    processing_element$iu_slice$m_count m_count(
+        .d(m_count$d),
+        .q(m_count$q),
+        .clock(m_count$clock)
+    );
+    processing_element$iu_slice$m_retire m_retire(
+        .d(m_retire$d),
+        .q(m_retire$q),
+        .clock(m_retire$clock)
+    );
+    processing_element$iu_slice$s_v s_v(
+        .d(s_v$d),
+        .q(s_v$q),
+        .clock(s_v$clock)
+    );
+    processing_element$iu_slice$s_id s_id(
+        .d(s_id$d),
+        .q(s_id$q),
+        .clock(s_id$clock)
+    );
+    processing_element$iu_slice$s_ax s_ax(
+        .d(s_ax$d),
+        .q(s_ax$q),
+        .clock(s_ax$clock)
+    );
+    processing_element$iu_slice$s_ay s_ay(
+        .d(s_ay$d),
+        .q(s_ay$q),
+        .clock(s_ay$clock)
+    );
+    processing_element$iu_slice$s_bx s_bx(
+        .d(s_bx$d),
+        .q(s_bx$q),
+        .clock(s_bx$clock)
+    );
+    processing_element$iu_slice$s_by s_by(
+        .d(s_by$d),
+        .q(s_by$q),
+        .clock(s_by$clock)
+    );
+    processing_element$iu_slice$s_wx s_wx(
+        .d(s_wx$d),
+        .q(s_wx$q),
+        .clock(s_wx$clock)
+    );
+    processing_element$iu_slice$s_wy s_wy(
+        .d(s_wy$d),
+        .q(s_wy$q),
+        .clock(s_wy$clock)
+    );
+    processing_element$iu_slice$s_sh s_sh(
+        .d(s_sh$d),
+        .q(s_sh$q),
+        .clock(s_sh$clock)
+    );
+    processing_element$iu_slice$s_pass s_pass(
+        .d(s_pass$d),
+        .q(s_pass$q),
+        .clock(s_pass$clock)
+    );
+    processing_element$iu_slice$s_first s_first(
+        .d(s_first$d),
+        .q(s_first$q),
+        .clock(s_first$clock)
+    );
+    processing_element$iu_slice$s_count s_count(
+        .d(s_count$d),
+        .q(s_count$q),
+        .clock(s_count$clock)
+    );
+    processing_element$iu_slice$s_retire s_retire(
+        .d(s_retire$d),
+        .q(s_retire$q),
+        .clock(s_retire$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        m_v$clock = clock;
+        m_id$clock = clock;
+        m_ax$clock = clock;
+        m_ay$clock = clock;
+        m_bx$clock = clock;
+        m_by$clock = clock;
+        m_wx$clock = clock;
+        m_wy$clock = clock;
+        m_sh$clock = clock;
+        m_pass$clock = clock;
+        m_first$clock = clock;
+        m_count$clock = clock;
+        m_retire$clock = clock;
+        s_v$clock = clock;
+        s_id$clock = clock;
+        s_ax$clock = clock;
+        s_ay$clock = clock;
+        s_bx$clock = clock;
+        s_by$clock = clock;
+        s_wx$clock = clock;
+        s_wy$clock = clock;
+        s_sh$clock = clock;
+        s_pass$clock = clock;
+        s_first$clock = clock;
+        s_count$clock = clock;
+        s_retire$clock = clock;
+        m_v$d = m_v$q;
+        m_id$d = m_id$q;
+        m_ax$d = m_ax$q;
+        m_ay$d = m_ay$q;
+        m_bx$d = m_bx$q;
+        m_by$d = m_by$q;
+        m_wx$d = m_wx$q;
+        m_wy$d = m_wy$q;
+        m_sh$d = m_sh$q;
+        m_pass$d = m_pass$q;
+        m_first$d = m_first$q;
+        m_count$d = m_count$q;
+        m_retire$d = m_retire$q;
+        s_v$d = s_v$q;
+        s_id$d = s_id$q;
+        s_ax$d = s_ax$q;
+        s_ay$d = s_ay$q;
+        s_bx$d = s_bx$q;
+        s_by$d = s_by$q;
+        s_wx$d = s_wx$q;
+        s_wy$d = s_wy$q;
+        s_sh$d = s_sh$q;
+        s_pass$d = s_pass$q;
+        s_first$d = s_first$q;
+        s_count$d = s_count$q;
+        s_retire$d = s_retire$q;
+        in_ready = ~s_v$q;
+        take = in_valid & ~s_v$q;
+        load_main = ~m_v$q | out_ready;
+        if (load_main) begin
+            m_v$d = s_v$q | take;
+            s_v$d = 1'b0;
+            if (s_v$q) begin
+                m_id$d = s_id$q;
+                m_ax$d = s_ax$q;
+                m_ay$d = s_ay$q;
+                m_bx$d = s_bx$q;
+                m_by$d = s_by$q;
+                m_wx$d = s_wx$q;
+                m_wy$d = s_wy$q;
+                m_sh$d = s_sh$q;
+                m_pass$d = s_pass$q;
+                m_first$d = s_first$q;
+                m_count$d = s_count$q;
+                m_retire$d = s_retire$q;
+            end
+            else begin
+                m_id$d = in_id;
+                m_ax$d = in_ax;
+                m_ay$d = in_ay;
+                m_bx$d = in_bx;
+                m_by$d = in_by;
+                m_wx$d = in_wx;
+                m_wy$d = in_wy;
+                m_sh$d = in_sh;
+                m_pass$d = in_pass;
+                m_first$d = in_first;
+                m_count$d = in_count;
+                m_retire$d = in_retire;
+            end
+        end
+        else begin
+            s_v$d = s_v$q | take;
+        end
+        if (~s_v$q) begin
+            s_id$d = in_id;
+            s_ax$d = in_ax;
+            s_ay$d = in_ay;
+            s_bx$d = in_bx;
+            s_by$d = in_by;
+            s_wx$d = in_wx;
+            s_wy$d = in_wy;
+            s_sh$d = in_sh;
+            s_pass$d = in_pass;
+            s_first$d = in_first;
+            s_count$d = in_count;
+            s_retire$d = in_retire;
+        end
+        out_valid = m_v$q;
+        out_id = m_id$q;
+        out_ax = m_ax$q;
+        out_ay = m_ay$q;
+        out_bx = m_bx$q;
+        out_by = m_by$q;
+        out_wx = m_wx$q;
+        out_wy = m_wy$q;
+        out_sh = m_sh$q;
+        out_pass = m_pass$q;
+        out_first = m_first$q;
+        out_count = m_count$q;
+        out_retire = m_retire$q;
+        occupied = m_v$q | s_v$q;
+    end
+    
+endmodule // processing_element$iu_slice
+
+
+module processing_element$iu_slice$m_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_ax
+
+
+module processing_element$iu_slice$m_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_ay
+
+
+module processing_element$iu_slice$m_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_bx
+
+
+module processing_element$iu_slice$m_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_by
+
+
+module processing_element$iu_slice$m_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_count
+
+
+module processing_element$iu_slice$m_first(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_first
+
+
+module processing_element$iu_slice$m_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_id
+
+
+module processing_element$iu_slice$m_pass(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_pass
+
+
+module processing_element$iu_slice$m_retire(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_retire
+
+
+module processing_element$iu_slice$m_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_sh
+
+
+module processing_element$iu_slice$m_v(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_v
+
+
+module processing_element$iu_slice$m_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_wx
+
+
+module processing_element$iu_slice$m_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$m_wy
+
+
+module processing_element$iu_slice$s_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_ax
+
+
+module processing_element$iu_slice$s_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_ay
+
+
+module processing_element$iu_slice$s_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_bx
+
+
+module processing_element$iu_slice$s_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_by
+
+
+module processing_element$iu_slice$s_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_count
+
+
+module processing_element$iu_slice$s_first(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_first
+
+
+module processing_element$iu_slice$s_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_id
+
+
+module processing_element$iu_slice$s_pass(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_pass
+
+
+module processing_element$iu_slice$s_retire(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_retire
+
+
+module processing_element$iu_slice$s_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_sh
+
+
+module processing_element$iu_slice$s_v(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_v
+
+
+module processing_element$iu_slice$s_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_wx
+
+
+module processing_element$iu_slice$s_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$iu_slice$s_wy
+
+
 module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
@@ -3762,6 +4785,875 @@ module processing_element$rd_ptr(d,q,clock);
     end
           
 endmodule // processing_element$rd_ptr
+
+
+module processing_element$sc_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  in_valid;
+    output reg  in_ready;
+    input wire  [15:0] in_id;
+    input wire  [17:0] in_ax;
+    input wire  [17:0] in_ay;
+    input wire  [17:0] in_bx;
+    input wire  [17:0] in_by;
+    input wire  [17:0] in_wx;
+    input wire  [17:0] in_wy;
+    input wire  [5:0] in_sh;
+    input wire  in_pass;
+    input wire  [9:0] in_first;
+    input wire  [10:0] in_count;
+    input wire  in_retire;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_id;
+    output reg  [17:0] out_ax;
+    output reg  [17:0] out_ay;
+    output reg  [17:0] out_bx;
+    output reg  [17:0] out_by;
+    output reg  [17:0] out_wx;
+    output reg  [17:0] out_wy;
+    output reg  [5:0] out_sh;
+    output reg  out_pass;
+    output reg  [9:0] out_first;
+    output reg  [10:0] out_count;
+    output reg  out_retire;
+    output reg  occupied;
+    
+    // Stub signals
+    reg  m_v$d;
+    wire  m_v$q;
+    reg  m_v$clock;
+    reg  [15:0] m_id$d;
+    wire  [15:0] m_id$q;
+    reg  m_id$clock;
+    reg  [17:0] m_ax$d;
+    wire  [17:0] m_ax$q;
+    reg  m_ax$clock;
+    reg  [17:0] m_ay$d;
+    wire  [17:0] m_ay$q;
+    reg  m_ay$clock;
+    reg  [17:0] m_bx$d;
+    wire  [17:0] m_bx$q;
+    reg  m_bx$clock;
+    reg  [17:0] m_by$d;
+    wire  [17:0] m_by$q;
+    reg  m_by$clock;
+    reg  [17:0] m_wx$d;
+    wire  [17:0] m_wx$q;
+    reg  m_wx$clock;
+    reg  [17:0] m_wy$d;
+    wire  [17:0] m_wy$q;
+    reg  m_wy$clock;
+    reg  [5:0] m_sh$d;
+    wire  [5:0] m_sh$q;
+    reg  m_sh$clock;
+    reg  m_pass$d;
+    wire  m_pass$q;
+    reg  m_pass$clock;
+    reg  [9:0] m_first$d;
+    wire  [9:0] m_first$q;
+    reg  m_first$clock;
+    reg  [10:0] m_count$d;
+    wire  [10:0] m_count$q;
+    reg  m_count$clock;
+    reg  m_retire$d;
+    wire  m_retire$q;
+    reg  m_retire$clock;
+    reg  s_v$d;
+    wire  s_v$q;
+    reg  s_v$clock;
+    reg  [15:0] s_id$d;
+    wire  [15:0] s_id$q;
+    reg  s_id$clock;
+    reg  [17:0] s_ax$d;
+    wire  [17:0] s_ax$q;
+    reg  s_ax$clock;
+    reg  [17:0] s_ay$d;
+    wire  [17:0] s_ay$q;
+    reg  s_ay$clock;
+    reg  [17:0] s_bx$d;
+    wire  [17:0] s_bx$q;
+    reg  s_bx$clock;
+    reg  [17:0] s_by$d;
+    wire  [17:0] s_by$q;
+    reg  s_by$clock;
+    reg  [17:0] s_wx$d;
+    wire  [17:0] s_wx$q;
+    reg  s_wx$clock;
+    reg  [17:0] s_wy$d;
+    wire  [17:0] s_wy$q;
+    reg  s_wy$clock;
+    reg  [5:0] s_sh$d;
+    wire  [5:0] s_sh$q;
+    reg  s_sh$clock;
+    reg  s_pass$d;
+    wire  s_pass$q;
+    reg  s_pass$clock;
+    reg  [9:0] s_first$d;
+    wire  [9:0] s_first$q;
+    reg  s_first$clock;
+    reg  [10:0] s_count$d;
+    wire  [10:0] s_count$q;
+    reg  s_count$clock;
+    reg  s_retire$d;
+    wire  s_retire$q;
+    reg  s_retire$clock;
+    
+    // Local signals
+    reg  take;
+    reg  load_main;
+    
+    // Sub module instances
+    processing_element$sc_slice$m_v m_v(
+        .d(m_v$d),
+        .q(m_v$q),
+        .clock(m_v$clock)
+    );
+    processing_element$sc_slice$m_id m_id(
+        .d(m_id$d),
+        .q(m_id$q),
+        .clock(m_id$clock)
+    );
+    processing_element$sc_slice$m_ax m_ax(
+        .d(m_ax$d),
+        .q(m_ax$q),
+        .clock(m_ax$clock)
+    );
+    processing_element$sc_slice$m_ay m_ay(
+        .d(m_ay$d),
+        .q(m_ay$q),
+        .clock(m_ay$clock)
+    );
+    processing_element$sc_slice$m_bx m_bx(
+        .d(m_bx$d),
+        .q(m_bx$q),
+        .clock(m_bx$clock)
+    );
+    processing_element$sc_slice$m_by m_by(
+        .d(m_by$d),
+        .q(m_by$q),
+        .clock(m_by$clock)
+    );
+    processing_element$sc_slice$m_wx m_wx(
+        .d(m_wx$d),
+        .q(m_wx$q),
+        .clock(m_wx$clock)
+    );
+    processing_element$sc_slice$m_wy m_wy(
+        .d(m_wy$d),
+        .q(m_wy$q),
+        .clock(m_wy$clock)
+    );
+    processing_element$sc_slice$m_sh m_sh(
+        .d(m_sh$d),
+        .q(m_sh$q),
+        .clock(m_sh$clock)
+    );
+    processing_element$sc_slice$m_pass m_pass(
+        .d(m_pass$d),
+        .q(m_pass$q),
+        .clock(m_pass$clock)
+    );
+    processing_element$sc_slice$m_first m_first(
+        .d(m_first$d),
+        .q(m_first$q),
+        .clock(m_first$clock)
+    );
+    processing_element$sc_slice$m_count m_count(
+        .d(m_count$d),
+        .q(m_count$q),
+        .clock(m_count$clock)
+    );
+    processing_element$sc_slice$m_retire m_retire(
+        .d(m_retire$d),
+        .q(m_retire$q),
+        .clock(m_retire$clock)
+    );
+    processing_element$sc_slice$s_v s_v(
+        .d(s_v$d),
+        .q(s_v$q),
+        .clock(s_v$clock)
+    );
+    processing_element$sc_slice$s_id s_id(
+        .d(s_id$d),
+        .q(s_id$q),
+        .clock(s_id$clock)
+    );
+    processing_element$sc_slice$s_ax s_ax(
+        .d(s_ax$d),
+        .q(s_ax$q),
+        .clock(s_ax$clock)
+    );
+    processing_element$sc_slice$s_ay s_ay(
+        .d(s_ay$d),
+        .q(s_ay$q),
+        .clock(s_ay$clock)
+    );
+    processing_element$sc_slice$s_bx s_bx(
+        .d(s_bx$d),
+        .q(s_bx$q),
+        .clock(s_bx$clock)
+    );
+    processing_element$sc_slice$s_by s_by(
+        .d(s_by$d),
+        .q(s_by$q),
+        .clock(s_by$clock)
+    );
+    processing_element$sc_slice$s_wx s_wx(
+        .d(s_wx$d),
+        .q(s_wx$q),
+        .clock(s_wx$clock)
+    );
+    processing_element$sc_slice$s_wy s_wy(
+        .d(s_wy$d),
+        .q(s_wy$q),
+        .clock(s_wy$clock)
+    );
+    processing_element$sc_slice$s_sh s_sh(
+        .d(s_sh$d),
+        .q(s_sh$q),
+        .clock(s_sh$clock)
+    );
+    processing_element$sc_slice$s_pass s_pass(
+        .d(s_pass$d),
+        .q(s_pass$q),
+        .clock(s_pass$clock)
+    );
+    processing_element$sc_slice$s_first s_first(
+        .d(s_first$d),
+        .q(s_first$q),
+        .clock(s_first$clock)
+    );
+    processing_element$sc_slice$s_count s_count(
+        .d(s_count$d),
+        .q(s_count$q),
+        .clock(s_count$clock)
+    );
+    processing_element$sc_slice$s_retire s_retire(
+        .d(s_retire$d),
+        .q(s_retire$q),
+        .clock(s_retire$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        m_v$clock = clock;
+        m_id$clock = clock;
+        m_ax$clock = clock;
+        m_ay$clock = clock;
+        m_bx$clock = clock;
+        m_by$clock = clock;
+        m_wx$clock = clock;
+        m_wy$clock = clock;
+        m_sh$clock = clock;
+        m_pass$clock = clock;
+        m_first$clock = clock;
+        m_count$clock = clock;
+        m_retire$clock = clock;
+        s_v$clock = clock;
+        s_id$clock = clock;
+        s_ax$clock = clock;
+        s_ay$clock = clock;
+        s_bx$clock = clock;
+        s_by$clock = clock;
+        s_wx$clock = clock;
+        s_wy$clock = clock;
+        s_sh$clock = clock;
+        s_pass$clock = clock;
+        s_first$clock = clock;
+        s_count$clock = clock;
+        s_retire$clock = clock;
+        m_v$d = m_v$q;
+        m_id$d = m_id$q;
+        m_ax$d = m_ax$q;
+        m_ay$d = m_ay$q;
+        m_bx$d = m_bx$q;
+        m_by$d = m_by$q;
+        m_wx$d = m_wx$q;
+        m_wy$d = m_wy$q;
+        m_sh$d = m_sh$q;
+        m_pass$d = m_pass$q;
+        m_first$d = m_first$q;
+        m_count$d = m_count$q;
+        m_retire$d = m_retire$q;
+        s_v$d = s_v$q;
+        s_id$d = s_id$q;
+        s_ax$d = s_ax$q;
+        s_ay$d = s_ay$q;
+        s_bx$d = s_bx$q;
+        s_by$d = s_by$q;
+        s_wx$d = s_wx$q;
+        s_wy$d = s_wy$q;
+        s_sh$d = s_sh$q;
+        s_pass$d = s_pass$q;
+        s_first$d = s_first$q;
+        s_count$d = s_count$q;
+        s_retire$d = s_retire$q;
+        in_ready = ~s_v$q;
+        take = in_valid & ~s_v$q;
+        load_main = ~m_v$q | out_ready;
+        if (load_main) begin
+            m_v$d = s_v$q | take;
+            s_v$d = 1'b0;
+            if (s_v$q) begin
+                m_id$d = s_id$q;
+                m_ax$d = s_ax$q;
+                m_ay$d = s_ay$q;
+                m_bx$d = s_bx$q;
+                m_by$d = s_by$q;
+                m_wx$d = s_wx$q;
+                m_wy$d = s_wy$q;
+                m_sh$d = s_sh$q;
+                m_pass$d = s_pass$q;
+                m_first$d = s_first$q;
+                m_count$d = s_count$q;
+                m_retire$d = s_retire$q;
+            end
+            else begin
+                m_id$d = in_id;
+                m_ax$d = in_ax;
+                m_ay$d = in_ay;
+                m_bx$d = in_bx;
+                m_by$d = in_by;
+                m_wx$d = in_wx;
+                m_wy$d = in_wy;
+                m_sh$d = in_sh;
+                m_pass$d = in_pass;
+                m_first$d = in_first;
+                m_count$d = in_count;
+                m_retire$d = in_retire;
+            end
+        end
+        else begin
+            s_v$d = s_v$q | take;
+        end
+        if (~s_v$q) begin
+            s_id$d = in_id;
+            s_ax$d = in_ax;
+            s_ay$d = in_ay;
+            s_bx$d = in_bx;
+            s_by$d = in_by;
+            s_wx$d = in_wx;
+            s_wy$d = in_wy;
+            s_sh$d = in_sh;
+            s_pass$d = in_pass;
+            s_first$d = in_first;
+            s_count$d = in_count;
+            s_retire$d = in_retire;
+        end
+        out_valid = m_v$q;
+        out_id = m_id$q;
+        out_ax = m_ax$q;
+        out_ay = m_ay$q;
+        out_bx = m_bx$q;
+        out_by = m_by$q;
+        out_wx = m_wx$q;
+        out_wy = m_wy$q;
+        out_sh = m_sh$q;
+        out_pass = m_pass$q;
+        out_first = m_first$q;
+        out_count = m_count$q;
+        out_retire = m_retire$q;
+        occupied = m_v$q | s_v$q;
+    end
+    
+endmodule // processing_element$sc_slice
+
+
+module processing_element$sc_slice$m_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_ax
+
+
+module processing_element$sc_slice$m_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_ay
+
+
+module processing_element$sc_slice$m_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_bx
+
+
+module processing_element$sc_slice$m_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_by
+
+
+module processing_element$sc_slice$m_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_count
+
+
+module processing_element$sc_slice$m_first(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_first
+
+
+module processing_element$sc_slice$m_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_id
+
+
+module processing_element$sc_slice$m_pass(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_pass
+
+
+module processing_element$sc_slice$m_retire(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_retire
+
+
+module processing_element$sc_slice$m_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_sh
+
+
+module processing_element$sc_slice$m_v(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_v
+
+
+module processing_element$sc_slice$m_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_wx
+
+
+module processing_element$sc_slice$m_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$m_wy
+
+
+module processing_element$sc_slice$s_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_ax
+
+
+module processing_element$sc_slice$s_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_ay
+
+
+module processing_element$sc_slice$s_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_bx
+
+
+module processing_element$sc_slice$s_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_by
+
+
+module processing_element$sc_slice$s_count(d,q,clock);
+    
+    // Module arguments
+    input wire  [10:0] d;
+    output reg  [10:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 11'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_count
+
+
+module processing_element$sc_slice$s_first(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_first
+
+
+module processing_element$sc_slice$s_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_id
+
+
+module processing_element$sc_slice$s_pass(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_pass
+
+
+module processing_element$sc_slice$s_retire(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_retire
+
+
+module processing_element$sc_slice$s_sh(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_sh
+
+
+module processing_element$sc_slice$s_v(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_v
+
+
+module processing_element$sc_slice$s_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_wx
+
+
+module processing_element$sc_slice$s_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$sc_slice$s_wy
 
 
 module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
