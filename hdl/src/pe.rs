@@ -46,13 +46,19 @@
 //! retire goes straight to the [`IntersectionUnit`] as a retire job; a job waits for its patch's
 //! verdict, then goes to the unit with the tag's ray range if it passed, or is dropped.
 //!
+//! A [`PatchSlice`] (two entries, `in_ready` a register) sits on each side of the merger: every
+//! input of the merger is a register, and the unit's `patch_ready` reaches only the second
+//! slice, never the screener's output FIFO or the tag FIFO. The tag FIFO keeps two copies of its
+//! words, one read at the head and one at the entry after it, so that no RAM address depends on
+//! the merger's pop either.
+//!
 //! `cmd_ready` is high while the tag FIFO has room and the loader can take an id (for a retire
 //! too: the condition must not depend on `cmd_retire`); it depends on registers only.
 //!
 //! # Latency and throughput
 //!
 //! A job reaches the intersection unit the loader's latency (`T_c + 3` without a cache) plus the
-//! screener's after it is accepted; the unit then issues one ray per clock. Jobs stream back to
+//! screener's plus the two slices' (one clock each) after it is accepted; the unit then issues one ray per clock. Jobs stream back to
 //! back at one per clock through the loader and the screener, so in steady state the PE is bound
 //! by the slower of the host memory (one patch per `T_c`) and the intersection unit (one ray per
 //! clock), the balance Section 4 of the paper is about.
@@ -155,6 +161,9 @@ pub struct ProcessingElement {
     tags_next: Bram<TAG_WIDTH, TAG_BITS>,
     /// The head was popped in the last cycle: the head is at `tags_next`'s read register.
     popped: DFF<bool>,
+    /// `rd_ptr + 1` with bit 0 inverted (so that its power-up zero stands for 1): no carry chain
+    /// before `tags_next`'s read address.
+    rd_inc_x: DFF<Bits<TAG_BITS>>,
     wr_ptr: DFF<Bits<TAG_BITS>>,
     rd_ptr: DFF<Bits<TAG_BITS>>,
     tag_count: DFF<Bits<7>>,
@@ -230,6 +239,7 @@ impl Default for ProcessingElement {
             tags: Default::default(),
             tags_next: Default::default(),
             popped: Default::default(),
+            rd_inc_x: Default::default(),
             wr_ptr: Default::default(),
             rd_ptr: Default::default(),
             tag_count: Default::default(),
@@ -254,7 +264,7 @@ impl Default for ProcessingElement {
 impl Logic for ProcessingElement {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid, popped);
+        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid, popped, rd_inc_x);
         self.loader.clock.next = self.clock.val();
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
@@ -408,12 +418,13 @@ impl Logic for ProcessingElement {
         // `tags`'s (so no RAM address depends on this cycle's pop, which depends on the unit's
         // `patch_ready`). The head is valid next cycle when an entry written before this cycle
         // remains (the RAMs read before they write).
-        self.rd_inc.next = self.rd_ptr.q.val() + self.one_ptr.val();
+        self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one_ptr.val();
         self.tags.read_address.next = self.rd_ptr.q.val();
         self.tags_next.read_address.next = self.rd_inc.val();
         self.popped.d.next = self.pop.val();
         if self.pop.val() {
             self.rd_ptr.d.next = self.rd_inc.val();
+            self.rd_inc_x.d.next = (self.rd_inc.val() + self.one_ptr.val()) ^ self.one_ptr.val();
         }
         self.head_valid.d.next = self.tag_count.q.val() > self.zero7.val();
         if self.pop.val() {

@@ -229,6 +229,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  popped$d;
     wire  popped$q;
     reg  popped$clock;
+    reg  [5:0] rd_inc_x$d;
+    wire  [5:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
     reg  [5:0] wr_ptr$d;
     wire  [5:0] wr_ptr$q;
     reg  wr_ptr$clock;
@@ -443,6 +446,11 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .q(popped$q),
         .clock(popped$clock)
     );
+    processing_element$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
     processing_element$wr_ptr wr_ptr(
         .d(wr_ptr$d),
         .q(wr_ptr$q),
@@ -471,11 +479,13 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         tag_count$clock = clock;
         head_valid$clock = clock;
         popped$clock = clock;
+        rd_inc_x$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         tag_count$d = tag_count$q;
         head_valid$d = head_valid$q;
         popped$d = popped$q;
+        rd_inc_x$d = rd_inc_x$q;
         loader$clock = clock;
         cache$clock = clock;
         screener$clock = clock;
@@ -608,12 +618,13 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_first = iu_slice$out_first;
         unit$patch_count = iu_slice$out_count;
         unit$patch_retire = iu_slice$out_retire;
-        rd_inc = rd_ptr$q + one_ptr;
+        rd_inc = rd_inc_x$q ^ one_ptr;
         tags$read_address = rd_ptr$q;
         tags_next$read_address = rd_inc;
         popped$d = pop;
         if (pop) begin
             rd_ptr$d = rd_inc;
+            rd_inc_x$d = (rd_inc + one_ptr) ^ one_ptr;
         end
         head_valid$d = tag_count$q > zero7;
         if (pop) begin
@@ -4766,6 +4777,25 @@ module processing_element$popped(d,q,clock);
     end
           
 endmodule // processing_element$popped
+
+
+module processing_element$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$rd_inc_x
 
 
 module processing_element$rd_ptr(d,q,clock);
