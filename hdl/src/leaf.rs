@@ -27,6 +27,12 @@
 //! * [`BramOut`]: [`Bram`] with its read registered twice (two clocks from address to data); on
 //!   ECP5 (`SHELLING_ECP5` defined) hand-instantiated `DP16KD`s with their output register on,
 //!   0.96 ns from clock to data instead of 5.83.
+//! * [`IssueSequencer`], [`HitPipe`], [`NearestMerge`]: the intersection unit's stages 0–1,
+//!   2–8 (but for the products and the key) and 8–9 with the readout's clear: its sequencer,
+//!   valid bits, tags, side values, comparisons and forwarding registers, some eighty
+//!   registers that were `DFF`s and cost the simulation most of its time (the unit ran at
+//!   180–190k cycles/s, now about 800k). Their outputs are registers or functions of registers
+//!   only, so they add no update pass.
 
 use crate::formats::{from_bits, PRODUCT_SHIFT};
 use crate::intersection::model::key;
@@ -982,22 +988,23 @@ struct IssueRegs {
 ///
 /// Ports (formats as in the unit's patch port): in `patch_valid`, `patch_ax` … `patch_wy` (18
 /// bits each, two's complement), `patch_sh` (6), `patch_id` (16), `patch_first` (10),
-/// `patch_count` (11), `patch_retire`; out `patch_ready`, `busy`, `kill`, `cur` (10), `v1`,
+/// `patch_count` (11), `patch_retire`; out `full`, `busy`, `kill`, `cur` (10), `v1`,
 /// `tag1` (32), `o_ax` … `o_wy` (18 each).
 ///
 /// Registers: `remaining` (rays of the current patch still to issue), `cur` (the ray issued in
 /// this clock while `remaining ≠ 0`), the current patch `p_*` and stage 1: `v1` (a ray of a
 /// test job was issued in the clock before), `tag1` = `{ray (31…22), sh (21…16), id (15…0)}`
 /// and the patch operands `o_*` of that ray. A patch is taken at the rising edge when
-/// `patch_valid && patch_ready`; otherwise a ray issues when `remaining ≠ 0` (`remaining`
+/// `patch_valid && !full`; otherwise a ray issues when `remaining ≠ 0` (`remaining`
 /// counts down, `cur` up, modulo 1024).
 ///
 /// Outputs, all functions of the registers only (so the leaf has no combinational path from an
-/// input): `patch_ready` = `remaining ≤ 1`, `busy` = a ray issues or `v1`, `kill` = a ray of a
+/// input): `full` = `remaining > 1` (no patch can be taken: the unit's `patch_ready` is its
+/// complement), `busy` = a ray issues or `v1`, `kill` = a ray of a
 /// retire job issues (its live bit is cleared), and the registers `cur`, `v1`, `tag1`, `o_*`.
 /// Latency: `v1`, `tag1` and `o_*` describe the ray issued one clock earlier. All registers
-/// are zero at power-up (`patch_ready` high).
-#[derive(LogicBlock)]
+/// are zero at power-up.
+#[derive(LogicBlock, Default)]
 pub struct IssueSequencer {
     pub clock: Signal<In, Clock>,
     pub patch_valid: Signal<In, bool>,
@@ -1012,7 +1019,7 @@ pub struct IssueSequencer {
     pub patch_first: Signal<In, Bits<10>>,
     pub patch_count: Signal<In, Bits<11>>,
     pub patch_retire: Signal<In, bool>,
-    pub patch_ready: Signal<Out, bool>,
+    pub full: Signal<Out, bool>,
     pub busy: Signal<Out, bool>,
     pub kill: Signal<Out, bool>,
     pub cur: Signal<Out, Bits<10>>,
@@ -1025,40 +1032,6 @@ pub struct IssueSequencer {
     pub o_wx: Signal<Out, Bits<18>>,
     pub o_wy: Signal<Out, Bits<18>>,
     _r: IssueRegs,
-}
-
-impl Default for IssueSequencer {
-    fn default() -> Self {
-        IssueSequencer {
-            clock: Default::default(),
-            patch_valid: Default::default(),
-            patch_ax: Default::default(),
-            patch_ay: Default::default(),
-            patch_bx: Default::default(),
-            patch_by: Default::default(),
-            patch_wx: Default::default(),
-            patch_wy: Default::default(),
-            patch_sh: Default::default(),
-            patch_id: Default::default(),
-            patch_first: Default::default(),
-            patch_count: Default::default(),
-            patch_retire: Default::default(),
-            // `remaining` is zero at power-up.
-            patch_ready: Signal::new_with_default(true),
-            busy: Default::default(),
-            kill: Default::default(),
-            cur: Default::default(),
-            v1: Default::default(),
-            tag1: Default::default(),
-            o_ax: Default::default(),
-            o_ay: Default::default(),
-            o_bx: Default::default(),
-            o_by: Default::default(),
-            o_wx: Default::default(),
-            o_wy: Default::default(),
-            _r: IssueRegs::default(),
-        }
-    }
 }
 
 impl Logic for IssueSequencer {
@@ -1090,7 +1063,7 @@ impl Logic for IssueSequencer {
             }
             self._r = n;
             let issue = n.remaining != 0;
-            self.patch_ready.next = n.remaining <= 1;
+            self.full.next = n.remaining > 1;
             self.busy.next = issue || n.v1;
             self.kill.next = issue && n.p_retire;
             self.cur.next = bits(n.cur);
@@ -1106,7 +1079,7 @@ impl Logic for IssueSequencer {
     }
 
     fn connect(&mut self) {
-        self.patch_ready.connect();
+        self.full.connect();
         self.busy.connect();
         self.kill.connect();
         self.cur.connect();
@@ -1133,7 +1106,7 @@ impl Logic for IssueSequencer {
             v += &format!("   p_{o} = 18'd0;\n   o_{o} = 18'd0;\n");
         }
         v += "end\n";
-        v += "always @(*) begin\n   patch_ready = remaining <= 11'd1;\n   busy = issue || v1;\n   kill = issue && p_retire;\nend\n";
+        v += "always @(*) begin\n   full = remaining > 11'd1;\n   busy = issue || v1;\n   kill = issue && p_retire;\nend\n";
         v += "always @(posedge clock) begin\n   v1 <= issue && !p_retire;\n   tag1 <= {cur, p_sh, p_id};\n";
         for o in ops {
             v += &format!("   o_{o} <= p_{o};\n");
@@ -1156,7 +1129,7 @@ impl Logic for IssueSequencer {
                 .chain(["patch_sh", "patch_id", "patch_first", "patch_count", "patch_retire"])
                 .map(String::from)
                 .collect(),
-            outputs: ["patch_ready", "busy", "kill", "cur", "v1", "tag1", "o_ax", "o_ay", "o_bx", "o_by"]
+            outputs: ["full", "busy", "kill", "cur", "v1", "tag1", "o_ax", "o_ay", "o_bx", "o_by"]
                 .into_iter()
                 .chain(["o_wx", "o_wy"])
                 .map(String::from)

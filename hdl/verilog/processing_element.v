@@ -7275,7 +7275,7 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
     reg  [9:0] seq$patch_first;
     reg  [10:0] seq$patch_count;
     reg  seq$patch_retire;
-    wire  seq$patch_ready;
+    wire  seq$full;
     wire  seq$busy;
     wire  seq$kill;
     wire  [9:0] seq$cur;
@@ -7381,7 +7381,7 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         .patch_first(seq$patch_first),
         .patch_count(seq$patch_count),
         .patch_retire(seq$patch_retire),
-        .patch_ready(seq$patch_ready),
+        .full(seq$full),
         .busy(seq$busy),
         .kill(seq$kill),
         .cur(seq$cur),
@@ -7515,7 +7515,7 @@ module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,pat
         seq$patch_first = patch_first;
         seq$patch_count = patch_count;
         seq$patch_retire = patch_retire;
-        patch_ready = seq$patch_ready;
+        patch_ready = ~seq$full;
         dir_mem_x$read_address = seq$cur;
         dir_mem_y$read_address = seq$cur;
         dir_mem_x$write_address = dir_addr;
@@ -8845,7 +8845,7 @@ module processing_element$unit$products(clock,dx,dy,ax,ay,bx,by,wx,wy,dx_ay,dy_a
 endmodule // processing_element$unit$products
 
 
-module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,patch_ready,busy,kill,cur,v1,tag1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
+module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,full,busy,kill,cur,v1,tag1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
     
     // Module arguments
     input wire  clock;
@@ -8861,7 +8861,7 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
     input wire  [9:0] patch_first;
     input wire  [10:0] patch_count;
     input wire  patch_retire;
-    output reg  patch_ready;
+    output reg  full;
     output reg  busy;
     output reg  kill;
     output reg  [9:0] cur;
@@ -8908,7 +8908,7 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        o_wy = 18'd0;
     end
     always @(*) begin
-       patch_ready = remaining <= 11'd1;
+       full = remaining > 11'd1;
        busy = issue || v1;
        kill = issue && p_retire;
     end
