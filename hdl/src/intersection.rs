@@ -67,8 +67,8 @@
 //! test counter, side values, hit decision, each test's ray and id), [`NearestMerge`] (stages 8
 //! and 9: comparisons, forwarding, verdict, write-back and the readout's clear), and the five
 //! [`BramOut`]s. The unit's own logic is wiring, the ray memory's read-address multiplexer and
-//! the readout's zeroing, all combinational. (Before, the registers were `DFF`s of the unit:
-//! 180–190k simulated cycles per second instead of about 800k.)
+//! the readout's zeroing, all combinational. (As 73 `DFF`s of the unit, the registers cost the
+//! simulation 2.7 times as long: README, "Speed".)
 //!
 //! `tests` counts a live test three clocks after its issue.
 //!
@@ -97,8 +97,11 @@
 //! Resources (`cargo xtask fpga --blocks intersection_unit --families ecp5`: Yosys `synth_ecp5`
 //! with `SHELLING_ECP5`, nextpnr-ecp5 on the LFE5U-85F-6, seed 1): 6 `MULT18X18D` (with their
 //! input and output registers), 6 `DP16KD` (directions 2, live bits 1, keys 2, valid + id 1,
-//! all with the output register), 1146 LUT4s and 1017 flip-flops; 157.4 MHz (critical path
-//! 6.35 ns: the `mem_meta` block RAM's output register to the id comparison `cm_lt`).
+//! all with the output register), 1186 LUT4s and 1017 flip-flops; 168.4 MHz (critical path
+//! 5.94 ns, 13 logic levels: the sequencer's `remaining` through its decrement and the take
+//! decision to its own clock enable). (Before the registers moved into leaves, the same logic
+//! placed as 1146 LUT4s at 157.4 MHz, its critical path from the `mem_meta` block RAM's output
+//! register to the id comparison `cm_lt`.)
 //!
 //! # Models
 //!

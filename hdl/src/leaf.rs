@@ -30,9 +30,9 @@
 //! * [`IssueSequencer`], [`HitPipe`], [`NearestMerge`]: the intersection unit's stages 0–1,
 //!   2–8 (but for the products and the key) and 8–9 with the readout's clear: its sequencer,
 //!   valid bits, tags, side values, comparisons and forwarding registers, some eighty
-//!   registers that were `DFF`s and cost the simulation most of its time (the unit ran at
-//!   180–190k cycles/s, now about 800k). Their outputs are registers or functions of registers
-//!   only, so they add no update pass.
+//!   registers that were `DFF`s and cost the simulation most of its time (2.7 times as long:
+//!   README, "Speed"). Their outputs are registers or functions of registers only, so they add
+//!   no update pass.
 
 use crate::formats::{from_bits, PRODUCT_SHIFT};
 use crate::intersection::model::key;
