@@ -64,7 +64,8 @@ module intersection_formal (
     wire [15:0] res_id;
     wire [31:0] res_key, tests;
     // Internal state, exposed by intersection.sby for the induction (not ports of the exported
-    // module): the sequencer and the stage valid bits.
+    // module): the sequencer and the stage valid bits, registers of the leaves `seq`
+    // (IssueSequencer), `pipe` (HitPipe) and `merge` (NearestMerge).
     wire [10:0] remaining;
     wire [9:0]  cur;
     wire        p_retire, v1, v2, v3, v4, v5, v6, v7, v8, v9;
@@ -79,9 +80,9 @@ module intersection_formal (
         .res_re(res_re), .res_addr(res_addr), .res_hit(res_hit), .res_id(res_id),
         .res_key(res_key), .busy(busy), .tests(tests)
 `ifdef INVARIANTS
-        , .remaining$q(remaining), .cur$q(cur), .p_retire$q(p_retire),
-        .v1$q(v1), .v2$q(v2), .v3$q(v3), .v4$q(v4), .v5$q(v5), .v6$q(v6),
-        .v7$q(v7), .v8$q(v8), .v9$q(v9)
+        , .seq_remaining(remaining), .seq$cur(cur), .seq_p_retire(p_retire),
+        .seq$v1(v1), .pipe_v2(v2), .pipe_v3(v3), .pipe_v4(v4), .pipe_v5(v5), .pipe_v6(v6),
+        .pipe_v7(v7), .pipe_v8(v8), .merge_v9(v9)
 `endif
     );
 

@@ -31,88 +31,41 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     output reg  [31:0] tests;
     
     // Constant declarations
-    localparam  zero11 = 11'b0;
-    localparam  one11 = 11'b1;
-    localparam  one10 = 10'b1;
-    localparam  one32 = 32'h1;
     localparam  zero32 = 32'h0;
     localparam  zero16 = 16'h0;
-    localparam  hit_flag = 17'b10000000000000000;
-    localparam  zero17 = 17'b0;
     
     // Stub signals
-    reg  [10:0] remaining$d;
-    wire  [10:0] remaining$q;
-    reg  remaining$clock;
-    reg  [9:0] cur$d;
-    wire  [9:0] cur$q;
-    reg  cur$clock;
-    reg  [17:0] p_ax$d;
-    wire  [17:0] p_ax$q;
-    reg  p_ax$clock;
-    reg  [17:0] p_ay$d;
-    wire  [17:0] p_ay$q;
-    reg  p_ay$clock;
-    reg  [17:0] p_bx$d;
-    wire  [17:0] p_bx$q;
-    reg  p_bx$clock;
-    reg  [17:0] p_by$d;
-    wire  [17:0] p_by$q;
-    reg  p_by$clock;
-    reg  [17:0] p_wx$d;
-    wire  [17:0] p_wx$q;
-    reg  p_wx$clock;
-    reg  [17:0] p_wy$d;
-    wire  [17:0] p_wy$q;
-    reg  p_wy$clock;
-    reg  [5:0] p_sh$d;
-    wire  [5:0] p_sh$q;
-    reg  p_sh$clock;
-    reg  [15:0] p_id$d;
-    wire  [15:0] p_id$q;
-    reg  p_id$clock;
-    reg  p_retire$d;
-    wire  p_retire$q;
-    reg  p_retire$clock;
+    reg  seq$clock;
+    reg  seq$patch_valid;
+    reg  [17:0] seq$patch_ax;
+    reg  [17:0] seq$patch_ay;
+    reg  [17:0] seq$patch_bx;
+    reg  [17:0] seq$patch_by;
+    reg  [17:0] seq$patch_wx;
+    reg  [17:0] seq$patch_wy;
+    reg  [5:0] seq$patch_sh;
+    reg  [15:0] seq$patch_id;
+    reg  [9:0] seq$patch_first;
+    reg  [10:0] seq$patch_count;
+    reg  seq$patch_retire;
+    wire  seq$full;
+    wire  seq$busy;
+    wire  seq$kill;
+    wire  [9:0] seq$cur;
+    wire  seq$v1;
+    wire  [31:0] seq$tag1;
+    wire  [17:0] seq$o_ax;
+    wire  [17:0] seq$o_ay;
+    wire  [17:0] seq$o_bx;
+    wire  [17:0] seq$o_by;
+    wire  [17:0] seq$o_wx;
+    wire  [17:0] seq$o_wy;
     reg  alive_mem$clock;
     reg  [9:0] alive_mem$read_address;
     wire  alive_mem$read_data;
     reg  [9:0] alive_mem$write_address;
     reg  alive_mem$write_data;
     reg  alive_mem$write_enable;
-    reg  [31:0] test_count$d;
-    wire  [31:0] test_count$q;
-    reg  test_count$clock;
-    reg  v1$d;
-    wire  v1$q;
-    reg  v1$clock;
-    reg  [31:0] tag1$d;
-    wire  [31:0] tag1$q;
-    reg  tag1$clock;
-    reg  [17:0] o_ax$d;
-    wire  [17:0] o_ax$q;
-    reg  o_ax$clock;
-    reg  [17:0] o_ay$d;
-    wire  [17:0] o_ay$q;
-    reg  o_ay$clock;
-    reg  [17:0] o_bx$d;
-    wire  [17:0] o_bx$q;
-    reg  o_bx$clock;
-    reg  [17:0] o_by$d;
-    wire  [17:0] o_by$q;
-    reg  o_by$clock;
-    reg  [17:0] o_wx$d;
-    wire  [17:0] o_wx$q;
-    reg  o_wx$clock;
-    reg  [17:0] o_wy$d;
-    wire  [17:0] o_wy$q;
-    reg  o_wy$clock;
-    reg  v2$d;
-    wire  v2$q;
-    reg  v2$clock;
-    reg  [31:0] tag2$d;
-    wire  [31:0] tag2$q;
-    reg  tag2$clock;
     reg  dir_mem_x$clock;
     reg  [9:0] dir_mem_x$read_address;
     wire  [17:0] dir_mem_x$read_data;
@@ -140,64 +93,24 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     wire  [31:0] products$dy_bx;
     wire  [31:0] products$dx_wx;
     wire  [31:0] products$dy_wy;
-    reg  v3$d;
-    wire  v3$q;
-    reg  v3$clock;
-    reg  [31:0] tag3$d;
-    wire  [31:0] tag3$q;
-    reg  tag3$clock;
-    reg  v4$d;
-    wire  v4$q;
-    reg  v4$clock;
-    reg  [31:0] tag4$d;
-    wire  [31:0] tag4$q;
-    reg  tag4$clock;
-    reg  v5$d;
-    wire  v5$q;
-    reg  v5$clock;
-    reg  [31:0] sa5$d;
-    wire  [31:0] sa5$q;
-    reg  sa5$clock;
-    reg  [31:0] sb5$d;
-    wire  [31:0] sb5$q;
-    reg  sb5$clock;
-    reg  [9:0] ray5$d;
-    wire  [9:0] ray5$q;
-    reg  ray5$clock;
-    reg  [15:0] id5$d;
-    wire  [15:0] id5$q;
-    reg  id5$clock;
+    reg  pipe$clock;
+    reg  pipe$v1;
+    reg  [31:0] pipe$tag1;
+    reg  pipe$alive;
+    reg  [31:0] pipe$dx_ay;
+    reg  [31:0] pipe$dy_ax;
+    reg  [31:0] pipe$dx_by;
+    reg  [31:0] pipe$dy_bx;
+    wire  [31:0] pipe$tests;
+    wire  pipe$busy;
+    wire  [5:0] pipe$sh4;
+    wire  [9:0] pipe$ray6;
+    wire  pipe$v8;
+    wire  [25:0] pipe$tag8;
     reg  key_scale$clock;
     reg  [31:0] key_scale$q;
     reg  [5:0] key_scale$sh;
     wire  [31:0] key_scale$key;
-    reg  v6$d;
-    wire  v6$q;
-    reg  v6$clock;
-    reg  [9:0] ray6$d;
-    wire  [9:0] ray6$q;
-    reg  ray6$clock;
-    reg  [15:0] id6$d;
-    wire  [15:0] id6$q;
-    reg  id6$clock;
-    reg  v7$d;
-    wire  v7$q;
-    reg  v7$clock;
-    reg  [9:0] ray7$d;
-    wire  [9:0] ray7$q;
-    reg  ray7$clock;
-    reg  [15:0] id7$d;
-    wire  [15:0] id7$q;
-    reg  id7$clock;
-    reg  v8$d;
-    wire  v8$q;
-    reg  v8$clock;
-    reg  [9:0] ray8$d;
-    wire  [9:0] ray8$q;
-    reg  ray8$clock;
-    reg  [15:0] id8$d;
-    wire  [15:0] id8$q;
-    reg  id8$clock;
     reg  mem_key$clock;
     reg  [9:0] mem_key$read_address;
     wire  [31:0] mem_key$read_data;
@@ -210,176 +123,49 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
     reg  [9:0] mem_meta$write_address;
     reg  [16:0] mem_meta$write_data;
     reg  mem_meta$write_enable;
-    reg  cm_hit$d;
-    wire  cm_hit$q;
-    reg  cm_hit$clock;
-    reg  cm_gt$d;
-    wire  cm_gt$q;
-    reg  cm_gt$clock;
-    reg  cm_eq$d;
-    wire  cm_eq$q;
-    reg  cm_eq$clock;
-    reg  cm_lt$d;
-    wire  cm_lt$q;
-    reg  cm_lt$clock;
-    reg  c1_gt$d;
-    wire  c1_gt$q;
-    reg  c1_gt$clock;
-    reg  c1_eq$d;
-    wire  c1_eq$q;
-    reg  c1_eq$clock;
-    reg  c1_lt$d;
-    wire  c1_lt$q;
-    reg  c1_lt$clock;
-    reg  c2_gt$d;
-    wire  c2_gt$q;
-    reg  c2_gt$clock;
-    reg  c2_eq$d;
-    wire  c2_eq$q;
-    reg  c2_eq$clock;
-    reg  c2_lt$d;
-    wire  c2_lt$q;
-    reg  c2_lt$clock;
-    reg  c3_gt$d;
-    wire  c3_gt$q;
-    reg  c3_gt$clock;
-    reg  c3_eq$d;
-    wire  c3_eq$q;
-    reg  c3_eq$clock;
-    reg  c3_lt$d;
-    wire  c3_lt$q;
-    reg  c3_lt$clock;
-    reg  m1$d;
-    wire  m1$q;
-    reg  m1$clock;
-    reg  m2$d;
-    wire  m2$q;
-    reg  m2$clock;
-    reg  m3$d;
-    wire  m3$q;
-    reg  m3$clock;
-    reg  v9$d;
-    wire  v9$q;
-    reg  v9$clock;
-    reg  [9:0] ray9$d;
-    wire  [9:0] ray9$q;
-    reg  ray9$clock;
-    reg  [15:0] id9$d;
-    wire  [15:0] id9$q;
-    reg  id9$clock;
-    reg  [31:0] key9$d;
-    wire  [31:0] key9$q;
-    reg  key9$clock;
-    reg  fw_valid$d;
-    wire  fw_valid$q;
-    reg  fw_valid$clock;
-    reg  [9:0] fw_ray$d;
-    wire  [9:0] fw_ray$q;
-    reg  fw_ray$clock;
-    reg  [31:0] fw_key$d;
-    wire  [31:0] fw_key$q;
-    reg  fw_key$clock;
-    reg  [15:0] fw_id$d;
-    wire  [15:0] fw_id$q;
-    reg  fw_id$clock;
-    reg  fw2_valid$d;
-    wire  fw2_valid$q;
-    reg  fw2_valid$clock;
-    reg  [9:0] fw2_ray$d;
-    wire  [9:0] fw2_ray$q;
-    reg  fw2_ray$clock;
-    reg  [31:0] fw2_key$d;
-    wire  [31:0] fw2_key$q;
-    reg  fw2_key$clock;
-    reg  [15:0] fw2_id$d;
-    wire  [15:0] fw2_id$q;
-    reg  fw2_id$clock;
-    reg  fw3_valid$d;
-    wire  fw3_valid$q;
-    reg  fw3_valid$clock;
-    reg  rd_valid$d;
-    wire  rd_valid$q;
-    reg  rd_valid$clock;
-    reg  [9:0] rd_addr$d;
-    wire  [9:0] rd_addr$q;
-    reg  rd_addr$clock;
-    reg  z1$d;
-    wire  z1$q;
-    reg  z1$clock;
-    reg  z2$d;
-    wire  z2$q;
-    reg  z2$clock;
-    
-    // Local signals
-    reg  live;
-    reg  issue;
-    reg  take;
-    reg  [9:0] ray4;
-    reg  [5:0] sh4;
-    reg  [15:0] id4;
-    reg  [31:0] side_a;
-    reg  [31:0] side_b;
-    reg  [31:0] q;
-    reg  meta_hit;
-    reg  [15:0] meta_id;
-    reg  better;
-    reg  [16:0] new_meta;
+    reg  merge$clock;
+    reg  merge$v8;
+    reg  [25:0] merge$tag8;
+    reg  [31:0] merge$key;
+    reg  [31:0] merge$mem_key;
+    reg  [16:0] merge$mem_meta;
+    reg  merge$res_re;
+    reg  [9:0] merge$res_addr;
+    wire  [9:0] merge$write_address;
+    wire  [31:0] merge$write_key;
+    wire  [16:0] merge$write_meta;
+    wire  merge$write_enable;
+    wire  merge$z2;
+    wire  merge$busy;
+    wire  merge$fw_valid;
     
     // Sub module instances
-    intersection_unit$remaining remaining(
-        .d(remaining$d),
-        .q(remaining$q),
-        .clock(remaining$clock)
-    );
-    intersection_unit$cur cur(
-        .d(cur$d),
-        .q(cur$q),
-        .clock(cur$clock)
-    );
-    intersection_unit$p_ax p_ax(
-        .d(p_ax$d),
-        .q(p_ax$q),
-        .clock(p_ax$clock)
-    );
-    intersection_unit$p_ay p_ay(
-        .d(p_ay$d),
-        .q(p_ay$q),
-        .clock(p_ay$clock)
-    );
-    intersection_unit$p_bx p_bx(
-        .d(p_bx$d),
-        .q(p_bx$q),
-        .clock(p_bx$clock)
-    );
-    intersection_unit$p_by p_by(
-        .d(p_by$d),
-        .q(p_by$q),
-        .clock(p_by$clock)
-    );
-    intersection_unit$p_wx p_wx(
-        .d(p_wx$d),
-        .q(p_wx$q),
-        .clock(p_wx$clock)
-    );
-    intersection_unit$p_wy p_wy(
-        .d(p_wy$d),
-        .q(p_wy$q),
-        .clock(p_wy$clock)
-    );
-    intersection_unit$p_sh p_sh(
-        .d(p_sh$d),
-        .q(p_sh$q),
-        .clock(p_sh$clock)
-    );
-    intersection_unit$p_id p_id(
-        .d(p_id$d),
-        .q(p_id$q),
-        .clock(p_id$clock)
-    );
-    intersection_unit$p_retire p_retire(
-        .d(p_retire$d),
-        .q(p_retire$q),
-        .clock(p_retire$clock)
+    intersection_unit$seq seq(
+        .clock(seq$clock),
+        .patch_valid(seq$patch_valid),
+        .patch_ax(seq$patch_ax),
+        .patch_ay(seq$patch_ay),
+        .patch_bx(seq$patch_bx),
+        .patch_by(seq$patch_by),
+        .patch_wx(seq$patch_wx),
+        .patch_wy(seq$patch_wy),
+        .patch_sh(seq$patch_sh),
+        .patch_id(seq$patch_id),
+        .patch_first(seq$patch_first),
+        .patch_count(seq$patch_count),
+        .patch_retire(seq$patch_retire),
+        .full(seq$full),
+        .busy(seq$busy),
+        .kill(seq$kill),
+        .cur(seq$cur),
+        .v1(seq$v1),
+        .tag1(seq$tag1),
+        .o_ax(seq$o_ax),
+        .o_ay(seq$o_ay),
+        .o_bx(seq$o_bx),
+        .o_by(seq$o_by),
+        .o_wx(seq$o_wx),
+        .o_wy(seq$o_wy)
     );
     intersection_unit$alive_mem alive_mem(
         .clock(alive_mem$clock),
@@ -388,61 +174,6 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         .write_address(alive_mem$write_address),
         .write_data(alive_mem$write_data),
         .write_enable(alive_mem$write_enable)
-    );
-    intersection_unit$test_count test_count(
-        .d(test_count$d),
-        .q(test_count$q),
-        .clock(test_count$clock)
-    );
-    intersection_unit$v1 v1(
-        .d(v1$d),
-        .q(v1$q),
-        .clock(v1$clock)
-    );
-    intersection_unit$tag1 tag1(
-        .d(tag1$d),
-        .q(tag1$q),
-        .clock(tag1$clock)
-    );
-    intersection_unit$o_ax o_ax(
-        .d(o_ax$d),
-        .q(o_ax$q),
-        .clock(o_ax$clock)
-    );
-    intersection_unit$o_ay o_ay(
-        .d(o_ay$d),
-        .q(o_ay$q),
-        .clock(o_ay$clock)
-    );
-    intersection_unit$o_bx o_bx(
-        .d(o_bx$d),
-        .q(o_bx$q),
-        .clock(o_bx$clock)
-    );
-    intersection_unit$o_by o_by(
-        .d(o_by$d),
-        .q(o_by$q),
-        .clock(o_by$clock)
-    );
-    intersection_unit$o_wx o_wx(
-        .d(o_wx$d),
-        .q(o_wx$q),
-        .clock(o_wx$clock)
-    );
-    intersection_unit$o_wy o_wy(
-        .d(o_wy$d),
-        .q(o_wy$q),
-        .clock(o_wy$clock)
-    );
-    intersection_unit$v2 v2(
-        .d(v2$d),
-        .q(v2$q),
-        .clock(v2$clock)
-    );
-    intersection_unit$tag2 tag2(
-        .d(tag2$d),
-        .q(tag2$q),
-        .clock(tag2$clock)
     );
     intersection_unit$dir_mem_x dir_mem_x(
         .clock(dir_mem_x$clock),
@@ -477,101 +208,27 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         .dx_wx(products$dx_wx),
         .dy_wy(products$dy_wy)
     );
-    intersection_unit$v3 v3(
-        .d(v3$d),
-        .q(v3$q),
-        .clock(v3$clock)
-    );
-    intersection_unit$tag3 tag3(
-        .d(tag3$d),
-        .q(tag3$q),
-        .clock(tag3$clock)
-    );
-    intersection_unit$v4 v4(
-        .d(v4$d),
-        .q(v4$q),
-        .clock(v4$clock)
-    );
-    intersection_unit$tag4 tag4(
-        .d(tag4$d),
-        .q(tag4$q),
-        .clock(tag4$clock)
-    );
-    intersection_unit$v5 v5(
-        .d(v5$d),
-        .q(v5$q),
-        .clock(v5$clock)
-    );
-    intersection_unit$sa5 sa5(
-        .d(sa5$d),
-        .q(sa5$q),
-        .clock(sa5$clock)
-    );
-    intersection_unit$sb5 sb5(
-        .d(sb5$d),
-        .q(sb5$q),
-        .clock(sb5$clock)
-    );
-    intersection_unit$ray5 ray5(
-        .d(ray5$d),
-        .q(ray5$q),
-        .clock(ray5$clock)
-    );
-    intersection_unit$id5 id5(
-        .d(id5$d),
-        .q(id5$q),
-        .clock(id5$clock)
+    intersection_unit$pipe pipe(
+        .clock(pipe$clock),
+        .v1(pipe$v1),
+        .tag1(pipe$tag1),
+        .alive(pipe$alive),
+        .dx_ay(pipe$dx_ay),
+        .dy_ax(pipe$dy_ax),
+        .dx_by(pipe$dx_by),
+        .dy_bx(pipe$dy_bx),
+        .tests(pipe$tests),
+        .busy(pipe$busy),
+        .sh4(pipe$sh4),
+        .ray6(pipe$ray6),
+        .v8(pipe$v8),
+        .tag8(pipe$tag8)
     );
     intersection_unit$key_scale key_scale(
         .clock(key_scale$clock),
         .q(key_scale$q),
         .sh(key_scale$sh),
         .key(key_scale$key)
-    );
-    intersection_unit$v6 v6(
-        .d(v6$d),
-        .q(v6$q),
-        .clock(v6$clock)
-    );
-    intersection_unit$ray6 ray6(
-        .d(ray6$d),
-        .q(ray6$q),
-        .clock(ray6$clock)
-    );
-    intersection_unit$id6 id6(
-        .d(id6$d),
-        .q(id6$q),
-        .clock(id6$clock)
-    );
-    intersection_unit$v7 v7(
-        .d(v7$d),
-        .q(v7$q),
-        .clock(v7$clock)
-    );
-    intersection_unit$ray7 ray7(
-        .d(ray7$d),
-        .q(ray7$q),
-        .clock(ray7$clock)
-    );
-    intersection_unit$id7 id7(
-        .d(id7$d),
-        .q(id7$q),
-        .clock(id7$clock)
-    );
-    intersection_unit$v8 v8(
-        .d(v8$d),
-        .q(v8$q),
-        .clock(v8$clock)
-    );
-    intersection_unit$ray8 ray8(
-        .d(ray8$d),
-        .q(ray8$q),
-        .clock(ray8$clock)
-    );
-    intersection_unit$id8 id8(
-        .d(id8$d),
-        .q(id8$q),
-        .clock(id8$clock)
     );
     intersection_unit$mem_key mem_key(
         .clock(mem_key$clock),
@@ -589,489 +246,111 @@ module intersection_unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_rea
         .write_data(mem_meta$write_data),
         .write_enable(mem_meta$write_enable)
     );
-    intersection_unit$cm_hit cm_hit(
-        .d(cm_hit$d),
-        .q(cm_hit$q),
-        .clock(cm_hit$clock)
-    );
-    intersection_unit$cm_gt cm_gt(
-        .d(cm_gt$d),
-        .q(cm_gt$q),
-        .clock(cm_gt$clock)
-    );
-    intersection_unit$cm_eq cm_eq(
-        .d(cm_eq$d),
-        .q(cm_eq$q),
-        .clock(cm_eq$clock)
-    );
-    intersection_unit$cm_lt cm_lt(
-        .d(cm_lt$d),
-        .q(cm_lt$q),
-        .clock(cm_lt$clock)
-    );
-    intersection_unit$c1_gt c1_gt(
-        .d(c1_gt$d),
-        .q(c1_gt$q),
-        .clock(c1_gt$clock)
-    );
-    intersection_unit$c1_eq c1_eq(
-        .d(c1_eq$d),
-        .q(c1_eq$q),
-        .clock(c1_eq$clock)
-    );
-    intersection_unit$c1_lt c1_lt(
-        .d(c1_lt$d),
-        .q(c1_lt$q),
-        .clock(c1_lt$clock)
-    );
-    intersection_unit$c2_gt c2_gt(
-        .d(c2_gt$d),
-        .q(c2_gt$q),
-        .clock(c2_gt$clock)
-    );
-    intersection_unit$c2_eq c2_eq(
-        .d(c2_eq$d),
-        .q(c2_eq$q),
-        .clock(c2_eq$clock)
-    );
-    intersection_unit$c2_lt c2_lt(
-        .d(c2_lt$d),
-        .q(c2_lt$q),
-        .clock(c2_lt$clock)
-    );
-    intersection_unit$c3_gt c3_gt(
-        .d(c3_gt$d),
-        .q(c3_gt$q),
-        .clock(c3_gt$clock)
-    );
-    intersection_unit$c3_eq c3_eq(
-        .d(c3_eq$d),
-        .q(c3_eq$q),
-        .clock(c3_eq$clock)
-    );
-    intersection_unit$c3_lt c3_lt(
-        .d(c3_lt$d),
-        .q(c3_lt$q),
-        .clock(c3_lt$clock)
-    );
-    intersection_unit$m1 m1(
-        .d(m1$d),
-        .q(m1$q),
-        .clock(m1$clock)
-    );
-    intersection_unit$m2 m2(
-        .d(m2$d),
-        .q(m2$q),
-        .clock(m2$clock)
-    );
-    intersection_unit$m3 m3(
-        .d(m3$d),
-        .q(m3$q),
-        .clock(m3$clock)
-    );
-    intersection_unit$v9 v9(
-        .d(v9$d),
-        .q(v9$q),
-        .clock(v9$clock)
-    );
-    intersection_unit$ray9 ray9(
-        .d(ray9$d),
-        .q(ray9$q),
-        .clock(ray9$clock)
-    );
-    intersection_unit$id9 id9(
-        .d(id9$d),
-        .q(id9$q),
-        .clock(id9$clock)
-    );
-    intersection_unit$key9 key9(
-        .d(key9$d),
-        .q(key9$q),
-        .clock(key9$clock)
-    );
-    intersection_unit$fw_valid fw_valid(
-        .d(fw_valid$d),
-        .q(fw_valid$q),
-        .clock(fw_valid$clock)
-    );
-    intersection_unit$fw_ray fw_ray(
-        .d(fw_ray$d),
-        .q(fw_ray$q),
-        .clock(fw_ray$clock)
-    );
-    intersection_unit$fw_key fw_key(
-        .d(fw_key$d),
-        .q(fw_key$q),
-        .clock(fw_key$clock)
-    );
-    intersection_unit$fw_id fw_id(
-        .d(fw_id$d),
-        .q(fw_id$q),
-        .clock(fw_id$clock)
-    );
-    intersection_unit$fw2_valid fw2_valid(
-        .d(fw2_valid$d),
-        .q(fw2_valid$q),
-        .clock(fw2_valid$clock)
-    );
-    intersection_unit$fw2_ray fw2_ray(
-        .d(fw2_ray$d),
-        .q(fw2_ray$q),
-        .clock(fw2_ray$clock)
-    );
-    intersection_unit$fw2_key fw2_key(
-        .d(fw2_key$d),
-        .q(fw2_key$q),
-        .clock(fw2_key$clock)
-    );
-    intersection_unit$fw2_id fw2_id(
-        .d(fw2_id$d),
-        .q(fw2_id$q),
-        .clock(fw2_id$clock)
-    );
-    intersection_unit$fw3_valid fw3_valid(
-        .d(fw3_valid$d),
-        .q(fw3_valid$q),
-        .clock(fw3_valid$clock)
-    );
-    intersection_unit$rd_valid rd_valid(
-        .d(rd_valid$d),
-        .q(rd_valid$q),
-        .clock(rd_valid$clock)
-    );
-    intersection_unit$rd_addr rd_addr(
-        .d(rd_addr$d),
-        .q(rd_addr$q),
-        .clock(rd_addr$clock)
-    );
-    intersection_unit$z1 z1(
-        .d(z1$d),
-        .q(z1$q),
-        .clock(z1$clock)
-    );
-    intersection_unit$z2 z2(
-        .d(z2$d),
-        .q(z2$q),
-        .clock(z2$clock)
+    intersection_unit$merge merge(
+        .clock(merge$clock),
+        .v8(merge$v8),
+        .tag8(merge$tag8),
+        .key(merge$key),
+        .mem_key(merge$mem_key),
+        .mem_meta(merge$mem_meta),
+        .res_re(merge$res_re),
+        .res_addr(merge$res_addr),
+        .write_address(merge$write_address),
+        .write_key(merge$write_key),
+        .write_meta(merge$write_meta),
+        .write_enable(merge$write_enable),
+        .z2(merge$z2),
+        .busy(merge$busy),
+        .fw_valid(merge$fw_valid)
     );
     
     // Update code
     always @(*) begin
-        remaining$clock = clock;
-        cur$clock = clock;
-        p_ax$clock = clock;
-        p_ay$clock = clock;
-        p_bx$clock = clock;
-        p_by$clock = clock;
-        p_wx$clock = clock;
-        p_wy$clock = clock;
-        p_sh$clock = clock;
-        p_id$clock = clock;
-        p_retire$clock = clock;
-        test_count$clock = clock;
-        v1$clock = clock;
-        tag1$clock = clock;
-        o_ax$clock = clock;
-        o_ay$clock = clock;
-        o_bx$clock = clock;
-        o_by$clock = clock;
-        o_wx$clock = clock;
-        o_wy$clock = clock;
-        v2$clock = clock;
-        tag2$clock = clock;
-        v3$clock = clock;
-        tag3$clock = clock;
-        v4$clock = clock;
-        tag4$clock = clock;
-        v5$clock = clock;
-        sa5$clock = clock;
-        sb5$clock = clock;
-        ray5$clock = clock;
-        id5$clock = clock;
-        v6$clock = clock;
-        ray6$clock = clock;
-        id6$clock = clock;
-        v7$clock = clock;
-        ray7$clock = clock;
-        id7$clock = clock;
-        v8$clock = clock;
-        ray8$clock = clock;
-        id8$clock = clock;
-        cm_hit$clock = clock;
-        cm_gt$clock = clock;
-        cm_eq$clock = clock;
-        cm_lt$clock = clock;
-        c1_gt$clock = clock;
-        c1_eq$clock = clock;
-        c1_lt$clock = clock;
-        c2_gt$clock = clock;
-        c2_eq$clock = clock;
-        c2_lt$clock = clock;
-        c3_gt$clock = clock;
-        c3_eq$clock = clock;
-        c3_lt$clock = clock;
-        m1$clock = clock;
-        m2$clock = clock;
-        m3$clock = clock;
-        v9$clock = clock;
-        ray9$clock = clock;
-        id9$clock = clock;
-        key9$clock = clock;
-        fw_valid$clock = clock;
-        fw_ray$clock = clock;
-        fw_key$clock = clock;
-        fw_id$clock = clock;
-        fw2_valid$clock = clock;
-        fw2_ray$clock = clock;
-        fw2_key$clock = clock;
-        fw2_id$clock = clock;
-        fw3_valid$clock = clock;
-        rd_valid$clock = clock;
-        rd_addr$clock = clock;
-        z1$clock = clock;
-        z2$clock = clock;
-        remaining$d = remaining$q;
-        cur$d = cur$q;
-        p_ax$d = p_ax$q;
-        p_ay$d = p_ay$q;
-        p_bx$d = p_bx$q;
-        p_by$d = p_by$q;
-        p_wx$d = p_wx$q;
-        p_wy$d = p_wy$q;
-        p_sh$d = p_sh$q;
-        p_id$d = p_id$q;
-        p_retire$d = p_retire$q;
-        test_count$d = test_count$q;
-        v1$d = v1$q;
-        tag1$d = tag1$q;
-        o_ax$d = o_ax$q;
-        o_ay$d = o_ay$q;
-        o_bx$d = o_bx$q;
-        o_by$d = o_by$q;
-        o_wx$d = o_wx$q;
-        o_wy$d = o_wy$q;
-        v2$d = v2$q;
-        tag2$d = tag2$q;
-        v3$d = v3$q;
-        tag3$d = tag3$q;
-        v4$d = v4$q;
-        tag4$d = tag4$q;
-        v5$d = v5$q;
-        sa5$d = sa5$q;
-        sb5$d = sb5$q;
-        ray5$d = ray5$q;
-        id5$d = id5$q;
-        v6$d = v6$q;
-        ray6$d = ray6$q;
-        id6$d = id6$q;
-        v7$d = v7$q;
-        ray7$d = ray7$q;
-        id7$d = id7$q;
-        v8$d = v8$q;
-        ray8$d = ray8$q;
-        id8$d = id8$q;
-        cm_hit$d = cm_hit$q;
-        cm_gt$d = cm_gt$q;
-        cm_eq$d = cm_eq$q;
-        cm_lt$d = cm_lt$q;
-        c1_gt$d = c1_gt$q;
-        c1_eq$d = c1_eq$q;
-        c1_lt$d = c1_lt$q;
-        c2_gt$d = c2_gt$q;
-        c2_eq$d = c2_eq$q;
-        c2_lt$d = c2_lt$q;
-        c3_gt$d = c3_gt$q;
-        c3_eq$d = c3_eq$q;
-        c3_lt$d = c3_lt$q;
-        m1$d = m1$q;
-        m2$d = m2$q;
-        m3$d = m3$q;
-        v9$d = v9$q;
-        ray9$d = ray9$q;
-        id9$d = id9$q;
-        key9$d = key9$q;
-        fw_valid$d = fw_valid$q;
-        fw_ray$d = fw_ray$q;
-        fw_key$d = fw_key$q;
-        fw_id$d = fw_id$q;
-        fw2_valid$d = fw2_valid$q;
-        fw2_ray$d = fw2_ray$q;
-        fw2_key$d = fw2_key$q;
-        fw2_id$d = fw2_id$q;
-        fw3_valid$d = fw3_valid$q;
-        rd_valid$d = rd_valid$q;
-        rd_addr$d = rd_addr$q;
-        z1$d = z1$q;
-        z2$d = z2$q;
-        dir_mem_x$clock = clock;
+        seq$clock = clock;
         alive_mem$clock = clock;
+        dir_mem_x$clock = clock;
         dir_mem_y$clock = clock;
+        products$clock = clock;
+        pipe$clock = clock;
+        key_scale$clock = clock;
         mem_key$clock = clock;
         mem_meta$clock = clock;
-        products$clock = clock;
-        key_scale$clock = clock;
-        issue = remaining$q != zero11;
-        patch_ready = (remaining$q == zero11) | (remaining$q == one11);
-        take = patch_valid & ((remaining$q == zero11) | (remaining$q == one11));
-        if (take) begin
-            remaining$d = patch_count;
-            cur$d = patch_first;
-            p_ax$d = patch_ax;
-            p_ay$d = patch_ay;
-            p_bx$d = patch_bx;
-            p_by$d = patch_by;
-            p_wx$d = patch_wx;
-            p_wy$d = patch_wy;
-            p_sh$d = patch_sh;
-            p_id$d = patch_id;
-            p_retire$d = patch_retire;
-        end
-        else if (issue) begin
-            remaining$d = remaining$q - one11;
-            cur$d = cur$q + one10;
-        end
-        tests = test_count$q;
-        dir_mem_x$read_address = cur$q;
-        dir_mem_y$read_address = cur$q;
+        merge$clock = clock;
+        seq$patch_valid = patch_valid;
+        seq$patch_ax = patch_ax;
+        seq$patch_ay = patch_ay;
+        seq$patch_bx = patch_bx;
+        seq$patch_by = patch_by;
+        seq$patch_wx = patch_wx;
+        seq$patch_wy = patch_wy;
+        seq$patch_sh = patch_sh;
+        seq$patch_id = patch_id;
+        seq$patch_first = patch_first;
+        seq$patch_count = patch_count;
+        seq$patch_retire = patch_retire;
+        patch_ready = ~seq$full;
+        dir_mem_x$read_address = seq$cur;
+        dir_mem_y$read_address = seq$cur;
         dir_mem_x$write_address = dir_addr;
         dir_mem_y$write_address = dir_addr;
         dir_mem_x$write_data = dir_x;
         dir_mem_y$write_data = dir_y;
         dir_mem_x$write_enable = dir_we;
         dir_mem_y$write_enable = dir_we;
-        alive_mem$read_address = cur$q;
-        alive_mem$write_address = cur$q;
+        alive_mem$read_address = seq$cur;
+        alive_mem$write_address = seq$cur;
         alive_mem$write_data = 1'b0;
-        alive_mem$write_enable = issue & p_retire$q;
+        alive_mem$write_enable = seq$kill;
         if (dir_we) begin
             alive_mem$write_address = dir_addr;
             alive_mem$write_data = 1'b1;
             alive_mem$write_enable = 1'b1;
         end
-        v1$d = issue & ~p_retire$q;
-        tag1$d = (((cur$q) & 32'hffffffff) << 32'h16) | (((p_sh$q) & 32'hffffffff) << 32'h10) | ((p_id$q) & 32'hffffffff);
-        o_ax$d = p_ax$q;
-        o_ay$d = p_ay$q;
-        o_bx$d = p_bx$q;
-        o_by$d = p_by$q;
-        o_wx$d = p_wx$q;
-        o_wy$d = p_wy$q;
-        products$ax = o_ax$q;
-        products$ay = o_ay$q;
-        products$bx = o_bx$q;
-        products$by = o_by$q;
-        products$wx = o_wx$q;
-        products$wy = o_wy$q;
-        v2$d = v1$q;
-        tag2$d = tag1$q;
+        products$ax = seq$o_ax;
+        products$ay = seq$o_ay;
+        products$bx = seq$o_bx;
+        products$by = seq$o_by;
+        products$wx = seq$o_wx;
+        products$wy = seq$o_wy;
+        pipe$v1 = seq$v1;
+        pipe$tag1 = seq$tag1;
         products$dx = dir_mem_x$read_data;
         products$dy = dir_mem_y$read_data;
-        live = v2$q & |alive_mem$read_data;
-        if (live) begin
-            test_count$d = test_count$q + one32;
-        end
-        v3$d = live;
-        tag3$d = tag2$q;
-        v4$d = v3$q;
-        tag4$d = tag3$q;
-        ray4 = tag4$q[(32'h16)+:(10)];
-        sh4 = tag4$q[(32'h10)+:(6)];
-        id4 = tag4$q[(32'h0)+:(16)];
-        side_a = products$dx_ay - products$dy_ax;
-        side_b = products$dx_by - products$dy_bx;
-        q = products$dx_wx + products$dy_wy;
-        v5$d = v4$q;
-        sa5$d = side_a;
-        sb5$d = side_b;
-        ray5$d = ray4;
-        id5$d = id4;
-        key_scale$q = q;
-        key_scale$sh = sh4;
-        v6$d = v5$q & ((sa5$q == zero32) | sa5$q[32'h1f]) & ~sb5$q[32'h1f];
-        ray6$d = ray5$q;
-        id6$d = id5$q;
-        v7$d = v6$q;
-        ray7$d = ray6$q;
-        id7$d = id6$q;
-        v8$d = v7$q;
-        ray8$d = ray7$q;
-        id8$d = id7$q;
-        mem_key$read_address = ray6$q;
-        mem_meta$read_address = ray6$q;
+        pipe$alive = |alive_mem$read_data;
+        tests = pipe$tests;
+        pipe$dx_ay = products$dx_ay;
+        pipe$dy_ax = products$dy_ax;
+        pipe$dx_by = products$dx_by;
+        pipe$dy_bx = products$dy_bx;
+        key_scale$q = products$dx_wx + products$dy_wy;
+        key_scale$sh = pipe$sh4;
+        mem_key$read_address = pipe$ray6;
+        mem_meta$read_address = pipe$ray6;
         if (res_re) begin
             mem_key$read_address = res_addr;
             mem_meta$read_address = res_addr;
         end
-        meta_hit = mem_meta$read_data[32'h10];
-        meta_id = ((mem_meta$read_data) & 16'hffff);
-        cm_hit$d = meta_hit;
-        cm_gt$d = key_scale$key > mem_key$read_data;
-        cm_eq$d = key_scale$key == mem_key$read_data;
-        cm_lt$d = id8$q < meta_id;
-        c1_gt$d = key_scale$key > key9$q;
-        c1_eq$d = key_scale$key == key9$q;
-        c1_lt$d = id8$q < id9$q;
-        c2_gt$d = key_scale$key > fw_key$q;
-        c2_eq$d = key_scale$key == fw_key$q;
-        c2_lt$d = id8$q < fw_id$q;
-        c3_gt$d = key_scale$key > fw2_key$q;
-        c3_eq$d = key_scale$key == fw2_key$q;
-        c3_lt$d = id8$q < fw2_id$q;
-        m1$d = ray8$q == ray9$q;
-        m2$d = ray8$q == fw_ray$q;
-        m3$d = ray8$q == fw2_ray$q;
-        v9$d = v8$q;
-        ray9$d = ray8$q;
-        id9$d = id8$q;
-        key9$d = key_scale$key;
-        if (m1$q & fw_valid$q) begin
-            better = v9$q & (c1_gt$q | (c1_eq$q & c1_lt$q));
-        end
-        else if (m2$q & fw2_valid$q) begin
-            better = v9$q & (c2_gt$q | (c2_eq$q & c2_lt$q));
-        end
-        else if (m3$q & fw3_valid$q) begin
-            better = v9$q & (c3_gt$q | (c3_eq$q & c3_lt$q));
-        end
-        else begin
-            better = v9$q & (~cm_hit$q | cm_gt$q | (cm_eq$q & cm_lt$q));
-        end
-        new_meta = hit_flag | ((id9$q) & 17'h1ffff);
-        mem_key$write_address = ray9$q;
-        mem_meta$write_address = ray9$q;
-        mem_key$write_data = key9$q;
-        mem_meta$write_data = new_meta;
-        mem_key$write_enable = better;
-        mem_meta$write_enable = better;
-        if (rd_valid$q) begin
-            mem_key$write_address = rd_addr$q;
-            mem_meta$write_address = rd_addr$q;
-            mem_key$write_data = zero32;
-            mem_meta$write_data = zero17;
-            mem_key$write_enable = 1'b1;
-            mem_meta$write_enable = 1'b1;
-        end
-        fw_valid$d = better;
-        fw_ray$d = ray9$q;
-        fw_key$d = key9$q;
-        fw_id$d = id9$q;
-        fw2_valid$d = fw_valid$q;
-        fw2_ray$d = fw_ray$q;
-        fw2_key$d = fw_key$q;
-        fw2_id$d = fw_id$q;
-        fw3_valid$d = fw2_valid$q;
-        rd_valid$d = res_re;
-        rd_addr$d = res_addr;
-        z1$d = res_re & rd_valid$q & (res_addr == rd_addr$q);
-        z2$d = z1$q;
-        res_hit = meta_hit & ~z2$q;
-        res_id = meta_id;
+        merge$v8 = pipe$v8;
+        merge$tag8 = pipe$tag8;
+        merge$key = key_scale$key;
+        merge$mem_key = mem_key$read_data;
+        merge$mem_meta = mem_meta$read_data;
+        merge$res_re = res_re;
+        merge$res_addr = res_addr;
+        mem_key$write_address = merge$write_address;
+        mem_meta$write_address = merge$write_address;
+        mem_key$write_data = merge$write_key;
+        mem_meta$write_data = merge$write_meta;
+        mem_key$write_enable = merge$write_enable;
+        mem_meta$write_enable = merge$write_enable;
+        res_hit = mem_meta$read_data[32'h10] & ~merge$z2;
+        res_id = ((mem_meta$read_data) & 16'hffff);
         res_key = mem_key$read_data;
-        if (z2$q) begin
+        if (merge$z2) begin
             res_id = zero16;
             res_key = zero32;
         end
-        busy = issue | v1$q | v2$q | v3$q | v4$q | v5$q | v6$q | v7$q | v8$q | v9$q;
+        busy = seq$busy | pipe$busy | merge$busy;
     end
     
 endmodule // intersection_unit
@@ -1171,272 +450,6 @@ module intersection_unit$alive_mem(clock,read_address,read_data,write_address,wr
     end
     `endif
 endmodule // intersection_unit$alive_mem
-
-
-module intersection_unit$c1_eq(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c1_eq
-
-
-module intersection_unit$c1_gt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c1_gt
-
-
-module intersection_unit$c1_lt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c1_lt
-
-
-module intersection_unit$c2_eq(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c2_eq
-
-
-module intersection_unit$c2_gt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c2_gt
-
-
-module intersection_unit$c2_lt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c2_lt
-
-
-module intersection_unit$c3_eq(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c3_eq
-
-
-module intersection_unit$c3_gt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c3_gt
-
-
-module intersection_unit$c3_lt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$c3_lt
-
-
-module intersection_unit$cm_eq(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$cm_eq
-
-
-module intersection_unit$cm_gt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$cm_gt
-
-
-module intersection_unit$cm_hit(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$cm_hit
-
-
-module intersection_unit$cm_lt(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$cm_lt
-
-
-module intersection_unit$cur(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$cur
 
 
 module intersection_unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -1631,291 +644,6 @@ module intersection_unit$dir_mem_y(clock,read_address,read_data,write_address,wr
 endmodule // intersection_unit$dir_mem_y
 
 
-module intersection_unit$fw2_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw2_id
-
-
-module intersection_unit$fw2_key(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw2_key
-
-
-module intersection_unit$fw2_ray(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw2_ray
-
-
-module intersection_unit$fw2_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw2_valid
-
-
-module intersection_unit$fw3_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw3_valid
-
-
-module intersection_unit$fw_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw_id
-
-
-module intersection_unit$fw_key(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw_key
-
-
-module intersection_unit$fw_ray(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw_ray
-
-
-module intersection_unit$fw_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$fw_valid
-
-
-module intersection_unit$id5(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$id5
-
-
-module intersection_unit$id6(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$id6
-
-
-module intersection_unit$id7(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$id7
-
-
-module intersection_unit$id8(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$id8
-
-
-module intersection_unit$id9(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$id9
-
-
-module intersection_unit$key9(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$key9
-
-
 module intersection_unit$key_scale(clock,q,sh,key);
     
     // Module arguments
@@ -1968,63 +696,6 @@ module intersection_unit$key_scale(clock,q,sh,key);
        key <= (r2 == 32'd0) ? 32'd1 : r2;
     end
 endmodule // intersection_unit$key_scale
-
-
-module intersection_unit$m1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$m1
-
-
-module intersection_unit$m2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$m2
-
-
-module intersection_unit$m3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$m3
 
 
 module intersection_unit$mem_key(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -2272,289 +943,211 @@ module intersection_unit$mem_meta(clock,read_address,read_data,write_address,wri
 endmodule // intersection_unit$mem_meta
 
 
-module intersection_unit$o_ax(d,q,clock);
+module intersection_unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_addr,write_address,write_key,write_meta,write_enable,z2,busy,fw_valid);
     
     // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
     input wire  clock;
+    input wire  v8;
+    input wire  [25:0] tag8;
+    input wire  [31:0] key;
+    input wire  [31:0] mem_key;
+    input wire  [16:0] mem_meta;
+    input wire  res_re;
+    input wire  [9:0] res_addr;
+    output reg  [9:0] write_address;
+    output reg  [31:0] write_key;
+    output reg  [16:0] write_meta;
+    output reg  write_enable;
+    output reg  z2;
+    output reg  busy;
+    output reg  fw_valid;
     
     // Update code (custom)
+    wire [9:0] ray8 = tag8[25:16];
+    wire [15:0] id8 = tag8[15:0];
+    reg cm_hit, cm_gt, cm_eq, cm_lt;
+    reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
+    reg m1, m2, m3;
+    reg v9;
+    reg [9:0] ray9;
+    reg [15:0] id9;
+    reg [31:0] key9;
+    reg [9:0] fw_ray;
+    reg [31:0] fw_key;
+    reg [15:0] fw_id;
+    reg fw2_valid;
+    reg [9:0] fw2_ray;
+    reg [31:0] fw2_key;
+    reg [15:0] fw2_id;
+    reg fw3_valid;
+    reg rd_valid;
+    reg [9:0] rd_addr;
+    reg z1;
+    reg better;
     initial begin
-       q = 18'h0;
+       cm_hit = 1'b0;
+       cm_gt = 1'b0;
+       cm_eq = 1'b0;
+       cm_lt = 1'b0;
+       m1 = 1'b0;
+       m2 = 1'b0;
+       m3 = 1'b0;
+       v9 = 1'b0;
+       fw_valid = 1'b0;
+       fw2_valid = 1'b0;
+       fw3_valid = 1'b0;
+       c1_gt = 1'b0;
+       c1_eq = 1'b0;
+       c1_lt = 1'b0;
+       c2_gt = 1'b0;
+       c2_eq = 1'b0;
+       c2_lt = 1'b0;
+       c3_gt = 1'b0;
+       c3_eq = 1'b0;
+       c3_lt = 1'b0;
+       ray9 = 10'd0;
+       fw_ray = 10'd0;
+       fw2_ray = 10'd0;
+       rd_addr = 10'd0;
+       id9 = 16'd0;
+       fw_id = 16'd0;
+       fw2_id = 16'd0;
+       key9 = 32'd0;
+       fw_key = 32'd0;
+       fw2_key = 32'd0;
+       rd_valid = 1'b0;
+       z1 = 1'b0;
+       z2 = 1'b0;
     end
-    
+    always @(*) begin
+       if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
+       else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
+       else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
+       else better = v9 && (!cm_hit || cm_gt || (cm_eq && cm_lt));
+       if (rd_valid) begin
+          write_address = rd_addr;
+          write_key = 32'd0;
+          write_meta = 17'd0;
+          write_enable = 1'b1;
+       end else begin
+          write_address = ray9;
+          write_key = key9;
+          write_meta = {1'b1, id9};
+          write_enable = better;
+       end
+       busy = v9;
+    end
     always @(posedge clock) begin
-       q <= d;
+       cm_hit <= mem_meta[16];
+       cm_gt <= key > mem_key;
+       cm_eq <= key == mem_key;
+       cm_lt <= id8 < mem_meta[15:0];
+       c1_gt <= key > key9;
+       c1_eq <= key == key9;
+       c1_lt <= id8 < id9;
+       c2_gt <= key > fw_key;
+       c2_eq <= key == fw_key;
+       c2_lt <= id8 < fw_id;
+       c3_gt <= key > fw2_key;
+       c3_eq <= key == fw2_key;
+       c3_lt <= id8 < fw2_id;
+    m1 <= ray8 == ray9;
+       m2 <= ray8 == fw_ray;
+       m3 <= ray8 == fw2_ray;
+       v9 <= v8;
+       ray9 <= ray8;
+       id9 <= id8;
+       key9 <= key;
+       fw_valid <= better;
+       fw_ray <= ray9;
+       fw_key <= key9;
+       fw_id <= id9;
+       fw2_valid <= fw_valid;
+       fw2_ray <= fw_ray;
+       fw2_key <= fw_key;
+       fw2_id <= fw_id;
+       fw3_valid <= fw2_valid;
+       rd_valid <= res_re;
+       rd_addr <= res_addr;
+       z1 <= res_re && rd_valid && res_addr == rd_addr;
+       z2 <= z1;
     end
-          
-endmodule // intersection_unit$o_ax
+endmodule // intersection_unit$merge
 
 
-module intersection_unit$o_ay(d,q,clock);
+module intersection_unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests,busy,sh4,ray6,v8,tag8);
     
     // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
     input wire  clock;
+    input wire  v1;
+    input wire  [31:0] tag1;
+    input wire  alive;
+    input wire  [31:0] dx_ay;
+    input wire  [31:0] dy_ax;
+    input wire  [31:0] dx_by;
+    input wire  [31:0] dy_bx;
+    output reg  [31:0] tests;
+    output reg  busy;
+    output reg  [5:0] sh4;
+    output reg  [9:0] ray6;
+    output reg  v8;
+    output reg  [25:0] tag8;
     
     // Update code (custom)
+    reg v2, v3, v4, v5, v6, v7;
+    reg [31:0] tag2;
+    reg [31:0] tag3;
+    reg [31:0] tag4;
+    reg [31:0] sa5;
+    reg [31:0] sb5;
+    reg [25:0] t5;
+    reg [25:0] t6;
+    reg [25:0] t7;
+    wire live = v2 && alive;
     initial begin
-       q = 18'h0;
+       v2 = 1'b0;
+       v3 = 1'b0;
+       v4 = 1'b0;
+       v5 = 1'b0;
+       v6 = 1'b0;
+       v7 = 1'b0;
+       v8 = 1'b0;
+       tag2 = 32'd0;
+       tag3 = 32'd0;
+       tag4 = 32'd0;
+       sa5 = 32'd0;
+       sb5 = 32'd0;
+       t5 = 26'd0;
+       t6 = 26'd0;
+       t7 = 26'd0;
+       tag8 = 26'd0;
+       tests = 32'd0;
     end
-    
+    always @(*) begin
+       busy = v2 || v3 || v4 || v5 || v6 || v7 || v8;
+       sh4 = tag4[21:16];
+       ray6 = t6[25:16];
+    end
     always @(posedge clock) begin
-       q <= d;
+       v2 <= v1;
+       tag2 <= tag1;
+       v3 <= live;
+       tag3 <= tag2;
+       if (live) tests <= tests + 32'd1;
+       v4 <= v3;
+       tag4 <= tag3;
+       v5 <= v4;
+       sa5 <= dx_ay - dy_ax;
+       sb5 <= dx_by - dy_bx;
+       t5 <= {tag4[31:22], tag4[15:0]};
+       v6 <= v5 && (sa5 == 32'd0 || sa5[31]) && !sb5[31];
+       t6 <= t5;
+       v7 <= v6;
+       t7 <= t6;
+       v8 <= v7;
+       tag8 <= t7;
     end
-          
-endmodule // intersection_unit$o_ay
-
-
-module intersection_unit$o_bx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$o_bx
-
-
-module intersection_unit$o_by(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$o_by
-
-
-module intersection_unit$o_wx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$o_wx
-
-
-module intersection_unit$o_wy(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$o_wy
-
-
-module intersection_unit$p_ax(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_ax
-
-
-module intersection_unit$p_ay(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_ay
-
-
-module intersection_unit$p_bx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_bx
-
-
-module intersection_unit$p_by(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_by
-
-
-module intersection_unit$p_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_id
-
-
-module intersection_unit$p_retire(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_retire
-
-
-module intersection_unit$p_sh(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_sh
-
-
-module intersection_unit$p_wx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_wx
-
-
-module intersection_unit$p_wy(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$p_wy
+endmodule // intersection_unit$pipe
 
 
 module intersection_unit$products(clock,dx,dy,ax,ay,bx,by,wx,wy,dx_ay,dy_ax,dx_by,dy_bx,dx_wx,dy_wy);
@@ -3025,495 +1618,97 @@ module intersection_unit$products(clock,dx,dy,ax,ay,bx,by,wx,wy,dx_ay,dy_ax,dx_b
 endmodule // intersection_unit$products
 
 
-module intersection_unit$ray5(d,q,clock);
+module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,full,busy,kill,cur,v1,tag1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
     
     // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
     input wire  clock;
+    input wire  patch_valid;
+    input wire  [17:0] patch_ax;
+    input wire  [17:0] patch_ay;
+    input wire  [17:0] patch_bx;
+    input wire  [17:0] patch_by;
+    input wire  [17:0] patch_wx;
+    input wire  [17:0] patch_wy;
+    input wire  [5:0] patch_sh;
+    input wire  [15:0] patch_id;
+    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_count;
+    input wire  patch_retire;
+    output reg  full;
+    output reg  busy;
+    output reg  kill;
+    output reg  [9:0] cur;
+    output reg  v1;
+    output reg  [31:0] tag1;
+    output reg  [17:0] o_ax;
+    output reg  [17:0] o_ay;
+    output reg  [17:0] o_bx;
+    output reg  [17:0] o_by;
+    output reg  [17:0] o_wx;
+    output reg  [17:0] o_wy;
     
     // Update code (custom)
+    reg [10:0] remaining;
+    reg p_retire;
+    reg [5:0] p_sh;
+    reg [15:0] p_id;
+    reg [17:0] p_ax;
+    reg [17:0] p_ay;
+    reg [17:0] p_bx;
+    reg [17:0] p_by;
+    reg [17:0] p_wx;
+    reg [17:0] p_wy;
+    wire issue = remaining != 11'd0;
     initial begin
-       q = 10'h0;
+       remaining = 11'd0;
+       p_retire = 1'b0;
+       p_sh = 6'd0;
+       p_id = 16'd0;
+       cur = 10'd0;
+       v1 = 1'b0;
+       tag1 = 32'd0;
+       p_ax = 18'd0;
+       o_ax = 18'd0;
+       p_ay = 18'd0;
+       o_ay = 18'd0;
+       p_bx = 18'd0;
+       o_bx = 18'd0;
+       p_by = 18'd0;
+       o_by = 18'd0;
+       p_wx = 18'd0;
+       o_wx = 18'd0;
+       p_wy = 18'd0;
+       o_wy = 18'd0;
     end
-    
+    always @(*) begin
+       full = remaining > 11'd1;
+       busy = issue || v1;
+       kill = issue && p_retire;
+    end
     always @(posedge clock) begin
-       q <= d;
+       v1 <= issue && !p_retire;
+       tag1 <= {cur, p_sh, p_id};
+       o_ax <= p_ax;
+       o_ay <= p_ay;
+       o_bx <= p_bx;
+       o_by <= p_by;
+       o_wx <= p_wx;
+       o_wy <= p_wy;
+       if (patch_valid && remaining <= 11'd1) begin
+          remaining <= patch_count;
+          cur <= patch_first;
+          p_ax <= patch_ax;
+          p_ay <= patch_ay;
+          p_bx <= patch_bx;
+          p_by <= patch_by;
+          p_wx <= patch_wx;
+          p_wy <= patch_wy;
+          p_sh <= patch_sh;
+          p_id <= patch_id;
+          p_retire <= patch_retire;
+       end else if (issue) begin
+          remaining <= remaining - 11'd1;
+          cur <= cur + 10'd1;
+       end
     end
-          
-endmodule // intersection_unit$ray5
-
-
-module intersection_unit$ray6(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$ray6
-
-
-module intersection_unit$ray7(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$ray7
-
-
-module intersection_unit$ray8(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$ray8
-
-
-module intersection_unit$ray9(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$ray9
-
-
-module intersection_unit$rd_addr(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$rd_addr
-
-
-module intersection_unit$rd_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$rd_valid
-
-
-module intersection_unit$remaining(d,q,clock);
-    
-    // Module arguments
-    input wire  [10:0] d;
-    output reg  [10:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 11'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$remaining
-
-
-module intersection_unit$sa5(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$sa5
-
-
-module intersection_unit$sb5(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$sb5
-
-
-module intersection_unit$tag1(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$tag1
-
-
-module intersection_unit$tag2(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$tag2
-
-
-module intersection_unit$tag3(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$tag3
-
-
-module intersection_unit$tag4(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$tag4
-
-
-module intersection_unit$test_count(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$test_count
-
-
-module intersection_unit$v1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v1
-
-
-module intersection_unit$v2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v2
-
-
-module intersection_unit$v3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v3
-
-
-module intersection_unit$v4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v4
-
-
-module intersection_unit$v5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v5
-
-
-module intersection_unit$v6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v6
-
-
-module intersection_unit$v7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v7
-
-
-module intersection_unit$v8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v8
-
-
-module intersection_unit$v9(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$v9
-
-
-module intersection_unit$z1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$z1
-
-
-module intersection_unit$z2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // intersection_unit$z2
+endmodule // intersection_unit$seq
