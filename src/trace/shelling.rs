@@ -62,9 +62,9 @@
 //! [`Grid::scan_cell`]: crate::grid::Grid::scan_cell
 //! [`PatchCache::load`]: super::PatchCache::load
 
-use super::{offer, with_scratch, HitTest, PatchCache, SceneView, Scratch};
+use super::{with_scratch, HitTest, PatchCache, SceneView, Scratch};
 use crate::counters::Counters;
-use crate::geom::{cross, Hit, Segment, Vec2};
+use crate::geom::{cross, Hit, Nearest, Segment, Vec2};
 use crate::grid::CellScan;
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
@@ -300,8 +300,8 @@ impl SectorRays {
         self.s + w * 64 + 63 - bits.leading_zeros() as usize
     }
 
-    /// Tests every remaining ray in `[lo, hi)` (within the sector), in order, against patch `p`,
-    /// offering each hit to the ray's slot in `best`.
+    /// Tests every remaining ray in `[lo, hi)` (within the sector) against patch `p`, offering
+    /// each hit to the ray's entry in `best`.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn test_span<H: HitTest>(
@@ -312,7 +312,7 @@ impl SectorRays {
         p: u32,
         lo: usize,
         hi: usize,
-        best: &mut [Option<Hit>],
+        best: &mut Nearest,
         c: &mut Counters,
     ) {
         if lo >= hi {
@@ -329,24 +329,20 @@ impl SectorRays {
                 word &= !0u64 >> (64 - b % 64);
             }
             c.intersection_computations += word.count_ones() as u64;
-            let base = self.s + w * 64;
-            let hit = &mut self.hit[w];
-            test.hit_rays(bundle, p, seg, base, word, |i, t| {
-                offer(&mut best[i], Hit { t, segment: p });
-                *hit |= 1u64 << (i - base);
-            });
+            self.hit[w] |= test.offer_rays(bundle, p, seg, self.s + w * 64, word, best);
         }
     }
 
     /// Retires the remaining rays whose nearest hit lies before `limit`; returns how many left.
-    fn retire<H: HitTest>(&mut self, test: &H, best: &[Option<Hit>], limit: f64) -> usize {
+    fn retire<H: HitTest>(&mut self, test: &H, best: &Nearest, limit: f64) -> usize {
         let mut n = 0;
         for w in 0..self.alive.len() {
             let mut cand = self.alive[w] & self.hit[w];
             while cand != 0 {
                 let b = cand.trailing_zeros() as usize;
                 cand &= cand - 1;
-                if matches!(best[self.s + w * 64 + b], Some(h) if h.t < limit) {
+                // A ray with its bit in `hit` holds a hit: its key is the hit's distance.
+                if best.key(self.s + w * 64 + b) < limit {
                     self.alive[w] &= !(1u64 << b);
                     test.retire(self.s + w * 64 + b);
                     n += 1;
@@ -466,7 +462,7 @@ fn trace_bundle<H: HitTest>(
     };
     let mut c = Counters::default();
     let mut stats = ShellStats::default();
-    let mut best: Vec<Option<Hit>> = vec![None; r];
+    let mut best = Nearest::new(r);
     let mut rays = SectorRays::new();
     let mut est_sum = 0.0;
     let mut est_weight = 0.0;
@@ -685,5 +681,5 @@ fn trace_bundle<H: HitTest>(
         s = e;
     }
     c.adlc_estimated = if est_weight > 0.0 { est_sum / est_weight } else { 0.0 };
-    (best, c, stats)
+    (best.into_hits(), c, stats)
 }
