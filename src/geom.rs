@@ -732,4 +732,89 @@ mod tests {
         assert!(!closer(b, Some(a)));
         assert!(closer(b, None));
     }
+
+    /// [`FrontPatch::offer_rays`] (AVX2 where the CPU has it) answers as [`hit_front`] and
+    /// [`closer`] do ray by ray: the same hits, the same bits of `t`, the same ties, also for
+    /// rays of another origin, rays through endpoints and a bundle whose length is not a
+    /// multiple of four.
+    #[test]
+    fn offer_rays_is_hit_front_and_closer() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let o = v(10.0, 20.0);
+        let segs: Vec<Segment> = (0..40)
+            .map(|k| {
+                let a = v(next() * 60.0 - 20.0, next() * 60.0);
+                let b = if k % 5 == 0 { a + v(0.0, 8.0) } else { v(next() * 60.0 - 20.0, next() * 60.0) };
+                Segment::new(a, b)
+            })
+            .filter(|s| orient(s.a, s.b, o) > 0.0)
+            .collect();
+        let mut rays: Vec<Ray> = (0..70)
+            .map(|i| {
+                let phi = (i as f64 / 70.0) * std::f64::consts::TAU;
+                Ray::new(o, v(phi.cos(), phi.sin()))
+            })
+            .collect();
+        // Rays through endpoints, one from another origin.
+        rays[5] = Ray::new(o, (segs[0].a - o).normalize());
+        rays[6] = Ray::new(o, (segs[0].b - o).normalize());
+        rays[33] = Ray::new(o + v(1.0, 0.5), rays[33].dir);
+        // Copies of patches: exact ties of `t`, offered after and before the lower index.
+        let mut segs = segs;
+        segs.extend_from_within(0..6);
+        for reverse in [false, true] {
+            let mut nearest = Nearest::new(rays.len());
+            let mut expect: Vec<Option<Hit>> = vec![None; rays.len()];
+            let mut order: Vec<usize> = (0..segs.len()).collect();
+            if reverse {
+                order.reverse();
+            }
+            for p in order {
+                let (seg, front) = (&segs[p], FrontPatch::new(o, &segs[p]));
+                for base in [0usize, 64] {
+                    let word = if base == 0 { !0u64 ^ (1 << 9) } else { (1u64 << (rays.len() - 64)) - 1 };
+                    let hits = front.offer_rays(&rays, p as u32, base, word, &mut nearest);
+                    let mut want = 0u64;
+                    for k in (0..64).filter(|k| word >> k & 1 != 0) {
+                        if let Some(t) = hit_front(&rays[base + k], seg) {
+                            want |= 1 << k;
+                            let h = Hit { t, segment: p as u32 };
+                            if closer(h, expect[base + k]) {
+                                expect[base + k] = Some(h);
+                            }
+                        }
+                    }
+                    assert_eq!(hits, want, "patch {p}, rays from {base}");
+                }
+            }
+            let got = nearest.into_hits();
+            assert!(got.iter().flatten().count() > 20);
+            for (i, (g, e)) in got.iter().zip(&expect).enumerate() {
+                let bits = |h: &Option<Hit>| h.map(|h| (h.t.to_bits(), h.segment));
+                assert_eq!(bits(g), bits(e), "ray {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn nearest_offers_as_closer_decides() {
+        let mut n = Nearest::new(2);
+        assert_eq!(n.get(0), None);
+        n.offer(0, Hit { t: 2.0, segment: 5 });
+        n.offer(0, Hit { t: 2.0, segment: 7 });
+        assert_eq!(n.get(0), Some(Hit { t: 2.0, segment: 5 }));
+        n.offer(0, Hit { t: 2.0, segment: 3 });
+        n.offer(1, Hit { t: f64::INFINITY, segment: 1 });
+        assert_eq!(n.key(0), 2.0);
+        assert_eq!(
+            n.into_hits(),
+            vec![Some(Hit { t: 2.0, segment: 3 }), Some(Hit { t: f64::INFINITY, segment: 1 })]
+        );
+    }
 }
