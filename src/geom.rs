@@ -268,10 +268,7 @@ impl FrontPatch {
             return unsafe { self.offer_rays_avx2(rays, p, base, word, nearest) };
         }
         let mut hits = 0;
-        self.hit_rays(rays, base, word, |i, t| {
-            nearest.offer(i, Hit { t, segment: p });
-            hits |= 1u64 << (i - base);
-        });
+        self.hit_rays(rays, base, word, nearest.offering(p, base, &mut hits));
         hits
     }
 
@@ -649,6 +646,17 @@ impl Nearest {
         self.segment[i] = if take { h.segment } else { segment };
     }
 
+    /// The `found` of a hit test of patch `p` for rays over `base` (such as
+    /// [`FrontPatch::hit_rays`]): each hit is offered, and its ray marked in `hits`, a bit over
+    /// `base`.
+    #[inline(always)]
+    pub fn offering<'a>(&'a mut self, p: u32, base: usize, hits: &'a mut u64) -> impl FnMut(usize, f64) + 'a {
+        move |i, t| {
+            self.offer(i, Hit { t, segment: p });
+            *hits |= 1u64 << (i - base);
+        }
+    }
+
     /// The keys and the patch indices of rays `i..i + 4` (past `n`: entries no ray holds).
     #[inline(always)]
     fn block(&mut self, i: usize) -> (&mut [f64], &mut [u32]) {
@@ -770,6 +778,8 @@ mod tests {
         segs.extend_from_within(0..6);
         for reverse in [false, true] {
             let mut nearest = Nearest::new(rays.len());
+            // What CPUs without AVX2 do: the SSE2 test, each hit offered on its own.
+            let mut fallback = Nearest::new(rays.len());
             let mut expect: Vec<Option<Hit>> = vec![None; rays.len()];
             let mut order: Vec<usize> = (0..segs.len()).collect();
             if reverse {
@@ -780,6 +790,9 @@ mod tests {
                 for base in [0usize, 64] {
                     let word = if base == 0 { !0u64 ^ (1 << 9) } else { (1u64 << (rays.len() - 64)) - 1 };
                     let hits = front.offer_rays(&rays, p as u32, base, word, &mut nearest);
+                    let mut fallback_hits = 0;
+                    front.hit_rays(&rays, base, word, fallback.offering(p as u32, base, &mut fallback_hits));
+                    assert_eq!(hits, fallback_hits, "patch {p}, rays from {base}");
                     let mut want = 0u64;
                     for k in (0..64).filter(|k| word >> k & 1 != 0) {
                         if let Some(t) = hit_front(&rays[base + k], seg) {
@@ -795,6 +808,7 @@ mod tests {
             }
             let got = nearest.into_hits();
             assert!(got.iter().flatten().count() > 20);
+            assert_eq!(got, fallback.into_hits());
             for (i, (g, e)) in got.iter().zip(&expect).enumerate() {
                 let bits = |h: &Option<Hit>| h.map(|h| (h.t.to_bits(), h.segment));
                 assert_eq!(bits(g), bits(e), "ray {i}");

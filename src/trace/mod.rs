@@ -128,10 +128,7 @@ pub trait HitTest {
         nearest: &mut Nearest,
     ) -> u64 {
         let mut hits = 0;
-        self.hit_rays(bundle, p, seg, base, rays, |i, t| {
-            nearest.offer(i, Hit { t, segment: p });
-            hits |= 1u64 << (i - base);
-        });
+        self.hit_rays(bundle, p, seg, base, rays, nearest.offering(p, base, &mut hits));
         hits
     }
 

@@ -50,15 +50,24 @@
 //! * **Patches**: [`PatchCache::load`] checks a dense per-sector stamp first; what a load needs
 //!   of a patch's per-source information (computed on its first load) takes 16 bytes, the rest
 //!   (read for relevant patches only) lies apart.
-//! * **Hit tests** go a word of rays at a time through the backend's `hit_rays`; the golden
-//!   one tests two rays per step in SSE2 lanes on x86-64 ([`FrontPatch::hit_rays`]), each lane
-//!   doing the scalar test's operations on the same operands.
+//! * **Nearest hits** are kept as two arrays ([`Nearest`]): each ray's distance key and patch
+//!   index, so that a ray's retirement reads one `f64` and neighbouring rays' hits can be
+//!   offered together.
+//! * **Hit tests** go a word of rays at a time through the backend's `offer_rays`, which tests
+//!   and offers the hits. The golden one tests a block of four neighbouring rays per step in
+//!   AVX2 lanes on x86-64 CPUs that have it, and makes the block's offers in the lanes too
+//!   ([`FrontPatch::offer_rays`]); elsewhere two rays per step in SSE2 lanes
+//!   ([`FrontPatch::hit_rays`]). Each lane does the scalar test's operations on the same
+//!   operands, and an offer takes the hit exactly when [`closer`] says so.
 //! * **Instructions**: on x86-64 CPUs with AVX2 (x86-64-v3 less FMA), the body runs as a copy
 //!   compiled for those instructions (`trace_bundle_v3`): the same operations in the same
 //!   order, as Rust never fuses a multiply and an add by itself.
 //!
 //! [`Grid::raster_convex_n`]: crate::grid::Grid::raster_convex_n
 //! [`FrontPatch::hit_rays`]: crate::geom::FrontPatch::hit_rays
+//! [`FrontPatch::offer_rays`]: crate::geom::FrontPatch::offer_rays
+//! [`Nearest`]: crate::geom::Nearest
+//! [`closer`]: crate::geom::closer
 //! [`Grid::scan_cell`]: crate::grid::Grid::scan_cell
 //! [`PatchCache::load`]: super::PatchCache::load
 
