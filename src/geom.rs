@@ -259,7 +259,7 @@ impl FrontPatch {
     /// [`FrontPatch::hit_rays`] with each hit `t` offered to `nearest` as [`Nearest::offer`]
     /// offers `Hit { t, segment: p }`; returns the rays that hit, as bits over `base` like
     /// `word`. On x86-64 CPUs with AVX2 four rays go at a time, their offers made in the vector
-    /// lanes as well ([`FrontPatch::offer_rays_avx2`]); elsewhere it is `hit_rays` and `offer`.
+    /// lanes as well (`offer_rays_avx2`); elsewhere it is `hit_rays` and `offer`.
     #[inline(always)]
     pub fn offer_rays(&self, rays: &[Ray], p: u32, base: usize, word: u64, nearest: &mut Nearest) -> u64 {
         #[cfg(target_arch = "x86_64")]
