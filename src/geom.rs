@@ -256,6 +256,22 @@ impl FrontPatch {
         }
     }
 
+    /// [`FrontPatch::hit_rays`] with each hit `t` offered to `nearest` as [`Nearest::offer`]
+    /// offers `Hit { t, segment: p }`; returns the rays that hit, as bits over `base` like
+    /// `word`. On x86-64 CPUs with AVX2 four rays go at a time, their offers made in the vector
+    /// lanes as well (`offer_rays_avx2`); elsewhere it is `hit_rays` and `offer`.
+    #[inline(always)]
+    pub fn offer_rays(&self, rays: &[Ray], p: u32, base: usize, word: u64, nearest: &mut Nearest) -> u64 {
+        #[cfg(target_arch = "x86_64")]
+        if std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU has AVX2 (just checked), and so AVX.
+            return unsafe { self.offer_rays_avx2(rays, p, base, word, nearest) };
+        }
+        let mut hits = 0;
+        self.hit_rays(rays, base, word, nearest.offering(p, base, &mut hits));
+        hits
+    }
+
     /// The SSE2 body of [`FrontPatch::hit_rays`]: two rays per step, lane 0 and lane 1 (an odd
     /// last ray fills both). A pair not both from this patch's origin, and a lane that the
     /// filter cannot decide or whose quotient or projections are NaN, take
@@ -340,6 +356,178 @@ impl FrontPatch {
     }
 }
 
+impl FrontPatch {
+    /// The AVX2 body of [`FrontPatch::offer_rays`]: the rays go a block of four at a time, ray
+    /// `base + k + j` in lane `j` (`k` a multiple of 4), and each lane performs the operations
+    /// of [`FrontPatch::hit_rays_sse2`] on the same operands: AVX's arithmetic, comparisons,
+    /// `min` and `max` answer lane by lane exactly as SSE2's do (the predicates are the ones
+    /// SSE2's comparisons encode), and nothing is fused (FMA is not enabled), so the distances
+    /// are the same bits. Lanes the SSE2 body hands to [`FrontPatch::hit_any`] go there too
+    /// (all of a block whose rays do not all have this patch's origin). The other lanes that hit
+    /// are offered in the vector: a lane takes `(t, p)` where `t` is below its key, or equal to
+    /// it and `p` below its patch index (no hit holds `+∞` and [`Nearest::NONE`], which every
+    /// key that is not NaN beats, and these are not NaN), as [`Nearest::offer`] decides.
+    ///
+    /// Where the caller is compiled for these instructions (the shelling tracers' x86-64-v3
+    /// copy) it may be inlined into it.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx,avx2")]
+    #[inline]
+    fn offer_rays_avx2(
+        &self,
+        rays: &[Ray],
+        p: u32,
+        base: usize,
+        mut word: u64,
+        nearest: &mut Nearest,
+    ) -> u64 {
+        use avx2::*;
+        use std::arch::x86_64::*;
+        let splat = _mm256_set1_pd;
+        let (ax, ay, bx, by) =
+            (splat(self.seg.a.x), splat(self.seg.a.y), splat(self.seg.b.x), splat(self.seg.b.y));
+        let (oax, oay, obx, oby) = (splat(self.oa.x), splat(self.oa.y), splat(self.ob.x), splat(self.ob.y));
+        let (ex, ey, num) = (splat(self.e.x), splat(self.e.y), splat(self.num));
+        let (wx, wy, wbx, wby) = (splat(self.w.x), splat(self.w.y), splat(self.wb.x), splat(self.wb.y));
+        let (zero, tiny) = (_mm256_setzero_pd(), splat(f64::MIN_POSITIVE));
+        let origin = _mm256_castpd_si256(pair(self.origin, self.origin));
+        // The patch index, and with its top bit flipped for unsigned comparisons.
+        let (pv, flip) = (_mm_set1_epi32(p as i32), _mm_set1_epi32(i32::MIN));
+        let pv_signed = _mm_xor_si128(pv, flip);
+        let lane_bits = _mm256_setr_epi64x(1, 2, 4, 8);
+        let mut hits = 0u64;
+        while word != 0 {
+            // The next block with a ray to test; `valid` marks its rays to test. Past the end of
+            // `rays` the last ray fills the lanes.
+            let k = word.trailing_zeros() as usize & !3;
+            let valid = (word >> k) as u32 & 15;
+            word &= !(15u64 << k);
+            let i = base + k;
+            let r = match rays.get(i..i + 4) {
+                Some(b) => [&b[0], &b[1], &b[2], &b[3]],
+                None => {
+                    let at = |j: usize| &rays[(i + j).min(rays.len() - 1)];
+                    [at(0), at(1), at(2), at(3)]
+                }
+            };
+            let same = _mm256_and_si256(
+                _mm256_cmpeq_epi64(_mm256_castpd_si256(pair(r[0].origin, r[2].origin)), origin),
+                _mm256_cmpeq_epi64(_mm256_castpd_si256(pair(r[1].origin, r[3].origin)), origin),
+            );
+            let slow = if _mm256_movemask_epi8(same) != -1 {
+                valid
+            } else {
+                let (px, py) = lanes(r[0].probe, r[1].probe, r[2].probe, r[3].probe);
+                let (da, certain_a) = filter(oax, oay, _mm256_sub_pd(px, ax), _mm256_sub_pd(py, ay));
+                let (db, certain_b) = filter(obx, oby, _mm256_sub_pd(px, bx), _mm256_sub_pd(py, by));
+                let certain = _mm256_and_pd(certain_a, certain_b);
+                let miss = _mm256_or_pd(
+                    _mm256_cmp_pd::<_CMP_GT_OS>(da, zero),
+                    _mm256_cmp_pd::<_CMP_LT_OS>(db, zero),
+                );
+                // `num / cross(d, e)`, `w · d` and `wb · d` in every lane, then `settle`.
+                let (dx, dy) = lanes(r[0].dir, r[1].dir, r[2].dir, r[3].dir);
+                let t = _mm256_div_pd(num, _mm256_sub_pd(_mm256_mul_pd(dx, ey), _mm256_mul_pd(dy, ex)));
+                let ta = _mm256_add_pd(_mm256_mul_pd(wx, dx), _mm256_mul_pd(wy, dy));
+                let tb = _mm256_add_pd(_mm256_mul_pd(wbx, dx), _mm256_mul_pd(wby, dy));
+                let tame =
+                    _mm256_and_pd(_mm256_cmp_pd::<_CMP_ORD_Q>(ta, tb), _mm256_cmp_pd::<_CMP_ORD_Q>(t, t));
+                let x = _mm256_max_pd(
+                    _mm256_min_pd(_mm256_max_pd(t, _mm256_min_pd(ta, tb)), _mm256_max_pd(ta, tb)),
+                    tiny,
+                );
+                // Lanes the vector answer does not settle: undecided, or a hit with a NaN about.
+                let (certain, miss, tame) = (
+                    _mm256_movemask_pd(certain) as u32,
+                    _mm256_movemask_pd(miss) as u32,
+                    _mm256_movemask_pd(tame) as u32,
+                );
+                let slow = (!certain | (!miss & !tame)) & valid;
+                let fast_hit = !slow & !miss & valid;
+                if fast_hit != 0 {
+                    let bits = _mm256_set1_epi64x(fast_hit as i64);
+                    let fast = _mm256_cmpeq_epi64(_mm256_and_si256(bits, lane_bits), lane_bits);
+                    let (keys, patches) = nearest.block(i);
+                    // SAFETY: `keys` holds four `f64` and `patches` four `u32` (16 bytes);
+                    // unaligned loads and stores.
+                    unsafe {
+                        let old_t = _mm256_loadu_pd(keys.as_ptr());
+                        let old_p = _mm_loadu_si128(patches.as_ptr().cast());
+                        // `p < old_p` (unsigned), widened to the 64-bit lanes.
+                        let lower =
+                            _mm256_cvtepi32_epi64(_mm_cmpgt_epi32(_mm_xor_si128(old_p, flip), pv_signed));
+                        let closer = _mm256_or_pd(
+                            _mm256_cmp_pd::<_CMP_LT_OQ>(x, old_t),
+                            _mm256_and_pd(_mm256_cmp_pd::<_CMP_EQ_OQ>(x, old_t), _mm256_castsi256_pd(lower)),
+                        );
+                        let take = _mm256_and_pd(closer, _mm256_castsi256_pd(fast));
+                        _mm256_storeu_pd(keys.as_mut_ptr(), _mm256_blendv_pd(old_t, x, take));
+                        // The low halves of the 64-bit lanes of `take`, as 32-bit lanes.
+                        let take32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(
+                            _mm256_castpd_si256(take),
+                            _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7),
+                        ));
+                        _mm_storeu_si128(patches.as_mut_ptr().cast(), _mm_blendv_epi8(old_p, pv, take32));
+                    }
+                    hits |= (fast_hit as u64) << k;
+                }
+                slow
+            };
+            let mut m = slow;
+            while m != 0 {
+                let j = m.trailing_zeros() as usize;
+                m &= m - 1;
+                if let Some(t) = self.hit_any(r[j]) {
+                    nearest.offer(i + j, Hit { t, segment: p });
+                    hits |= 1u64 << (k + j);
+                }
+            }
+        }
+        hits
+    }
+}
+
+/// Helpers of [`FrontPatch::offer_rays_avx2`]. They use AVX and AVX2 intrinsics, so they are
+/// compiled for them and may only be called where the CPU is known to have them.
+#[cfg(target_arch = "x86_64")]
+mod avx2 {
+    use super::{Vec2, THETA};
+    use std::arch::x86_64::*;
+
+    /// `[u.x, u.y, v.x, v.y]`.
+    #[target_feature(enable = "avx,avx2")]
+    #[inline]
+    pub(super) fn pair(u: Vec2, v: Vec2) -> __m256d {
+        _mm256_setr_pd(u.x, u.y, v.x, v.y)
+    }
+
+    /// The x and the y coordinates of four vectors, each in lanes 0 to 3.
+    #[target_feature(enable = "avx,avx2")]
+    #[inline]
+    pub(super) fn lanes(v0: Vec2, v1: Vec2, v2: Vec2, v3: Vec2) -> (__m256d, __m256d) {
+        let (a, b) = (pair(v0, v2), pair(v1, v3));
+        (_mm256_unpacklo_pd(a, b), _mm256_unpackhi_pd(a, b))
+    }
+
+    /// `orient_filter(ac, bc)` in every lane: the determinant and whether it is certain (the
+    /// SSE2 helper's operations, with the predicates its comparisons encode).
+    #[target_feature(enable = "avx,avx2")]
+    #[inline]
+    pub(super) fn filter(acx: __m256d, acy: __m256d, bcx: __m256d, bcy: __m256d) -> (__m256d, __m256d) {
+        let sign = _mm256_set1_pd(-0.0);
+        let detleft = _mm256_mul_pd(acx, bcy);
+        let detright = _mm256_mul_pd(acy, bcx);
+        let det = _mm256_sub_pd(detleft, detright);
+        let errbound =
+            _mm256_mul_pd(_mm256_set1_pd(THETA), _mm256_andnot_pd(sign, _mm256_add_pd(detleft, detright)));
+        let certain = _mm256_or_pd(
+            _mm256_cmp_pd::<_CMP_GE_OS>(det, errbound),
+            _mm256_cmp_pd::<_CMP_GE_OS>(_mm256_xor_pd(det, sign), errbound),
+        );
+        (det, certain)
+    }
+}
+
 /// Helpers of [`FrontPatch::hit_rays`] on x86-64. They use SSE2 intrinsics, so they may only
 /// be called where SSE2 is known to be present (the `cfg` of this module).
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
@@ -420,6 +608,75 @@ pub fn closer(a: Hit, b: Option<Hit>) -> bool {
     }
 }
 
+/// The nearest hits of rays `0..n` so far, as the shelling tracers keep them: each ray's
+/// distance key and patch index in arrays of their own, so that a hit test can read and offer
+/// a block of neighbouring rays at once ([`FrontPatch::offer_rays`]). A ray without a hit holds
+/// the key `+∞` and the patch [`Nearest::NONE`]; patch indices stay below it.
+#[derive(Clone, Debug)]
+pub struct Nearest {
+    /// `n + 3` entries, so that a block of four from any ray lies inside.
+    t: Vec<f64>,
+    segment: Vec<u32>,
+}
+
+impl Nearest {
+    /// The patch index of a ray without a hit.
+    pub const NONE: u32 = u32::MAX;
+
+    /// Rays `0..n`, none hit.
+    pub fn new(n: usize) -> Self {
+        Nearest { t: vec![f64::INFINITY; n + 3], segment: vec![Self::NONE; n + 3] }
+    }
+
+    /// The nearest hit of ray `i` so far.
+    #[inline]
+    pub fn get(&self, i: usize) -> Option<Hit> {
+        let segment = self.segment[i];
+        (segment != Self::NONE).then(|| Hit { t: self.t[i], segment })
+    }
+
+    /// Offers hit `h` to ray `i`: it is taken when it is [`closer`] than the ray's hit.
+    #[inline(always)]
+    pub fn offer(&mut self, i: usize, h: Hit) {
+        debug_assert!(h.segment != Self::NONE, "patch indices stay below Nearest::NONE");
+        let (t, segment) = (self.t[i], self.segment[i]);
+        // `closer(h, self.get(i))`, without a branch on the data.
+        let take = (segment == Self::NONE) | (h.t < t) | ((h.t == t) & (h.segment < segment));
+        self.t[i] = if take { h.t } else { t };
+        self.segment[i] = if take { h.segment } else { segment };
+    }
+
+    /// The `found` of a hit test of patch `p` for rays over `base` (such as
+    /// [`FrontPatch::hit_rays`]): each hit is offered, and its ray marked in `hits`, a bit over
+    /// `base`.
+    #[inline(always)]
+    pub fn offering<'a>(&'a mut self, p: u32, base: usize, hits: &'a mut u64) -> impl FnMut(usize, f64) + 'a {
+        move |i, t| {
+            self.offer(i, Hit { t, segment: p });
+            *hits |= 1u64 << (i - base);
+        }
+    }
+
+    /// The keys and the patch indices of rays `i..i + 4` (past `n`: entries no ray holds).
+    #[inline(always)]
+    fn block(&mut self, i: usize) -> (&mut [f64], &mut [u32]) {
+        (&mut self.t[i..i + 4], &mut self.segment[i..i + 4])
+    }
+
+    /// The key of ray `i`'s nearest hit so far (`+∞` without one).
+    #[inline]
+    pub fn key(&self, i: usize) -> f64 {
+        self.t[i]
+    }
+
+    /// The nearest hit of every ray, by ray index.
+    pub fn into_hits(self) -> Vec<Option<Hit>> {
+        let n = self.t.len() - 3;
+        let pairs = self.t[..n].iter().zip(&self.segment[..n]);
+        pairs.map(|(&t, &segment)| (segment != Self::NONE).then_some(Hit { t, segment })).collect()
+    }
+}
+
 /// The polar angle of `p` seen from a source at `origin` with unit `normal`: the signed angle
 /// from the normal, positive towards `perp(normal)`. Points in front of the source have angles
 /// in (−π/2, π/2).
@@ -482,5 +739,96 @@ mod tests {
         assert!(closer(a, Some(b)));
         assert!(!closer(b, Some(a)));
         assert!(closer(b, None));
+    }
+
+    /// [`FrontPatch::offer_rays`] (AVX2 where the CPU has it) answers as [`hit_front`] and
+    /// [`closer`] do ray by ray: the same hits, the same bits of `t`, the same ties, also for
+    /// rays of another origin, rays through endpoints and a bundle whose length is not a
+    /// multiple of four.
+    #[test]
+    fn offer_rays_is_hit_front_and_closer() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let o = v(10.0, 20.0);
+        let segs: Vec<Segment> = (0..40)
+            .map(|k| {
+                let a = v(next() * 60.0 - 20.0, next() * 60.0);
+                let b = if k % 5 == 0 { a + v(0.0, 8.0) } else { v(next() * 60.0 - 20.0, next() * 60.0) };
+                Segment::new(a, b)
+            })
+            .filter(|s| orient(s.a, s.b, o) > 0.0)
+            .collect();
+        let mut rays: Vec<Ray> = (0..70)
+            .map(|i| {
+                let phi = (i as f64 / 70.0) * std::f64::consts::TAU;
+                Ray::new(o, v(phi.cos(), phi.sin()))
+            })
+            .collect();
+        // Rays through endpoints, one from another origin.
+        rays[5] = Ray::new(o, (segs[0].a - o).normalize());
+        rays[6] = Ray::new(o, (segs[0].b - o).normalize());
+        rays[33] = Ray::new(o + v(1.0, 0.5), rays[33].dir);
+        // Copies of patches: exact ties of `t`, offered after and before the lower index.
+        let mut segs = segs;
+        segs.extend_from_within(0..6);
+        for reverse in [false, true] {
+            let mut nearest = Nearest::new(rays.len());
+            // What CPUs without AVX2 do: the SSE2 test, each hit offered on its own.
+            let mut fallback = Nearest::new(rays.len());
+            let mut expect: Vec<Option<Hit>> = vec![None; rays.len()];
+            let mut order: Vec<usize> = (0..segs.len()).collect();
+            if reverse {
+                order.reverse();
+            }
+            for p in order {
+                let (seg, front) = (&segs[p], FrontPatch::new(o, &segs[p]));
+                for base in [0usize, 64] {
+                    let word = if base == 0 { !0u64 ^ (1 << 9) } else { (1u64 << (rays.len() - 64)) - 1 };
+                    let hits = front.offer_rays(&rays, p as u32, base, word, &mut nearest);
+                    let mut fallback_hits = 0;
+                    front.hit_rays(&rays, base, word, fallback.offering(p as u32, base, &mut fallback_hits));
+                    assert_eq!(hits, fallback_hits, "patch {p}, rays from {base}");
+                    let mut want = 0u64;
+                    for k in (0..64).filter(|k| word >> k & 1 != 0) {
+                        if let Some(t) = hit_front(&rays[base + k], seg) {
+                            want |= 1 << k;
+                            let h = Hit { t, segment: p as u32 };
+                            if closer(h, expect[base + k]) {
+                                expect[base + k] = Some(h);
+                            }
+                        }
+                    }
+                    assert_eq!(hits, want, "patch {p}, rays from {base}");
+                }
+            }
+            let got = nearest.into_hits();
+            assert!(got.iter().flatten().count() > 20);
+            assert_eq!(got, fallback.into_hits());
+            for (i, (g, e)) in got.iter().zip(&expect).enumerate() {
+                let bits = |h: &Option<Hit>| h.map(|h| (h.t.to_bits(), h.segment));
+                assert_eq!(bits(g), bits(e), "ray {i}");
+            }
+        }
+    }
+
+    #[test]
+    fn nearest_offers_as_closer_decides() {
+        let mut n = Nearest::new(2);
+        assert_eq!(n.get(0), None);
+        n.offer(0, Hit { t: 2.0, segment: 5 });
+        n.offer(0, Hit { t: 2.0, segment: 7 });
+        assert_eq!(n.get(0), Some(Hit { t: 2.0, segment: 5 }));
+        n.offer(0, Hit { t: 2.0, segment: 3 });
+        n.offer(1, Hit { t: f64::INFINITY, segment: 1 });
+        assert_eq!(n.key(0), 2.0);
+        assert_eq!(
+            n.into_hits(),
+            vec![Some(Hit { t: 2.0, segment: 3 }), Some(Hit { t: f64::INFINITY, segment: 1 })]
+        );
     }
 }

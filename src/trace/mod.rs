@@ -15,7 +15,7 @@ mod shelling;
 pub use shelling::{ShellParams, ShellStats};
 
 use crate::counters::Counters;
-use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, Segment, Vec2};
+use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, Nearest, Segment, Vec2};
 use crate::grid::Grid;
 use crate::rays::Bundle;
 use std::fmt;
@@ -113,6 +113,25 @@ pub trait HitTest {
         }
     }
 
+    /// [`HitTest::hit_rays`] with each hit offered to `nearest` ([`Nearest::offer`] of
+    /// `Hit { t: key, segment: p }`); returns the rays that hit, as bits over `base` like
+    /// `rays`. A backend may override it to make the offers of several rays at once, with the
+    /// same outcome (which the default has, by construction).
+    #[inline(always)]
+    fn offer_rays(
+        &self,
+        bundle: &Bundle,
+        p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        nearest: &mut Nearest,
+    ) -> u64 {
+        let mut hits = 0;
+        self.hit_rays(bundle, p, seg, base, rays, nearest.offering(p, base, &mut hits));
+        hits
+    }
+
     /// A sector starts: its rays (the conventional technique: one sector of the whole bundle).
     #[inline(always)]
     fn sector(&self, _rays: Range<usize>) {}
@@ -152,6 +171,20 @@ impl HitTest for FloatHits {
         found: impl FnMut(usize, f64),
     ) {
         FrontPatch::new(bundle.source.origin, seg).hit_rays(&bundle.rays, base, rays, found);
+    }
+
+    /// The per-patch part of [`hit_front`] once per patch ([`FrontPatch::offer_rays`]).
+    #[inline(always)]
+    fn offer_rays(
+        &self,
+        bundle: &Bundle,
+        p: u32,
+        seg: &Segment,
+        base: usize,
+        rays: u64,
+        nearest: &mut Nearest,
+    ) -> u64 {
+        FrontPatch::new(bundle.source.origin, seg).offer_rays(&bundle.rays, p, base, rays, nearest)
     }
 }
 

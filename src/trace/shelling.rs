@@ -50,21 +50,30 @@
 //! * **Patches**: [`PatchCache::load`] checks a dense per-sector stamp first; what a load needs
 //!   of a patch's per-source information (computed on its first load) takes 16 bytes, the rest
 //!   (read for relevant patches only) lies apart.
-//! * **Hit tests** go a word of rays at a time through the backend's `hit_rays`; the golden
-//!   one tests two rays per step in SSE2 lanes on x86-64 ([`FrontPatch::hit_rays`]), each lane
-//!   doing the scalar test's operations on the same operands.
+//! * **Nearest hits** are kept as two arrays ([`Nearest`]): each ray's distance key and patch
+//!   index, so that a ray's retirement reads one `f64` and neighbouring rays' hits can be
+//!   offered together.
+//! * **Hit tests** go a word of rays at a time through the backend's `offer_rays`, which tests
+//!   and offers the hits. The golden one tests a block of four neighbouring rays per step in
+//!   AVX2 lanes on x86-64 CPUs that have it, and makes the block's offers in the lanes too
+//!   ([`FrontPatch::offer_rays`]); elsewhere two rays per step in SSE2 lanes
+//!   ([`FrontPatch::hit_rays`]). Each lane does the scalar test's operations on the same
+//!   operands, and an offer takes the hit exactly when [`closer`] says so.
 //! * **Instructions**: on x86-64 CPUs with AVX2 (x86-64-v3 less FMA), the body runs as a copy
 //!   compiled for those instructions (`trace_bundle_v3`): the same operations in the same
 //!   order, as Rust never fuses a multiply and an add by itself.
 //!
 //! [`Grid::raster_convex_n`]: crate::grid::Grid::raster_convex_n
 //! [`FrontPatch::hit_rays`]: crate::geom::FrontPatch::hit_rays
+//! [`FrontPatch::offer_rays`]: crate::geom::FrontPatch::offer_rays
+//! [`Nearest`]: crate::geom::Nearest
+//! [`closer`]: crate::geom::closer
 //! [`Grid::scan_cell`]: crate::grid::Grid::scan_cell
 //! [`PatchCache::load`]: super::PatchCache::load
 
-use super::{offer, with_scratch, HitTest, PatchCache, SceneView, Scratch};
+use super::{with_scratch, HitTest, PatchCache, SceneView, Scratch};
 use crate::counters::Counters;
-use crate::geom::{cross, Hit, Segment, Vec2};
+use crate::geom::{cross, Hit, Nearest, Segment, Vec2};
 use crate::grid::CellScan;
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
@@ -300,8 +309,8 @@ impl SectorRays {
         self.s + w * 64 + 63 - bits.leading_zeros() as usize
     }
 
-    /// Tests every remaining ray in `[lo, hi)` (within the sector), in order, against patch `p`,
-    /// offering each hit to the ray's slot in `best`.
+    /// Tests every remaining ray in `[lo, hi)` (within the sector) against patch `p`, offering
+    /// each hit to the ray's entry in `best`.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn test_span<H: HitTest>(
@@ -312,7 +321,7 @@ impl SectorRays {
         p: u32,
         lo: usize,
         hi: usize,
-        best: &mut [Option<Hit>],
+        best: &mut Nearest,
         c: &mut Counters,
     ) {
         if lo >= hi {
@@ -329,24 +338,20 @@ impl SectorRays {
                 word &= !0u64 >> (64 - b % 64);
             }
             c.intersection_computations += word.count_ones() as u64;
-            let base = self.s + w * 64;
-            let hit = &mut self.hit[w];
-            test.hit_rays(bundle, p, seg, base, word, |i, t| {
-                offer(&mut best[i], Hit { t, segment: p });
-                *hit |= 1u64 << (i - base);
-            });
+            self.hit[w] |= test.offer_rays(bundle, p, seg, self.s + w * 64, word, best);
         }
     }
 
     /// Retires the remaining rays whose nearest hit lies before `limit`; returns how many left.
-    fn retire<H: HitTest>(&mut self, test: &H, best: &[Option<Hit>], limit: f64) -> usize {
+    fn retire<H: HitTest>(&mut self, test: &H, best: &Nearest, limit: f64) -> usize {
         let mut n = 0;
         for w in 0..self.alive.len() {
             let mut cand = self.alive[w] & self.hit[w];
             while cand != 0 {
                 let b = cand.trailing_zeros() as usize;
                 cand &= cand - 1;
-                if matches!(best[self.s + w * 64 + b], Some(h) if h.t < limit) {
+                // A ray with its bit in `hit` holds a hit: its key is the hit's distance.
+                if best.key(self.s + w * 64 + b) < limit {
                     self.alive[w] &= !(1u64 << b);
                     test.retire(self.s + w * 64 + b);
                     n += 1;
@@ -466,7 +471,7 @@ fn trace_bundle<H: HitTest>(
     };
     let mut c = Counters::default();
     let mut stats = ShellStats::default();
-    let mut best: Vec<Option<Hit>> = vec![None; r];
+    let mut best = Nearest::new(r);
     let mut rays = SectorRays::new();
     let mut est_sum = 0.0;
     let mut est_weight = 0.0;
@@ -685,5 +690,5 @@ fn trace_bundle<H: HitTest>(
         s = e;
     }
     c.adlc_estimated = if est_weight > 0.0 { est_sum / est_weight } else { 0.0 };
-    (best, c, stats)
+    (best.into_hits(), c, stats)
 }
