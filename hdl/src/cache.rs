@@ -57,20 +57,22 @@
 //!     register; its line is presented to the lanes and the request moves to S1, and the queue
 //!     lane reads the request after it.
 //!   - **S1**: the lanes' first read register.
-//!   - **S2** (lookup): the lanes' output registers hold the request's line, so
-//!     `hit = tag == {1, id}`. A hit is answered from the data lanes; a miss issues the host
+//!   - **S2**: the lanes' output registers hold the request's line; `tag == {1, id}` is
+//!     computed and registered with the line's words.
+//!   - **S3** (lookup): a hit is answered from the registered words; a miss issues the host
 //!     request and goes to W.
 //!   - **W** (wait): the miss waits for `mem_valid`; the response is written into its line
 //!     (tag and data) and forwarded to the client. A `mem_valid` with no miss waiting is a
 //!     protocol violation and is ignored.
 //!
-//!   Requests are looked up before the ones ahead of them are answered. A miss voids the two
-//!   lookups behind it (in S1 and S2 while it waits) and rewinds the queue's read pointer to the
+//!   Requests are looked up before the ones ahead of them are answered. A miss voids the three
+//!   lookups behind it (in S1, S2 and S3 while it waits) and rewinds the queue's read pointer to the
 //!   request after it: after the fill those are issued again, so they see the line it wrote
 //!   (the lanes read before they write, and nothing is issued until the cycle after the fill).
 //!   Only fills write, and nothing is issued while a fill is pending, so there is no other
-//!   hazard. The tag compare feeds registers only (the response, the counters, the host
-//!   request): no path runs from a block RAM through the compare into another memory's address.
+//!   hazard. The tag compare feeds one register only: no path runs from a block RAM through
+//!   the compare into the pipeline's control (the block RAMs sit far apart on the die; the
+//!   compare's routing alone took 3 ns).
 //! * With the cache enabled every output is a register (`mem_req`, `mem_addr`, `resp_*`,
 //!   counters): no combinational path crosses the block. `resp_*` are meaningful only while
 //!   `resp_valid` is high (the data registers take every looked-up line's words), and
@@ -82,20 +84,20 @@
 //! For a request seen (`req` high) in cycle `a` by an idle block ([`model::schedule`] gives
 //! the exact cycles of any stream):
 //!
-//! * it is looked up (in S2) in cycle `a + 4` ([`model::LOOKUP_DELAY`]);
-//! * a **hit** is answered (`resp_valid`) in cycle `a + 5` ([`model::HIT_LATENCY`]);
-//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 5`; the host answers in
-//!   cycle `a + 5 + T_c`; the client's response follows in cycle `a + 6 + T_c`
+//! * it is looked up (in S3) in cycle `a + 5` ([`model::LOOKUP_DELAY`]);
+//! * a **hit** is answered (`resp_valid`) in cycle `a + 6` ([`model::HIT_LATENCY`]);
+//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 6`; the host answers in
+//!   cycle `a + 6 + T_c`; the client's response follows in cycle `a + 7 + T_c`
 //!   (`T_c +` [`model::MISS_OVERHEAD`]).
 //!
-//! Request `k` is looked up in cycle `b_k = max(a_k + 4, f_{k−1})`, where `f` is when the
-//! lookup stage can next hold a valid request: `f_k = b_k + 1` after a hit, `b_k + T_c + 4`
+//! Request `k` is looked up in cycle `b_k = max(a_k + 5, f_{k−1})`, where `f` is when the
+//! lookup stage can next hold a valid request: `f_k = b_k + 1` after a hit, `b_k + T_c + 5`
 //! after a miss ([`model::MISS_RESTART`]: its host request goes out in `b_k + 1`, the fill
 //! comes in `b_k + 1 + T_c`, the next request is issued again in the cycle after it and looked
-//! up two cycles later). So a stream of hits is answered **one per clock**, and each miss
-//! occupies the pipeline for `T_c + 4` cycles (one more than with a one-clock read, the price of
-//! the output registers that take the block RAMs' clock-to-out off the tag compare). The host
-//! sees at most one request outstanding.
+//! up three cycles later). So a stream of hits is answered **one per clock**, and each miss
+//! occupies the pipeline for `T_c + 5` cycles (two more than with a one-clock read and an
+//! unregistered compare, the price of a 150 MHz clock). The host sees at most one request
+//! outstanding.
 //!
 //! # Model
 //!
@@ -122,16 +124,16 @@ pub mod model {
     use super::LINES;
 
     /// Cycles from a request (`req` high) to its lookup, in an idle block.
-    pub const LOOKUP_DELAY: u64 = 4;
+    pub const LOOKUP_DELAY: u64 = 5;
     /// Cycles from a request to its response when it hits, in an idle block.
-    pub const HIT_LATENCY: u64 = 5;
+    pub const HIT_LATENCY: u64 = 6;
     /// Cycles from a request to its response beyond the host's `T_c` when it misses, in an idle
     /// block: the response comes `T_c + MISS_OVERHEAD` cycles after the request.
-    pub const MISS_OVERHEAD: u64 = 6;
+    pub const MISS_OVERHEAD: u64 = 7;
     /// Cycles from a miss's lookup, beyond the host's `T_c`, to the next lookup: the host
-    /// request (1), the fill, then the next request's read is issued again (1) and takes the
-    /// lanes' two read registers (2).
-    pub const MISS_RESTART: u64 = 4;
+    /// request (1), the fill, then the next request's read is issued again (1), takes the lanes'
+    /// two read registers (2) and its compare's register (1).
+    pub const MISS_RESTART: u64 = 5;
 
     /// The mask for `lines` lines (a power of two, 1 … [`LINES`]), or `None`.
     pub fn mask_for(lines: usize) -> Option<u16> {
@@ -288,6 +290,16 @@ pub struct PatchCache {
     id2: DFF<Bits<16>>,
     key2: DFF<Bits<17>>,
     line2: DFF<Bits<12>>,
+    // Stage S3 (lookup): S2's request, its tag compare and its line's words, registered.
+    v3: DFF<bool>,
+    id3: DFF<Bits<16>>,
+    key3: DFF<Bits<17>>,
+    line3: DFF<Bits<12>>,
+    match3: DFF<bool>,
+    ax3: DFF<Bits<17>>,
+    ay3: DFF<Bits<17>>,
+    bx3: DFF<Bits<17>>,
+    by3: DFF<Bits<17>>,
     // W: a miss waiting for the host, its id, key and line.
     w_valid: DFF<bool>,
     w_id: DFF<Bits<16>>,
@@ -379,6 +391,15 @@ impl Default for PatchCache {
             id2: Default::default(),
             key2: Default::default(),
             line2: Default::default(),
+            v3: Default::default(),
+            id3: Default::default(),
+            key3: Default::default(),
+            line3: Default::default(),
+            match3: Default::default(),
+            ax3: Default::default(),
+            ay3: Default::default(),
+            bx3: Default::default(),
+            by3: Default::default(),
             w_valid: Default::default(),
             w_id: Default::default(),
             w_key: Default::default(),
@@ -443,8 +464,9 @@ impl Logic for PatchCache {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, wr_ptr, rd_ptr, sp, q_valid, v1, id1, key1, line1, v2, id2, key2, line2, w_valid,
-            w_id, w_key, w_line, fl_on, fl_line, mreq, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r
+            self, clock, wr_ptr, rd_ptr, sp, q_valid, v1, id1, key1, line1, v2, id2, key2, line2, v3, id3,
+            key3, line3, match3, ax3, ay3, bx3, by3, w_valid, w_id, w_key, w_line, fl_on, fl_line, mreq, rv,
+            rax, ray, rbx, rby, hit_count, miss_count, hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -463,8 +485,18 @@ impl Logic for PatchCache {
         // S2: the lanes' output registers hold the line of S2's id. While a miss waits, every
         // lookup in flight is void (it is issued again after the fill).
         self.tag_match.next = self.tag.read_data.val() == self.key2.q.val();
-        self.hit.next = self.v2.q.val() & !self.w_valid.q.val() & self.tag_match.val();
-        self.miss.next = self.v2.q.val() & !self.w_valid.q.val() & !self.tag_match.val();
+        self.v3.d.next = self.v2.q.val() & !self.w_valid.q.val();
+        self.id3.d.next = self.id2.q.val();
+        self.key3.d.next = self.key2.q.val();
+        self.line3.d.next = self.line2.q.val();
+        self.match3.d.next = self.tag_match.val();
+        self.ax3.d.next = self.lane_ax.read_data.val();
+        self.ay3.d.next = self.lane_ay.read_data.val();
+        self.bx3.d.next = self.lane_bx.read_data.val();
+        self.by3.d.next = self.lane_by.read_data.val();
+        // S3: the lookup, from registers only.
+        self.hit.next = self.v3.q.val() & !self.w_valid.q.val() & self.match3.q.val();
+        self.miss.next = self.v3.q.val() & !self.w_valid.q.val() & !self.match3.q.val();
         // W: the host's answer to the miss.
         self.fill.next = self.w_valid.q.val() & self.mem_valid.val();
 
@@ -526,9 +558,9 @@ impl Logic for PatchCache {
         self.mreq.d.next = self.miss.val();
         self.w_valid.d.next = (self.w_valid.q.val() & !self.mem_valid.val()) | self.miss.val();
         if !self.w_valid.q.val() {
-            self.w_id.d.next = self.id2.q.val();
-            self.w_key.d.next = self.key2.q.val();
-            self.w_line.d.next = self.line2.q.val();
+            self.w_id.d.next = self.id3.q.val();
+            self.w_key.d.next = self.key3.q.val();
+            self.w_line.d.next = self.line3.q.val();
         }
 
         // The fill: write the line, tag and data.
@@ -568,11 +600,11 @@ impl Logic for PatchCache {
         // words whatever the tag says (fewer loads on the tag compare); they matter only with
         // `rv`.
         self.rv.d.next = self.hit.val() | self.fill.val();
-        if self.v2.q.val() {
-            self.rax.d.next = self.lane_ax.read_data.val();
-            self.ray.d.next = self.lane_ay.read_data.val();
-            self.rbx.d.next = self.lane_bx.read_data.val();
-            self.rby.d.next = self.lane_by.read_data.val();
+        if self.v3.q.val() {
+            self.rax.d.next = self.ax3.q.val();
+            self.ray.d.next = self.ay3.q.val();
+            self.rbx.d.next = self.bx3.q.val();
+            self.rby.d.next = self.by3.q.val();
         }
         if self.w_valid.q.val() {
             self.rax.d.next = self.mem_ax.val();
@@ -635,16 +667,16 @@ mod tests {
     }
 
     #[test]
-    fn schedule_gives_one_hit_per_clock_and_t_c_plus_4_per_miss() {
+    fn schedule_gives_one_hit_per_clock_and_t_c_plus_5_per_miss() {
         let hits: Vec<(u64, bool)> = (0..5).map(|k| (k, true)).collect();
         let s = schedule(&hits, 8);
-        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [5, 6, 7, 8, 9]);
-        assert_eq!(all_hit_cycles(5), 10);
+        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [6, 7, 8, 9, 10]);
+        assert_eq!(all_hit_cycles(5), 11);
         let s = schedule(&[(0, false), (1, true), (2, false), (30, true)], 8);
-        assert_eq!(s[0], RequestTiming { lookup: 4, host_request: Some(5), response: 14 });
-        assert_eq!(s[1], RequestTiming { lookup: 16, host_request: None, response: 17 });
-        assert_eq!(s[2], RequestTiming { lookup: 17, host_request: Some(18), response: 27 });
-        assert_eq!(s[3], RequestTiming { lookup: 34, host_request: None, response: 35 });
+        assert_eq!(s[0], RequestTiming { lookup: 5, host_request: Some(6), response: 15 });
+        assert_eq!(s[1], RequestTiming { lookup: 18, host_request: None, response: 19 });
+        assert_eq!(s[2], RequestTiming { lookup: 19, host_request: Some(20), response: 29 });
+        assert_eq!(s[3], RequestTiming { lookup: 35, host_request: None, response: 36 });
     }
 
     /// A quick directed run: a miss, hits one per clock, then two ids that evict each other, at

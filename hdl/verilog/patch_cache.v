@@ -78,6 +78,33 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [11:0] line2$d;
     wire  [11:0] line2$q;
     reg  line2$clock;
+    reg  v3$d;
+    wire  v3$q;
+    reg  v3$clock;
+    reg  [15:0] id3$d;
+    wire  [15:0] id3$q;
+    reg  id3$clock;
+    reg  [16:0] key3$d;
+    wire  [16:0] key3$q;
+    reg  key3$clock;
+    reg  [11:0] line3$d;
+    wire  [11:0] line3$q;
+    reg  line3$clock;
+    reg  match3$d;
+    wire  match3$q;
+    reg  match3$clock;
+    reg  [16:0] ax3$d;
+    wire  [16:0] ax3$q;
+    reg  ax3$clock;
+    reg  [16:0] ay3$d;
+    wire  [16:0] ay3$q;
+    reg  ay3$clock;
+    reg  [16:0] bx3$d;
+    wire  [16:0] bx3$q;
+    reg  bx3$clock;
+    reg  [16:0] by3$d;
+    wire  [16:0] by3$q;
+    reg  by3$clock;
     reg  w_valid$d;
     wire  w_valid$q;
     reg  w_valid$clock;
@@ -242,6 +269,51 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .q(line2$q),
         .clock(line2$clock)
     );
+    patch_cache$v3 v3(
+        .d(v3$d),
+        .q(v3$q),
+        .clock(v3$clock)
+    );
+    patch_cache$id3 id3(
+        .d(id3$d),
+        .q(id3$q),
+        .clock(id3$clock)
+    );
+    patch_cache$key3 key3(
+        .d(key3$d),
+        .q(key3$q),
+        .clock(key3$clock)
+    );
+    patch_cache$line3 line3(
+        .d(line3$d),
+        .q(line3$q),
+        .clock(line3$clock)
+    );
+    patch_cache$match3 match3(
+        .d(match3$d),
+        .q(match3$q),
+        .clock(match3$clock)
+    );
+    patch_cache$ax3 ax3(
+        .d(ax3$d),
+        .q(ax3$q),
+        .clock(ax3$clock)
+    );
+    patch_cache$ay3 ay3(
+        .d(ay3$d),
+        .q(ay3$q),
+        .clock(ay3$clock)
+    );
+    patch_cache$bx3 bx3(
+        .d(bx3$d),
+        .q(bx3$q),
+        .clock(bx3$clock)
+    );
+    patch_cache$by3 by3(
+        .d(by3$d),
+        .q(by3$q),
+        .clock(by3$clock)
+    );
     patch_cache$w_valid w_valid(
         .d(w_valid$d),
         .q(w_valid$q),
@@ -372,6 +444,15 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         id2$clock = clock;
         key2$clock = clock;
         line2$clock = clock;
+        v3$clock = clock;
+        id3$clock = clock;
+        key3$clock = clock;
+        line3$clock = clock;
+        match3$clock = clock;
+        ax3$clock = clock;
+        ay3$clock = clock;
+        bx3$clock = clock;
+        by3$clock = clock;
         w_valid$clock = clock;
         w_id$clock = clock;
         w_key$clock = clock;
@@ -399,6 +480,15 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         id2$d = id2$q;
         key2$d = key2$q;
         line2$d = line2$q;
+        v3$d = v3$q;
+        id3$d = id3$q;
+        key3$d = key3$q;
+        line3$d = line3$q;
+        match3$d = match3$q;
+        ax3$d = ax3$q;
+        ay3$d = ay3$q;
+        bx3$d = bx3$q;
+        by3$d = by3$q;
         w_valid$d = w_valid$q;
         w_id$d = w_id$q;
         w_key$d = w_key$q;
@@ -426,8 +516,17 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         hit_inc = hit_count$q + one32;
         miss_inc = miss_count$q + one32;
         tag_match = tag$read_data == key2$q;
-        hit = v2$q & ~w_valid$q & tag_match;
-        miss = v2$q & ~w_valid$q & ~tag_match;
+        v3$d = v2$q & ~w_valid$q;
+        id3$d = id2$q;
+        key3$d = key2$q;
+        line3$d = line2$q;
+        match3$d = tag_match;
+        ax3$d = lane_ax$read_data;
+        ay3$d = lane_ay$read_data;
+        bx3$d = lane_bx$read_data;
+        by3$d = lane_by$read_data;
+        hit = v3$q & ~w_valid$q & match3$q;
+        miss = v3$q & ~w_valid$q & ~match3$q;
         fill = w_valid$q & mem_valid;
         push = cfg_enable & req;
         q_lane$write_address = wr_ptr$q[(32'h0)+:(4)];
@@ -474,9 +573,9 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         mreq$d = miss;
         w_valid$d = (w_valid$q & ~mem_valid) | miss;
         if (~w_valid$q) begin
-            w_id$d = id2$q;
-            w_key$d = key2$q;
-            w_line$d = line2$q;
+            w_id$d = id3$q;
+            w_key$d = key3$q;
+            w_line$d = line3$q;
         end
         tag$write_address = w_line$q;
         lane_ax$write_address = w_line$q;
@@ -509,11 +608,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         lane_bx$write_enable = fill;
         lane_by$write_enable = fill;
         rv$d = hit | fill;
-        if (v2$q) begin
-            rax$d = lane_ax$read_data;
-            ray$d = lane_ay$read_data;
-            rbx$d = lane_bx$read_data;
-            rby$d = lane_by$read_data;
+        if (v3$q) begin
+            rax$d = ax3$q;
+            ray$d = ay3$q;
+            rbx$d = bx3$q;
+            rby$d = by3$q;
         end
         if (w_valid$q) begin
             rax$d = mem_ax;
@@ -549,6 +648,82 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     end
     
 endmodule // patch_cache
+
+
+module patch_cache$ax3(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$ax3
+
+
+module patch_cache$ay3(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$ay3
+
+
+module patch_cache$bx3(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$bx3
+
+
+module patch_cache$by3(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$by3
 
 
 module patch_cache$fl_line(d,q,clock);
@@ -665,6 +840,25 @@ module patch_cache$id2(d,q,clock);
 endmodule // patch_cache$id2
 
 
+module patch_cache$id3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$id3
+
+
 module patch_cache$key1(d,q,clock);
     
     // Module arguments
@@ -701,6 +895,25 @@ module patch_cache$key2(d,q,clock);
     end
           
 endmodule // patch_cache$key2
+
+
+module patch_cache$key3(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$key3
 
 
 module patch_cache$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -1973,6 +2186,44 @@ module patch_cache$line2(d,q,clock);
 endmodule // patch_cache$line2
 
 
+module patch_cache$line3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$line3
+
+
+module patch_cache$match3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$match3
+
+
 module patch_cache$miss_count(d,q,clock);
     
     // Module arguments
@@ -2533,6 +2784,25 @@ module patch_cache$v2(d,q,clock);
     end
           
 endmodule // patch_cache$v2
+
+
+module patch_cache$v3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$v3
 
 
 module patch_cache$w_id(d,q,clock);
