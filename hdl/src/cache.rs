@@ -596,9 +596,8 @@ impl Logic for PatchCache {
         self.lane_bx.write_enable.next = self.fill.val();
         self.lane_by.write_enable.next = self.fill.val();
 
-        // Responses: a hit from the lanes, a fill from the host. The data registers take S2's
-        // words whatever the tag says (fewer loads on the tag compare); they matter only with
-        // `rv`.
+        // Responses: a hit from S3's words, a fill from the host. The data registers take S3's
+        // words whatever the tag said (fewer loads on the lookup); they matter only with `rv`.
         self.rv.d.next = self.hit.val() | self.fill.val();
         if self.v3.q.val() {
             self.rax.d.next = self.ax3.q.val();
