@@ -334,6 +334,10 @@ pub struct Screener {
     lane_wx: Bram<18, 5>,
     lane_wy: Bram<18, 5>,
     room: Signal<Local, bool>,
+    used_next: Signal<Local, Bits<6>>,
+    /// `used == DEPTH` after this edge, registered: `in_ready` is `!full` with no logic in
+    /// between (the loader's pop, and through it its FIFO's read address, hang on it).
+    full: DFF<bool>,
     take: Signal<Local, bool>,
     pop: Signal<Local, bool>,
     reserve: Signal<Local, bool>,
@@ -660,6 +664,8 @@ impl Default for Screener {
             lane_wx: Default::default(),
             lane_wy: Default::default(),
             room: Default::default(),
+            used_next: Default::default(),
+            full: Default::default(),
             take: Default::default(),
             pop: Default::default(),
             reserve: Default::default(),
@@ -940,6 +946,7 @@ impl Logic for Screener {
             self,
             clock,
             used,
+            full,
             done,
             res_ptr,
             fill_ptr,
@@ -1093,7 +1100,7 @@ impl Logic for Screener {
         // Stage 0: a patch is accepted while fewer than DEPTH are in flight (a register
         // comparison: no path from out_ready to in_ready). Its coordinates relative to the
         // origin (18 bits, exact) enter the pipeline, which never stalls.
-        self.room.next = self.used.q.val() != self.depth6.val();
+        self.room.next = !self.full.q.val();
         self.in_ready.next = self.room.val();
         self.take.next = self.in_valid.val() & self.room.val();
         self.ext_ox.next = bit_cast::<18, 17>(self.origin_x.val());
@@ -1553,12 +1560,15 @@ impl Logic for Screener {
         // leaves; `done` counts complete slots not yet out.
         self.used_inc.next = self.used.q.val() + self.one6.val();
         self.used_dec.next = self.used.q.val() - self.one6.val();
+        self.used_next.next = self.used.q.val();
         if self.take.val() & !self.pop.val() {
-            self.used.d.next = self.used_inc.val();
+            self.used_next.next = self.used_inc.val();
         }
         if !self.take.val() & self.pop.val() {
-            self.used.d.next = self.used_dec.val();
+            self.used_next.next = self.used_dec.val();
         }
+        self.used.d.next = self.used_next.val();
+        self.full.d.next = self.used_next.val() == self.depth6.val();
         self.done_inc.next = self.done.q.val() + self.one6.val();
         if self.fill.val() & !self.pop.val() {
             self.done.d.next = self.done_inc.val();

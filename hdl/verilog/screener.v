@@ -144,6 +144,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [4:0] lane_wy$write_address;
     reg  [17:0] lane_wy$write_data;
     reg  lane_wy$write_enable;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
     reg  v1$d;
     wire  v1$q;
     reg  v1$clock;
@@ -567,6 +570,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     // Local signals
     reg  [6:0] sh_pass;
     reg  room;
+    reg  [5:0] used_next;
     reg  take;
     reg  pop;
     reg  reserve;
@@ -754,6 +758,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .write_address(lane_wy$write_address),
         .write_data(lane_wy$write_data),
         .write_enable(lane_wy$write_enable)
+    );
+    screener$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
     );
     screener$v1 v1(
         .d(v1$d),
@@ -1446,6 +1455,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     // Update code
     always @(*) begin
         used$clock = clock;
+        full$clock = clock;
         done$clock = clock;
         res_ptr$clock = clock;
         fill_ptr$clock = clock;
@@ -1576,6 +1586,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         c_outside$clock = clock;
         c_near$clock = clock;
         used$d = used$q;
+        full$d = full$q;
         done$d = done$q;
         res_ptr$d = res_ptr$q;
         fill_ptr$d = fill_ptr$q;
@@ -1724,7 +1735,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         lane_sh$clock = clock;
         lane_wx$clock = clock;
         lane_wy$clock = clock;
-        room = used$q != depth6;
+        room = ~full$q;
         in_ready = room;
         take = in_valid & room;
         ext_ox = ((origin_x) & 18'h3ffff);
@@ -2122,12 +2133,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         out_wy = lane_wy$read_data;
         used_inc = used$q + one6;
         used_dec = used$q - one6;
+        used_next = used$q;
         if (take & ~pop) begin
-            used$d = used_inc;
+            used_next = used_inc;
         end
         if (~take & pop) begin
-            used$d = used_dec;
+            used_next = used_dec;
         end
+        used$d = used_next;
+        full$d = used_next == depth6;
         done_inc = done$q + one6;
         if (fill & ~pop) begin
             done$d = done_inc;
@@ -3430,6 +3444,25 @@ module screener$fill_ptr(d,q,clock);
     end
           
 endmodule // screener$fill_ptr
+
+
+module screener$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$full
 
 
 module screener$ha6(d,q,clock);
