@@ -86,12 +86,13 @@
 //!
 //! The stages are cut for an ECP5 (LFE5U-85F, speed grade 6) clock of 150 MHz: at most one
 //! carry chain, or two or three conditional shifts, between registers; `rd_ptr + 1` is kept in a
-//! register so that the output FIFO's read address is one multiplexer after `out_ready`. Measured
-//! (`cargo xtask fpga --blocks screener --families ecp5`) the block reaches about 125 MHz: every
-//! remaining slow path is a multiplier's, from its operand register through the `MULT18X18D`
-//! (3.9 ns combinational: Yosys maps the product without the DSP's own registers) to its product
-//! register, 1.3–2.2 ns of routing on either side. Reaching 150 MHz needs the DSP's input and
-//! output registers, that is a `MULT18X18D` instantiated in [`Mul18`].
+//! register so that the output FIFO's read address is one multiplexer after `out_ready`, and
+//! `in_ready` is a register (`!full`). The multipliers are [`Mul18`]s, on ECP5 `MULT18X18D`s with
+//! their own input and output registers. Measured (`cargo xtask fpga --blocks screener
+//! --families ecp5`) the block reaches 140 MHz (125 before the DSP registers); the slowest paths
+//! left are stage 5's `k` into stage 6's normaliser and stage 8's verdict into the counters'
+//! enables (2 ns of routing in the PE): counting a cycle later, and splitting stage 5, are the
+//! next steps.
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
