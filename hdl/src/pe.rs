@@ -58,8 +58,9 @@
 //! # Latency and throughput
 //!
 //! A job reaches the intersection unit the loader's latency (`T_c + 3` without a cache) plus the
-//! screener's plus the two slices' (one clock each) after it is accepted; the unit then issues one ray per clock. Jobs stream back to
-//! back at one per clock through the loader and the screener, so in steady state the PE is bound
+//! screener's plus the two slices' (one clock each) after it is accepted; the unit then issues
+//! one ray per clock. Jobs stream back to back at one per clock through the loader, the screener
+//! and the slices, so in steady state the PE is bound
 //! by the slower of the host memory (one patch per `T_c`) and the intersection unit (one ray per
 //! clock), the balance Section 4 of the paper is about.
 //!
