@@ -125,11 +125,13 @@ pub mod model {
 
     /// Cycles from a request (`req` high) to its lookup, in an idle block.
     pub const LOOKUP_DELAY: u64 = 5;
-    /// Cycles from a request to its response when it hits, in an idle block.
-    pub const HIT_LATENCY: u64 = 6;
+    /// Cycles from a request to its response when it hits, in an idle block: the response
+    /// register after the lookup.
+    pub const HIT_LATENCY: u64 = LOOKUP_DELAY + 1;
     /// Cycles from a request to its response beyond the host's `T_c` when it misses, in an idle
-    /// block: the response comes `T_c + MISS_OVERHEAD` cycles after the request.
-    pub const MISS_OVERHEAD: u64 = 7;
+    /// block: the response comes `T_c + MISS_OVERHEAD` cycles after the request (the host
+    /// request one cycle after the lookup, the response register one after the fill).
+    pub const MISS_OVERHEAD: u64 = LOOKUP_DELAY + 2;
     /// Cycles from a miss's lookup, beyond the host's `T_c`, to the next lookup: the host
     /// request (1), the fill, then the next request's read is issued again (1), takes the lanes'
     /// two read registers (2) and its compare's register (1).
@@ -200,7 +202,7 @@ pub mod model {
     /// When one request is processed by the RTL.
     #[derive(Clone, Copy, Debug, PartialEq, Eq)]
     pub struct RequestTiming {
-        /// The cycle it is in the lookup stage (B).
+        /// The cycle it is in the lookup stage (S3).
         pub lookup: u64,
         /// The cycle of its host request (`mem_req`), on a miss.
         pub host_request: Option<u64>,

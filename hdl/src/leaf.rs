@@ -103,13 +103,19 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "mul18".into(),
-            clock: "clock".into(),
-            inputs: vec!["a".into(), "b".into()],
-            outputs: vec!["p".into()],
-        }]
+        clocked("mul18", &["a", "b"], &["p"])
     }
+}
+
+/// The timing of a leaf clocked by `clock`: its name, its inputs, its outputs.
+fn clocked(name: &str, inputs: &[&str], outputs: &[&str]) -> Vec<TimingInfo> {
+    let strings = |l: &[&str]| l.iter().map(|s| s.to_string()).collect();
+    vec![TimingInfo {
+        name: name.into(),
+        clock: "clock".into(),
+        inputs: strings(inputs),
+        outputs: strings(outputs),
+    }]
 }
 
 /// An ECP5 `MULT18X18D` instance named `name`: signed 18-bit `a` × `b` into the 36-bit wire
@@ -364,12 +370,7 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "pipe_divider".into(),
-            clock: "clock".into(),
-            inputs: vec!["rx".into(), "ry".into(), "fx".into(), "fy".into(), "k".into(), "tag".into()],
-            outputs: vec!["qx".into(), "qy".into(), "tag_out".into()],
-        }]
+        clocked("pipe_divider", &["rx", "ry", "fx", "fy", "k", "tag"], &["qx", "qy", "tag_out"])
     }
 }
 
@@ -438,17 +439,7 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "bram".into(),
-            clock: "clock".into(),
-            inputs: vec![
-                "read_address".into(),
-                "write_address".into(),
-                "write_data".into(),
-                "write_enable".into(),
-            ],
-            outputs: vec!["read_data".into()],
-        }]
+        clocked("bram", &["read_address", "write_address", "write_data", "write_enable"], &["read_data"])
     }
 }
 
@@ -702,17 +693,7 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "bram_out".into(),
-            clock: "clock".into(),
-            inputs: vec![
-                "read_address".into(),
-                "write_address".into(),
-                "write_data".into(),
-                "write_enable".into(),
-            ],
-            outputs: vec!["read_data".into()],
-        }]
+        clocked("bram_out", &["read_address", "write_address", "write_data", "write_enable"], &["read_data"])
     }
 }
 
@@ -866,12 +847,7 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "key_scale_pipe".into(),
-            clock: "clock".into(),
-            inputs: vec!["q".into(), "sh".into()],
-            outputs: vec!["key".into()],
-        }]
+        clocked("key_scale_pipe", &["q", "sh"], &["key"])
     }
 }
 
@@ -978,12 +954,11 @@ impl Logic for RayProductsPipe {
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "ray_products_pipe".into(),
-            clock: "clock".into(),
-            inputs: ["dx", "dy", "ax", "ay", "bx", "by", "wx", "wy"].map(String::from).to_vec(),
-            outputs: ["dx_ay", "dy_ax", "dx_by", "dy_bx", "dx_wx", "dy_wy"].map(String::from).to_vec(),
-        }]
+        clocked(
+            "ray_products_pipe",
+            &["dx", "dy", "ax", "ay", "bx", "by", "wx", "wy"],
+            &["dx_ay", "dy_ax", "dx_by", "dy_bx", "dx_wx", "dy_wy"],
+        )
     }
 }
 
@@ -1147,20 +1122,24 @@ impl Logic for IssueSequencer {
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "issue_sequencer".into(),
-            clock: "clock".into(),
-            inputs: ["patch_valid", "patch_ax", "patch_ay", "patch_bx", "patch_by", "patch_wx", "patch_wy"]
-                .into_iter()
-                .chain(["patch_sh", "patch_id", "patch_first", "patch_count", "patch_retire"])
-                .map(String::from)
-                .collect(),
-            outputs: ["full", "busy", "kill", "cur", "v1", "tag1", "o_ax", "o_ay", "o_bx", "o_by"]
-                .into_iter()
-                .chain(["o_wx", "o_wy"])
-                .map(String::from)
-                .collect(),
-        }]
+        clocked(
+            "issue_sequencer",
+            &[
+                "patch_valid",
+                "patch_ax",
+                "patch_ay",
+                "patch_bx",
+                "patch_by",
+                "patch_wx",
+                "patch_wy",
+                "patch_sh",
+                "patch_id",
+                "patch_first",
+                "patch_count",
+                "patch_retire",
+            ],
+            &["full", "busy", "kill", "cur", "v1", "tag1", "o_ax", "o_ay", "o_bx", "o_by", "o_wx", "o_wy"],
+        )
     }
 }
 
@@ -1327,12 +1306,11 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "hit_pipe".into(),
-            clock: "clock".into(),
-            inputs: ["v1", "tag1", "alive", "dx_ay", "dy_ax", "dx_by", "dy_bx"].map(String::from).to_vec(),
-            outputs: ["tests", "busy", "sh4", "ray6", "v8", "tag8"].map(String::from).to_vec(),
-        }]
+        clocked(
+            "hit_pipe",
+            &["v1", "tag1", "alive", "dx_ay", "dy_ax", "dx_by", "dy_bx"],
+            &["tests", "busy", "sh4", "ray6", "v8", "tag8"],
+        )
     }
 }
 
@@ -1593,15 +1571,10 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        vec![TimingInfo {
-            name: "nearest_merge".into(),
-            clock: "clock".into(),
-            inputs: ["v8", "tag8", "key", "mem_key", "mem_meta", "res_re", "res_addr"]
-                .map(String::from)
-                .to_vec(),
-            outputs: ["write_address", "write_key", "write_meta", "write_enable", "z2", "busy", "fw_valid"]
-                .map(String::from)
-                .to_vec(),
-        }]
+        clocked(
+            "nearest_merge",
+            &["v8", "tag8", "key", "mem_key", "mem_meta", "res_re", "res_addr"],
+            &["write_address", "write_key", "write_meta", "write_enable", "z2", "busy", "fw_valid"],
+        )
     }
 }

@@ -928,7 +928,8 @@ impl Default for Screener {
 
 impl Screener {
     /// Patches in flight, `0..=DEPTH`: accepted and not yet out
-    /// (the credit count that `in_ready` compares with [`DEPTH`]): for testbenches.
+    /// (the credit count; `in_ready` is low from the cycle it reaches [`DEPTH`]): for
+    /// testbenches.
     pub fn in_flight(&self) -> usize {
         self.used.q.val().index()
     }
@@ -1098,9 +1099,9 @@ impl Logic for Screener {
         self.lane_wx.clock.next = self.clock.val();
         self.lane_wy.clock.next = self.clock.val();
 
-        // Stage 0: a patch is accepted while fewer than DEPTH are in flight (a register
-        // comparison: no path from out_ready to in_ready). Its coordinates relative to the
-        // origin (18 bits, exact) enter the pipeline, which never stalls.
+        // Stage 0: a patch is accepted while fewer than DEPTH are in flight (`full`, a
+        // register: no path from out_ready to in_ready). Its coordinates relative to the origin
+        // (18 bits, exact) enter the pipeline, which never stalls.
         self.room.next = !self.full.q.val();
         self.in_ready.next = self.room.val();
         self.take.next = self.in_valid.val() & self.room.val();
