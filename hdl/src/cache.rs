@@ -58,7 +58,8 @@
 //!     lane reads the request after it.
 //!   - **S1**: the lanes' first read register.
 //!   - **S2**: the lanes' output registers hold the request's line; `tag == {1, id}` is
-//!     computed and registered with the line's words.
+//!     computed by 4-bit slices (on ECP5 one per block RAM tile of the tag lane), each
+//!     registered, with the line's words.
 //!   - **S3** (lookup): a hit is answered from the registered words; a miss issues the host
 //!     request and goes to W.
 //!   - **W** (wait): the miss waits for `mem_valid`; the response is written into its line
@@ -70,9 +71,12 @@
 //!   request after it: after the fill those are issued again, so they see the line it wrote
 //!   (the lanes read before they write, and nothing is issued until the cycle after the fill).
 //!   Only fills write, and nothing is issued while a fill is pending, so there is no other
-//!   hazard. The tag compare feeds one register only: no path runs from a block RAM through
-//!   the compare into the pipeline's control (the block RAMs sit far apart on the die; the
-//!   compare's routing alone took 3 ns).
+//!   hazard. The tag compare feeds registers only, one per tile: no path runs from a block RAM
+//!   through the compare into the pipeline's control, and each slice's compare can be placed
+//!   next to its tile (the block RAMs sit far apart on the die; from the tag's tiles to one
+//!   compare the routing alone took 3 ns). The queue's pointers keep `+ 1` in registers and
+//!   compare each candidate for the next read with the write pointer beside the choice, so
+//!   no carry chain or compare follows the pointer multiplexer.
 //! * With the cache enabled every output is a register (`mem_req`, `mem_addr`, `resp_*`,
 //!   counters): no combinational path crosses the block. `resp_*` are meaningful only while
 //!   `resp_valid` is high (the data registers take every looked-up line's words), and
@@ -107,7 +111,7 @@
 //! ids in request order. [`model::schedule`] gives the exact lookup, host request and response
 //! cycles from the request cycles, the hit/miss sequence and `T_c`.
 
-use crate::leaf::{Bram, BramOut};
+use crate::leaf::{bram_out_tile_width, Bram, BramOut};
 use rust_hdl::prelude::*;
 
 /// Address width of the cache lanes: at most `2^CACHE_BITS` lines.
@@ -281,6 +285,10 @@ pub struct PatchCache {
     rd_ptr: DFF<Bits<5>>,
     /// The request whose id is at the queue lane's read register (stage Q).
     sp: DFF<Bits<5>>,
+    /// `rd_ptr + 1` and `sp + 1`, each with bit 0 inverted (so that the power-up zero stands
+    /// for 1): no carry chain between the pointers and the choice of the next read.
+    rd_inc_x: DFF<Bits<5>>,
+    sp_inc_x: DFF<Bits<5>>,
     /// That id was written before it was read: Q holds a request.
     q_valid: DFF<bool>,
     // Stages S1 and S2 (the lanes' two read registers): valid, id, tag key, line.
@@ -297,7 +305,13 @@ pub struct PatchCache {
     id3: DFF<Bits<16>>,
     key3: DFF<Bits<17>>,
     line3: DFF<Bits<12>>,
-    match3: DFF<bool>,
+    /// The tag compare by 4-bit slices of the tag (on ECP5 one per `DP16KD` tile), each
+    /// registered: bits 0–3, 4–7, 8–11, 12–15 and 16.
+    match3_0: DFF<bool>,
+    match3_1: DFF<bool>,
+    match3_2: DFF<bool>,
+    match3_3: DFF<bool>,
+    match3_4: DFF<bool>,
     ax3: DFF<Bits<17>>,
     ay3: DFF<Bits<17>>,
     bx3: DFF<Bits<17>>,
@@ -330,15 +344,24 @@ pub struct PatchCache {
     // Combinational.
     push: Signal<Local, bool>,
     issue: Signal<Local, bool>,
-    tag_match: Signal<Local, bool>,
+    tag_hit: Signal<Local, bool>,
     hit: Signal<Local, bool>,
     miss: Signal<Local, bool>,
     fill: Signal<Local, bool>,
     wr_inc: Signal<Local, Bits<5>>,
     rd_inc: Signal<Local, Bits<5>>,
     rd_next: Signal<Local, Bits<5>>,
+    rd_inc2: Signal<Local, Bits<5>>,
+    rd_next_inc: Signal<Local, Bits<5>>,
     sp_inc: Signal<Local, Bits<5>>,
+    sp_inc2: Signal<Local, Bits<5>>,
     read_ptr: Signal<Local, Bits<5>>,
+    read_inc: Signal<Local, Bits<5>>,
+    ne_sp: Signal<Local, bool>,
+    ne_sp_inc: Signal<Local, bool>,
+    ne_rd: Signal<Local, bool>,
+    ne_rd_inc: Signal<Local, bool>,
+    read_new: Signal<Local, bool>,
     head_low: Signal<Local, Bits<12>>,
     head_line: Signal<Local, Bits<12>>,
     head_key: Signal<Local, Bits<17>>,
@@ -358,6 +381,7 @@ pub struct PatchCache {
 impl Default for PatchCache {
     fn default() -> Self {
         assert_eq!(1 << QUEUE_BITS, QUEUE_DEPTH);
+        assert_eq!(bram_out_tile_width(CACHE_BITS), 4, "the tag compare's slices are the tag's DP16KD tiles");
         PatchCache {
             clock: Default::default(),
             cfg_enable: Default::default(),
@@ -384,6 +408,8 @@ impl Default for PatchCache {
             wr_ptr: Default::default(),
             rd_ptr: Default::default(),
             sp: Default::default(),
+            rd_inc_x: Default::default(),
+            sp_inc_x: Default::default(),
             q_valid: Default::default(),
             v1: Default::default(),
             id1: Default::default(),
@@ -397,7 +423,11 @@ impl Default for PatchCache {
             id3: Default::default(),
             key3: Default::default(),
             line3: Default::default(),
-            match3: Default::default(),
+            match3_0: Default::default(),
+            match3_1: Default::default(),
+            match3_2: Default::default(),
+            match3_3: Default::default(),
+            match3_4: Default::default(),
             ax3: Default::default(),
             ay3: Default::default(),
             bx3: Default::default(),
@@ -424,15 +454,24 @@ impl Default for PatchCache {
             lane_by: Default::default(),
             push: Default::default(),
             issue: Default::default(),
-            tag_match: Default::default(),
+            tag_hit: Default::default(),
             hit: Default::default(),
             miss: Default::default(),
             fill: Default::default(),
             wr_inc: Default::default(),
             rd_inc: Default::default(),
             rd_next: Default::default(),
+            rd_inc2: Default::default(),
+            rd_next_inc: Default::default(),
             sp_inc: Default::default(),
+            sp_inc2: Default::default(),
             read_ptr: Default::default(),
+            read_inc: Default::default(),
+            ne_sp: Default::default(),
+            ne_sp_inc: Default::default(),
+            ne_rd: Default::default(),
+            ne_rd_inc: Default::default(),
+            read_new: Default::default(),
             head_low: Default::default(),
             head_line: Default::default(),
             head_key: Default::default(),
@@ -466,9 +505,10 @@ impl Logic for PatchCache {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, wr_ptr, rd_ptr, sp, q_valid, v1, id1, key1, line1, v2, id2, key2, line2, v3, id3,
-            key3, line3, match3, ax3, ay3, bx3, by3, w_valid, w_id, w_key, w_line, fl_on, fl_line, mreq, rv,
-            rax, ray, rbx, rby, hit_count, miss_count, hit_r
+            self, clock, wr_ptr, rd_ptr, sp, rd_inc_x, sp_inc_x, q_valid, v1, id1, key1, line1, v2, id2,
+            key2, line2, v3, id3, key3, line3, match3_0, match3_1, match3_2, match3_3, match3_4, ax3, ay3,
+            bx3, by3, w_valid, w_id, w_key, w_line, fl_on, fl_line, mreq, rv, rax, ray, rbx, rby, hit_count,
+            miss_count, hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -479,26 +519,43 @@ impl Logic for PatchCache {
 
         // Pointer and counter arithmetic, each at its exact width.
         self.wr_inc.next = self.wr_ptr.q.val() + self.one5.val();
-        self.rd_inc.next = self.rd_ptr.q.val() + self.one5.val();
-        self.sp_inc.next = self.sp.q.val() + self.one5.val();
+        self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one5.val();
+        self.rd_inc2.next = self.rd_inc.val() + self.one5.val();
+        self.sp_inc.next = self.sp_inc_x.q.val() ^ self.one5.val();
+        self.sp_inc2.next = self.sp_inc.val() + self.one5.val();
         self.hit_inc.next = self.hit_count.q.val() + self.one32.val();
         self.miss_inc.next = self.miss_count.q.val() + self.one32.val();
 
         // S2: the lanes' output registers hold the line of S2's id. While a miss waits, every
         // lookup in flight is void (it is issued again after the fill).
-        self.tag_match.next = self.tag.read_data.val() == self.key2.q.val();
         self.v3.d.next = self.v2.q.val() & !self.w_valid.q.val();
         self.id3.d.next = self.id2.q.val();
         self.key3.d.next = self.key2.q.val();
         self.line3.d.next = self.line2.q.val();
-        self.match3.d.next = self.tag_match.val();
+        // The tag compare by slices, each registered: on ECP5 a slice is one DP16KD tile's
+        // output, so each compare can sit next to its tile and only the registered bits
+        // travel (the tiles are far apart).
+        self.match3_0.d.next =
+            self.tag.read_data.val().get_bits::<4>(0) == self.key2.q.val().get_bits::<4>(0);
+        self.match3_1.d.next =
+            self.tag.read_data.val().get_bits::<4>(4) == self.key2.q.val().get_bits::<4>(4);
+        self.match3_2.d.next =
+            self.tag.read_data.val().get_bits::<4>(8) == self.key2.q.val().get_bits::<4>(8);
+        self.match3_3.d.next =
+            self.tag.read_data.val().get_bits::<4>(12) == self.key2.q.val().get_bits::<4>(12);
+        self.match3_4.d.next = self.tag.read_data.val().get_bit(16) == self.key2.q.val().get_bit(16);
         self.ax3.d.next = self.lane_ax.read_data.val();
         self.ay3.d.next = self.lane_ay.read_data.val();
         self.bx3.d.next = self.lane_bx.read_data.val();
         self.by3.d.next = self.lane_by.read_data.val();
         // S3: the lookup, from registers only.
-        self.hit.next = self.v3.q.val() & !self.w_valid.q.val() & self.match3.q.val();
-        self.miss.next = self.v3.q.val() & !self.w_valid.q.val() & !self.match3.q.val();
+        self.tag_hit.next = self.match3_0.q.val()
+            & self.match3_1.q.val()
+            & self.match3_2.q.val()
+            & self.match3_3.q.val()
+            & self.match3_4.q.val();
+        self.hit.next = self.v3.q.val() & !self.w_valid.q.val() & self.tag_hit.val();
+        self.miss.next = self.v3.q.val() & !self.w_valid.q.val() & !self.tag_hit.val();
         // W: the host's answer to the miss.
         self.fill.next = self.w_valid.q.val() & self.mem_valid.val();
 
@@ -512,31 +569,49 @@ impl Logic for PatchCache {
         }
         // A hit or a fill answers the oldest request.
         self.rd_next.next = self.rd_ptr.q.val();
+        self.rd_next_inc.next = self.rd_inc.val();
         if self.hit.val() | self.fill.val() {
             self.rd_next.next = self.rd_inc.val();
+            self.rd_next_inc.next = self.rd_inc2.val();
         }
         self.rd_ptr.d.next = self.rd_next.val();
+        self.rd_inc_x.d.next = self.rd_next_inc.val() ^ self.one5.val();
 
         // Q: issue the request at the queue lane's read register into S1, unless a miss waits;
         // then read the next one. While a miss waits, read the oldest unanswered request: after
         // the fill, the lookups start again from it.
+        // The read is valid next cycle when its request was written before this edge (read
+        // before write): each candidate is compared with wr_ptr beside the choice, so no
+        // compare follows the pointer multiplexer.
         self.issue.next = self.q_valid.q.val() & !self.w_valid.q.val();
+        self.ne_sp.next = self.sp.q.val() != self.wr_ptr.q.val();
+        self.ne_sp_inc.next = self.sp_inc.val() != self.wr_ptr.q.val();
+        self.ne_rd.next = self.rd_ptr.q.val() != self.wr_ptr.q.val();
+        self.ne_rd_inc.next = self.rd_inc.val() != self.wr_ptr.q.val();
         self.read_ptr.next = self.sp.q.val();
+        self.read_inc.next = self.sp_inc.val();
+        self.read_new.next = self.ne_sp.val();
         if self.issue.val() {
             self.read_ptr.next = self.sp_inc.val();
+            self.read_inc.next = self.sp_inc2.val();
+            self.read_new.next = self.ne_sp_inc.val();
         }
         // (rd_next without the hit term: no hit while a miss waits. The tag compare must not
         // reach the queue's pointers.)
         if self.w_valid.q.val() {
             self.read_ptr.next = self.rd_ptr.q.val();
+            self.read_inc.next = self.rd_inc.val();
+            self.read_new.next = self.ne_rd.val();
             if self.mem_valid.val() {
                 self.read_ptr.next = self.rd_inc.val();
+                self.read_inc.next = self.rd_inc2.val();
+                self.read_new.next = self.ne_rd_inc.val();
             }
         }
         self.sp.d.next = self.read_ptr.val();
+        self.sp_inc_x.d.next = self.read_inc.val() ^ self.one5.val();
         self.q_lane.read_address.next = self.read_ptr.val().get_bits::<4>(0);
-        // Valid next cycle when that request was written before this edge (read before write).
-        self.q_valid.d.next = self.read_ptr.val() != self.wr_ptr.q.val();
+        self.q_valid.d.next = self.read_new.val();
 
         // Q: read the request's line in every lane.
         self.head_low.next = bit_cast::<12, 16>(self.q_lane.read_data.val());

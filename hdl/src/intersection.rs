@@ -21,7 +21,8 @@
 //! A patch transfers when `patch_valid && patch_ready` before the rising edge. `patch_ready` is
 //! high while fewer than two rays of the current patch remain, so the next patch is taken while
 //! the current one issues its last ray: back-to-back patches leave no bubble, and a patch with
-//! `patch_count = 0` is consumed in one cycle.
+//! `patch_count = 0` is consumed in one cycle. `patch_ready` is a register (the sequencer keeps
+//! `remaining > 1` in one beside the count).
 //!
 //! # Live rays
 //!

@@ -513,6 +513,108 @@ mod tests {
     }
 }
 
+/// The storage of a first-word-fall-through FIFO: `2^A` words of `D ≤ 32` bits (LUT RAM on an
+/// FPGA), one write per clock and two registered reads, the head and the word after it, so that
+/// no read address depends on this clock's pop.
+///
+/// Ports: `write_address`, `write_data`, `write_enable` (a write, seen by reads at later edges:
+/// read before write); `head_address` (the FIFO's read pointer) and `next_address` (the read
+/// pointer plus one), both sampled at every rising edge; `pop` (the head leaves in this clock);
+/// out `read_data`, the word at the head after the edge: the `next_address` read when `pop` was
+/// high at that edge, else the `head_address` read. So with the read pointer advanced on a pop,
+/// `read_data` is always the word at the read pointer as of the previous clock's memory.
+///
+/// Latency one clock from address to `read_data`; one write and one pop per clock. `read_data`
+/// is a function of registers only (two read registers and a registered `pop` before one
+/// multiplexer): a consumer's `ready` that decides the pop reaches one flip-flop and the
+/// read pointer, not the RAM's address pins (with a single read at `pop ? next : head` it ran
+/// through the address multiplexer into every LUT RAM of the FIFO: 5.8 ns of routing in the
+/// processing element). FPGA synthesis duplicates the LUT RAM for the second read port. All
+/// words and registers are zero at power-up. The Rust `update` is the bit-true model.
+#[derive(LogicBlock)]
+pub struct FifoRam<const D: usize, const A: usize> {
+    pub clock: Signal<In, Clock>,
+    pub write_address: Signal<In, Bits<A>>,
+    pub write_data: Signal<In, Bits<D>>,
+    pub write_enable: Signal<In, bool>,
+    pub head_address: Signal<In, Bits<A>>,
+    pub next_address: Signal<In, Bits<A>>,
+    pub pop: Signal<In, bool>,
+    pub read_data: Signal<Out, Bits<D>>,
+    _mem: Vec<u32>,
+}
+
+impl<const D: usize, const A: usize> Default for FifoRam<D, A> {
+    fn default() -> Self {
+        assert!(D <= 32, "FifoRam words are at most 32 bits");
+        FifoRam {
+            clock: Default::default(),
+            write_address: Default::default(),
+            write_data: Default::default(),
+            write_enable: Default::default(),
+            head_address: Default::default(),
+            next_address: Default::default(),
+            pop: Default::default(),
+            read_data: Default::default(),
+            _mem: vec![0; 1 << A],
+        }
+    }
+}
+
+impl<const D: usize, const A: usize> Logic for FifoRam<D, A> {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let read = if self.pop.val() { self.next_address.val() } else { self.head_address.val() };
+            self.read_data.next = Bits::from(self._mem[read.index()] as u64);
+            if self.write_enable.val() {
+                self._mem[self.write_address.val().index()] = self.write_data.val().to_u32();
+            }
+        }
+    }
+
+    fn connect(&mut self) {
+        self.read_data.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(format!(
+            "\
+reg [{dm}:0] mem [0:{words}];
+reg [{dm}:0] head_r;
+reg [{dm}:0] next_r;
+reg popped;
+integer i;
+initial begin
+   for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
+   head_r = {d}'d0;
+   next_r = {d}'d0;
+   popped = 1'b0;
+end
+always @(posedge clock) begin
+   head_r <= mem[head_address];
+   next_r <= mem[next_address];
+   popped <= pop;
+   if (write_enable) begin
+      mem[write_address] <= write_data;
+   end
+end
+always @(*) read_data = popped ? next_r : head_r;
+",
+            dm = D - 1,
+            d = D,
+            words = (1usize << A) - 1
+        ))
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        clocked(
+            "fifo_ram",
+            &["write_address", "write_data", "write_enable", "head_address", "next_address", "pop"],
+            &["read_data"],
+        )
+    }
+}
+
 /// Simple dual-port block RAM with a two-clock registered read: `2^A` words of `D ≤ 32` bits,
 /// one write and one read per clock, all words and both read registers zero at power-up. The
 /// read address presented in one clock (sampled at its rising edge `t`) gives its word on
@@ -972,6 +1074,8 @@ fn bits<const N: usize>(v: u32) -> Bits<N> {
 #[derive(Clone, Copy, Debug, Default)]
 struct IssueRegs {
     remaining: u32,
+    /// `remaining > 1`, kept in a register of its own.
+    full: bool,
     cur: u32,
     /// The current patch: ax, ay, bx, by, wx, wy.
     p: [u32; 6],
@@ -992,16 +1096,18 @@ struct IssueRegs {
 /// `patch_count` (11), `patch_retire`; out `full`, `busy`, `kill`, `cur` (10), `v1`,
 /// `tag1` (32), `o_ax` … `o_wy` (18 each).
 ///
-/// Registers: `remaining` (rays of the current patch still to issue), `cur` (the ray issued in
-/// this clock while `remaining ≠ 0`), the current patch `p_*` and stage 1: `v1` (a ray of a
-/// test job was issued in the clock before), `tag1` = `{ray (31…22), sh (21…16), id (15…0)}`
-/// and the patch operands `o_*` of that ray. A patch is taken at the rising edge when
-/// `patch_valid && !full`; otherwise a ray issues when `remaining ≠ 0` (`remaining`
-/// counts down, `cur` up, modulo 1024).
+/// Registers: `remaining` (rays of the current patch still to issue), `full` (`remaining > 1`:
+/// no patch can be taken), `cur` (the ray issued in this clock while `remaining ≠ 0`), the
+/// current patch `p_*` and stage 1: `v1` (a ray of a test job was issued in the clock before),
+/// `tag1` = `{ray (31…22), sh (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
+/// patch is taken at the rising edge when `patch_valid && !full`; otherwise a ray issues when
+/// `remaining ≠ 0` (`remaining` counts down, `cur` up, modulo 1024). `full` is updated beside
+/// `remaining` from shallow tests (`patch_count > 1` on a take, `remaining > 2` on an issue),
+/// so that the unit's `patch_ready`, its complement, is a register: in the processing element
+/// it feeds the slice in front of the unit, whose pop decides the take.
 ///
 /// Outputs, all functions of the registers only (so the leaf has no combinational path from an
-/// input): `full` = `remaining > 1` (no patch can be taken: the unit's `patch_ready` is its
-/// complement), `busy` = a ray issues or `v1`, `kill` = a ray of a
+/// input): `full` (the register), `busy` = a ray issues or `v1`, `kill` = a ray of a
 /// retire job issues (its live bit is cleared), and the registers `cur`, `v1`, `tag1`, `o_*`.
 /// Latency: `v1`, `tag1` and `o_*` describe the ray issued one clock earlier. All registers
 /// are zero at power-up.
@@ -1044,8 +1150,9 @@ impl Logic for IssueSequencer {
             n.v1 = issue && !s.p_retire;
             n.tag1 = (s.cur << 22) | (s.p_sh << 16) | s.p_id;
             n.o = s.p;
-            if self.patch_valid.val() && s.remaining <= 1 {
+            if self.patch_valid.val() && !s.full {
                 n.remaining = self.patch_count.val().to_u32();
+                n.full = n.remaining > 1;
                 n.cur = self.patch_first.val().to_u32();
                 n.p = [
                     self.patch_ax.val().to_u32(),
@@ -1060,11 +1167,13 @@ impl Logic for IssueSequencer {
                 n.p_retire = self.patch_retire.val();
             } else if issue {
                 n.remaining = s.remaining - 1;
+                n.full = s.remaining > 2;
                 n.cur = (s.cur + 1) & 0x3ff;
             }
+            debug_assert_eq!(n.full, n.remaining > 1);
             self._r = n;
             let issue = n.remaining != 0;
-            self.full.next = n.remaining > 1;
+            self.full.next = n.full;
             self.busy.next = issue || n.v1;
             self.kill.next = issue && n.p_retire;
             self.cur.next = bits(n.cur);
@@ -1102,22 +1211,24 @@ impl Logic for IssueSequencer {
         }
         v += "wire issue = remaining != 11'd0;\n";
         v += "initial begin\n   remaining = 11'd0;\n   p_retire = 1'b0;\n   p_sh = 6'd0;\n   p_id = 16'd0;\n";
-        v += "   cur = 10'd0;\n   v1 = 1'b0;\n   tag1 = 32'd0;\n";
+        v += "   full = 1'b0;\n   cur = 10'd0;\n   v1 = 1'b0;\n   tag1 = 32'd0;\n";
         for o in ops {
             v += &format!("   p_{o} = 18'd0;\n   o_{o} = 18'd0;\n");
         }
         v += "end\n";
-        v += "always @(*) begin\n   full = remaining > 11'd1;\n   busy = issue || v1;\n   kill = issue && p_retire;\nend\n";
+        v += "always @(*) begin\n   busy = issue || v1;\n   kill = issue && p_retire;\nend\n";
         v += "always @(posedge clock) begin\n   v1 <= issue && !p_retire;\n   tag1 <= {cur, p_sh, p_id};\n";
         for o in ops {
             v += &format!("   o_{o} <= p_{o};\n");
         }
-        v += "   if (patch_valid && remaining <= 11'd1) begin\n      remaining <= patch_count;\n      cur <= patch_first;\n";
+        v += "   if (patch_valid && !full) begin\n      remaining <= patch_count;\n";
+        v += "      full <= patch_count[10:1] != 10'd0;\n      cur <= patch_first;\n";
         for o in ops {
             v += &format!("      p_{o} <= patch_{o};\n");
         }
         v += "      p_sh <= patch_sh;\n      p_id <= patch_id;\n      p_retire <= patch_retire;\n";
-        v += "   end else if (issue) begin\n      remaining <= remaining - 11'd1;\n      cur <= cur + 10'd1;\n   end\nend\n";
+        v += "   end else if (issue) begin\n      remaining <= remaining - 11'd1;\n";
+        v += "      full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;\n      cur <= cur + 10'd1;\n   end\nend\n";
         Verilog::Custom(v)
     }
 

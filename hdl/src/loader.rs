@@ -13,9 +13,9 @@
 //! | `loads` | out | 32 | patches fetched from memory so far (responses received), wraps at 2³² |
 //!
 //! Handshakes: a transfer happens in a cycle where `valid && ready` holds before the rising edge.
-//! `id_ready` depends only on registers (not on `id_valid` or `out_ready`); `out_valid` and the
-//! `out_*` data are registers (the block RAM read registers), so no combinational path crosses
-//! the block. The `out_*` data keep their last value while `out_valid` is low (zero after
+//! `id_ready` depends only on registers (not on `id_valid` or `out_ready`); `out_valid` is a
+//! register and the `out_*` data depend only on registers (the lanes' two read registers, chosen
+//! by the registered pop), so no combinational path crosses the block. The `out_*` data keep their last value while `out_valid` is low (zero after
 //! power-up), identically in the rust-hdl simulation and in the Verilog.
 //!
 //! Number formats: ids are 16-bit unsigned; coordinates are world coordinates Q11.6 unsigned in
@@ -33,7 +33,7 @@
 //!
 //! # Structure
 //!
-//! A [`DEPTH`]-slot FIFO of five [`Bram`] lanes (id: 16 bits, four coordinates: 17 bits each,
+//! A [`DEPTH`]-slot FIFO of five [`FifoRam`] lanes (id: 16 bits, four coordinates: 17 bits each,
 //! 84 bits in all) sharing one set of pointers. A slot is *reserved* when its id is accepted: the
 //! id is written into the id lane at once and the request is issued; the coordinate lanes of the
 //! slot are written when the response arrives (responses come in order, so a second pointer
@@ -42,8 +42,10 @@
 //! output stops the id stream (`id_ready` low) instead.
 //!
 //! Counters (5 bits, `0..=16`): `reserved` (ids accepted, not yet sent out) and `done` (responses
-//! written, not yet sent out), `done ≤ reserved ≤ DEPTH`. The head slot is read every cycle into
-//! the lanes' registered read ports at the address `rd_ptr + pop`; `out_valid` is set for the
+//! written, not yet sent out), `done ≤ reserved ≤ DEPTH`. Every cycle the lanes read the head slot
+//! (`rd_ptr`) and the one after it into their read registers and show the second after a pop,
+//! so `out_ready` reaches no RAM address (it did, through the address multiplexer, on the
+//! processing element's critical path at 144 MHz); `out_valid` is set for the
 //! next cycle when a filled slot remains after this cycle's pop *excluding* this cycle's write
 //! (`done − pop > 0`), because the block RAM reads before it writes.
 //!
@@ -63,7 +65,7 @@
 //! and sent again each time), with the coordinates the memory holds; `loads` equals the number
 //! of ids; plus the exact cycle counts of an unstalled stream.
 
-use crate::leaf::Bram;
+use crate::leaf::FifoRam;
 use rust_hdl::prelude::*;
 
 /// FIFO capacity in patches (slots reserved, requested or buffered).
@@ -173,11 +175,11 @@ pub struct PatchLoader {
     req_addr: DFF<Bits<16>>,
     load_count: DFF<Bits<32>>,
     // The FIFO lanes.
-    lane_id: Bram<16, 4>,
-    lane_ax: Bram<17, 4>,
-    lane_ay: Bram<17, 4>,
-    lane_bx: Bram<17, 4>,
-    lane_by: Bram<17, 4>,
+    lane_id: FifoRam<16, 4>,
+    lane_ax: FifoRam<17, 4>,
+    lane_ay: FifoRam<17, 4>,
+    lane_bx: FifoRam<17, 4>,
+    lane_by: FifoRam<17, 4>,
     // Combinational.
     room: Signal<Local, bool>,
     accept: Signal<Local, bool>,
@@ -185,7 +187,6 @@ pub struct PatchLoader {
     req_inc: Signal<Local, Bits<4>>,
     resp_inc: Signal<Local, Bits<4>>,
     rd_inc: Signal<Local, Bits<4>>,
-    rd_addr: Signal<Local, Bits<4>>,
     reserved_inc: Signal<Local, Bits<5>>,
     reserved_dec: Signal<Local, Bits<5>>,
     done_inc: Signal<Local, Bits<5>>,
@@ -243,7 +244,6 @@ impl Default for PatchLoader {
             req_inc: Default::default(),
             resp_inc: Default::default(),
             rd_inc: Default::default(),
-            rd_addr: Default::default(),
             reserved_inc: Default::default(),
             reserved_dec: Default::default(),
             done_inc: Default::default(),
@@ -331,19 +331,27 @@ impl Logic for PatchLoader {
         }
         self.loads.next = self.load_count.q.val();
 
-        // Head: read the slot that is the head after this cycle's pop.
-        self.rd_addr.next = self.rd_ptr.q.val();
+        // Head: read the head slot and the one after it; after a pop the second is the head.
         self.done_left.next = self.done.q.val();
         if self.pop.val() {
-            self.rd_addr.next = self.rd_inc.val();
             self.rd_ptr.d.next = self.rd_inc.val();
             self.done_left.next = self.done_dec.val();
         }
-        self.lane_id.read_address.next = self.rd_addr.val();
-        self.lane_ax.read_address.next = self.rd_addr.val();
-        self.lane_ay.read_address.next = self.rd_addr.val();
-        self.lane_bx.read_address.next = self.rd_addr.val();
-        self.lane_by.read_address.next = self.rd_addr.val();
+        self.lane_id.head_address.next = self.rd_ptr.q.val();
+        self.lane_id.next_address.next = self.rd_inc.val();
+        self.lane_id.pop.next = self.pop.val();
+        self.lane_ax.head_address.next = self.rd_ptr.q.val();
+        self.lane_ax.next_address.next = self.rd_inc.val();
+        self.lane_ax.pop.next = self.pop.val();
+        self.lane_ay.head_address.next = self.rd_ptr.q.val();
+        self.lane_ay.next_address.next = self.rd_inc.val();
+        self.lane_ay.pop.next = self.pop.val();
+        self.lane_bx.head_address.next = self.rd_ptr.q.val();
+        self.lane_bx.next_address.next = self.rd_inc.val();
+        self.lane_bx.pop.next = self.pop.val();
+        self.lane_by.head_address.next = self.rd_ptr.q.val();
+        self.lane_by.next_address.next = self.rd_inc.val();
+        self.lane_by.pop.next = self.pop.val();
         // Valid next cycle when the head was written before this edge (read before write).
         self.head_valid.d.next = self.done_left.val() != self.zero5.val();
         self.out_valid.next = self.head_valid.q.val();

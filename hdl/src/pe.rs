@@ -48,9 +48,9 @@
 //!
 //! A [`PatchSlice`] (two entries, `in_ready` a register) sits on each side of the merger: every
 //! input of the merger is a register, and the unit's `patch_ready` reaches only the second
-//! slice, never the screener's output FIFO or the tag FIFO. The tag FIFO keeps two copies of its
-//! words, one read at the head and one at the entry after it, so that no RAM address depends on
-//! the merger's pop either.
+//! slice, never the screener's output FIFO or the tag FIFO. The tag FIFO (a [`FifoRam`]) reads its
+//! head and the entry after it every cycle, so that no RAM address depends on the merger's pop
+//! either.
 //!
 //! `cmd_ready` is high while the tag FIFO has room and the loader can take an id (for a retire
 //! too: the condition must not depend on `cmd_retire`); it depends on registers only.
@@ -79,7 +79,7 @@
 
 use crate::cache::PatchCache;
 use crate::intersection::IntersectionUnit;
-use crate::leaf::Bram;
+use crate::leaf::FifoRam;
 use crate::loader::PatchLoader;
 use crate::screener::Screener;
 use crate::slice::PatchSlice;
@@ -157,13 +157,10 @@ pub struct ProcessingElement {
     screener: Screener,
     unit: IntersectionUnit,
     // The tag FIFO.
-    tags: Bram<TAG_WIDTH, TAG_BITS>,
-    /// A copy of `tags` (the same writes) that always reads the entry after the head.
-    tags_next: Bram<TAG_WIDTH, TAG_BITS>,
-    /// The head was popped in the last cycle: the head is at `tags_next`'s read register.
-    popped: DFF<bool>,
+    /// Reads the head and the entry after it every cycle ([`FifoRam`]).
+    tags: FifoRam<TAG_WIDTH, TAG_BITS>,
     /// `rd_ptr + 1` with bit 0 inverted (so that its power-up zero stands for 1): no carry chain
-    /// before `tags_next`'s read address.
+    /// before the second read address.
     rd_inc_x: DFF<Bits<TAG_BITS>>,
     wr_ptr: DFF<Bits<TAG_BITS>>,
     rd_ptr: DFF<Bits<TAG_BITS>>,
@@ -238,8 +235,6 @@ impl Default for ProcessingElement {
             screener: Default::default(),
             unit: Default::default(),
             tags: Default::default(),
-            tags_next: Default::default(),
-            popped: Default::default(),
             rd_inc_x: Default::default(),
             wr_ptr: Default::default(),
             rd_ptr: Default::default(),
@@ -265,7 +260,7 @@ impl Default for ProcessingElement {
 impl Logic for ProcessingElement {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid, popped, rd_inc_x);
+        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid, rd_inc_x);
         self.loader.clock.next = self.clock.val();
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
@@ -273,7 +268,6 @@ impl Logic for ProcessingElement {
         self.sc_slice.clock.next = self.clock.val();
         self.iu_slice.clock.next = self.clock.val();
         self.tags.clock.next = self.clock.val();
-        self.tags_next.clock.next = self.clock.val();
 
         // Rays and readout: straight to the intersection unit.
         self.unit.dir_we.next = self.dir_we.val();
@@ -310,9 +304,6 @@ impl Logic for ProcessingElement {
         self.tags.write_address.next = self.wr_ptr.q.val();
         self.tags.write_data.next = self.new_tag.val();
         self.tags.write_enable.next = self.accept.val();
-        self.tags_next.write_address.next = self.wr_ptr.q.val();
-        self.tags_next.write_data.next = self.new_tag.val();
-        self.tags_next.write_enable.next = self.accept.val();
         if self.accept.val() {
             self.wr_ptr.d.next = self.wr_ptr.q.val() + self.one_ptr.val();
         }
@@ -364,9 +355,6 @@ impl Logic for ProcessingElement {
         // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job);
         // what it sends goes through a second slice, whose `in_ready` is a register.
         self.head_tag.next = self.tags.read_data.val();
-        if self.popped.q.val() {
-            self.head_tag.next = self.tags_next.read_data.val();
-        }
         self.head_retire.next = self.head_tag.val().get_bit(21);
         self.head_first.next = self.head_tag.val().get_bits::<10>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
@@ -414,15 +402,14 @@ impl Logic for ProcessingElement {
         self.unit.patch_count.next = self.iu_slice.out_count.val();
         self.unit.patch_retire.next = self.iu_slice.out_retire.val();
 
-        // The tag FIFO's read side: every cycle `tags` reads the entry at the read pointer
-        // and `tags_next` the one after it; after a pop the head is `tags_next`'s word, else
-        // `tags`'s (so no RAM address depends on this cycle's pop, which depends on the unit's
-        // `patch_ready`). The head is valid next cycle when an entry written before this cycle
-        // remains (the RAMs read before they write).
+        // The tag FIFO's read side: every cycle `tags` reads the entry at the read pointer and
+        // the one after it, and shows the second after a pop (so no RAM address depends on this
+        // cycle's pop, which depends on the unit's `patch_ready`). The head is valid next cycle
+        // when an entry written before this cycle remains (the RAM reads before it writes).
         self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one_ptr.val();
-        self.tags.read_address.next = self.rd_ptr.q.val();
-        self.tags_next.read_address.next = self.rd_inc.val();
-        self.popped.d.next = self.pop.val();
+        self.tags.head_address.next = self.rd_ptr.q.val();
+        self.tags.next_address.next = self.rd_inc.val();
+        self.tags.pop.next = self.pop.val();
         if self.pop.val() {
             self.rd_ptr.d.next = self.rd_inc.val();
             self.rd_inc_x.d.next = (self.rd_inc.val() + self.one_ptr.val()) ^ self.one_ptr.val();

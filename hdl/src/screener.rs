@@ -39,12 +39,13 @@
 //! The bundle setup is held constant while its patches stream (from the first patch's
 //! acceptance until the last one's verdict, [`VERDICT_LATENCY`] cycles later). A transfer happens
 //! in a cycle where `valid && ready` holds before the rising edge. `in_ready` depends only on
-//! registers (not on `in_valid` or `out_ready`); `out_valid` and the `out_*` data are registers
-//! (the output FIFO's read registers), so no combinational path crosses the block. While
+//! registers (not on `in_valid` or `out_ready`); `out_valid` is a register and the `out_*` data
+//! depend only on registers (the output FIFO's two read registers, chosen by the registered
+//! pop), so no combinational path crosses the block. While
 //! `out_valid` is low the `out_*` data show the FIFO's head slot, which may hold an old or a
 //! half-written setup (zero after power-up): meaningless, but the same in the rust-hdl
-//! simulation and in the Verilog. Every accepted patch is counted in exactly one counter, in the
-//! cycle of its verdict.
+//! simulation and in the Verilog. Every accepted patch is counted in exactly one counter, one
+//! cycle after its verdict ([`COUNT_LATENCY`]).
 //!
 //! Number formats (`FORMATS.md`, [`crate::formats`]): world coordinates Q11.6 in 17 bits
 //! unsigned; relative coordinates Q12.6 and directions Q2.16 in 18 bits two's complement;
@@ -68,15 +69,18 @@
 //!   shifts (16, 8);
 //! * stage 4: `K`; the products of the dot products arrive; the last three shifts of `nmax`
 //!   (4, 2, 1);
-//! * stage 5: the leading zeros of `2K`, first two shifts; `dot(n_s, a)`, `dot(n_s, b)`; the
-//!   side products arrive;
+//! * stage 5: the leading zeros of `2K`, first two shifts (side by side: the top half and two
+//!   bytes tested at once, then one four-way choice); `dot(n_s, a)`, `dot(n_s, b)`; the side
+//!   products arrive;
 //! * stage 6: the last three shifts of `2K`; the backward and back-facing screens; the side
 //!   values;
 //! * stage 7: the exponent `sh` (from the two leading-zero counts and one comparison of the
 //!   normalised values); the outside-the-sector screen;
-//! * stage 8 ([`VERDICT_LATENCY`]): the near screen and the verdict, counted. The patch takes
-//!   the next slot of the output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters
-//!   the divider with its initial remainders `floor(|n_c|·2^sh)`;
+//! * stage 8 ([`VERDICT_LATENCY`]): the near screen and the verdict. The patch takes the next
+//!   slot of the output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters the divider
+//!   with its initial remainders `floor(|n_c|·2^sh)`;
+//! * stage 9 ([`COUNT_LATENCY`]), beside the divider's first: the verdict, registered as one
+//!   flag per counter, is counted;
 //! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
 //!   `K`, one stage per quotient bit ([`DIV_STEPS`](crate::leaf::DIV_STEPS) = 17 steps of a
 //!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 26
@@ -85,9 +89,10 @@
 //!   (28) and leaves then if `out_ready` is high.
 //!
 //! The stages are cut for an ECP5 (LFE5U-85F, speed grade 6) clock of 150 MHz: at most one
-//! carry chain, or two or three conditional shifts, between registers; `rd_ptr + 1` is kept in a
-//! register so that the output FIFO's read address is one multiplexer after `out_ready`, and
-//! `in_ready` is a register (`!full`). The multipliers are [`Mul18`]s, on ECP5 `MULT18X18D`s with
+//! carry chain, or two or three conditional shifts, between registers; the output FIFO reads
+//! the head and the slot after it every cycle (`rd_ptr + 1` kept in a register), so that
+//! `out_ready` reaches no read address, only the registered choice between the two; the
+//! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers are [`Mul18`]s, on ECP5 `MULT18X18D`s with
 //! their own input and output registers. Measured (`cargo xtask fpga --blocks screener
 //! --families ecp5`) the block reaches 140 MHz (125 before the DSP registers); the slowest paths
 //! left are stage 5's `k` into stage 6's normaliser and stage 8's verdict into the counters'
@@ -102,7 +107,7 @@
 //!
 //! The [`Mul18`] and divider stages have no clock enable, so the pipeline cannot stall; instead
 //! nothing is accepted that could not be stored. The output FIFO has [`DEPTH`] (32) slots in
-//! eight [`Bram`] lanes (LUT RAM) sharing one read pointer: the slot is reserved in stage 8 and
+//! eight [`FifoRam`] lanes (LUT RAM) sharing one read pointer: the slot is reserved in stage 8 and
 //! completed in stage 26 (a second write pointer suffices, the divider's latency being fixed).
 //! A credit counter counts the patches in flight: it is incremented when a patch is accepted and
 //! decremented when it leaves. A patch is accepted only while the count is below [`DEPTH`], so
@@ -111,7 +116,7 @@
 //!
 //! # Latency and throughput
 //!
-//! Without backpressure a patch accepted in cycle `a` is counted in cycle `a + 8` and leaves in
+//! Without backpressure a patch accepted in cycle `a` is counted in cycle `a + 9` and leaves in
 //! cycle `a + 28` ([`LATENCY`]). A credit is taken in the cycle of acceptance and returned in
 //! the cycle of the transfer out (held 29 cycles); a returned credit can be taken again the next
 //! cycle. With `DEPTH = 32 ≥ 29` the screener therefore accepts one patch per clock (II = 1)
@@ -129,7 +134,7 @@
 //! takes about 1000 LUT4, 580 `CCU2C` and 2000 flip-flops.
 
 use crate::formats::{cross, dot, SECTOR_MARGIN, SH_MAX, SH_MIN};
-use crate::leaf::{Bram, Mul18, PipeDivider, DIV_LATENCY};
+use crate::leaf::{FifoRam, Mul18, PipeDivider, DIV_LATENCY};
 use rust_hdl::prelude::*;
 
 /// The bit-true model of the screener: plain integer functions.
@@ -261,9 +266,13 @@ pub mod model {
 // The RTL block.
 // ---------------------------------------------------------------------------------------------
 
-/// Pipeline stage of the verdict: a patch accepted in cycle `a` is decided and counted in cycle
-/// `a + VERDICT_LATENCY` (the counters show it from the next cycle on).
+/// Pipeline stage of the verdict: a patch accepted in cycle `a` is decided in cycle
+/// `a + VERDICT_LATENCY` (and takes its output FIFO slot then).
 pub const VERDICT_LATENCY: u64 = 8;
+/// Pipeline stage of the count: a patch accepted in cycle `a` is counted in cycle
+/// `a + COUNT_LATENCY`, a cycle after its verdict (the counters show it from the next cycle
+/// on).
+pub const COUNT_LATENCY: u64 = VERDICT_LATENCY + 1;
 /// Clocks from a patch's acceptance to its setup on the output: a patch accepted in
 /// cycle `a` is presented (`out_valid`) from cycle `a + LATENCY` on; with `out_ready` high it
 /// leaves in that cycle. The verdict, the divider ([`DIV_LATENCY`]) and the output FIFO's write
@@ -324,16 +333,16 @@ pub struct Screener {
     rd_ptr: DFF<Bits<5>>,
     rd_inc_x: DFF<Bits<5>>,
     head_valid: DFF<bool>,
-    lane_id: Bram<16, 5>,
-    lane_ax: Bram<18, 5>,
-    lane_ay: Bram<18, 5>,
-    lane_bx: Bram<18, 5>,
-    lane_by: Bram<18, 5>,
-    lane_sh: Bram<7, 5>,
+    lane_id: FifoRam<16, 5>,
+    lane_ax: FifoRam<18, 5>,
+    lane_ay: FifoRam<18, 5>,
+    lane_bx: FifoRam<18, 5>,
+    lane_by: FifoRam<18, 5>,
+    lane_sh: FifoRam<7, 5>,
     sh_pass: Signal<Local, Bits<7>>,
     pass_flag: Constant<Bits<7>>,
-    lane_wx: Bram<18, 5>,
-    lane_wy: Bram<18, 5>,
+    lane_wx: FifoRam<18, 5>,
+    lane_wy: FifoRam<18, 5>,
     room: Signal<Local, bool>,
     used_next: Signal<Local, Bits<6>>,
     /// `used == DEPTH` after this edge, registered: `in_ready` is `!full` with no logic in
@@ -352,7 +361,6 @@ pub struct Screener {
     fill_inc: Signal<Local, Bits<5>>,
     rd_inc: Signal<Local, Bits<5>>,
     rd_inc2: Signal<Local, Bits<5>>,
-    rd_addr: Signal<Local, Bits<5>>,
     // Stage 0: coordinates relative to the origin.
     ext_ox: Signal<Local, Bits<18>>,
     ext_oy: Signal<Local, Bits<18>>,
@@ -461,13 +469,15 @@ pub struct Screener {
     ha: Signal<Local, Bits<32>>,
     hb: Signal<Local, Bits<32>>,
     k2: Signal<Local, Bits<32>>,
-    ze0: Signal<Local, Bits<32>>,
-    ze1: Signal<Local, Bits<32>>,
+    z16_e: Signal<Local, bool>,
+    z8hi_e: Signal<Local, bool>,
+    z8mid_e: Signal<Local, bool>,
+    ze_lo: Signal<Local, Bits<32>>,
+    ze_hi: Signal<Local, Bits<32>>,
+    ce_lo: Signal<Local, Bits<6>>,
+    ce_hi: Signal<Local, Bits<6>>,
     ze2: Signal<Local, Bits<32>>,
-    ce16_e: Signal<Local, Bits<6>>,
-    ce8_e: Signal<Local, Bits<6>>,
-    top16_e: Signal<Local, Bits<16>>,
-    top8_e: Signal<Local, Bits<8>>,
+    ce_e: Signal<Local, Bits<6>>,
     // Stage 6: the last three shifts of clz(2K); the backward and back-facing screens; the side values.
     v6: DFF<bool>,
     id6: DFF<Bits<16>>,
@@ -532,6 +542,10 @@ pub struct Screener {
     s0: Signal<Local, Bits<6>>,
     s0_m1: Signal<Local, Bits<6>>,
     sh: Signal<Local, Bits<6>>,
+    n_hi: Signal<Local, Bits<18>>,
+    e_hi: Signal<Local, Bits<18>>,
+    e_lo_nz: Signal<Local, bool>,
+    n_below_e: Signal<Local, bool>,
     side_f_x: Signal<Local, Bits<32>>,
     side_l_x: Signal<Local, Bits<32>>,
     is_outside: Signal<Local, bool>,
@@ -554,6 +568,12 @@ pub struct Screener {
     sh5: Signal<Local, Bits<5>>,
     is_near: Signal<Local, bool>,
     is_pass: Signal<Local, bool>,
+    // Stage 9 (COUNT_LATENCY): the verdict of a valid patch, one flag per counter.
+    pass9: DFF<bool>,
+    backward9: DFF<bool>,
+    back_facing9: DFF<bool>,
+    outside9: DFF<bool>,
+    near9: DFF<bool>,
     absnx32: Signal<Local, Bits<32>>,
     absny32: Signal<Local, Bits<32>>,
     low_nx: Signal<Local, Bits<3>>,
@@ -585,10 +605,12 @@ pub struct Screener {
     thr_f: Constant<Bits<32>>,
     thr_l: Constant<Bits<32>>,
     zero16: Constant<Bits<16>>,
+    zero14: Constant<Bits<14>>,
     zero8: Constant<Bits<8>>,
     zero4: Constant<Bits<4>>,
     zero2: Constant<Bits<2>>,
     zero3: Constant<Bits<3>>,
+    sh24: Constant<Bits<32>>,
     sh16: Constant<Bits<32>>,
     sh8: Constant<Bits<32>>,
     sh4: Constant<Bits<32>>,
@@ -597,6 +619,7 @@ pub struct Screener {
     sh3: Constant<Bits<32>>,
     sh1_3: Constant<Bits<3>>,
     sh2_3: Constant<Bits<3>>,
+    c24_6: Constant<Bits<6>>,
     c16_6: Constant<Bits<6>>,
     c8_6: Constant<Bits<6>>,
     c4_6: Constant<Bits<6>>,
@@ -680,7 +703,6 @@ impl Default for Screener {
             fill_inc: Default::default(),
             rd_inc: Default::default(),
             rd_inc2: Default::default(),
-            rd_addr: Default::default(),
             ext_ox: Default::default(),
             ext_oy: Default::default(),
             ext_ax: Default::default(),
@@ -783,13 +805,15 @@ impl Default for Screener {
             ha: Default::default(),
             hb: Default::default(),
             k2: Default::default(),
-            ze0: Default::default(),
-            ze1: Default::default(),
+            z16_e: Default::default(),
+            z8hi_e: Default::default(),
+            z8mid_e: Default::default(),
+            ze_lo: Default::default(),
+            ze_hi: Default::default(),
+            ce_lo: Default::default(),
+            ce_hi: Default::default(),
             ze2: Default::default(),
-            ce16_e: Default::default(),
-            ce8_e: Default::default(),
-            top16_e: Default::default(),
-            top8_e: Default::default(),
+            ce_e: Default::default(),
             v6: Default::default(),
             id6: Default::default(),
             ax6: Default::default(),
@@ -849,6 +873,10 @@ impl Default for Screener {
             hb_open7: Default::default(),
             s0: Default::default(),
             s0_m1: Default::default(),
+            n_hi: Default::default(),
+            e_hi: Default::default(),
+            e_lo_nz: Default::default(),
+            n_below_e: Default::default(),
             sh: Default::default(),
             side_f_x: Default::default(),
             side_l_x: Default::default(),
@@ -871,6 +899,11 @@ impl Default for Screener {
             sh5: Default::default(),
             is_near: Default::default(),
             is_pass: Default::default(),
+            pass9: Default::default(),
+            backward9: Default::default(),
+            back_facing9: Default::default(),
+            outside9: Default::default(),
+            near9: Default::default(),
             absnx32: Default::default(),
             absny32: Default::default(),
             low_nx: Default::default(),
@@ -899,10 +932,12 @@ impl Default for Screener {
             thr_f: Constant::new(0x7FFF_FF00u64.into()),
             thr_l: Constant::new(0x8000_0100u64.into()),
             zero16: Constant::new(0u64.into()),
+            zero14: Constant::new(0u64.into()),
             zero8: Constant::new(0u64.into()),
             zero4: Constant::new(0u64.into()),
             zero2: Constant::new(0u64.into()),
             zero3: Constant::new(0u64.into()),
+            sh24: Constant::new(24u64.into()),
             sh16: Constant::new(16u64.into()),
             sh8: Constant::new(8u64.into()),
             sh4: Constant::new(4u64.into()),
@@ -911,6 +946,7 @@ impl Default for Screener {
             sh3: Constant::new(3u64.into()),
             sh1_3: Constant::new(1u64.into()),
             sh2_3: Constant::new(2u64.into()),
+            c24_6: Constant::new(24u64.into()),
             c16_6: Constant::new(16u64.into()),
             c8_6: Constant::new(8u64.into()),
             c4_6: Constant::new(4u64.into()),
@@ -1073,6 +1109,11 @@ impl Logic for Screener {
             backward8,
             back_facing8,
             outside8,
+            pass9,
+            backward9,
+            back_facing9,
+            outside9,
+            near9,
             c_passed,
             c_backward,
             c_back_facing,
@@ -1263,23 +1304,31 @@ impl Logic for Screener {
         self.norm_n5.d.next = self.zn5.val();
 
         // Stage 5: the leading zeros of 2K (K < 2^31 when it passes, so 2K fits 32 bits): the
-        // first two shifts; dot(n_s, a), dot(n_s, b); the side products arrive and are
-        // registered.
+        // first two shifts (16, 8), side by side: the byte tested for the 8 is bits 24–31 when
+        // the top half is not zero, bits 8–15 when it is, so both bytes are tested at once with
+        // the half and the shift is one 4-way choice; dot(n_s, a), dot(n_s, b); the side
+        // products arrive and are registered.
         self.k2.next = self.k5.q.val() << self.sh1.val();
-        self.ze0.next = self.k2.val();
-        self.top16_e.next = self.ze0.val().get_bits::<16>(16);
-        self.ze1.next = self.ze0.val();
-        self.ce16_e.next = self.zero6.val();
-        if self.top16_e.val() == self.zero16.val() {
-            self.ze1.next = self.ze0.val() << self.sh16.val();
-            self.ce16_e.next = self.c16_6.val();
+        self.z16_e.next = self.k2.val().get_bits::<16>(16) == self.zero16.val();
+        self.z8hi_e.next = self.k2.val().get_bits::<8>(24) == self.zero8.val();
+        self.z8mid_e.next = self.k2.val().get_bits::<8>(8) == self.zero8.val();
+        self.ze_hi.next = self.k2.val();
+        self.ce_hi.next = self.zero6.val();
+        if self.z8hi_e.val() {
+            self.ze_hi.next = self.k2.val() << self.sh8.val();
+            self.ce_hi.next = self.c8_6.val();
         }
-        self.top8_e.next = self.ze1.val().get_bits::<8>(24);
-        self.ze2.next = self.ze1.val();
-        self.ce8_e.next = self.zero6.val();
-        if self.top8_e.val() == self.zero8.val() {
-            self.ze2.next = self.ze1.val() << self.sh8.val();
-            self.ce8_e.next = self.c8_6.val();
+        self.ze_lo.next = self.k2.val() << self.sh16.val();
+        self.ce_lo.next = self.c16_6.val();
+        if self.z8mid_e.val() {
+            self.ze_lo.next = self.k2.val() << self.sh24.val();
+            self.ce_lo.next = self.c24_6.val();
+        }
+        self.ze2.next = self.ze_hi.val();
+        self.ce_e.next = self.ce_hi.val();
+        if self.z16_e.val() {
+            self.ze2.next = self.ze_lo.val();
+            self.ce_e.next = self.ce_lo.val();
         }
         self.ha.next = self.p_nax5.q.val() + self.p_nay5.q.val();
         self.hb.next = self.p_nbx5.q.val() + self.p_nby5.q.val();
@@ -1303,7 +1352,7 @@ impl Logic for Screener {
         self.hb6.d.next = self.hb.val();
         self.clz_n6.d.next = self.clz_n5.q.val();
         self.norm_n6.d.next = self.norm_n5.q.val();
-        self.clz_e6.d.next = self.ce16_e.val() | self.ce8_e.val();
+        self.clz_e6.d.next = self.ce_e.val();
         self.norm_e6.d.next = self.ze2.val();
 
         // Stage 6: the last three shifts of 2K; the backward and back-facing screens, by
@@ -1367,8 +1416,16 @@ impl Logic for Screener {
         self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
         // s0 − 1 = clz_n + !clz_e (mod 64): one adder from the registers, beside s0's.
         self.s0_m1.next = self.clz_n7.q.val() + !self.clz_e7.q.val();
+        // The normalised nmax (18 significant bits) has its low 14 bits zero, so it is below
+        // the normalised 2K exactly when its top 18 bits are below 2K's, or equal to them with
+        // 2K's low 14 bits not all zero: an 18-bit carry chain instead of a 32-bit one.
+        self.n_hi.next = self.norm_n7.q.val().get_bits::<18>(14);
+        self.e_hi.next = self.norm_e7.q.val().get_bits::<18>(14);
+        self.e_lo_nz.next = self.norm_e7.q.val().get_bits::<14>(0) != self.zero14.val();
+        self.n_below_e.next =
+            (self.n_hi.val() < self.e_hi.val()) | ((self.n_hi.val() == self.e_hi.val()) & self.e_lo_nz.val());
         self.sh.next = self.s0_m1.val();
-        if self.norm_n7.q.val() < self.norm_e7.q.val() {
+        if self.n_below_e.val() {
             self.sh.next = self.s0.val();
         }
         self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
@@ -1404,22 +1461,27 @@ impl Logic for Screener {
             & !self.outside8.q.val()
             & !self.is_near.val();
         self.reserve.next = self.v8.q.val();
-        if self.v8.q.val() {
-            if self.is_pass.val() {
-                self.c_passed.d.next = self.c_passed.q.val() + self.one32.val();
-            }
-            if self.backward8.q.val() {
-                self.c_backward.d.next = self.c_backward.q.val() + self.one32.val();
-            }
-            if self.back_facing8.q.val() {
-                self.c_back_facing.d.next = self.c_back_facing.q.val() + self.one32.val();
-            }
-            if self.outside8.q.val() {
-                self.c_outside.d.next = self.c_outside.q.val() + self.one32.val();
-            }
-            if self.is_near.val() {
-                self.c_near.d.next = self.c_near.q.val() + self.one32.val();
-            }
+        self.pass9.d.next = self.v8.q.val() & self.is_pass.val();
+        self.backward9.d.next = self.v8.q.val() & self.backward8.q.val();
+        self.back_facing9.d.next = self.v8.q.val() & self.back_facing8.q.val();
+        self.outside9.d.next = self.v8.q.val() & self.outside8.q.val();
+        self.near9.d.next = self.v8.q.val() & self.is_near.val();
+        // Stage 9 (COUNT_LATENCY): the verdict counted, a cycle after it is decided, so that
+        // the counters' 160 clock enables hang off five registers, not off the verdict's logic.
+        if self.pass9.q.val() {
+            self.c_passed.d.next = self.c_passed.q.val() + self.one32.val();
+        }
+        if self.backward9.q.val() {
+            self.c_backward.d.next = self.c_backward.q.val() + self.one32.val();
+        }
+        if self.back_facing9.q.val() {
+            self.c_back_facing.d.next = self.c_back_facing.q.val() + self.one32.val();
+        }
+        if self.outside9.q.val() {
+            self.c_outside.d.next = self.c_outside.q.val() + self.one32.val();
+        }
+        if self.near9.q.val() {
+            self.c_near.d.next = self.c_near.q.val() + self.one32.val();
         }
         self.passed.next = self.c_passed.q.val();
         self.backward.next = self.c_backward.q.val();
@@ -1520,32 +1582,47 @@ impl Logic for Screener {
             self.fill_ptr.d.next = self.fill_inc.val();
         }
 
-        // Output: the head slot is read every cycle into the lanes' registered read ports at
-        // the address rd_ptr + pop. out_valid is set for the next cycle when a complete slot
-        // remains after this cycle's pop, excluding this cycle's fill (the lanes read before
-        // they write).
+        // Output: every cycle the lanes read the head slot (rd_ptr) and the one after it
+        // (rd_ptr + 1) into their read registers and show the second after a pop
+        // ([`FifoRam`]): no read address depends on out_ready. out_valid is set for the next
+        // cycle when a complete slot remains after this cycle's pop, excluding this cycle's
+        // fill (the lanes read before they write).
         self.pop.next = self.head_valid.q.val() & self.out_ready.val();
         // rd_ptr + 1 is kept in a register (rd_inc_x, bit 0 inverted so that its power-up zero
-        // stands for 1): no carry chain between out_ready and the lanes' read address.
+        // stands for 1): no carry chain before the lanes' second read address.
         self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one5.val();
         self.rd_inc2.next = self.rd_inc.val() + self.one5.val();
         self.done_dec.next = self.done.q.val() - self.one6.val();
-        self.rd_addr.next = self.rd_ptr.q.val();
         self.done_left.next = self.done.q.val();
         if self.pop.val() {
-            self.rd_addr.next = self.rd_inc.val();
             self.rd_ptr.d.next = self.rd_inc.val();
             self.rd_inc_x.d.next = self.rd_inc2.val() ^ self.one5.val();
             self.done_left.next = self.done_dec.val();
         }
-        self.lane_id.read_address.next = self.rd_addr.val();
-        self.lane_ax.read_address.next = self.rd_addr.val();
-        self.lane_ay.read_address.next = self.rd_addr.val();
-        self.lane_bx.read_address.next = self.rd_addr.val();
-        self.lane_by.read_address.next = self.rd_addr.val();
-        self.lane_sh.read_address.next = self.rd_addr.val();
-        self.lane_wx.read_address.next = self.rd_addr.val();
-        self.lane_wy.read_address.next = self.rd_addr.val();
+        self.lane_id.head_address.next = self.rd_ptr.q.val();
+        self.lane_id.next_address.next = self.rd_inc.val();
+        self.lane_id.pop.next = self.pop.val();
+        self.lane_ax.head_address.next = self.rd_ptr.q.val();
+        self.lane_ax.next_address.next = self.rd_inc.val();
+        self.lane_ax.pop.next = self.pop.val();
+        self.lane_ay.head_address.next = self.rd_ptr.q.val();
+        self.lane_ay.next_address.next = self.rd_inc.val();
+        self.lane_ay.pop.next = self.pop.val();
+        self.lane_bx.head_address.next = self.rd_ptr.q.val();
+        self.lane_bx.next_address.next = self.rd_inc.val();
+        self.lane_bx.pop.next = self.pop.val();
+        self.lane_by.head_address.next = self.rd_ptr.q.val();
+        self.lane_by.next_address.next = self.rd_inc.val();
+        self.lane_by.pop.next = self.pop.val();
+        self.lane_sh.head_address.next = self.rd_ptr.q.val();
+        self.lane_sh.next_address.next = self.rd_inc.val();
+        self.lane_sh.pop.next = self.pop.val();
+        self.lane_wx.head_address.next = self.rd_ptr.q.val();
+        self.lane_wx.next_address.next = self.rd_inc.val();
+        self.lane_wx.pop.next = self.pop.val();
+        self.lane_wy.head_address.next = self.rd_ptr.q.val();
+        self.lane_wy.next_address.next = self.rd_inc.val();
+        self.lane_wy.pop.next = self.pop.val();
         self.head_valid.d.next = self.done_left.val() != self.zero6.val();
         self.out_valid.next = self.head_valid.q.val();
         self.out_id.next = self.lane_id.read_data.val();

@@ -14,11 +14,11 @@
 // * credits: at most DEPTH (32) patches are in flight (accepted, not yet out), and `in_ready`
 //   is high exactly while fewer are (a_credits, a_in_ready);
 // * no output without an input: `out_valid` only while a patch is in flight (a_no_spurious);
-// * every patch is counted in exactly one verdict counter, once, in the cycle of its verdict
-//   (VERDICT_LATENCY = 8 cycles after acceptance, shown from the next cycle on): the counters
+// * every patch is counted in exactly one verdict counter, once, a cycle after its verdict
+//   (COUNT_LATENCY = 9 cycles after acceptance, shown from the next cycle on): the counters
 //   start at zero and only ever grow by one, at most one of them in a cycle, and one exactly
-//   when a patch was taken nine cycles before (a_counters_init, a_count_step, a_count_one,
-//   a_count_when); so the five counters sum to the number of patches taken at least nine
+//   when a patch was taken ten cycles before (a_counters_init, a_count_step, a_count_one,
+//   a_count_when); so the five counters sum to the number of patches taken at least ten
 //   cycles ago;
 // * the output holds (`out_valid`, `out_id`, `out_pass`, `out_sh` stable) while it waits for
 //   `out_ready`, and `in_ready` is not withdrawn without a transfer (a_out_hold, a_out_stable,
@@ -84,6 +84,7 @@ module screener_formal (
     localparam DEPTH = 32;
     localparam LATENCY = 28;
     localparam VERDICT_LATENCY = 8;
+    localparam COUNT_LATENCY = VERDICT_LATENCY + 1;
     localparam DIV_LATENCY = 18;
 
     wire        in_ready, out_valid, out_pass;
@@ -93,11 +94,13 @@ module screener_formal (
     wire [31:0] passed, backward, back_facing, outside, near;
     // Internal state, exposed by screener.sby for the induction (not ports of the exported
     // module): the stage valid bits and ids, the screens' registers of stages 7 and 8, the
-    // divider's tag pipeline (3 bits per stage, bit 0: a slot to complete), the credit and FIFO
+    // divider's tag pipeline (3 bits per stage, bit 0: a slot to complete), the verdict flags of
+    // stage 9 (what is counted), the credit and FIFO
     // counters and pointers (rd_inc_x: rd_ptr + 1 with bit 0 inverted), and the output FIFO's
     // lanes.
     wire        v1, v2, v3, v4, v5, v6, v7, v8;
     wire        backward7, back_facing7, backward8, back_facing8, outside8;
+    wire        pass9, backward9, back_facing9, outside9, near9;
     wire [15:0] id1, id2, id3, id4, id5, id6, id7, id8;
     wire [53:0] tgp;
     wire [5:0]  used, done;
@@ -123,6 +126,8 @@ module screener_formal (
         .id7$q(id7), .id8$q(id8),
         .backward7$q(backward7), .back_facing7$q(back_facing7),
         .backward8$q(backward8), .back_facing8$q(back_facing8), .outside8$q(outside8),
+        .pass9$q(pass9), .backward9$q(backward9), .back_facing9$q(back_facing9),
+        .outside9$q(outside9), .near9$q(near9),
         .divider_tgp(tgp), .used$q(used), .done$q(done),
         .res_ptr$q(res_ptr), .fill_ptr$q(fill_ptr), .rd_ptr$q(rd_ptr), .rd_inc_x$q(rd_inc_x),
         `LANE32(lane_id, lane_id), `LANE32(lane_sh, lane_sh)
@@ -175,8 +180,8 @@ module screener_formal (
             end
         end else begin
             if (f_age != 6'd63) f_age <= f_age + 6'd1;
-            // In cycle a + VERDICT_LATENCY + 1 the counters show its verdict for the first time.
-            if (f_age == VERDICT_LATENCY + 1) f_vpass <= passed != f_p_passed;
+            // In cycle a + COUNT_LATENCY + 1 the counters show its verdict for the first time.
+            if (f_age == COUNT_LATENCY + 1) f_vpass <= passed != f_p_passed;
             if (pop) begin
                 if (f_ahead == 7'd0) f_trk <= 1'b0;
                 else f_ahead <= f_ahead - 7'd1;
@@ -215,11 +220,11 @@ module screener_formal (
                          near != f_p_near};
     always @(posedge clock) begin
         if (f_past) begin
-            // Every patch is counted in exactly one counter, once, in the cycle of its verdict
-            // (VERDICT_LATENCY cycles after its acceptance; shown from the next cycle on): the
+            // Every patch is counted in exactly one counter, once, a cycle after its verdict
+            // (COUNT_LATENCY cycles after its acceptance; shown from the next cycle on): the
             // counters only ever grow by one, and exactly one grows for each patch taken
-            // VERDICT_LATENCY + 1 cycles before, none otherwise. (With a_counters_init: the
-            // five counters sum to the number of patches taken at least eight cycles ago.)
+            // COUNT_LATENCY + 1 cycles before, none otherwise. (With a_counters_init: the
+            // five counters sum to the number of patches taken at least ten cycles ago.)
             a_count_step: assert((passed == f_p_passed || passed == f_p_passed + 32'd1)
                                  && (backward == f_p_backward || backward == f_p_backward + 32'd1)
                                  && (back_facing == f_p_back_facing
@@ -228,7 +233,7 @@ module screener_formal (
                                  && (near == f_p_near || near == f_p_near + 32'd1));
             a_count_one: assert(f_grew == 5'd0 || f_grew == 5'b00001 || f_grew == 5'b00010
                                 || f_grew == 5'b00100 || f_grew == 5'b01000 || f_grew == 5'b10000);
-            a_count_when: assert((f_grew != 5'd0) == f_sr[VERDICT_LATENCY + 1]);
+            a_count_when: assert((f_grew != 5'd0) == f_sr[COUNT_LATENCY + 1]);
             // Handshake stability.
             if ($past(in_ready && !in_valid)) a_in_hold: assert(in_ready);
             if ($past(out_valid && !out_ready)) begin
@@ -277,6 +282,10 @@ module screener_formal (
         i_verdict: assert(!(backward7 && back_facing7)
                           && !(backward8 && back_facing8) && !(backward8 && outside8)
                           && !(back_facing8 && outside8));
+        // Stage 9 holds the verdict of the patch taken COUNT_LATENCY cycles ago, as one flag
+        // (none without a patch).
+        i_count9: assert({4'd0, pass9} + backward9 + back_facing9 + outside9 + near9
+                         == {4'd0, f_sr[COUNT_LATENCY]});
         i_used: assert(used == f_held[5:0]);
         // Patches leave no earlier than LATENCY cycles after their acceptance.
         i_young: assert(f_young_l <= f_held);
@@ -310,11 +319,12 @@ module screener_formal (
             if (f_age == 7) i_trk_id7: assert(id7 == f_id);
             if (f_age == 8) i_trk_id8: assert(id8 == f_id);
             if (f_age >= VERDICT_LATENCY + 1) i_trk_slot: assert(lane_id[f_slot] == f_id);
-            if (f_age >= VERDICT_LATENCY + 2) i_trk_pass: assert(lane_sh[f_slot][6] == f_vpass);
+            if (f_age == COUNT_LATENCY) i_trk_pass9: assert(lane_sh[f_slot][6] == pass9);
+            if (f_age >= COUNT_LATENCY + 2) i_trk_pass: assert(lane_sh[f_slot][6] == f_vpass);
         end
     end
     always @(posedge clock) begin
-        if (f_past && f_trk && f_age == VERDICT_LATENCY + 1) begin
+        if (f_past && f_trk && f_age == COUNT_LATENCY + 1) begin
             i_trk_pass_v: assert(lane_sh[f_slot][6] == (passed != f_p_passed));
         end
     end

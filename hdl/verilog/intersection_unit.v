@@ -1664,6 +1664,7 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
        p_retire = 1'b0;
        p_sh = 6'd0;
        p_id = 16'd0;
+       full = 1'b0;
        cur = 10'd0;
        v1 = 1'b0;
        tag1 = 32'd0;
@@ -1681,7 +1682,6 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
        o_wy = 18'd0;
     end
     always @(*) begin
-       full = remaining > 11'd1;
        busy = issue || v1;
        kill = issue && p_retire;
     end
@@ -1694,8 +1694,9 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
        o_by <= p_by;
        o_wx <= p_wx;
        o_wy <= p_wy;
-       if (patch_valid && remaining <= 11'd1) begin
+       if (patch_valid && !full) begin
           remaining <= patch_count;
+          full <= patch_count[10:1] != 10'd0;
           cur <= patch_first;
           p_ax <= patch_ax;
           p_ay <= patch_ay;
@@ -1708,6 +1709,7 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
           p_retire <= patch_retire;
        end else if (issue) begin
           remaining <= remaining - 11'd1;
+          full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
           cur <= cur + 10'd1;
        end
     end

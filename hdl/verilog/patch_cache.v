@@ -51,6 +51,12 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [4:0] sp$d;
     wire  [4:0] sp$q;
     reg  sp$clock;
+    reg  [4:0] rd_inc_x$d;
+    wire  [4:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] sp_inc_x$d;
+    wire  [4:0] sp_inc_x$q;
+    reg  sp_inc_x$clock;
     reg  q_valid$d;
     wire  q_valid$q;
     reg  q_valid$clock;
@@ -90,9 +96,21 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [11:0] line3$d;
     wire  [11:0] line3$q;
     reg  line3$clock;
-    reg  match3$d;
-    wire  match3$q;
-    reg  match3$clock;
+    reg  match3_0$d;
+    wire  match3_0$q;
+    reg  match3_0$clock;
+    reg  match3_1$d;
+    wire  match3_1$q;
+    reg  match3_1$clock;
+    reg  match3_2$d;
+    wire  match3_2$q;
+    reg  match3_2$clock;
+    reg  match3_3$d;
+    wire  match3_3$q;
+    reg  match3_3$clock;
+    reg  match3_4$d;
+    wire  match3_4$q;
+    reg  match3_4$clock;
     reg  [16:0] ax3$d;
     wire  [16:0] ax3$q;
     reg  ax3$clock;
@@ -184,15 +202,24 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     // Local signals
     reg  push;
     reg  issue;
-    reg  tag_match;
+    reg  tag_hit;
     reg  hit;
     reg  miss;
     reg  fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
+    reg  [4:0] rd_inc2;
+    reg  [4:0] rd_next_inc;
     reg  [4:0] sp_inc;
+    reg  [4:0] sp_inc2;
     reg  [4:0] read_ptr;
+    reg  [4:0] read_inc;
+    reg  ne_sp;
+    reg  ne_sp_inc;
+    reg  ne_rd;
+    reg  ne_rd_inc;
+    reg  read_new;
     reg  [11:0] head_low;
     reg  [11:0] head_line;
     reg  [16:0] head_key;
@@ -223,6 +250,16 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .d(sp$d),
         .q(sp$q),
         .clock(sp$clock)
+    );
+    patch_cache$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    patch_cache$sp_inc_x sp_inc_x(
+        .d(sp_inc_x$d),
+        .q(sp_inc_x$q),
+        .clock(sp_inc_x$clock)
     );
     patch_cache$q_valid q_valid(
         .d(q_valid$d),
@@ -289,10 +326,30 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .q(line3$q),
         .clock(line3$clock)
     );
-    patch_cache$match3 match3(
-        .d(match3$d),
-        .q(match3$q),
-        .clock(match3$clock)
+    patch_cache$match3_0 match3_0(
+        .d(match3_0$d),
+        .q(match3_0$q),
+        .clock(match3_0$clock)
+    );
+    patch_cache$match3_1 match3_1(
+        .d(match3_1$d),
+        .q(match3_1$q),
+        .clock(match3_1$clock)
+    );
+    patch_cache$match3_2 match3_2(
+        .d(match3_2$d),
+        .q(match3_2$q),
+        .clock(match3_2$clock)
+    );
+    patch_cache$match3_3 match3_3(
+        .d(match3_3$d),
+        .q(match3_3$q),
+        .clock(match3_3$clock)
+    );
+    patch_cache$match3_4 match3_4(
+        .d(match3_4$d),
+        .q(match3_4$q),
+        .clock(match3_4$clock)
     );
     patch_cache$ax3 ax3(
         .d(ax3$d),
@@ -435,6 +492,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         wr_ptr$clock = clock;
         rd_ptr$clock = clock;
         sp$clock = clock;
+        rd_inc_x$clock = clock;
+        sp_inc_x$clock = clock;
         q_valid$clock = clock;
         v1$clock = clock;
         id1$clock = clock;
@@ -448,7 +507,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         id3$clock = clock;
         key3$clock = clock;
         line3$clock = clock;
-        match3$clock = clock;
+        match3_0$clock = clock;
+        match3_1$clock = clock;
+        match3_2$clock = clock;
+        match3_3$clock = clock;
+        match3_4$clock = clock;
         ax3$clock = clock;
         ay3$clock = clock;
         bx3$clock = clock;
@@ -471,6 +534,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
+        rd_inc_x$d = rd_inc_x$q;
+        sp_inc_x$d = sp_inc_x$q;
         q_valid$d = q_valid$q;
         v1$d = v1$q;
         id1$d = id1$q;
@@ -484,7 +549,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         id3$d = id3$q;
         key3$d = key3$q;
         line3$d = line3$q;
-        match3$d = match3$q;
+        match3_0$d = match3_0$q;
+        match3_1$d = match3_1$q;
+        match3_2$d = match3_2$q;
+        match3_3$d = match3_3$q;
+        match3_4$d = match3_4$q;
         ax3$d = ax3$q;
         ay3$d = ay3$q;
         bx3$d = bx3$q;
@@ -511,22 +580,28 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         lane_bx$clock = clock;
         lane_by$clock = clock;
         wr_inc = wr_ptr$q + one5;
-        rd_inc = rd_ptr$q + one5;
-        sp_inc = sp$q + one5;
+        rd_inc = rd_inc_x$q ^ one5;
+        rd_inc2 = rd_inc + one5;
+        sp_inc = sp_inc_x$q ^ one5;
+        sp_inc2 = sp_inc + one5;
         hit_inc = hit_count$q + one32;
         miss_inc = miss_count$q + one32;
-        tag_match = tag$read_data == key2$q;
         v3$d = v2$q & ~w_valid$q;
         id3$d = id2$q;
         key3$d = key2$q;
         line3$d = line2$q;
-        match3$d = tag_match;
+        match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
+        match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
+        match3_2$d = tag$read_data[(32'h8)+:(4)] == key2$q[(32'h8)+:(4)];
+        match3_3$d = tag$read_data[(32'hc)+:(4)] == key2$q[(32'hc)+:(4)];
+        match3_4$d = tag$read_data[32'h10] == key2$q[32'h10];
         ax3$d = lane_ax$read_data;
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
         by3$d = lane_by$read_data;
-        hit = v3$q & ~w_valid$q & match3$q;
-        miss = v3$q & ~w_valid$q & ~match3$q;
+        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        hit = v3$q & ~w_valid$q & tag_hit;
+        miss = v3$q & ~w_valid$q & ~tag_hit;
         fill = w_valid$q & mem_valid;
         push = cfg_enable & req;
         q_lane$write_address = wr_ptr$q[(32'h0)+:(4)];
@@ -536,24 +611,40 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
             wr_ptr$d = wr_inc;
         end
         rd_next = rd_ptr$q;
+        rd_next_inc = rd_inc;
         if (hit | fill) begin
             rd_next = rd_inc;
+            rd_next_inc = rd_inc2;
         end
         rd_ptr$d = rd_next;
+        rd_inc_x$d = rd_next_inc ^ one5;
         issue = q_valid$q & ~w_valid$q;
+        ne_sp = sp$q != wr_ptr$q;
+        ne_sp_inc = sp_inc != wr_ptr$q;
+        ne_rd = rd_ptr$q != wr_ptr$q;
+        ne_rd_inc = rd_inc != wr_ptr$q;
         read_ptr = sp$q;
+        read_inc = sp_inc;
+        read_new = ne_sp;
         if (issue) begin
             read_ptr = sp_inc;
+            read_inc = sp_inc2;
+            read_new = ne_sp_inc;
         end
         if (w_valid$q) begin
             read_ptr = rd_ptr$q;
+            read_inc = rd_inc;
+            read_new = ne_rd;
             if (mem_valid) begin
                 read_ptr = rd_inc;
+                read_inc = rd_inc2;
+                read_new = ne_rd_inc;
             end
         end
         sp$d = read_ptr;
+        sp_inc_x$d = read_inc ^ one5;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
-        q_valid$d = read_ptr != wr_ptr$q;
+        q_valid$d = read_new;
         head_low = ((q_lane$read_data) & 12'hfff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
@@ -2205,7 +2296,7 @@ module patch_cache$line3(d,q,clock);
 endmodule // patch_cache$line3
 
 
-module patch_cache$match3(d,q,clock);
+module patch_cache$match3_0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2221,7 +2312,83 @@ module patch_cache$match3(d,q,clock);
        q <= d;
     end
           
-endmodule // patch_cache$match3
+endmodule // patch_cache$match3_0
+
+
+module patch_cache$match3_1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$match3_1
+
+
+module patch_cache$match3_2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$match3_2
+
+
+module patch_cache$match3_3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$match3_3
+
+
+module patch_cache$match3_4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$match3_4
 
 
 module patch_cache$miss_count(d,q,clock);
@@ -2383,6 +2550,25 @@ module patch_cache$rby(d,q,clock);
 endmodule // patch_cache$rby
 
 
+module patch_cache$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$rd_inc_x
+
+
 module patch_cache$rd_ptr(d,q,clock);
     
     // Module arguments
@@ -2438,6 +2624,25 @@ module patch_cache$sp(d,q,clock);
     end
           
 endmodule // patch_cache$sp
+
+
+module patch_cache$sp_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$sp_inc_x
 
 
 module patch_cache$tag(clock,read_address,read_data,write_address,write_data,write_enable);

@@ -60,35 +60,45 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     wire  [31:0] load_count$q;
     reg  load_count$clock;
     reg  lane_id$clock;
-    reg  [3:0] lane_id$read_address;
-    wire  [15:0] lane_id$read_data;
     reg  [3:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
     reg  lane_id$write_enable;
+    reg  [3:0] lane_id$head_address;
+    reg  [3:0] lane_id$next_address;
+    reg  lane_id$pop;
+    wire  [15:0] lane_id$read_data;
     reg  lane_ax$clock;
-    reg  [3:0] lane_ax$read_address;
-    wire  [16:0] lane_ax$read_data;
     reg  [3:0] lane_ax$write_address;
     reg  [16:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
+    reg  [3:0] lane_ax$head_address;
+    reg  [3:0] lane_ax$next_address;
+    reg  lane_ax$pop;
+    wire  [16:0] lane_ax$read_data;
     reg  lane_ay$clock;
-    reg  [3:0] lane_ay$read_address;
-    wire  [16:0] lane_ay$read_data;
     reg  [3:0] lane_ay$write_address;
     reg  [16:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
+    reg  [3:0] lane_ay$head_address;
+    reg  [3:0] lane_ay$next_address;
+    reg  lane_ay$pop;
+    wire  [16:0] lane_ay$read_data;
     reg  lane_bx$clock;
-    reg  [3:0] lane_bx$read_address;
-    wire  [16:0] lane_bx$read_data;
     reg  [3:0] lane_bx$write_address;
     reg  [16:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
+    reg  [3:0] lane_bx$head_address;
+    reg  [3:0] lane_bx$next_address;
+    reg  lane_bx$pop;
+    wire  [16:0] lane_bx$read_data;
     reg  lane_by$clock;
-    reg  [3:0] lane_by$read_address;
-    wire  [16:0] lane_by$read_data;
     reg  [3:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  [3:0] lane_by$head_address;
+    reg  [3:0] lane_by$next_address;
+    reg  lane_by$pop;
+    wire  [16:0] lane_by$read_data;
     
     // Local signals
     reg  room;
@@ -97,7 +107,6 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     reg  [3:0] req_inc;
     reg  [3:0] resp_inc;
     reg  [3:0] rd_inc;
-    reg  [3:0] rd_addr;
     reg  [4:0] reserved_inc;
     reg  [4:0] reserved_dec;
     reg  [4:0] done_inc;
@@ -153,43 +162,53 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     );
     patch_loader$lane_id lane_id(
         .clock(lane_id$clock),
-        .read_address(lane_id$read_address),
-        .read_data(lane_id$read_data),
         .write_address(lane_id$write_address),
         .write_data(lane_id$write_data),
-        .write_enable(lane_id$write_enable)
+        .write_enable(lane_id$write_enable),
+        .head_address(lane_id$head_address),
+        .next_address(lane_id$next_address),
+        .pop(lane_id$pop),
+        .read_data(lane_id$read_data)
     );
     patch_loader$lane_ax lane_ax(
         .clock(lane_ax$clock),
-        .read_address(lane_ax$read_address),
-        .read_data(lane_ax$read_data),
         .write_address(lane_ax$write_address),
         .write_data(lane_ax$write_data),
-        .write_enable(lane_ax$write_enable)
+        .write_enable(lane_ax$write_enable),
+        .head_address(lane_ax$head_address),
+        .next_address(lane_ax$next_address),
+        .pop(lane_ax$pop),
+        .read_data(lane_ax$read_data)
     );
     patch_loader$lane_ay lane_ay(
         .clock(lane_ay$clock),
-        .read_address(lane_ay$read_address),
-        .read_data(lane_ay$read_data),
         .write_address(lane_ay$write_address),
         .write_data(lane_ay$write_data),
-        .write_enable(lane_ay$write_enable)
+        .write_enable(lane_ay$write_enable),
+        .head_address(lane_ay$head_address),
+        .next_address(lane_ay$next_address),
+        .pop(lane_ay$pop),
+        .read_data(lane_ay$read_data)
     );
     patch_loader$lane_bx lane_bx(
         .clock(lane_bx$clock),
-        .read_address(lane_bx$read_address),
-        .read_data(lane_bx$read_data),
         .write_address(lane_bx$write_address),
         .write_data(lane_bx$write_data),
-        .write_enable(lane_bx$write_enable)
+        .write_enable(lane_bx$write_enable),
+        .head_address(lane_bx$head_address),
+        .next_address(lane_bx$next_address),
+        .pop(lane_bx$pop),
+        .read_data(lane_bx$read_data)
     );
     patch_loader$lane_by lane_by(
         .clock(lane_by$clock),
-        .read_address(lane_by$read_address),
-        .read_data(lane_by$read_data),
         .write_address(lane_by$write_address),
         .write_data(lane_by$write_data),
-        .write_enable(lane_by$write_enable)
+        .write_enable(lane_by$write_enable),
+        .head_address(lane_by$head_address),
+        .next_address(lane_by$next_address),
+        .pop(lane_by$pop),
+        .read_data(lane_by$read_data)
     );
     
     // Update code
@@ -256,18 +275,26 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
             load_count$d = load_inc;
         end
         loads = load_count$q;
-        rd_addr = rd_ptr$q;
         done_left = done$q;
         if (pop) begin
-            rd_addr = rd_inc;
             rd_ptr$d = rd_inc;
             done_left = done_dec;
         end
-        lane_id$read_address = rd_addr;
-        lane_ax$read_address = rd_addr;
-        lane_ay$read_address = rd_addr;
-        lane_bx$read_address = rd_addr;
-        lane_by$read_address = rd_addr;
+        lane_id$head_address = rd_ptr$q;
+        lane_id$next_address = rd_inc;
+        lane_id$pop = pop;
+        lane_ax$head_address = rd_ptr$q;
+        lane_ax$next_address = rd_inc;
+        lane_ax$pop = pop;
+        lane_ay$head_address = rd_ptr$q;
+        lane_ay$next_address = rd_inc;
+        lane_ay$pop = pop;
+        lane_bx$head_address = rd_ptr$q;
+        lane_bx$next_address = rd_inc;
+        lane_bx$pop = pop;
+        lane_by$head_address = rd_ptr$q;
+        lane_by$next_address = rd_inc;
+        lane_by$pop = pop;
         head_valid$d = done_left != zero5;
         out_valid = head_valid$q;
         out_id = lane_id$read_data;
@@ -330,133 +357,183 @@ module patch_loader$head_valid(d,q,clock);
 endmodule // patch_loader$head_valid
 
 
-module patch_loader$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+module patch_loader$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // patch_loader$lane_ax
 
 
-module patch_loader$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+module patch_loader$lane_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // patch_loader$lane_ay
 
 
-module patch_loader$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+module patch_loader$lane_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // patch_loader$lane_bx
 
 
-module patch_loader$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+module patch_loader$lane_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // patch_loader$lane_by
 
 
-module patch_loader$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+module patch_loader$lane_id(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [15:0] read_data;
     input wire  [3:0] write_address;
     input wire  [15:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [15:0] read_data;
     
     // Update code (custom)
     reg [15:0] mem [0:15];
+    reg [15:0] head_r;
+    reg [15:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
-       read_data = 16'd0;
+       head_r = 16'd0;
+       next_r = 16'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // patch_loader$lane_id
 
 

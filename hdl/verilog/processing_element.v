@@ -215,20 +215,13 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  unit$busy;
     wire  [31:0] unit$tests;
     reg  tags$clock;
-    reg  [5:0] tags$read_address;
-    wire  [21:0] tags$read_data;
     reg  [5:0] tags$write_address;
     reg  [21:0] tags$write_data;
     reg  tags$write_enable;
-    reg  tags_next$clock;
-    reg  [5:0] tags_next$read_address;
-    wire  [21:0] tags_next$read_data;
-    reg  [5:0] tags_next$write_address;
-    reg  [21:0] tags_next$write_data;
-    reg  tags_next$write_enable;
-    reg  popped$d;
-    wire  popped$q;
-    reg  popped$clock;
+    reg  [5:0] tags$head_address;
+    reg  [5:0] tags$next_address;
+    reg  tags$pop;
+    wire  [21:0] tags$read_data;
     reg  [5:0] rd_inc_x$d;
     wire  [5:0] rd_inc_x$q;
     reg  rd_inc_x$clock;
@@ -427,24 +420,13 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     );
     processing_element$tags tags(
         .clock(tags$clock),
-        .read_address(tags$read_address),
-        .read_data(tags$read_data),
         .write_address(tags$write_address),
         .write_data(tags$write_data),
-        .write_enable(tags$write_enable)
-    );
-    processing_element$tags_next tags_next(
-        .clock(tags_next$clock),
-        .read_address(tags_next$read_address),
-        .read_data(tags_next$read_data),
-        .write_address(tags_next$write_address),
-        .write_data(tags_next$write_data),
-        .write_enable(tags_next$write_enable)
-    );
-    processing_element$popped popped(
-        .d(popped$d),
-        .q(popped$q),
-        .clock(popped$clock)
+        .write_enable(tags$write_enable),
+        .head_address(tags$head_address),
+        .next_address(tags$next_address),
+        .pop(tags$pop),
+        .read_data(tags$read_data)
     );
     processing_element$rd_inc_x rd_inc_x(
         .d(rd_inc_x$d),
@@ -478,13 +460,11 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         rd_ptr$clock = clock;
         tag_count$clock = clock;
         head_valid$clock = clock;
-        popped$clock = clock;
         rd_inc_x$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         tag_count$d = tag_count$q;
         head_valid$d = head_valid$q;
-        popped$d = popped$q;
         rd_inc_x$d = rd_inc_x$q;
         loader$clock = clock;
         cache$clock = clock;
@@ -493,7 +473,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         sc_slice$clock = clock;
         iu_slice$clock = clock;
         tags$clock = clock;
-        tags_next$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -522,9 +501,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         tags$write_address = wr_ptr$q;
         tags$write_data = new_tag;
         tags$write_enable = accept;
-        tags_next$write_address = wr_ptr$q;
-        tags_next$write_data = new_tag;
-        tags_next$write_enable = accept;
         if (accept) begin
             wr_ptr$d = wr_ptr$q + one_ptr;
         end
@@ -567,9 +543,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
         head_tag = tags$read_data;
-        if (popped$q) begin
-            head_tag = tags_next$read_data;
-        end
         head_retire = head_tag[32'h15];
         head_first = head_tag[(32'hb)+:(10)];
         head_count = head_tag[(32'h0)+:(11)];
@@ -619,9 +592,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_count = iu_slice$out_count;
         unit$patch_retire = iu_slice$out_retire;
         rd_inc = rd_inc_x$q ^ one_ptr;
-        tags$read_address = rd_ptr$q;
-        tags_next$read_address = rd_inc;
-        popped$d = pop;
+        tags$head_address = rd_ptr$q;
+        tags$next_address = rd_inc;
+        tags$pop = pop;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = (rd_inc + one_ptr) ^ one_ptr;
@@ -701,6 +674,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [4:0] sp$d;
     wire  [4:0] sp$q;
     reg  sp$clock;
+    reg  [4:0] rd_inc_x$d;
+    wire  [4:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] sp_inc_x$d;
+    wire  [4:0] sp_inc_x$q;
+    reg  sp_inc_x$clock;
     reg  q_valid$d;
     wire  q_valid$q;
     reg  q_valid$clock;
@@ -740,9 +719,21 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [11:0] line3$d;
     wire  [11:0] line3$q;
     reg  line3$clock;
-    reg  match3$d;
-    wire  match3$q;
-    reg  match3$clock;
+    reg  match3_0$d;
+    wire  match3_0$q;
+    reg  match3_0$clock;
+    reg  match3_1$d;
+    wire  match3_1$q;
+    reg  match3_1$clock;
+    reg  match3_2$d;
+    wire  match3_2$q;
+    reg  match3_2$clock;
+    reg  match3_3$d;
+    wire  match3_3$q;
+    reg  match3_3$clock;
+    reg  match3_4$d;
+    wire  match3_4$q;
+    reg  match3_4$clock;
     reg  [16:0] ax3$d;
     wire  [16:0] ax3$q;
     reg  ax3$clock;
@@ -834,15 +825,24 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     // Local signals
     reg  push;
     reg  issue;
-    reg  tag_match;
+    reg  tag_hit;
     reg  hit;
     reg  miss;
     reg  fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
+    reg  [4:0] rd_inc2;
+    reg  [4:0] rd_next_inc;
     reg  [4:0] sp_inc;
+    reg  [4:0] sp_inc2;
     reg  [4:0] read_ptr;
+    reg  [4:0] read_inc;
+    reg  ne_sp;
+    reg  ne_sp_inc;
+    reg  ne_rd;
+    reg  ne_rd_inc;
+    reg  read_new;
     reg  [11:0] head_low;
     reg  [11:0] head_line;
     reg  [16:0] head_key;
@@ -873,6 +873,16 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .d(sp$d),
         .q(sp$q),
         .clock(sp$clock)
+    );
+    processing_element$cache$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$cache$sp_inc_x sp_inc_x(
+        .d(sp_inc_x$d),
+        .q(sp_inc_x$q),
+        .clock(sp_inc_x$clock)
     );
     processing_element$cache$q_valid q_valid(
         .d(q_valid$d),
@@ -939,10 +949,30 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(line3$q),
         .clock(line3$clock)
     );
-    processing_element$cache$match3 match3(
-        .d(match3$d),
-        .q(match3$q),
-        .clock(match3$clock)
+    processing_element$cache$match3_0 match3_0(
+        .d(match3_0$d),
+        .q(match3_0$q),
+        .clock(match3_0$clock)
+    );
+    processing_element$cache$match3_1 match3_1(
+        .d(match3_1$d),
+        .q(match3_1$q),
+        .clock(match3_1$clock)
+    );
+    processing_element$cache$match3_2 match3_2(
+        .d(match3_2$d),
+        .q(match3_2$q),
+        .clock(match3_2$clock)
+    );
+    processing_element$cache$match3_3 match3_3(
+        .d(match3_3$d),
+        .q(match3_3$q),
+        .clock(match3_3$clock)
+    );
+    processing_element$cache$match3_4 match3_4(
+        .d(match3_4$d),
+        .q(match3_4$q),
+        .clock(match3_4$clock)
     );
     processing_element$cache$ax3 ax3(
         .d(ax3$d),
@@ -1085,6 +1115,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         wr_ptr$clock = clock;
         rd_ptr$clock = clock;
         sp$clock = clock;
+        rd_inc_x$clock = clock;
+        sp_inc_x$clock = clock;
         q_valid$clock = clock;
         v1$clock = clock;
         id1$clock = clock;
@@ -1098,7 +1130,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         id3$clock = clock;
         key3$clock = clock;
         line3$clock = clock;
-        match3$clock = clock;
+        match3_0$clock = clock;
+        match3_1$clock = clock;
+        match3_2$clock = clock;
+        match3_3$clock = clock;
+        match3_4$clock = clock;
         ax3$clock = clock;
         ay3$clock = clock;
         bx3$clock = clock;
@@ -1121,6 +1157,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
+        rd_inc_x$d = rd_inc_x$q;
+        sp_inc_x$d = sp_inc_x$q;
         q_valid$d = q_valid$q;
         v1$d = v1$q;
         id1$d = id1$q;
@@ -1134,7 +1172,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         id3$d = id3$q;
         key3$d = key3$q;
         line3$d = line3$q;
-        match3$d = match3$q;
+        match3_0$d = match3_0$q;
+        match3_1$d = match3_1$q;
+        match3_2$d = match3_2$q;
+        match3_3$d = match3_3$q;
+        match3_4$d = match3_4$q;
         ax3$d = ax3$q;
         ay3$d = ay3$q;
         bx3$d = bx3$q;
@@ -1161,22 +1203,28 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         lane_bx$clock = clock;
         lane_by$clock = clock;
         wr_inc = wr_ptr$q + one5;
-        rd_inc = rd_ptr$q + one5;
-        sp_inc = sp$q + one5;
+        rd_inc = rd_inc_x$q ^ one5;
+        rd_inc2 = rd_inc + one5;
+        sp_inc = sp_inc_x$q ^ one5;
+        sp_inc2 = sp_inc + one5;
         hit_inc = hit_count$q + one32;
         miss_inc = miss_count$q + one32;
-        tag_match = tag$read_data == key2$q;
         v3$d = v2$q & ~w_valid$q;
         id3$d = id2$q;
         key3$d = key2$q;
         line3$d = line2$q;
-        match3$d = tag_match;
+        match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
+        match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
+        match3_2$d = tag$read_data[(32'h8)+:(4)] == key2$q[(32'h8)+:(4)];
+        match3_3$d = tag$read_data[(32'hc)+:(4)] == key2$q[(32'hc)+:(4)];
+        match3_4$d = tag$read_data[32'h10] == key2$q[32'h10];
         ax3$d = lane_ax$read_data;
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
         by3$d = lane_by$read_data;
-        hit = v3$q & ~w_valid$q & match3$q;
-        miss = v3$q & ~w_valid$q & ~match3$q;
+        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        hit = v3$q & ~w_valid$q & tag_hit;
+        miss = v3$q & ~w_valid$q & ~tag_hit;
         fill = w_valid$q & mem_valid;
         push = cfg_enable & req;
         q_lane$write_address = wr_ptr$q[(32'h0)+:(4)];
@@ -1186,24 +1234,40 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
             wr_ptr$d = wr_inc;
         end
         rd_next = rd_ptr$q;
+        rd_next_inc = rd_inc;
         if (hit | fill) begin
             rd_next = rd_inc;
+            rd_next_inc = rd_inc2;
         end
         rd_ptr$d = rd_next;
+        rd_inc_x$d = rd_next_inc ^ one5;
         issue = q_valid$q & ~w_valid$q;
+        ne_sp = sp$q != wr_ptr$q;
+        ne_sp_inc = sp_inc != wr_ptr$q;
+        ne_rd = rd_ptr$q != wr_ptr$q;
+        ne_rd_inc = rd_inc != wr_ptr$q;
         read_ptr = sp$q;
+        read_inc = sp_inc;
+        read_new = ne_sp;
         if (issue) begin
             read_ptr = sp_inc;
+            read_inc = sp_inc2;
+            read_new = ne_sp_inc;
         end
         if (w_valid$q) begin
             read_ptr = rd_ptr$q;
+            read_inc = rd_inc;
+            read_new = ne_rd;
             if (mem_valid) begin
                 read_ptr = rd_inc;
+                read_inc = rd_inc2;
+                read_new = ne_rd_inc;
             end
         end
         sp$d = read_ptr;
+        sp_inc_x$d = read_inc ^ one5;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
-        q_valid$d = read_ptr != wr_ptr$q;
+        q_valid$d = read_new;
         head_low = ((q_lane$read_data) & 12'hfff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
@@ -2855,7 +2919,7 @@ module processing_element$cache$line3(d,q,clock);
 endmodule // processing_element$cache$line3
 
 
-module processing_element$cache$match3(d,q,clock);
+module processing_element$cache$match3_0(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -2871,7 +2935,83 @@ module processing_element$cache$match3(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$cache$match3
+endmodule // processing_element$cache$match3_0
+
+
+module processing_element$cache$match3_1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$match3_1
+
+
+module processing_element$cache$match3_2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$match3_2
+
+
+module processing_element$cache$match3_3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$match3_3
+
+
+module processing_element$cache$match3_4(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$match3_4
 
 
 module processing_element$cache$miss_count(d,q,clock);
@@ -3033,6 +3173,25 @@ module processing_element$cache$rby(d,q,clock);
 endmodule // processing_element$cache$rby
 
 
+module processing_element$cache$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$rd_inc_x
+
+
 module processing_element$cache$rd_ptr(d,q,clock);
     
     // Module arguments
@@ -3088,6 +3247,25 @@ module processing_element$cache$sp(d,q,clock);
     end
           
 endmodule // processing_element$cache$sp
+
+
+module processing_element$cache$sp_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$sp_inc_x
 
 
 module processing_element$cache$tag(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -4497,35 +4675,45 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     wire  [31:0] load_count$q;
     reg  load_count$clock;
     reg  lane_id$clock;
-    reg  [3:0] lane_id$read_address;
-    wire  [15:0] lane_id$read_data;
     reg  [3:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
     reg  lane_id$write_enable;
+    reg  [3:0] lane_id$head_address;
+    reg  [3:0] lane_id$next_address;
+    reg  lane_id$pop;
+    wire  [15:0] lane_id$read_data;
     reg  lane_ax$clock;
-    reg  [3:0] lane_ax$read_address;
-    wire  [16:0] lane_ax$read_data;
     reg  [3:0] lane_ax$write_address;
     reg  [16:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
+    reg  [3:0] lane_ax$head_address;
+    reg  [3:0] lane_ax$next_address;
+    reg  lane_ax$pop;
+    wire  [16:0] lane_ax$read_data;
     reg  lane_ay$clock;
-    reg  [3:0] lane_ay$read_address;
-    wire  [16:0] lane_ay$read_data;
     reg  [3:0] lane_ay$write_address;
     reg  [16:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
+    reg  [3:0] lane_ay$head_address;
+    reg  [3:0] lane_ay$next_address;
+    reg  lane_ay$pop;
+    wire  [16:0] lane_ay$read_data;
     reg  lane_bx$clock;
-    reg  [3:0] lane_bx$read_address;
-    wire  [16:0] lane_bx$read_data;
     reg  [3:0] lane_bx$write_address;
     reg  [16:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
+    reg  [3:0] lane_bx$head_address;
+    reg  [3:0] lane_bx$next_address;
+    reg  lane_bx$pop;
+    wire  [16:0] lane_bx$read_data;
     reg  lane_by$clock;
-    reg  [3:0] lane_by$read_address;
-    wire  [16:0] lane_by$read_data;
     reg  [3:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  [3:0] lane_by$head_address;
+    reg  [3:0] lane_by$next_address;
+    reg  lane_by$pop;
+    wire  [16:0] lane_by$read_data;
     
     // Local signals
     reg  room;
@@ -4534,7 +4722,6 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     reg  [3:0] req_inc;
     reg  [3:0] resp_inc;
     reg  [3:0] rd_inc;
-    reg  [3:0] rd_addr;
     reg  [4:0] reserved_inc;
     reg  [4:0] reserved_dec;
     reg  [4:0] done_inc;
@@ -4590,43 +4777,53 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     );
     processing_element$loader$lane_id lane_id(
         .clock(lane_id$clock),
-        .read_address(lane_id$read_address),
-        .read_data(lane_id$read_data),
         .write_address(lane_id$write_address),
         .write_data(lane_id$write_data),
-        .write_enable(lane_id$write_enable)
+        .write_enable(lane_id$write_enable),
+        .head_address(lane_id$head_address),
+        .next_address(lane_id$next_address),
+        .pop(lane_id$pop),
+        .read_data(lane_id$read_data)
     );
     processing_element$loader$lane_ax lane_ax(
         .clock(lane_ax$clock),
-        .read_address(lane_ax$read_address),
-        .read_data(lane_ax$read_data),
         .write_address(lane_ax$write_address),
         .write_data(lane_ax$write_data),
-        .write_enable(lane_ax$write_enable)
+        .write_enable(lane_ax$write_enable),
+        .head_address(lane_ax$head_address),
+        .next_address(lane_ax$next_address),
+        .pop(lane_ax$pop),
+        .read_data(lane_ax$read_data)
     );
     processing_element$loader$lane_ay lane_ay(
         .clock(lane_ay$clock),
-        .read_address(lane_ay$read_address),
-        .read_data(lane_ay$read_data),
         .write_address(lane_ay$write_address),
         .write_data(lane_ay$write_data),
-        .write_enable(lane_ay$write_enable)
+        .write_enable(lane_ay$write_enable),
+        .head_address(lane_ay$head_address),
+        .next_address(lane_ay$next_address),
+        .pop(lane_ay$pop),
+        .read_data(lane_ay$read_data)
     );
     processing_element$loader$lane_bx lane_bx(
         .clock(lane_bx$clock),
-        .read_address(lane_bx$read_address),
-        .read_data(lane_bx$read_data),
         .write_address(lane_bx$write_address),
         .write_data(lane_bx$write_data),
-        .write_enable(lane_bx$write_enable)
+        .write_enable(lane_bx$write_enable),
+        .head_address(lane_bx$head_address),
+        .next_address(lane_bx$next_address),
+        .pop(lane_bx$pop),
+        .read_data(lane_bx$read_data)
     );
     processing_element$loader$lane_by lane_by(
         .clock(lane_by$clock),
-        .read_address(lane_by$read_address),
-        .read_data(lane_by$read_data),
         .write_address(lane_by$write_address),
         .write_data(lane_by$write_data),
-        .write_enable(lane_by$write_enable)
+        .write_enable(lane_by$write_enable),
+        .head_address(lane_by$head_address),
+        .next_address(lane_by$next_address),
+        .pop(lane_by$pop),
+        .read_data(lane_by$read_data)
     );
     
     // Update code
@@ -4693,18 +4890,26 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
             load_count$d = load_inc;
         end
         loads = load_count$q;
-        rd_addr = rd_ptr$q;
         done_left = done$q;
         if (pop) begin
-            rd_addr = rd_inc;
             rd_ptr$d = rd_inc;
             done_left = done_dec;
         end
-        lane_id$read_address = rd_addr;
-        lane_ax$read_address = rd_addr;
-        lane_ay$read_address = rd_addr;
-        lane_bx$read_address = rd_addr;
-        lane_by$read_address = rd_addr;
+        lane_id$head_address = rd_ptr$q;
+        lane_id$next_address = rd_inc;
+        lane_id$pop = pop;
+        lane_ax$head_address = rd_ptr$q;
+        lane_ax$next_address = rd_inc;
+        lane_ax$pop = pop;
+        lane_ay$head_address = rd_ptr$q;
+        lane_ay$next_address = rd_inc;
+        lane_ay$pop = pop;
+        lane_bx$head_address = rd_ptr$q;
+        lane_bx$next_address = rd_inc;
+        lane_bx$pop = pop;
+        lane_by$head_address = rd_ptr$q;
+        lane_by$next_address = rd_inc;
+        lane_by$pop = pop;
         head_valid$d = done_left != zero5;
         out_valid = head_valid$q;
         out_id = lane_id$read_data;
@@ -4767,133 +4972,183 @@ module processing_element$loader$head_valid(d,q,clock);
 endmodule // processing_element$loader$head_valid
 
 
-module processing_element$loader$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$loader$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$loader$lane_ax
 
 
-module processing_element$loader$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$loader$lane_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$loader$lane_ay
 
 
-module processing_element$loader$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$loader$lane_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$loader$lane_bx
 
 
-module processing_element$loader$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$loader$lane_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [16:0] read_data;
     input wire  [3:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
     
     // Update code (custom)
     reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
-       read_data = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$loader$lane_by
 
 
-module processing_element$loader$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$loader$lane_id(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [3:0] read_address;
-    output reg  [15:0] read_data;
     input wire  [3:0] write_address;
     input wire  [15:0] write_data;
     input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [15:0] read_data;
     
     // Update code (custom)
     reg [15:0] mem [0:15];
+    reg [15:0] head_r;
+    reg [15:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
-       read_data = 16'd0;
+       head_r = 16'd0;
+       next_r = 16'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$loader$lane_id
 
 
@@ -5028,25 +5283,6 @@ module processing_element$loader$resp_ptr(d,q,clock);
     end
           
 endmodule // processing_element$loader$resp_ptr
-
-
-module processing_element$popped(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$popped
 
 
 module processing_element$rd_inc_x(d,q,clock);
@@ -6005,10 +6241,12 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     localparam  thr_f = 32'h7fffff00;
     localparam  thr_l = 32'h80000100;
     localparam  zero16 = 16'h0;
+    localparam  zero14 = 14'b0;
     localparam  zero8 = 8'h0;
     localparam  zero4 = 4'h0;
     localparam  zero2 = 2'b0;
     localparam  zero3 = 3'b0;
+    localparam  sh24 = 32'h18;
     localparam  sh16 = 32'h10;
     localparam  sh8 = 32'h8;
     localparam  sh4 = 32'h4;
@@ -6017,6 +6255,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     localparam  sh3 = 32'h3;
     localparam  sh1_3 = 3'b1;
     localparam  sh2_3 = 3'b10;
+    localparam  c24_6 = 6'b11000;
     localparam  c16_6 = 6'b10000;
     localparam  c8_6 = 6'b1000;
     localparam  c4_6 = 6'b100;
@@ -6052,53 +6291,69 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     wire  head_valid$q;
     reg  head_valid$clock;
     reg  lane_id$clock;
-    reg  [4:0] lane_id$read_address;
-    wire  [15:0] lane_id$read_data;
     reg  [4:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
     reg  lane_id$write_enable;
+    reg  [4:0] lane_id$head_address;
+    reg  [4:0] lane_id$next_address;
+    reg  lane_id$pop;
+    wire  [15:0] lane_id$read_data;
     reg  lane_ax$clock;
-    reg  [4:0] lane_ax$read_address;
-    wire  [17:0] lane_ax$read_data;
     reg  [4:0] lane_ax$write_address;
     reg  [17:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
+    reg  [4:0] lane_ax$head_address;
+    reg  [4:0] lane_ax$next_address;
+    reg  lane_ax$pop;
+    wire  [17:0] lane_ax$read_data;
     reg  lane_ay$clock;
-    reg  [4:0] lane_ay$read_address;
-    wire  [17:0] lane_ay$read_data;
     reg  [4:0] lane_ay$write_address;
     reg  [17:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
+    reg  [4:0] lane_ay$head_address;
+    reg  [4:0] lane_ay$next_address;
+    reg  lane_ay$pop;
+    wire  [17:0] lane_ay$read_data;
     reg  lane_bx$clock;
-    reg  [4:0] lane_bx$read_address;
-    wire  [17:0] lane_bx$read_data;
     reg  [4:0] lane_bx$write_address;
     reg  [17:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
+    reg  [4:0] lane_bx$head_address;
+    reg  [4:0] lane_bx$next_address;
+    reg  lane_bx$pop;
+    wire  [17:0] lane_bx$read_data;
     reg  lane_by$clock;
-    reg  [4:0] lane_by$read_address;
-    wire  [17:0] lane_by$read_data;
     reg  [4:0] lane_by$write_address;
     reg  [17:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  [4:0] lane_by$head_address;
+    reg  [4:0] lane_by$next_address;
+    reg  lane_by$pop;
+    wire  [17:0] lane_by$read_data;
     reg  lane_sh$clock;
-    reg  [4:0] lane_sh$read_address;
-    wire  [6:0] lane_sh$read_data;
     reg  [4:0] lane_sh$write_address;
     reg  [6:0] lane_sh$write_data;
     reg  lane_sh$write_enable;
+    reg  [4:0] lane_sh$head_address;
+    reg  [4:0] lane_sh$next_address;
+    reg  lane_sh$pop;
+    wire  [6:0] lane_sh$read_data;
     reg  lane_wx$clock;
-    reg  [4:0] lane_wx$read_address;
-    wire  [17:0] lane_wx$read_data;
     reg  [4:0] lane_wx$write_address;
     reg  [17:0] lane_wx$write_data;
     reg  lane_wx$write_enable;
+    reg  [4:0] lane_wx$head_address;
+    reg  [4:0] lane_wx$next_address;
+    reg  lane_wx$pop;
+    wire  [17:0] lane_wx$read_data;
     reg  lane_wy$clock;
-    reg  [4:0] lane_wy$read_address;
-    wire  [17:0] lane_wy$read_data;
     reg  [4:0] lane_wy$write_address;
     reg  [17:0] lane_wy$write_data;
     reg  lane_wy$write_enable;
+    reg  [4:0] lane_wy$head_address;
+    reg  [4:0] lane_wy$next_address;
+    reg  lane_wy$pop;
+    wire  [17:0] lane_wy$read_data;
     reg  full$d;
     wire  full$q;
     reg  full$clock;
@@ -6496,6 +6751,21 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  outside8$d;
     wire  outside8$q;
     reg  outside8$clock;
+    reg  pass9$d;
+    wire  pass9$q;
+    reg  pass9$clock;
+    reg  backward9$d;
+    wire  backward9$q;
+    reg  backward9$clock;
+    reg  back_facing9$d;
+    wire  back_facing9$q;
+    reg  back_facing9$clock;
+    reg  outside9$d;
+    wire  outside9$q;
+    reg  outside9$clock;
+    reg  near9$d;
+    wire  near9$q;
+    reg  near9$clock;
     reg  divider$clock;
     reg  [31:0] divider$rx;
     reg  [31:0] divider$ry;
@@ -6539,7 +6809,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [4:0] fill_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_inc2;
-    reg  [4:0] rd_addr;
     reg  [17:0] ext_ox;
     reg  [17:0] ext_oy;
     reg  [17:0] ext_ax;
@@ -6572,13 +6841,15 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [31:0] ha;
     reg  [31:0] hb;
     reg  [31:0] k2;
-    reg  [31:0] ze0;
-    reg  [31:0] ze1;
+    reg  z16_e;
+    reg  z8hi_e;
+    reg  z8mid_e;
+    reg  [31:0] ze_lo;
+    reg  [31:0] ze_hi;
+    reg  [5:0] ce_lo;
+    reg  [5:0] ce_hi;
     reg  [31:0] ze2;
-    reg  [5:0] ce16_e;
-    reg  [5:0] ce8_e;
-    reg  [15:0] top16_e;
-    reg  [7:0] top8_e;
+    reg  [5:0] ce_e;
     reg  [31:0] ze3;
     reg  [31:0] ze4;
     reg  [31:0] ze5;
@@ -6596,6 +6867,10 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
     reg  [5:0] sh;
+    reg  [17:0] n_hi;
+    reg  [17:0] e_hi;
+    reg  e_lo_nz;
+    reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
     reg  is_outside;
@@ -6652,67 +6927,83 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     );
     processing_element$screener$lane_id lane_id(
         .clock(lane_id$clock),
-        .read_address(lane_id$read_address),
-        .read_data(lane_id$read_data),
         .write_address(lane_id$write_address),
         .write_data(lane_id$write_data),
-        .write_enable(lane_id$write_enable)
+        .write_enable(lane_id$write_enable),
+        .head_address(lane_id$head_address),
+        .next_address(lane_id$next_address),
+        .pop(lane_id$pop),
+        .read_data(lane_id$read_data)
     );
     processing_element$screener$lane_ax lane_ax(
         .clock(lane_ax$clock),
-        .read_address(lane_ax$read_address),
-        .read_data(lane_ax$read_data),
         .write_address(lane_ax$write_address),
         .write_data(lane_ax$write_data),
-        .write_enable(lane_ax$write_enable)
+        .write_enable(lane_ax$write_enable),
+        .head_address(lane_ax$head_address),
+        .next_address(lane_ax$next_address),
+        .pop(lane_ax$pop),
+        .read_data(lane_ax$read_data)
     );
     processing_element$screener$lane_ay lane_ay(
         .clock(lane_ay$clock),
-        .read_address(lane_ay$read_address),
-        .read_data(lane_ay$read_data),
         .write_address(lane_ay$write_address),
         .write_data(lane_ay$write_data),
-        .write_enable(lane_ay$write_enable)
+        .write_enable(lane_ay$write_enable),
+        .head_address(lane_ay$head_address),
+        .next_address(lane_ay$next_address),
+        .pop(lane_ay$pop),
+        .read_data(lane_ay$read_data)
     );
     processing_element$screener$lane_bx lane_bx(
         .clock(lane_bx$clock),
-        .read_address(lane_bx$read_address),
-        .read_data(lane_bx$read_data),
         .write_address(lane_bx$write_address),
         .write_data(lane_bx$write_data),
-        .write_enable(lane_bx$write_enable)
+        .write_enable(lane_bx$write_enable),
+        .head_address(lane_bx$head_address),
+        .next_address(lane_bx$next_address),
+        .pop(lane_bx$pop),
+        .read_data(lane_bx$read_data)
     );
     processing_element$screener$lane_by lane_by(
         .clock(lane_by$clock),
-        .read_address(lane_by$read_address),
-        .read_data(lane_by$read_data),
         .write_address(lane_by$write_address),
         .write_data(lane_by$write_data),
-        .write_enable(lane_by$write_enable)
+        .write_enable(lane_by$write_enable),
+        .head_address(lane_by$head_address),
+        .next_address(lane_by$next_address),
+        .pop(lane_by$pop),
+        .read_data(lane_by$read_data)
     );
     processing_element$screener$lane_sh lane_sh(
         .clock(lane_sh$clock),
-        .read_address(lane_sh$read_address),
-        .read_data(lane_sh$read_data),
         .write_address(lane_sh$write_address),
         .write_data(lane_sh$write_data),
-        .write_enable(lane_sh$write_enable)
+        .write_enable(lane_sh$write_enable),
+        .head_address(lane_sh$head_address),
+        .next_address(lane_sh$next_address),
+        .pop(lane_sh$pop),
+        .read_data(lane_sh$read_data)
     );
     processing_element$screener$lane_wx lane_wx(
         .clock(lane_wx$clock),
-        .read_address(lane_wx$read_address),
-        .read_data(lane_wx$read_data),
         .write_address(lane_wx$write_address),
         .write_data(lane_wx$write_data),
-        .write_enable(lane_wx$write_enable)
+        .write_enable(lane_wx$write_enable),
+        .head_address(lane_wx$head_address),
+        .next_address(lane_wx$next_address),
+        .pop(lane_wx$pop),
+        .read_data(lane_wx$read_data)
     );
     processing_element$screener$lane_wy lane_wy(
         .clock(lane_wy$clock),
-        .read_address(lane_wy$read_address),
-        .read_data(lane_wy$read_data),
         .write_address(lane_wy$write_address),
         .write_data(lane_wy$write_data),
-        .write_enable(lane_wy$write_enable)
+        .write_enable(lane_wy$write_enable),
+        .head_address(lane_wy$head_address),
+        .next_address(lane_wy$next_address),
+        .pop(lane_wy$pop),
+        .read_data(lane_wy$read_data)
     );
     processing_element$screener$full full(
         .d(full$d),
@@ -7369,6 +7660,31 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(outside8$q),
         .clock(outside8$clock)
     );
+    processing_element$screener$pass9 pass9(
+        .d(pass9$d),
+        .q(pass9$q),
+        .clock(pass9$clock)
+    );
+    processing_element$screener$backward9 backward9(
+        .d(backward9$d),
+        .q(backward9$q),
+        .clock(backward9$clock)
+    );
+    processing_element$screener$back_facing9 back_facing9(
+        .d(back_facing9$d),
+        .q(back_facing9$q),
+        .clock(back_facing9$clock)
+    );
+    processing_element$screener$outside9 outside9(
+        .d(outside9$d),
+        .q(outside9$q),
+        .clock(outside9$clock)
+    );
+    processing_element$screener$near9 near9(
+        .d(near9$d),
+        .q(near9$q),
+        .clock(near9$clock)
+    );
     processing_element$screener$divider divider(
         .clock(divider$clock),
         .rx(divider$rx),
@@ -7535,6 +7851,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
+        pass9$clock = clock;
+        backward9$clock = clock;
+        back_facing9$clock = clock;
+        outside9$clock = clock;
+        near9$clock = clock;
         c_passed$clock = clock;
         c_backward$clock = clock;
         c_back_facing$clock = clock;
@@ -7666,6 +7987,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
+        pass9$d = pass9$q;
+        backward9$d = backward9$q;
+        back_facing9$d = back_facing9$q;
+        outside9$d = outside9$q;
+        near9$d = near9$q;
         c_passed$d = c_passed$q;
         c_backward$d = c_backward$q;
         c_back_facing$d = c_back_facing$q;
@@ -7832,20 +8158,26 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
         norm_n5$d = zn5;
         k2 = k5$q << sh1;
-        ze0 = k2;
-        top16_e = ze0[(32'h10)+:(16)];
-        ze1 = ze0;
-        ce16_e = zero6;
-        if (top16_e == zero16) begin
-            ze1 = ze0 << sh16;
-            ce16_e = c16_6;
+        z16_e = k2[(32'h10)+:(16)] == zero16;
+        z8hi_e = k2[(32'h18)+:(8)] == zero8;
+        z8mid_e = k2[(32'h8)+:(8)] == zero8;
+        ze_hi = k2;
+        ce_hi = zero6;
+        if (z8hi_e) begin
+            ze_hi = k2 << sh8;
+            ce_hi = c8_6;
         end
-        top8_e = ze1[(32'h18)+:(8)];
-        ze2 = ze1;
-        ce8_e = zero6;
-        if (top8_e == zero8) begin
-            ze2 = ze1 << sh8;
-            ce8_e = c8_6;
+        ze_lo = k2 << sh16;
+        ce_lo = c16_6;
+        if (z8mid_e) begin
+            ze_lo = k2 << sh24;
+            ce_lo = c24_6;
+        end
+        ze2 = ze_hi;
+        ce_e = ce_hi;
+        if (z16_e) begin
+            ze2 = ze_lo;
+            ce_e = ce_lo;
         end
         ha = p_nax5$q + p_nay5$q;
         hb = p_nbx5$q + p_nby5$q;
@@ -7869,7 +8201,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         hb6$d = hb;
         clz_n6$d = clz_n5$q;
         norm_n6$d = norm_n5$q;
-        clz_e6$d = ce16_e | ce8_e;
+        clz_e6$d = ce_e;
         norm_e6$d = ze2;
         top4_e = norm_e6$q[(32'h1c)+:(4)];
         ze3 = norm_e6$q;
@@ -7920,8 +8252,12 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
         s0_m1 = clz_n7$q + ~clz_e7$q;
+        n_hi = norm_n7$q[(32'he)+:(18)];
+        e_hi = norm_e7$q[(32'he)+:(18)];
+        e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
+        n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         sh = s0_m1;
-        if (norm_n7$q < norm_e7$q) begin
+        if (n_below_e) begin
             sh = s0;
         end
         side_f_x = side_f7$q ^ msb32;
@@ -7946,22 +8282,25 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
-        if (v8$q) begin
-            if (is_pass) begin
-                c_passed$d = c_passed$q + one32;
-            end
-            if (backward8$q) begin
-                c_backward$d = c_backward$q + one32;
-            end
-            if (back_facing8$q) begin
-                c_back_facing$d = c_back_facing$q + one32;
-            end
-            if (outside8$q) begin
-                c_outside$d = c_outside$q + one32;
-            end
-            if (is_near) begin
-                c_near$d = c_near$q + one32;
-            end
+        pass9$d = v8$q & is_pass;
+        backward9$d = v8$q & backward8$q;
+        back_facing9$d = v8$q & back_facing8$q;
+        outside9$d = v8$q & outside8$q;
+        near9$d = v8$q & is_near;
+        if (pass9$q) begin
+            c_passed$d = c_passed$q + one32;
+        end
+        if (backward9$q) begin
+            c_backward$d = c_backward$q + one32;
+        end
+        if (back_facing9$q) begin
+            c_back_facing$d = c_back_facing$q + one32;
+        end
+        if (outside9$q) begin
+            c_outside$d = c_outside$q + one32;
+        end
+        if (near9$q) begin
+            c_near$d = c_near$q + one32;
         end
         passed = c_passed$q;
         backward = c_backward$q;
@@ -8059,22 +8398,36 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         rd_inc = rd_inc_x$q ^ one5;
         rd_inc2 = rd_inc + one5;
         done_dec = done$q - one6;
-        rd_addr = rd_ptr$q;
         done_left = done$q;
         if (pop) begin
-            rd_addr = rd_inc;
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one5;
             done_left = done_dec;
         end
-        lane_id$read_address = rd_addr;
-        lane_ax$read_address = rd_addr;
-        lane_ay$read_address = rd_addr;
-        lane_bx$read_address = rd_addr;
-        lane_by$read_address = rd_addr;
-        lane_sh$read_address = rd_addr;
-        lane_wx$read_address = rd_addr;
-        lane_wy$read_address = rd_addr;
+        lane_id$head_address = rd_ptr$q;
+        lane_id$next_address = rd_inc;
+        lane_id$pop = pop;
+        lane_ax$head_address = rd_ptr$q;
+        lane_ax$next_address = rd_inc;
+        lane_ax$pop = pop;
+        lane_ay$head_address = rd_ptr$q;
+        lane_ay$next_address = rd_inc;
+        lane_ay$pop = pop;
+        lane_bx$head_address = rd_ptr$q;
+        lane_bx$next_address = rd_inc;
+        lane_bx$pop = pop;
+        lane_by$head_address = rd_ptr$q;
+        lane_by$next_address = rd_inc;
+        lane_by$pop = pop;
+        lane_sh$head_address = rd_ptr$q;
+        lane_sh$next_address = rd_inc;
+        lane_sh$pop = pop;
+        lane_wx$head_address = rd_ptr$q;
+        lane_wx$next_address = rd_inc;
+        lane_wx$pop = pop;
+        lane_wy$head_address = rd_ptr$q;
+        lane_wy$next_address = rd_inc;
+        lane_wy$pop = pop;
         head_valid$d = done_left != zero6;
         out_valid = head_valid$q;
         out_id = lane_id$read_data;
@@ -8717,6 +9070,25 @@ module processing_element$screener$back_facing8(d,q,clock);
 endmodule // processing_element$screener$back_facing8
 
 
+module processing_element$screener$back_facing9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$back_facing9
+
+
 module processing_element$screener$backward7(d,q,clock);
     
     // Module arguments
@@ -8753,6 +9125,25 @@ module processing_element$screener$backward8(d,q,clock);
     end
           
 endmodule // processing_element$screener$backward8
+
+
+module processing_element$screener$backward9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$backward9
 
 
 module processing_element$screener$bx1(d,q,clock);
@@ -9762,211 +10153,291 @@ module processing_element$screener$k_nonpos6(d,q,clock);
 endmodule // processing_element$screener$k_nonpos6
 
 
-module processing_element$screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_ax
 
 
-module processing_element$screener$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_ay
 
 
-module processing_element$screener$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_bx
 
 
-module processing_element$screener$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_by
 
 
-module processing_element$screener$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_id(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [15:0] read_data;
     input wire  [4:0] write_address;
     input wire  [15:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [15:0] read_data;
     
     // Update code (custom)
     reg [15:0] mem [0:31];
+    reg [15:0] head_r;
+    reg [15:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 16'd0;
-       read_data = 16'd0;
+       head_r = 16'd0;
+       next_r = 16'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_id
 
 
-module processing_element$screener$lane_sh(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_sh(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [6:0] read_data;
     input wire  [4:0] write_address;
     input wire  [6:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [6:0] read_data;
     
     // Update code (custom)
     reg [6:0] mem [0:31];
+    reg [6:0] head_r;
+    reg [6:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 7'd0;
-       read_data = 7'd0;
+       head_r = 7'd0;
+       next_r = 7'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_sh
 
 
-module processing_element$screener$lane_wx(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_wx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_wx
 
 
-module processing_element$screener$lane_wy(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$screener$lane_wy(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$screener$lane_wy
 
 
@@ -10870,6 +11341,25 @@ module processing_element$screener$m_nby(clock,a,b,p);
 endmodule // processing_element$screener$m_nby
 
 
+module processing_element$screener$near9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$near9
+
+
 module processing_element$screener$negx2(d,q,clock);
     
     // Module arguments
@@ -11326,6 +11816,25 @@ module processing_element$screener$outside8(d,q,clock);
 endmodule // processing_element$screener$outside8
 
 
+module processing_element$screener$outside9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$outside9
+
+
 module processing_element$screener$p_abx4(d,q,clock);
     
     // Module arguments
@@ -11514,6 +12023,25 @@ module processing_element$screener$p_nby5(d,q,clock);
     end
           
 endmodule // processing_element$screener$p_nby5
+
+
+module processing_element$screener$pass9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$pass9
 
 
 module processing_element$screener$rd_inc_x(d,q,clock);
@@ -11801,56 +12329,40 @@ module processing_element$tag_count(d,q,clock);
 endmodule // processing_element$tag_count
 
 
-module processing_element$tags(clock,read_address,read_data,write_address,write_data,write_enable);
+module processing_element$tags(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [5:0] read_address;
-    output reg  [21:0] read_data;
     input wire  [5:0] write_address;
     input wire  [21:0] write_data;
     input wire  write_enable;
+    input wire  [5:0] head_address;
+    input wire  [5:0] next_address;
+    input wire  pop;
+    output reg  [21:0] read_data;
     
     // Update code (custom)
     reg [21:0] mem [0:63];
+    reg [21:0] head_r;
+    reg [21:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
-       read_data = 22'd0;
+       head_r = 22'd0;
+       next_r = 22'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$tags
-
-
-module processing_element$tags_next(clock,read_address,read_data,write_address,write_data,write_enable);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [5:0] read_address;
-    output reg  [21:0] read_data;
-    input wire  [5:0] write_address;
-    input wire  [21:0] write_data;
-    input wire  write_enable;
-    
-    // Update code (custom)
-    reg [21:0] mem [0:63];
-    integer i;
-    initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
-       read_data = 22'd0;
-    end
-    always @(posedge clock) begin
-       read_data <= mem[read_address];
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-endmodule // processing_element$tags_next
 
 
 module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
@@ -13516,6 +14028,7 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        p_retire = 1'b0;
        p_sh = 6'd0;
        p_id = 16'd0;
+       full = 1'b0;
        cur = 10'd0;
        v1 = 1'b0;
        tag1 = 32'd0;
@@ -13533,7 +14046,6 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        o_wy = 18'd0;
     end
     always @(*) begin
-       full = remaining > 11'd1;
        busy = issue || v1;
        kill = issue && p_retire;
     end
@@ -13546,8 +14058,9 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        o_by <= p_by;
        o_wx <= p_wx;
        o_wy <= p_wy;
-       if (patch_valid && remaining <= 11'd1) begin
+       if (patch_valid && !full) begin
           remaining <= patch_count;
+          full <= patch_count[10:1] != 10'd0;
           cur <= patch_first;
           p_ax <= patch_ax;
           p_ay <= patch_ay;
@@ -13560,6 +14073,7 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
           p_retire <= patch_retire;
        end else if (issue) begin
           remaining <= remaining - 11'd1;
+          full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
           cur <= cur + 10'd1;
        end
     end

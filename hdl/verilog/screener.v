@@ -50,10 +50,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  thr_f = 32'h7fffff00;
     localparam  thr_l = 32'h80000100;
     localparam  zero16 = 16'h0;
+    localparam  zero14 = 14'b0;
     localparam  zero8 = 8'h0;
     localparam  zero4 = 4'h0;
     localparam  zero2 = 2'b0;
     localparam  zero3 = 3'b0;
+    localparam  sh24 = 32'h18;
     localparam  sh16 = 32'h10;
     localparam  sh8 = 32'h8;
     localparam  sh4 = 32'h4;
@@ -62,6 +64,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  sh3 = 32'h3;
     localparam  sh1_3 = 3'b1;
     localparam  sh2_3 = 3'b10;
+    localparam  c24_6 = 6'b11000;
     localparam  c16_6 = 6'b10000;
     localparam  c8_6 = 6'b1000;
     localparam  c4_6 = 6'b100;
@@ -97,53 +100,69 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     wire  head_valid$q;
     reg  head_valid$clock;
     reg  lane_id$clock;
-    reg  [4:0] lane_id$read_address;
-    wire  [15:0] lane_id$read_data;
     reg  [4:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
     reg  lane_id$write_enable;
+    reg  [4:0] lane_id$head_address;
+    reg  [4:0] lane_id$next_address;
+    reg  lane_id$pop;
+    wire  [15:0] lane_id$read_data;
     reg  lane_ax$clock;
-    reg  [4:0] lane_ax$read_address;
-    wire  [17:0] lane_ax$read_data;
     reg  [4:0] lane_ax$write_address;
     reg  [17:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
+    reg  [4:0] lane_ax$head_address;
+    reg  [4:0] lane_ax$next_address;
+    reg  lane_ax$pop;
+    wire  [17:0] lane_ax$read_data;
     reg  lane_ay$clock;
-    reg  [4:0] lane_ay$read_address;
-    wire  [17:0] lane_ay$read_data;
     reg  [4:0] lane_ay$write_address;
     reg  [17:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
+    reg  [4:0] lane_ay$head_address;
+    reg  [4:0] lane_ay$next_address;
+    reg  lane_ay$pop;
+    wire  [17:0] lane_ay$read_data;
     reg  lane_bx$clock;
-    reg  [4:0] lane_bx$read_address;
-    wire  [17:0] lane_bx$read_data;
     reg  [4:0] lane_bx$write_address;
     reg  [17:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
+    reg  [4:0] lane_bx$head_address;
+    reg  [4:0] lane_bx$next_address;
+    reg  lane_bx$pop;
+    wire  [17:0] lane_bx$read_data;
     reg  lane_by$clock;
-    reg  [4:0] lane_by$read_address;
-    wire  [17:0] lane_by$read_data;
     reg  [4:0] lane_by$write_address;
     reg  [17:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  [4:0] lane_by$head_address;
+    reg  [4:0] lane_by$next_address;
+    reg  lane_by$pop;
+    wire  [17:0] lane_by$read_data;
     reg  lane_sh$clock;
-    reg  [4:0] lane_sh$read_address;
-    wire  [6:0] lane_sh$read_data;
     reg  [4:0] lane_sh$write_address;
     reg  [6:0] lane_sh$write_data;
     reg  lane_sh$write_enable;
+    reg  [4:0] lane_sh$head_address;
+    reg  [4:0] lane_sh$next_address;
+    reg  lane_sh$pop;
+    wire  [6:0] lane_sh$read_data;
     reg  lane_wx$clock;
-    reg  [4:0] lane_wx$read_address;
-    wire  [17:0] lane_wx$read_data;
     reg  [4:0] lane_wx$write_address;
     reg  [17:0] lane_wx$write_data;
     reg  lane_wx$write_enable;
+    reg  [4:0] lane_wx$head_address;
+    reg  [4:0] lane_wx$next_address;
+    reg  lane_wx$pop;
+    wire  [17:0] lane_wx$read_data;
     reg  lane_wy$clock;
-    reg  [4:0] lane_wy$read_address;
-    wire  [17:0] lane_wy$read_data;
     reg  [4:0] lane_wy$write_address;
     reg  [17:0] lane_wy$write_data;
     reg  lane_wy$write_enable;
+    reg  [4:0] lane_wy$head_address;
+    reg  [4:0] lane_wy$next_address;
+    reg  lane_wy$pop;
+    wire  [17:0] lane_wy$read_data;
     reg  full$d;
     wire  full$q;
     reg  full$clock;
@@ -541,6 +560,21 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  outside8$d;
     wire  outside8$q;
     reg  outside8$clock;
+    reg  pass9$d;
+    wire  pass9$q;
+    reg  pass9$clock;
+    reg  backward9$d;
+    wire  backward9$q;
+    reg  backward9$clock;
+    reg  back_facing9$d;
+    wire  back_facing9$q;
+    reg  back_facing9$clock;
+    reg  outside9$d;
+    wire  outside9$q;
+    reg  outside9$clock;
+    reg  near9$d;
+    wire  near9$q;
+    reg  near9$clock;
     reg  divider$clock;
     reg  [31:0] divider$rx;
     reg  [31:0] divider$ry;
@@ -584,7 +618,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [4:0] fill_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_inc2;
-    reg  [4:0] rd_addr;
     reg  [17:0] ext_ox;
     reg  [17:0] ext_oy;
     reg  [17:0] ext_ax;
@@ -617,13 +650,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] ha;
     reg  [31:0] hb;
     reg  [31:0] k2;
-    reg  [31:0] ze0;
-    reg  [31:0] ze1;
+    reg  z16_e;
+    reg  z8hi_e;
+    reg  z8mid_e;
+    reg  [31:0] ze_lo;
+    reg  [31:0] ze_hi;
+    reg  [5:0] ce_lo;
+    reg  [5:0] ce_hi;
     reg  [31:0] ze2;
-    reg  [5:0] ce16_e;
-    reg  [5:0] ce8_e;
-    reg  [15:0] top16_e;
-    reg  [7:0] top8_e;
+    reg  [5:0] ce_e;
     reg  [31:0] ze3;
     reg  [31:0] ze4;
     reg  [31:0] ze5;
@@ -641,6 +676,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
     reg  [5:0] sh;
+    reg  [17:0] n_hi;
+    reg  [17:0] e_hi;
+    reg  e_lo_nz;
+    reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
     reg  is_outside;
@@ -697,67 +736,83 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     );
     screener$lane_id lane_id(
         .clock(lane_id$clock),
-        .read_address(lane_id$read_address),
-        .read_data(lane_id$read_data),
         .write_address(lane_id$write_address),
         .write_data(lane_id$write_data),
-        .write_enable(lane_id$write_enable)
+        .write_enable(lane_id$write_enable),
+        .head_address(lane_id$head_address),
+        .next_address(lane_id$next_address),
+        .pop(lane_id$pop),
+        .read_data(lane_id$read_data)
     );
     screener$lane_ax lane_ax(
         .clock(lane_ax$clock),
-        .read_address(lane_ax$read_address),
-        .read_data(lane_ax$read_data),
         .write_address(lane_ax$write_address),
         .write_data(lane_ax$write_data),
-        .write_enable(lane_ax$write_enable)
+        .write_enable(lane_ax$write_enable),
+        .head_address(lane_ax$head_address),
+        .next_address(lane_ax$next_address),
+        .pop(lane_ax$pop),
+        .read_data(lane_ax$read_data)
     );
     screener$lane_ay lane_ay(
         .clock(lane_ay$clock),
-        .read_address(lane_ay$read_address),
-        .read_data(lane_ay$read_data),
         .write_address(lane_ay$write_address),
         .write_data(lane_ay$write_data),
-        .write_enable(lane_ay$write_enable)
+        .write_enable(lane_ay$write_enable),
+        .head_address(lane_ay$head_address),
+        .next_address(lane_ay$next_address),
+        .pop(lane_ay$pop),
+        .read_data(lane_ay$read_data)
     );
     screener$lane_bx lane_bx(
         .clock(lane_bx$clock),
-        .read_address(lane_bx$read_address),
-        .read_data(lane_bx$read_data),
         .write_address(lane_bx$write_address),
         .write_data(lane_bx$write_data),
-        .write_enable(lane_bx$write_enable)
+        .write_enable(lane_bx$write_enable),
+        .head_address(lane_bx$head_address),
+        .next_address(lane_bx$next_address),
+        .pop(lane_bx$pop),
+        .read_data(lane_bx$read_data)
     );
     screener$lane_by lane_by(
         .clock(lane_by$clock),
-        .read_address(lane_by$read_address),
-        .read_data(lane_by$read_data),
         .write_address(lane_by$write_address),
         .write_data(lane_by$write_data),
-        .write_enable(lane_by$write_enable)
+        .write_enable(lane_by$write_enable),
+        .head_address(lane_by$head_address),
+        .next_address(lane_by$next_address),
+        .pop(lane_by$pop),
+        .read_data(lane_by$read_data)
     );
     screener$lane_sh lane_sh(
         .clock(lane_sh$clock),
-        .read_address(lane_sh$read_address),
-        .read_data(lane_sh$read_data),
         .write_address(lane_sh$write_address),
         .write_data(lane_sh$write_data),
-        .write_enable(lane_sh$write_enable)
+        .write_enable(lane_sh$write_enable),
+        .head_address(lane_sh$head_address),
+        .next_address(lane_sh$next_address),
+        .pop(lane_sh$pop),
+        .read_data(lane_sh$read_data)
     );
     screener$lane_wx lane_wx(
         .clock(lane_wx$clock),
-        .read_address(lane_wx$read_address),
-        .read_data(lane_wx$read_data),
         .write_address(lane_wx$write_address),
         .write_data(lane_wx$write_data),
-        .write_enable(lane_wx$write_enable)
+        .write_enable(lane_wx$write_enable),
+        .head_address(lane_wx$head_address),
+        .next_address(lane_wx$next_address),
+        .pop(lane_wx$pop),
+        .read_data(lane_wx$read_data)
     );
     screener$lane_wy lane_wy(
         .clock(lane_wy$clock),
-        .read_address(lane_wy$read_address),
-        .read_data(lane_wy$read_data),
         .write_address(lane_wy$write_address),
         .write_data(lane_wy$write_data),
-        .write_enable(lane_wy$write_enable)
+        .write_enable(lane_wy$write_enable),
+        .head_address(lane_wy$head_address),
+        .next_address(lane_wy$next_address),
+        .pop(lane_wy$pop),
+        .read_data(lane_wy$read_data)
     );
     screener$full full(
         .d(full$d),
@@ -1414,6 +1469,31 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(outside8$q),
         .clock(outside8$clock)
     );
+    screener$pass9 pass9(
+        .d(pass9$d),
+        .q(pass9$q),
+        .clock(pass9$clock)
+    );
+    screener$backward9 backward9(
+        .d(backward9$d),
+        .q(backward9$q),
+        .clock(backward9$clock)
+    );
+    screener$back_facing9 back_facing9(
+        .d(back_facing9$d),
+        .q(back_facing9$q),
+        .clock(back_facing9$clock)
+    );
+    screener$outside9 outside9(
+        .d(outside9$d),
+        .q(outside9$q),
+        .clock(outside9$clock)
+    );
+    screener$near9 near9(
+        .d(near9$d),
+        .q(near9$q),
+        .clock(near9$clock)
+    );
     screener$divider divider(
         .clock(divider$clock),
         .rx(divider$rx),
@@ -1580,6 +1660,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
+        pass9$clock = clock;
+        backward9$clock = clock;
+        back_facing9$clock = clock;
+        outside9$clock = clock;
+        near9$clock = clock;
         c_passed$clock = clock;
         c_backward$clock = clock;
         c_back_facing$clock = clock;
@@ -1711,6 +1796,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
+        pass9$d = pass9$q;
+        backward9$d = backward9$q;
+        back_facing9$d = back_facing9$q;
+        outside9$d = outside9$q;
+        near9$d = near9$q;
         c_passed$d = c_passed$q;
         c_backward$d = c_backward$q;
         c_back_facing$d = c_back_facing$q;
@@ -1877,20 +1967,26 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
         norm_n5$d = zn5;
         k2 = k5$q << sh1;
-        ze0 = k2;
-        top16_e = ze0[(32'h10)+:(16)];
-        ze1 = ze0;
-        ce16_e = zero6;
-        if (top16_e == zero16) begin
-            ze1 = ze0 << sh16;
-            ce16_e = c16_6;
+        z16_e = k2[(32'h10)+:(16)] == zero16;
+        z8hi_e = k2[(32'h18)+:(8)] == zero8;
+        z8mid_e = k2[(32'h8)+:(8)] == zero8;
+        ze_hi = k2;
+        ce_hi = zero6;
+        if (z8hi_e) begin
+            ze_hi = k2 << sh8;
+            ce_hi = c8_6;
         end
-        top8_e = ze1[(32'h18)+:(8)];
-        ze2 = ze1;
-        ce8_e = zero6;
-        if (top8_e == zero8) begin
-            ze2 = ze1 << sh8;
-            ce8_e = c8_6;
+        ze_lo = k2 << sh16;
+        ce_lo = c16_6;
+        if (z8mid_e) begin
+            ze_lo = k2 << sh24;
+            ce_lo = c24_6;
+        end
+        ze2 = ze_hi;
+        ce_e = ce_hi;
+        if (z16_e) begin
+            ze2 = ze_lo;
+            ce_e = ce_lo;
         end
         ha = p_nax5$q + p_nay5$q;
         hb = p_nbx5$q + p_nby5$q;
@@ -1914,7 +2010,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         hb6$d = hb;
         clz_n6$d = clz_n5$q;
         norm_n6$d = norm_n5$q;
-        clz_e6$d = ce16_e | ce8_e;
+        clz_e6$d = ce_e;
         norm_e6$d = ze2;
         top4_e = norm_e6$q[(32'h1c)+:(4)];
         ze3 = norm_e6$q;
@@ -1965,8 +2061,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         side_l7$d = side_l;
         s0 = clz_n7$q - clz_e7$q;
         s0_m1 = clz_n7$q + ~clz_e7$q;
+        n_hi = norm_n7$q[(32'he)+:(18)];
+        e_hi = norm_e7$q[(32'he)+:(18)];
+        e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
+        n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         sh = s0_m1;
-        if (norm_n7$q < norm_e7$q) begin
+        if (n_below_e) begin
             sh = s0;
         end
         side_f_x = side_f7$q ^ msb32;
@@ -1991,22 +2091,25 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
-        if (v8$q) begin
-            if (is_pass) begin
-                c_passed$d = c_passed$q + one32;
-            end
-            if (backward8$q) begin
-                c_backward$d = c_backward$q + one32;
-            end
-            if (back_facing8$q) begin
-                c_back_facing$d = c_back_facing$q + one32;
-            end
-            if (outside8$q) begin
-                c_outside$d = c_outside$q + one32;
-            end
-            if (is_near) begin
-                c_near$d = c_near$q + one32;
-            end
+        pass9$d = v8$q & is_pass;
+        backward9$d = v8$q & backward8$q;
+        back_facing9$d = v8$q & back_facing8$q;
+        outside9$d = v8$q & outside8$q;
+        near9$d = v8$q & is_near;
+        if (pass9$q) begin
+            c_passed$d = c_passed$q + one32;
+        end
+        if (backward9$q) begin
+            c_backward$d = c_backward$q + one32;
+        end
+        if (back_facing9$q) begin
+            c_back_facing$d = c_back_facing$q + one32;
+        end
+        if (outside9$q) begin
+            c_outside$d = c_outside$q + one32;
+        end
+        if (near9$q) begin
+            c_near$d = c_near$q + one32;
         end
         passed = c_passed$q;
         backward = c_backward$q;
@@ -2104,22 +2207,36 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         rd_inc = rd_inc_x$q ^ one5;
         rd_inc2 = rd_inc + one5;
         done_dec = done$q - one6;
-        rd_addr = rd_ptr$q;
         done_left = done$q;
         if (pop) begin
-            rd_addr = rd_inc;
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one5;
             done_left = done_dec;
         end
-        lane_id$read_address = rd_addr;
-        lane_ax$read_address = rd_addr;
-        lane_ay$read_address = rd_addr;
-        lane_bx$read_address = rd_addr;
-        lane_by$read_address = rd_addr;
-        lane_sh$read_address = rd_addr;
-        lane_wx$read_address = rd_addr;
-        lane_wy$read_address = rd_addr;
+        lane_id$head_address = rd_ptr$q;
+        lane_id$next_address = rd_inc;
+        lane_id$pop = pop;
+        lane_ax$head_address = rd_ptr$q;
+        lane_ax$next_address = rd_inc;
+        lane_ax$pop = pop;
+        lane_ay$head_address = rd_ptr$q;
+        lane_ay$next_address = rd_inc;
+        lane_ay$pop = pop;
+        lane_bx$head_address = rd_ptr$q;
+        lane_bx$next_address = rd_inc;
+        lane_bx$pop = pop;
+        lane_by$head_address = rd_ptr$q;
+        lane_by$next_address = rd_inc;
+        lane_by$pop = pop;
+        lane_sh$head_address = rd_ptr$q;
+        lane_sh$next_address = rd_inc;
+        lane_sh$pop = pop;
+        lane_wx$head_address = rd_ptr$q;
+        lane_wx$next_address = rd_inc;
+        lane_wx$pop = pop;
+        lane_wy$head_address = rd_ptr$q;
+        lane_wy$next_address = rd_inc;
+        lane_wy$pop = pop;
         head_valid$d = done_left != zero6;
         out_valid = head_valid$q;
         out_id = lane_id$read_data;
@@ -2762,6 +2879,25 @@ module screener$back_facing8(d,q,clock);
 endmodule // screener$back_facing8
 
 
+module screener$back_facing9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$back_facing9
+
+
 module screener$backward7(d,q,clock);
     
     // Module arguments
@@ -2798,6 +2934,25 @@ module screener$backward8(d,q,clock);
     end
           
 endmodule // screener$backward8
+
+
+module screener$backward9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$backward9
 
 
 module screener$bx1(d,q,clock);
@@ -3807,211 +3962,291 @@ module screener$k_nonpos6(d,q,clock);
 endmodule // screener$k_nonpos6
 
 
-module screener$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_ax
 
 
-module screener$lane_ay(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_ay
 
 
-module screener$lane_bx(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_bx
 
 
-module screener$lane_by(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_by
 
 
-module screener$lane_id(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_id(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [15:0] read_data;
     input wire  [4:0] write_address;
     input wire  [15:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [15:0] read_data;
     
     // Update code (custom)
     reg [15:0] mem [0:31];
+    reg [15:0] head_r;
+    reg [15:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 16'd0;
-       read_data = 16'd0;
+       head_r = 16'd0;
+       next_r = 16'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_id
 
 
-module screener$lane_sh(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_sh(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [6:0] read_data;
     input wire  [4:0] write_address;
     input wire  [6:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [6:0] read_data;
     
     // Update code (custom)
     reg [6:0] mem [0:31];
+    reg [6:0] head_r;
+    reg [6:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 7'd0;
-       read_data = 7'd0;
+       head_r = 7'd0;
+       next_r = 7'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_sh
 
 
-module screener$lane_wx(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_wx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_wx
 
 
-module screener$lane_wy(clock,read_address,read_data,write_address,write_data,write_enable);
+module screener$lane_wy(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  [4:0] read_address;
-    output reg  [17:0] read_data;
     input wire  [4:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
+    input wire  [4:0] head_address;
+    input wire  [4:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
     
     // Update code (custom)
     reg [17:0] mem [0:31];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
     integer i;
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
-       read_data = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
     end
     always @(posedge clock) begin
-       read_data <= mem[read_address];
+       head_r <= mem[head_address];
+       next_r <= mem[next_address];
+       popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
        end
     end
+    always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_wy
 
 
@@ -4915,6 +5150,25 @@ module screener$m_nby(clock,a,b,p);
 endmodule // screener$m_nby
 
 
+module screener$near9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$near9
+
+
 module screener$negx2(d,q,clock);
     
     // Module arguments
@@ -5371,6 +5625,25 @@ module screener$outside8(d,q,clock);
 endmodule // screener$outside8
 
 
+module screener$outside9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$outside9
+
+
 module screener$p_abx4(d,q,clock);
     
     // Module arguments
@@ -5559,6 +5832,25 @@ module screener$p_nby5(d,q,clock);
     end
           
 endmodule // screener$p_nby5
+
+
+module screener$pass9(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$pass9
 
 
 module screener$rd_inc_x(d,q,clock);

@@ -10,11 +10,11 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
 use shelling_hdl::formats::{cross, direction, dot, from_bits, to_bits};
-use shelling_hdl::leaf::{restoring_quotient, PipeDivider, DIV_LATENCY};
+use shelling_hdl::leaf::{restoring_quotient, FifoRam, PipeDivider, DIV_LATENCY};
 use shelling_hdl::screener::model::{
     accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, PatchSetup, Verdict,
 };
-use shelling_hdl::screener::{Screener, DEPTH, LATENCY, VERDICT_LATENCY};
+use shelling_hdl::screener::{Screener, COUNT_LATENCY, DEPTH, LATENCY, VERDICT_LATENCY};
 use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
 
 const COORD_MAX: i32 = (1 << 17) - 1;
@@ -187,7 +187,44 @@ fn corner_segments(rng: &mut ChaCha8Rng) -> Vec<Segment> {
         assert!(in_window);
         out.push(Segment { bundle, patches });
     }
+    out.push(exponent_ties(rng));
     out
+}
+
+/// How `nmax` and `2K` compare once both are normalised to a leading one at bit 31 (the
+/// screener's stage 7): `Some(true)` when they agree in their top 18 bits (all of the
+/// normalised `nmax`) and `2K` has more bits below, `Some(false)` when they are equal, `None`
+/// otherwise.
+fn exponent_tie(nmax: u64, k2: u64) -> Option<bool> {
+    let norm = |v: u64| (v << (v as u32).leading_zeros()) & 0xffff_ffff;
+    let (n, e) = (norm(nmax), norm(k2));
+    (n >> 14 == e >> 14).then_some(e != n)
+}
+
+/// Patches whose exponent hangs on the low bits of `2K`: `2K` and `nmax` agree in their top 18
+/// normalised bits and `2K` has more below them (so `nmax·2^s0 < 2K`). About one random patch
+/// in 2^18 is one, so they are searched for (seeded) among long patches in front of the origin.
+fn exponent_ties(rng: &mut ChaCha8Rng) -> Segment {
+    let o = [0, 65536];
+    let bundle = BundleSetup { origin: o, normal: [65536, 0], first: [0, -65536], last: [0, 65536] };
+    let mut patches = vec![];
+    while patches.len() < 12 {
+        let p = Patch {
+            id: patches.len() as u16,
+            a: [rng.random_range(1..=COORD_MAX), rng.random_range(0..=COORD_MAX)],
+            b: [rng.random_range(1..=COORD_MAX), rng.random_range(0..=COORD_MAX)],
+        };
+        let (a, bb) = ([p.a[0] - o[0], p.a[1] - o[1]], [p.b[0] - o[0], p.b[1] - o[1]]);
+        let k = cross(a, bb) as i64;
+        let nmax = (bb[1] - a[1]).unsigned_abs().max((a[0] - bb[0]).unsigned_abs()) as u64;
+        if k > 0
+            && exponent_tie(nmax, 2 * k as u64) == Some(true)
+            && matches!(screen(&bundle, &p), Verdict::Pass(_))
+        {
+            patches.push(p);
+        }
+    }
+    Segment { bundle, patches }
 }
 
 /// `count` random patches in segments of random bundles, a corner-case batch with each bundle.
@@ -365,7 +402,7 @@ fn assert_coverage(t: Tally, negative_sh: u64, what: &str) {
 
 /// The corner cases the vectors must reach (counted on the model's side).
 fn corner_coverage(segments: &[Segment]) {
-    let mut hits = [0u64; 9];
+    let mut hits = [0u64; 11];
     for seg in segments {
         let bd = &seg.bundle;
         for p in &seg.patches {
@@ -384,10 +421,15 @@ fn corner_coverage(segments: &[Segment]) {
             hits[6] += u64::from(cross(bd.last, a) == 257 && v == Verdict::OutsideSector);
             hits[7] += u64::from(a == bb);
             hits[8] += u64::from(matches!(v, Verdict::Pass(s) if s.sh == -3));
+            let nmax = (bb[1] - a[1]).unsigned_abs().max((a[0] - bb[0]).unsigned_abs()) as u64;
+            let tie = if k > 0 && pass { exponent_tie(nmax, 2 * k as u64) } else { None };
+            hits[9] += u64::from(tie == Some(true));
+            hits[10] += u64::from(tie == Some(false));
         }
     }
     println!(
-        "corner hits (on plane, K = 0, K = 1, first ±256/257, last ±256/257, zero length, sh = -3): {hits:?}"
+        "corner hits (on plane, K = 0, K = 1, first ±256/257, last ±256/257, zero length, sh = -3, \
+         2K above nmax in its low bits only, 2K = nmax normalised): {hits:?}"
     );
     assert!(hits.iter().all(|&h| h > 0), "a corner case is never reached: {hits:?}");
 }
@@ -484,6 +526,15 @@ fn unstalled_run(bundle: &BundleSetup, patches: &[Patch], seed: u64) -> Result<T
     let (mut accepted, mut out) = (vec![], vec![]);
     loop {
         let counted = counters(drv.uut()).0.iter().sum::<u64>();
+        // A patch accepted in cycle a is counted in cycle a + COUNT_LATENCY: the counters show
+        // it from the next cycle on, not earlier.
+        let due = accepted.iter().filter(|&&a| a + COUNT_LATENCY < drv.cycles()).count() as u64;
+        if counted != due {
+            return Err(Error::new(format!(
+                "cycle {}: {counted} patches counted, {due} due (seed {seed:#x})",
+                drv.cycles()
+            )));
+        }
         if counted == patches.len() as u64 && board.matched() == expected.len() {
             break;
         }
@@ -537,10 +588,11 @@ fn passing_and_screened(rng: &mut ChaCha8Rng, bundle: &BundleSetup, each: usize)
 /// cycles 0..N and every patch, passed or screened out, accepted in cycle `a` leaves in cycle
 /// `a + LATENCY`, so the run takes `N + LATENCY` cycles (28): all-pass, all-screened and mixed
 /// streams. The pinned latencies are those the module documentation states (verdict in stage
-/// 8, then the divider's 18 clocks and the FIFO's write and registered read).
+/// 8, counted in stage 9, then the divider's 18 clocks and the FIFO's write and registered
+/// read); every patch is counted exactly `COUNT_LATENCY` cycles after its acceptance.
 #[test]
 fn screener_accepts_one_patch_per_clock_without_backpressure() -> Result<()> {
-    assert_eq!((VERDICT_LATENCY, LATENCY), (8, 28));
+    assert_eq!((VERDICT_LATENCY, COUNT_LATENCY, LATENCY), (8, 9, 28));
     assert_eq!(LATENCY, VERDICT_LATENCY + DIV_LATENCY + 2);
     assert!(DEPTH as u64 > LATENCY, "II = 1 needs a credit for every cycle a patch is held");
     let seed = 0x5c4e_e300u64;
@@ -680,6 +732,79 @@ fn divider_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("pipe_divider");
     let report =
         rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    println!("{report}");
+    Ok(())
+}
+
+/// A bare [`FifoRam`] (the output FIFO's lanes) behind ports, for its own test.
+#[derive(LogicBlock, Default)]
+struct FifoRamBench {
+    clock: Signal<In, Clock>,
+    write_address: Signal<In, Bits<5>>,
+    write_data: Signal<In, Bits<18>>,
+    write_enable: Signal<In, bool>,
+    head_address: Signal<In, Bits<5>>,
+    next_address: Signal<In, Bits<5>>,
+    pop: Signal<In, bool>,
+    read_data: Signal<rust_hdl::prelude::Out, Bits<18>>,
+    ram: FifoRam<18, 5>,
+}
+
+impl Logic for FifoRamBench {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.ram.clock.next = self.clock.val();
+        self.ram.write_address.next = self.write_address.val();
+        self.ram.write_data.next = self.write_data.val();
+        self.ram.write_enable.next = self.write_enable.val();
+        self.ram.head_address.next = self.head_address.val();
+        self.ram.next_address.next = self.next_address.val();
+        self.ram.pop.next = self.pop.val();
+        self.read_data.next = self.ram.read_data.val();
+    }
+}
+
+/// The `FifoRam` leaf: after each edge `read_data` is the word the memory held before that
+/// edge's write at `next_address` if `pop` was high, else at `head_address` (zero at power-up),
+/// on random traffic over 32 words (reads of the word being written included); its Verilog
+/// (two read registers and a registered pop) replays the recorded run bit-exactly under Icarus.
+#[test]
+fn fifo_ram_model_and_verilog_agree() -> Result<()> {
+    let seed = 0xf1f0;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut drv = Driver::with_clock(FifoRamBench::default(), |b| &mut b.clock)?;
+    drv.record_ports()?;
+    let mut mem = [0u64; 32];
+    let mut same = 0;
+    for cycle in 0..2000 {
+        let head = rng.random_range(0..32u64);
+        let next = rng.random_range(0..32u64);
+        let pop = rng.random_bool(0.5);
+        let we = rng.random_bool(0.6);
+        let wa = rng.random_range(0..32u64);
+        let wd = rng.random_range(0..1u64 << 18);
+        drv.cycle(|b| {
+            b.write_address.next = wa.into();
+            b.write_data.next = wd.into();
+            b.write_enable.next = we;
+            b.head_address.next = head.into();
+            b.next_address.next = next.into();
+            b.pop.next = pop;
+        })?;
+        let read = if pop { next } else { head };
+        same += usize::from(we && wa == read);
+        let want = mem[read as usize];
+        if we {
+            mem[wa as usize] = wd;
+        }
+        let got = drv.uut().read_data.val().to_u64();
+        assert_eq!(got, want, "cycle {cycle}, seed {seed:#x}");
+    }
+    assert!(same > 20, "{same} reads of the word being written");
+    let rec = drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("fifo_ram");
+    let report = rec.replay(drv.uut(), &dir, Simulator::Icarus)?;
+    assert_eq!(report.cycles, rec.cycles());
     println!("{report}");
     Ok(())
 }
