@@ -98,11 +98,11 @@
 //! Resources (`cargo xtask fpga --blocks intersection_unit --families ecp5`: Yosys `synth_ecp5`
 //! with `SHELLING_ECP5`, nextpnr-ecp5 on the LFE5U-85F-6, seed 1): 6 `MULT18X18D` (with their
 //! input and output registers), 6 `DP16KD` (directions 2, live bits 1, keys 2, valid + id 1,
-//! all with the output register), 1186 LUT4s and 1017 flip-flops; 168.4 MHz (critical path
-//! 5.94 ns, 13 logic levels: the sequencer's `remaining` through its decrement and the take
-//! decision to its own clock enable). (Before the registers moved into leaves, the same logic
-//! placed as 1146 LUT4s at 157.4 MHz, its critical path from the `mem_meta` block RAM's output
-//! register to the id comparison `cm_lt`.)
+//! all with the output register), 1183 LUT4s and 1018 flip-flops; 157.4 MHz (critical path
+//! 6.35 ns from the `mem_meta` block RAM's output register to the merge's id comparison
+//! `cm_lt`). Placement moves it by about ±10 MHz from one change to the next: 168.4 MHz before
+//! `patch_ready` became a register (then the sequencer's `remaining` into its own clock enable
+//! was the slowest path), 157.4 MHz also before the registers moved into leaves.
 //!
 //! # Models
 //!

@@ -92,12 +92,11 @@
 //! carry chain, or two or three conditional shifts, between registers; the output FIFO reads
 //! the head and the slot after it every cycle (`rd_ptr + 1` kept in a register), so that
 //! `out_ready` reaches no read address, only the registered choice between the two; the
-//! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers are [`Mul18`]s, on ECP5 `MULT18X18D`s with
-//! their own input and output registers. Measured (`cargo xtask fpga --blocks screener
-//! --families ecp5`) the block reaches 140 MHz (125 before the DSP registers); the slowest paths
-//! left are stage 5's `k` into stage 6's normaliser and stage 8's verdict into the counters'
-//! enables (2 ns of routing in the PE): counting a cycle later, and splitting stage 5, are the
-//! next steps.
+//! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
+//! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
+//! (`cargo xtask fpga --blocks screener --families ecp5`) the block reaches 153.7 MHz (125 before
+//! the DSP registers, 140 before the counting, stage 5, stage 7 and FIFO changes); its slowest
+//! path is stage 7's outside-the-sector compare (6.51 ns).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
