@@ -403,6 +403,7 @@ fn cone_reach(o: Vec2, ds: Vec2, de: Vec2, lo: Vec2, hi: Vec2) -> Option<f64> {
 /// The macro-regions a shell has met. A shell meets a few, so they are kept in a short list
 /// (no scattered stamps to touch); past its capacity the set moves into per-region stamps.
 struct RegionSet {
+    /// The regions met, then [`RegionSet::FREE`] (no region has that id).
     list: [u32; RegionSet::CAP],
     /// Entries of `list` in use; `CAP + 1` once the set lives in the stamps.
     n: usize,
@@ -410,12 +411,14 @@ struct RegionSet {
 
 impl RegionSet {
     const CAP: usize = 16;
+    const FREE: u32 = u32::MAX;
 
     fn new() -> Self {
-        RegionSet { list: [0; Self::CAP], n: 0 }
+        RegionSet { list: [Self::FREE; Self::CAP], n: 0 }
     }
 
     fn clear(&mut self) {
+        self.list = [Self::FREE; Self::CAP];
         self.n = 0;
     }
 
@@ -423,7 +426,9 @@ impl RegionSet {
     #[inline(always)]
     fn insert(&mut self, r: u32, stamps: &mut [u64], tick: u64) -> bool {
         if self.n <= Self::CAP {
-            if self.list[..self.n].contains(&r) {
+            // The whole list, free entries included: a fixed number of comparisons, without a
+            // branch per entry.
+            if self.list.iter().fold(false, |found, &q| found | (q == r)) {
                 return false;
             }
             if self.n < Self::CAP {
