@@ -39,10 +39,11 @@
 //!   are bit sets over the sector (one word for sectors of up to 64 rays). A shell's boundary
 //!   rays, the remaining rays inside a patch's span and the rays to retire come from bit
 //!   operations, not from passes over the sector.
-//! * **Shells beyond the grid**: per sector, [`cone_reach`] bounds the distance to any point of
-//!   the (grown) grid inside the sector's cone. Once a shell's trapezoid keeps farther than that
-//!   from the source, it and every later shell of the sector meet no cell, so they are only
-//!   counted and retire rays, without rasterising (most shells of rays that hit nothing).
+//! * **Shells beyond the grid**: per sector (that gets past its first shell), [`cone_reach`]
+//!   bounds the distance to any point of the (grown) grid inside the sector's cone. Once a
+//!   shell's trapezoid keeps farther than that from the source, it and every later shell of the
+//!   sector meet no cell, so they are only counted and retire rays, without rasterising (most
+//!   shells of rays that hit nothing).
 //! * **Cells**: the trapezoid is rasterised by [`Grid::raster_convex_n`] (the same cells as
 //!   `raster_convex`), and each cell is read from the grid's one-entry scan table
 //!   ([`Grid::scan_cell`]). Within one piece a cell is met once, so cells are stamped only in
@@ -505,22 +506,31 @@ fn trace_bundle<H: HitTest>(
         // all later ones do: `reach` bounds the distance to any point of the grid (grown by the
         // rasteriser's tolerance and more) within the sector's cone, and a shell's trapezoid
         // keeps at least `inner·cos_half ≥ inner·cos_lb` from the source. Such shells skip
-        // rasterising; their bookkeeping is the same as for any shell without patches.
+        // rasterising; their bookkeeping is the same as for any shell without patches. The
+        // first shell keeps no distance from the source: it is rasterised whatever `reach` is
+        // (where the sector's cone misses the grid it meets no cell either way), so `reach` is
+        // only worked out for sectors that get past it.
         let (ds, de) = (bundle.rays[s].dir, bundle.rays[e - 1].dir);
         let cos_lb = if one_piece {
             (0.5 * (1.0 + ds.dot(de))).max(0.0).sqrt()
         } else {
             (std::f64::consts::PI / 8.0).cos()
         } * (1.0 - 1e-9);
-        let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
-        let reach = cone_reach(o, ds, de, lo_box - Vec2::splat(grow), hi_box + Vec2::splat(grow))
-            .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + grow);
+        let mut reach = None;
+        let mut reach = || {
+            *reach.get_or_insert_with(|| {
+                let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
+                cone_reach(o, ds, de, lo_box - Vec2::splat(grow), hi_box + Vec2::splat(grow))
+                    .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + grow)
+            })
+        };
         cur.clear();
         let mut first_adlc: Option<f64> = None;
         let mut r1 = 0.0f64;
         let mut j = 0usize;
         while rays.remaining > 0 && r1 < far {
-            if (r1 - margin).max(0.0) * cos_lb > reach {
+            let keeps = (r1 - margin).max(0.0) * cos_lb;
+            if keeps > 0.0 && keeps > reach() {
                 // This shell and all later ones lie beyond the grid: they meet no cell and no
                 // patch, so each only retires rays (those holding a hit do so at once, as every
                 // hit lies within `reach`) and is recorded as a shell without patches.
