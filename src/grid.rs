@@ -489,18 +489,19 @@ impl Grid {
             return self.spans(edges, iy, n, inv);
         }
         // Clamped into the grid as the scalar body does, and further into [-1, nx], which
-        // keeps every range that is not empty as it is (and every empty one empty).
+        // keeps every range that is not empty as it is (and every empty one empty); the empty
+        // lanes' ranges set to the empty (1, 0).
         let nx = self.nx as f64;
         let ix0 = _mm256_min_pd(_mm256_max_pd(k0, splat(0.0)), splat(nx));
         let ix1 = _mm256_max_pd(_mm256_min_pd(k1, splat(nx - 1.0)), splat(-1.0));
+        let (ix0, ix1) = (_mm256_blendv_pd(ix0, splat(1.0), empty), _mm256_blendv_pd(ix1, splat(0.0), empty));
         let (mut a, mut b) = ([0i32; 4], [0i32; 4]);
         // SAFETY: `a` and `b` hold four `i32` each; unaligned stores.
         unsafe {
             _mm_storeu_si128(a.as_mut_ptr().cast(), _mm256_cvttpd_epi32(ix0));
             _mm_storeu_si128(b.as_mut_ptr().cast(), _mm256_cvttpd_epi32(ix1));
         }
-        let empty = _mm256_movemask_pd(empty);
-        std::array::from_fn(|k| if empty >> k & 1 != 0 { (1, 0) } else { (a[k] as i64, b[k] as i64) })
+        std::array::from_fn(|k| (a[k] as i64, b[k] as i64))
     }
 
     /// The distance along the ray at which it enters the grid, or `None` when it misses.
