@@ -33,7 +33,9 @@
 //! from a one-entry scan table ([`Grid::scan_cell`]). The rasteriser's cell coordinates
 //! `⌊(v − origin) / side⌋` are taken by multiplying with the reciprocal and fall back to the
 //! division wherever the two could differ (a quotient within a few ulps of an integer), so they
-//! are always the division's.
+//! are always the division's. It takes the rows four at a time: on CPUs with AVX the four rows'
+//! extents and cell ranges are computed in the lanes of vectors, each lane by the scalar
+//! body's operations (`Grid::spans_avx`), so the cells are the same on every CPU.
 
 use crate::geom::{Segment, Vec2};
 use crate::scene::Bounds;
@@ -357,20 +359,51 @@ impl Grid {
         self.raster_edges(&edges, row);
     }
 
-    /// The body of the rasterisers: rows of the polygon bounded by `edges`.
+    /// The body of the rasterisers: rows of the polygon bounded by `edges`, four at a time
+    /// ([`Grid::spans`], or [`Grid::spans_avx`] on CPUs with AVX: the same cells).
     #[inline(always)]
     fn raster_edges(&self, edges: &[Edge], mut row: impl FnMut(usize, usize, usize)) {
-        let eps = self.eps;
         let inv = 1.0 / self.cell_size;
         let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
         for e in edges {
-            ymin = ymin.min(e.y0);
-            ymax = ymax.max(e.y1);
+            ymin = min_of(e.y0, ymin);
+            ymax = max_of(e.y1, ymax);
         }
-        let oy = self.origin.y;
+        let (oy, eps) = (self.origin.y, self.eps);
         let iy0 = self.coord_by(ymin - eps, oy, inv).max(0);
         let iy1 = self.coord_by(ymax + eps, oy, inv).min(self.ny as i64 - 1);
-        for iy in iy0..=iy1 {
+        #[cfg(target_arch = "x86_64")]
+        let avx = std::is_x86_feature_detected!("avx");
+        let mut iy = iy0;
+        while iy <= iy1 {
+            let n = (iy1 - iy + 1).min(4) as usize;
+            #[cfg(target_arch = "x86_64")]
+            // SAFETY: the CPU has AVX (checked above).
+            let spans = if avx {
+                unsafe { self.spans_avx(edges, iy, n, inv) }
+            } else {
+                self.spans(edges, iy, n, inv)
+            };
+            #[cfg(not(target_arch = "x86_64"))]
+            let spans = self.spans(edges, iy, n, inv);
+            for (k, &(ix0, ix1)) in spans[..n].iter().enumerate() {
+                if ix0 <= ix1 {
+                    row((iy + k as i64) as usize, ix0 as usize, ix1 as usize);
+                }
+            }
+            iy += 4;
+        }
+    }
+
+    /// The cells that rows `iy..iy + n` (`n` ≤ 4) of the polygon bounded by `edges` meet: for
+    /// each row the inclusive range `(ix0, ix1)`, which is empty (`ix0 > ix1`) when the row
+    /// meets no cell.
+    #[inline(always)]
+    fn spans(&self, edges: &[Edge], iy: i64, n: usize, inv: f64) -> [(i64, i64); 4] {
+        let (oy, eps) = (self.origin.y, self.eps);
+        let mut spans = [(1, 0); 4];
+        for (k, span) in spans.iter_mut().enumerate().take(n) {
+            let iy = iy + k as i64;
             let lo = oy + iy as f64 * self.cell_size - eps;
             let hi = oy + (iy + 1) as f64 * self.cell_size + eps;
             // The x-extent of the polygon within the strip lo ≤ y ≤ hi: the extreme x of a
@@ -381,22 +414,94 @@ impl Grid {
                     continue;
                 }
                 let (xa, xb) = if y1 > y0 {
-                    (x0 + (y0.max(lo) - y0) * slope, x0 + (y1.min(hi) - y0) * slope)
+                    (x0 + (max_of(y0, lo) - y0) * slope, x0 + (min_of(y1, hi) - y0) * slope)
                 } else {
                     (x0, x1)
                 };
-                xmin = xmin.min(xa.min(xb));
-                xmax = xmax.max(xa.max(xb));
+                xmin = min_of(xb, min_of(xa, xmin));
+                xmax = max_of(xb, max_of(xa, xmax));
             }
             if xmin > xmax {
                 continue;
             }
             let ix0 = self.coord_by(xmin - eps, self.origin.x, inv).max(0);
             let ix1 = self.coord_by(xmax + eps, self.origin.x, inv).min(self.nx as i64 - 1);
-            if ix0 <= ix1 {
-                row(iy as usize, ix0 as usize, ix1 as usize);
-            }
+            *span = (ix0, ix1);
         }
+        spans
+    }
+
+    /// [`Grid::spans`] with the four rows in the four lanes of AVX vectors (row `iy + k` in
+    /// lane `k`). Each lane performs the scalar body's operations, in the same order, on the
+    /// same operands: `max_pd(a, b)` is `a > b ? a : b`, which is [`max_of`] (and `min_pd`
+    /// [`min_of`]); an edge that misses a lane's strip leaves the lane's extent as it is, as
+    /// skipping the edge does; `floor_pd` is [`floor_i64`] wherever the quotient passes
+    /// [`Grid::coord_by`]'s test (it lies below 2⁵² in magnitude there). Nothing is fused (FMA
+    /// is not enabled). Should a lane's quotient fail the test, the scalar body answers for
+    /// the four rows.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    #[inline]
+    fn spans_avx(&self, edges: &[Edge], iy: i64, n: usize, inv: f64) -> [(i64, i64); 4] {
+        use std::arch::x86_64::*;
+        let splat = _mm256_set1_pd;
+        let (eps, cs) = (splat(self.eps), splat(self.cell_size));
+        let rows = _mm256_setr_pd(iy as f64, (iy + 1) as f64, (iy + 2) as f64, (iy + 3) as f64);
+        let oy = splat(self.origin.y);
+        // `(iy + 1) as f64` is `iy as f64 + 1` exactly (rows are far below 2⁵³).
+        let lo = _mm256_sub_pd(_mm256_add_pd(oy, _mm256_mul_pd(rows, cs)), eps);
+        let hi = _mm256_add_pd(_mm256_add_pd(oy, _mm256_mul_pd(_mm256_add_pd(rows, splat(1.0)), cs)), eps);
+        let (mut xmin, mut xmax) = (splat(f64::INFINITY), splat(f64::NEG_INFINITY));
+        for e in edges {
+            let (y0, y1, x0) = (splat(e.y0), splat(e.y1), splat(e.x0));
+            let (xa, xb) = if e.y1 > e.y0 {
+                let slope = splat(e.slope);
+                let xa = _mm256_add_pd(x0, _mm256_mul_pd(_mm256_sub_pd(_mm256_max_pd(y0, lo), y0), slope));
+                let xb = _mm256_add_pd(x0, _mm256_mul_pd(_mm256_sub_pd(_mm256_min_pd(y1, hi), y0), slope));
+                (xa, xb)
+            } else {
+                (x0, splat(e.x1))
+            };
+            let misses =
+                _mm256_or_pd(_mm256_cmp_pd::<_CMP_LT_OQ>(y1, lo), _mm256_cmp_pd::<_CMP_GT_OQ>(y0, hi));
+            xmin = _mm256_blendv_pd(_mm256_min_pd(xb, _mm256_min_pd(xa, xmin)), xmin, misses);
+            xmax = _mm256_blendv_pd(_mm256_max_pd(xb, _mm256_max_pd(xa, xmax)), xmax, misses);
+        }
+        // Lanes past the `n` rows count as empty.
+        let past = _mm256_cmp_pd::<_CMP_GE_OQ>(_mm256_setr_pd(0.0, 1.0, 2.0, 3.0), splat(n as f64));
+        let empty = _mm256_or_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(xmin, xmax), past);
+        // `coord_by` in every lane: the floor of the quotient, and whether it passes the test.
+        let coord = |v: __m256d| {
+            let q = _mm256_mul_pd(_mm256_sub_pd(v, splat(self.origin.x)), splat(inv));
+            let k = _mm256_floor_pd(q);
+            let f = _mm256_sub_pd(q, k);
+            let abs = _mm256_andnot_pd(splat(-0.0), q);
+            let tol = _mm256_mul_pd(splat(1e-9), _mm256_max_pd(abs, splat(1.0)));
+            let ok = _mm256_and_pd(
+                _mm256_cmp_pd::<_CMP_GT_OQ>(f, tol),
+                _mm256_cmp_pd::<_CMP_LT_OQ>(f, _mm256_sub_pd(splat(1.0), tol)),
+            );
+            (k, ok)
+        };
+        let (k0, ok0) = coord(_mm256_sub_pd(xmin, eps));
+        let (k1, ok1) = coord(_mm256_add_pd(xmax, eps));
+        if _mm256_movemask_pd(_mm256_or_pd(_mm256_and_pd(ok0, ok1), empty)) != 15 {
+            return self.spans(edges, iy, n, inv);
+        }
+        // Clamped into the grid as the scalar body does, and further into [-1, nx], which
+        // keeps every range that is not empty as it is (and every empty one empty); the empty
+        // lanes' ranges set to the empty (1, 0).
+        let nx = self.nx as f64;
+        let ix0 = _mm256_min_pd(_mm256_max_pd(k0, splat(0.0)), splat(nx));
+        let ix1 = _mm256_max_pd(_mm256_min_pd(k1, splat(nx - 1.0)), splat(-1.0));
+        let (ix0, ix1) = (_mm256_blendv_pd(ix0, splat(1.0), empty), _mm256_blendv_pd(ix1, splat(0.0), empty));
+        let (mut a, mut b) = ([0i32; 4], [0i32; 4]);
+        // SAFETY: `a` and `b` hold four `i32` each; unaligned stores.
+        unsafe {
+            _mm_storeu_si128(a.as_mut_ptr().cast(), _mm256_cvttpd_epi32(ix0));
+            _mm_storeu_si128(b.as_mut_ptr().cast(), _mm256_cvttpd_epi32(ix1));
+        }
+        std::array::from_fn(|k| (a[k] as i64, b[k] as i64))
     }
 
     /// The distance along the ray at which it enters the grid, or `None` when it misses.
@@ -500,6 +605,28 @@ impl Edge {
     }
 }
 
+/// `a.min(b)` for a `b` that is not NaN, in one comparison: a NaN `a` gives `b`, as `f64::min`
+/// does. (The two may differ in the sign of a zero result; the rasterisers only take such values
+/// apart from the non-zero `eps`, or floor them, and no sign of zero changes either.)
+#[inline(always)]
+fn min_of(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+/// `a.max(b)` for a `b` that is not NaN, in one comparison (see [`min_of`]).
+#[inline(always)]
+fn max_of(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
 /// `floor(v)` as an integer, without a library call (saturating outside the `i64` range).
 #[inline]
 fn floor_i64(v: f64) -> i64 {
@@ -555,6 +682,59 @@ mod tests {
                             }
                         }
                     }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn avx_spans_are_the_scalar_spans() {
+        #[cfg(target_arch = "x86_64")]
+        if std::is_x86_feature_detected!("avx") {
+            let segs = vec![Segment::new(Vec2::new(3.0, 5.0), Vec2::new(1000.0, 990.0))];
+            let g = Grid::build(
+                &segs,
+                bounds(1024.0),
+                GridParams { cells_per_axis: Some(64), ..Default::default() },
+            );
+            let inv = 1.0 / g.cell_size;
+            // xorshift64*: coordinates anywhere around the grid, many on cell boundaries (where
+            // the floor is decided by the division) or a hair off them, some rows horizontal.
+            let mut state = 0x9e37_79b9_7f4a_7c15u64;
+            let mut next = move || {
+                state ^= state >> 12;
+                state ^= state << 25;
+                state ^= state >> 27;
+                state.wrapping_mul(0x2545_f491_4f6c_dd1d)
+            };
+            let mut coord = |axis: f64| {
+                let r = next();
+                let cell = (r % 70) as f64 - 3.0;
+                let at = axis + cell * g.cell_size;
+                let sign = if r >> 20 & 1 == 0 { 1.0 } else { -1.0 };
+                match (r >> 8) % 4 {
+                    0 => at,
+                    1 => at + sign * g.eps + (((r >> 16) % 5) as f64 - 2.0) * 1e-13,
+                    _ => at + ((r >> 11) as f64 / (1u64 << 53) as f64) * g.cell_size,
+                }
+            };
+            for case in 0..4000 {
+                let n = 1 + case % 8;
+                let mut poly: Vec<Vec2> =
+                    (0..n).map(|_| Vec2::new(coord(g.origin.x), coord(g.origin.y))).collect();
+                if case % 5 == 0 && n > 1 {
+                    poly[1].y = poly[0].y;
+                }
+                let edges: Vec<Edge> = (0..n).map(|i| Edge::new(poly[i], poly[(i + 1) % n])).collect();
+                for iy in -2..g.ny as i64 + 2 {
+                    let rows = 1 + (iy as usize & 3);
+                    let scalar = g.spans(&edges, iy, rows, inv);
+                    // SAFETY: the CPU has AVX (checked above).
+                    let avx = unsafe { g.spans_avx(&edges, iy, rows, inv) };
+                    let nonempty = |s: &[(i64, i64)]| -> Vec<(i64, i64)> {
+                        s[..rows].iter().map(|&(a, b)| if a <= b { (a, b) } else { (1, 0) }).collect()
+                    };
+                    assert_eq!(nonempty(&scalar), nonempty(&avx), "polygon {poly:?}, rows from {iy}");
                 }
             }
         }

@@ -39,10 +39,11 @@
 //!   are bit sets over the sector (one word for sectors of up to 64 rays). A shell's boundary
 //!   rays, the remaining rays inside a patch's span and the rays to retire come from bit
 //!   operations, not from passes over the sector.
-//! * **Shells beyond the grid**: per sector, [`cone_reach`] bounds the distance to any point of
-//!   the (grown) grid inside the sector's cone. Once a shell's trapezoid keeps farther than that
-//!   from the source, it and every later shell of the sector meet no cell, so they are only
-//!   counted and retire rays, without rasterising (most shells of rays that hit nothing).
+//! * **Shells beyond the grid**: per sector (that gets past its first shell), [`cone_reach`]
+//!   bounds the distance to any point of the (grown) grid inside the sector's cone. Once a
+//!   shell's trapezoid keeps farther than that from the source, it and every later shell of the
+//!   sector meet no cell, so they are only counted and retire rays, without rasterising (most
+//!   shells of rays that hit nothing).
 //! * **Cells**: the trapezoid is rasterised by [`Grid::raster_convex_n`] (the same cells as
 //!   `raster_convex`), and each cell is read from the grid's one-entry scan table
 //!   ([`Grid::scan_cell`]). Within one piece a cell is met once, so cells are stamped only in
@@ -403,6 +404,7 @@ fn cone_reach(o: Vec2, ds: Vec2, de: Vec2, lo: Vec2, hi: Vec2) -> Option<f64> {
 /// The macro-regions a shell has met. A shell meets a few, so they are kept in a short list
 /// (no scattered stamps to touch); past its capacity the set moves into per-region stamps.
 struct RegionSet {
+    /// The regions met, then [`RegionSet::FREE`] (no region has that id).
     list: [u32; RegionSet::CAP],
     /// Entries of `list` in use; `CAP + 1` once the set lives in the stamps.
     n: usize,
@@ -410,12 +412,14 @@ struct RegionSet {
 
 impl RegionSet {
     const CAP: usize = 16;
+    const FREE: u32 = u32::MAX;
 
     fn new() -> Self {
-        RegionSet { list: [0; Self::CAP], n: 0 }
+        RegionSet { list: [Self::FREE; Self::CAP], n: 0 }
     }
 
     fn clear(&mut self) {
+        self.list = [Self::FREE; Self::CAP];
         self.n = 0;
     }
 
@@ -423,7 +427,9 @@ impl RegionSet {
     #[inline(always)]
     fn insert(&mut self, r: u32, stamps: &mut [u64], tick: u64) -> bool {
         if self.n <= Self::CAP {
-            if self.list[..self.n].contains(&r) {
+            // The whole list, free entries included: a fixed number of comparisons, without a
+            // branch per entry.
+            if self.list.iter().fold(false, |found, &q| found | (q == r)) {
                 return false;
             }
             if self.n < Self::CAP {
@@ -500,22 +506,31 @@ fn trace_bundle<H: HitTest>(
         // all later ones do: `reach` bounds the distance to any point of the grid (grown by the
         // rasteriser's tolerance and more) within the sector's cone, and a shell's trapezoid
         // keeps at least `inner·cos_half ≥ inner·cos_lb` from the source. Such shells skip
-        // rasterising; their bookkeeping is the same as for any shell without patches.
+        // rasterising; their bookkeeping is the same as for any shell without patches. The
+        // first shell keeps no distance from the source: it is rasterised whatever `reach` is
+        // (where the sector's cone misses the grid it meets no cell either way), so `reach` is
+        // only worked out for sectors that get past it.
         let (ds, de) = (bundle.rays[s].dir, bundle.rays[e - 1].dir);
         let cos_lb = if one_piece {
             (0.5 * (1.0 + ds.dot(de))).max(0.0).sqrt()
         } else {
             (std::f64::consts::PI / 8.0).cos()
         } * (1.0 - 1e-9);
-        let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
-        let reach = cone_reach(o, ds, de, lo_box - Vec2::splat(grow), hi_box + Vec2::splat(grow))
-            .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + grow);
+        let mut reach = None;
+        let mut reach = || {
+            *reach.get_or_insert_with(|| {
+                let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
+                cone_reach(o, ds, de, lo_box - Vec2::splat(grow), hi_box + Vec2::splat(grow))
+                    .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + grow)
+            })
+        };
         cur.clear();
         let mut first_adlc: Option<f64> = None;
         let mut r1 = 0.0f64;
         let mut j = 0usize;
         while rays.remaining > 0 && r1 < far {
-            if (r1 - margin).max(0.0) * cos_lb > reach {
+            let keeps = (r1 - margin).max(0.0) * cos_lb;
+            if keeps > 0.0 && keeps > reach() {
                 // This shell and all later ones lie beyond the grid: they meet no cell and no
                 // patch, so each only retires rays (those holding a hit do so at once, as every
                 // hit lies within `reach`) and is recorded as a shell without patches.
