@@ -529,7 +529,9 @@ mod tests {
 /// multiplexer): a consumer's `ready` that decides the pop reaches one flip-flop and the
 /// read pointer, not the RAM's address pins (with a single read at `pop ? next : head` it ran
 /// through the address multiplexer into every LUT RAM of the FIFO: 5.8 ns of routing in the
-/// processing element). FPGA synthesis duplicates the LUT RAM for the second read port. All
+/// processing element). ECP5 synthesis duplicates the LUT RAM for the second read port (on
+/// iCE40, Yosys keeps the loader's 17-bit lanes in flip-flops instead of four block RAMs each:
+/// README, "FPGA resources and clock rate"). All
 /// words and registers are zero at power-up. The Rust `update` is the bit-true model.
 #[derive(LogicBlock)]
 pub struct FifoRam<const D: usize, const A: usize> {
