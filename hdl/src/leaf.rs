@@ -529,9 +529,10 @@ mod tests {
 /// multiplexer): a consumer's `ready` that decides the pop reaches one flip-flop and the
 /// read pointer, not the RAM's address pins (with a single read at `pop ? next : head` it ran
 /// through the address multiplexer into every LUT RAM of the FIFO: 5.8 ns of routing in the
-/// processing element). ECP5 synthesis duplicates the LUT RAM for the second read port (on
-/// iCE40, Yosys keeps the loader's 17-bit lanes in flip-flops instead of four block RAMs each:
-/// README, "FPGA resources and clock rate"). All
+/// processing element). ECP5 synthesis duplicates the LUT RAM for the second read port. For
+/// iCE40 (Verilog define `SHELLING_ICE40`, set by the FPGA flow) the body keeps a second copy of
+/// the memory for that read, written alongside: with one memory and two reads Yosys' iCE40
+/// mapping keeps 16-word lanes in flip-flops (the loader at 42 MHz instead of 65). All
 /// words and registers are zero at power-up. The Rust `update` is the bit-true model.
 #[derive(LogicBlock)]
 pub struct FifoRam<const D: usize, const A: usize> {
@@ -586,6 +587,19 @@ reg [{dm}:0] head_r;
 reg [{dm}:0] next_r;
 reg popped;
 integer i;
+`ifdef SHELLING_ICE40
+// A copy for the second read (the same writes): one read port per memory.
+reg [{dm}:0] mem_n [0:{words}];
+initial for (i = 0; i <= {words}; i = i + 1) mem_n[i] = {d}'d0;
+always @(posedge clock) begin
+   next_r <= mem_n[next_address];
+   if (write_enable) begin
+      mem_n[write_address] <= write_data;
+   end
+end
+`else
+always @(posedge clock) next_r <= mem[next_address];
+`endif
 initial begin
    for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
    head_r = {d}'d0;
@@ -594,7 +608,6 @@ initial begin
 end
 always @(posedge clock) begin
    head_r <= mem[head_address];
-   next_r <= mem[next_address];
    popped <= pop;
    if (write_enable) begin
       mem[write_address] <= write_data;

@@ -375,6 +375,19 @@ module patch_loader$lane_ax(clock,write_address,write_data,write_enable,head_add
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -383,7 +396,6 @@ module patch_loader$lane_ax(clock,write_address,write_data,write_enable,head_add
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -411,6 +423,19 @@ module patch_loader$lane_ay(clock,write_address,write_data,write_enable,head_add
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -419,7 +444,6 @@ module patch_loader$lane_ay(clock,write_address,write_data,write_enable,head_add
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -447,6 +471,19 @@ module patch_loader$lane_bx(clock,write_address,write_data,write_enable,head_add
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -455,7 +492,6 @@ module patch_loader$lane_bx(clock,write_address,write_data,write_enable,head_add
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -483,6 +519,19 @@ module patch_loader$lane_by(clock,write_address,write_data,write_enable,head_add
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -491,7 +540,6 @@ module patch_loader$lane_by(clock,write_address,write_data,write_enable,head_add
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -519,6 +567,19 @@ module patch_loader$lane_id(clock,write_address,write_data,write_enable,head_add
     reg [15:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [15:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 16'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
        head_r = 16'd0;
@@ -527,7 +588,6 @@ module patch_loader$lane_id(clock,write_address,write_data,write_enable,head_add
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;

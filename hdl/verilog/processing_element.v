@@ -4990,6 +4990,19 @@ module processing_element$loader$lane_ax(clock,write_address,write_data,write_en
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -4998,7 +5011,6 @@ module processing_element$loader$lane_ax(clock,write_address,write_data,write_en
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -5026,6 +5038,19 @@ module processing_element$loader$lane_ay(clock,write_address,write_data,write_en
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -5034,7 +5059,6 @@ module processing_element$loader$lane_ay(clock,write_address,write_data,write_en
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -5062,6 +5086,19 @@ module processing_element$loader$lane_bx(clock,write_address,write_data,write_en
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -5070,7 +5107,6 @@ module processing_element$loader$lane_bx(clock,write_address,write_data,write_en
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -5098,6 +5134,19 @@ module processing_element$loader$lane_by(clock,write_address,write_data,write_en
     reg [16:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
        head_r = 17'd0;
@@ -5106,7 +5155,6 @@ module processing_element$loader$lane_by(clock,write_address,write_data,write_en
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -5134,6 +5182,19 @@ module processing_element$loader$lane_id(clock,write_address,write_data,write_en
     reg [15:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [15:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 16'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
        head_r = 16'd0;
@@ -5142,7 +5203,6 @@ module processing_element$loader$lane_id(clock,write_address,write_data,write_en
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10171,6 +10231,19 @@ module processing_element$screener$lane_ax(clock,write_address,write_data,write_
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -10179,7 +10252,6 @@ module processing_element$screener$lane_ax(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10207,6 +10279,19 @@ module processing_element$screener$lane_ay(clock,write_address,write_data,write_
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -10215,7 +10300,6 @@ module processing_element$screener$lane_ay(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10243,6 +10327,19 @@ module processing_element$screener$lane_bx(clock,write_address,write_data,write_
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -10251,7 +10348,6 @@ module processing_element$screener$lane_bx(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10279,6 +10375,19 @@ module processing_element$screener$lane_by(clock,write_address,write_data,write_
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -10287,7 +10396,6 @@ module processing_element$screener$lane_by(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10315,6 +10423,19 @@ module processing_element$screener$lane_id(clock,write_address,write_data,write_
     reg [15:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [15:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 16'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 16'd0;
        head_r = 16'd0;
@@ -10323,7 +10444,6 @@ module processing_element$screener$lane_id(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10351,6 +10471,19 @@ module processing_element$screener$lane_sh(clock,write_address,write_data,write_
     reg [6:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [6:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 7'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 7'd0;
        head_r = 7'd0;
@@ -10359,7 +10492,6 @@ module processing_element$screener$lane_sh(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10387,6 +10519,19 @@ module processing_element$screener$lane_wx(clock,write_address,write_data,write_
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -10395,7 +10540,6 @@ module processing_element$screener$lane_wx(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -10423,6 +10567,19 @@ module processing_element$screener$lane_wy(clock,write_address,write_data,write_
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -10431,7 +10588,6 @@ module processing_element$screener$lane_wy(clock,write_address,write_data,write_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -12347,6 +12503,19 @@ module processing_element$tags(clock,write_address,write_data,write_enable,head_
     reg [21:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [21:0] mem_n [0:63];
+    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 22'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
        head_r = 22'd0;
@@ -12355,7 +12524,6 @@ module processing_element$tags(clock,write_address,write_data,write_enable,head_
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;

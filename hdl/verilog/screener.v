@@ -3980,6 +3980,19 @@ module screener$lane_ax(clock,write_address,write_data,write_enable,head_address
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -3988,7 +4001,6 @@ module screener$lane_ax(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4016,6 +4028,19 @@ module screener$lane_ay(clock,write_address,write_data,write_enable,head_address
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -4024,7 +4049,6 @@ module screener$lane_ay(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4052,6 +4076,19 @@ module screener$lane_bx(clock,write_address,write_data,write_enable,head_address
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -4060,7 +4097,6 @@ module screener$lane_bx(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4088,6 +4124,19 @@ module screener$lane_by(clock,write_address,write_data,write_enable,head_address
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -4096,7 +4145,6 @@ module screener$lane_by(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4124,6 +4172,19 @@ module screener$lane_id(clock,write_address,write_data,write_enable,head_address
     reg [15:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [15:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 16'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 16'd0;
        head_r = 16'd0;
@@ -4132,7 +4193,6 @@ module screener$lane_id(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4160,6 +4220,19 @@ module screener$lane_sh(clock,write_address,write_data,write_enable,head_address
     reg [6:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [6:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 7'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 7'd0;
        head_r = 7'd0;
@@ -4168,7 +4241,6 @@ module screener$lane_sh(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4196,6 +4268,19 @@ module screener$lane_wx(clock,write_address,write_data,write_enable,head_address
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -4204,7 +4289,6 @@ module screener$lane_wx(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;
@@ -4232,6 +4316,19 @@ module screener$lane_wy(clock,write_address,write_data,write_enable,head_address
     reg [17:0] next_r;
     reg popped;
     integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:31];
+    initial for (i = 0; i <= 31; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
     initial begin
        for (i = 0; i <= 31; i = i + 1) mem[i] = 18'd0;
        head_r = 18'd0;
@@ -4240,7 +4337,6 @@ module screener$lane_wy(clock,write_address,write_data,write_enable,head_address
     end
     always @(posedge clock) begin
        head_r <= mem[head_address];
-       next_r <= mem[next_address];
        popped <= pop;
        if (write_enable) begin
           mem[write_address] <= write_data;

@@ -15,6 +15,7 @@ use shelling_hdl::screener::model::{
     accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, PatchSetup, Verdict,
 };
 use shelling_hdl::screener::{Screener, COUNT_LATENCY, DEPTH, LATENCY, VERDICT_LATENCY};
+use shelling_testbench::replay::TB_MODULE;
 use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
 
 const COORD_MAX: i32 = (1 << 17) - 1;
@@ -806,5 +807,21 @@ fn fifo_ram_model_and_verilog_agree() -> Result<()> {
     let report = rec.replay(drv.uut(), &dir, Simulator::Icarus)?;
     assert_eq!(report.cycles, rec.cycles());
     println!("{report}");
+    // The same testbench on the iCE40 body (a second memory copy for the second read).
+    let run = |program: &str, args: &[&str]| -> Result<String> {
+        let out = std::process::Command::new(program)
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .map_err(|e| Error::new(format!("{program}: {e}")))?;
+        if !out.status.success() {
+            return Err(Error::new(format!("{program} failed: {}", String::from_utf8_lossy(&out.stderr))));
+        }
+        Ok(String::from_utf8_lossy(&out.stdout).into_owned())
+    };
+    run("iverilog", &["-g2012", "-DSHELLING_ICE40", "-s", TB_MODULE, "-o", "ice40.vvp", "tb.v", "dut.v"])?;
+    let out = run("vvp", &["-n", "ice40.vvp"])?;
+    let want = format!("REPLAY-SUMMARY cycles={} checks={} mismatches=0", rec.cycles(), report.checks);
+    assert!(out.lines().any(|l| l == want), "SHELLING_ICE40 body: {out}");
     Ok(())
 }

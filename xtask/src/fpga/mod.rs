@@ -4,7 +4,8 @@
 //!    (`shelling_testbench::export::write`) into `DIR/verilog/`.
 //! 2. Each block is wrapped in registers (see [`wrapper`]), synthesized by Yosys (`synth_ecp5`
 //!    with `SHELLING_ECP5` defined, which instantiates the `DP16KD` block RAMs with their output
-//!    register; `synth_ice40 -dsp`) and placed and routed by nextpnr with a fixed seed, a target frequency
+//!    register; `synth_ice40 -dsp` with `SHELLING_ICE40` defined, which gives each FIFO's second
+//!    read its own memory copy) and placed and routed by nextpnr with a fixed seed, a target frequency
 //!    and `--timing-allow-fail`, so that a missed target is measured rather than refused.
 //! 3. The counts come from nextpnr's report (its log's utilisation table for a design that does
 //!    not fit), less the wrapper's flip-flops, which the netlist tells apart; fmax and the
@@ -137,7 +138,8 @@ struct Target {
     device: String,
     synth: &'static str,
     /// Verilog defines for `read_verilog` (`-DSHELLING_ECP5` selects the hand-instantiated
-    /// block RAMs of `shelling_hdl::leaf::BramOut`).
+    /// block RAMs of `shelling_hdl::leaf::BramOut` and multipliers; `-DSHELLING_ICE40` the
+    /// second memory copy of `shelling_hdl::leaf::FifoRam`).
     defines: &'static str,
     nextpnr_device: Vec<String>,
     mhz: f64,
@@ -166,7 +168,7 @@ impl Target {
                 family,
                 device: "iCE40UP5K SG48".into(),
                 synth: "synth_ice40 -dsp",
-                defines: "",
+                defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
@@ -175,7 +177,7 @@ impl Target {
                 family,
                 device: "iCE40HX8K CT256".into(),
                 synth: "synth_ice40",
-                defines: "",
+                defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
