@@ -128,9 +128,10 @@
 //!
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
-//! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 72 `TRELLIS_DPR16X4` (the
-//! FIFO), about 2300 LUT4, 900 `CCU2C` carry cells and 4600 flip-flops, of which the divider
-//! takes about 1000 LUT4, 580 `CCU2C` and 2000 flip-flops.
+//! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 144 `TRELLIS_DPR16X4` (the
+//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5384 LUT4s (LUT RAM
+//! included) and 4227 flip-flops, of which the divider takes about 1000 LUT4, 580 `CCU2C` carry
+//! cells and 2000 flip-flops.
 
 use crate::formats::{cross, dot, SECTOR_MARGIN, SH_MAX, SH_MIN};
 use crate::leaf::{FifoRam, Mul18, PipeDivider, DIV_LATENCY};
