@@ -524,6 +524,18 @@ impl Recording {
         self.replay_netlist(uut, dir, Design::Rtl, simulator)
     }
 
+    /// As [`Self::replay`], with Verilog macros defined for the simulator's compile (`defines`:
+    /// names such as `SHELLING_ICE40`, which select a leaf's body for one FPGA family).
+    pub fn replay_with_defines(
+        &self,
+        uut: &dyn Block,
+        dir: &Path,
+        simulator: Simulator,
+        defines: &[&str],
+    ) -> Result<ReplayReport> {
+        self.run_replay(uut, dir, Design::Rtl, simulator, defines)
+    }
+
     /// As [`Self::replay`], through `design`: the exported Verilog, or a Yosys netlist of it
     /// (rung 5) made in `dir` by the `yosys` on PATH.
     pub fn replay_netlist(
@@ -532,6 +544,17 @@ impl Recording {
         dir: &Path,
         design: Design,
         simulator: Simulator,
+    ) -> Result<ReplayReport> {
+        self.run_replay(uut, dir, design, simulator, &[])
+    }
+
+    fn run_replay(
+        &self,
+        uut: &dyn Block,
+        dir: &Path,
+        design: Design,
+        simulator: Simulator,
+        defines: &[&str],
     ) -> Result<ReplayReport> {
         if self.cycles == 0 {
             return Err(Error::new("nothing to replay: no cycle was recorded"));
@@ -553,9 +576,10 @@ impl Recording {
         if let Some(script) = design.script() {
             run_tool(dir, "yosys", &["-q", "-l", "netlist.log", "-p", &script], "apt-get install -y yosys")?;
         }
+        let defines: Vec<String> = defines.iter().map(|d| format!("-D{d}")).collect();
         let output = match simulator {
-            Simulator::Icarus => run_icarus(dir, design.file())?,
-            Simulator::Verilator => run_verilator(dir, design.file())?,
+            Simulator::Icarus => run_icarus(dir, design.file(), &defines)?,
+            Simulator::Verilator => run_verilator(dir, design.file(), &defines)?,
         };
         let (cycles, checks) = parse_summary(&output, self.cycles).map_err(|e| {
             e.context(format_args!("{design} under {simulator}, replay in {}", dir.display()))
@@ -725,18 +749,22 @@ fn tail(text: &str) -> String {
     out
 }
 
-/// Compiles `tb.v` with the design in `design` (the exported Verilog or a netlist of it).
-fn run_icarus(dir: &Path, design: &str) -> Result<String> {
+/// Compiles `tb.v` with the design in `design` (the exported Verilog or a netlist of it), the
+/// `-D` options in `defines` first.
+fn run_icarus(dir: &Path, design: &str, defines: &[String]) -> Result<String> {
     const INSTALL: &str = "apt-get install -y iverilog";
-    let compile = ["-g2012", "-s", TB_MODULE, "-o", "replay.vvp", "tb.v", design];
+    let mut compile: Vec<&str> = defines.iter().map(String::as_str).collect();
+    compile.extend(["-g2012", "-s", TB_MODULE, "-o", "replay.vvp", "tb.v", design]);
     run_tool(dir, "iverilog", &compile, INSTALL)?;
     let run = run_tool(dir, "vvp", &["-n", "replay.vvp"], INSTALL)?;
     Ok(String::from_utf8_lossy(&run.stdout).into_owned())
 }
 
-/// Builds `tb.v` with the design in `design` into a binary and runs it.
-fn run_verilator(dir: &Path, design: &str) -> Result<String> {
-    let build = [
+/// Builds `tb.v` with the design in `design` into a binary (the `-D` options in `defines`
+/// first) and runs it.
+fn run_verilator(dir: &Path, design: &str, defines: &[String]) -> Result<String> {
+    let mut build: Vec<&str> = defines.iter().map(String::as_str).collect();
+    build.extend([
         "--binary",
         "--timing",
         "-j",
@@ -756,7 +784,7 @@ fn run_verilator(dir: &Path, design: &str) -> Result<String> {
         "replay",
         "tb.v",
         design,
-    ];
+    ]);
     run_tool(dir, "verilator", &build, "apt-get install -y verilator")?;
     let run = run_tool(dir, "verilator/replay", &[], "it was just built")?;
     Ok(String::from_utf8_lossy(&run.stdout).into_owned())

@@ -15,7 +15,6 @@ use shelling_hdl::screener::model::{
     accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, PatchSetup, Verdict,
 };
 use shelling_hdl::screener::{Screener, COUNT_LATENCY, DEPTH, LATENCY, VERDICT_LATENCY};
-use shelling_testbench::replay::TB_MODULE;
 use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
 
 const COORD_MAX: i32 = (1 << 17) - 1;
@@ -192,6 +191,12 @@ fn corner_segments(rng: &mut ChaCha8Rng) -> Vec<Segment> {
     out
 }
 
+/// `nmax = max(|n_x|, |n_y|)` of the patch `a`, `b` (relative coordinates): its normal
+/// `n = (b.y − a.y, a.x − b.x)`, as the screener's stage 2 takes it.
+fn nmax_of(a: [i32; 2], b: [i32; 2]) -> u64 {
+    (b[1] - a[1]).unsigned_abs().max((a[0] - b[0]).unsigned_abs()) as u64
+}
+
 /// How `nmax` and `2K` compare once both are normalised to a leading one at bit 31 (the
 /// screener's stage 7): `Some(true)` when they agree in their top 18 bits (all of the
 /// normalised `nmax`) and `2K` has more bits below, `Some(false)` when they are equal, `None`
@@ -217,7 +222,7 @@ fn exponent_ties(rng: &mut ChaCha8Rng) -> Segment {
         };
         let (a, bb) = ([p.a[0] - o[0], p.a[1] - o[1]], [p.b[0] - o[0], p.b[1] - o[1]]);
         let k = cross(a, bb) as i64;
-        let nmax = (bb[1] - a[1]).unsigned_abs().max((a[0] - bb[0]).unsigned_abs()) as u64;
+        let nmax = nmax_of(a, bb);
         if k > 0
             && exponent_tie(nmax, 2 * k as u64) == Some(true)
             && matches!(screen(&bundle, &p), Verdict::Pass(_))
@@ -422,8 +427,7 @@ fn corner_coverage(segments: &[Segment]) {
             hits[6] += u64::from(cross(bd.last, a) == 257 && v == Verdict::OutsideSector);
             hits[7] += u64::from(a == bb);
             hits[8] += u64::from(matches!(v, Verdict::Pass(s) if s.sh == -3));
-            let nmax = (bb[1] - a[1]).unsigned_abs().max((a[0] - bb[0]).unsigned_abs()) as u64;
-            let tie = if k > 0 && pass { exponent_tie(nmax, 2 * k as u64) } else { None };
+            let tie = if k > 0 && pass { exponent_tie(nmax_of(a, bb), 2 * k as u64) } else { None };
             hits[9] += u64::from(tie == Some(true));
             hits[10] += u64::from(tie == Some(false));
         }
@@ -807,21 +811,10 @@ fn fifo_ram_model_and_verilog_agree() -> Result<()> {
     let report = rec.replay(drv.uut(), &dir, Simulator::Icarus)?;
     assert_eq!(report.cycles, rec.cycles());
     println!("{report}");
-    // The same testbench on the iCE40 body (a second memory copy for the second read).
-    let run = |program: &str, args: &[&str]| -> Result<String> {
-        let out = std::process::Command::new(program)
-            .args(args)
-            .current_dir(&dir)
-            .output()
-            .map_err(|e| Error::new(format!("{program}: {e}")))?;
-        if !out.status.success() {
-            return Err(Error::new(format!("{program} failed: {}", String::from_utf8_lossy(&out.stderr))));
-        }
-        Ok(String::from_utf8_lossy(&out.stdout).into_owned())
-    };
-    run("iverilog", &["-g2012", "-DSHELLING_ICE40", "-s", TB_MODULE, "-o", "ice40.vvp", "tb.v", "dut.v"])?;
-    let out = run("vvp", &["-n", "ice40.vvp"])?;
-    let want = format!("REPLAY-SUMMARY cycles={} checks={} mismatches=0", rec.cycles(), report.checks);
-    assert!(out.lines().any(|l| l == want), "SHELLING_ICE40 body: {out}");
+    // The same run on the iCE40 body (a second memory copy for the second read).
+    let ice40 =
+        rec.replay_with_defines(drv.uut(), &dir.join("ice40"), Simulator::Icarus, &["SHELLING_ICE40"])?;
+    assert_eq!(ice40.cycles, rec.cycles());
+    println!("SHELLING_ICE40: {ice40}");
     Ok(())
 }
