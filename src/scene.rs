@@ -126,6 +126,12 @@ impl fmt::Display for Bounds {
     }
 }
 
+/// The reflectance of a segment whose file gives none.
+pub const DEFAULT_REFLECTANCE: f64 = 0.5;
+
+/// The emission of a segment whose file gives none.
+pub const DEFAULT_EMISSION: f64 = 0.0;
+
 /// The optional surface properties of one segment. `None` means the file did not give the value;
 /// what a missing value means is up to the consumer of the scene.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -134,6 +140,18 @@ pub struct Material {
     pub reflectance: Option<f64>,
     /// The light the patch emits, `≥ 0`.
     pub emission: Option<f64>,
+}
+
+impl Material {
+    /// The reflectance, or [`DEFAULT_REFLECTANCE`] where the file gives none.
+    pub fn reflectance_or_default(&self) -> f64 {
+        self.reflectance.unwrap_or(DEFAULT_REFLECTANCE)
+    }
+
+    /// The emission, or [`DEFAULT_EMISSION`] where the file gives none.
+    pub fn emission_or_default(&self) -> f64 {
+        self.emission.unwrap_or(DEFAULT_EMISSION)
+    }
 }
 
 /// A 2D scene: one-sided segments, their materials and an optional world box.
