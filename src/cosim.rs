@@ -15,11 +15,11 @@ use crate::run::Scheduled;
 use crate::workstream::{commands, StreamError};
 use serde::Serialize;
 use shelling_hdl::intersection::model::Nearest;
-use shelling_hdl::pe::ProcessingElement;
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
 use shelling_testbench::verilated::VerilatedPe;
-use shelling_testbench::{Driver, PeSim};
+use shelling_testbench::pe::{rust_hdl_pe, RustHdlPe};
+use shelling_testbench::PeSim;
 use std::path::PathBuf;
 
 /// The simulator the processing element runs on. Both give the same cycles, hits and counters.
@@ -123,7 +123,7 @@ pub fn run(
 ) -> Result<Cosim, CosimError> {
     match config.engine.resolve(config.vcd.is_some()) {
         Engine::RustHdl | Engine::Auto => {
-            let mut drv = Driver::new(ProcessingElement::default()).map_err(sim)?;
+            let mut drv = rust_hdl_pe().map_err(sim)?;
             run_on(&mut drv, scheduled, config, progress)
         }
         Engine::Verilator => {
@@ -142,11 +142,11 @@ pub fn run(
 
 /// Co-simulates a scheduled source on the PE of `drv`, which may have run sources before (its
 /// readout leaves it cleared) and may be recording its ports for a replay of the exported Verilog
-/// ([`Driver::record_ports`]): several sources then make one set of vectors. The PE's patch
-/// cache keeps its lines from run to run: before a source of another scene, flush it
-/// ([`shelling_testbench::pe::flush_cache`]), or its hits return the old scene's patches.
+/// ([`shelling_testbench::Driver::record_ports`]): several sources then make one set of vectors.
+/// The PE's patch cache keeps its lines from run to run: before a source of another scene, flush
+/// it ([`shelling_testbench::pe::flush_cache`]), or its hits return the old scene's patches.
 pub fn run_on(
-    drv: &mut Driver<ProcessingElement>,
+    drv: &mut RustHdlPe,
     scheduled: &Scheduled,
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),

@@ -184,6 +184,15 @@ impl CacheConfig {
     }
 }
 
+/// The processing element on rust-hdl's simulator: the engine with VCD windows and port
+/// recording (the compiled one is [`crate::verilated::VerilatedPe`]).
+pub type RustHdlPe = crate::Driver<ProcessingElement>;
+
+/// A processing element fresh from power-up on rust-hdl's simulator.
+pub fn rust_hdl_pe() -> Result<RustHdlPe> {
+    crate::Driver::new(ProcessingElement::default())
+}
+
 /// Runs a whole source on a PE fresh from power-up (or after a previous run's readout):
 /// directions, commands, readout. `progress(done, total)` is called now and then with the
 /// commands sent so far. A run that stops making progress is an error naming where it stopped.
