@@ -191,6 +191,38 @@ fn unsupported_version() {
 }
 
 #[test]
+fn unsupported_version_is_reported_before_other_problems() {
+    let text = "{\"segments\": [{\"a\": [1, 2], \"b\": [3, 4], \"colour\": 1}], \"version\": 0}";
+    let (err, _) = load_err("version_last", text);
+    assert!(matches!(&err, SceneError::UnsupportedVersion { found, .. } if found == "0"), "{err:?}");
+}
+
+#[test]
+fn duplicate_field() {
+    let (err, msg) = load_err("duplicate", &with_second("\"a\": [1, 2], \"b\": [3, 4], \"b\": [5, 6]"));
+    assert!(
+        matches!(&err, SceneError::DuplicateField { location: Location::Segment(1), field, .. } if field == "b"),
+        "{err:?}"
+    );
+    assert!(msg.contains("segment 1: field \"b\" is given twice"), "{msg}");
+}
+
+#[test]
+fn null_is_not_an_absent_value() {
+    let (err, msg) = load_err("null", &with_second("\"a\": [1, 2], \"b\": [3, 4], \"emission\": null"));
+    assert!(matches!(&err, SceneError::WrongType { location: Location::Segment(1), .. }), "{err:?}");
+    assert!(msg.contains("segment 1: \"emission\" must be a number, found null"), "{msg}");
+}
+
+#[test]
+fn segment_written_as_an_array_is_a_wrong_type() {
+    let text = "{\"segments\": [{\"a\": [1, 2], \"b\": [3, 4]}, [[1, 2], [3, 4]]]}";
+    let (err, msg) = load_err("array_segment", text);
+    assert!(matches!(&err, SceneError::WrongType { location: Location::Segment(1), .. }), "{err:?}");
+    assert!(msg.contains("segment 1: the segment must be a JSON object, found an array"), "{msg}");
+}
+
+#[test]
 fn coordinate_over_the_limit() {
     let (err, msg) = load_err("limit", &with_second("\"a\": [1, 2], \"b\": [3e12, 4]"));
     assert!(
