@@ -5,17 +5,17 @@
 //! public API; `format` the file's structure and the writer; `parse` the loader (text to file
 //! structures to [`Scene`], with every error placed); `gen` the random generator [`generate`].
 //!
-//! # The scene format, version 1
+//! # The scene format, version 2
 //!
 //! A scene file is one JSON object:
 //!
 //! ```json
 //! {
-//!   "version": 1,
+//!   "version": 2,
 //!   "world": {"min": [0, 0], "max": [1024, 1024]},
 //!   "segments": [
 //!     {"a": [100, 200], "b": [300, 200], "reflectance": 0.5, "emission": 0.0},
-//!     {"a": [500, 500], "b": [500, 700]}
+//!     {"a": [500, 500], "b": [500, 700], "emission": 10.0}
 //!   ]
 //! }
 //! ```
@@ -28,12 +28,16 @@
 //!
 //! | field | required | meaning |
 //! |---|---|---|
-//! | `version` | no, defaults to 1 | The format version. Only `1` is accepted. |
+//! | `version` | no, defaults to 1 | The format version: `1` or `2`. |
 //! | `world` | no | The world box `{"min": [x, y], "max": [x, y]}`: the half-open box `min ≤ p < max`. Every endpoint of every segment must lie inside it. `min` must be less than `max` in both coordinates. |
 //! | `segments` | yes, non-empty | The patches of the scene, in order; a segment's index is its position in this array, counted from 0. |
 //! | `segments[i].a`, `segments[i].b` | yes | The endpoints, each an array of exactly two numbers `[x, y]`. |
-//! | `segments[i].reflectance` | no | A number in `[0, 1]`. |
-//! | `segments[i].emission` | no | A number `≥ 0`. |
+//! | `segments[i].reflectance` | no, defaults to [`DEFAULT_REFLECTANCE`] (0.5) | The fraction of incoming light the front side reflects: a number in `[0, 1)`. |
+//! | `segments[i].emission` | no, defaults to [`DEFAULT_EMISSION`] (0) | The light the front side emits, as radiant exitance (power per unit length of the segment): a number `≥ 0`. |
+//!
+//! Versions 1 and 2 have the same fields and are read alike; version 2 gives the material values
+//! their radiosity meaning above. Reflectance 1 is an error in both versions (version 1 allowed
+//! it), since a radiosity solve needs a reflectance below 1.
 //!
 //! * A segment `a → b` is one-sided: its front side lies to the left of `a → b`, and its normal is
 //!   `(b − a)` rotated by +90° and normalised. Reverse the endpoints to flip a patch.
@@ -50,8 +54,8 @@
 //! for example `scene.json: segment 17: endpoint a has a non-finite coordinate (NaN)`. See
 //! [`SceneError`] for the full list.
 //!
-//! [`Scene::to_json`] writes the same format, always with `"version"`, one segment per line. It
-//! prints each number in the shortest form that reads back to the same `f64`, and the loader
+//! [`Scene::to_json`] writes the current version, always with `"version"`, one segment per line.
+//! It prints each number in the shortest form that reads back to the same `f64`, and the loader
 //! parses numbers with correct rounding, so a written scene loads back bit for bit.
 //!
 //! # The random scene generator
@@ -74,8 +78,12 @@ mod parse;
 
 pub use gen::generate;
 
-/// The scene format version this module reads and writes.
-pub const SCENE_VERSION: u32 = 1;
+/// The scene format version this module writes.
+pub const SCENE_VERSION: u32 = 2;
+
+/// The oldest scene format version this module reads; it reads every version from this one to
+/// [`SCENE_VERSION`].
+pub const FIRST_SCENE_VERSION: u32 = 1;
 
 /// Largest accepted coordinate magnitude.
 pub const COORD_LIMIT: f64 = 1.0e9;
@@ -129,12 +137,13 @@ pub const DEFAULT_REFLECTANCE: f64 = 0.5;
 pub const DEFAULT_EMISSION: f64 = 0.0;
 
 /// The optional surface properties of one segment. `None` means the file did not give the value;
-/// what a missing value means is up to the consumer of the scene.
+/// the accessors [`Material::reflectance_or_default`] and [`Material::emission_or_default`] give
+/// the format's defaults in its place.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Material {
-    /// The fraction of incoming light the patch reflects, in `[0, 1]`.
+    /// The fraction of incoming light the front side reflects, in `[0, 1)`.
     pub reflectance: Option<f64>,
-    /// The light the patch emits, `≥ 0`.
+    /// The light the front side emits: radiant exitance (power per unit length), `≥ 0`.
     pub emission: Option<f64>,
 }
 
@@ -222,10 +231,10 @@ pub enum SceneError {
     )]
     Truncated { name: String, line: usize, column: usize, message: String },
 
-    /// The `version` field is not 1.
+    /// The `version` field is not a version this program reads (1 or 2).
     #[error(
         "{name}: unsupported scene format version {found} \
-         (this program reads version {SCENE_VERSION})"
+         (this program reads versions {FIRST_SCENE_VERSION} to {SCENE_VERSION})"
     )]
     UnsupportedVersion { name: String, found: String },
 
@@ -317,7 +326,7 @@ pub enum SceneError {
         field: &'static str,
         /// The value as written, such as `1.5` or `NaN`.
         value: String,
-        /// The rule it breaks, such as `a finite number in [0, 1]`.
+        /// The rule it breaks, such as `a finite number in [0, 1)`.
         rule: &'static str,
     },
 
@@ -395,7 +404,8 @@ impl Scene {
         Ok(scene)
     }
 
-    /// Parses a scene from JSON text. `name` is the file name that errors carry.
+    /// Parses a scene from JSON text (version 1 or 2). `name` is the file name that errors
+    /// carry.
     pub fn from_json_str(text: &str, name: &str) -> Result<Scene, SceneError> {
         parse::parse(text, name)
     }
@@ -552,10 +562,11 @@ fn check_segment(name: &str, index: usize, seg: &Segment, world: Option<&Bounds>
     Ok(())
 }
 
-/// Checks the material of one segment against the ranges of the format.
+/// Checks the material of one segment against the ranges of the format: reflectance in `[0, 1)`
+/// (a radiosity solve needs it below 1), emission finite and `≥ 0`.
 fn check_material(name: &str, index: usize, material: &Material) -> Result<(), SceneError> {
     if let Some(r) = material.reflectance {
-        if !(r.is_finite() && (0.0..=1.0).contains(&r)) {
+        if !(0.0..1.0).contains(&r) {
             return Err(bad_material(name, index, "reflectance", number_text(&r)));
         }
     }
@@ -569,7 +580,7 @@ fn check_material(name: &str, index: usize, material: &Material) -> Result<(), S
 
 /// The error for a material value outside its range; `value` is the value as written.
 fn bad_material(name: &str, index: usize, field: &'static str, value: String) -> SceneError {
-    let rule = if field == "reflectance" { "a finite number in [0, 1]" } else { "a finite number >= 0" };
+    let rule = if field == "reflectance" { "a finite number in [0, 1)" } else { "a finite number >= 0" };
     SceneError::BadMaterial { name: name.to_string(), segment: index, field, value, rule }
 }
 

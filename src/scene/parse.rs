@@ -12,7 +12,10 @@ use serde_json::error::Category;
 use serde_path_to_error::Segment as Step;
 
 use super::format::{Object, SceneFile, VersionProbe, SEGMENT_FIELDS, TOP_FIELDS, WORLD_FIELDS};
-use super::{bad_material, number_text, Bounds, Location, Material, Scene, SceneError, SCENE_VERSION};
+use super::{
+    bad_material, number_text, Bounds, Location, Material, Scene, SceneError, FIRST_SCENE_VERSION,
+    SCENE_VERSION,
+};
 use crate::geom::Segment;
 
 /// The bytes of a file as text, or an error where they are not UTF-8.
@@ -64,10 +67,10 @@ pub(super) fn parse(text: &str, name: &str) -> Result<Scene, SceneError> {
     Ok(scene)
 }
 
-/// Accepts an absent version and the version this program reads.
+/// Accepts an absent version and the versions this program reads.
 fn check_version(name: &str, version: Option<f64>) -> Result<(), SceneError> {
     match version {
-        Some(v) if v != f64::from(SCENE_VERSION) => {
+        Some(v) if !(FIRST_SCENE_VERSION..=SCENE_VERSION).any(|known| f64::from(known) == v) => {
             Err(SceneError::UnsupportedVersion { name: name.to_string(), found: number_text(&v) })
         }
         _ => Ok(()),
@@ -510,18 +513,18 @@ mod tests {
         let e = err("{\"segments\": [{\"a\": [0, 0], \"b\": [\"x\", 1], \"typo\": 1}], \"version\": 3}");
         assert_eq!(
             e.to_string(),
-            "t.json: unsupported scene format version 3 (this program reads version 1)"
+            "t.json: unsupported scene format version 3 (this program reads versions 1 to 2)"
         );
-        let e = err("{\"segments\": [{\"a\": [0, 0], \"b\": [1, 1]}], \"version\": \"1\"}");
+        let e = err("{\"segments\": [{\"a\": [0, 0], \"b\": [1, 1]}], \"version\": \"2\"}");
         assert!(
-            matches!(&e, SceneError::UnsupportedVersion { found, .. } if found == "\"1\" (a string)"),
+            matches!(&e, SceneError::UnsupportedVersion { found, .. } if found == "\"2\" (a string)"),
             "{e}"
         );
         let e = err("{\"version\": NaN, \"segments\": [{\"a\": [0, 0], \"b\": [1, 1]}]}");
         assert!(matches!(&e, SceneError::UnsupportedVersion { found, .. } if found == "NaN"), "{e}");
         let e = err("{\"version\": null, \"segments\": [{\"a\": [0, 0], \"b\": [1, 1]}]}");
         assert!(matches!(&e, SceneError::UnsupportedVersion { found, .. } if found == "null"), "{e}");
-        for version in ["1", "1.0"] {
+        for version in ["1", "2", "2.0"] {
             let text =
                 format!("{{\"version\": {version}, \"segments\": [{{\"a\": [0, 0], \"b\": [1, 1]}}]}}");
             assert!(parse(&text, "t.json").is_ok(), "{version}");
