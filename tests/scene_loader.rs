@@ -332,6 +332,18 @@ fn materials_of_version_1_and_2_are_read_alike() {
 }
 
 #[test]
+fn a_file_that_never_ends_is_refused() {
+    let path = std::path::Path::new("/dev/zero");
+    if !path.exists() {
+        return;
+    }
+    let err = Scene::load(path).unwrap_err();
+    assert!(matches!(err, SceneError::TooLarge { limit: MAX_SCENE_BYTES, .. }), "{err:?}");
+    let msg = err.to_string();
+    assert!(msg.starts_with("/dev/zero: the file is larger than 268435456 bytes (256 MiB)"), "{msg}");
+}
+
+#[test]
 fn missing_file_is_an_io_error() {
     let path =
         std::env::temp_dir().join(format!("shelling-scene-{}-does-not-exist.json", std::process::id()));

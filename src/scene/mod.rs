@@ -49,6 +49,7 @@
 //!   such as `"segmnets"` or `"reflectence"` is reported instead of silently ignored. A field
 //!   given twice in the same object is an error too.
 //! * An optional field is either omitted or given a value of its type; `null` is not accepted.
+//! * A file is at most [`MAX_SCENE_BYTES`] (256 MiB) long.
 //!
 //! Every error names the file, the segment where there is one, and the problem in plain words,
 //! for example `scene.json: segment 17: endpoint a has a non-finite coordinate (NaN)`. See
@@ -68,6 +69,7 @@
 //! and every platform.
 
 use std::fmt;
+use std::io::Read;
 use std::path::Path;
 
 use crate::geom::{Segment, Vec2};
@@ -90,6 +92,11 @@ pub const COORD_LIMIT: f64 = 1.0e9;
 
 /// Largest accepted number of segments: segment indices must fit in a `u32`.
 pub const MAX_SEGMENTS: usize = u32::MAX as usize;
+
+/// Largest accepted scene file, in bytes (256 MiB, some ten million segments). The loader reads
+/// no more than this and one byte, so a path such as `/dev/zero` gives an error instead of
+/// filling the memory.
+pub const MAX_SCENE_BYTES: u64 = 256 << 20;
 
 /// The world of the paper's experiments: the half-open square `[0, 1024)²`.
 pub const PAPER_WORLD: Bounds = Bounds { min: Vec2::new(0.0, 0.0), max: Vec2::new(1024.0, 1024.0) };
@@ -219,6 +226,11 @@ pub enum SceneError {
         #[source]
         source: std::io::Error,
     },
+
+    /// The file is longer than [`MAX_SCENE_BYTES`] (or than the limit it was read with), as a
+    /// device such as `/dev/zero` is.
+    #[error("{name}: the file is larger than {}, the limit for a scene file", bytes_text(*.limit))]
+    TooLarge { name: String, limit: u64 },
 
     /// The text is not valid JSON (or not valid UTF-8).
     #[error("{name}: malformed JSON at line {line} column {column}: {message}")]
@@ -355,6 +367,7 @@ impl SceneError {
     pub fn name(&self) -> &str {
         match self {
             SceneError::Io { name, .. }
+            | SceneError::TooLarge { name, .. }
             | SceneError::Malformed { name, .. }
             | SceneError::Truncated { name, .. }
             | SceneError::UnsupportedVersion { name, .. }
@@ -410,16 +423,19 @@ impl Scene {
         parse::parse(text, name)
     }
 
-    /// Reads and parses a scene file. Errors carry the path as given.
+    /// Reads and parses a scene file of at most [`MAX_SCENE_BYTES`]. Errors carry the path as
+    /// given.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
         let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| SceneError::Io {
-            name: name.clone(),
-            action: "read",
-            source,
-        })?;
-        let text = parse::text(bytes, &name)?;
-        parse::parse(&text, &name)
+        let file = std::fs::File::open(path).map_err(|source| parse::read_error(&name, source))?;
+        Scene::from_reader(file, &name)
+    }
+
+    /// Reads and parses a scene from `reader`, reading at most [`MAX_SCENE_BYTES`] and one byte.
+    /// `name` is the file name that errors carry.
+    pub fn from_reader(reader: impl Read, name: &str) -> Result<Scene, SceneError> {
+        let text = parse::read_text(reader, name, MAX_SCENE_BYTES)?;
+        parse::parse(&text, name)
     }
 
     /// The scene as pretty JSON in the current format version, one segment per line, ending with
@@ -599,6 +615,16 @@ fn number_text(x: &f64) -> String {
     }
 }
 
+/// A byte count for an error message: `268435456 bytes (256 MiB)`, or `100 bytes`.
+fn bytes_text(bytes: u64) -> String {
+    const MIB: u64 = 1 << 20;
+    if bytes >= MIB && bytes % MIB == 0 {
+        format!("{bytes} bytes ({} MiB)", bytes / MIB)
+    } else {
+        format!("{bytes} bytes")
+    }
+}
+
 /// A point for an error message: `[5, 5]`.
 fn point_text(p: &Vec2) -> String {
     format!("[{}, {}]", number_text(&p.x), number_text(&p.y))
@@ -625,5 +651,7 @@ mod tests {
         assert_eq!(number_text(&3e12), "3e12");
         assert_eq!(number_text(&COORD_LIMIT), "1e9");
         assert_eq!(number_text(&f64::NAN), "NaN");
+        assert_eq!(bytes_text(MAX_SCENE_BYTES), "268435456 bytes (256 MiB)");
+        assert_eq!(bytes_text(100), "100 bytes");
     }
 }

@@ -7,6 +7,8 @@
 //! syntax error falls on such a token, the loader reports a non-finite value of the field that
 //! holds it instead.
 
+use std::io::Read;
+
 use serde::de::DeserializeOwned;
 use serde_json::error::Category;
 use serde_path_to_error::Segment as Step;
@@ -18,8 +20,19 @@ use super::{
 };
 use crate::geom::Segment;
 
-/// The bytes of a file as text, or an error where they are not UTF-8.
-pub(super) fn text(bytes: Vec<u8>, name: &str) -> Result<String, SceneError> {
+/// The error for a file that cannot be read.
+pub(super) fn read_error(name: &str, source: std::io::Error) -> SceneError {
+    SceneError::Io { name: name.to_string(), action: "read", source }
+}
+
+/// Reads at most `limit` bytes and one from `reader` (so that a device that never ends is
+/// refused instead of filling the memory) and checks that they are UTF-8 text.
+pub(super) fn read_text(reader: impl Read, name: &str, limit: u64) -> Result<String, SceneError> {
+    let mut bytes = Vec::new();
+    reader.take(limit.saturating_add(1)).read_to_end(&mut bytes).map_err(|err| read_error(name, err))?;
+    if bytes.len() as u64 > limit {
+        return Err(SceneError::TooLarge { name: name.to_string(), limit });
+    }
     String::from_utf8(bytes).map_err(|err| {
         let (line, column) = line_column(&err.as_bytes()[..err.utf8_error().valid_up_to()]);
         SceneError::Malformed {
@@ -580,8 +593,21 @@ mod tests {
     }
 
     #[test]
+    fn reading_stops_at_the_limit() {
+        // A reader that never ends.
+        let e = read_text(std::io::repeat(b' '), "endless", 1000).unwrap_err();
+        assert!(matches!(e, SceneError::TooLarge { limit: 1000, .. }), "{e:?}");
+        assert_eq!(e.to_string(), "endless: the file is larger than 1000 bytes, the limit for a scene file");
+        // Exactly at the limit is accepted.
+        let text = "{\"segments\": [{\"a\": [0, 0], \"b\": [1, 1]}]}";
+        assert_eq!(read_text(text.as_bytes(), "t.json", text.len() as u64).unwrap(), text);
+        let over = read_text(text.as_bytes(), "t.json", text.len() as u64 - 1);
+        assert!(matches!(over, Err(SceneError::TooLarge { .. })), "{over:?}");
+    }
+
+    #[test]
     fn text_must_be_utf8() {
-        let e = text(b"{\n  \"a\xff\": 1}".to_vec(), "t.json").unwrap_err();
+        let e = read_text(&b"{\n  \"a\xff\": 1}"[..], "t.json", 100).unwrap_err();
         assert!(matches!(e, SceneError::Malformed { line: 2, column: 5, .. }), "{e:?}");
     }
 }
