@@ -185,9 +185,42 @@ fn unknown_segment_field() {
 
 #[test]
 fn unsupported_version() {
-    let (err, msg) = load_err("version", "{\"version\": 2, \"segments\": [{\"a\": [1, 2], \"b\": [3, 4]}]}");
-    assert!(matches!(&err, SceneError::UnsupportedVersion { found, .. } if found == "2"), "{err:?}");
-    assert!(msg.contains("version 2"), "{msg}");
+    let (err, msg) = load_err("version", "{\"version\": 3, \"segments\": [{\"a\": [1, 2], \"b\": [3, 4]}]}");
+    assert!(matches!(&err, SceneError::UnsupportedVersion { found, .. } if found == "3"), "{err:?}");
+    assert!(msg.contains("version 3"), "{msg}");
+    assert!(msg.contains("reads versions 1 to 2"), "{msg}");
+}
+
+#[test]
+fn unsupported_version_is_reported_before_other_problems() {
+    let text = "{\"segments\": [{\"a\": [1, 2], \"b\": [3, 4], \"colour\": 1}], \"version\": 0}";
+    let (err, _) = load_err("version_last", text);
+    assert!(matches!(&err, SceneError::UnsupportedVersion { found, .. } if found == "0"), "{err:?}");
+}
+
+#[test]
+fn duplicate_field() {
+    let (err, msg) = load_err("duplicate", &with_second("\"a\": [1, 2], \"b\": [3, 4], \"b\": [5, 6]"));
+    assert!(
+        matches!(&err, SceneError::DuplicateField { location: Location::Segment(1), field, .. } if field == "b"),
+        "{err:?}"
+    );
+    assert!(msg.contains("segment 1: field \"b\" is given twice"), "{msg}");
+}
+
+#[test]
+fn null_is_not_an_absent_value() {
+    let (err, msg) = load_err("null", &with_second("\"a\": [1, 2], \"b\": [3, 4], \"emission\": null"));
+    assert!(matches!(&err, SceneError::WrongType { location: Location::Segment(1), .. }), "{err:?}");
+    assert!(msg.contains("segment 1: \"emission\" must be a number, found null"), "{msg}");
+}
+
+#[test]
+fn segment_written_as_an_array_is_a_wrong_type() {
+    let text = "{\"segments\": [{\"a\": [1, 2], \"b\": [3, 4]}, [[1, 2], [3, 4]]]}";
+    let (err, msg) = load_err("array_segment", text);
+    assert!(matches!(&err, SceneError::WrongType { location: Location::Segment(1), .. }), "{err:?}");
+    assert!(msg.contains("segment 1: the segment must be a JSON object, found an array"), "{msg}");
 }
 
 #[test]
@@ -229,6 +262,40 @@ fn reflectance_outside_unit_interval() {
         "{err:?}"
     );
     names_segment(&msg, 1);
+    assert!(msg.contains("segment 1: reflectance 1.5 must be a finite number in [0, 1)"), "{msg}");
+}
+
+/// Loads a scene whose second segment has `field: value` and checks the material error.
+fn bad_material(stem: &str, field: &str, value: &str, shown: &str) {
+    let (err, msg) =
+        load_err(stem, &with_second(&format!("\"a\": [1, 2], \"b\": [3, 4], \"{field}\": {value}")));
+    assert!(
+        matches!(&err, SceneError::BadMaterial { segment: 1, field: f, value: v, .. } if *f == field && v == shown),
+        "{field} {value}: {err:?}"
+    );
+    names_segment(&msg, 1);
+    assert!(msg.contains(&format!("{field} {shown} must be a finite number")), "{msg}");
+}
+
+#[test]
+fn reflectance_one_is_rejected_in_both_versions() {
+    bad_material("reflectance_one", "reflectance", "1", "1");
+    bad_material("reflectance_one_point_zero", "reflectance", "1.0", "1");
+    let text = "{\"version\": 1, \"segments\": [{\"a\": [1, 2], \"b\": [3, 4], \"reflectance\": 1}]}";
+    let (err, _) = load_err("reflectance_one_v1", text);
+    assert!(matches!(&err, SceneError::BadMaterial { segment: 0, field: "reflectance", .. }), "{err:?}");
+}
+
+#[test]
+fn negative_reflectance() {
+    bad_material("reflectance_negative", "reflectance", "-0.25", "-0.25");
+}
+
+#[test]
+fn non_finite_reflectance() {
+    bad_material("reflectance_nan", "reflectance", "NaN", "NaN");
+    bad_material("reflectance_inf", "reflectance", "Infinity", "Infinity");
+    bad_material("reflectance_overflow", "reflectance", "1e400", "1e400");
 }
 
 #[test]
@@ -236,6 +303,44 @@ fn negative_emission() {
     let (err, msg) = load_err("emission", &with_second("\"a\": [1, 2], \"b\": [3, 4], \"emission\": -1"));
     assert!(matches!(&err, SceneError::BadMaterial { segment: 1, field: "emission", .. }), "{err:?}");
     names_segment(&msg, 1);
+    bad_material("emission_negative", "emission", "-0.5", "-0.5");
+}
+
+#[test]
+fn non_finite_emission() {
+    bad_material("emission_nan", "emission", "nan", "nan");
+    bad_material("emission_inf", "emission", "Infinity", "Infinity");
+    bad_material("emission_minus_inf", "emission", "-Infinity", "-Infinity");
+    bad_material("emission_overflow", "emission", "1e400", "1e400");
+}
+
+#[test]
+fn materials_of_version_1_and_2_are_read_alike() {
+    for version in [1, 2] {
+        let text = format!(
+            "{{\"version\": {version}, \"segments\": [{{\"a\": [1, 2], \"b\": [3, 4], \"reflectance\": 0.999, \
+             \"emission\": 250}}, {{\"a\": [5, 6], \"b\": [7, 8]}}]}}"
+        );
+        let scene = Scene::from_json_str(&text, "materials.json").expect("materials");
+        assert_eq!(scene.materials[0], Material { reflectance: Some(0.999), emission: Some(250.0) });
+        assert_eq!(scene.material(1).reflectance_or_default(), DEFAULT_REFLECTANCE);
+        assert_eq!(scene.material(1).emission_or_default(), DEFAULT_EMISSION);
+        let written = scene.to_json();
+        assert!(written.contains(&format!("\"version\": {SCENE_VERSION}")), "{written}");
+        assert_eq!(Scene::from_json_str(&written, "again.json").expect("written"), scene);
+    }
+}
+
+#[test]
+fn a_file_that_never_ends_is_refused() {
+    let path = std::path::Path::new("/dev/zero");
+    if !path.exists() {
+        return;
+    }
+    let err = Scene::load(path).unwrap_err();
+    assert!(matches!(err, SceneError::TooLarge { limit: MAX_SCENE_BYTES, .. }), "{err:?}");
+    let msg = err.to_string();
+    assert!(msg.starts_with("/dev/zero: the file is larger than 268435456 bytes (256 MiB)"), "{msg}");
 }
 
 #[test]
@@ -274,7 +379,7 @@ fn full_shape_round_trips_exactly() {
         "segments": [
             {"a": [0.1, 0.2], "b": [0.30000000000000004, 999.9999999999999], "reflectance": 0.5, "emission": 0.0},
             {"a": [1e-7, 3.141592653589793], "b": [700, 2.718281828459045], "emission": 12.75},
-            {"a": [5, 5], "b": [6, 5], "reflectance": 1}
+            {"a": [5, 5], "b": [6, 5], "reflectance": 0.75}
         ]
     }"#;
     let scene = Scene::from_json_str(text, "full.json").expect("full scene");
@@ -282,7 +387,7 @@ fn full_shape_round_trips_exactly() {
     assert_eq!(scene.segments[0].b.x, 0.30000000000000004);
     assert_eq!(scene.materials[1], Material { reflectance: None, emission: Some(12.75) });
     let json = scene.to_json();
-    assert!(json.contains("\"version\": 1"), "{json}");
+    assert!(json.contains("\"version\": 2"), "{json}");
     let again = Scene::from_json_str(&json, "again.json").expect("written scene loads");
     assert_eq!(again, scene);
     assert_eq!(again.to_json(), json);
