@@ -17,8 +17,8 @@ use serde::Serialize;
 use shelling_hdl::intersection::model::Nearest;
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
-use shelling_testbench::verilated::VerilatedPe;
 use shelling_testbench::pe::{rust_hdl_pe, RustHdlPe};
+use shelling_testbench::verilated::VerilatedPe;
 use shelling_testbench::PeSim;
 use std::path::PathBuf;
 

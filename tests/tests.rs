@@ -1,8 +1,12 @@
+//! Tier 1 of the integration tests: the README's `cargo test --workspace`. Tier 2, the long
+//! equivalence checks, is `tests/tier2/main.rs`.
+
 mod cli;
 mod cosim;
 mod figures;
 mod hardware;
 mod replay;
 mod scene_loader;
+mod support;
 mod tracers;
 mod workstream;

@@ -67,10 +67,10 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 4096-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 8373 LUT4s, 6509 flip-flops, 16 `MULT18X18D`,
-//! 31 `DP16KD`, 244 LUT RAMs; 156.3 MHz on LFE5U-85F-6 (71.8 before the 150 MHz work), its
-//! critical path the screener's `done` counter into its `head_valid` (README, "FPGA resources and
-//! clock rate").
+//! flow's register wrapper, wrapper excluded): 8358 LUT4s, 6509 flip-flops, 16 `MULT18X18D`,
+//! 31 `DP16KD`, 244 LUT RAMs; 142.2 MHz on LFE5U-85F-6 at placement seed 1 (71.8 before the
+//! 150 MHz work), its critical path the screener's stage-7 side flags into `outside8`
+//! (PERFORMANCE.md, "FPGA resources and clock rate").
 //!
 //! # Models
 //!

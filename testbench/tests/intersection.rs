@@ -322,7 +322,7 @@ fn bram_out_model_and_behavioural_verilog_agree() -> Result<()> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut drv = Driver::with_clock(BramOutBench::default(), |b| &mut b.clock)?;
     drv.record_ports()?;
-    let (mut mem, mut r1, mut out) = ([0u64; 16], 0u64, 0u64);
+    let (mut mem, mut r1) = ([0u64; 16], 0u64);
     let mut collisions = 0;
     for cycle in 0..2000 {
         let ra = rng.random_range(0..16u64);
@@ -335,7 +335,7 @@ fn bram_out_model_and_behavioural_verilog_agree() -> Result<()> {
             b.write_data.next = wd.into();
             b.write_enable.next = we;
         })?;
-        out = std::mem::replace(
+        let out = std::mem::replace(
             &mut r1,
             if we && wa == ra {
                 collisions += 1;

@@ -1,0 +1,4 @@
+//! Helpers shared by the test binaries of tier 1 (`tests/tests.rs`) and tier 2
+//! (`tests/tier2/main.rs`).
+
+pub mod replay;

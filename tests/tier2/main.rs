@@ -1,0 +1,7 @@
+//! Tier 2 of the tests (`cargo test --workspace --features tier2 --test tier2`): the long
+//! equivalence checks, which tier 1 (`tests/tests.rs`) represents with short vectors.
+
+#[path = "../support/mod.rs"]
+mod support;
+
+mod replay;
