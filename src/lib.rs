@@ -6,8 +6,9 @@
 //!
 //! This crate is the golden model and the experiments: scenes ([`scene`]), ray bundles
 //! ([`rays`]), the grid with macro-regions ([`grid`]), the four tracers ([`trace`]) with the
-//! paper's counters ([`counters`]), the analytic model of Section 4 ([`model`]) and the
-//! reproduction of Section 5's figures ([`figures`]). [`arith`] swaps the golden `f64` hit test
+//! paper's counters ([`counters`]), the analytic model of Section 4 ([`model`]) the
+//! reproduction of Section 5's figures ([`figures`]) and the radiosity method the paper serves
+//! ([`radiosity`]: form factors and solvers). [`arith`] swaps the golden `f64` hit test
 //! for the bit-true fixed-point model of the RTL (`shelling-hdl`). See `ARCHITECTURE.md` for the data flow.
 
 pub mod agreement;
@@ -18,6 +19,7 @@ pub mod figures;
 pub mod geom;
 pub mod grid;
 pub mod model;
+pub mod radiosity;
 pub mod rays;
 pub mod run;
 pub mod scene;

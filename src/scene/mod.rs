@@ -3,7 +3,8 @@
 //!
 //! The module is split by concern: this file holds the types, the rules of a valid scene and the
 //! public API; `format` the file's structure and the writer; `parse` the loader (text to file
-//! structures to [`Scene`], with every error placed); `gen` the random generator [`generate`].
+//! structures to [`Scene`], with every error placed); `gen` the random generator [`generate`]; `room` the closed rooms of the radiosity
+//! experiments ([`room`]).
 //!
 //! # The scene format, version 2
 //!
@@ -77,8 +78,10 @@ use crate::geom::{Segment, Vec2};
 mod format;
 mod gen;
 mod parse;
+mod room;
 
 pub use gen::generate;
+pub use room::{room, RoomError, RoomSpec, MAX_ROOM_PATCHES};
 
 /// The scene format version this module writes.
 pub const SCENE_VERSION: u32 = 2;

@@ -1,0 +1,102 @@
+//! Form-factor rows computed on the RTL processing element: every bundle of a row scheduled by
+//! the shell scheduler, co-simulated ([`crate::cosim`]), its hits checked against the bit-true
+//! model (by the co-simulation) and against the `f64` golden model within the documented bound
+//! (rung 2, [`crate::agreement`]), and the row built from the PE's own hits. The PE's cycles add
+//! up over the solve.
+//!
+//! Each bundle runs on a fresh PE, so a patch cache starts cold for every bundle (a whole solve
+//! on one PE would keep it warm between the bundles of a row; the figures here are the upper
+//! bound).
+
+use super::form_factors::{bundles, FfError, FfParams, Row, RowBuilder};
+use crate::agreement;
+use crate::cosim::{self, CosimConfig, CosimError};
+use crate::run::{Prepared, RunError};
+use crate::trace::{Method, TraceError};
+
+/// The post-route clock rate assumed for the solve's time unless another is given: the PE on
+/// ECP5 LFE5U-85F-6 at placement seed 1, as measured in PERFORMANCE.md (one seed only).
+pub const PE_CLOCK_MHZ: f64 = 142.2;
+
+/// The hardware's side of a solve: the sums over every bundle co-simulated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct PeTotals {
+    /// Form-factor rows computed on the PE.
+    pub rows: usize,
+    /// Bundles co-simulated (rows × origins).
+    pub bundles: usize,
+    /// Rays traced.
+    pub rays: usize,
+    /// PE cycles, summed over the bundles.
+    pub cycles: u64,
+    /// Cycles the intersection unit tested a live ray.
+    pub intersection_busy_cycles: u64,
+    pub patch_loads: u64,
+    pub cache_hits: u64,
+    pub tests: u64,
+    /// Rays whose nearest patch on the PE equals the `f64` golden model's (the rest differ
+    /// within the documented bound).
+    pub golden_agree: usize,
+}
+
+/// What keeps a row from being computed on the PE.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum OnPeError {
+    #[error("--method brute has no hardware mapping: use conventional, stochastic or deterministic")]
+    Brute,
+    #[error(transparent)]
+    Ff(#[from] FfError),
+    #[error(transparent)]
+    Cosim(#[from] CosimError),
+    #[error("source patch {source_patch}: the PE's hits differ from the f64 golden model beyond the documented bound on {rays} rays")]
+    BeyondBound { source_patch: usize, rays: usize },
+}
+
+impl From<RunError> for OnPeError {
+    fn from(e: RunError) -> Self {
+        OnPeError::Ff(FfError::Run(e))
+    }
+}
+
+impl From<TraceError> for OnPeError {
+    fn from(e: TraceError) -> Self {
+        OnPeError::Ff(FfError::Run(RunError::Trace(e)))
+    }
+}
+
+/// The row of source patch `k` from the PE's hits (`p.arith` is not read: the PE's arithmetic is
+/// the fixed point); the hardware's counts are added to `totals`.
+pub fn row(
+    prepared: &Prepared,
+    k: usize,
+    p: &FfParams,
+    config: &CosimConfig,
+    totals: &mut PeTotals,
+) -> Result<Row, OnPeError> {
+    if p.method == Method::Brute {
+        return Err(OnPeError::Brute);
+    }
+    let mut builder = RowBuilder::new(prepared.scene.len(), p);
+    for bundle in bundles(prepared, k, p)? {
+        let scheduled = prepared.schedule(p.method, &bundle, &p.shells)?;
+        let run = cosim::run(&scheduled, config, |_, _| {})?;
+        let golden = prepared.trace(p.method, &bundle, &p.shells)?;
+        let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &golden, &scheduled.trace);
+        let beyond = rung2.beyond_bound().count();
+        if beyond > 0 {
+            return Err(OnPeError::BeyondBound { source_patch: k, rays: beyond });
+        }
+        builder.add_patches(run.hits.iter().map(|h| h.map(|n| n.id as usize)));
+        let h = &run.hardware;
+        totals.bundles += 1;
+        totals.rays += bundle.len();
+        totals.cycles += h.cycles;
+        totals.intersection_busy_cycles += h.intersection_busy_cycles;
+        totals.patch_loads += h.patch_loads;
+        totals.cache_hits += h.cache_hits;
+        totals.tests += h.tests;
+        totals.golden_agree += rung2.agree;
+    }
+    totals.rows += 1;
+    Ok(builder.finish(k))
+}
