@@ -11,11 +11,13 @@ use shelling::geom::Vec2;
 use shelling::grid::GridParams;
 use shelling::rays::{Bundle, RaySet, Source};
 use shelling::run::{Prepared, TraceJson};
-use shelling::scene::{self, Scene};
+use shelling::scene::{self, RoomSpec, Scene};
 use shelling::trace::{Method, ShellParams};
 use shelling_testbench::pe::{ModelCounts, PeCounters};
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+mod radiosity_cli;
 
 #[derive(Parser)]
 #[command(
@@ -35,7 +37,7 @@ struct Cli {
 enum Command {
     /// Run the golden model on the built-in default scene and print the counters table.
     Demo(DemoArgs),
-    /// Scene files: generate the paper's workload.
+    /// Scene files: generate the paper's workload or a closed room.
     Scene {
         #[command(subcommand)]
         command: SceneCommand,
@@ -52,6 +54,12 @@ enum Command {
     /// the shell scheduler, every hit checked against the bit-true model and the f64 golden
     /// model, with hardware cycle counts.
     Cosim(CosimArgs),
+    /// Form factors F_ij of a scene's patches from the tracers' bundles: one row (--source), a
+    /// slice of the matrix into a file (--rows), or the merge of slices (--merge).
+    FormFactors(radiosity_cli::FormFactorsArgs),
+    /// Solve a scene's radiosity (progressive refinement or a full solve), optionally with every
+    /// form-factor row computed on the RTL processing element (--on-pe).
+    Radiosity(radiosity_cli::RadiosityArgs),
     /// Write the Verilog of every RTL block (one file per block, module named after it) and a
     /// file list `files.f`, for Yosys, nextpnr or vendor tools.
     ExportVerilog(ExportArgs),
@@ -82,24 +90,108 @@ struct AgreementArgs {
 
 #[derive(Subcommand)]
 enum SceneCommand {
-    /// Write N random segments of length L inside [0, 1024)², seeded and reproducible.
+    /// Write a scene, seeded and reproducible: N random segments of length L inside [0, 1024)²
+    /// (--kind paper), or a closed room for radiosity (--kind room).
     Gen(GenArgs),
+}
+
+/// What `scene gen` generates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum SceneKind {
+    /// The paper's workload: random segments of one length in [0, 1024)².
+    Paper,
+    /// A closed room for radiosity: walls split into patches facing in, boxes, lights.
+    Room,
 }
 
 #[derive(Args)]
 struct GenArgs {
-    /// Number of segments (at least 1).
-    #[arg(long, default_value_t = 1000, allow_negative_numbers = true)]
-    count: usize,
-    /// Length of every segment, in world units (positive, less than 1024).
-    #[arg(long, default_value_t = 32.0, allow_negative_numbers = true)]
-    length: f64,
+    /// What to generate.
+    #[arg(long, value_enum, default_value_t = SceneKind::Paper)]
+    kind: SceneKind,
+    /// Paper: number of segments (at least 1; default 1000).
+    #[arg(long, allow_negative_numbers = true)]
+    count: Option<usize>,
+    /// Paper: length of every segment, in world units (positive, less than 1024; default 32).
+    #[arg(long, allow_negative_numbers = true)]
+    length: Option<f64>,
+    /// Room: inner width (default 256).
+    #[arg(long, allow_negative_numbers = true)]
+    width: Option<f64>,
+    /// Room: inner height (default 256).
+    #[arg(long, allow_negative_numbers = true)]
+    height: Option<f64>,
+    /// Room: longest patch; walls and box sides are split into equal patches (default 8).
+    #[arg(long, allow_negative_numbers = true)]
+    patch_length: Option<f64>,
+    /// Room: square boxes inside, placed at random by --seed (default 2).
+    #[arg(long, allow_negative_numbers = true)]
+    boxes: Option<usize>,
+    /// Room: side of each box (default 48).
+    #[arg(long, allow_negative_numbers = true)]
+    box_size: Option<f64>,
+    /// Room: emissive patches in the middle of the ceiling (default 2).
+    #[arg(long, allow_negative_numbers = true)]
+    lights: Option<usize>,
+    /// Room: emission of each light, radiant exitance (default 1).
+    #[arg(long, allow_negative_numbers = true)]
+    emission: Option<f64>,
+    /// Room: reflectance of every patch, in [0, 1) (default 0.5).
+    #[arg(long, allow_negative_numbers = true)]
+    reflectance: Option<f64>,
     /// Seed of the random generator: the same seed gives the same scene on every machine.
     #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
     seed: u64,
     /// Output file; standard output when absent.
     #[arg(long)]
     out: Option<PathBuf>,
+}
+
+impl GenArgs {
+    /// The scene asked for; an option of the other kind is an error, not silently ignored.
+    fn generate(&self) -> Result<Scene> {
+        let room_given = [
+            ("--width", self.width.is_some()),
+            ("--height", self.height.is_some()),
+            ("--patch-length", self.patch_length.is_some()),
+            ("--boxes", self.boxes.is_some()),
+            ("--box-size", self.box_size.is_some()),
+            ("--lights", self.lights.is_some()),
+            ("--emission", self.emission.is_some()),
+            ("--reflectance", self.reflectance.is_some()),
+        ];
+        let paper_given = [("--count", self.count.is_some()), ("--length", self.length.is_some())];
+        let (other, kind) = match self.kind {
+            SceneKind::Paper => (&room_given[..], "room"),
+            SceneKind::Room => (&paper_given[..], "paper"),
+        };
+        if let Some((option, _)) = other.iter().find(|(_, given)| *given) {
+            bail!("{option} belongs to --kind {kind}, not to the --kind you asked for");
+        }
+        Ok(match self.kind {
+            SceneKind::Paper => {
+                let count = self.count.unwrap_or(1000);
+                if count == 0 {
+                    bail!("--count must be at least 1, got 0");
+                }
+                scene::generate(count, self.length.unwrap_or(32.0), self.seed, scene::PAPER_WORLD)?
+            }
+            SceneKind::Room => {
+                let d = RoomSpec::default();
+                scene::room(&RoomSpec {
+                    width: self.width.unwrap_or(d.width),
+                    height: self.height.unwrap_or(d.height),
+                    patch_length: self.patch_length.unwrap_or(d.patch_length),
+                    boxes: self.boxes.unwrap_or(d.boxes),
+                    box_size: self.box_size.unwrap_or(d.box_size),
+                    lights: self.lights.unwrap_or(d.lights),
+                    emission: self.emission.unwrap_or(d.emission),
+                    reflectance: self.reflectance.unwrap_or(d.reflectance),
+                    seed: self.seed,
+                })?
+            }
+        })
+    }
 }
 
 /// Options shared by every command that traces: the grid and the shell structure.
@@ -356,10 +448,7 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Demo(a) => demo(a),
         Command::Scene { command: SceneCommand::Gen(a) } => {
-            if a.count == 0 {
-                bail!("--count must be at least 1, got 0");
-            }
-            let s = scene::generate(a.count, a.length, a.seed, scene::PAPER_WORLD)?;
+            let s = a.generate()?;
             match a.out {
                 Some(path) => s.save(&path)?,
                 None => println!("{}", s.to_json()),
@@ -368,6 +457,8 @@ fn run(cli: Cli) -> Result<()> {
         }
         Command::Trace(a) => trace_cmd(a),
         Command::Cosim(a) => cosim_cmd(a),
+        Command::FormFactors(a) => radiosity_cli::form_factors_cmd(a),
+        Command::Radiosity(a) => radiosity_cli::radiosity_cmd(a),
         Command::ExportVerilog(a) => {
             let paths =
                 shelling_testbench::export::write(&a.out).map_err(|e| anyhow::anyhow!("{}", e.message()))?;

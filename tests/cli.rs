@@ -13,17 +13,17 @@ const METHODS: [&str; 4] = ["brute", "conventional", "stochastic", "deterministi
 
 /// A fresh directory under the system's temporary directory, named after the test and the process,
 /// removed when dropped.
-struct TempDir(PathBuf);
+pub(crate) struct TempDir(PathBuf);
 
 impl TempDir {
-    fn new(test: &str) -> TempDir {
+    pub(crate) fn new(test: &str) -> TempDir {
         let path = std::env::temp_dir().join(format!("shelling-cli-{test}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&path);
         std::fs::create_dir_all(&path).expect("cannot create the temporary directory");
         TempDir(path)
     }
 
-    fn join(&self, name: &str) -> PathBuf {
+    pub(crate) fn join(&self, name: &str) -> PathBuf {
         self.0.join(name)
     }
 }
@@ -34,7 +34,7 @@ impl Drop for TempDir {
     }
 }
 
-fn path_arg(p: &Path) -> &str {
+pub(crate) fn path_arg(p: &Path) -> &str {
     p.to_str().expect("temporary path is not UTF-8")
 }
 
@@ -48,7 +48,7 @@ fn text(bytes: &[u8]) -> String {
 }
 
 /// Runs `args`, asserts success, and returns standard output.
-fn ok(args: &[&str]) -> String {
+pub(crate) fn ok(args: &[&str]) -> String {
     let out = shelling(args);
     let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
     assert!(out.status.success(), "shelling {args:?} failed ({}):\n{stderr}", out.status);
@@ -58,7 +58,7 @@ fn ok(args: &[&str]) -> String {
 
 /// Runs `args`, asserts a clean failure (non-zero exit, no panic, nothing on standard output, a
 /// message on standard error containing every string of `expect`), and returns standard error.
-fn fails(args: &[&str], expect: &[&str]) -> String {
+pub(crate) fn fails(args: &[&str], expect: &[&str]) -> String {
     let out = shelling(args);
     let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
     assert!(!out.status.success(), "shelling {args:?} should fail; stdout:\n{stdout}");
@@ -80,7 +80,7 @@ fn gen_scene(dir: &TempDir, name: &str, count: usize, length: f64, seed: u64) ->
     path
 }
 
-fn parse_json(stdout: &str, what: &str) -> Value {
+pub(crate) fn parse_json(stdout: &str, what: &str) -> Value {
     serde_json::from_str(stdout).unwrap_or_else(|e| panic!("{what}: stdout is not JSON ({e}):\n{stdout}"))
 }
 

@@ -86,6 +86,9 @@ pub enum FfError {
     Source(#[from] SourceError),
     #[error(transparent)]
     Run(#[from] RunError),
+    /// A solve that computes its rows as it goes ends with the solver's error.
+    #[error(transparent)]
+    Solve(#[from] super::solve::SolveError),
 }
 
 /// One row of the form-factor matrix: `F_ij` of source `i` to every patch `j` it sees,

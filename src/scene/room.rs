@@ -106,7 +106,7 @@ pub fn room(spec: &RoomSpec) -> Result<Scene, RoomError> {
             "positive and less than half the shorter side of the room",
         )?;
     }
-    let splits = |len: f64| (len / pl).ceil() as usize;
+    let splits = |len: f64| ((len / pl).ceil() as usize).max(1);
     let ceiling = splits(width);
     range(
         "--lights",
@@ -124,7 +124,8 @@ pub fn room(spec: &RoomSpec) -> Result<Scene, RoomError> {
     let corners =
         [Vec2::new(0.0, 0.0), Vec2::new(width, 0.0), Vec2::new(width, height), Vec2::new(0.0, height)];
     let ceiling_start = splits(width) + splits(height);
-    polygon(&corners, pl, &mut segments);
+    let (nw, nh) = (splits(width), splits(height));
+    polygon(&corners, &[nw, nh, nw, nh], &mut segments);
     // The boxes: clockwise, so that their front sides face out.
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let gap = pl.max(box_size / 4.0);
@@ -154,7 +155,7 @@ pub fn room(spec: &RoomSpec) -> Result<Scene, RoomError> {
         let c = corner;
         polygon(
             &[c, Vec2::new(c.x, c.y + s), Vec2::new(c.x + s, c.y + s), Vec2::new(c.x + s, c.y)],
-            pl,
+            &[splits(box_size); 4],
             &mut segments,
         );
     }
@@ -169,12 +170,12 @@ pub fn room(spec: &RoomSpec) -> Result<Scene, RoomError> {
     Ok(scene)
 }
 
-/// Appends the closed polygon through `corners` (in order, back to the first), each side split
-/// into equal patches no longer than `pl`.
-fn polygon(corners: &[Vec2], pl: f64, out: &mut Vec<Segment>) {
+/// Appends the closed polygon through `corners` (in order, back to the first), side `k` split
+/// into `counts[k]` equal patches.
+fn polygon(corners: &[Vec2], counts: &[usize], out: &mut Vec<Segment>) {
     for (k, &a) in corners.iter().enumerate() {
         let b = corners[(k + 1) % corners.len()];
-        let n = ((b - a).length() / pl).ceil().max(1.0) as usize;
+        let n = counts[k];
         let point = |i: usize| if i == n { b } else { a + (b - a) * (i as f64 / n as f64) };
         out.extend((0..n).map(|i| Segment::new(point(i), point(i + 1))));
     }

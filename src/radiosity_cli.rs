@@ -1,0 +1,494 @@
+//! The radiosity commands of the command line: `form-factors` and `radiosity` (RADIOSITY.md).
+
+use super::TuneArgs;
+use anyhow::{bail, Context, Result};
+use clap::{ArgGroup, Args, ValueEnum};
+use shelling::arith::Arith;
+use shelling::cosim::{CosimConfig, Engine};
+use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
+use shelling::radiosity::matrix::{self, MatrixFile};
+use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ};
+use shelling::radiosity::solve::{self, Solution, Surfaces};
+use shelling::rays::{RaySet, MAX_RAYS};
+use shelling::run::Prepared;
+use shelling::scene::{self, RoomSpec, Scene};
+use shelling::trace::Method;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+/// How each form-factor row is estimated.
+#[derive(Args, Clone)]
+pub struct FfArgs {
+    /// Rays per origin (1 to 1048576).
+    #[arg(long, default_value_t = DEFAULT_RAYS, allow_negative_numbers = true)]
+    rays: usize,
+    /// Origins per source patch, stratified along it (1 to 4096); 1 is the paper's centre.
+    #[arg(long, default_value_t = DEFAULT_ORIGINS, allow_negative_numbers = true)]
+    origins: usize,
+    /// Ray set: `sine` (each ray carries form factor 1/R) or `angle` (each ray its cell's).
+    #[arg(long, value_enum, default_value_t = RaySet::Sine)]
+    ray_set: RaySet,
+    /// Tracing technique (all give the same form factors in f64).
+    #[arg(long, value_enum, default_value_t = Method::Deterministic)]
+    method: Method,
+    /// Arithmetic of the hit tests: `float` or `fixed` (the RTL's bit-true model).
+    #[arg(long, value_enum, default_value_t = Arith::Float)]
+    arith: Arith,
+}
+
+impl FfArgs {
+    fn params(&self, tune: &TuneArgs) -> Result<FfParams> {
+        if self.rays == 0 || self.rays > MAX_RAYS {
+            bail!("--rays must be between 1 and {MAX_RAYS}, got {}", self.rays);
+        }
+        if self.origins == 0 || self.origins > MAX_ORIGINS {
+            bail!("--origins must be between 1 and {MAX_ORIGINS}, got {}", self.origins);
+        }
+        Ok(FfParams {
+            rays: self.rays,
+            origins: self.origins,
+            ray_set: self.ray_set,
+            method: self.method,
+            arith: self.arith,
+            shells: tune.shells()?,
+        })
+    }
+}
+
+#[derive(Args)]
+#[command(group(ArgGroup::new("what").args(["source", "rows", "merge"]).required(true)))]
+pub struct FormFactorsArgs {
+    /// Scene file (JSON, see SCENES.md); not used with --merge.
+    #[arg(long, required_unless_present = "merge", conflicts_with = "merge")]
+    scene: Option<PathBuf>,
+    /// One row: the form factors from source patch K.
+    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    source: Option<usize>,
+    /// The rows A..B (sources A to B−1) as a matrix slice file (RADIOSITY.md); `..` alone is
+    /// every row.
+    #[arg(long, value_name = "A..B", value_parser = parse_rows, requires = "out")]
+    rows: Option<RowsArg>,
+    /// Merge matrix slice files (comma separated) into one matrix file (--out).
+    #[arg(long, value_name = "FILES", value_delimiter = ',', num_args = 1.., requires = "out",
+          conflicts_with_all = ["rays", "origins", "ray_set", "method", "arith", "cells_per_segment", "shell_depth", "max_sector"])]
+    merge: Vec<PathBuf>,
+    /// Output file of --rows and --merge.
+    #[arg(long, value_name = "FILE")]
+    out: Option<PathBuf>,
+    /// With --source: print the row as JSON.
+    #[arg(long)]
+    json: bool,
+    /// No progress bar.
+    #[arg(long)]
+    quiet: bool,
+    #[command(flatten)]
+    ff: FfArgs,
+    #[command(flatten)]
+    tune: TuneArgs,
+}
+
+/// `A..B`, `A..` or `..B` (open ends: the first and the last row).
+#[derive(Clone, Copy, Debug)]
+pub struct RowsArg {
+    from: Option<usize>,
+    to: Option<usize>,
+}
+
+fn parse_rows(s: &str) -> Result<RowsArg, String> {
+    let (a, b) = s.split_once("..").ok_or_else(|| format!("expected A..B (such as 0..100), got {s:?}"))?;
+    let num = |t: &str| -> Result<Option<usize>, String> {
+        let t = t.trim();
+        if t.is_empty() {
+            return Ok(None);
+        }
+        t.parse().map(Some).map_err(|_| format!("{t:?} is not a row number (in {s:?})"))
+    };
+    Ok(RowsArg { from: num(a)?, to: num(b)? })
+}
+
+impl RowsArg {
+    fn resolve(self, patches: usize) -> Result<Range<usize>> {
+        let (a, b) = (self.from.unwrap_or(0), self.to.unwrap_or(patches));
+        if a >= b || b > patches {
+            bail!("--rows {a}..{b} must be a non-empty range within the scene's 0..{patches}");
+        }
+        Ok(a..b)
+    }
+}
+
+#[derive(serde::Serialize)]
+struct RowJson<'a> {
+    source: usize,
+    rays: usize,
+    origins: usize,
+    ray_set: RaySet,
+    method: Method,
+    arith: Arith,
+    #[serde(rename = "form_factors")]
+    entries: &'a [form_factors::Entry],
+    sum: f64,
+}
+
+fn progress_bar(len: usize, what: &str, quiet: bool) -> indicatif::ProgressBar {
+    if quiet {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(len as u64);
+    let template = format!("{{bar:40}} {{pos}}/{{len}} {what} {{elapsed}} {{msg}}");
+    if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
+        bar.set_style(style);
+    }
+    bar
+}
+
+/// Writes `text` to `path` through a temporary file beside it, renamed on success, so a failed
+/// write leaves nothing behind.
+fn write_file(path: &Path, text: &str) -> Result<()> {
+    let mut tmp = path.as_os_str().to_owned();
+    tmp.push(".partial");
+    let tmp = PathBuf::from(tmp);
+    let done = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, path));
+    if let Err(e) = done {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e).with_context(|| format!("writing {}", path.display()));
+    }
+    Ok(())
+}
+
+pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
+    if !a.merge.is_empty() {
+        let slices = a
+            .merge
+            .iter()
+            .map(|p| Ok((p.display().to_string(), MatrixFile::load(p)?)))
+            .collect::<Result<Vec<_>>>()?;
+        let whole = matrix::merge(slices)?;
+        let out = a.out.as_deref().expect("clap requires --out");
+        write_file(out, &whole.to_json())?;
+        println!("{}: {} rows of {} merged", out.display(), whole.rows.len(), whole.scene.patches);
+        return Ok(());
+    }
+    let path = a.scene.as_deref().expect("clap requires --scene");
+    let params = a.ff.params(&a.tune)?;
+    let prepared = Prepared::new(Scene::load(path)?, a.tune.grid()?);
+    if let Some(k) = a.source {
+        let row = form_factors::row(&prepared, k, &params)?;
+        if a.json {
+            let json = RowJson {
+                source: k,
+                rays: params.rays,
+                origins: params.origins,
+                ray_set: params.ray_set,
+                method: params.method,
+                arith: params.arith,
+                entries: &row.entries,
+                sum: row.sum(),
+            };
+            println!("{}", serde_json::to_string_pretty(&json)?);
+        } else {
+            println!(
+                "form factors from patch {k} ({} origins × {} {} rays, {}, {}): {} patches seen, sum {:.6}",
+                params.origins,
+                params.rays,
+                params.ray_set,
+                params.method,
+                params.arith,
+                row.entries.len(),
+                row.sum()
+            );
+            let mut top = row.entries.clone();
+            top.sort_by(|x, y| y.ff.total_cmp(&x.ff));
+            println!("{:>8}{:>14}", "patch", "F");
+            for e in top.iter().take(10) {
+                println!("{:>8}{:>14.6}", e.patch, e.ff);
+            }
+        }
+        return Ok(());
+    }
+    let range =
+        a.rows.expect("clap requires one of --source, --rows, --merge").resolve(prepared.scene.len())?;
+    let bar = progress_bar(range.len(), "rows", a.quiet);
+    let rows = form_factors::rows(&prepared, range.clone(), &params, || bar.inc(1));
+    bar.finish_and_clear();
+    let file = MatrixFile::new(&prepared.scene, &params, range.start, rows?);
+    let out = a.out.as_deref().expect("clap requires --out");
+    write_file(out, &file.to_json())?;
+    println!(
+        "{}: rows {}..{} of {} ({} form factors)",
+        out.display(),
+        file.rows_from,
+        file.rows_to,
+        file.scene.patches,
+        file.rows.iter().map(|r| r.entries.len()).sum::<usize>()
+    );
+    Ok(())
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Solver {
+    /// Progressive refinement: shoot the patch of most unshot power, one row per step.
+    Progressive,
+    /// Gauss–Seidel over the whole form-factor matrix.
+    Full,
+}
+
+#[derive(Args)]
+pub struct RadiosityArgs {
+    /// Scene file (JSON, see SCENES.md); default: the default room of `scene gen --kind room`.
+    #[arg(long)]
+    scene: Option<PathBuf>,
+    /// The solver.
+    #[arg(long, value_enum, default_value_t = Solver::Progressive)]
+    solver: Solver,
+    /// When to stop, in [1e-12, 1): the unshot power over the emitted power (progressive), the
+    /// relative residual (full).
+    #[arg(long, default_value_t = 1e-3, allow_negative_numbers = true)]
+    tolerance: f64,
+    /// The most steps (shots or sweeps), 1 to 10^7; reaching it is an error.
+    #[arg(long, default_value_t = 100_000, allow_negative_numbers = true)]
+    max_steps: usize,
+    /// A form-factor matrix file of the scene (form-factors --rows/--merge) for the full solver,
+    /// instead of tracing.
+    #[arg(long, value_name = "FILE",
+          conflicts_with_all = ["rays", "origins", "ray_set", "method", "arith", "on_pe", "cells_per_segment", "shell_depth", "max_sector"])]
+    matrix: Option<PathBuf>,
+    /// Compute every form-factor row on the RTL processing element (co-simulated, every hit
+    /// checked), and report the PE's cycles of the whole solve.
+    #[arg(long, conflicts_with = "arith")]
+    on_pe: bool,
+    /// With --on-pe: host memory cycles per patch (T_c, 1 to 1024).
+    #[arg(long, default_value_t = 1, requires = "on_pe")]
+    tc: u32,
+    /// With --on-pe: the PE's patch cache, in patches (a power of two up to 4096).
+    #[arg(long, value_name = "PATCHES", requires = "on_pe")]
+    cache: Option<u32>,
+    /// With --on-pe: the PE's simulator (auto: Verilator where installed).
+    #[arg(long, value_enum, default_value_t = Engine::Auto, requires = "on_pe")]
+    engine: Engine,
+    /// With --on-pe: the clock rate of the solve's time, in MHz (default: the PE's post-route
+    /// rate on ECP5 in PERFORMANCE.md).
+    #[arg(long, default_value_t = PE_CLOCK_MHZ, requires = "on_pe")]
+    clock_mhz: f64,
+    /// Print the solution as JSON.
+    #[arg(long)]
+    json: bool,
+    /// Draw the scene coloured by radiosity and the convergence curve into FILE (SVG).
+    #[arg(long, value_name = "FILE")]
+    svg: Option<PathBuf>,
+    /// No progress bar.
+    #[arg(long)]
+    quiet: bool,
+    #[command(flatten)]
+    ff: FfArgs,
+    #[command(flatten)]
+    tune: TuneArgs,
+}
+
+#[derive(serde::Serialize)]
+struct PatchJson {
+    index: usize,
+    radiosity: f64,
+}
+
+#[derive(serde::Serialize)]
+struct HardwareJson {
+    engine: &'static str,
+    method: Method,
+    tc: u32,
+    cache: Option<u32>,
+    #[serde(flatten)]
+    totals: PeTotals,
+    clock_mhz: f64,
+    /// The PE's cycles at `clock_mhz`.
+    seconds: f64,
+}
+
+#[derive(serde::Serialize)]
+struct SolutionJson {
+    scene: String,
+    solver: Solver,
+    patches: Vec<PatchJson>,
+    steps: usize,
+    unshot: f64,
+    emitted: f64,
+    absorbed: f64,
+    /// Form-factor rows computed.
+    rows: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    hardware: Option<HardwareJson>,
+}
+
+pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
+    if !(solve::MIN_TOLERANCE..1.0).contains(&a.tolerance) {
+        bail!("--tolerance must be a number in [1e-12, 1), got {}", a.tolerance);
+    }
+    if a.max_steps == 0 || a.max_steps > 10_000_000 {
+        bail!("--max-steps must be between 1 and 10000000, got {}", a.max_steps);
+    }
+    if a.matrix.is_some() && a.solver != Solver::Full {
+        bail!("--matrix needs --solver full: progressive refinement computes its rows as it shoots");
+    }
+    if a.on_pe {
+        if a.ff.method == Method::Brute {
+            bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
+        }
+        if a.tc == 0 || a.tc > 1024 {
+            bail!("--tc must be between 1 and 1024 cycles per patch, got {}", a.tc);
+        }
+        if let Some(c) = a.cache {
+            if !c.is_power_of_two() || c > 4096 {
+                bail!("--cache must be a power of two up to 4096, got {c}");
+            }
+        }
+        if !(a.clock_mhz.is_finite() && a.clock_mhz > 0.0 && a.clock_mhz <= 10_000.0) {
+            bail!("--clock-mhz must be a positive number up to 10000, got {}", a.clock_mhz);
+        }
+    }
+    let (scene, name) = match &a.scene {
+        Some(p) => (Scene::load(p)?, p.display().to_string()),
+        None => (scene::room(&RoomSpec::default())?, "the default room".to_string()),
+    };
+    let surfaces = Surfaces::of(&scene, &name)?;
+    let mut params = a.ff.params(&a.tune)?;
+    if a.on_pe {
+        params.arith = Arith::Fixed;
+    }
+    let prepared = Prepared::new(scene, a.tune.grid()?);
+    let engine = a.engine.resolve(false);
+    let config = CosimConfig { tc: a.tc, cache: a.cache, vcd: None, engine };
+    let mut totals = PeTotals::default();
+    let mut row = |k: usize| -> Result<Row> {
+        Ok(if a.on_pe {
+            on_pe::row(&prepared, k, &params, &config, &mut totals)?
+        } else {
+            form_factors::row(&prepared, k, &params)?
+        })
+    };
+
+    let solution: Solution = match a.solver {
+        Solver::Progressive => {
+            let bar = progress_bar(0, "shots", a.quiet);
+            bar.set_length(a.max_steps as u64);
+            let mut shots = 0u64;
+            let s = solve::progressive(&surfaces, a.tolerance, a.max_steps, |k| {
+                shots += 1;
+                bar.set_position(shots);
+                row(k)
+            });
+            bar.finish_and_clear();
+            s?
+        }
+        Solver::Full => {
+            let rows: Vec<Row> = match &a.matrix {
+                Some(path) => {
+                    let m = MatrixFile::load(path)?;
+                    m.check_scene(&prepared.scene, &path.display().to_string(), &name)?;
+                    if !m.is_whole() {
+                        bail!(
+                            "{}: holds rows {}..{} of {}: merge the slices first (form-factors --merge)",
+                            path.display(),
+                            m.rows_from,
+                            m.rows_to,
+                            m.scene.patches
+                        );
+                    }
+                    m.rows
+                }
+                None if a.on_pe => {
+                    let bar = progress_bar(prepared.scene.len(), "rows on the PE", a.quiet);
+                    let rows = (0..prepared.scene.len())
+                        .map(|k| {
+                            bar.inc(1);
+                            row(k)
+                        })
+                        .collect::<Result<Vec<_>>>();
+                    bar.finish_and_clear();
+                    rows?
+                }
+                None => {
+                    let bar = progress_bar(prepared.scene.len(), "rows", a.quiet);
+                    let rows = form_factors::rows(&prepared, 0..prepared.scene.len(), &params, || bar.inc(1));
+                    bar.finish_and_clear();
+                    rows?
+                }
+            };
+            solve::full(&surfaces, &rows, a.tolerance, a.max_steps)?
+        }
+    };
+
+    let hardware = a.on_pe.then(|| HardwareJson {
+        engine: engine.name(),
+        method: params.method,
+        tc: a.tc,
+        cache: a.cache,
+        totals,
+        clock_mhz: a.clock_mhz,
+        seconds: totals.cycles as f64 / (a.clock_mhz * 1e6),
+    });
+    if let Some(path) = &a.svg {
+        let what = match a.solver {
+            Solver::Progressive => "unshot / emitted",
+            Solver::Full => "relative residual",
+        };
+        let title = format!("radiosity of {name} ({:?} solver)", a.solver).to_lowercase();
+        let svg = shelling::radiosity::svg::render(&prepared.scene, &solution, &title, what)
+            .map_err(anyhow::Error::msg)?;
+        write_file(path, &svg)?;
+    }
+    if a.json {
+        let json = SolutionJson {
+            scene: name,
+            solver: a.solver,
+            patches: solution
+                .radiosity
+                .iter()
+                .enumerate()
+                .map(|(index, &radiosity)| PatchJson { index, radiosity })
+                .collect(),
+            steps: solution.steps,
+            unshot: solution.unshot,
+            emitted: solution.emitted,
+            absorbed: solution.absorbed,
+            rows: solution.rows.len(),
+            hardware,
+        };
+        println!("{}", serde_json::to_string_pretty(&json)?);
+        return Ok(());
+    }
+    let (lo, hi) =
+        solution.radiosity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &b| (l.min(b), h.max(b)));
+    println!(
+        "{name}: {} patches, {} solver, {} steps, {} form-factor rows ({} origins × {} {} rays, {})",
+        prepared.scene.len(),
+        format!("{:?}", a.solver).to_lowercase(),
+        solution.steps,
+        solution.rows.len(),
+        params.origins,
+        params.rays,
+        params.ray_set,
+        params.method
+    );
+    println!(
+        "radiosity {lo:.6} to {hi:.6}; left {:.3e}; emitted {:.6}, absorbed {:.6}",
+        solution.unshot, solution.emitted, solution.absorbed
+    );
+    if let Some(h) = &hardware {
+        println!(
+            "on the PE ({} simulation, T_c = {}, cache {}): {} bundles, {} PE cycles = {:.3} ms at {} MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's (the rest within the documented bound)",
+            h.engine,
+            h.tc,
+            h.cache.map_or("off".to_string(), |c| format!("{c} patches")),
+            h.totals.bundles,
+            h.totals.cycles,
+            h.seconds * 1e3,
+            h.clock_mhz,
+            h.totals.golden_agree,
+            h.totals.rays
+        );
+    }
+    if let Some(path) = &a.svg {
+        println!("picture: {}", path.display());
+    }
+    Ok(())
+}
