@@ -143,22 +143,15 @@ fn through_box(p: Vec2, q: Vec2, lo: Vec2, hi: Vec2) -> bool {
     lo.x < m.x && m.x < hi.x && lo.y < m.y && m.y < hi.y
 }
 
-/// The shortest path from `p` to `q` around the box `lo..hi` (through at most two corners).
-fn around_box(p: Vec2, q: Vec2, lo: Vec2, hi: Vec2) -> f64 {
-    let corners = [v(lo.x, lo.y), v(hi.x, lo.y), v(hi.x, hi.y), v(lo.x, hi.y)];
-    let clear = |a: Vec2, b: Vec2| !through_box(a, b, lo, hi);
-    let mut best = if clear(p, q) { straight(p, q) } else { f64::INFINITY };
-    for &c in &corners {
-        if clear(p, c) && clear(c, q) {
-            best = best.min(straight(p, c) + straight(c, q));
-        }
-        for &e in &corners {
-            if clear(p, c) && clear(c, e) && clear(e, q) {
-                best = best.min(straight(p, c) + straight(c, e) + straight(e, q));
-            }
-        }
-    }
-    best
+/// The length of the path through `points`, each leg checked clear of the box `lo..hi`.
+fn string(points: &[Vec2], lo: Vec2, hi: Vec2) -> f64 {
+    points
+        .windows(2)
+        .map(|w| {
+            assert!(!through_box(w[0], w[1], lo, hi), "the string {:?} → {:?} cuts the box", w[0], w[1]);
+            straight(w[0], w[1])
+        })
+        .sum()
 }
 
 #[test]
@@ -166,7 +159,14 @@ fn an_occluded_pair_matches_crossed_strings_around_the_occluder() {
     // Two parallel plates with a flat box between them (faces out, so it blocks from every side).
     let (i, j) = (source(), Segment::new(v(1.0, 2.0), v(-1.0, 2.0)));
     let (lo, hi) = (v(-0.3, 0.9), v(0.3, 1.1));
-    let exact = crossed_strings(i, j, |p, q| around_box(p, q, lo, hi));
+    // The light passes left or right of the box: two windows, mirror images of each other. In
+    // the left one the strings are stretched around the box's left side (corners bl, tl):
+    // crossed i.a → tl → j.a and i.b → bl → j.b, uncrossed i.a → j.b and i.b → bl → tl → j.a.
+    // (With the box shrunk to a point the two windows give the unoccluded crossed strings.)
+    let (bl, tl) = (v(lo.x, lo.y), v(lo.x, hi.y));
+    let crossed = string(&[i.a, tl, j.a], lo, hi) + string(&[i.b, bl, j.b], lo, hi);
+    let uncrossed = string(&[i.a, j.b], lo, hi) + string(&[i.b, bl, tl, j.a], lo, hi);
+    let exact = 2.0 * (crossed - uncrossed) / (2.0 * i.length());
     let unoccluded = crossed_strings(i, j, straight);
     assert!(exact < unoccluded - 0.05, "the box must shade: {exact} vs {unoccluded}");
     let box_sides = [
@@ -198,8 +198,11 @@ fn every_technique_gives_the_same_rows_and_a_closed_room_sums_to_1() {
             let got = form_factors::row(&p, k, &FfParams { method, ..fp.clone() }).unwrap();
             assert_eq!(got, want, "row {k}: {method} differs from brute force");
         }
+        // The fixed point's hits differ from f64's at endpoints within the documented bound
+        // (rung 2): a ray may slip through a corner, so a row may lose a few ray weights.
         let fixed = form_factors::row(&p, k, &FfParams { arith: Arith::Fixed, ..fp.clone() }).unwrap();
-        assert!((fixed.sum() - 1.0).abs() < 1e-12, "fixed row {k} sums to {}", fixed.sum());
+        let weight = 1.0 / (fp.rays * fp.origins) as f64;
+        assert!((fixed.sum() - 1.0).abs() <= 4.0 * weight, "fixed row {k} sums to {}", fixed.sum());
         let diff: f64 = (0..p.scene.len()).map(|j| (fixed.get(j) - want.get(j)).abs()).sum();
         assert!(diff <= 4.0 / 256.0, "fixed row {k} differs from f64 by {diff} in all");
     }
@@ -286,13 +289,13 @@ fn energy_balances_and_the_solvers_agree() {
         full.emitted,
         full.absorbed
     );
-    let worst = prog
-        .radiosity
-        .iter()
-        .zip(&full.radiosity)
-        .map(|(a, b)| (a - b).abs() / b.max(1e-3))
-        .fold(0.0, f64::max);
-    assert!(worst <= 2e-2, "progressive and full solves differ by {worst} (relative)");
+    // They differ by the form factors' reciprocity error (progressive shoots by reciprocity,
+    // full gathers from each patch's own row): measured in power, Σ L |ΔB| / Σ L B.
+    let lengths: Vec<f64> = p.scene.segments.iter().map(|s| s.length()).collect();
+    let diff: f64 = (0..s.len()).map(|j| lengths[j] * (prog.radiosity[j] - full.radiosity[j]).abs()).sum();
+    let total: f64 = (0..s.len()).map(|j| lengths[j] * full.radiosity[j]).sum();
+    eprintln!("progressive against full: {:.3e} of the power", diff / total);
+    assert!(diff / total <= 1e-2, "progressive and full solves differ by {} of the power", diff / total);
     // The progressive solve computing its own rows gives the same as from the precomputed ones.
     let own = solve::progressive(&s, tol, 1_000_000, |k| form_factors::row(&p, k, &fp)).unwrap();
     assert_eq!(own.radiosity, prog.radiosity);
