@@ -35,7 +35,9 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run the golden model on the built-in default scene and print the counters table.
+    /// Run the built-in default scene: every technique against brute force (the counters
+    /// table), conventional and stochastic shelling on the RTL processing element (cycles, a VCD
+    /// window), the Verilog export, and pointers to the radiosity commands.
     Demo(DemoArgs),
     /// Scene files: generate the paper's workload or a closed room.
     Scene {
@@ -699,6 +701,12 @@ fn demo(a: DemoArgs) -> Result<()> {
     let files =
         shelling_testbench::export::write(&a.verilog).map_err(|e| anyhow::anyhow!("{}", e.message()))?;
     println!("Verilog: {} files in {}", files.len(), a.verilog.display());
+    println!(
+        "\nwhat the rays are for (RADIOSITY.md): `shelling scene gen --kind room --out room.json`, then \
+         `shelling form-factors --scene room.json --source 3` (one row of form factors) and \
+         `shelling radiosity --scene room.json --svg room.svg` (the solution; `--on-pe` computes \
+         every row on the RTL processing element)"
+    );
     Ok(())
 }
 

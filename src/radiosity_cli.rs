@@ -7,7 +7,7 @@ use shelling::arith::Arith;
 use shelling::cosim::{CosimConfig, Engine};
 use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
 use shelling::radiosity::matrix::{self, MatrixFile};
-use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ};
+use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ, PE_MAX_RAYS};
 use shelling::radiosity::solve::{self, Solution, Surfaces};
 use shelling::rays::{RaySet, MAX_RAYS};
 use shelling::run::Prepared;
@@ -19,9 +19,10 @@ use std::path::{Path, PathBuf};
 /// How each form-factor row is estimated.
 #[derive(Args, Clone)]
 pub struct FfArgs {
-    /// Rays per origin (1 to 1048576).
-    #[arg(long, default_value_t = DEFAULT_RAYS, allow_negative_numbers = true)]
-    rays: usize,
+    /// Rays per origin (1 to 1048576; with --on-pe at most 1024, the PE's ray memory) [default:
+    /// 2048, with --on-pe 1024].
+    #[arg(long, allow_negative_numbers = true)]
+    rays: Option<usize>,
     /// Origins per source patch, stratified along it (1 to 4096); 1 is the paper's centre.
     #[arg(long, default_value_t = DEFAULT_ORIGINS, allow_negative_numbers = true)]
     origins: usize,
@@ -37,15 +38,21 @@ pub struct FfArgs {
 }
 
 impl FfArgs {
-    fn params(&self, tune: &TuneArgs) -> Result<FfParams> {
-        if self.rays == 0 || self.rays > MAX_RAYS {
-            bail!("--rays must be between 1 and {MAX_RAYS}, got {}", self.rays);
+    /// The parameters; `on_pe` sets the default rays to the PE's ray memory.
+    fn params(&self, tune: &TuneArgs, on_pe: bool) -> Result<FfParams> {
+        let (rays, max) = match on_pe {
+            false => (self.rays.unwrap_or(DEFAULT_RAYS), MAX_RAYS),
+            true => (self.rays.unwrap_or(PE_MAX_RAYS), PE_MAX_RAYS),
+        };
+        if rays == 0 || rays > max {
+            let with = if on_pe { " with --on-pe (the PE's ray memory)" } else { "" };
+            bail!("--rays must be between 1 and {max}{with}, got {rays}");
         }
         if self.origins == 0 || self.origins > MAX_ORIGINS {
             bail!("--origins must be between 1 and {MAX_ORIGINS}, got {}", self.origins);
         }
         Ok(FfParams {
-            rays: self.rays,
+            rays,
             origins: self.origins,
             ray_set: self.ray_set,
             method: self.method,
@@ -169,7 +176,7 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
         return Ok(());
     }
     let path = a.scene.as_deref().expect("clap requires --scene");
-    let params = a.ff.params(&a.tune)?;
+    let params = a.ff.params(&a.tune, false)?;
     let prepared = Prepared::new(Scene::load(path)?, a.tune.grid()?);
     if let Some(k) = a.source {
         let row = form_factors::row(&prepared, k, &params)?;
@@ -350,7 +357,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         None => (scene::room(&RoomSpec::default())?, "the default room".to_string()),
     };
     let surfaces = Surfaces::of(&scene, &name)?;
-    let mut params = a.ff.params(&a.tune)?;
+    let mut params = a.ff.params(&a.tune, a.on_pe)?;
     if a.on_pe {
         params.arith = Arith::Fixed;
     }

@@ -14,6 +14,9 @@ use crate::cosim::{self, CosimConfig, CosimError};
 use crate::run::{Prepared, RunError};
 use crate::trace::{Method, TraceError};
 
+/// The most rays of one bundle on the PE (its ray memory): the default rays of a solve on it.
+pub const PE_MAX_RAYS: usize = shelling_testbench::pe::MAX_RAYS;
+
 /// The post-route clock rate assumed for the solve's time unless another is given: the PE on
 /// ECP5 LFE5U-85F-6 at placement seed 1, as measured in PERFORMANCE.md (one seed only).
 pub const PE_CLOCK_MHZ: f64 = 142.2;
@@ -44,6 +47,8 @@ pub struct PeTotals {
 pub enum OnPeError {
     #[error("--method brute has no hardware mapping: use conventional, stochastic or deterministic")]
     Brute,
+    #[error("--rays {0}: the processing element holds at most {PE_MAX_RAYS} rays per bundle")]
+    TooManyRays(usize),
     #[error(transparent)]
     Ff(#[from] FfError),
     #[error(transparent)]
@@ -76,6 +81,9 @@ pub fn row(
     if p.method == Method::Brute {
         return Err(OnPeError::Brute);
     }
+    if p.rays > PE_MAX_RAYS {
+        return Err(OnPeError::TooManyRays(p.rays));
+    }
     let mut builder = RowBuilder::new(prepared.scene.len(), p);
     for bundle in bundles(prepared, k, p)? {
         let scheduled = prepared.schedule(p.method, &bundle, &p.shells)?;
@@ -99,4 +107,79 @@ pub fn row(
     }
     totals.rows += 1;
     Ok(builder.finish(k))
+}
+
+/// Every row of the scene computed on the PE, in order, with the hardware's sums.
+pub fn all_rows(
+    prepared: &Prepared,
+    p: &FfParams,
+    config: &CosimConfig,
+    mut progress: impl FnMut(usize),
+) -> Result<(Vec<Row>, PeTotals), OnPeError> {
+    let mut totals = PeTotals::default();
+    let rows = (0..prepared.scene.len())
+        .map(|k| {
+            let r = row(prepared, k, p, config, &mut totals);
+            progress(k + 1);
+            r
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((rows, totals))
+}
+
+/// The whole-solve table of FIGURES.md: the form-factor matrix of the default room
+/// ([`crate::scene::RoomSpec::default`]) at [`PE_MAX_RAYS`] rays and the default origins, computed on the PE by
+/// each technique with the patch cache off and on, at host memory load time `tc`. Markdown, with
+/// the parameters in its first line. Every row of every run is checked as [`row`] checks it, and
+/// the three techniques' matrices must be equal (they are the bit-true model's).
+pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<String, OnPeError> {
+    use crate::grid::GridParams;
+    use crate::scene::{room, RoomSpec};
+    use std::fmt::Write;
+    let scene = room(&RoomSpec::default()).expect("the default room is valid");
+    let prepared = Prepared::new(scene, GridParams::default());
+    let base = FfParams { rays: PE_MAX_RAYS, arith: crate::arith::Arith::Fixed, ..FfParams::default() };
+    let mut out = format!(
+        "Default room ({} patches), full matrix: {} origins × {} {} rays per patch ({} bundles), T_c = {tc}, \
+         patch cache of {cache} lines, {} simulation; time at {PE_CLOCK_MHZ} MHz.\n\n",
+        prepared.scene.len(),
+        base.origins,
+        base.rays,
+        base.ray_set,
+        prepared.scene.len() * base.origins,
+        engine.name(),
+    );
+    out.push_str("| method | cache | PE cycles | tests | patch loads | cache hits | pipeline efficiency | time at the clock | cycles against conventional without cache |\n");
+    out.push_str("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    let mut reference: Option<(Vec<Row>, u64)> = None;
+    for method in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
+        for lines in [None, Some(cache)] {
+            let p = FfParams { method, ..base.clone() };
+            let config = CosimConfig { tc, cache: lines, vcd: None, engine };
+            let (rows, t) = all_rows(&prepared, &p, &config, |_| {})?;
+            let base_cycles = match &reference {
+                None => {
+                    reference = Some((rows, t.cycles));
+                    t.cycles
+                }
+                Some((want, c)) => {
+                    assert_eq!(&rows, want, "{method}: the PE's matrix differs from conventional's");
+                    *c
+                }
+            };
+            let _ = writeln!(
+                out,
+                "| {method} | {} | {} | {} | {} | {} | {:.3} | {:.1} ms | {:.2}× |",
+                lines.map_or("off".to_string(), |l| l.to_string()),
+                t.cycles,
+                t.tests,
+                t.patch_loads,
+                t.cache_hits,
+                t.intersection_busy_cycles as f64 / t.cycles as f64,
+                t.cycles as f64 / (PE_CLOCK_MHZ * 1e3),
+                base_cycles as f64 / t.cycles as f64,
+            );
+        }
+    }
+    Ok(out)
 }
