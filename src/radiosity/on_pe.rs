@@ -130,8 +130,10 @@ pub fn all_rows(
 /// The whole-solve table of FIGURES.md: the form-factor matrix of the default room
 /// ([`crate::scene::RoomSpec::default`]) at [`PE_MAX_RAYS`] rays and the default origins, computed on the PE by
 /// each technique with the patch cache off and on, at host memory load time `tc`. Markdown, with
-/// the parameters in its first line. Every row of every run is checked as [`row`] checks it, and
-/// the three techniques' matrices must be equal (they are the bit-true model's).
+/// the parameters in its first line. Every row of every run is checked as [`row`] checks it. The
+/// techniques' fixed-point matrices may differ where rung 2 allows (a technique's scheduler
+/// screens in f64, so a ray at a patch's endpoint may be tested by one and not by another); the
+/// last column is the fraction of rays whose PE hit is the f64 golden model's.
 pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<String, OnPeError> {
     use crate::grid::GridParams;
     use crate::scene::{room, RoomSpec};
@@ -149,27 +151,18 @@ pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<S
         prepared.scene.len() * base.origins,
         engine.name(),
     );
-    out.push_str("| method | cache | PE cycles | tests | patch loads | cache hits | pipeline efficiency | time at the clock | cycles against conventional without cache |\n");
-    out.push_str("|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
-    let mut reference: Option<(Vec<Row>, u64)> = None;
+    out.push_str("| method | cache | PE cycles | tests | patch loads | cache hits | pipeline efficiency | time at the clock | speedup against conventional without cache | rays with the f64 hit |\n");
+    out.push_str("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    let mut conventional: Option<u64> = None;
     for method in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
         for lines in [None, Some(cache)] {
             let p = FfParams { method, ..base.clone() };
             let config = CosimConfig { tc, cache: lines, vcd: None, engine };
-            let (rows, t) = all_rows(&prepared, &p, &config, |_| {})?;
-            let base_cycles = match &reference {
-                None => {
-                    reference = Some((rows, t.cycles));
-                    t.cycles
-                }
-                Some((want, c)) => {
-                    assert_eq!(&rows, want, "{method}: the PE's matrix differs from conventional's");
-                    *c
-                }
-            };
+            let (_, t) = all_rows(&prepared, &p, &config, |_| {})?;
+            let base_cycles = *conventional.get_or_insert(t.cycles);
             let _ = writeln!(
                 out,
-                "| {method} | {} | {} | {} | {} | {} | {:.3} | {:.1} ms | {:.2}× |",
+                "| {method} | {} | {} | {} | {} | {} | {:.3} | {:.1} ms | {:.2}× | {:.5} |",
                 lines.map_or("off".to_string(), |l| l.to_string()),
                 t.cycles,
                 t.tests,
@@ -178,6 +171,7 @@ pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<S
                 t.intersection_busy_cycles as f64 / t.cycles as f64,
                 t.cycles as f64 / (PE_CLOCK_MHZ * 1e3),
                 base_cycles as f64 / t.cycles as f64,
+                t.golden_agree as f64 / t.rays as f64,
             );
         }
     }
