@@ -71,7 +71,13 @@ pub fn check_range_for<T: PartialOrd + Display>(
 }
 
 /// `"{option} must be between {lo} and {hi}{ note}, got {value}"`.
-pub fn range_message(option: &str, value: &dyn Display, lo: &dyn Display, hi: &dyn Display, note: &str) -> String {
+pub fn range_message(
+    option: &str,
+    value: &dyn Display,
+    lo: &dyn Display,
+    hi: &dyn Display,
+    note: &str,
+) -> String {
     let note = if note.is_empty() { String::new() } else { format!(" {note}") };
     format!("{option} must be between {lo} and {hi}{note}, got {value}")
 }
@@ -81,7 +87,9 @@ pub fn check_length(option: &str, length: f64) -> Result<f64, String> {
     if length.is_finite() && length > 0.0 && length < MAX_LENGTH {
         Ok(length)
     } else {
-        Err(format!("{option} must be greater than 0 and less than {MAX_LENGTH} (the world's side), got {length}"))
+        Err(format!(
+            "{option} must be greater than 0 and less than {MAX_LENGTH} (the world's side), got {length}"
+        ))
     }
 }
 
@@ -116,15 +124,29 @@ pub const MIN_SHELL_DEPTH_OF_FAR: f64 = 1.0 / 4294967296.0;
 /// The range of the shell depth over a grid whose larger side is `width`, for a source whose
 /// farthest grid corner lies `far` away: from the larger of `width`/2¹⁶ and `far`/2³² to
 /// 1024·`width`.
+/// Both ends are rounded inwards to three significant digits, so that the range reads well in
+/// a message and every value it shows is accepted.
 pub fn shell_depth_range(width: f64, far: f64) -> (f64, f64) {
-    ((width * MIN_SHELL_DEPTH_FRACTION).max(far * MIN_SHELL_DEPTH_OF_FAR), width * MAX_SHELL_DEPTH_FACTOR)
+    let lo = (width * MIN_SHELL_DEPTH_FRACTION).max(far * MIN_SHELL_DEPTH_OF_FAR);
+    (three_digits(lo, true), three_digits(width * MAX_SHELL_DEPTH_FACTOR, false))
+}
+
+/// A positive `x` rounded up (`up`) or down to three significant digits.
+fn three_digits(x: f64, up: bool) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return x;
+    }
+    let e = x.log10().floor() as i32 - 2;
+    let scaled = x / 10f64.powi(e);
+    let m = if up { scaled.ceil() } else { scaled.floor().max(1.0) };
+    format!("{m}e{e}").parse().unwrap_or(x)
 }
 
 /// A shell depth over a grid whose larger side is `width`, for a source `far` from the
 /// farthest grid corner ([`shell_depth_range`]).
 pub fn check_shell_depth(option: &str, depth: f64, width: f64, far: f64) -> Result<f64, String> {
     let (lo, hi) = shell_depth_range(width, far);
-    check_range_for(option, depth, lo, hi, &format!("(for this scene's grid of side {width})"))
+    check_range_for(option, depth, lo, hi, &format!("(for this scene's grid of side {width:.1})"))
 }
 
 /// A product of options (the cost of a workload) at most `max`; `what` names the product as
@@ -160,7 +182,10 @@ mod tests {
 
     #[test]
     fn one_wording() {
-        assert_eq!(check_range("--rays", 0usize, 1, MAX_RAYS), Err("--rays must be between 1 and 1048576, got 0".into()));
+        assert_eq!(
+            check_range("--rays", 0usize, 1, MAX_RAYS),
+            Err("--rays must be between 1 and 1048576, got 0".into())
+        );
         assert_eq!(check_range("--tc", 5u32, 1, MAX_TC), Ok(5));
         assert!(check_range("--x", f64::NAN, 0.0, 1.0).is_err());
         assert!(check_cache("--cache", 1000).unwrap_err().contains("power of two"));
@@ -170,5 +195,7 @@ mod tests {
         assert!(check_cells_per_segment("--cells-per-segment", 1024.0, 1 << 20).is_err());
         assert!(check_cells_per_segment("--cells-per-segment", 4.0, 1 << 20).is_ok());
         assert!(check_point("--origin", 2e9, 0.0).unwrap_err().contains("--origin"));
+        assert_eq!(shell_depth_range(1036.68, 1000.0), (0.0159, 1061000.0));
+        assert_eq!(three_digits(0.015818, true), 0.0159);
     }
 }

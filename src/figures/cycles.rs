@@ -401,7 +401,9 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
                         opts.lengths[i],
                         METHODS[j.method],
                         j.tc,
-                        j.cache.map_or("without the patch cache".to_string(), |n| format!("with a patch cache of {n} lines"))
+                        j.cache.map_or("without the patch cache".to_string(), |n| format!(
+                            "with a patch cache of {n} lines"
+                        ))
                     )
                 });
                 if let Ok(mut r) = results.lock() {

@@ -135,7 +135,10 @@ impl ShellParams {
             ));
         }
         if self.max_sector > MAX_RAYS {
-            return Err(format!("the widest sector must be at most {MAX_RAYS} rays, got {}", self.max_sector));
+            return Err(format!(
+                "the widest sector must be at most {MAX_RAYS} rays, got {}",
+                self.max_sector
+            ));
         }
         if self.first_sector == 0 || self.first_sector > MAX_RAYS {
             return Err(format!(
@@ -187,7 +190,9 @@ fn grid_near(grid: &Grid, o: Vec2) -> f64 {
 /// The distance from `o` to the farthest corner of the grid's box.
 fn grid_far(grid: &Grid, o: Vec2) -> f64 {
     let (lo, hi) = grid.extent();
-    [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)].iter().fold(0.0f64, |m, c| m.max((*c - o).length()))
+    [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
+        .iter()
+        .fold(0.0f64, |m, c| m.max((*c - o).length()))
 }
 
 /// Statistics of the shell structure a shelling tracer built.
