@@ -111,6 +111,12 @@ pub enum CosimError {
     Sim(String),
     #[error("the PE disagrees with the bit-true model: {0}")]
     Mismatch(String),
+    /// The VCD window starts after the run's last cycle (the run covered `first..last`).
+    #[error(
+        "--vcd-from {from} is beyond the run, which ends at cycle {last} (it started at cycle {first}): the VCD \
+         window {from}..{to} holds no cycle"
+    )]
+    VcdOutsideRun { from: u64, to: u64, first: u64, last: u64 },
 }
 
 fn sim(e: shelling_testbench::Error) -> CosimError {
@@ -168,11 +174,7 @@ pub fn run_on(
     finished?;
     let last = drv.cycles();
     if v.from >= last {
-        return Err(CosimError::Config(format!(
-            "--vcd-from {} is beyond the run, which ends at cycle {last} (it started at cycle {first}): \
-             the VCD window {}..{} holds no cycle",
-            v.from, v.from, v.to
-        )));
+        return Err(CosimError::VcdOutsideRun { from: v.from, to: v.to, first, last });
     }
     staged
         .commit()
