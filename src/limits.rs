@@ -195,7 +195,7 @@ mod tests {
         assert!(check_cells_per_segment("--cells-per-segment", 1024.0, 1 << 20).is_err());
         assert!(check_cells_per_segment("--cells-per-segment", 4.0, 1 << 20).is_ok());
         assert!(check_point("--origin", 2e9, 0.0).unwrap_err().contains("--origin"));
-        assert_eq!(shell_depth_range(1036.68, 1000.0), (0.0159, 1061000.0));
+        assert_eq!(shell_depth_range(1036.68, 1000.0), (0.0159, 1060000.0));
         assert_eq!(three_digits(0.015818, true), 0.0159);
     }
 }
