@@ -68,8 +68,9 @@ pub struct CosimConfig {
     pub tc: u32,
     /// The PE's patch cache: `None` off, `Some(lines)` on (a power of two up to 4096).
     pub cache: Option<u32>,
-    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up), 1 to
-    /// [`MAX_VCD_WINDOW`] cycles that must meet the run; rust-hdl's engine only. Written under
+    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up): a
+    /// non-empty window that must meet the run (the command line also bounds its length,
+    /// [`check_vcd_window`]); rust-hdl's engine only. Written under
     /// a temporary name, renamed into place when the run passes.
     pub vcd: Option<VcdWindow>,
     /// The simulator.
@@ -161,7 +162,9 @@ pub fn run_on(
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
     let Some(v) = &config.vcd else { return run_sim(drv, scheduled, config, progress) };
-    check_vcd_window(v.from, v.to)?;
+    if v.from >= v.to {
+        return Err(CosimError::Config(format!("the VCD window {}..{} holds no cycle", v.from, v.to)));
+    }
     // Written under a temporary name and renamed once the run has passed and covered the
     // window: a failed run leaves no VCD.
     let staged = Staged::file(&v.path)
@@ -182,8 +185,9 @@ pub fn run_on(
     Ok(result)
 }
 
-/// Checks a VCD window `from..to` (cycles from power-up): non-empty and at most
-/// [`MAX_VCD_WINDOW`] cycles long. Whether it meets the run is known only after it.
+/// Checks a VCD window `from..to` of the command line (cycles from power-up): non-empty and at
+/// most [`MAX_VCD_WINDOW`] cycles long. ([`run_on`] takes any non-empty window, `to` =
+/// `u64::MAX` for the whole run; whether it meets the run is known only after it.)
 pub fn check_vcd_window(from: u64, to: u64) -> Result<(), CosimError> {
     if to <= from || to - from > MAX_VCD_WINDOW {
         return Err(CosimError::Config(format!(
