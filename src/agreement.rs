@@ -235,6 +235,13 @@ impl Workload {
         if self.rays == 0 || self.rays > MAX_RAYS {
             return bad(format!("--rays must be between 1 and {MAX_RAYS}, got {}", self.rays));
         }
+        let factors = [self.seeds, self.lengths.len(), self.sources, self.rays].map(|v| v as u64);
+        crate::limits::check_product(
+            "the rays traced, --seeds × lengths × --sources × --rays,",
+            &factors,
+            crate::limits::MAX_WORKLOAD_RAYS,
+        )
+        .map_err(AgreementError::Invalid)?;
         Ok(())
     }
 }
@@ -269,7 +276,17 @@ pub struct Report {
 /// Traces the workload in both arithmetics and compares them ray by ray (in parallel; the rows
 /// do not depend on the number of threads).
 pub fn run(w: &Workload) -> Result<Report, AgreementError> {
+    run_with_progress(w, |_, _| {})
+}
+
+/// [`run`], calling `progress(done, total)` as each of the `total` sources (of every scene) is
+/// compared (from several threads, in any order).
+pub fn run_with_progress(
+    w: &Workload,
+    progress: impl Fn(usize, usize) + Sync,
+) -> Result<Report, AgreementError> {
     w.validate()?;
+    let done = std::sync::atomic::AtomicUsize::new(0);
     let params = ShellParams::default();
     let jobs: Vec<(usize, usize)> =
         (0..w.lengths.len()).flat_map(|l| (0..w.seeds).map(move |s| (l, s))).collect();
@@ -286,6 +303,7 @@ pub fn run(w: &Workload) -> Result<Report, AgreementError> {
                     let fixed = prepared.trace_in(Arith::Fixed, m, &bundle, &params)?;
                     slot.merge(compare(&prepared.scene.segments, &bundle, &float, &fixed));
                 }
+                progress(done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1, jobs.len() * w.sources);
             }
             Ok(out)
         })

@@ -11,7 +11,9 @@
 //! whole system). The golden `f64` hits are compared by the caller within the documented bound
 //! (rung 2, [`crate::agreement`]).
 
+use crate::limits::{check_range, MAX_TC, MAX_VCD_WINDOW};
 use crate::run::Scheduled;
+use crate::staged::Staged;
 use crate::workstream::{commands, StreamError};
 use serde::Serialize;
 use shelling_hdl::intersection::model::Nearest;
@@ -62,12 +64,14 @@ impl Engine {
 /// How the hardware is set up for a co-simulation.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CosimConfig {
-    /// Cycles the host memory takes per patch (`T_c ≥ 1`).
+    /// Cycles the host memory takes per patch (`1 ≤ T_c ≤` [`MAX_TC`]).
     pub tc: u32,
     /// The PE's patch cache: `None` off, `Some(lines)` on (a power of two up to 4096).
     pub cache: Option<u32>,
-    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up);
-    /// rust-hdl's engine only.
+    /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up): a
+    /// non-empty window that must meet the run (the command line also bounds its length,
+    /// [`check_vcd_window`]); rust-hdl's engine only. Written under
+    /// a temporary name, renamed into place when the run passes.
     pub vcd: Option<VcdWindow>,
     /// The simulator.
     pub engine: Engine,
@@ -108,6 +112,12 @@ pub enum CosimError {
     Sim(String),
     #[error("the PE disagrees with the bit-true model: {0}")]
     Mismatch(String),
+    /// The VCD window starts after the run's last cycle (the run covered `first..last`).
+    #[error(
+        "--vcd-from {from} is beyond the run, which ends at cycle {last} (it started at cycle {first}): the VCD \
+         window {from}..{to} holds no cycle"
+    )]
+    VcdOutsideRun { from: u64, to: u64, first: u64, last: u64 },
 }
 
 fn sim(e: shelling_testbench::Error) -> CosimError {
@@ -151,17 +161,43 @@ pub fn run_on(
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
-    if let Some(v) = &config.vcd {
-        if v.from >= v.to {
-            return Err(CosimError::Config(format!("empty VCD window {}..{}", v.from, v.to)));
-        }
-        drv.stream_vcd(&v.path, v.from..v.to).map_err(sim)?;
+    let Some(v) = &config.vcd else { return run_sim(drv, scheduled, config, progress) };
+    if v.from >= v.to {
+        return Err(CosimError::Config(format!("the VCD window {}..{} holds no cycle", v.from, v.to)));
     }
+    // Written under a temporary name and renamed once the run has passed and covered the
+    // window: a failed run leaves no VCD.
+    let staged = Staged::file(&v.path)
+        .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
+    let first = drv.cycles();
+    drv.stream_vcd(staged.path(), v.from..v.to).map_err(sim)?;
     let result = run_sim(drv, scheduled, config, progress);
-    if config.vcd.is_some() {
-        drv.finish_vcd().map_err(sim)?;
+    let finished = drv.finish_vcd().map_err(sim);
+    let result = result?;
+    finished?;
+    let last = drv.cycles();
+    if v.from >= last {
+        return Err(CosimError::VcdOutsideRun { from: v.from, to: v.to, first, last });
     }
-    result
+    staged
+        .commit()
+        .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
+    Ok(result)
+}
+
+/// Checks a VCD window `from..to` of the command line (cycles from power-up): non-empty and at
+/// most [`MAX_VCD_WINDOW`] cycles long. ([`run_on`] takes any non-empty window, `to` =
+/// `u64::MAX` for the whole run; whether it meets the run is known only after it.)
+pub fn check_vcd_window(from: u64, to: u64) -> Result<(), CosimError> {
+    if to <= from || to - from > MAX_VCD_WINDOW {
+        return Err(CosimError::Config(format!(
+            "the VCD window --vcd-from {from} --vcd-to {to} must hold 1 to {MAX_VCD_WINDOW} cycles: --vcd-to \
+             must be between {} and {}",
+            from.saturating_add(1),
+            from.saturating_add(MAX_VCD_WINDOW)
+        )));
+    }
+    Ok(())
 }
 
 /// Co-simulates a scheduled source on any simulator of the PE (fresh, or after earlier sources
@@ -172,9 +208,7 @@ pub fn run_sim<S: PeSim>(
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
-    if config.tc == 0 {
-        return Err(CosimError::Config("--tc must be at least 1 cycle per patch, got 0".into()));
-    }
+    check_range("--tc", config.tc, 1, MAX_TC).map_err(CosimError::Config)?;
     let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
     let (want, model) = pe::model(&setup, &patches, &cmds);
     let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;

@@ -30,6 +30,7 @@ use crate::grid::GridParams;
 use crate::rays::{RaySet, MAX_RAYS};
 use crate::run::Prepared;
 use crate::scene;
+use crate::staged::Staged;
 use crate::trace::{Method, ShellParams, ShellStats};
 use anyhow::{anyhow, bail, Context, Result};
 use plotters::chart::SeriesAnno;
@@ -406,15 +407,19 @@ pub fn measure(opts: &FigureOptions) -> Result<Vec<Row>> {
 /// Runs the workload and writes `figures.csv` and the SVG figures into `opts.out`.
 pub fn run(opts: &FigureOptions) -> Result<FigureReport> {
     let start = Instant::now();
+    opts.validate()?;
+    // The files are written into a temporary directory beside `out` and moved into place at
+    // the end: a failed run leaves no partial figures.
+    let staged = Staged::dir(&opts.out)
+        .with_context(|| format!("creating the output directory {}", opts.out.display()))?;
     let (rows, scenes, jobs, disagreements) = measure_inner(opts)?;
     let elapsed = start.elapsed();
-    std::fs::create_dir_all(&opts.out)
-        .with_context(|| format!("creating the output directory {}", opts.out.display()))?;
     let mut files = Vec::new();
     let mut write = |name: &str, text: String| -> Result<()> {
-        let path = opts.out.join(name);
-        std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
-        files.push(path);
+        let path = staged.path().join(name);
+        let shown = opts.out.join(name);
+        std::fs::write(&path, text).with_context(|| format!("writing {}", shown.display()))?;
+        files.push(shown);
         Ok(())
     };
     write("figures.csv", csv(&rows))?;
@@ -433,6 +438,7 @@ pub fn run(opts: &FigureOptions) -> Result<FigureReport> {
     } else {
         (Vec::new(), 0, Duration::ZERO)
     };
+    staged.commit().with_context(|| format!("moving the figures into {}", opts.out.display()))?;
     Ok(FigureReport {
         options: opts.clone(),
         rows,

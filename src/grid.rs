@@ -6,7 +6,8 @@
 //! * **Resolution rule.** Square cells, sized so that the grid has about `λ·N` cells for `N`
 //!   segments (`λ` = [`GridParams::cells_per_segment`], default 4): cell side
 //!   `s = sqrt(area / (λ·N))`, `nx = ceil(width / s)`, `ny = ceil(height / s)`, each clamped to
-//!   `1..=`[`MAX_CELLS_PER_AXIS`]. For the paper's workload (1000 segments in 1024²) that is a
+//!   `1..=`[`MAX_CELLS_PER_AXIS`], and coarsened where they would make more than
+//!   [`MAX_GRID_CELLS`] (2²²) cells. For the paper's workload (1000 segments in 1024²) that is a
 //!   64 × 64 grid of 16-unit cells. [`GridParams::cells_per_axis`] overrides the rule.
 //! * **Bounds.** The scene's world when it declares one, else the bounding box of its segments,
 //!   padded by 0.1 % of its larger side so no segment lies on the outer boundary.
@@ -39,6 +40,8 @@
 
 use crate::geom::{Segment, Vec2};
 use crate::scene::Bounds;
+
+pub use crate::limits::MAX_GRID_CELLS;
 
 /// The most cells along one axis the resolution rule will choose.
 pub const MAX_CELLS_PER_AXIS: usize = 4096;
@@ -157,8 +160,13 @@ impl Grid {
                 s.max(size.x.max(size.y) / MAX_CELLS_PER_AXIS as f64)
             }
         };
-        let count = |len: f64| ((len / cell).ceil() as usize).clamp(1, MAX_CELLS_PER_AXIS);
-        (min, cell, count(size.x), count(size.y))
+        let count = |cell: f64, len: f64| ((len / cell).ceil() as usize).clamp(1, MAX_CELLS_PER_AXIS);
+        // At most MAX_GRID_CELLS cells: a finer request is coarsened (the CLI refuses it first).
+        let mut cell = cell;
+        while count(cell, size.x) * count(cell, size.y) > MAX_GRID_CELLS {
+            cell *= 1.0 + 1.0 / 1024.0;
+        }
+        (min, cell, count(cell, size.x), count(cell, size.y))
     }
 
     /// Number of cells.

@@ -1,6 +1,6 @@
 //! The radiosity commands of the command line: `form-factors` and `radiosity` (RADIOSITY.md).
 
-use super::TuneArgs;
+use super::{Out, TuneArgs};
 use anyhow::{bail, Context, Result};
 use clap::{ArgGroup, Args, ValueEnum};
 use shelling::arith::Arith;
@@ -12,6 +12,7 @@ use shelling::radiosity::solve::{self, Solution, Surfaces};
 use shelling::rays::{RaySet, MAX_RAYS};
 use shelling::run::Prepared;
 use shelling::scene::{self, RoomSpec, Scene};
+use shelling::staged::Staged;
 use shelling::trace::Method;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -136,33 +137,32 @@ struct RowJson<'a> {
     sum: f64,
 }
 
+/// A progress bar of `len` `what`s on standard error, hidden with `--quiet`.
 fn progress_bar(len: usize, what: &str, quiet: bool) -> indicatif::ProgressBar {
     if quiet {
         return indicatif::ProgressBar::hidden();
     }
-    let bar = indicatif::ProgressBar::new(len as u64);
-    let template = format!("{{bar:40}} {{pos}}/{{len}} {what} {{elapsed}} {{msg}}");
-    if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
-        bar.set_style(style);
-    }
-    bar
+    super::progress_bar(len as u64, &format!("{{bar:40}} {{pos}}/{{len}} {what} {{elapsed}} {{msg}}"))
 }
 
-/// Writes `text` to `path` through a temporary file beside it, renamed on success, so a failed
+/// Writes `text` to `path` under a temporary name, renamed on success ([`Staged`]), so a failed
 /// write leaves nothing behind.
 fn write_file(path: &Path, text: &str) -> Result<()> {
-    let mut tmp = path.as_os_str().to_owned();
-    tmp.push(".partial");
-    let tmp = PathBuf::from(tmp);
-    let done = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, path));
-    if let Err(e) = done {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(e).with_context(|| format!("writing {}", path.display()));
-    }
+    let context = || format!("writing {}", path.display());
+    let staged = Staged::file(path).with_context(context)?;
+    std::fs::write(staged.path(), text).with_context(context)?;
+    staged.commit().with_context(context)?;
     Ok(())
 }
 
+/// `--shell-depth` against the grid of `prepared`, for origins anywhere in it.
+fn check_depth(tune: &TuneArgs, prepared: &Prepared) -> Result<()> {
+    let (lo, hi) = prepared.grid.extent();
+    tune.check_depth((hi - lo).max_element(), (hi - lo).length())
+}
+
 pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
+    let mut out = Out::new();
     if !a.merge.is_empty() {
         let slices = a
             .merge
@@ -170,14 +170,17 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
             .map(|p| Ok((p.display().to_string(), MatrixFile::load(p)?)))
             .collect::<Result<Vec<_>>>()?;
         let whole = matrix::merge(slices)?;
-        let out = a.out.as_deref().expect("clap requires --out");
-        write_file(out, &whole.to_json())?;
-        println!("{}: {} rows of {} merged", out.display(), whole.rows.len(), whole.scene.patches);
-        return Ok(());
+        let target = a.out.as_deref().expect("clap requires --out");
+        write_file(target, &whole.to_json())?;
+        say!(out, "{}: {} rows of {} merged", target.display(), whole.rows.len(), whole.scene.patches);
+        return out.flush();
     }
     let path = a.scene.as_deref().expect("clap requires --scene");
     let params = a.ff.params(&a.tune, false)?;
-    let prepared = Prepared::new(Scene::load(path)?, a.tune.grid()?);
+    let scene = Scene::load(path)?;
+    let grid = a.tune.grid(scene.len())?;
+    let prepared = Prepared::new(scene, grid);
+    check_depth(&a.tune, &prepared)?;
     if let Some(k) = a.source {
         let row = form_factors::row(&prepared, k, &params)?;
         if a.json {
@@ -191,9 +194,10 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
                 entries: &row.entries,
                 sum: row.sum(),
             };
-            println!("{}", serde_json::to_string_pretty(&json)?);
+            say!(out, "{}", serde_json::to_string_pretty(&json)?);
         } else {
-            println!(
+            say!(
+                out,
                 "form factors from patch {k} ({} origins × {} {} rays, {}, {}): {} patches seen, sum {:.6}",
                 params.origins,
                 params.rays,
@@ -205,12 +209,12 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
             );
             let mut top = row.entries.clone();
             top.sort_by(|x, y| y.ff.total_cmp(&x.ff));
-            println!("{:>8}{:>14}", "patch", "F");
+            say!(out, "{:>8}{:>14}", "patch", "F");
             for e in top.iter().take(10) {
-                println!("{:>8}{:>14.6}", e.patch, e.ff);
+                say!(out, "{:>8}{:>14.6}", e.patch, e.ff);
             }
         }
-        return Ok(());
+        return out.flush();
     }
     let range =
         a.rows.expect("clap requires one of --source, --rows, --merge").resolve(prepared.scene.len())?;
@@ -218,17 +222,18 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
     let rows = form_factors::rows(&prepared, range.clone(), &params, || bar.inc(1));
     bar.finish_and_clear();
     let file = MatrixFile::new(&prepared.scene, &params, range.start, rows?);
-    let out = a.out.as_deref().expect("clap requires --out");
-    write_file(out, &file.to_json())?;
-    println!(
+    let target = a.out.as_deref().expect("clap requires --out");
+    write_file(target, &file.to_json())?;
+    say!(
+        out,
         "{}: rows {}..{} of {} ({} form factors)",
-        out.display(),
+        target.display(),
         file.rows_from,
         file.rows_to,
         file.scene.patches,
         file.rows.iter().map(|r| r.entries.len()).sum::<usize>()
     );
-    Ok(())
+    out.flush()
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, serde::Serialize)]
@@ -327,6 +332,7 @@ struct SolutionJson {
 }
 
 pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
+    let mut out = Out::new();
     if !(solve::MIN_TOLERANCE..1.0).contains(&a.tolerance) {
         bail!("--tolerance must be a number in [1e-12, 1), got {}", a.tolerance);
     }
@@ -361,7 +367,9 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     if a.on_pe {
         params.arith = Arith::Fixed;
     }
-    let prepared = Prepared::new(scene, a.tune.grid()?);
+    let grid = a.tune.grid(scene.len())?;
+    let prepared = Prepared::new(scene, grid);
+    check_depth(&a.tune, &prepared)?;
     let engine = a.engine.resolve(false);
     let config = CosimConfig { tc: a.tc, cache: a.cache, vcd: None, engine };
     let mut totals = PeTotals::default();
@@ -460,12 +468,13 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
             rows: solution.rows.len(),
             hardware,
         };
-        println!("{}", serde_json::to_string_pretty(&json)?);
-        return Ok(());
+        say!(out, "{}", serde_json::to_string_pretty(&json)?);
+        return out.flush();
     }
     let (lo, hi) =
         solution.radiosity.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &b| (l.min(b), h.max(b)));
-    println!(
+    say!(
+        out,
         "{name}: {} patches, {} solver, {} steps, {} form-factor rows ({} origins × {} {} rays, {})",
         prepared.scene.len(),
         format!("{:?}", a.solver).to_lowercase(),
@@ -476,12 +485,16 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         params.ray_set,
         params.method
     );
-    println!(
+    say!(
+        out,
         "radiosity {lo:.6} to {hi:.6}; left {:.3e}; emitted {:.6}, absorbed {:.6}",
-        solution.unshot, solution.emitted, solution.absorbed
+        solution.unshot,
+        solution.emitted,
+        solution.absorbed
     );
     if let Some(h) = &hardware {
-        println!(
+        say!(
+            out,
             "on the PE ({} simulation, T_c = {}, cache {}): {} bundles, {} PE cycles = {:.3} ms at {} MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's (the rest within the documented bound)",
             h.engine,
             h.tc,
@@ -495,7 +508,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         );
     }
     if let Some(path) = &a.svg {
-        println!("picture: {}", path.display());
+        say!(out, "picture: {}", path.display());
     }
-    Ok(())
+    out.flush()
 }

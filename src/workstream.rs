@@ -151,8 +151,10 @@ impl<H: HitTest> HitTest for Recorder<'_, H> {
 /// What a stream is inconsistent about.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum StreamError {
-    #[error("item {item}: {what}")]
+    #[error("entry {item} of the work stream (counted from 0): {what}")]
     Invalid { item: usize, what: String },
+    #[error("the bundle has {0} rays; a processing element holds 1 to {MAX_RAYS}")]
+    TooManyRays(usize),
 }
 
 /// Checks that the bundle fits a processing element, that every index in the stream is in range
@@ -160,7 +162,7 @@ pub enum StreamError {
 pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamError> {
     let bad = |item: usize, what: String| Err(StreamError::Invalid { item, what });
     if stream.rays == 0 || stream.rays > MAX_RAYS || stream.rays > fixed.dirs.len() {
-        return bad(0, format!("{} rays: a processing element holds 1 to {MAX_RAYS}", stream.rays));
+        return Err(StreamError::TooManyRays(stream.rays));
     }
     let rays = stream.rays as u32;
     let mut sector = false;

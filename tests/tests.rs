@@ -5,6 +5,7 @@ mod cli;
 mod cosim;
 mod figures;
 mod hardware;
+mod limits;
 mod radiosity;
 mod replay;
 mod scene_loader;

@@ -55,7 +55,8 @@ pub(super) fn validate(o: &FigureOptions) -> Result<()> {
     }
     if o.rays > PE_MAX_RAYS {
         bail!(
-            "the processing element holds at most {PE_MAX_RAYS} rays; co-simulating {} is not possible",
+            "--rays must be between 1 and {PE_MAX_RAYS} (the processing element's ray memory) for the \
+             co-simulated figures (--cosim-sources 0 skips them), got {}",
             o.rays
         );
     }
@@ -396,11 +397,13 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
                 let result = run.map(|c| (c.hardware, c.model)).map_err(|e| {
                     failed.store(true, Ordering::Relaxed);
                     anyhow!(
-                        "co-simulating source patch {k} of the scene of length {} ({}, T_c {}, cache {:?}): {e}",
+                        "co-simulating source patch {k} of the scene of length {} ({}, T_c {}, {}): {e}",
                         opts.lengths[i],
                         METHODS[j.method],
                         j.tc,
-                        j.cache
+                        j.cache.map_or("without the patch cache".to_string(), |n| format!(
+                            "with a patch cache of {n} lines"
+                        ))
                     )
                 });
                 if let Ok(mut r) = results.lock() {

@@ -201,7 +201,8 @@ fn set_bits(base: usize, mut word: u64) -> impl Iterator<Item = usize> {
 }
 
 /// Traces `bundle` through the scene with `method` in the golden model's `f64` arithmetic. The
-/// shell parameters are checked first ([`ShellParams::validate`]), whichever the method.
+/// shell parameters are checked first ([`ShellParams::validate`], and the shell depth against
+/// the grid and the source, [`ShellParams::validate_for`]), whichever the method.
 pub fn trace(
     method: Method,
     scene: SceneView<'_>,
@@ -220,6 +221,7 @@ pub fn trace_with<H: HitTest>(
     hits: &H,
 ) -> Result<TraceResult, TraceError> {
     params.validate().map_err(TraceError::InvalidParams)?;
+    params.validate_for(scene.grid, bundle.source.origin).map_err(TraceError::InvalidParams)?;
     let (hits, mut counters, stats) = match method {
         Method::Brute => {
             let (h, c) = brute::trace(scene, bundle, hits);

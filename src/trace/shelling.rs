@@ -75,7 +75,8 @@
 use super::{with_scratch, HitTest, PatchCache, SceneView, Scratch};
 use crate::counters::Counters;
 use crate::geom::{cross, Hit, Nearest, Segment, Vec2};
-use crate::grid::CellScan;
+use crate::grid::{CellScan, Grid};
+use crate::limits::{MAX_RAYS, MAX_SHELLS};
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
 
@@ -133,8 +134,17 @@ impl ShellParams {
                 self.min_sector, self.max_sector
             ));
         }
-        if self.first_sector == 0 {
-            return Err("the first sector must hold at least one ray".into());
+        if self.max_sector > MAX_RAYS {
+            return Err(format!(
+                "the widest sector must be at most {MAX_RAYS} rays, got {}",
+                self.max_sector
+            ));
+        }
+        if self.first_sector == 0 || self.first_sector > MAX_RAYS {
+            return Err(format!(
+                "the first sector must hold between 1 and {MAX_RAYS} rays, got {}",
+                self.first_sector
+            ));
         }
         if !(self.sector_per_adlc.is_finite() && self.sector_per_adlc > 0.0) {
             return Err(format!("sector_per_adlc must be positive, got {}", self.sector_per_adlc));
@@ -150,6 +160,39 @@ impl ShellParams {
         }
         Ok(())
     }
+
+    /// Checks the shell depth against the grid and the source at `origin`: within
+    /// [`shell_depth_range`](crate::limits::shell_depth_range) of the grid's larger side and
+    /// the distance to its farthest corner, so that shell radii grow past the rounding of
+    /// distances and a sector needs at most [`MAX_SHELLS`] shells across the grid.
+    pub fn validate_for(&self, grid: &Grid, origin: Vec2) -> Result<(), String> {
+        let Some(depth) = self.shell_depth else { return Ok(()) };
+        let (lo, hi) = grid.extent();
+        let width = (hi - lo).max_element();
+        let (near, far) = (grid_near(grid, origin), grid_far(grid, origin));
+        crate::limits::check_shell_depth("the shell depth", depth, width, far)?;
+        let shells = ((far - near) / depth).ceil() + 1.0;
+        if shells > MAX_SHELLS as f64 {
+            return Err(format!(
+                "the shell depth {depth} cuts the grid into {shells} shells, more than {MAX_SHELLS}"
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The distance from `o` to the nearest point of the grid's box (0 inside).
+fn grid_near(grid: &Grid, o: Vec2) -> f64 {
+    let (lo, hi) = grid.extent();
+    (lo - o).max(o - hi).max(Vec2::ZERO).length()
+}
+
+/// The distance from `o` to the farthest corner of the grid's box.
+fn grid_far(grid: &Grid, o: Vec2) -> f64 {
+    let (lo, hi) = grid.extent();
+    [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
+        .iter()
+        .fold(0.0f64, |m, c| m.max((*c - o).length()))
 }
 
 /// Statistics of the shell structure a shelling tracer built.
@@ -469,12 +512,23 @@ fn trace_bundle<H: HitTest>(
     let depth = params.shell_depth.unwrap_or(4.0 * grid.cell_size);
     let margin = 4.0 * grid.eps;
     let (lo_box, hi_box) = grid.extent();
-    let far = {
-        let (lo, hi) = (lo_box, hi_box);
-        [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
-            .iter()
-            .fold(0.0f64, |m, c| m.max((*c - o).length()))
+    let far = grid_far(grid, o);
+    // Shells wholly nearer than the grid (a source outside it) meet no cell: the first `skip`
+    // shells are only counted. Shell `j < skip` ends at `r₂ = (j + 1)·Γ ≤ skip·Γ`, and its
+    // trapezoid (pieces of at most π/4) keeps within `(r₂ + margin) / cos(π/8)` of the source,
+    // nearer than the grid grown by `grow` (more than the rasteriser's tolerance). A source
+    // inside the grid skips nothing.
+    let skip = {
+        let near = grid_near(grid, o);
+        let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
+        let inside = (near - grow) * (std::f64::consts::PI / 8.0).cos() * (1.0 - 1e-6) - margin;
+        if near > 0.0 && inside > depth {
+            (inside / depth).floor() as u64
+        } else {
+            0
+        }
     };
+    let r_first = skip as f64 * depth;
     let mut c = Counters::default();
     let mut stats = ShellStats::default();
     let mut best = Nearest::new(r);
@@ -526,7 +580,13 @@ fn trace_bundle<H: HitTest>(
         };
         cur.clear();
         let mut first_adlc: Option<f64> = None;
-        let mut r1 = 0.0f64;
+        let mut r1 = r_first;
+        if skip > 0 {
+            stats.shells += skip;
+            stats.rays_entering += skip * rays.remaining as u64;
+            stats.rays_leaving += skip * rays.remaining as u64;
+        }
+        // The shell index relative to the first one not skipped (the same in every sector).
         let mut j = 0usize;
         while rays.remaining > 0 && r1 < far {
             let keeps = (r1 - margin).max(0.0) * cos_lb;

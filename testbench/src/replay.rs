@@ -718,7 +718,9 @@ pub(crate) fn run_tool(dir: &Path, program: &str, args: &[&str], install: &str) 
         .output()
         .map_err(|e| {
             if e.kind() == std::io::ErrorKind::NotFound {
-                Error::new(format!("`{program}` not found on PATH: the replay needs it ({install})"))
+                Error::new(format!(
+                    "`{program}` is not installed or not on PATH; this step needs it ({install})"
+                ))
             } else {
                 Error::new(format!("cannot run `{program}`: {e}"))
             }
