@@ -377,12 +377,16 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
 
     let solution: Solution = match a.solver {
         Solver::Progressive => {
-            let bar = progress_bar(0, "shots", a.quiet);
-            bar.set_length(a.max_steps as u64);
+            // The number of shots is not known in advance: a spinner with the count.
+            let bar = match a.quiet {
+                true => indicatif::ProgressBar::hidden(),
+                false => indicatif::ProgressBar::new_spinner(),
+            };
             let mut shots = 0u64;
             let s = solve::progressive(&surfaces, a.tolerance, a.max_steps, |k| {
                 shots += 1;
-                bar.set_position(shots);
+                bar.set_message(format!("{shots} shots (patch {k})"));
+                bar.tick();
                 row(k)
             });
             bar.finish_and_clear();
