@@ -3,8 +3,10 @@
 //! Verilog export only.
 //!
 //! - `cargo xtask fpga --out DIR`: synthesizes every RTL block with Yosys and places and routes it
-//!   with nextpnr for ECP5 and iCE40, then writes `DIR/fpga.json` and `DIR/fpga.md` (LUTs,
-//!   flip-flops, DSP blocks, block RAMs and the post-route maximum clock frequency).
+//!   with nextpnr for ECP5 and iCE40 (once per placement seed of `--seeds`), then writes
+//!   `DIR/fpga.json` (every run), `DIR/fpga-seeds.json` (each block's minimum, median and
+//!   maximum fmax over the seeds) and `DIR/fpga.md` (LUTs, flip-flops, DSP blocks, block RAMs
+//!   and the post-route maximum clock frequency).
 
 mod fpga;
 
@@ -22,7 +24,7 @@ struct Cli {
 enum Task {
     /// Resources and clock rate: synthesize each block and the whole processing element with
     /// Yosys, place and route them with nextpnr for ECP5 (LFE5U-85F) and iCE40 (UP5K or HX8K),
-    /// and write DIR/fpga.json and DIR/fpga.md.
+    /// once per placement seed, and write DIR/fpga.json, DIR/fpga-seeds.json and DIR/fpga.md.
     Fpga(fpga::FpgaArgs),
 }
 
