@@ -859,6 +859,6 @@ mod tests {
     #[test]
     fn missing_simulator_is_an_error_that_says_so() {
         let err = run_tool(Path::new("."), "no-such-simulator-4e91", &[], "install it").unwrap_err();
-        assert!(err.message().contains("`no-such-simulator-4e91` not found on PATH"), "{err}");
+        assert!(err.message().contains("`no-such-simulator-4e91` is not installed or not on PATH"), "{err}");
     }
 }
