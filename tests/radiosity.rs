@@ -182,6 +182,12 @@ fn an_occluded_pair_matches_crossed_strings_around_the_occluder() {
     assert!((got - exact).abs() <= 1e-3, "F = {got}, crossed strings around the box {exact}");
 }
 
+/// The room of [`small_room`]: 64 × 64, 16 patches, no boxes, two lights.
+fn small_room_scene() -> Prepared {
+    let spec = RoomSpec { width: 64.0, height: 64.0, patch_length: 16.0, boxes: 0, ..RoomSpec::default() };
+    Prepared::new(room(&spec).unwrap(), GridParams::default())
+}
+
 fn default_room() -> Prepared {
     Prepared::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default())
 }
@@ -321,8 +327,7 @@ fn solver_errors_name_the_problem() {
 
 #[test]
 fn slices_merge_into_the_whole_matrix() {
-    let spec = RoomSpec { width: 64.0, height: 64.0, patch_length: 16.0, boxes: 0, ..RoomSpec::default() };
-    let p = Prepared::new(room(&spec).unwrap(), GridParams::default());
+    let p = small_room_scene();
     let fp = params(128, 2);
     let n = p.scene.len();
     let slice = |r: std::ops::Range<usize>| {
@@ -354,8 +359,7 @@ fn slices_merge_into_the_whole_matrix() {
 
 #[test]
 fn rows_on_the_pe_are_the_bit_true_rows() {
-    let spec = RoomSpec { width: 64.0, height: 64.0, patch_length: 16.0, boxes: 0, ..RoomSpec::default() };
-    let p = Prepared::new(room(&spec).unwrap(), GridParams::default());
+    let p = small_room_scene();
     let config = CosimConfig { tc: 2, cache: None, vcd: None, engine: Engine::RustHdl };
     for method in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
         let fp = FfParams { method, arith: Arith::Fixed, ..params(64, 2) };
@@ -394,29 +398,19 @@ fn room_generator_checks_its_options() {
     }
 }
 
+/// Writes a 64 × 64 room of 16 patches without boxes, with `lights` lights, to `path`.
+fn small_room(path: &str, lights: usize) {
+    let lights = lights.to_string();
+    let spec = ["--width", "64", "--height", "64", "--patch-length", "16", "--boxes", "0"];
+    ok(&[&["scene", "gen", "--kind", "room"][..], &spec, &["--lights", &lights, "--out", path]].concat());
+}
+
 #[test]
 fn the_commands() {
     let dir = TempDir::new("radiosity");
     let scene = dir.join("room.json");
     let scene = path_arg(&scene);
-    ok(&[
-        "scene",
-        "gen",
-        "--kind",
-        "room",
-        "--width",
-        "64",
-        "--height",
-        "64",
-        "--patch-length",
-        "16",
-        "--boxes",
-        "0",
-        "--lights",
-        "1",
-        "--out",
-        scene,
-    ]);
+    small_room(scene, 1);
     let row = parse_json(
         &ok(&[
             "form-factors",
@@ -523,24 +517,7 @@ fn the_commands() {
     fails(&["form-factors", "--scene", scene, "--rows", "5..3", "--out", path_arg(&a)], &["--rows 5..3"]);
     fails(&["form-factors", "--merge", path_arg(&a), "--out", path_arg(&m)], &["leave rows 7..16 out"]);
     let other = dir.join("other.json");
-    ok(&[
-        "scene",
-        "gen",
-        "--kind",
-        "room",
-        "--width",
-        "64",
-        "--height",
-        "64",
-        "--patch-length",
-        "16",
-        "--boxes",
-        "0",
-        "--lights",
-        "2",
-        "--out",
-        path_arg(&other),
-    ]);
+    small_room(path_arg(&other), 2);
     fails(
         &["radiosity", "--scene", path_arg(&other), "--solver", "full", "--matrix", path_arg(&m)],
         &["do not match"],
