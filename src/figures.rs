@@ -372,16 +372,7 @@ fn measure_inner(opts: &FigureOptions) -> Result<(Vec<Row>, usize, usize, u64)> 
         for (m, a) in METHODS.iter().zip(&acc[i]) {
             let n = a.n.max(1) as f64;
             let t = a.total;
-            let avg = |v: u64| (v as f64 / n).round() as u64;
-            let mean = Counters {
-                patches_read_before_screening: avg(t.patches_read_before_screening),
-                patches_read_after_screening: avg(t.patches_read_after_screening),
-                cells_traversed: avg(t.cells_traversed),
-                intersection_computations: avg(t.intersection_computations),
-                actual_intersections: avg(t.actual_intersections),
-                adlc_true: t.adlc_true / n,
-                adlc_estimated: t.adlc_estimated / n,
-            };
+            let mean = t.mean(n);
             let shelling = *m != Method::Conventional;
             rows.push(Row {
                 length,

@@ -973,16 +973,15 @@ fn demo(a: DemoArgs) -> Result<()> {
 }
 
 fn print_counters(out: &mut Out, rows: &[(Method, Counters)]) -> Result<()> {
-    let short = ["read before", "read after", "cells", "tests", "actual", "ADLC", "ADLC est."];
     out.write_fmt(format_args!("{:<14}", "method"))?;
-    for s in short {
+    for s in Counters::LABELS {
         out.write_fmt(format_args!("{s:>12}"))?;
     }
     say!(out);
     for (m, c) in rows {
         out.write_fmt(format_args!("{:<14}", m.name()))?;
-        for (i, v) in c.values().iter().enumerate() {
-            if i >= 5 {
+        for (v, integral) in c.values().iter().zip(Counters::INTEGRAL) {
+            if !integral {
                 out.write_fmt(format_args!("{v:>12.2}"))?;
             } else {
                 out.write_fmt(format_args!("{v:>12}"))?;
