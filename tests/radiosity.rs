@@ -13,7 +13,7 @@ use shelling::radiosity::matrix::{self, MatrixFile};
 use shelling::radiosity::on_pe::{self, PeTotals};
 use shelling::radiosity::solve::{self, Surfaces};
 use shelling::rays::RaySet;
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{room, Material, RoomSpec, Scene};
 use shelling::trace::Method;
 
@@ -21,15 +21,15 @@ fn v(x: f64, y: f64) -> Vec2 {
     Vec2::new(x, y)
 }
 
-fn prepared(segments: Vec<Segment>) -> Prepared {
-    Prepared::new(Scene::new(segments).expect("a valid scene"), GridParams::default())
+fn prepared(segments: Vec<Segment>) -> GriddedScene {
+    GriddedScene::new(Scene::new(segments).expect("a valid scene"), GridParams::default())
 }
 
 fn params(rays: usize, origins: usize) -> FfParams {
     FfParams { rays, origins, ..FfParams::default() }
 }
 
-fn ff(p: &Prepared, i: usize, j: usize, fp: &FfParams) -> f64 {
+fn ff(p: &GriddedScene, i: usize, j: usize, fp: &FfParams) -> f64 {
     form_factors::row(p, i, fp).expect("the row traces").get(j)
 }
 
@@ -182,8 +182,8 @@ fn an_occluded_pair_matches_crossed_strings_around_the_occluder() {
     assert!((got - exact).abs() <= 1e-3, "F = {got}, crossed strings around the box {exact}");
 }
 
-fn default_room() -> Prepared {
-    Prepared::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default())
+fn default_room() -> GriddedScene {
+    GriddedScene::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default())
 }
 
 #[test]
@@ -231,7 +231,7 @@ fn room_rows_are_reciprocal_within_the_documented_error() {
 }
 
 /// A room of `spec` with every patch emitting `e` and reflecting `rho`.
-fn furnace(e: f64, rho: f64) -> Prepared {
+fn furnace(e: f64, rho: f64) -> GriddedScene {
     let spec = RoomSpec {
         width: 128.0,
         height: 96.0,
@@ -242,7 +242,7 @@ fn furnace(e: f64, rho: f64) -> Prepared {
     };
     let mut scene = room(&spec).unwrap();
     scene.materials = vec![Material { reflectance: Some(rho), emission: Some(e) }; scene.len()];
-    Prepared::new(scene, GridParams::default())
+    GriddedScene::new(scene, GridParams::default())
 }
 
 #[test]
@@ -322,7 +322,7 @@ fn solver_errors_name_the_problem() {
 #[test]
 fn slices_merge_into_the_whole_matrix() {
     let spec = RoomSpec { width: 64.0, height: 64.0, patch_length: 16.0, boxes: 0, ..RoomSpec::default() };
-    let p = Prepared::new(room(&spec).unwrap(), GridParams::default());
+    let p = GriddedScene::new(room(&spec).unwrap(), GridParams::default());
     let fp = params(128, 2);
     let n = p.scene.len();
     let slice = |r: std::ops::Range<usize>| {
@@ -355,7 +355,7 @@ fn slices_merge_into_the_whole_matrix() {
 #[test]
 fn rows_on_the_pe_are_the_bit_true_rows() {
     let spec = RoomSpec { width: 64.0, height: 64.0, patch_length: 16.0, boxes: 0, ..RoomSpec::default() };
-    let p = Prepared::new(room(&spec).unwrap(), GridParams::default());
+    let p = GriddedScene::new(room(&spec).unwrap(), GridParams::default());
     let config = CosimConfig { tc: 2, cache: None, vcd: None, engine: Engine::RustHdl };
     for method in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
         let fp = FfParams { method, arith: Arith::Fixed, ..params(64, 2) };

@@ -76,7 +76,7 @@ use super::{with_scratch, HitTest, SceneView, Scratch, ScreenCache};
 use crate::counters::Counters;
 use crate::geom::{cross, Hit, NearestHits, Segment, Vec2};
 use crate::grid::{CellScan, Grid};
-use crate::limits::{MAX_RAYS, MAX_SHELLS};
+use crate::limits::{MAX_BUNDLE_RAYS, MAX_SHELLS};
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
 
@@ -134,15 +134,15 @@ impl ShellParams {
                 self.min_sector, self.max_sector
             ));
         }
-        if self.max_sector > MAX_RAYS {
+        if self.max_sector > MAX_BUNDLE_RAYS {
             return Err(format!(
-                "the widest sector must be at most {MAX_RAYS} rays, got {}",
+                "the widest sector must be at most {MAX_BUNDLE_RAYS} rays, got {}",
                 self.max_sector
             ));
         }
-        if self.first_sector == 0 || self.first_sector > MAX_RAYS {
+        if self.first_sector == 0 || self.first_sector > MAX_BUNDLE_RAYS {
             return Err(format!(
-                "the first sector must hold between 1 and {MAX_RAYS} rays, got {}",
+                "the first sector must hold between 1 and {MAX_BUNDLE_RAYS} rays, got {}",
                 self.first_sector
             ));
         }
