@@ -241,14 +241,15 @@ pub(super) fn trace<H: HitTest>(
         // Only the stochastic tracker reads the patches' distances (its radial subshells).
         let with_r_min = tracking == Tracking::Stochastic;
         let cache = ScreenCache::new(scene, bundle, hot, cold, patch_stamp, *tick, with_r_min);
+        let geo = ShellGeometry::new(scene.grid, bundle.source.origin, params);
+        let view = BundleView { scene, bundle, params, test, geo };
+        let marks = ShellMarks { cell_seen, region_seen, regions: RegionSet::new() };
         #[cfg(target_arch = "x86_64")]
         if x86_64_v3() {
             // SAFETY: the CPU has the features `trace_bundle_v3` is compiled for (just checked).
-            return unsafe {
-                trace_bundle_v3(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
-            };
+            return unsafe { trace_bundle_v3(&view, tracking, cache, tick, marks) };
         }
-        trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
+        trace_bundle(&view, tracking, cache, tick, marks)
     })
 }
 
@@ -270,19 +271,14 @@ fn x86_64_v3() -> bool {
 /// enabled here anyway.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
-#[allow(clippy::too_many_arguments)]
 fn trace_bundle_v3<H: HitTest>(
-    scene: SceneView<'_>,
-    bundle: &Bundle,
-    params: &ShellParams,
+    view: &BundleView<'_, H>,
     tracking: Tracking,
-    test: &H,
     cache: ScreenCache<'_>,
     tick: &mut u64,
-    cell_seen: &mut [u64],
-    region_seen: &mut [u64],
+    marks: ShellMarks<'_>,
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
-    trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
+    trace_bundle(view, tracking, cache, tick, marks)
 }
 
 /// The rays of the current sector `[s, e)` as bit sets over sector-local indices (bit `i % 64`
@@ -674,56 +670,53 @@ struct BundleView<'a, H> {
     geo: ShellGeometry,
 }
 
-/// The body of [`trace`], on this thread's scratch memory: `cell_seen` and `region_seen` hold
-/// stamps compared against a fresh tick per shell, the cache's load stamps one per sector.
+/// What the steps of one bundle's trace change: the current sector's rays, every ray's nearest
+/// hit, the counters, the tracker's running estimate and the current shell's relevant patches.
+struct BundleState {
+    rays: SectorRays,
+    best: NearestHits,
+    c: Counters,
+    estimate: AdlcEstimate,
+    relevant: Vec<u32>,
+}
+
+/// The body of [`trace`], on this thread's scratch memory: `marks` holds stamps compared
+/// against a fresh tick per shell, the cache's load stamps one per sector.
 ///
 /// Sector after sector ([`SectorSizing`]), shell after shell: a shell wholly beyond the grid
 /// only retires rays ([`pass_beyond_grid`]); any other is loaded ([`load_shell`]), its
 /// relevant patches tested by the tracking mechanism ([`track_stochastic`],
 /// [`track_deterministic`]), and the rays whose hit lies before its end retired.
-#[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn trace_bundle<H: HitTest>(
-    scene: SceneView<'_>,
-    bundle: &Bundle,
-    params: &ShellParams,
+    view: &BundleView<'_, H>,
     tracking: Tracking,
-    test: &H,
     mut cache: ScreenCache<'_>,
     tick: &mut u64,
-    cell_seen: &mut [u64],
-    region_seen: &mut [u64],
+    mut marks: ShellMarks<'_>,
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
-    let view = BundleView {
-        scene,
-        bundle,
-        params,
-        test,
-        geo: ShellGeometry::new(scene.grid, bundle.source.origin, params),
-    };
-    let geo = &view.geo;
+    let (bundle, params, test, geo) = (view.bundle, view.params, view.test, &view.geo);
     let r = bundle.len();
-    let mut c = Counters::default();
     let mut stats = ShellStats::default();
-    let mut best = NearestHits::new(r);
-    let mut rays = SectorRays::new();
-    let mut estimate = AdlcEstimate::default();
-    let mut marks = ShellMarks { cell_seen, region_seen, regions: RegionSet::new() };
-
-    // Room for a sector's shells across the grid and a shell's relevant patches, so that the
-    // common trace does not regrow them.
+    // Room for a shell's relevant patches, so that the common trace does not regrow them.
+    let mut st = BundleState {
+        rays: SectorRays::new(),
+        best: NearestHits::new(r),
+        c: Counters::default(),
+        estimate: AdlcEstimate::default(),
+        relevant: Vec::with_capacity(256),
+    };
     let mut prev: Vec<Option<ShellEstimate>> = Vec::with_capacity(geo.shells_hint());
     let mut cur: Vec<Option<ShellEstimate>> = Vec::with_capacity(geo.shells_hint());
     let mut sizing = SectorSizing::new(params);
     let mut s = 0usize;
-    let mut relevant: Vec<u32> = Vec::with_capacity(256);
 
     while s < r {
         let e = sizing.end(params, s, r);
         stats.sectors += 1;
         *tick += 1;
         let sector = *tick;
-        rays.start(s, e);
+        st.rays.start(s, e);
         test.sector(s..e);
         let mut cone = SectorCone::new(bundle, s, e);
         cur.clear();
@@ -731,68 +724,34 @@ fn trace_bundle<H: HitTest>(
         let mut r1 = geo.r_first;
         if geo.skip > 0 {
             stats.shells += geo.skip;
-            stats.rays_entering += geo.skip * rays.remaining as u64;
-            stats.rays_leaving += geo.skip * rays.remaining as u64;
+            stats.rays_entering += geo.skip * st.rays.remaining as u64;
+            stats.rays_leaving += geo.skip * st.rays.remaining as u64;
         }
         // The shell index relative to the first one not skipped (the same in every sector).
         let mut j = 0usize;
-        while rays.remaining > 0 && r1 < geo.far {
+        while st.rays.remaining > 0 && r1 < geo.far {
             if cone.beyond(geo, r1) {
-                pass_beyond_grid(&view, r1, &mut rays, &best, &mut stats, &mut cur);
+                pass_beyond_grid(view, r1, &mut st, &mut stats, &mut cur);
                 break;
             }
             let r2 = r1 + geo.depth;
             *tick += 1;
             let shell_gen = *tick;
             stats.shells += 1;
-            stats.rays_entering += rays.remaining as u64;
+            stats.rays_entering += st.rays.remaining as u64;
 
-            load_shell(
-                &view,
-                &cone,
-                &rays,
-                r1,
-                r2,
-                sector,
-                shell_gen,
-                &mut cache,
-                &mut marks,
-                &mut relevant,
-                &mut c,
-            );
-            let here = shell_estimate(&relevant, &cache);
+            load_shell(view, &cone, r1, r2, sector, shell_gen, &mut cache, &mut marks, &mut st);
+            let here = shell_estimate(&st.relevant, &cache);
             match tracking {
                 Tracking::Stochastic => {
-                    let neighbour = prev.get(j).copied().flatten();
-                    track_stochastic(
-                        &view,
-                        neighbour,
-                        r1,
-                        &mut relevant,
-                        &cache,
-                        &mut rays,
-                        &mut best,
-                        &mut c,
-                        &mut estimate,
-                    );
+                    track_stochastic(view, prev.get(j).copied().flatten(), r1, &cache, &mut st)
                 }
-                Tracking::Deterministic => {
-                    track_deterministic(
-                        &view,
-                        here,
-                        &mut relevant,
-                        &cache,
-                        &mut rays,
-                        &mut best,
-                        &mut c,
-                        &mut estimate,
-                    );
-                }
+                Tracking::Deterministic => track_deterministic(view, here, &cache, &mut st),
             }
 
             // End of shell: rays whose nearest hit lies before r₂ are done.
-            rays.retire(test, &best, r2 - geo.margin);
-            stats.rays_leaving += rays.remaining as u64;
+            st.rays.retire(test, &st.best, r2 - geo.margin);
+            stats.rays_leaving += st.rays.remaining as u64;
             if here.is_some() && first_adlc.is_none() {
                 first_adlc = here.map(|h| h.adlc);
             }
@@ -806,8 +765,8 @@ fn trace_bundle<H: HitTest>(
         std::mem::swap(&mut prev, &mut cur);
         s = e;
     }
-    c.adlc_estimated = estimate.mean();
-    (best.into_hits(), c, stats)
+    st.c.adlc_estimated = st.estimate.mean();
+    (st.best.into_hits(), st.c, stats)
 }
 
 /// The shell starting at `r1` and all later ones of the sector lie beyond the grid: they meet
@@ -817,12 +776,12 @@ fn trace_bundle<H: HitTest>(
 fn pass_beyond_grid<H: HitTest>(
     view: &BundleView<'_, H>,
     mut r1: f64,
-    rays: &mut SectorRays,
-    best: &NearestHits,
+    st: &mut BundleState,
     stats: &mut ShellStats,
     cur: &mut Vec<Option<ShellEstimate>>,
 ) {
     let geo = &view.geo;
+    let BundleState { rays, best, .. } = st;
     loop {
         let r2 = r1 + geo.depth;
         stats.shells += 1;
@@ -852,16 +811,15 @@ fn pass_beyond_grid<H: HitTest>(
 fn load_shell<H: HitTest>(
     view: &BundleView<'_, H>,
     cone: &SectorCone,
-    rays: &SectorRays,
     r1: f64,
     r2: f64,
     sector: u64,
     shell_gen: u64,
     cache: &mut ScreenCache<'_>,
     marks: &mut ShellMarks<'_>,
-    relevant: &mut Vec<u32>,
-    c: &mut Counters,
+    st: &mut BundleState,
 ) {
+    let BundleState { rays, c, relevant, .. } = st;
     let (grid, bundle, test, o, margin) =
         (view.scene.grid, view.bundle, view.test, view.geo.o, view.geo.margin);
     let (s, e, one_piece) = (rays.s, rays.e, cone.one_piece);
@@ -957,13 +915,10 @@ fn track_stochastic<H: HitTest>(
     view: &BundleView<'_, H>,
     neighbour: Option<ShellEstimate>,
     r1: f64,
-    relevant: &mut [u32],
     cache: &ScreenCache<'_>,
-    rays: &mut SectorRays,
-    best: &mut NearestHits,
-    c: &mut Counters,
-    estimate: &mut AdlcEstimate,
+    st: &mut BundleState,
 ) {
+    let BundleState { rays, best, c, estimate, relevant } = st;
     let (params, depth, margin) = (view.params, view.geo.depth, view.geo.margin);
     let (s, e) = (rays.s, rays.e);
     let adlc = neighbour.map_or(params.default_adlc, |x| x.adlc);
@@ -1005,13 +960,10 @@ fn track_stochastic<H: HitTest>(
 fn track_deterministic<H: HitTest>(
     view: &BundleView<'_, H>,
     here: Option<ShellEstimate>,
-    relevant: &mut [u32],
     cache: &ScreenCache<'_>,
-    rays: &mut SectorRays,
-    best: &mut NearestHits,
-    c: &mut Counters,
-    estimate: &mut AdlcEstimate,
+    st: &mut BundleState,
 ) {
+    let BundleState { rays, best, c, estimate, relevant } = st;
     let (s, e) = (rays.s, rays.e);
     if let Some(h) = here {
         estimate.add(h.adlc, relevant.len());
