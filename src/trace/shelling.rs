@@ -226,6 +226,10 @@ struct ShellEstimate {
     flatness: f64,
 }
 
+/// Traces `bundle` by S or D (`tracking`) with the backend `test`: the nearest hit of every ray,
+/// the counters and the shell statistics. Sets up the per-source screening cache and the
+/// shell stamps on this thread's scratch memory and runs [`trace_bundle`], as
+/// [`trace_bundle_v3`] where the CPU has its features.
 pub(super) fn trace<H: HitTest>(
     scene: SceneView<'_>,
     bundle: &Bundle,
