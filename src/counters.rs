@@ -1,7 +1,7 @@
 //! The paper's counters (Figures 8–11 and 13). The field names are fixed: the CLI's JSON and the
 //! figures' CSV use them as they are.
 //!
-//! The counters are declared once, in the [`counters!`] invocation below: the struct, its
+//! The counters are declared once, in the `counters!` invocation below: the struct, its
 //! [`Counters::NAMES`], [`Counters::LABELS`], [`Counters::values`], [`Counters::mean`] and the
 //! sum all come from that one list, in its order (the order of the JSON fields and the CSV
 //! columns).
