@@ -5,6 +5,7 @@ use anyhow::{bail, Context, Result};
 use clap::{ArgGroup, Args, ValueEnum};
 use shelling::arith::Arith;
 use shelling::cosim::{CosimConfig, Engine};
+use shelling::limits::{self, check_range, check_range_for};
 use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
 use shelling::radiosity::matrix::{self, MatrixFile};
 use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ, PE_RAY_MEMORY};
@@ -16,6 +17,9 @@ use shelling::staged::Staged;
 use shelling::trace::Method;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
+
+/// The most steps of a solve `--max-steps` accepts.
+const MAX_STEPS: usize = 10_000_000;
 
 /// How each form-factor row is estimated.
 #[derive(Args, Clone)]
@@ -45,13 +49,9 @@ impl FfArgs {
             false => (self.rays.unwrap_or(DEFAULT_RAYS), MAX_BUNDLE_RAYS),
             true => (self.rays.unwrap_or(PE_RAY_MEMORY), PE_RAY_MEMORY),
         };
-        if rays == 0 || rays > max {
-            let with = if on_pe { " with --on-pe (the PE's ray memory)" } else { "" };
-            bail!("--rays must be between 1 and {max}{with}, got {rays}");
-        }
-        if self.origins == 0 || self.origins > MAX_ORIGINS {
-            bail!("--origins must be between 1 and {MAX_ORIGINS}, got {}", self.origins);
-        }
+        let note = if on_pe { "with --on-pe (the PE's ray memory)" } else { "" };
+        check_range_for("--rays", rays, 1, max, note).map_err(anyhow::Error::msg)?;
+        check_range("--origins", self.origins, 1, MAX_ORIGINS).map_err(anyhow::Error::msg)?;
         Ok(FfParams {
             rays,
             origins: self.origins,
@@ -336,9 +336,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     if !(solve::MIN_TOLERANCE..1.0).contains(&a.tolerance) {
         bail!("--tolerance must be a number in [1e-12, 1), got {}", a.tolerance);
     }
-    if a.max_steps == 0 || a.max_steps > 10_000_000 {
-        bail!("--max-steps must be between 1 and 10000000, got {}", a.max_steps);
-    }
+    check_range("--max-steps", a.max_steps, 1, MAX_STEPS).map_err(anyhow::Error::msg)?;
     if a.matrix.is_some() && a.solver != Solver::Full {
         bail!("--matrix needs --solver full: progressive refinement computes its rows as it shoots");
     }
@@ -346,13 +344,9 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         if a.ff.method == Method::Brute {
             bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
         }
-        if a.tc == 0 || a.tc > 1024 {
-            bail!("--tc must be between 1 and 1024 cycles per patch, got {}", a.tc);
-        }
+        check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(anyhow::Error::msg)?;
         if let Some(c) = a.cache {
-            if !c.is_power_of_two() || c > 4096 {
-                bail!("--cache must be a power of two up to 4096, got {c}");
-            }
+            limits::check_cache("--cache", c).map_err(anyhow::Error::msg)?;
         }
         if !(a.clock_mhz.is_finite() && a.clock_mhz > 0.0 && a.clock_mhz <= 10_000.0) {
             bail!("--clock-mhz must be a positive number up to 10000, got {}", a.clock_mhz);
@@ -383,12 +377,16 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
 
     let solution: Solution = match a.solver {
         Solver::Progressive => {
-            let bar = progress_bar(0, "shots", a.quiet);
-            bar.set_length(a.max_steps as u64);
+            // The number of shots is not known in advance: a spinner with the count.
+            let bar = match a.quiet {
+                true => indicatif::ProgressBar::hidden(),
+                false => indicatif::ProgressBar::new_spinner(),
+            };
             let mut shots = 0u64;
             let s = solve::progressive(&surfaces, a.tolerance, a.max_steps, |k| {
                 shots += 1;
-                bar.set_position(shots);
+                bar.set_message(format!("{shots} shots (patch {k})"));
+                bar.tick();
                 row(k)
             });
             bar.finish_and_clear();

@@ -87,9 +87,12 @@ pub struct FpgaArgs {
     /// Target clock frequency on iCE40, MHz (nextpnr --freq).
     #[arg(long, default_value_t = 50.0)]
     pub ice40_mhz: f64,
-    /// nextpnr's placement seed (fixed, for reproducible results).
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    /// nextpnr's placement seeds, comma-separated (each fixed, for reproducible results): every
+    /// block is synthesized once and placed and routed once per seed; fpga.md reports the
+    /// minimum, median and maximum fmax over the seeds, and the goal is judged on the median.
+    #[arg(long = "seeds", alias = "seed", value_delimiter = ',', default_values_t = [1u64],
+          value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    pub seeds: Vec<u64>,
     /// Jobs (one block on one family: Yosys then nextpnr) run at once.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
     pub jobs: u64,
@@ -195,7 +198,7 @@ struct Flow {
     /// The output directory (absolute); the tools run in it, on paths relative to it.
     out: PathBuf,
     tools: BTreeMap<ToolKind, Tool>,
-    seed: u64,
+    seeds: Vec<u64>,
 }
 
 /// Runs `cargo xtask fpga`.
@@ -240,33 +243,48 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
     eprintln!("exported {} files into {}", written.len(), out.join("verilog").display());
 
-    let ctx = Flow { out: out.clone(), tools, seed: args.seed };
+    let mut seeds = args.seeds.clone();
+    seeds.sort();
+    seeds.dedup();
+    if seeds.len() > 16 {
+        bail!("--seeds lists {} seeds: at most 16", seeds.len());
+    }
+    let ctx = Flow { out: out.clone(), tools, seeds };
     // Every (block, target), reported in this order; run longest first (the whole PE).
     let jobs: Vec<(String, Target)> =
         blocks.iter().flat_map(|b| targets.iter().map(move |t| (b.clone(), t.clone()))).collect();
     let mut order: Vec<usize> = (0..jobs.len()).collect();
     order.sort_by_key(|&i| jobs[i].0 != "processing_element");
-    let rows = run_all(&ctx, &jobs, &order, args.jobs as usize);
+    let rows: Vec<Row> = run_all(&ctx, &jobs, &order, args.jobs as usize).into_iter().flatten().collect();
+    let spreads = spreads(&rows);
 
     let json = serde_json::to_string_pretty(&rows)? + "\n";
     std::fs::write(out.join("fpga.json"), json)
         .with_context(|| format!("writing {}/fpga.json", out.display()))?;
-    let md = markdown(&rows, &ctx);
+    std::fs::write(out.join("fpga-seeds.json"), serde_json::to_string_pretty(&spreads)? + "\n")
+        .with_context(|| format!("writing {}/fpga-seeds.json", out.display()))?;
+    let md = markdown(&rows, &spreads, &ctx);
     std::fs::write(out.join("fpga.md"), &md).with_context(|| format!("writing {}/fpga.md", out.display()))?;
     println!("{md}");
     println!(
-        "written: {}/fpga.json, {}/fpga.md, logs in {}/logs",
+        "written: {}/fpga.json, {}/fpga-seeds.json, {}/fpga.md, logs in {}/logs",
+        out.display(),
         out.display(),
         out.display(),
         out.display()
     );
 
-    for r in rows.iter().filter(|r| r.block == "processing_element" && r.family == Family::Ecp5) {
-        match r.fmax_mhz {
-            Some(f) if f >= r.target_mhz => {
-                println!("goal met: the PE on ECP5 at {f:.1} MHz >= {} MHz", r.target_mhz)
-            }
-            Some(f) => println!("goal missed: the PE on ECP5 at {f:.1} MHz < {} MHz", r.target_mhz),
+    for sp in spreads.iter().filter(|s| s.block == "processing_element" && s.family == Family::Ecp5) {
+        let n = sp.seeds.len();
+        match sp.median_mhz {
+            Some(f) if f >= sp.target_mhz => println!(
+                "goal met: the PE on ECP5 at a median of {f:.1} MHz over {n} seeds >= {} MHz",
+                sp.target_mhz
+            ),
+            Some(f) => println!(
+                "goal missed: the PE on ECP5 at a median of {f:.1} MHz over {n} seeds < {} MHz",
+                sp.target_mhz
+            ),
             None => println!("goal not measured: the PE on ECP5 has no fmax"),
         }
     }
@@ -287,21 +305,24 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     }
 }
 
-/// Runs the jobs on `workers` threads, in `order`; returns the rows in the jobs' order.
-fn run_all(ctx: &Flow, jobs: &[(String, Target)], order: &[usize], workers: usize) -> Vec<Row> {
+/// Runs the jobs on `workers` threads, in `order`; returns each job's rows (one per seed) in the
+/// jobs' order.
+fn run_all(ctx: &Flow, jobs: &[(String, Target)], order: &[usize], workers: usize) -> Vec<Vec<Row>> {
     let queue = Mutex::new(order.iter().copied());
-    let results: Mutex<Vec<Option<Row>>> = Mutex::new(vec![None; jobs.len()]);
+    let results: Mutex<Vec<Option<Vec<Row>>>> = Mutex::new(vec![None; jobs.len()]);
     let done = Mutex::new(0usize);
     std::thread::scope(|s| {
         for _ in 0..workers.min(jobs.len()).max(1) {
             s.spawn(|| loop {
                 let Some(i) = queue.lock().expect("queue").next() else { break };
                 let (block, target) = &jobs[i];
-                let row = run_job(ctx, block, target);
+                let rows = run_job(ctx, block, target);
                 let mut n = done.lock().expect("counter");
                 *n += 1;
-                eprintln!("[{}/{}] {}", *n, jobs.len(), summary(&row));
-                results.lock().expect("results")[i] = Some(row);
+                for row in &rows {
+                    eprintln!("[{}/{}] {}", *n, jobs.len(), summary(row));
+                }
+                results.lock().expect("results")[i] = Some(rows);
             });
         }
     });
@@ -317,15 +338,18 @@ fn summary(r: &Row) -> String {
         _ => "no clocked path".to_string(),
     };
     format!(
-        "{} {}: yosys {}, nextpnr {}: {outcome}",
+        "{} {} seed {}: yosys {}, nextpnr {}: {outcome}",
         r.block,
         r.family.name(),
+        r.seed,
         time(r.yosys_s),
         time(r.nextpnr_s)
     )
 }
 
-fn run_job(ctx: &Flow, block: &str, target: &Target) -> Row {
+/// One block on one family: Yosys once, then nextpnr once per seed; one row per seed (a Yosys
+/// failure gives every seed's row the error).
+fn run_job(ctx: &Flow, block: &str, target: &Target) -> Vec<Row> {
     let yosys = &ctx.tools[&ToolKind::Yosys];
     let nextpnr = &ctx.tools[&target.tool];
     let mut row = Row {
@@ -343,7 +367,7 @@ fn run_job(ctx: &Flow, block: &str, target: &Target) -> Row {
         over_capacity: Vec::new(),
         error: None,
         wrapper_ffs: None,
-        seed: ctx.seed,
+        seed: 0,
         yosys_s: None,
         nextpnr_s: None,
         critical_path: None,
@@ -352,14 +376,32 @@ fn run_job(ctx: &Flow, block: &str, target: &Target) -> Row {
             ("nextpnr".to_string(), nextpnr.version.clone()),
         ]),
     };
-    if let Err(e) = measure(ctx, block, target, &mut row) {
-        row.error = Some(format!("{e:#}"));
-    }
-    row
+    let synthesized = synthesize(ctx, block, target, &mut row);
+    ctx.seeds
+        .iter()
+        .map(|&seed| {
+            let mut r = Row { seed, ..row.clone() };
+            let placed = match &synthesized {
+                Ok(s) => place(ctx, target, s, seed, &mut r),
+                Err(e) => Err(anyhow::anyhow!("{e:#}")),
+            };
+            if let Err(e) = placed {
+                r.error = Some(format!("{e:#}"));
+            }
+            r
+        })
+        .collect()
 }
 
-/// Yosys then nextpnr on one block; fills `row` as it goes.
-fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()> {
+/// What synthesis leaves for place and route: the job's directory and its wrapper's flip-flops.
+struct Synthesized {
+    job: String,
+    dir: PathBuf,
+    wrapper_ffs: u64,
+}
+
+/// Yosys on one block in its wrapper; fills the flip-flop counts of `row`.
+fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<Synthesized> {
     let family = target.family.name();
     let job = format!("{block}-{family}");
     // The tools run in the job's directory on bare file names: the YoWASP builds resolve a
@@ -379,9 +421,8 @@ fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()
             .with_context(|| format!("writing {}", dir.join(name).display()))?;
     }
 
-    let netlist_json = "synth.json";
     let script = format!(
-        "read_verilog {}{source} {wrapper_v}; {} -top {} -json {netlist_json}; stat",
+        "read_verilog {}{source} {wrapper_v}; {} -top {} -json {NETLIST_JSON}; stat",
         target.defines, target.synth, wrap.top
     );
     eprintln!("{job}: yosys ({} {} bits in, {} bits out)", target.synth, wrap.in_bits, wrap.out_bits);
@@ -391,11 +432,21 @@ fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()
     let status = tool_run(&dir, &ctx.tools[&ToolKind::Yosys], &yosys_args, &log)?;
     row.yosys_s = Some(report::round(t.elapsed().as_secs_f64(), 1));
     status.check()?;
-    let cells = netlist::count(&dir.join(netlist_json), &wrap.top)?;
+    let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
     row.wrapper_ffs = Some(cells.wrapper_ffs);
     row.ffs = Some(cells.ffs - cells.wrapper_ffs);
+    Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs })
+}
 
-    let report_json = "report.json";
+/// The netlist Yosys writes in a job's directory.
+const NETLIST_JSON: &str = "synth.json";
+
+/// nextpnr on a synthesized block with one seed; fills `row` as it goes.
+fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row) -> Result<()> {
+    let (dir, netlist_json) = (&s.dir, NETLIST_JSON);
+    let job = format!("{}-seed{seed}", s.job);
+    let report_json = format!("report-seed{seed}.json");
+    let report_json = report_json.as_str();
     // A stale report from an earlier run must not be read as this one's.
     let _ = std::fs::remove_file(dir.join(report_json));
     let mut args = target.nextpnr_device.clone();
@@ -405,7 +456,7 @@ fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()
         "--freq".to_string(),
         target.mhz.to_string(),
         "--seed".to_string(),
-        ctx.seed.to_string(),
+        seed.to_string(),
         "--timing-allow-fail".to_string(),
         "--report".to_string(),
         report_json.to_string(),
@@ -446,7 +497,7 @@ fn measure(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result<()
         }
         Family::Ice40 => {
             // Every wrapper flip-flop sits alone in a logic cell (see `wrapper`).
-            row.luts = Some(n("ICESTORM_LC").saturating_sub(cells.wrapper_ffs));
+            row.luts = Some(n("ICESTORM_LC").saturating_sub(s.wrapper_ffs));
             row.dsps = Some(n("ICESTORM_DSP"));
             row.brams = Some(n("ICESTORM_RAM") + n("ICESTORM_SPRAM"));
         }
@@ -523,17 +574,90 @@ fn tool_run(dir: &Path, tool: &Tool, args: &[String], log: &Path) -> Result<Stat
     })
 }
 
+/// One block on one family over the seeds: the spread of its post-route fmax, as
+/// `fpga-seeds.json` records it and `fpga.md` reports it.
+#[derive(Serialize, Debug, Clone)]
+pub struct Spread {
+    pub block: String,
+    pub family: Family,
+    pub target_mhz: f64,
+    /// The seeds run.
+    pub seeds: Vec<u64>,
+    /// fmax of each seed that placed and routed, in the order of `seeds` (`null` where not).
+    pub fmax_mhz: Vec<Option<f64>>,
+    pub min_mhz: Option<f64>,
+    /// The median over the seeds with an fmax: the figure a goal is judged on (the lower middle
+    /// value for an even count).
+    pub median_mhz: Option<f64>,
+    pub max_mhz: Option<f64>,
+}
+
+/// The spread of every (block, family) over its rows' seeds, in the rows' order.
+fn spreads(rows: &[Row]) -> Vec<Spread> {
+    let mut out: Vec<Spread> = Vec::new();
+    for r in rows {
+        let i = match out.iter().position(|s| s.block == r.block && s.family == r.family) {
+            Some(i) => i,
+            None => {
+                out.push(Spread {
+                    block: r.block.clone(),
+                    family: r.family,
+                    target_mhz: r.target_mhz,
+                    seeds: Vec::new(),
+                    fmax_mhz: Vec::new(),
+                    min_mhz: None,
+                    median_mhz: None,
+                    max_mhz: None,
+                });
+                out.len() - 1
+            }
+        };
+        out[i].seeds.push(r.seed);
+        out[i].fmax_mhz.push(r.fmax_mhz.filter(|_| r.error.is_none() && r.fits != Some(false)));
+    }
+    for s in &mut out {
+        let mut f: Vec<f64> = s.fmax_mhz.iter().flatten().copied().collect();
+        f.sort_by(f64::total_cmp);
+        s.min_mhz = f.first().copied();
+        s.max_mhz = f.last().copied();
+        s.median_mhz = (!f.is_empty()).then(|| f[(f.len() - 1) / 2]);
+    }
+    out
+}
+
 fn cell(v: Option<u64>) -> String {
     v.map(|v| v.to_string()).unwrap_or_else(|| "–".into())
 }
 
 /// The Markdown of `fpga.md`: the table, the tools, the critical paths and the run times.
-fn markdown(rows: &[Row], ctx: &Flow) -> String {
+fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow) -> String {
     let mut md = String::new();
+    let mhz = |v: Option<f64>| v.map(|v| format!("{v:.1}")).unwrap_or_else(|| "–".into());
+    let seeds = ctx.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
         md,
-        "| block | family | device | LUTs | FFs | DSPs | BRAMs | LUT RAMs | fmax (MHz) | target (MHz) |\n\
-         |---|---|---|--:|--:|--:|--:|--:|--:|--:|"
+        "Post-route fmax over the placement seeds {seeds} (median: the lower middle value of the seeds that routed):\n\n\
+         | block | family | seeds | min (MHz) | median (MHz) | max (MHz) | target (MHz) |\n\
+         |---|---|--:|--:|--:|--:|--:|"
+    );
+    for s in spreads {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {} | **{}** | {} | {} |",
+            s.block,
+            s.family.name(),
+            s.seeds.len(),
+            mhz(s.min_mhz),
+            mhz(s.median_mhz),
+            mhz(s.max_mhz),
+            s.target_mhz
+        );
+    }
+    let _ = writeln!(md, "\nEvery run:\n");
+    let _ = writeln!(
+        md,
+        "| block | family | device | seed | LUTs | FFs | DSPs | BRAMs | LUT RAMs | fmax (MHz) | target (MHz) |\n\
+         |---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|"
     );
     for r in rows {
         let fmax = match (&r.error, r.fits, r.fmax_mhz) {
@@ -544,10 +668,11 @@ fn markdown(rows: &[Row], ctx: &Flow) -> String {
         };
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {fmax} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {fmax} | {} |",
             r.block,
             r.family.name(),
             r.device,
+            r.seed,
             cell(r.luts),
             cell(r.ffs),
             cell(r.dsps),
@@ -561,8 +686,8 @@ fn markdown(rows: &[Row], ctx: &Flow) -> String {
         "\nLUTs: ECP5 LUT4s (logic, carry and LUT RAM); iCE40 logic cells. LUT RAMs: ECP5 16x4 \
          distributed RAMs (6 LUT4s each, counted in LUTs). BRAMs: DP16KD (18 Kbit) / SB_RAM40_4K \
          (4 Kbit). Each block is placed in a register wrapper (every port bit a flip-flop); the \
-         wrapper's flip-flops are not counted. Seed {}.\n",
-        ctx.seed
+         wrapper's flip-flops are not counted. Seeds {seeds}; the LUT and FF counts are of each \
+         seed's placement (Yosys runs once per block).\n"
     );
     let _ = writeln!(md, "Tools:\n");
     for t in ctx.tools.values() {
@@ -573,9 +698,10 @@ fn markdown(rows: &[Row], ctx: &Flow) -> String {
         if let Some(p) = &r.critical_path {
             let _ = writeln!(
                 md,
-                "- {} on {}: {:.2} ns, {} logic levels, from `{}` to `{}`",
+                "- {} on {}, seed {}: {:.2} ns, {} logic levels, from `{}` to `{}`",
                 r.block,
                 r.family.name(),
+                r.seed,
                 p.delay_ns,
                 p.logic_levels,
                 p.from,
@@ -583,20 +709,73 @@ fn markdown(rows: &[Row], ctx: &Flow) -> String {
             );
         }
     }
-    let _ = writeln!(md, "\nRun times:\n\n| block | family | Yosys (s) | nextpnr (s) |\n|---|---|--:|--:|");
+    let _ = writeln!(
+        md,
+        "\nRun times (Yosys once per block and family, counted once):\n\n| block | family | seed | Yosys (s) | nextpnr (s) |\n|---|---|--:|--:|--:|"
+    );
     let secs = |t: Option<f64>| t.map(|t| format!("{t:.1}")).unwrap_or_else(|| "–".into());
     let mut total = 0.0;
     for r in rows {
-        total += r.yosys_s.unwrap_or(0.0) + r.nextpnr_s.unwrap_or(0.0);
+        let first = ctx.seeds.first() == Some(&r.seed);
+        total += if first { r.yosys_s.unwrap_or(0.0) } else { 0.0 } + r.nextpnr_s.unwrap_or(0.0);
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} |",
             r.block,
             r.family.name(),
+            r.seed,
             secs(r.yosys_s),
             secs(r.nextpnr_s)
         );
     }
     let _ = writeln!(md, "\nTotal tool time: {total:.0} s.");
     md
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(block: &str, seed: u64, fmax: Option<f64>) -> Row {
+        Row {
+            block: block.into(),
+            family: Family::Ecp5,
+            device: "LFE5U-85F-6 CABGA381".into(),
+            luts: None,
+            ffs: None,
+            dsps: None,
+            brams: None,
+            lutrams: None,
+            fmax_mhz: fmax,
+            target_mhz: 150.0,
+            fits: Some(fmax.is_some()),
+            over_capacity: Vec::new(),
+            error: None,
+            wrapper_ffs: None,
+            seed,
+            yosys_s: None,
+            nextpnr_s: None,
+            critical_path: None,
+            tool_versions: BTreeMap::new(),
+        }
+    }
+
+    #[test]
+    fn spreads_give_min_median_max_per_block_over_the_seeds_that_routed() {
+        let rows = vec![
+            row("a", 1, Some(140.0)),
+            row("b", 1, Some(200.0)),
+            row("a", 2, Some(155.0)),
+            row("a", 3, None),
+            row("a", 4, Some(150.0)),
+            row("a", 5, Some(149.0)),
+        ];
+        let s = spreads(&rows);
+        assert_eq!(s.len(), 2);
+        assert_eq!(s[0].seeds, vec![1, 2, 3, 4, 5]);
+        assert_eq!((s[0].min_mhz, s[0].median_mhz, s[0].max_mhz), (Some(140.0), Some(149.0), Some(155.0)));
+        assert_eq!((s[1].min_mhz, s[1].median_mhz, s[1].max_mhz), (Some(200.0), Some(200.0), Some(200.0)));
+        let none = spreads(&[row("c", 1, None)]);
+        assert_eq!(none[0].median_mhz, None);
+    }
 }
