@@ -11,7 +11,7 @@
 
 use shelling::grid::GridParams;
 use shelling::radiosity::form_factors::{self, FfParams};
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{room, RoomSpec};
 use shelling::trace::Method;
 use std::hint::black_box;
@@ -24,7 +24,7 @@ fn main() {
     let small = args.iter().any(|a| a == "--small");
 
     let prepared =
-        Prepared::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default());
+        GriddedScene::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default());
     let sources: Vec<usize> = (0..prepared.scene.len()).step_by(11).collect();
     let fp = FfParams::default();
     println!(
@@ -73,7 +73,7 @@ fn main() {
         box_size: 64.0,
         ..RoomSpec::default()
     };
-    let big = Prepared::new(room(&spec).expect("the large room"), GridParams::default());
+    let big = GriddedScene::new(room(&spec).expect("the large room"), GridParams::default());
     let fp = FfParams { rays: 1024, origins: 4, ..FfParams::default() };
     let threads = rayon::current_num_threads();
     let mut methods = vec![best.0];

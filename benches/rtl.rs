@@ -105,14 +105,14 @@ fn processing_element(rounds: usize) {
     use shelling::cosim::{self, CosimConfig};
     use shelling::grid::GridParams;
     use shelling::rays::RaySet;
-    use shelling::run::Prepared;
+    use shelling::run::GriddedScene;
     use shelling::scene::{self, PAPER_WORLD};
     use shelling::trace::{Method, ShellParams};
     use shelling::workstream::execute;
     use shelling_hdl::pe::ProcessingElement;
     use shelling_testbench::verilated::VerilatedPe;
     let scene = scene::generate(1000, 32.0, 7, PAPER_WORLD).expect("scene");
-    let prepared = Prepared::new(scene, GridParams::default());
+    let prepared = GriddedScene::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(250, RaySet::Angle, 1024).expect("source");
     let scheduled = prepared.schedule(Method::Stochastic, &bundle, &ShellParams::default()).expect("fits");
     let config = CosimConfig { tc: 16, ..CosimConfig::default() };

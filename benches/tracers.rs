@@ -16,7 +16,7 @@ use parry2d::query::{Ray as PRay, RayCast};
 use parry2d::shape::Polyline;
 use shelling::grid::GridParams;
 use shelling::rays::{Bundle, RaySet};
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene;
 use shelling::trace::{Method, ShellParams};
 use std::hint::black_box;
@@ -30,7 +30,7 @@ fn main() {
         .unwrap_or(7usize);
     let only: Option<String> = std::env::args().skip_while(|a| a != "--only").nth(1);
     let scene = scene::generate(1000, 32.0, 7, scene::PAPER_WORLD).expect("the benchmark scene is valid");
-    let prepared = Prepared::new(scene, GridParams::default());
+    let prepared = GriddedScene::new(scene, GridParams::default());
     let sources: Vec<usize> = (0..16).map(|i| i * 1000 / 16).collect();
     let bundles: Vec<Bundle> = sources
         .iter()

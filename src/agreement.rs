@@ -18,8 +18,8 @@ use crate::arith::Arith;
 use crate::figures::{scene_seed, source_patches, MAX_SEEDS};
 use crate::geom::{cross, Hit, Ray, Segment, Vec2};
 use crate::grid::GridParams;
-use crate::rays::{Bundle, RaySet, MAX_RAYS};
-use crate::run::{Prepared, RunError};
+use crate::rays::{Bundle, RaySet, MAX_BUNDLE_RAYS};
+use crate::run::{GriddedScene, RunError};
 use crate::scene::{self, SceneError};
 use crate::trace::{Method, ShellParams, TraceResult};
 use rayon::prelude::*;
@@ -232,8 +232,8 @@ impl Workload {
                 self.count, self.sources
             ));
         }
-        if self.rays == 0 || self.rays > MAX_RAYS {
-            return bad(format!("--rays must be between 1 and {MAX_RAYS}, got {}", self.rays));
+        if self.rays == 0 || self.rays > MAX_BUNDLE_RAYS {
+            return bad(format!("--rays must be between 1 and {MAX_BUNDLE_RAYS}, got {}", self.rays));
         }
         let factors = [self.seeds, self.lengths.len(), self.sources, self.rays].map(|v| v as u64);
         crate::limits::check_product(
@@ -294,7 +294,7 @@ pub fn run_with_progress(
         .par_iter()
         .map(|&(l, s)| -> Result<Vec<Comparison>, AgreementError> {
             let scene = scene::generate(w.count, w.lengths[l], scene_seed(l, s), scene::PAPER_WORLD)?;
-            let prepared = Prepared::new(scene, GridParams::default());
+            let prepared = GriddedScene::new(scene, GridParams::default());
             let mut out = vec![Comparison::default(); w.methods.len()];
             for k in source_patches(w.count, w.sources) {
                 let bundle = prepared.patch_bundle(k, w.ray_set, w.rays)?;

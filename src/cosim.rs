@@ -1,7 +1,7 @@
 //! Co-simulation: a source's work stream through the RTL processing element, cycle by cycle,
 //! against the bit-true model and the host memory model.
 //!
-//! The shell scheduler ([`Prepared::schedule`](crate::run::Prepared::schedule)) records the work
+//! The shell scheduler ([`GriddedScene::schedule`](crate::run::GriddedScene::schedule)) records the work
 //! stream on the bit-true backend; [`run`] turns it into the host's commands, simulates the
 //! processing element of `shelling-hdl` ([`Engine`]: rust-hdl's simulation of the block, or its
 //! exported Verilog compiled by Verilator, cycle for cycle the same) with a host memory of load

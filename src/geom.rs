@@ -256,12 +256,12 @@ impl FrontPatch {
         }
     }
 
-    /// [`FrontPatch::hit_rays`] with each hit `t` offered to `nearest` as [`Nearest::offer`]
+    /// [`FrontPatch::hit_rays`] with each hit `t` offered to `nearest` as [`NearestHits::offer`]
     /// offers `Hit { t, segment: p }`; returns the rays that hit, as bits over `base` like
     /// `word`. On x86-64 CPUs with AVX2 four rays go at a time, their offers made in the vector
     /// lanes as well (`offer_rays_avx2`); elsewhere it is `hit_rays` and `offer`.
     #[inline(always)]
-    pub fn offer_rays(&self, rays: &[Ray], p: u32, base: usize, word: u64, nearest: &mut Nearest) -> u64 {
+    pub fn offer_rays(&self, rays: &[Ray], p: u32, base: usize, word: u64, nearest: &mut NearestHits) -> u64 {
         #[cfg(target_arch = "x86_64")]
         if std::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU has AVX2 (just checked), and so AVX.
@@ -365,8 +365,8 @@ impl FrontPatch {
     /// are the same bits. Lanes the SSE2 body hands to [`FrontPatch::hit_any`] go there too
     /// (all of a block whose rays do not all have this patch's origin). The other lanes that hit
     /// are offered in the vector: a lane takes `(t, p)` where `t` is below its key, or equal to
-    /// it and `p` below its patch index (no hit holds `+∞` and [`Nearest::NONE`], which every
-    /// key that is not NaN beats, and these are not NaN), as [`Nearest::offer`] decides.
+    /// it and `p` below its patch index (no hit holds `+∞` and [`NearestHits::NONE`], which every
+    /// key that is not NaN beats, and these are not NaN), as [`NearestHits::offer`] decides.
     ///
     /// Where the caller is compiled for these instructions (the shelling tracers' x86-64-v3
     /// copy) it may be inlined into it.
@@ -379,7 +379,7 @@ impl FrontPatch {
         p: u32,
         base: usize,
         mut word: u64,
-        nearest: &mut Nearest,
+        nearest: &mut NearestHits,
     ) -> u64 {
         use avx2::*;
         use std::arch::x86_64::*;
@@ -611,21 +611,21 @@ pub fn closer(a: Hit, b: Option<Hit>) -> bool {
 /// The nearest hits of rays `0..n` so far, as the shelling tracers keep them: each ray's
 /// distance key and patch index in arrays of their own, so that a hit test can read and offer
 /// a block of neighbouring rays at once ([`FrontPatch::offer_rays`]). A ray without a hit holds
-/// the key `+∞` and the patch [`Nearest::NONE`]; patch indices stay below it.
+/// the key `+∞` and the patch [`NearestHits::NONE`]; patch indices stay below it.
 #[derive(Clone, Debug)]
-pub struct Nearest {
+pub struct NearestHits {
     /// `n + 3` entries, so that a block of four from any ray lies inside.
     t: Vec<f64>,
     segment: Vec<u32>,
 }
 
-impl Nearest {
+impl NearestHits {
     /// The patch index of a ray without a hit.
     pub const NONE: u32 = u32::MAX;
 
     /// Rays `0..n`, none hit.
     pub fn new(n: usize) -> Self {
-        Nearest { t: vec![f64::INFINITY; n + 3], segment: vec![Self::NONE; n + 3] }
+        NearestHits { t: vec![f64::INFINITY; n + 3], segment: vec![Self::NONE; n + 3] }
     }
 
     /// The nearest hit of ray `i` so far.
@@ -638,7 +638,7 @@ impl Nearest {
     /// Offers hit `h` to ray `i`: it is taken when it is [`closer`] than the ray's hit.
     #[inline(always)]
     pub fn offer(&mut self, i: usize, h: Hit) {
-        debug_assert!(h.segment != Self::NONE, "patch indices stay below Nearest::NONE");
+        debug_assert!(h.segment != Self::NONE, "patch indices stay below NearestHits::NONE");
         let (t, segment) = (self.t[i], self.segment[i]);
         // `closer(h, self.get(i))`, without a branch on the data.
         let take = (segment == Self::NONE) | (h.t < t) | ((h.t == t) & (h.segment < segment));
@@ -777,9 +777,9 @@ mod tests {
         let mut segs = segs;
         segs.extend_from_within(0..6);
         for reverse in [false, true] {
-            let mut nearest = Nearest::new(rays.len());
+            let mut nearest = NearestHits::new(rays.len());
             // What CPUs without AVX2 do: the SSE2 test, each hit offered on its own.
-            let mut fallback = Nearest::new(rays.len());
+            let mut fallback = NearestHits::new(rays.len());
             let mut expect: Vec<Option<Hit>> = vec![None; rays.len()];
             let mut order: Vec<usize> = (0..segs.len()).collect();
             if reverse {
@@ -818,7 +818,7 @@ mod tests {
 
     #[test]
     fn nearest_offers_as_closer_decides() {
-        let mut n = Nearest::new(2);
+        let mut n = NearestHits::new(2);
         assert_eq!(n.get(0), None);
         n.offer(0, Hit { t: 2.0, segment: 5 });
         n.offer(0, Hit { t: 2.0, segment: 7 });

@@ -122,7 +122,27 @@ pub enum CellScan<'a> {
 /// Marks an empty cell's entry in [`Grid::scan`].
 const EMPTY: u32 = 1 << 31;
 
+/// The stopping margin of every tracer, in units of the registration margin [`Grid::eps`]:
+/// see [`Grid::stop_margin`].
+pub const STOP_MARGIN_EPS: f64 = 4.0;
+
 impl Grid {
+    /// The stopping margin, `4·eps`: how far every stopping rule keeps from the boundary it
+    /// stops at. The conventional walk stops only at a cell whose exit lies beyond the nearest
+    /// hit by more than this; a shell retires only rays whose hit lies before its outer radius
+    /// less this; a shell's trapezoid reaches this much inside and beyond its radii, and a
+    /// patch's nearest distance is taken this much nearer. A hit's distance and a cell's exit
+    /// or a shell's radius are rounded apart, each by far less than `eps` (the module doc), and
+    /// segments are registered in cells grown by `eps`: a margin of several `eps` covers both
+    /// roundings and the registration together, so a hit within rounding of a boundary is never
+    /// decided before every patch that might tie with it or lie nearer has been tested. That is
+    /// why a tracer that tests a superset of the pairs that matter returns exactly the
+    /// brute-force hits (ARCHITECTURE.md).
+    #[inline]
+    pub fn stop_margin(&self) -> f64 {
+        STOP_MARGIN_EPS * self.eps
+    }
+
     /// Builds the grid over `bounds` (see the module doc for the rules) and registers `segments`.
     pub fn build(segments: &[Segment], bounds: Bounds, params: GridParams) -> Grid {
         let (origin, cell_size, nx, ny) = Self::layout(segments.len(), bounds, params);

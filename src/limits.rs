@@ -8,9 +8,9 @@
 
 use std::fmt::Display;
 
-pub use crate::rays::MAX_RAYS;
+pub use crate::rays::MAX_BUNDLE_RAYS;
 pub use crate::scene::COORD_LIMIT;
-pub use shelling_testbench::pe::MAX_RAYS as PE_MAX_RAYS;
+pub use shelling_testbench::pe::PE_RAY_MEMORY;
 
 /// Smallest `--cells-per-segment` (λ).
 pub const MIN_CELLS_PER_SEGMENT: f64 = 1e-3;
@@ -183,7 +183,7 @@ mod tests {
     #[test]
     fn one_wording() {
         assert_eq!(
-            check_range("--rays", 0usize, 1, MAX_RAYS),
+            check_range("--rays", 0usize, 1, MAX_BUNDLE_RAYS),
             Err("--rays must be between 1 and 1048576, got 0".into())
         );
         assert_eq!(check_range("--tc", 5u32, 1, MAX_TC), Ok(5));

@@ -11,7 +11,7 @@ use shelling::geom::Vec2;
 use shelling::grid::GridParams;
 use shelling::limits::{self, check_range, check_range_for};
 use shelling::rays::{Bundle, RaySet, Source};
-use shelling::run::{Prepared, TraceJson};
+use shelling::run::{GriddedScene, TraceJson};
 use shelling::scene::{self, RoomSpec, Scene};
 use shelling::staged::Staged;
 use shelling::trace::{Method, ShellParams};
@@ -230,7 +230,8 @@ impl TuneArgs {
                 bail!("--shell-depth must be a positive number, got {d}");
             }
         }
-        check_range("--max-sector", self.max_sector, 1, limits::MAX_RAYS).map_err(anyhow::Error::msg)?;
+        check_range("--max-sector", self.max_sector, 1, limits::MAX_BUNDLE_RAYS)
+            .map_err(anyhow::Error::msg)?;
         let p = ShellParams {
             shell_depth: self.shell_depth,
             max_sector: self.max_sector,
@@ -298,7 +299,7 @@ impl SourceArgs {
 
     /// Loads the scene, builds its grid and the bundle, checking `--source`, the grid options
     /// and the shell depth against the scene.
-    fn load(&self, tune: &TuneArgs) -> Result<(Prepared, Bundle)> {
+    fn load(&self, tune: &TuneArgs) -> Result<(GriddedScene, Bundle)> {
         let scene = Scene::load(&self.scene)?;
         let grid = tune.grid(scene.segments.len())?;
         if let Some(k) = self.source {
@@ -306,7 +307,7 @@ impl SourceArgs {
             check_range_for("--source", k, 0, n - 1, &format!("(the scene has {n} segments)"))
                 .map_err(anyhow::Error::msg)?;
         }
-        let prepared = Prepared::new(scene, grid);
+        let prepared = GriddedScene::new(scene, grid);
         let source = match (self.source, self.origin, self.normal) {
             (Some(k), _, _) => Source::from_patch(&prepared.scene.segments, k)?,
             (None, Some(o), Some(n)) => Source::at(o, n)?,
@@ -592,7 +593,7 @@ fn figures_cmd(a: FiguresArgs) -> Result<()> {
     check_range("--seeds", a.seeds, 1, figures::MAX_SEEDS).map_err(m)?;
     check_range("--count", a.count, 1, limits::MAX_COUNT).map_err(m)?;
     check_range_for("--sources", a.sources, 1, a.count, "(--count)").map_err(m)?;
-    check_range("--rays", a.rays, 1, limits::MAX_RAYS).map_err(m)?;
+    check_range("--rays", a.rays, 1, limits::MAX_BUNDLE_RAYS).map_err(m)?;
     check_range("the number of --lengths", a.lengths.len(), 1, limits::MAX_LENGTHS).map_err(m)?;
     for (i, &l) in a.lengths.iter().enumerate() {
         limits::check_length("--lengths", l).map_err(m)?;
@@ -606,7 +607,7 @@ fn figures_cmd(a: FiguresArgs) -> Result<()> {
             "--rays",
             a.rays,
             1,
-            limits::PE_MAX_RAYS,
+            limits::PE_RAY_MEMORY,
             "(the processing element's ray memory) for the co-simulated figures (--cosim-sources 0 skips them)",
         )
         .map_err(m)?;
@@ -720,7 +721,7 @@ fn run(cli: Cli) -> Result<()> {
 }
 
 fn trace_cmd(a: TraceArgs) -> Result<()> {
-    a.from.check(limits::MAX_RAYS, "")?;
+    a.from.check(limits::MAX_BUNDLE_RAYS, "")?;
     let shells = a.tune.shells()?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
     let source = bundle.source;
@@ -762,7 +763,7 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     if a.method == Method::Brute {
         bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
     }
-    a.from.check(limits::PE_MAX_RAYS, "(the processing element's ray memory)")?;
+    a.from.check(limits::PE_RAY_MEMORY, "(the processing element's ray memory)")?;
     check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(m)?;
     if let Some(c) = a.cache {
         limits::check_cache("--cache", c).map_err(m)?;
@@ -859,11 +860,11 @@ fn demo(a: DemoArgs) -> Result<()> {
     let m = anyhow::Error::msg;
     limits::check_length("--length", a.length).map_err(m)?;
     check_range_for("--source", a.source, 0, 999, "(the default scene has 1000 segments)").map_err(m)?;
-    check_range_for("--rays", a.rays, 1, limits::PE_MAX_RAYS, "(the processing element's ray memory)")
+    check_range_for("--rays", a.rays, 1, limits::PE_RAY_MEMORY, "(the processing element's ray memory)")
         .map_err(m)?;
     check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(m)?;
     let scene = scene::generate(1000, a.length, a.seed, scene::PAPER_WORLD)?;
-    let prepared = Prepared::new(scene, GridParams::default());
+    let prepared = GriddedScene::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(a.source, RaySet::Angle, a.rays)?;
     let params = ShellParams::default();
     let mut out = Out::new();
@@ -973,16 +974,15 @@ fn demo(a: DemoArgs) -> Result<()> {
 }
 
 fn print_counters(out: &mut Out, rows: &[(Method, Counters)]) -> Result<()> {
-    let short = ["read before", "read after", "cells", "tests", "actual", "ADLC", "ADLC est."];
     out.write_fmt(format_args!("{:<14}", "method"))?;
-    for s in short {
+    for s in Counters::LABELS {
         out.write_fmt(format_args!("{s:>12}"))?;
     }
     say!(out);
     for (m, c) in rows {
         out.write_fmt(format_args!("{:<14}", m.name()))?;
-        for (i, v) in c.values().iter().enumerate() {
-            if i >= 5 {
+        for (v, integral) in c.values().iter().zip(Counters::INTEGRAL) {
+            if !integral {
                 out.write_fmt(format_args!("{v:>12.2}"))?;
             } else {
                 out.write_fmt(format_args!("{v:>12}"))?;

@@ -8,10 +8,10 @@ use shelling::cosim::{CosimConfig, Engine};
 use shelling::limits::{self, check_range, check_range_for};
 use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
 use shelling::radiosity::matrix::{self, MatrixFile};
-use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ, PE_MAX_RAYS};
+use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ, PE_RAY_MEMORY};
 use shelling::radiosity::solve::{self, Solution, Surfaces};
-use shelling::rays::{RaySet, MAX_RAYS};
-use shelling::run::Prepared;
+use shelling::rays::{RaySet, MAX_BUNDLE_RAYS};
+use shelling::run::GriddedScene;
 use shelling::scene::{self, RoomSpec, Scene};
 use shelling::staged::Staged;
 use shelling::trace::Method;
@@ -46,8 +46,8 @@ impl FfArgs {
     /// The parameters; `on_pe` sets the default rays to the PE's ray memory.
     fn params(&self, tune: &TuneArgs, on_pe: bool) -> Result<FfParams> {
         let (rays, max) = match on_pe {
-            false => (self.rays.unwrap_or(DEFAULT_RAYS), MAX_RAYS),
-            true => (self.rays.unwrap_or(PE_MAX_RAYS), PE_MAX_RAYS),
+            false => (self.rays.unwrap_or(DEFAULT_RAYS), MAX_BUNDLE_RAYS),
+            true => (self.rays.unwrap_or(PE_RAY_MEMORY), PE_RAY_MEMORY),
         };
         let note = if on_pe { "with --on-pe (the PE's ray memory)" } else { "" };
         check_range_for("--rays", rays, 1, max, note).map_err(anyhow::Error::msg)?;
@@ -156,7 +156,7 @@ fn write_file(path: &Path, text: &str) -> Result<()> {
 }
 
 /// `--shell-depth` against the grid of `prepared`, for origins anywhere in it.
-fn check_depth(tune: &TuneArgs, prepared: &Prepared) -> Result<()> {
+fn check_depth(tune: &TuneArgs, prepared: &GriddedScene) -> Result<()> {
     let (lo, hi) = prepared.grid.extent();
     tune.check_depth((hi - lo).max_element(), (hi - lo).length())
 }
@@ -179,7 +179,7 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
     let params = a.ff.params(&a.tune, false)?;
     let scene = Scene::load(path)?;
     let grid = a.tune.grid(scene.len())?;
-    let prepared = Prepared::new(scene, grid);
+    let prepared = GriddedScene::new(scene, grid);
     check_depth(&a.tune, &prepared)?;
     if let Some(k) = a.source {
         let row = form_factors::row(&prepared, k, &params)?;
@@ -362,7 +362,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         params.arith = Arith::Fixed;
     }
     let grid = a.tune.grid(scene.len())?;
-    let prepared = Prepared::new(scene, grid);
+    let prepared = GriddedScene::new(scene, grid);
     check_depth(&a.tune, &prepared)?;
     let engine = a.engine.resolve(false);
     let config = CosimConfig { tc: a.tc, cache: a.cache, vcd: None, engine };

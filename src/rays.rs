@@ -34,7 +34,7 @@ impl fmt::Display for RaySet {
 }
 
 /// The largest bundle accepted.
-pub const MAX_RAYS: usize = 1 << 20;
+pub const MAX_BUNDLE_RAYS: usize = 1 << 20;
 
 /// What is wrong with a source or a bundle request.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -45,7 +45,7 @@ pub enum SourceError {
     BadOrigin([f64; 2]),
     #[error("the normal {0:?} must be finite and non-zero")]
     BadNormal([f64; 2]),
-    #[error("the number of rays must be between 1 and {MAX_RAYS}, got {0}")]
+    #[error("the number of rays must be between 1 and {MAX_BUNDLE_RAYS}, got {0}")]
     BadRayCount(usize),
 }
 
@@ -98,7 +98,7 @@ pub struct Bundle {
 
 impl Bundle {
     pub fn new(source: Source, set: RaySet, r: usize) -> Result<Bundle, SourceError> {
-        if r == 0 || r > MAX_RAYS {
+        if r == 0 || r > MAX_BUNDLE_RAYS {
             return Err(SourceError::BadRayCount(r));
         }
         let n = source.normal;

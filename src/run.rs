@@ -13,15 +13,15 @@ use shelling_hdl::formats::FormatError;
 
 /// A scene with the grid built over it, ready to trace.
 #[derive(Clone, Debug)]
-pub struct Prepared {
+pub struct GriddedScene {
     pub scene: Scene,
     pub grid: Grid,
 }
 
-impl Prepared {
-    pub fn new(scene: Scene, params: GridParams) -> Prepared {
+impl GriddedScene {
+    pub fn new(scene: Scene, params: GridParams) -> GriddedScene {
         let grid = Grid::build(&scene.segments, scene.bounds(), params);
-        Prepared { scene, grid }
+        GriddedScene { scene, grid }
     }
 
     pub fn view(&self) -> SceneView<'_> {
@@ -62,7 +62,7 @@ impl Prepared {
 }
 
 /// A bundle traced in the bit-true arithmetic with its work stream recorded: what the hardware
-/// is handed ([`Prepared::schedule`]).
+/// is handed ([`GriddedScene::schedule`]).
 #[derive(Clone, Debug)]
 pub struct Scheduled {
     /// The bit-true trace (its hits are what the hardware must return).
@@ -71,7 +71,7 @@ pub struct Scheduled {
     pub fixed: FixedBundle,
 }
 
-impl Prepared {
+impl GriddedScene {
     /// Runs the shell scheduler of `method` on the bit-true backend and records its work stream.
     pub fn schedule(
         &self,

@@ -28,7 +28,7 @@ use crate::geom::Segment;
 use crate::rays::Bundle;
 use crate::trace::HitTest;
 use shelling_hdl::intersection::model::Nearest;
-use shelling_testbench::pe::{model, Command, ModelCounts, PeSetup, MAX_RAYS};
+use shelling_testbench::pe::{model, Command, ModelCounts, PeSetup, PE_RAY_MEMORY};
 use std::cell::RefCell;
 use std::ops::Range;
 
@@ -153,7 +153,7 @@ impl<H: HitTest> HitTest for Recorder<'_, H> {
 pub enum StreamError {
     #[error("entry {item} of the work stream (counted from 0): {what}")]
     Invalid { item: usize, what: String },
-    #[error("the bundle has {0} rays; a processing element holds 1 to {MAX_RAYS}")]
+    #[error("the bundle has {0} rays; a processing element holds 1 to {PE_RAY_MEMORY}")]
     TooManyRays(usize),
 }
 
@@ -161,7 +161,7 @@ pub enum StreamError {
 /// for `fixed` (patches and rays) and that every job comes after a sector.
 pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamError> {
     let bad = |item: usize, what: String| Err(StreamError::Invalid { item, what });
-    if stream.rays == 0 || stream.rays > MAX_RAYS || stream.rays > fixed.dirs.len() {
+    if stream.rays == 0 || stream.rays > PE_RAY_MEMORY || stream.rays > fixed.dirs.len() {
         return Err(StreamError::TooManyRays(stream.rays));
     }
     let rays = stream.rays as u32;

@@ -7,7 +7,7 @@ use shelling::cosim::{self, CosimConfig};
 use shelling::geom::Hit;
 use shelling::grid::GridParams;
 use shelling::rays::RaySet;
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{self, PAPER_WORLD};
 use shelling::trace::{Method, ShellParams};
 use shelling_hdl::formats::key_distance;
@@ -24,7 +24,7 @@ fn the_pe_returns_the_schedulers_hits_for_every_technique_and_length() {
     for (i, length) in [4.0, 8.0, 16.0, 32.0, 64.0, 128.0].into_iter().enumerate() {
         let seed = 40 + i as u64;
         let scene = scene::generate(1000, length, seed, PAPER_WORLD).expect("scene");
-        let prepared = Prepared::new(scene, GridParams::default());
+        let prepared = GriddedScene::new(scene, GridParams::default());
         let k = 137 * (i + 1) % 1000;
         let bundle = prepared.patch_bundle(k, RaySet::Angle, 1024).expect("source");
         for m in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
@@ -67,7 +67,7 @@ fn the_waveform_of_a_whole_source_keeps_the_stream_protocol() {
     use shelling_testbench::pe::check_protocol;
     use shelling_testbench::waves::{gtkw_signals, Waves};
     let scene = scene::generate(1000, 32.0, 5, PAPER_WORLD).expect("scene");
-    let prepared = Prepared::new(scene, GridParams::default());
+    let prepared = GriddedScene::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(300, RaySet::Angle, 1024).expect("source");
     let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cosim-vcd");
     for (m, tc, cache) in [(Method::Stochastic, 4, None), (Method::Conventional, 2, Some(256))] {
@@ -121,7 +121,7 @@ fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
     for (i, length) in [4.0, 8.0, 16.0, 32.0, 64.0, 128.0].into_iter().enumerate() {
         let seed = 70 + i as u64;
         let scene = scene::generate(1000, length, seed, PAPER_WORLD).expect("scene");
-        let prepared = Prepared::new(scene, GridParams::default());
+        let prepared = GriddedScene::new(scene, GridParams::default());
         for s in 0..4 {
             let k = (251 * s + 97 * i + 13) % 1000;
             let bundle = prepared.patch_bundle(k, RaySet::Angle, 1024).expect("source");

@@ -8,7 +8,7 @@ use shelling::arith::{Arith, FixedBundle};
 use shelling::geom::{Segment, Vec2};
 use shelling::grid::GridParams;
 use shelling::rays::RaySet;
-use shelling::run::{Prepared, RunError};
+use shelling::run::{GriddedScene, RunError};
 use shelling::scene::Scene;
 use shelling::trace::{Method, ShellParams};
 use std::path::PathBuf;
@@ -45,7 +45,7 @@ fn fixed_point_rejects_what_does_not_fit_and_names_it() {
     let seg = |ax, ay, bx, by| Segment::new(Vec2::new(ax, ay), Vec2::new(bx, by));
     let scene =
         Scene::new(vec![seg(0.0, 0.0, 10.0, 0.0), seg(100.0, 5.0, 3000.0, 5.0)]).expect("valid scene");
-    let prepared = Prepared::new(scene, GridParams::default());
+    let prepared = GriddedScene::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(0, RaySet::Angle, 64).expect("valid source");
     // The float model traces it; the fixed point refuses before tracing.
     assert!(prepared.trace_in(Arith::Float, Method::Deterministic, &bundle, &ShellParams::default()).is_ok());
@@ -58,7 +58,7 @@ fn fixed_point_rejects_what_does_not_fit_and_names_it() {
     let far =
         Scene::new(vec![seg(1e6, 1e6, 1e6 + 10.0, 1e6), seg(1e6 + 25.0, 1e6 + 50.0, 1e6 - 15.0, 1e6 + 50.0)])
             .expect("valid scene");
-    let far = Prepared::new(far, GridParams::default());
+    let far = GriddedScene::new(far, GridParams::default());
     let b = far.patch_bundle(0, RaySet::Angle, 64).expect("valid source");
     let fixed = FixedBundle::new(&far.scene.segments, &b).expect("fits");
     assert!(fixed.patch(1).is_some(), "the facing patch passes the screener");

@@ -9,7 +9,7 @@ use shelling::geom::Vec2;
 use shelling::grid::GridParams;
 use shelling::limits;
 use shelling::rays::{Bundle, RaySet, Source};
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{self, Scene};
 use shelling::staged::Staged;
 use shelling::trace::{Method, ShellParams, TraceError};
@@ -29,7 +29,7 @@ fn range_of(message: &str) -> (String, String) {
 #[test]
 fn limits_one_wording_for_every_range() {
     assert_eq!(
-        limits::check_range("--rays", 0usize, 1, limits::MAX_RAYS),
+        limits::check_range("--rays", 0usize, 1, limits::MAX_BUNDLE_RAYS),
         Err("--rays must be between 1 and 1048576, got 0".to_string())
     );
     // The same limit reads the same from two commands.
@@ -89,7 +89,7 @@ fn limits_tuning_extremes_agree_with_brute_force() {
 #[test]
 fn limits_library_refuses_what_the_cli_refuses() {
     let scene = scene::generate(200, 16.0, 5, scene::PAPER_WORLD).unwrap();
-    let p = Prepared::new(scene, GridParams::default());
+    let p = GriddedScene::new(scene, GridParams::default());
     let bundle = p.patch_bundle(3, RaySet::Angle, 64).unwrap();
     for depth in [1e-9, 1e9] {
         let params = ShellParams { shell_depth: Some(depth), ..ShellParams::default() };
@@ -103,7 +103,7 @@ fn limits_library_refuses_what_the_cli_refuses() {
     let params = ShellParams { max_sector: usize::MAX, ..ShellParams::default() };
     assert!(p.trace(Method::Stochastic, &bundle, &params).is_err(), "an unbounded sector is refused");
     // A grid never has more than 2^22 cells, whatever λ the library is given.
-    let q = Prepared::new(p.scene.clone(), GridParams { cells_per_segment: 1e9, cells_per_axis: None });
+    let q = GriddedScene::new(p.scene.clone(), GridParams { cells_per_segment: 1e9, cells_per_axis: None });
     assert!(q.grid.len() <= limits::MAX_GRID_CELLS, "{} cells", q.grid.len());
 }
 
@@ -140,7 +140,7 @@ fn limits_origins_far_outside_the_grid_trace_quickly_and_agree() {
     assert!(hits.iter().any(|h| h.0.is_some()), "nothing hit from (-20000, 512)");
     // In the library: the shells skipped are still counted as shells every ray crossed.
     let sc = Scene::load(&scene).unwrap();
-    let p = Prepared::new(sc, GridParams::default());
+    let p = GriddedScene::new(sc, GridParams::default());
     let bundle =
         Bundle::new(Source::at(Vec2::new(-1e6, 512.0), Vec2::new(1.0, 0.0)).unwrap(), RaySet::Angle, 256)
             .unwrap();

@@ -13,7 +13,7 @@ use shelling::radiosity::matrix::{self, MatrixFile};
 use shelling::radiosity::on_pe::{self, PeTotals};
 use shelling::radiosity::solve::{self, Surfaces};
 use shelling::rays::RaySet;
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{room, Material, RoomSpec, Scene};
 use shelling::trace::Method;
 
@@ -21,15 +21,15 @@ fn v(x: f64, y: f64) -> Vec2 {
     Vec2::new(x, y)
 }
 
-fn prepared(segments: Vec<Segment>) -> Prepared {
-    Prepared::new(Scene::new(segments).expect("a valid scene"), GridParams::default())
+fn prepared(segments: Vec<Segment>) -> GriddedScene {
+    GriddedScene::new(Scene::new(segments).expect("a valid scene"), GridParams::default())
 }
 
 fn params(rays: usize, origins: usize) -> FfParams {
     FfParams { rays, origins, ..FfParams::default() }
 }
 
-fn ff(p: &Prepared, i: usize, j: usize, fp: &FfParams) -> f64 {
+fn ff(p: &GriddedScene, i: usize, j: usize, fp: &FfParams) -> f64 {
     form_factors::row(p, i, fp).expect("the row traces").get(j)
 }
 
@@ -183,13 +183,13 @@ fn an_occluded_pair_matches_crossed_strings_around_the_occluder() {
 }
 
 /// The room of [`small_room`]: 64 × 64, 16 patches, no boxes, two lights.
-fn small_room_scene() -> Prepared {
+fn small_room_scene() -> GriddedScene {
     let spec = RoomSpec { width: 64.0, height: 64.0, patch_length: 16.0, boxes: 0, ..RoomSpec::default() };
-    Prepared::new(room(&spec).unwrap(), GridParams::default())
+    GriddedScene::new(room(&spec).unwrap(), GridParams::default())
 }
 
-fn default_room() -> Prepared {
-    Prepared::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default())
+fn default_room() -> GriddedScene {
+    GriddedScene::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default())
 }
 
 #[test]
@@ -237,7 +237,7 @@ fn room_rows_are_reciprocal_within_the_documented_error() {
 }
 
 /// A room of `spec` with every patch emitting `e` and reflecting `rho`.
-fn furnace(e: f64, rho: f64) -> Prepared {
+fn furnace(e: f64, rho: f64) -> GriddedScene {
     let spec = RoomSpec {
         width: 128.0,
         height: 96.0,
@@ -248,7 +248,7 @@ fn furnace(e: f64, rho: f64) -> Prepared {
     };
     let mut scene = room(&spec).unwrap();
     scene.materials = vec![Material { reflectance: Some(rho), emission: Some(e) }; scene.len()];
-    Prepared::new(scene, GridParams::default())
+    GriddedScene::new(scene, GridParams::default())
 }
 
 #[test]

@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use shelling::geom::{Segment, Vec2};
 use shelling::grid::GridParams;
 use shelling::rays::{Bundle, RaySet, Source};
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{self, Bounds, Scene};
 use shelling::trace::{Method, ShellParams, TraceResult};
 
@@ -20,7 +20,7 @@ fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Segment {
 
 /// Traces `bundle` with every method and checks each against brute force and the counter
 /// invariants. `what` names the case (seed, source) so a failure can be replayed.
-fn check(p: &Prepared, bundle: &Bundle, params: &ShellParams, what: &str) -> Vec<TraceResult> {
+fn check(p: &GriddedScene, bundle: &Bundle, params: &ShellParams, what: &str) -> Vec<TraceResult> {
     let oracle = p.trace(Method::Brute, bundle, params).unwrap();
     let mut results = vec![];
     for method in Method::ALL {
@@ -63,7 +63,7 @@ fn every_tracer_matches_brute_force_on_the_papers_workload_shapes() {
         for set in [RaySet::Angle, RaySet::Sine] {
             let seed = 100 + li as u64;
             let scene = scene::generate(300, length, seed, scene::PAPER_WORLD).unwrap();
-            let p = Prepared::new(scene, GridParams::default());
+            let p = GriddedScene::new(scene, GridParams::default());
             for k in [0usize, 77, 151, 299] {
                 let bundle = p.patch_bundle(k, set, 256).unwrap();
                 check(&p, &bundle, &params, &format!("length {length} seed {seed} source {k} {set}"));
@@ -75,7 +75,7 @@ fn every_tracer_matches_brute_force_on_the_papers_workload_shapes() {
 #[test]
 fn every_tracer_matches_brute_force_on_a_full_size_scene() {
     let scene = scene::generate(1000, 32.0, 7, scene::PAPER_WORLD).unwrap();
-    let p = Prepared::new(scene, GridParams::default());
+    let p = GriddedScene::new(scene, GridParams::default());
     for k in [3usize, 500] {
         let bundle = p.patch_bundle(k, RaySet::Angle, 1024).unwrap();
         check(&p, &bundle, &ShellParams::default(), &format!("1000 × 32, seed 7, source {k}"));
@@ -85,7 +85,7 @@ fn every_tracer_matches_brute_force_on_a_full_size_scene() {
 #[test]
 fn shell_parameters_do_not_change_hits() {
     let scene = scene::generate(400, 16.0, 3, scene::PAPER_WORLD).unwrap();
-    let p = Prepared::new(scene, GridParams::default());
+    let p = GriddedScene::new(scene, GridParams::default());
     let bundle = p.patch_bundle(10, RaySet::Sine, 300).unwrap();
     for params in [
         ShellParams { shell_depth: Some(1.0), ..Default::default() },
@@ -103,14 +103,15 @@ fn shell_parameters_do_not_change_hits() {
 fn grid_resolution_does_not_change_hits() {
     let scene = scene::generate(200, 64.0, 11, scene::PAPER_WORLD).unwrap();
     for cells in [0.01, 1.0, 40.0] {
-        let p = Prepared::new(scene.clone(), GridParams { cells_per_segment: cells, cells_per_axis: None });
+        let p =
+            GriddedScene::new(scene.clone(), GridParams { cells_per_segment: cells, cells_per_axis: None });
         let bundle = p.patch_bundle(5, RaySet::Angle, 200).unwrap();
         check(&p, &bundle, &ShellParams::default(), &format!("λ = {cells}"));
     }
 }
 
-fn prepared(segments: Vec<Segment>) -> Prepared {
-    Prepared::new(Scene::new(segments).unwrap(), GridParams::default())
+fn prepared(segments: Vec<Segment>) -> GriddedScene {
+    GriddedScene::new(Scene::new(segments).unwrap(), GridParams::default())
 }
 
 /// A closed square room, walls facing inwards, with a source on the floor: every ray hits a wall.
@@ -239,7 +240,8 @@ fn segments_and_rays_along_cell_boundaries() {
     let mut scene = Scene::new(segments).unwrap();
     scene.world = Some(world);
     for cells in [1.0, 4.0, 16.0] {
-        let p = Prepared::new(scene.clone(), GridParams { cells_per_segment: cells, cells_per_axis: None });
+        let p =
+            GriddedScene::new(scene.clone(), GridParams { cells_per_segment: cells, cells_per_axis: None });
         for r in [7usize, 8, 65, 128] {
             let bundle = p.patch_bundle(0, RaySet::Angle, r).unwrap();
             check(&p, &bundle, &ShellParams::default(), &format!("grid lines, λ = {cells}, R = {r}"));
@@ -255,7 +257,7 @@ fn segments_and_rays_along_cell_boundaries() {
 #[test]
 fn origin_outside_the_grid() {
     let scene = scene::generate(200, 32.0, 5, scene::PAPER_WORLD).unwrap();
-    let p = Prepared::new(scene, GridParams::default());
+    let p = GriddedScene::new(scene, GridParams::default());
     for (o, n) in
         [(v(-100.0, 500.0), v(1.0, 0.0)), (v(2000.0, 2000.0), v(-1.0, -1.0)), (v(500.0, -50.0), v(0.0, -1.0))]
     {
@@ -304,7 +306,7 @@ proptest! {
         depth in prop::option::of(1.0f64..50.0),
     ) {
         prop_assume!(segments.len() >= 2);
-        let p = Prepared::new(Scene::new(segments).unwrap(), GridParams { cells_per_segment: cells, cells_per_axis: None });
+        let p = GriddedScene::new(Scene::new(segments).unwrap(), GridParams { cells_per_segment: cells, cells_per_axis: None });
         let source = match free {
             Some((o, nx, ny)) if nx != 0.0 || ny != 0.0 => Source::at(o, v(nx, ny)).unwrap(),
             _ => Source::from_patch(&p.scene.segments, k % p.scene.len()).unwrap(),

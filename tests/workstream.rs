@@ -5,7 +5,7 @@
 use shelling::geom::Hit;
 use shelling::grid::GridParams;
 use shelling::rays::RaySet;
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{self, PAPER_WORLD};
 use shelling::trace::{Method, ShellParams};
 use shelling::workstream::{execute, Item};
@@ -18,7 +18,7 @@ fn executing_the_stream_gives_the_bit_true_tracers_hits() {
     let params = ShellParams::default();
     for (length, seed) in [(4.0, 1u64), (32.0, 2), (128.0, 3)] {
         let scene = scene::generate(1000, length, seed, PAPER_WORLD).expect("scene");
-        let prepared = Prepared::new(scene, GridParams::default());
+        let prepared = GriddedScene::new(scene, GridParams::default());
         for k in [0usize, 517] {
             let bundle = prepared.patch_bundle(k, RaySet::Angle, 1024).expect("source");
             for m in METHODS {

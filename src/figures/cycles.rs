@@ -8,7 +8,7 @@
 //! For the `i`-th segment length, the scene of the first seed ([`scene_seed`]`(i, 0)`, the
 //! golden part's first scene) and the sources [`source_patches`]`(count,
 //! cosim_sources)`; each source's bundle (the golden part's ray set and ray count) is scheduled
-//! by the three techniques on the bit-true backend ([`Prepared::schedule`]) and every schedule is
+//! by the three techniques on the bit-true backend ([`GriddedScene::schedule`]) and every schedule is
 //! co-simulated for every `T_c`, once on the shared host memory (no cache) and once behind a
 //! patch cache of [`FigureOptions::cache_lines`] lines. Every run checks every hit against the
 //! bit-true model ([`crate::cosim::run`]); a mismatch fails the command.
@@ -25,17 +25,16 @@
 //! `S` ([`crate::trace::ShellStats::leaving_fraction`]) and the mean true ADLC of the
 //! co-simulated sources (INTERPRETATION.md, "Eqs. 10–11 against the co-simulation").
 
-use super::{
-    csv_num, scene_seed, source_patches, tick_label, Chart, FigureOptions, Marker, Series, XAxis, METHODS,
-};
+use super::plot::{method_marker, render, tick_label, Chart, Marker, Series, XAxis};
+use super::{csv_num, scene_seed, source_patches, FigureOptions, METHODS};
 use crate::cosim::{self, CosimConfig};
-use crate::run::{Prepared, Scheduled};
+use crate::run::{GriddedScene, Scheduled};
 use crate::scene;
 use crate::trace::Method;
 use anyhow::{anyhow, bail, Result};
 use plotters::style::RGBColor;
 use rayon::prelude::*;
-use shelling_testbench::pe::{CacheConfig, ModelCounts, PeCounters, MAX_RAYS as PE_MAX_RAYS};
+use shelling_testbench::pe::{CacheConfig, ModelCounts, PeCounters, PE_RAY_MEMORY};
 use std::fmt;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -53,9 +52,9 @@ pub(super) fn validate(o: &FigureOptions) -> Result<()> {
             o.count
         );
     }
-    if o.rays > PE_MAX_RAYS {
+    if o.rays > PE_RAY_MEMORY {
         bail!(
-            "--rays must be between 1 and {PE_MAX_RAYS} (the processing element's ray memory) for the \
+            "--rays must be between 1 and {PE_RAY_MEMORY} (the processing element's ray memory) for the \
              co-simulated figures (--cosim-sources 0 skips them), got {}",
             o.rays
         );
@@ -310,13 +309,13 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
     if opts.cosim_sources == 0 {
         return Ok((Vec::new(), 0));
     }
-    let scenes: Vec<Prepared> = (0..opts.lengths.len())
+    let scenes: Vec<GriddedScene> = (0..opts.lengths.len())
         .into_par_iter()
         .map(|i| {
             let (length, seed) = (opts.lengths[i], scene_seed(i, 0));
             let sc = scene::generate(opts.count, length, seed, scene::PAPER_WORLD)
                 .map_err(|e| anyhow!("generating the scene of length {length}, seed {seed}: {e}"))?;
-            Ok(Prepared::new(sc, opts.grid))
+            Ok(GriddedScene::new(sc, opts.grid))
         })
         .collect::<Result<_>>()?;
     let sources: Vec<(usize, usize)> = (0..opts.lengths.len())
@@ -647,7 +646,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
                     format!("{} {}", short(m), tc_label(tc)),
                     pts,
                     color(ti),
-                    super::method_marker(m),
+                    method_marker(m),
                 ));
             }
         }
@@ -668,7 +667,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
                     format!("{} {}", short(m), tc_label(tc)),
                     pts,
                     color(ti),
-                    super::method_marker(m),
+                    method_marker(m),
                 ));
             }
             let pred = sorted(
@@ -689,7 +688,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     let mut out = Vec::new();
     out.push((
         "cycles_total_shared.svg",
-        super::render(&chart(
+        render(&chart(
             "Cycles per source, shared memory".into(),
             "PE cycles per source",
             per_row(false, &|r| r.mean_cycles()),
@@ -697,7 +696,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     ));
     out.push((
         "cycles_total_cache.svg",
-        super::render(&chart(
+        render(&chart(
             format!("Cycles per source, {cache_name}"),
             "PE cycles per source",
             per_row(true, &|r| r.mean_cycles()),
@@ -705,7 +704,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     ));
     out.push((
         "cycles_speedup_shared.svg",
-        super::render(&chart(
+        render(&chart(
             "Speedup over conventional, shared memory; Eq. 10 dashed".into(),
             "conventional cycles / shelling cycles",
             speedup_series(Scenario::Shared, "Eq. 10"),
@@ -713,7 +712,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     ));
     out.push((
         "cycles_speedup_paper_cache.svg",
-        super::render(&chart(
+        render(&chart(
             "Speedup, shelling with cache over conventional without; Eq. 11 dashed".into(),
             "conventional (no cache) cycles / shelling (cache) cycles",
             speedup_series(Scenario::PaperCache, "Eq. 11"),
@@ -721,7 +720,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     ));
     out.push((
         "cycles_speedup_cache.svg",
-        super::render(&chart(
+        render(&chart(
             format!("Speedup over conventional, both with a {cache_name}"),
             "conventional cycles / shelling cycles",
             speedup_series(Scenario::Cached, ""),
@@ -729,7 +728,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     ));
     out.push((
         "cycles_efficiency_shared.svg",
-        super::render(&chart(
+        render(&chart(
             "Pipeline efficiency, shared memory".into(),
             "intersection busy cycles / cycles",
             per_row(false, &|r| r.pipeline_efficiency()),
@@ -737,7 +736,7 @@ pub(super) fn svgs(opts: &FigureOptions, rows: &[CycleRow]) -> Result<Vec<(&'sta
     ));
     out.push((
         "cycles_efficiency_cache.svg",
-        super::render(&chart(
+        render(&chart(
             format!("Pipeline efficiency, {cache_name}"),
             "intersection busy cycles / cycles",
             per_row(true, &|r| r.pipeline_efficiency()),

@@ -38,7 +38,7 @@
 use crate::arith::Arith;
 use crate::geom::Vec2;
 use crate::rays::{Bundle, RaySet, Source, SourceError};
-use crate::run::{Prepared, RunError};
+use crate::run::{GriddedScene, RunError};
 use crate::trace::{Method, ShellParams, TraceResult};
 use std::f64::consts::PI;
 
@@ -138,7 +138,7 @@ pub fn ray_weights(set: RaySet, r: usize) -> Vec<f64> {
 }
 
 /// The `m` stratified origins on patch `k` (fractions `(i + ½)/m` from `a` to `b`).
-pub fn origins(prepared: &Prepared, k: usize, m: usize) -> Result<Vec<Vec2>, FfError> {
+pub fn origins(prepared: &GriddedScene, k: usize, m: usize) -> Result<Vec<Vec2>, FfError> {
     if m == 0 || m > MAX_ORIGINS {
         return Err(FfError::BadOrigins(m));
     }
@@ -148,7 +148,7 @@ pub fn origins(prepared: &Prepared, k: usize, m: usize) -> Result<Vec<Vec2>, FfE
 }
 
 /// The bundles of source patch `k`: one per origin, with `k`'s normal, `k` excluded.
-pub fn bundles(prepared: &Prepared, k: usize, p: &FfParams) -> Result<Vec<Bundle>, FfError> {
+pub fn bundles(prepared: &GriddedScene, k: usize, p: &FfParams) -> Result<Vec<Bundle>, FfError> {
     let normal = Source::from_patch(&prepared.scene.segments, k)?.normal;
     origins(prepared, k, p.origins)?
         .into_iter()
@@ -202,7 +202,7 @@ impl RowBuilder {
 }
 
 /// The form-factor row of source patch `k`, traced with `p.method` in `p.arith`.
-pub fn row(prepared: &Prepared, k: usize, p: &FfParams) -> Result<Row, FfError> {
+pub fn row(prepared: &GriddedScene, k: usize, p: &FfParams) -> Result<Row, FfError> {
     let mut builder = RowBuilder::new(prepared.scene.len(), p);
     for bundle in bundles(prepared, k, p)? {
         builder.add(&prepared.trace_in(p.arith, p.method, &bundle, &p.shells)?);
@@ -212,7 +212,7 @@ pub fn row(prepared: &Prepared, k: usize, p: &FfParams) -> Result<Row, FfError> 
 
 /// The rows of the sources `range`, computed on all cores, in order.
 pub fn rows(
-    prepared: &Prepared,
+    prepared: &GriddedScene,
     range: std::ops::Range<usize>,
     p: &FfParams,
     progress: impl Fn() + Sync,

@@ -11,11 +11,11 @@
 use super::form_factors::{bundles, FfError, FfParams, Row, RowBuilder};
 use crate::agreement;
 use crate::cosim::{self, CosimConfig, CosimError};
-use crate::run::{Prepared, RunError};
+use crate::run::{GriddedScene, RunError};
 use crate::trace::{Method, TraceError};
 
 /// The most rays of one bundle on the PE (its ray memory): the default rays of a solve on it.
-pub const PE_MAX_RAYS: usize = shelling_testbench::pe::MAX_RAYS;
+pub use shelling_testbench::pe::PE_RAY_MEMORY;
 
 /// The post-route clock rate assumed for the solve's time unless another is given: the PE on
 /// ECP5 LFE5U-85F-6 at placement seed 1, as measured in PERFORMANCE.md (one seed only).
@@ -47,7 +47,7 @@ pub struct PeTotals {
 pub enum OnPeError {
     #[error("--method brute has no hardware mapping: use conventional, stochastic or deterministic")]
     Brute,
-    #[error("--rays {0}: the processing element holds at most {PE_MAX_RAYS} rays per bundle")]
+    #[error("--rays {0}: the processing element holds at most {PE_RAY_MEMORY} rays per bundle")]
     TooManyRays(usize),
     #[error(transparent)]
     Ff(#[from] FfError),
@@ -72,7 +72,7 @@ impl From<TraceError> for OnPeError {
 /// The row of source patch `k` from the PE's hits (`p.arith` is not read: the PE's arithmetic is
 /// the fixed point); the hardware's counts are added to `totals`.
 pub fn row(
-    prepared: &Prepared,
+    prepared: &GriddedScene,
     k: usize,
     p: &FfParams,
     config: &CosimConfig,
@@ -81,7 +81,7 @@ pub fn row(
     if p.method == Method::Brute {
         return Err(OnPeError::Brute);
     }
-    if p.rays > PE_MAX_RAYS {
+    if p.rays > PE_RAY_MEMORY {
         return Err(OnPeError::TooManyRays(p.rays));
     }
     let mut builder = RowBuilder::new(prepared.scene.len(), p);
@@ -111,7 +111,7 @@ pub fn row(
 
 /// Every row of the scene computed on the PE, in order, with the hardware's sums.
 pub fn all_rows(
-    prepared: &Prepared,
+    prepared: &GriddedScene,
     p: &FfParams,
     config: &CosimConfig,
     mut progress: impl FnMut(usize),
@@ -128,7 +128,7 @@ pub fn all_rows(
 }
 
 /// The whole-solve table of FIGURES.md: the form-factor matrix of the default room
-/// ([`crate::scene::RoomSpec::default`]) at [`PE_MAX_RAYS`] rays and the default origins, computed on the PE by
+/// ([`crate::scene::RoomSpec::default`]) at [`PE_RAY_MEMORY`] rays and the default origins, computed on the PE by
 /// each technique with the patch cache off and on, at host memory load time `tc`. Markdown, with
 /// the parameters in its first line. Every row of every run is checked as [`row`] checks it. The
 /// techniques' fixed-point matrices may differ where rung 2 allows (a technique's scheduler
@@ -139,8 +139,8 @@ pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<S
     use crate::scene::{room, RoomSpec};
     use std::fmt::Write;
     let scene = room(&RoomSpec::default()).expect("the default room is valid");
-    let prepared = Prepared::new(scene, GridParams::default());
-    let base = FfParams { rays: PE_MAX_RAYS, arith: crate::arith::Arith::Fixed, ..FfParams::default() };
+    let prepared = GriddedScene::new(scene, GridParams::default());
+    let base = FfParams { rays: PE_RAY_MEMORY, arith: crate::arith::Arith::Fixed, ..FfParams::default() };
     let mut out = format!(
         "Default room ({} patches), full matrix: {} origins × {} {} rays per patch ({} bundles), T_c = {tc}, \
          patch cache of {cache} lines, {} simulation; time at {PE_CLOCK_MHZ} MHz.\n\n",

@@ -17,7 +17,7 @@ pub(super) fn trace<H: HitTest>(
     test: &H,
 ) -> (Vec<Option<Hit>>, Counters) {
     let grid = scene.grid;
-    let margin = 4.0 * grid.eps;
+    let margin = grid.stop_margin();
     let mut c = Counters::default();
     let mut hits = Vec::with_capacity(bundle.len());
     test.sector(0..bundle.len());

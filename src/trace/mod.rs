@@ -15,7 +15,7 @@ mod shelling;
 pub use shelling::{ShellParams, ShellStats};
 
 use crate::counters::Counters;
-use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, Nearest, Segment, Vec2};
+use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, NearestHits, Segment, Vec2};
 use crate::grid::Grid;
 use crate::rays::Bundle;
 use std::fmt;
@@ -113,7 +113,7 @@ pub trait HitTest {
         }
     }
 
-    /// [`HitTest::hit_rays`] with each hit offered to `nearest` ([`Nearest::offer`] of
+    /// [`HitTest::hit_rays`] with each hit offered to `nearest` ([`NearestHits::offer`] of
     /// `Hit { t: key, segment: p }`); returns the rays that hit, as bits over `base` like
     /// `rays`. A backend may override it to make the offers of several rays at once, with the
     /// same outcome (which the default has, by construction).
@@ -125,7 +125,7 @@ pub trait HitTest {
         seg: &Segment,
         base: usize,
         rays: u64,
-        nearest: &mut Nearest,
+        nearest: &mut NearestHits,
     ) -> u64 {
         let mut hits = 0;
         self.hit_rays(bundle, p, seg, base, rays, nearest.offering(p, base, &mut hits));
@@ -182,7 +182,7 @@ impl HitTest for FloatHits {
         seg: &Segment,
         base: usize,
         rays: u64,
-        nearest: &mut Nearest,
+        nearest: &mut NearestHits,
     ) -> u64 {
         FrontPatch::new(bundle.source.origin, seg).offer_rays(&bundle.rays, p, base, rays, nearest)
     }
@@ -429,12 +429,12 @@ pub(crate) fn with_scratch<R>(scene: SceneView<'_>, f: impl FnOnce(&mut Scratch)
 
 /// Per-source cache of [`PatchInfo`], filled lazily as patches are loaded, and the per-sector
 /// record of which patches are loaded.
-pub(crate) struct PatchCache<'a> {
+pub(crate) struct ScreenCache<'a> {
     segments: &'a [Segment],
     bundle: &'a Bundle,
     /// Scale of the coordinates, for rounding bounds.
     scale: f64,
-    /// Distance margin (the grid's registration margin).
+    /// The stopping margin ([`Grid::stop_margin`](crate::grid::Grid::stop_margin)).
     margin: f64,
     /// Whether [`PatchInfo::r_min`] is computed (else it is 0).
     with_r_min: bool,
@@ -447,7 +447,7 @@ pub(crate) struct PatchCache<'a> {
     tick: u64,
 }
 
-impl<'a> PatchCache<'a> {
+impl<'a> ScreenCache<'a> {
     pub fn new(
         scene: SceneView<'a>,
         bundle: &'a Bundle,
@@ -460,11 +460,11 @@ impl<'a> PatchCache<'a> {
         let (lo, hi) = scene.grid.extent();
         let o = bundle.source.origin;
         let scale = [lo.x, lo.y, hi.x, hi.y, o.x, o.y].iter().fold(1.0f64, |m, v| m.max(v.abs()));
-        PatchCache {
+        ScreenCache {
             segments: scene.segments,
             bundle,
             scale,
-            margin: 4.0 * scene.grid.eps,
+            margin: scene.grid.stop_margin(),
             with_r_min,
             hot,
             cold,

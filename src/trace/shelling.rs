@@ -48,10 +48,10 @@
 //!   `raster_convex`), and each cell is read from the grid's one-entry scan table
 //!   ([`Grid::scan_cell`]). Within one piece a cell is met once, so cells are stamped only in
 //!   shells of several pieces; the few macro-regions a shell meets are kept in a short list.
-//! * **Patches**: [`PatchCache::load`] checks a dense per-sector stamp first; what a load needs
+//! * **Patches**: [`ScreenCache::load`] checks a dense per-sector stamp first; what a load needs
 //!   of a patch's per-source information (computed on its first load) takes 16 bytes, the rest
 //!   (read for relevant patches only) lies apart.
-//! * **Nearest hits** are kept as two arrays ([`Nearest`]): each ray's distance key and patch
+//! * **Nearest hits** are kept as two arrays ([`NearestHits`]): each ray's distance key and patch
 //!   index, so that a ray's retirement reads one `f64` and neighbouring rays' hits can be
 //!   offered together.
 //! * **Hit tests** go a word of rays at a time through the backend's `offer_rays`, which tests
@@ -67,16 +67,16 @@
 //! [`Grid::raster_convex_n`]: crate::grid::Grid::raster_convex_n
 //! [`FrontPatch::hit_rays`]: crate::geom::FrontPatch::hit_rays
 //! [`FrontPatch::offer_rays`]: crate::geom::FrontPatch::offer_rays
-//! [`Nearest`]: crate::geom::Nearest
+//! [`NearestHits`]: crate::geom::NearestHits
 //! [`closer`]: crate::geom::closer
 //! [`Grid::scan_cell`]: crate::grid::Grid::scan_cell
-//! [`PatchCache::load`]: super::PatchCache::load
+//! [`ScreenCache::load`]: super::ScreenCache::load
 
-use super::{with_scratch, HitTest, PatchCache, SceneView, Scratch};
+use super::{with_scratch, HitTest, SceneView, Scratch, ScreenCache};
 use crate::counters::Counters;
-use crate::geom::{cross, Hit, Nearest, Segment, Vec2};
+use crate::geom::{cross, Hit, NearestHits, Segment, Vec2};
 use crate::grid::{CellScan, Grid};
-use crate::limits::{MAX_RAYS, MAX_SHELLS};
+use crate::limits::{MAX_BUNDLE_RAYS, MAX_SHELLS};
 use crate::rays::Bundle;
 use std::f64::consts::FRAC_PI_4;
 
@@ -134,15 +134,15 @@ impl ShellParams {
                 self.min_sector, self.max_sector
             ));
         }
-        if self.max_sector > MAX_RAYS {
+        if self.max_sector > MAX_BUNDLE_RAYS {
             return Err(format!(
-                "the widest sector must be at most {MAX_RAYS} rays, got {}",
+                "the widest sector must be at most {MAX_BUNDLE_RAYS} rays, got {}",
                 self.max_sector
             ));
         }
-        if self.first_sector == 0 || self.first_sector > MAX_RAYS {
+        if self.first_sector == 0 || self.first_sector > MAX_BUNDLE_RAYS {
             return Err(format!(
-                "the first sector must hold between 1 and {MAX_RAYS} rays, got {}",
+                "the first sector must hold between 1 and {MAX_BUNDLE_RAYS} rays, got {}",
                 self.first_sector
             ));
         }
@@ -226,6 +226,10 @@ struct ShellEstimate {
     flatness: f64,
 }
 
+/// Traces `bundle` by S or D (`tracking`) with the backend `test`: the nearest hit of every ray,
+/// the counters and the shell statistics. Sets up the per-source screening cache and the
+/// shell stamps on this thread's scratch memory and runs [`trace_bundle`], as
+/// [`trace_bundle_v3`] where the CPU has its features.
 pub(super) fn trace<H: HitTest>(
     scene: SceneView<'_>,
     bundle: &Bundle,
@@ -240,15 +244,16 @@ pub(super) fn trace<H: HitTest>(
         *tick += 1;
         // Only the stochastic tracker reads the patches' distances (its radial subshells).
         let with_r_min = tracking == Tracking::Stochastic;
-        let cache = PatchCache::new(scene, bundle, hot, cold, patch_stamp, *tick, with_r_min);
+        let cache = ScreenCache::new(scene, bundle, hot, cold, patch_stamp, *tick, with_r_min);
+        let geo = ShellGeometry::new(scene.grid, bundle.source.origin, params);
+        let view = BundleView { scene, bundle, params, test, geo };
+        let marks = ShellMarks { cell_seen, region_seen, regions: RegionSet::new() };
         #[cfg(target_arch = "x86_64")]
         if x86_64_v3() {
             // SAFETY: the CPU has the features `trace_bundle_v3` is compiled for (just checked).
-            return unsafe {
-                trace_bundle_v3(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
-            };
+            return unsafe { trace_bundle_v3(&view, tracking, cache, tick, marks) };
         }
-        trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
+        trace_bundle(&view, tracking, cache, tick, marks)
     })
 }
 
@@ -270,19 +275,14 @@ fn x86_64_v3() -> bool {
 /// enabled here anyway.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
-#[allow(clippy::too_many_arguments)]
 fn trace_bundle_v3<H: HitTest>(
-    scene: SceneView<'_>,
-    bundle: &Bundle,
-    params: &ShellParams,
+    view: &BundleView<'_, H>,
     tracking: Tracking,
-    test: &H,
-    cache: PatchCache<'_>,
+    cache: ScreenCache<'_>,
     tick: &mut u64,
-    cell_seen: &mut [u64],
-    region_seen: &mut [u64],
+    marks: ShellMarks<'_>,
 ) -> (Vec<Option<Hit>>, Counters, ShellStats) {
-    trace_bundle(scene, bundle, params, tracking, test, cache, tick, cell_seen, region_seen)
+    trace_bundle(view, tracking, cache, tick, marks)
 }
 
 /// The rays of the current sector `[s, e)` as bit sets over sector-local indices (bit `i % 64`
@@ -365,7 +365,7 @@ impl SectorRays {
         p: u32,
         lo: usize,
         hi: usize,
-        best: &mut Nearest,
+        best: &mut NearestHits,
         c: &mut Counters,
     ) {
         if lo >= hi {
@@ -387,7 +387,7 @@ impl SectorRays {
     }
 
     /// Retires the remaining rays whose nearest hit lies before `limit`; returns how many left.
-    fn retire<H: HitTest>(&mut self, test: &H, best: &Nearest, limit: f64) -> usize {
+    fn retire<H: HitTest>(&mut self, test: &H, best: &NearestHits, limit: f64) -> usize {
         let mut n = 0;
         for w in 0..self.alive.len() {
             let mut cand = self.alive[w] & self.hit[w];
@@ -491,264 +491,271 @@ impl RegionSet {
     }
 }
 
-/// The body of [`trace`], on this thread's scratch memory: `cell_seen` and `region_seen` hold
-/// stamps compared against a fresh tick per shell, the cache's load stamps one per sector.
-#[allow(clippy::too_many_arguments)]
-#[inline(always)]
-fn trace_bundle<H: HitTest>(
-    scene: SceneView<'_>,
-    bundle: &Bundle,
-    params: &ShellParams,
-    tracking: Tracking,
-    test: &H,
-    mut cache: PatchCache<'_>,
-    tick: &mut u64,
-    cell_seen: &mut [u64],
-    region_seen: &mut [u64],
-) -> (Vec<Option<Hit>>, Counters, ShellStats) {
-    let grid = scene.grid;
-    let r = bundle.len();
-    let o = bundle.source.origin;
-    let depth = params.shell_depth.unwrap_or(4.0 * grid.cell_size);
-    let margin = 4.0 * grid.eps;
-    let (lo_box, hi_box) = grid.extent();
-    let far = grid_far(grid, o);
-    // Shells wholly nearer than the grid (a source outside it) meet no cell: the first `skip`
-    // shells are only counted. Shell `j < skip` ends at `r₂ = (j + 1)·Γ ≤ skip·Γ`, and its
-    // trapezoid (pieces of at most π/4) keeps within `(r₂ + margin) / cos(π/8)` of the source,
-    // nearer than the grid grown by `grow` (more than the rasteriser's tolerance). A source
-    // inside the grid skips nothing.
-    let skip = {
-        let near = grid_near(grid, o);
+/// The constants of a bundle's shell structure, fixed before its first sector.
+struct ShellGeometry {
+    /// The source.
+    o: Vec2,
+    /// The shell depth `Γ`.
+    depth: f64,
+    /// The stopping margin ([`Grid::stop_margin`]).
+    margin: f64,
+    /// The grid's box.
+    lo_box: Vec2,
+    hi_box: Vec2,
+    /// How far the grid's box is grown where shells are compared against it: more than the
+    /// rasteriser's tolerance.
+    grow: f64,
+    /// The distance to the grid's farthest corner: no shell starts beyond it.
+    far: f64,
+    /// The shells wholly nearer than the grid, which are only counted.
+    skip: u64,
+    /// The inner radius of the first shell not skipped.
+    r_first: f64,
+}
+
+impl ShellGeometry {
+    fn new(grid: &Grid, o: Vec2, params: &ShellParams) -> Self {
+        let depth = params.shell_depth.unwrap_or(4.0 * grid.cell_size);
+        let margin = grid.stop_margin();
+        let (lo_box, hi_box) = grid.extent();
         let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
-        let inside = (near - grow) * (std::f64::consts::PI / 8.0).cos() * (1.0 - 1e-6) - margin;
-        if near > 0.0 && inside > depth {
-            (inside / depth).floor() as u64
-        } else {
-            0
+        // Shells wholly nearer than the grid (a source outside it) meet no cell: the first `skip`
+        // shells are only counted. Shell `j < skip` ends at `r₂ = (j + 1)·Γ ≤ skip·Γ`, and its
+        // trapezoid (pieces of at most π/4) keeps within `(r₂ + margin) / cos(π/8)` of the source,
+        // nearer than the grid grown by `grow` (more than the rasteriser's tolerance). A source
+        // inside the grid skips nothing.
+        let skip = {
+            let near = grid_near(grid, o);
+            let inside = (near - grow) * (std::f64::consts::PI / 8.0).cos() * (1.0 - 1e-6) - margin;
+            if near > 0.0 && inside > depth {
+                (inside / depth).floor() as u64
+            } else {
+                0
+            }
+        };
+        ShellGeometry {
+            o,
+            depth,
+            margin,
+            lo_box,
+            hi_box,
+            grow,
+            far: grid_far(grid, o),
+            skip,
+            r_first: skip as f64 * depth,
         }
-    };
-    let r_first = skip as f64 * depth;
-    let mut c = Counters::default();
-    let mut stats = ShellStats::default();
-    let mut best = Nearest::new(r);
-    let mut rays = SectorRays::new();
-    let mut est_sum = 0.0;
-    let mut est_weight = 0.0;
+    }
 
-    // Room for a sector's shells across the grid and a shell's relevant patches, so that the
-    // common trace does not regrow them.
-    let shells_hint = (far / depth).ceil().min(1024.0) as usize + 1;
-    let mut prev: Vec<Option<ShellEstimate>> = Vec::with_capacity(shells_hint);
-    let mut cur: Vec<Option<ShellEstimate>> = Vec::with_capacity(shells_hint);
-    let mut width = params.first_sector;
-    let mut s = 0usize;
-    let mut relevant: Vec<u32> = Vec::with_capacity(256);
-    let mut regions = RegionSet::new();
+    /// Room for a sector's shells across the grid, so that the common trace does not regrow
+    /// the per-shell estimates.
+    fn shells_hint(&self) -> usize {
+        (self.far / self.depth).ceil().min(1024.0) as usize + 1
+    }
+}
 
-    while s < r {
-        let e = (s + width.clamp(params.min_sector, params.max_sector)).min(r);
-        stats.sectors += 1;
-        *tick += 1;
-        let sector = *tick;
-        rays.start(s, e);
-        test.sector(s..e);
-        // Whether the whole sector lies within π/4, so every shell is rasterised in one piece.
-        // (Rounded differences are monotone, so no narrower pair of rays can exceed π/4 then.)
+/// Sector sizing: the next sector's width from the ADLC of the first shell (with relevant
+/// patches) of the previous one, `width = clamp(round(α·ADLC), w_min, w_max)`, where the ADLC
+/// is the one derived from that shell's relevant patches ([`shell_estimate`]) for both
+/// trackers; the first sector has [`ShellParams::first_sector`] rays, and a sector without
+/// relevant patches leaves the width as it was.
+struct SectorSizing {
+    width: usize,
+}
+
+impl SectorSizing {
+    fn new(params: &ShellParams) -> Self {
+        SectorSizing { width: params.first_sector }
+    }
+
+    /// The end of the sector that starts at ray `s` of a bundle of `r` rays.
+    #[inline(always)]
+    fn end(&self, params: &ShellParams, s: usize, r: usize) -> usize {
+        (s + self.width.clamp(params.min_sector, params.max_sector)).min(r)
+    }
+
+    /// Sizes the next sector from the ADLC of the first shell with relevant patches, if any.
+    #[inline(always)]
+    fn learn(&mut self, params: &ShellParams, first_adlc: Option<f64>) {
+        if let Some(a) = first_adlc {
+            self.width = (params.sector_per_adlc * a).round() as usize;
+        }
+    }
+}
+
+/// The cone of one sector `[s, e)`: whether it lies within π/4 (every shell rasterised in one
+/// piece), and what tells the shells that lie wholly beyond the grid.
+struct SectorCone {
+    /// The whole sector lies within π/4. (Rounded differences are monotone, so no narrower pair
+    /// of rays can exceed π/4 then.)
+    one_piece: bool,
+    /// The boundary rays' directions.
+    ds: Vec2,
+    de: Vec2,
+    /// A lower bound of `cos` of half the angle of any piece of a shell.
+    cos_lb: f64,
+    /// [`cone_reach`] of the grown grid, once worked out.
+    reach: Option<f64>,
+}
+
+impl SectorCone {
+    #[inline(always)]
+    fn new(bundle: &Bundle, s: usize, e: usize) -> Self {
         let one_piece = bundle.angles[e - 1] - bundle.angles[s] <= FRAC_PI_4;
-        // Shells of this sector that lie wholly beyond the grid meet no cell, and once one does
-        // all later ones do: `reach` bounds the distance to any point of the grid (grown by the
-        // rasteriser's tolerance and more) within the sector's cone, and a shell's trapezoid
-        // keeps at least `inner·cos_half ≥ inner·cos_lb` from the source. Such shells skip
-        // rasterising; their bookkeeping is the same as for any shell without patches. The
-        // first shell keeps no distance from the source: it is rasterised whatever `reach` is
-        // (where the sector's cone misses the grid it meets no cell either way), so `reach` is
-        // only worked out for sectors that get past it.
         let (ds, de) = (bundle.rays[s].dir, bundle.rays[e - 1].dir);
         let cos_lb = if one_piece {
             (0.5 * (1.0 + ds.dot(de))).max(0.0).sqrt()
         } else {
             (std::f64::consts::PI / 8.0).cos()
         } * (1.0 - 1e-9);
-        let mut reach = None;
-        let mut reach = || {
-            *reach.get_or_insert_with(|| {
-                let grow = 2.0 * margin + 1e-9 * (lo_box - o).abs().max((hi_box - o).abs()).max_element();
-                cone_reach(o, ds, de, lo_box - Vec2::splat(grow), hi_box + Vec2::splat(grow))
-                    .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + grow)
-            })
-        };
+        SectorCone { one_piece, ds, de, cos_lb, reach: None }
+    }
+
+    /// Whether the shell starting at `r1`, and so every later one, lies wholly beyond the grid.
+    ///
+    /// `reach` bounds the distance to any point of the grid (grown by the rasteriser's tolerance
+    /// and more) within the sector's cone, and a shell's trapezoid keeps at least
+    /// `inner·cos_half ≥ inner·cos_lb` from the source. The first shell keeps no distance from
+    /// the source: it is rasterised whatever `reach` is (where the sector's cone misses the grid
+    /// it meets no cell either way), so `reach` is only worked out for sectors that get past it.
+    #[inline(always)]
+    fn beyond(&mut self, geo: &ShellGeometry, r1: f64) -> bool {
+        let keeps = (r1 - geo.margin).max(0.0) * self.cos_lb;
+        keeps > 0.0 && keeps > self.reach(geo)
+    }
+
+    fn reach(&mut self, geo: &ShellGeometry) -> f64 {
+        let (ds, de) = (self.ds, self.de);
+        *self.reach.get_or_insert_with(|| {
+            let grow = Vec2::splat(geo.grow);
+            cone_reach(geo.o, ds, de, geo.lo_box - grow, geo.hi_box + grow)
+                .map_or(f64::NEG_INFINITY, |t| t * (1.0 + 1e-9) + geo.grow)
+        })
+    }
+}
+
+/// The per-shell stamps of cells and macro-regions met, on this thread's scratch memory: each
+/// compared against a fresh tick per shell.
+struct ShellMarks<'s> {
+    cell_seen: &'s mut [u64],
+    region_seen: &'s mut [u64],
+    regions: RegionSet,
+}
+
+/// The running estimate of the ADLC the tracking mechanism worked with: each shell's value
+/// weighted by its number of relevant patches ([`Counters::adlc_estimated`]).
+#[derive(Default)]
+struct AdlcEstimate {
+    sum: f64,
+    weight: f64,
+}
+
+impl AdlcEstimate {
+    #[inline(always)]
+    fn add(&mut self, adlc: f64, patches: usize) {
+        self.sum += adlc * patches as f64;
+        self.weight += patches as f64;
+    }
+
+    fn mean(&self) -> f64 {
+        if self.weight > 0.0 {
+            self.sum / self.weight
+        } else {
+            0.0
+        }
+    }
+}
+
+/// What every step of one bundle's trace reads and does not change.
+struct BundleView<'a, H> {
+    scene: SceneView<'a>,
+    bundle: &'a Bundle,
+    params: &'a ShellParams,
+    test: &'a H,
+    geo: ShellGeometry,
+}
+
+/// What the steps of one bundle's trace change: the current sector's rays, every ray's nearest
+/// hit, the counters, the tracker's running estimate and the current shell's relevant patches.
+struct BundleState {
+    rays: SectorRays,
+    best: NearestHits,
+    c: Counters,
+    estimate: AdlcEstimate,
+    relevant: Vec<u32>,
+}
+
+/// The body of [`trace`], on this thread's scratch memory: `marks` holds stamps compared
+/// against a fresh tick per shell, the cache's load stamps one per sector.
+///
+/// Sector after sector ([`SectorSizing`]), shell after shell: a shell wholly beyond the grid
+/// only retires rays ([`pass_beyond_grid`]); any other is loaded ([`load_shell`]), its
+/// relevant patches tested by the tracking mechanism ([`track_stochastic`],
+/// [`track_deterministic`]), and the rays whose hit lies before its end retired.
+#[inline(always)]
+fn trace_bundle<H: HitTest>(
+    view: &BundleView<'_, H>,
+    tracking: Tracking,
+    mut cache: ScreenCache<'_>,
+    tick: &mut u64,
+    mut marks: ShellMarks<'_>,
+) -> (Vec<Option<Hit>>, Counters, ShellStats) {
+    let (bundle, params, test, geo) = (view.bundle, view.params, view.test, &view.geo);
+    let r = bundle.len();
+    let mut stats = ShellStats::default();
+    // Room for a shell's relevant patches, so that the common trace does not regrow them.
+    let mut st = BundleState {
+        rays: SectorRays::new(),
+        best: NearestHits::new(r),
+        c: Counters::default(),
+        estimate: AdlcEstimate::default(),
+        relevant: Vec::with_capacity(256),
+    };
+    let mut prev: Vec<Option<ShellEstimate>> = Vec::with_capacity(geo.shells_hint());
+    let mut cur: Vec<Option<ShellEstimate>> = Vec::with_capacity(geo.shells_hint());
+    let mut sizing = SectorSizing::new(params);
+    let mut s = 0usize;
+
+    while s < r {
+        let e = sizing.end(params, s, r);
+        stats.sectors += 1;
+        *tick += 1;
+        let sector = *tick;
+        st.rays.start(s, e);
+        test.sector(s..e);
+        let mut cone = SectorCone::new(bundle, s, e);
         cur.clear();
         let mut first_adlc: Option<f64> = None;
-        let mut r1 = r_first;
-        if skip > 0 {
-            stats.shells += skip;
-            stats.rays_entering += skip * rays.remaining as u64;
-            stats.rays_leaving += skip * rays.remaining as u64;
+        let mut r1 = geo.r_first;
+        if geo.skip > 0 {
+            stats.shells += geo.skip;
+            stats.rays_entering += geo.skip * st.rays.remaining as u64;
+            stats.rays_leaving += geo.skip * st.rays.remaining as u64;
         }
         // The shell index relative to the first one not skipped (the same in every sector).
         let mut j = 0usize;
-        while rays.remaining > 0 && r1 < far {
-            let keeps = (r1 - margin).max(0.0) * cos_lb;
-            if keeps > 0.0 && keeps > reach() {
-                // This shell and all later ones lie beyond the grid: they meet no cell and no
-                // patch, so each only retires rays (those holding a hit do so at once, as every
-                // hit lies within `reach`) and is recorded as a shell without patches.
-                loop {
-                    let r2 = r1 + depth;
-                    stats.shells += 1;
-                    stats.rays_entering += rays.remaining as u64;
-                    rays.retire(test, &best, r2 - margin);
-                    stats.rays_leaving += rays.remaining as u64;
-                    cur.push(None);
-                    r1 = r2;
-                    if !(rays.remaining > 0 && r1 < far) {
-                        break;
-                    }
-                }
+        while st.rays.remaining > 0 && r1 < geo.far {
+            if cone.beyond(geo, r1) {
+                pass_beyond_grid(view, r1, &mut st, &mut stats, &mut cur);
                 break;
             }
-            let r2 = r1 + depth;
+            let r2 = r1 + geo.depth;
             *tick += 1;
             let shell_gen = *tick;
             stats.shells += 1;
-            stats.rays_entering += rays.remaining as u64;
+            stats.rays_entering += st.rays.remaining as u64;
 
-            // Find the shell's cells and load its new patches (screening as they arrive).
-            relevant.clear();
-            regions.clear();
-            let mut k = s;
-            while let Some(k0) = rays.first_alive(k) {
-                // The shell spans the remaining rays' angles (Def 2.6: two boundary angles), in
-                // pieces no wider than π/4, each from a remaining ray to the last one within π/4.
-                let mut m = k0;
-                if one_piece {
-                    m = e - 1;
-                } else {
-                    while m + 1 < e && bundle.angles[m + 1] - bundle.angles[k0] <= FRAC_PI_4 {
-                        m += 1;
-                    }
-                }
-                let last = rays.last_alive(k0, m);
-                k = m + 1;
-                // The trapezoid between the piece's boundary rays, from r₁ to beyond r₂: its
-                // outer edge is tangent to the arc of radius r₂ at the piece's middle angle.
-                let (da, db) = (bundle.rays[k0].dir, bundle.rays[last].dir);
-                let cos_half = (0.5 * (1.0 + da.dot(db))).max(0.0).sqrt();
-                let inner = (r1 - margin).max(0.0);
-                let outer = (r2 + margin) / cos_half;
-                let poly = [o + da * inner, o + da * outer, o + db * outer, o + db * inner];
-                grid.raster_convex_n(&poly, |iy, x0, x1| {
-                    let mut ix = x0;
-                    while ix <= x1 {
-                        let cell = iy * grid.nx + ix;
-                        let items = match grid.scan_cell(cell) {
-                            CellScan::Empty { region, x1 } => {
-                                if regions.insert(region, region_seen, shell_gen) {
-                                    c.cells_traversed += 1;
-                                }
-                                ix = x1 as usize + 1;
-                                continue;
-                            }
-                            CellScan::Items(items) => items,
-                        };
-                        ix += 1;
-                        // A piece's rows are disjoint and a row meets each cell once, so only a
-                        // shell of several pieces can meet a cell twice.
-                        if !one_piece {
-                            if cell_seen[cell] == shell_gen {
-                                continue;
-                            }
-                            cell_seen[cell] = shell_gen;
-                        }
-                        c.cells_traversed += 1;
-                        for &p in items {
-                            let Some((pass, rays)) = cache.load(p, sector) else { continue };
-                            c.patches_read_before_screening += 1;
-                            test.load(p);
-                            let in_sector = (rays.start as usize) < e && (rays.end as usize) > s;
-                            if pass && in_sector {
-                                c.patches_read_after_screening += 1;
-                                relevant.push(p);
-                            }
-                        }
-                    }
-                });
-            }
-
-            // Tracking (Section 3.1): each relevant patch's spanning angle, in rays, estimates
-            // its degree of local coherence; with its flatness it feeds the shell's averages.
-            let mut dlc_sum = 0usize;
-            let mut flat_sum = 0.0;
-            for &p in &relevant {
-                dlc_sum += cache.rays(p).len();
-                flat_sum += cache.known(p).flatness;
-            }
-            let here = (!relevant.is_empty()).then(|| ShellEstimate {
-                adlc: dlc_sum as f64 / relevant.len() as f64,
-                flatness: flat_sum / relevant.len() as f64,
-            });
-
+            load_shell(view, &cone, r1, r2, sector, shell_gen, &mut cache, &mut marks, &mut st);
+            let here = shell_estimate(&st.relevant, &cache);
             match tracking {
                 Tracking::Stochastic => {
-                    let neighbour = prev.get(j).copied().flatten();
-                    let adlc = neighbour.map_or(params.default_adlc, |x| x.adlc);
-                    let flat = neighbour.map_or(depth, |x| x.flatness);
-                    if !relevant.is_empty() {
-                        est_sum += adlc * relevant.len() as f64;
-                        est_weight += relevant.len() as f64;
-                    }
-                    let group = (adlc.round() as usize).max(1);
-                    let step = flat.clamp(depth * params.min_subshell_fraction, depth);
-                    let bins = ((depth / step).ceil() as usize).max(1);
-                    // Patches in order of their nearest point; each joins the radial subshell of
-                    // its r_min (the last one for patches reaching beyond the shell).
-                    relevant.sort_unstable_by(|&a, &b| {
-                        cache.known(a).r_min.total_cmp(&cache.known(b).r_min).then(a.cmp(&b))
-                    });
-                    let mut bin = 0usize;
-                    for &p in &relevant {
-                        let pb =
-                            (((cache.known(p).r_min - r1) / step).floor().max(0.0) as usize).min(bins - 1);
-                        while bin < pb {
-                            // Close radial subshell `bin`: rays hit before its end are done.
-                            bin += 1;
-                            let end = r1 + bin as f64 * step;
-                            rays.retire(test, &best, end - margin);
-                        }
-                        let span = cache.rays(p);
-                        let lo = (span.start as usize).max(s);
-                        let hi = (span.end as usize).min(e);
-                        if lo >= hi {
-                            continue;
-                        }
-                        let g0 = s + (lo - s) / group * group;
-                        let g1 = (s + ((hi - 1 - s) / group + 1) * group).min(e);
-                        let seg = &scene.segments[p as usize];
-                        rays.test_span(test, bundle, seg, p, g0, g1, &mut best, &mut c);
-                    }
+                    track_stochastic(view, prev.get(j).copied().flatten(), r1, &cache, &mut st)
                 }
-                Tracking::Deterministic => {
-                    if let Some(h) = here {
-                        est_sum += h.adlc * relevant.len() as f64;
-                        est_weight += relevant.len() as f64;
-                    }
-                    relevant.sort_unstable_by(|&a, &b| {
-                        cache.known(a).angle_lo.total_cmp(&cache.known(b).angle_lo).then(a.cmp(&b))
-                    });
-                    for &p in &relevant {
-                        let span = cache.rays(p);
-                        let lo = (span.start as usize).max(s);
-                        let hi = (span.end as usize).min(e);
-                        let seg = &scene.segments[p as usize];
-                        rays.test_span(test, bundle, seg, p, lo, hi, &mut best, &mut c);
-                    }
-                }
+                Tracking::Deterministic => track_deterministic(view, here, &cache, &mut st),
             }
 
             // End of shell: rays whose nearest hit lies before r₂ are done.
-            rays.retire(test, &best, r2 - margin);
-            stats.rays_leaving += rays.remaining as u64;
+            st.rays.retire(test, &st.best, r2 - geo.margin);
+            stats.rays_leaving += st.rays.remaining as u64;
             if here.is_some() && first_adlc.is_none() {
                 first_adlc = here.map(|h| h.adlc);
             }
@@ -758,12 +765,221 @@ fn trace_bundle<H: HitTest>(
         }
         // Rays still remaining have left the grid: they hit nothing (or already hold a hit
         // beyond the last shell, which cannot happen as every patch lies inside the grid).
-        if let Some(a) = first_adlc {
-            width = (params.sector_per_adlc * a).round() as usize;
-        }
+        sizing.learn(params, first_adlc);
         std::mem::swap(&mut prev, &mut cur);
         s = e;
     }
-    c.adlc_estimated = if est_weight > 0.0 { est_sum / est_weight } else { 0.0 };
-    (best.into_hits(), c, stats)
+    st.c.adlc_estimated = st.estimate.mean();
+    (st.best.into_hits(), st.c, stats)
+}
+
+/// The shell starting at `r1` and all later ones of the sector lie beyond the grid: they meet
+/// no cell and no patch, so each only retires rays (those holding a hit do so at once, as every
+/// hit lies within the cone's reach) and is recorded as a shell without patches.
+#[inline(always)]
+fn pass_beyond_grid<H: HitTest>(
+    view: &BundleView<'_, H>,
+    mut r1: f64,
+    st: &mut BundleState,
+    stats: &mut ShellStats,
+    cur: &mut Vec<Option<ShellEstimate>>,
+) {
+    let geo = &view.geo;
+    let BundleState { rays, best, .. } = st;
+    loop {
+        let r2 = r1 + geo.depth;
+        stats.shells += 1;
+        stats.rays_entering += rays.remaining as u64;
+        rays.retire(view.test, best, r2 - geo.margin);
+        stats.rays_leaving += rays.remaining as u64;
+        cur.push(None);
+        r1 = r2;
+        if !(rays.remaining > 0 && r1 < geo.far) {
+            break;
+        }
+    }
+}
+
+/// Shell loading: lists the cells of the shell `[r1, r2)` over the sector's remaining rays,
+/// loads every patch of them not yet loaded in this sector (counted before screening, announced
+/// to the backend) and leaves in `relevant` those that pass the screener and whose span meets
+/// the sector, in the order met.
+///
+/// The shell spans the remaining rays' angles (Def 2.6: two boundary angles), in pieces no wider
+/// than π/4, each from a remaining ray to the last one within π/4; each piece is rasterised as
+/// the trapezoid between its boundary rays from `r1` to beyond `r2` (its outer edge tangent to
+/// the arc of radius `r2` at the piece's middle angle), grown by the stopping margin. An empty
+/// cell's whole macro-region is skipped and counted once per shell.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn load_shell<H: HitTest>(
+    view: &BundleView<'_, H>,
+    cone: &SectorCone,
+    r1: f64,
+    r2: f64,
+    sector: u64,
+    shell_gen: u64,
+    cache: &mut ScreenCache<'_>,
+    marks: &mut ShellMarks<'_>,
+    st: &mut BundleState,
+) {
+    let BundleState { rays, c, relevant, .. } = st;
+    let (grid, bundle, test, o, margin) =
+        (view.scene.grid, view.bundle, view.test, view.geo.o, view.geo.margin);
+    let (s, e, one_piece) = (rays.s, rays.e, cone.one_piece);
+    let ShellMarks { cell_seen, region_seen, regions } = marks;
+    relevant.clear();
+    regions.clear();
+    let mut k = s;
+    while let Some(k0) = rays.first_alive(k) {
+        let mut m = k0;
+        if one_piece {
+            m = e - 1;
+        } else {
+            while m + 1 < e && bundle.angles[m + 1] - bundle.angles[k0] <= FRAC_PI_4 {
+                m += 1;
+            }
+        }
+        let last = rays.last_alive(k0, m);
+        k = m + 1;
+        let (da, db) = (bundle.rays[k0].dir, bundle.rays[last].dir);
+        let cos_half = (0.5 * (1.0 + da.dot(db))).max(0.0).sqrt();
+        let inner = (r1 - margin).max(0.0);
+        let outer = (r2 + margin) / cos_half;
+        let poly = [o + da * inner, o + da * outer, o + db * outer, o + db * inner];
+        grid.raster_convex_n(&poly, |iy, x0, x1| {
+            let mut ix = x0;
+            while ix <= x1 {
+                let cell = iy * grid.nx + ix;
+                let items = match grid.scan_cell(cell) {
+                    CellScan::Empty { region, x1 } => {
+                        if regions.insert(region, region_seen, shell_gen) {
+                            c.cells_traversed += 1;
+                        }
+                        ix = x1 as usize + 1;
+                        continue;
+                    }
+                    CellScan::Items(items) => items,
+                };
+                ix += 1;
+                // A piece's rows are disjoint and a row meets each cell once, so only a shell of
+                // several pieces can meet a cell twice.
+                if !one_piece {
+                    if cell_seen[cell] == shell_gen {
+                        continue;
+                    }
+                    cell_seen[cell] = shell_gen;
+                }
+                c.cells_traversed += 1;
+                for &p in items {
+                    let Some((pass, rays)) = cache.load(p, sector) else { continue };
+                    c.patches_read_before_screening += 1;
+                    test.load(p);
+                    let in_sector = (rays.start as usize) < e && (rays.end as usize) > s;
+                    if pass && in_sector {
+                        c.patches_read_after_screening += 1;
+                        relevant.push(p);
+                    }
+                }
+            }
+        });
+    }
+}
+
+/// What a shell's relevant patches tell (Section 3.1): each one's spanning angle, in rays,
+/// estimates its degree of local coherence. Their mean is D's ADLC and sizes the next sector
+/// ([`SectorSizing`]); with the mean flatness it is what S starts from in the shell of the same
+/// index of the next sector. `None` for a shell without relevant patches.
+#[inline(always)]
+fn shell_estimate(relevant: &[u32], cache: &ScreenCache<'_>) -> Option<ShellEstimate> {
+    let mut dlc_sum = 0usize;
+    let mut flat_sum = 0.0;
+    for &p in relevant {
+        dlc_sum += cache.rays(p).len();
+        flat_sum += cache.known(p).flatness;
+    }
+    (!relevant.is_empty()).then(|| ShellEstimate {
+        adlc: dlc_sum as f64 / relevant.len() as f64,
+        flatness: flat_sum / relevant.len() as f64,
+    })
+}
+
+/// The stochastic tracking mechanism (S): neighbourhood estimates. From the neighbouring shell
+/// (the same shell index in the previous sector; without one, [`ShellParams::default_adlc`]
+/// and the shell depth) it takes the ADLC and the average flatness, cuts the sector's rays into
+/// angular subshells of `round(ADLC)` rays and the shell into radial subshells of the flatness
+/// (at least [`ShellParams::min_subshell_fraction`] of the depth). The relevant patches, in
+/// order of their nearest point, each join the radial subshell of their `r_min` (the last one
+/// for patches reaching beyond the shell); each is tested against all remaining rays of every
+/// angular subshell its span overlaps, and as a radial subshell closes the rays hit before its
+/// end leave.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn track_stochastic<H: HitTest>(
+    view: &BundleView<'_, H>,
+    neighbour: Option<ShellEstimate>,
+    r1: f64,
+    cache: &ScreenCache<'_>,
+    st: &mut BundleState,
+) {
+    let BundleState { rays, best, c, estimate, relevant } = st;
+    let (params, depth, margin) = (view.params, view.geo.depth, view.geo.margin);
+    let (s, e) = (rays.s, rays.e);
+    let adlc = neighbour.map_or(params.default_adlc, |x| x.adlc);
+    let flat = neighbour.map_or(depth, |x| x.flatness);
+    if !relevant.is_empty() {
+        estimate.add(adlc, relevant.len());
+    }
+    let group = (adlc.round() as usize).max(1);
+    let step = flat.clamp(depth * params.min_subshell_fraction, depth);
+    let bins = ((depth / step).ceil() as usize).max(1);
+    relevant.sort_unstable_by(|&a, &b| cache.known(a).r_min.total_cmp(&cache.known(b).r_min).then(a.cmp(&b)));
+    let mut bin = 0usize;
+    for &p in relevant.iter() {
+        let pb = (((cache.known(p).r_min - r1) / step).floor().max(0.0) as usize).min(bins - 1);
+        while bin < pb {
+            // Close radial subshell `bin`: rays hit before its end are done.
+            bin += 1;
+            let end = r1 + bin as f64 * step;
+            rays.retire(view.test, best, end - margin);
+        }
+        let span = cache.rays(p);
+        let lo = (span.start as usize).max(s);
+        let hi = (span.end as usize).min(e);
+        if lo >= hi {
+            continue;
+        }
+        let g0 = s + (lo - s) / group * group;
+        let g1 = (s + ((hi - 1 - s) / group + 1) * group).min(e);
+        let seg = &view.scene.segments[p as usize];
+        rays.test_span(view.test, view.bundle, seg, p, g0, g1, best, c);
+    }
+}
+
+/// The deterministic tracking mechanism (D): per-patch derived coherence. The shell's own
+/// relevant patches give its ADLC (`here`); sorted by angle, each is tested against exactly the
+/// remaining rays inside its angular span.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn track_deterministic<H: HitTest>(
+    view: &BundleView<'_, H>,
+    here: Option<ShellEstimate>,
+    cache: &ScreenCache<'_>,
+    st: &mut BundleState,
+) {
+    let BundleState { rays, best, c, estimate, relevant } = st;
+    let (s, e) = (rays.s, rays.e);
+    if let Some(h) = here {
+        estimate.add(h.adlc, relevant.len());
+    }
+    relevant.sort_unstable_by(|&a, &b| {
+        cache.known(a).angle_lo.total_cmp(&cache.known(b).angle_lo).then(a.cmp(&b))
+    });
+    for &p in relevant.iter() {
+        let span = cache.rays(p);
+        let lo = (span.start as usize).max(s);
+        let hi = (span.end as usize).min(e);
+        let seg = &view.scene.segments[p as usize];
+        rays.test_span(view.test, view.bundle, seg, p, lo, hi, best, c);
+    }
 }

@@ -53,7 +53,7 @@ use std::path::{Path, PathBuf};
 use rust_hdl::core::prelude::{check_all, Atom, Block, Clock, In, Signal};
 
 use crate::replay::{Recorder, Recording};
-use crate::vcd::VcdStream;
+use crate::vcd_stream::VcdStream;
 use crate::{Error, Result};
 
 /// A block with a clock input. Implement it with [`impl_clocked!`](crate::impl_clocked) for

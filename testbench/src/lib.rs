@@ -4,8 +4,8 @@
 //!
 //! - [`driver`]: [`Driver`] steps a rust-hdl block from a plain loop (no testbench threads), one
 //!   call per clock cycle, optionally streaming a VCD and recording the top-level ports.
-//! - [`vcd`]: the VCD stream behind [`Driver::stream_vcd`]: written as the run goes, optionally
-//!   only for a window of cycles; [`vcd::waveform_path`] names files under `waveforms/`.
+//! - [`vcd_stream`]: the VCD stream behind [`Driver::stream_vcd`]: written as the run goes, optionally
+//!   only for a window of cycles; [`vcd_stream::waveform_path`] names files under `waveforms/`.
 //! - [`stream`]: seeded stall patterns ([`Pacing`]), a producer-side [`Source`] that offers items
 //!   with random idle cycles and a consumer-side [`Monitor`] that collects them under random
 //!   backpressure, independent of any particular block.
@@ -93,7 +93,7 @@ pub mod pe_sim;
 pub mod replay;
 pub mod scoreboard;
 pub mod stream;
-pub mod vcd;
+pub mod vcd_stream;
 pub mod verilated;
 pub mod waves;
 
@@ -104,7 +104,7 @@ pub use pe_sim::PeSim;
 pub use replay::{Design, Port, PortDir, Recording, ReplayReport, Simulator};
 pub use scoreboard::Scoreboard;
 pub use stream::{Monitor, Pacing, Received, Source};
-pub use vcd::waveform_path;
+pub use vcd_stream::waveform_path;
 
 /// The rust-hdl version this crate is built against, re-exported so that users and the
 /// [`impl_clocked!`] macro name exactly the same types.

@@ -17,8 +17,8 @@ use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
 
 impl_clocked!(ProcessingElement);
 
-/// Rays a PE holds.
-pub const MAX_RAYS: usize = 1 << RAY_BITS;
+/// Rays a PE holds: the size of its ray memory (the bundle of one source on the PE).
+pub const PE_RAY_MEMORY: usize = 1 << RAY_BITS;
 
 /// One command of the host, in stream order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -46,8 +46,8 @@ impl PeSetup {
 
     fn check(&self, commands: &[Command], patches: usize) -> Result<()> {
         let n = self.dirs.len();
-        if n == 0 || n > MAX_RAYS {
-            return Err(Error::new(format!("a PE traces 1 to {MAX_RAYS} rays, got {n}")));
+        if n == 0 || n > PE_RAY_MEMORY {
+            return Err(Error::new(format!("a PE traces 1 to {PE_RAY_MEMORY} rays, got {n}")));
         }
         for (k, c) in commands.iter().enumerate() {
             let bad = match *c {

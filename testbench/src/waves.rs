@@ -5,7 +5,7 @@
 //! and samples them at the settled pre-edge state of each cycle (time `c * CYCLE_PS`, where a
 //! valid/ready handshake is decided), which the VCD writer dumps once per cycle.
 
-use crate::vcd::CYCLE_PS;
+use crate::vcd_stream::CYCLE_PS;
 use crate::{Error, Result};
 use std::collections::HashMap;
 use std::fs::File;

@@ -11,7 +11,7 @@
 use shelling::cosim::{self, CosimConfig};
 use shelling::grid::GridParams;
 use shelling::rays::RaySet;
-use shelling::run::Prepared;
+use shelling::run::GriddedScene;
 use shelling::scene::{self, PAPER_WORLD};
 use shelling::trace::{Method, ShellParams};
 use shelling_testbench::pe::{self, rust_hdl_pe};
@@ -43,7 +43,7 @@ pub fn record(cases: &[Case]) -> Recording {
     drv.record_ports().expect("recording from power-up");
     for c in cases {
         let scene = scene::generate(1000, c.length, c.seed, PAPER_WORLD).expect("scene");
-        let prepared = Prepared::new(scene, GridParams::default());
+        let prepared = GriddedScene::new(scene, GridParams::default());
         let bundle = prepared.patch_bundle(c.source, RaySet::Angle, RAYS).expect("source");
         // A new scene in the host memory: the cached patches of the last one must go.
         pe::flush_cache(&mut drv).expect("flushes");

@@ -8,4 +8,4 @@ mod replay;
 mod speed;
 mod streams;
 mod toy;
-mod vcd;
+mod vcd_stream;

@@ -1,6 +1,6 @@
 //! VCD streaming with a cycle window.
 
-use shelling_testbench::vcd::CYCLE_PS;
+use shelling_testbench::vcd_stream::CYCLE_PS;
 use shelling_testbench::{waveform_path, Driver, Pacing, Result};
 
 use crate::toy::{random_vectors, run_pipeline, MulAddPipe};
