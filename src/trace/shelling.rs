@@ -26,8 +26,9 @@
 //!   is tested against exactly the remaining rays inside its angular span.
 //!
 //! Both size the next sector from the ADLC of the first shell (with relevant patches) of the
-//! previous one: `width = clamp(round(α·ADLC), w_min, w_max)`; S uses its estimate, D the derived
-//! value. INTERPRETATION.md gives the reasons for each of these readings.
+//! previous one: `width = clamp(round(α·ADLC), w_min, w_max)`, both with the ADLC derived from
+//! that shell's relevant patches once it is traversed (S's own estimate is made before the shell
+//! and predicts it). INTERPRETATION.md gives the reasons for each of these readings.
 //!
 //! # Implementation
 //!
