@@ -53,9 +53,10 @@ enum Command {
     /// Rung 2: trace the paper's workload in f64 and in the bit-true fixed point, compare the
     /// nearest patch of every ray and explain every disagreement by the documented error bound.
     Agreement(AgreementArgs),
-    /// Co-simulate one source on the RTL processing element (cycle-accurate, rust-hdl), fed by
-    /// the shell scheduler, every hit checked against the bit-true model and the f64 golden
-    /// model, with hardware cycle counts.
+    /// Co-simulate one source on the RTL processing element, cycle-accurate (on rust-hdl's
+    /// simulation or on its Verilog compiled by Verilator, see --engine), fed by the shell
+    /// scheduler, every hit checked against the bit-true model and the f64 golden model, with
+    /// hardware cycle counts.
     Cosim(CosimArgs),
     /// Form factors F_ij of a scene's patches from the tracers' bundles: one row (--source), a
     /// slice of the matrix into a file (--rows), or the merge of slices (--merge).
