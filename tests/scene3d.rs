@@ -604,3 +604,52 @@ fn polygon_problems_come_in_the_documented_order() {
     let p = Polygon::new(vec![DVec3::ZERO, DVec3::X, DVec3::X * 2.0, DVec3::new(2.0, 2.0, 0.0)]).unwrap();
     assert_eq!(p.area, 2.0);
 }
+
+#[test]
+fn indentation_tabs_and_crlf_are_read_as_plain_lines() {
+    let text = GOOD
+        .replace("mtllib scene.mtl", "  mtllib\tscene.mtl")
+        .replace("usemtl grey", "\tusemtl   grey")
+        .replace('\n', "\r\n");
+    let mtl = MTL.replace("newmtl grey", "   newmtl\tgrey").replace('\n', "\r\n");
+    let s = load_with(&text, &mtl).unwrap();
+    assert_eq!(s.materials[0].name, "grey");
+    assert_eq!(s, load_with(GOOD, MTL).unwrap());
+}
+
+/// Regression: `tobj` panics on a colour line with fewer than three numbers (`Kd 0.5 0.5`) and
+/// slices lines at byte offsets; mangled files must give errors, never panics, and the loader's
+/// own checks must catch everything before `tobj` could panic.
+#[test]
+fn mangled_files_give_errors_not_panics() {
+    use rand::{RngExt, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1990);
+    let pieces = [
+        "nan", "-", "/", " ", "\t", "1e999", "0", "\n", "f ", "v ", "x", "\u{85}", "\u{3000}", "Kd ", "Ke ",
+        "newmtl ", "usemtl ", "mtllib ", "-1", "//", "1e9", "#",
+    ];
+    let mut failed_in_reader = 0;
+    for _ in 0..3000 {
+        let mut obj_text = GOOD.to_string();
+        let mut mtl = MTL.to_string();
+        for _ in 0..rng.random_range(1..6) {
+            let target = if rng.random::<bool>() { &mut obj_text } else { &mut mtl };
+            let mut at = rng.random_range(0..=target.len());
+            while !target.is_char_boundary(at) {
+                at -= 1;
+            }
+            if rng.random::<bool>() && at < target.len() {
+                let end = target[at..].char_indices().nth(1).map_or(target.len(), |(i, _)| at + i);
+                target.replace_range(at..end, "");
+            } else {
+                target.insert_str(at, pieces[rng.random_range(0..pieces.len())]);
+            }
+        }
+        if let Err(e) = load_with(&obj_text, &mtl) {
+            if e.to_string().contains("the OBJ reader failed") {
+                failed_in_reader += 1;
+            }
+        }
+    }
+    assert_eq!(failed_in_reader, 0);
+}

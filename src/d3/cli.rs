@@ -113,3 +113,32 @@ fn run(a: &Gen3) -> Result<(), super::Scene3Error> {
     );
     obj::save(&scene, &a.out, &comment)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(s: &str) -> Vec<OsString> {
+        s.split_whitespace().map(OsString::from).collect()
+    }
+
+    #[test]
+    fn dim_2_is_removed_and_other_commands_pass_through() {
+        assert_eq!(
+            intercept_from(args("shelling scene gen --dim 2 --count 3")),
+            Ok(args("shelling scene gen --count 3"))
+        );
+        assert_eq!(intercept_from(args("shelling scene gen --dim=2")), Ok(args("shelling scene gen")));
+        assert_eq!(
+            intercept_from(args("shelling scene gen --count 3")),
+            Ok(args("shelling scene gen --count 3"))
+        );
+        assert_eq!(intercept_from(args("shelling trace --dim 3")), Ok(args("shelling trace --dim 3")));
+        assert_eq!(intercept_from(args("shelling")), Ok(args("shelling")));
+    }
+
+    #[test]
+    fn a_bad_dim_is_an_error() {
+        assert_eq!(intercept_from(args("shelling scene gen --dim 4")), Err(ExitCode::from(2)));
+    }
+}

@@ -195,3 +195,26 @@ impl HemisphereRays {
         (band as f64 * d, (band + 1) as f64 * d)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_ray_is_the_normal_with_weight_one() {
+        for strata in [Strata::Angle, Strata::Cosine] {
+            let set = HemisphereRays::new(DVec3::ZERO, DVec3::new(0.0, 2.0, 0.0), 1, 1, strata).unwrap();
+            assert_eq!(set.len(), 1);
+            assert!((set.rays[0].weight - 1.0).abs() < 1e-15);
+            assert!(set.rays[0].direction.dot(DVec3::Y) > 0.5);
+        }
+    }
+
+    #[test]
+    fn sectors_are_clipped_to_the_set() {
+        let set = HemisphereRays::new(DVec3::ZERO, DVec3::Z, 4, 3, Strata::Angle).unwrap();
+        assert_eq!(set.sector(3..9, 2..9), vec![11..12]);
+        assert!(set.sector(0..4, 2..2).is_empty());
+        assert_eq!(set.sector(0..4, 0..3), vec![0..3, 3..6, 6..9, 9..12]);
+    }
+}

@@ -70,6 +70,7 @@ pub fn load_str(
     text: &str,
     read_library: &dyn Fn(&Path) -> Result<String, std::io::Error>,
 ) -> Result<Scene3, Scene3Error> {
+    let text = &normalise(text);
     let faces = scan(name, text)?;
     if faces.is_empty() {
         return Err(Scene3Error::Empty { name: name.to_string() });
@@ -99,6 +100,7 @@ pub fn load_str(
                 })
             }
         };
+        let text = normalise(&text);
         if let Some((line, message)) = scan_mtl(&text) {
             return fail(Scene3Error::MalformedMaterialLibrary {
                 name: name.to_string(),
@@ -231,6 +233,27 @@ pub fn load_str(
         polygons.push(polygon.with_material(index, &materials[index]));
     }
     Ok(Scene3 { polygons, materials })
+}
+
+/// The text with every line's leading whitespace removed and its keyword followed by one space:
+/// `tobj` takes names and paths by byte offsets from the line's start and splits at the first
+/// `' '`, so an indented `newmtl` or a tab after `mtllib` would be misread. Lines are kept, so
+/// line numbers do not change.
+fn normalise(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 16);
+    for line in text.lines() {
+        let line = line.trim();
+        match line.split_once(char::is_whitespace) {
+            Some((keyword, rest)) => {
+                out.push_str(keyword);
+                out.push(' ');
+                out.push_str(rest.trim_start());
+            }
+            None => out.push_str(line),
+        }
+        out.push('\n');
+    }
+    out
 }
 
 fn internal(name: &str, message: &str) -> Scene3Error {

@@ -330,3 +330,47 @@ pub fn frame(n: DVec3) -> (DVec3, DVec3) {
     let b = n.x * n.y * a;
     (DVec3::new(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), DVec3::new(b, sign + n.y * n.y * a, -n.y))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_is_orthonormal_and_right_handed_for_every_normal() {
+        let mut normals = vec![DVec3::Z, DVec3::NEG_Z, DVec3::X, DVec3::NEG_Y, DVec3::new(1e-300, 0.0, -1.0)];
+        for i in 0..100 {
+            let a = i as f64 * 0.7;
+            normals.push(DVec3::new(a.cos() * (a * 0.3).sin(), a.sin() * (a * 0.3).sin(), (a * 0.3).cos()));
+        }
+        for n in normals {
+            let n = n.normalize();
+            let (t, b) = frame(n);
+            assert!((t.length() - 1.0).abs() < 1e-12 && (b.length() - 1.0).abs() < 1e-12, "{n}");
+            assert!(t.dot(b).abs() < 1e-12 && t.dot(n).abs() < 1e-12 && b.dot(n).abs() < 1e-12, "{n}");
+            assert!((t.cross(b) - n).length() < 1e-12, "{n}");
+        }
+    }
+
+    #[test]
+    fn face_locations_print_with_and_without_a_line() {
+        assert_eq!(FaceAt { index: 3, line: Some(9) }.to_string(), "face 3 (line 9)");
+        assert_eq!(FaceAt { index: 3, line: None }.to_string(), "face 3");
+    }
+
+    #[test]
+    fn a_clockwise_polygon_is_valid_and_faces_the_other_way() {
+        let ccw = vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0)];
+        let cw: Vec<DVec3> = ccw.iter().rev().copied().collect();
+        assert_eq!(Polygon::new(ccw).unwrap().normal, DVec3::Z);
+        assert_eq!(Polygon::new(cw).unwrap().normal, DVec3::NEG_Z);
+    }
+
+    #[test]
+    fn material_means_and_problems() {
+        let m = Material3 { name: "m".into(), kd: [0.3, 0.6, 0.9], ke: [0.0, 3.0, 0.0] };
+        assert!((m.reflectance() - 0.6).abs() < 1e-15);
+        assert_eq!(m.emission(), 1.0);
+        assert_eq!(m.problem(), None);
+        assert!(Material3::grey("g", 1.0, 0.0).problem().is_some());
+    }
+}
