@@ -119,6 +119,8 @@ pub fn load_str(
             }),
         }
     };
+    // `tobj`'s `merging` and `reordering` features add fields (off, by default): keep the update.
+    #[allow(clippy::needless_update)]
     let options = tobj::LoadOptions {
         single_index: false,
         triangulate: false,
@@ -129,7 +131,7 @@ pub fn load_str(
     // `tobj` has panicked on malformed input before (a short `Kd` line, which `scan_mtl` now
     // catches); a panic left in it becomes an error, never a crash.
     let loaded = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-        tobj::load_obj_buf(&mut text.as_bytes(), &options, &loader)
+        tobj::load_obj_buf(&mut text.as_bytes(), &options, loader)
     }))
     .map_err(|_| Scene3Error::Malformed {
         name: name.to_string(),

@@ -166,7 +166,7 @@ impl Polygon {
         let twice_area: DVec3 =
             (0..n).map(|i| (vertices[i] - centre).cross(vertices[(i + 1) % n] - centre)).sum();
         let area = 0.5 * twice_area.length();
-        if !(area > AREA_TOLERANCE * size * size) {
+        if area.is_nan() || area <= AREA_TOLERANCE * size * size {
             return Err(PolygonProblem::ZeroArea);
         }
         let normal = twice_area / twice_area.length();
