@@ -416,6 +416,10 @@ fn scene_gen_dim_3_writes_obj_and_mtl_and_dim_2_is_the_2d_generator() {
         String::from_utf8_lossy(&o.stderr),
         "error: generator: the number of patches must be 1 to 1048576, got 0\n"
     );
+    let o = run(&["scene", "gen", "--dim", "3", "--help"]);
+    assert!(o.status.success());
+    assert!(String::from_utf8_lossy(&o.stdout)
+        .contains("Usage: shelling scene gen [OPTIONS] --dim <DIM> --out <OUT>"));
     let o = run(&["scene", "gen", "--dim", "4"]);
     assert_eq!(String::from_utf8_lossy(&o.stderr), "error: --dim must be 2 or 3, got \"4\"\n");
     let o = run(&["scene", "gen", "--dim=2", "--count", "3"]);
@@ -652,4 +656,20 @@ fn mangled_files_give_errors_not_panics() {
         }
     }
     assert_eq!(failed_in_reader, 0);
+}
+
+/// Why `scenes/cornell_box.obj` splits the left wall: the data page's quad is not planar.
+#[test]
+fn the_cornell_data_pages_left_wall_quad_is_rejected_as_non_planar() {
+    let wall = one_face(
+        &[
+            ["552.8", "0.0", "0.0"],
+            ["549.6", "0.0", "559.2"],
+            ["556.0", "548.8", "559.2"],
+            ["556.0", "548.8", "0.0"],
+        ],
+        "f 1 2 3 4",
+    );
+    let e = error(&wall);
+    assert!(e.starts_with("scene.obj: face 0 (line 7) is not planar: vertex 0 lies 8.0"), "{e}");
 }

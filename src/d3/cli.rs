@@ -19,7 +19,7 @@ use std::process::ExitCode;
 
 /// `scene gen --dim 3`: N random squares of side L in [0, 1024)³, seeded (SCENES3D.md).
 #[derive(Parser, Debug)]
-#[command(name = "shelling scene gen --dim 3")]
+#[command(name = "shelling scene gen --dim 3", bin_name = "shelling scene gen")]
 struct Gen3 {
     /// The dimension: 3 here (2 is the 2D `scene gen`).
     #[arg(long)]
