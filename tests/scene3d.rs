@@ -673,3 +673,43 @@ fn the_cornell_data_pages_left_wall_quad_is_rejected_as_non_planar() {
     let e = error(&wall);
     assert!(e.starts_with("scene.obj: face 0 (line 7) is not planar: vertex 0 lies 8.0"), "{e}");
 }
+
+/// The form factor from a differential area to a parallel rectangle `a × b` at distance `c`,
+/// with one corner straight above the area (Howell's catalogue, B-3).
+fn corner_rectangle(a: f64, b: f64, c: f64) -> f64 {
+    let (x, y) = (a / c, b / c);
+    let (sx, sy) = ((1.0 + x * x).sqrt(), (1.0 + y * y).sqrt());
+    (x / sx * (y / sx).atan() + y / sy * (x / sy).atan()) / std::f64::consts::TAU
+}
+
+#[test]
+fn both_ray_sets_through_the_oracle_give_the_box_rooms_form_factors() {
+    // From the centre of the floor: the whole ceiling (four corner rectangles 128 × 128 at 256)
+    // and the light (four 128/3 × 128/3), against the closed form; and every ray hits a wall.
+    let room = box_room();
+    let o = DVec3::new(128.0, 0.0, 128.0);
+    let ceiling_exact = 4.0 * corner_rectangle(128.0, 128.0, 256.0);
+    let light_exact = 4.0 * corner_rectangle(128.0 / 3.0, 128.0 / 3.0, 256.0);
+    assert!((ceiling_exact - 0.2394565).abs() < 1e-6, "{ceiling_exact}");
+    for strata in [Strata::Angle, Strata::Cosine] {
+        let set = HemisphereRays::new(o, DVec3::Y, 128, 64, strata).unwrap();
+        let (mut ceiling, mut light, mut total) = (0.0, 0.0, 0.0);
+        for r in &set.rays {
+            let hit = brute::nearest(&room, o, r.direction, Some(4)).expect("the room is closed");
+            let p = &room.polygons[hit.polygon];
+            total += r.weight;
+            if p.normal == DVec3::NEG_Y {
+                ceiling += r.weight;
+                if p.emission > 0.0 {
+                    light += r.weight;
+                }
+            }
+        }
+        assert!((total - 1.0).abs() < 1e-12);
+        assert!(
+            (ceiling - ceiling_exact).abs() < 2e-3,
+            "{strata:?}: ceiling {ceiling} against {ceiling_exact}"
+        );
+        assert!((light - light_exact).abs() < 2e-3, "{strata:?}: light {light} against {light_exact}");
+    }
+}
