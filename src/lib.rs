@@ -15,6 +15,7 @@ pub mod agreement;
 pub mod arith;
 pub mod cosim;
 pub mod counters;
+pub mod d3;
 pub mod figures;
 pub mod geom;
 pub mod grid;

@@ -475,7 +475,11 @@ fn parse_vec2(s: &str) -> Result<Vec2, String> {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // `scene gen --dim 3` runs in the 3D module (SCENES3D.md); everything else is parsed here.
+    let cli = match shelling::d3::cli::intercept() {
+        Ok(args) => Cli::parse_from(args),
+        Err(code) => return code,
+    };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         // The reader of standard output went away (`shelling ... | head`): stop quietly.

@@ -8,6 +8,7 @@ mod hardware;
 mod limits;
 mod radiosity;
 mod replay;
+mod scene3d;
 mod scene_loader;
 mod support;
 mod tracers;

@@ -1,0 +1,28 @@
+//! Shelling in 3D, parts 1 and 2 of issue 18: scenes of convex planar polygons and the
+//! hemisphere ray sets shot from a point on them.
+//!
+//! Everything else in the crate is 2D (segments in the plane); this module tree is its 3D
+//! counterpart, built with `glam`'s [`DVec3`](glam::DVec3):
+//!
+//! * [`scene`]: the types ([`Scene3`], [`Polygon`], [`Material3`]), the rules of a valid polygon
+//!   (convex, planar, non-degenerate, finite, within [`COORD_LIMIT`]) and the errors
+//!   ([`Scene3Error`], [`PolygonProblem`]).
+//! * [`obj`]: the Wavefront OBJ + MTL loader (through the `tobj` crate, faces kept as polygons)
+//!   and the writer, so that generated scenes round-trip.
+//! * [`gen`]: the seeded generator of the paper's workload lifted to 3D (random squares) and the
+//!   closed box room shipped as `scenes/box_room.obj`.
+//! * [`hemisphere`]: the ray sets over a point with a unit normal, stratified in Def. 2.5's
+//!   angles (Θ, Φ), with solid-angle form-factor weights or the cosine-weighted (Nusselt) set.
+//! * [`brute`]: the brute-force ray–convex-polygon intersection, the 3D oracle.
+//! * [`cli`]: `shelling scene gen --dim 3`.
+//!
+//! Conventions, the errors and the shipped scenes are documented in `SCENES3D.md`.
+
+pub mod brute;
+pub mod cli;
+pub mod gen;
+pub mod hemisphere;
+pub mod obj;
+pub mod scene;
+
+pub use scene::{Material3, Polygon, PolygonProblem, Scene3, Scene3Error, COORD_LIMIT};
