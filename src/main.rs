@@ -110,6 +110,13 @@ enum SceneKind {
 
 #[derive(Args)]
 struct GenArgs {
+    /// The dimension: 2 (a JSON scene of segments) or 3 (an OBJ scene of polygons, SCENES3D.md:
+    /// --count random squares of side --size in [0, 1024)³; needs --out).
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3))]
+    dim: u8,
+    /// 3D: side of every square patch, greater than 0 and less than 1024/√3 (default 32).
+    #[arg(long, allow_negative_numbers = true)]
+    size: Option<f64>,
     /// What to generate.
     #[arg(long, value_enum, default_value_t = SceneKind::Paper)]
     kind: SceneKind,
@@ -165,6 +172,9 @@ impl GenArgs {
             ("--reflectance", self.reflectance.is_some()),
         ];
         let paper_given = [("--count", self.count.is_some()), ("--length", self.length.is_some())];
+        if self.size.is_some() && self.dim == 2 {
+            bail!("--size belongs to --dim 3 (in 2D, --length gives the segments' length)");
+        }
         let (other, kind) = match self.kind {
             SceneKind::Paper => (&room_given[..], "room"),
             SceneKind::Room => (&paper_given[..], "paper"),
@@ -475,11 +485,7 @@ fn parse_vec2(s: &str) -> Result<Vec2, String> {
 }
 
 fn main() -> ExitCode {
-    // `scene gen --dim 3` runs in the 3D module (SCENES3D.md); everything else is parsed here.
-    let cli = match shelling::d3::cli::intercept() {
-        Ok(args) => Cli::parse_from(args),
-        Err(code) => return code,
-    };
+    let cli = Cli::parse();
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         // The reader of standard output went away (`shelling ... | head`): stop quietly.
@@ -568,6 +574,9 @@ fn export_verilog(dir: &Path) -> Result<Vec<PathBuf>> {
 
 /// `scene gen`: the scene, written to `out` (whole or not at all) or standard output.
 fn scene_gen(a: GenArgs) -> Result<()> {
+    if a.dim == 3 {
+        return scene_gen_3d(&a);
+    }
     let spinner = indicatif::ProgressBar::new_spinner();
     spinner.set_message("generating the scene");
     spinner.enable_steady_tick(std::time::Duration::from_millis(200));
@@ -589,6 +598,41 @@ fn scene_gen(a: GenArgs) -> Result<()> {
             out.flush()?;
         }
     }
+    Ok(())
+}
+
+/// `scene gen --dim 3`: the 3D workload as OBJ and MTL (SCENES3D.md).
+fn scene_gen_3d(a: &GenArgs) -> Result<()> {
+    let room = [
+        ("--kind room", a.kind == SceneKind::Room),
+        ("--length", a.length.is_some()),
+        ("--width", a.width.is_some()),
+        ("--height", a.height.is_some()),
+        ("--patch-length", a.patch_length.is_some()),
+        ("--boxes", a.boxes.is_some()),
+        ("--box-size", a.box_size.is_some()),
+        ("--lights", a.lights.is_some()),
+        ("--emission", a.emission.is_some()),
+        ("--reflectance", a.reflectance.is_some()),
+    ];
+    if let Some((option, _)) = room.iter().find(|(_, given)| *given) {
+        bail!("{option} belongs to 2D scenes: --dim 3 takes --count, --size, --seed and --out");
+    }
+    let Some(out) = &a.out else { bail!("--dim 3 needs --out FILE.obj (the MTL file is written beside it)") };
+    let (count, size) = (a.count.unwrap_or(1000), a.size.unwrap_or(32.0));
+    check_range("--count", count, 1, limits::MAX_COUNT).map_err(anyhow::Error::msg)?;
+    let limit = shelling::d3::gen::WORLD / 3f64.sqrt();
+    if !(size.is_finite() && size > 0.0 && size < limit) {
+        bail!("--size must be greater than 0 and less than {limit:.3} (1024/√3), got {size}");
+    }
+    let scene = shelling::d3::gen::generate(count, size, a.seed)?;
+    let comment = format!(
+        "shelling scene gen --dim 3 --count {count} --size {size} --seed {}\n{count} squares of side {size} \
+         in [0, {})^3, counter-clockwise seen from the front (SCENES3D.md)",
+        a.seed,
+        shelling::d3::gen::WORLD
+    );
+    shelling::d3::obj::save(&scene, out, &comment)?;
     Ok(())
 }
 

@@ -412,16 +412,34 @@ fn scene_gen_dim_3_writes_obj_and_mtl_and_dim_2_is_the_2d_generator() {
     assert_eq!(obj::load(&out).unwrap(), gen::generate(50, 20.0, 3).unwrap());
     let o = run(&["scene", "gen", "--dim", "3", "--count", "0", "--out", out.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(2));
-    assert_eq!(
-        String::from_utf8_lossy(&o.stderr),
-        "error: generator: the number of patches must be 1 to 1048576, got 0\n"
-    );
-    let o = run(&["scene", "gen", "--dim", "3", "--help"]);
+    assert_eq!(String::from_utf8_lossy(&o.stderr), "error: --count must be between 1 and 1048576, got 0\n");
+    let o = run(&["scene", "gen", "--help"]);
     assert!(o.status.success());
-    assert!(String::from_utf8_lossy(&o.stdout)
-        .contains("Usage: shelling scene gen [OPTIONS] --dim <DIM> --out <OUT>"));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("--dim <DIM>"));
     let o = run(&["scene", "gen", "--dim", "4"]);
-    assert_eq!(String::from_utf8_lossy(&o.stderr), "error: --dim must be 2 or 3, got \"4\"\n");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--dim"), "{}", String::from_utf8_lossy(&o.stderr));
+    for (args, says) in [
+        (&["scene", "gen", "--dim", "3"][..], "--dim 3 needs --out"),
+        (&["scene", "gen", "--dim", "3", "--length", "3", "--out", "x.obj"][..], "--length belongs to 2D"),
+        (
+            &["scene", "gen", "--dim", "3", "--kind", "room", "--out", "x.obj"][..],
+            "--kind room belongs to 2D",
+        ),
+        (&["scene", "gen", "--size", "3"][..], "--size belongs to --dim 3"),
+        (
+            &["scene", "gen", "--dim", "3", "--size", "700", "--out", "x.obj"][..],
+            "--size must be greater than 0",
+        ),
+    ] {
+        let o = run(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(
+            String::from_utf8_lossy(&o.stderr).contains(says),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
     let o = run(&["scene", "gen", "--dim=2", "--count", "3"]);
     assert!(o.status.success());
     assert!(String::from_utf8_lossy(&o.stdout).contains("\"segments\""));

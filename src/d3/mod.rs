@@ -19,7 +19,6 @@
 //! Conventions, the errors and the shipped scenes are documented in `SCENES3D.md`.
 
 pub mod brute;
-pub mod cli;
 pub mod gen;
 pub mod hemisphere;
 pub mod obj;
