@@ -43,11 +43,7 @@ pub struct SceneId {
 
 impl SceneId {
     pub fn of(scene: &Scene) -> SceneId {
-        // FNV-1a, 64 bits: stable across platforms and releases, unlike `DefaultHasher`.
-        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-        for byte in scene.to_json().bytes() {
-            h = (h ^ byte as u64).wrapping_mul(0x0000_0100_0000_01b3);
-        }
+        let h = shelling_testbench::export::fnv1a64(scene.to_json().bytes());
         SceneId { patches: scene.len(), hash: format!("{h:016x}") }
     }
 }

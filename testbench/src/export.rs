@@ -52,6 +52,34 @@ pub fn verilog() -> Result<Vec<(String, String)>> {
         .collect()
 }
 
+/// FNV-1a, 64 bits, of `bytes`: a hash stable across platforms and releases (unlike the
+/// standard library's hashers), for naming what a result was computed from.
+pub fn fnv1a64(bytes: impl IntoIterator<Item = u8>) -> u64 {
+    bytes.into_iter().fold(0xcbf2_9ce4_8422_2325, |h, b| (h ^ b as u64).wrapping_mul(0x0000_0100_0000_01b3))
+}
+
+/// The hash of an export, `(file name, Verilog)` as [`verilog`] gives it: [`fnv1a64`] of every
+/// file's name and text in order, each followed by a NUL byte, as 16 hex digits. An FPGA result
+/// records it, so that a test can tell whether the committed Verilog is still what was measured.
+pub fn hash(files: &[(String, String)]) -> String {
+    let bytes = files.iter().flat_map(|(n, t)| n.bytes().chain([0]).chain(t.bytes()).chain([0]));
+    format!("{:016x}", fnv1a64(bytes))
+}
+
+/// The files of an export in `dir` (as [`write`] leaves them), in the order of its file list.
+pub fn read(dir: &Path) -> Result<Vec<(String, String)>> {
+    let io = |e: std::io::Error, p: &Path| Error::new(format!("reading {}: {e}", p.display()));
+    let list = dir.join(FILE_LIST);
+    let names = std::fs::read_to_string(&list).map_err(|e| io(e, &list))?;
+    names
+        .lines()
+        .map(|n| {
+            let p = dir.join(n);
+            Ok((n.to_string(), std::fs::read_to_string(&p).map_err(|e| io(e, &p))?))
+        })
+        .collect()
+}
+
 /// Writes every block and the file list into `dir` (created if missing); returns the paths.
 pub fn write(dir: &Path) -> Result<Vec<PathBuf>> {
     let io = |e: std::io::Error, p: &Path| Error::new(format!("writing {}: {e}", p.display()));

@@ -241,6 +241,9 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     }
     let written = shelling_testbench::export::write(&out.join("verilog"))
         .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
+    let verilog_hash = shelling_testbench::export::verilog()
+        .map(|files| shelling_testbench::export::hash(&files))
+        .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
     eprintln!("exported {} files into {}", written.len(), out.join("verilog").display());
 
     let mut seeds = args.seeds.clone();
@@ -261,9 +264,10 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     let json = serde_json::to_string_pretty(&rows)? + "\n";
     std::fs::write(out.join("fpga.json"), json)
         .with_context(|| format!("writing {}/fpga.json", out.display()))?;
-    std::fs::write(out.join("fpga-seeds.json"), serde_json::to_string_pretty(&spreads)? + "\n")
+    let seeds_json = SeedsFile { verilog_hash: verilog_hash.clone(), blocks: spreads.clone() };
+    std::fs::write(out.join("fpga-seeds.json"), serde_json::to_string_pretty(&seeds_json)? + "\n")
         .with_context(|| format!("writing {}/fpga-seeds.json", out.display()))?;
-    let md = markdown(&rows, &spreads, &ctx);
+    let md = markdown(&rows, &spreads, &ctx, &verilog_hash);
     std::fs::write(out.join("fpga.md"), &md).with_context(|| format!("writing {}/fpga.md", out.display()))?;
     println!("{md}");
     println!(
@@ -592,6 +596,13 @@ pub struct Spread {
     pub max_mhz: Option<f64>,
 }
 
+/// `fpga-seeds.json`: the hash of the Verilog measured and every block's spread.
+#[derive(Serialize, Debug)]
+pub struct SeedsFile {
+    pub verilog_hash: String,
+    pub blocks: Vec<Spread>,
+}
+
 /// The spread of every (block, family) over its rows' seeds, in the rows' order.
 fn spreads(rows: &[Row]) -> Vec<Spread> {
     let mut out: Vec<Spread> = Vec::new();
@@ -630,8 +641,12 @@ fn cell(v: Option<u64>) -> String {
 }
 
 /// The Markdown of `fpga.md`: the table, the tools, the critical paths and the run times.
-fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow) -> String {
+fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) -> String {
     let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "Measured on the exported Verilog of hash `{verilog_hash}` (`shelling_testbench::export::hash`).\n"
+    );
     let mhz = |v: Option<f64>| v.map(|v| format!("{v:.1}")).unwrap_or_else(|| "–".into());
     let seeds = ctx.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
