@@ -159,9 +159,9 @@ struct GenArgs {
 }
 
 impl GenArgs {
-    /// The scene asked for; an option of the other kind is an error, not silently ignored.
-    fn generate(&self) -> Result<Scene> {
-        let room_given = [
+    /// The options of `--kind room`, each with whether it was given.
+    fn room_options(&self) -> [(&'static str, bool); 8] {
+        [
             ("--width", self.width.is_some()),
             ("--height", self.height.is_some()),
             ("--patch-length", self.patch_length.is_some()),
@@ -170,7 +170,12 @@ impl GenArgs {
             ("--lights", self.lights.is_some()),
             ("--emission", self.emission.is_some()),
             ("--reflectance", self.reflectance.is_some()),
-        ];
+        ]
+    }
+
+    /// The scene asked for; an option of the other kind is an error, not silently ignored.
+    fn generate(&self) -> Result<Scene> {
+        let room_given = self.room_options();
         let paper_given = [("--count", self.count.is_some()), ("--length", self.length.is_some())];
         if self.size.is_some() && self.dim == 2 {
             bail!("--size belongs to --dim 3 (in 2D, --length gives the segments' length)");
@@ -603,19 +608,8 @@ fn scene_gen(a: GenArgs) -> Result<()> {
 
 /// `scene gen --dim 3`: the 3D workload as OBJ and MTL (SCENES3D.md).
 fn scene_gen_3d(a: &GenArgs) -> Result<()> {
-    let room = [
-        ("--kind room", a.kind == SceneKind::Room),
-        ("--length", a.length.is_some()),
-        ("--width", a.width.is_some()),
-        ("--height", a.height.is_some()),
-        ("--patch-length", a.patch_length.is_some()),
-        ("--boxes", a.boxes.is_some()),
-        ("--box-size", a.box_size.is_some()),
-        ("--lights", a.lights.is_some()),
-        ("--emission", a.emission.is_some()),
-        ("--reflectance", a.reflectance.is_some()),
-    ];
-    if let Some((option, _)) = room.iter().find(|(_, given)| *given) {
+    let two_d = [("--kind room", a.kind == SceneKind::Room), ("--length", a.length.is_some())];
+    if let Some((option, _)) = two_d.iter().chain(&a.room_options()).find(|(_, given)| *given) {
         bail!("{option} belongs to 2D scenes: --dim 3 takes --count, --size, --seed and --out");
     }
     let Some(out) = &a.out else { bail!("--dim 3 needs --out FILE.obj (the MTL file is written beside it)") };

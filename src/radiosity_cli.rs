@@ -8,7 +8,7 @@ use shelling::cosim::{CosimConfig, Engine};
 use shelling::limits::{self, check_range, check_range_for};
 use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
 use shelling::radiosity::matrix::{self, MatrixFile};
-use shelling::radiosity::on_pe::{self, PeTotals, PE_CLOCK_MHZ, PE_RAY_MEMORY};
+use shelling::radiosity::on_pe::{self, PeTotals, PE_RAY_MEMORY};
 use shelling::radiosity::solve::{self, Solution, Surfaces};
 use shelling::rays::{RaySet, MAX_BUNDLE_RAYS};
 use shelling::run::GriddedScene;
@@ -278,9 +278,9 @@ pub struct RadiosityArgs {
     /// With --on-pe: the PE's simulator (auto: Verilator where installed).
     #[arg(long, value_enum, default_value_t = Engine::Auto, requires = "on_pe")]
     engine: Engine,
-    /// With --on-pe: the clock rate of the solve's time, in MHz (default: the PE's post-route
-    /// rate on ECP5 in PERFORMANCE.md).
-    #[arg(long, default_value_t = PE_CLOCK_MHZ, requires = "on_pe")]
+    /// With --on-pe: the clock rate of the solve's time, in MHz (default: the PE's median
+    /// post-route rate on ECP5 over the placement seeds of hdl/fpga/ecp5.md).
+    #[arg(long, default_value_t = on_pe::pe_clock_mhz(), requires = "on_pe")]
     clock_mhz: f64,
     /// Print the solution as JSON.
     #[arg(long)]

@@ -87,6 +87,28 @@ fn committed_verilog_is_current() {
     }
 }
 
+/// The committed post-route results (`hdl/fpga/`, from `cargo xtask fpga --seeds ...`) name the
+/// hash of the Verilog they were measured on: it must be the committed Verilog's, which
+/// [`committed_verilog_is_current`] checks against the RTL. Any RTL change fails this test until
+/// the flow is run again, so no clock rate in the documents outlives the design it was measured on.
+#[test]
+fn committed_fpga_results_are_of_the_committed_verilog() {
+    let results = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("hdl/fpga/ecp5-seeds.json");
+    let text = std::fs::read_to_string(&results).expect("hdl/fpga/ecp5-seeds.json is committed");
+    let json: serde_json::Value = serde_json::from_str(&text).expect("hdl/fpga/ecp5-seeds.json is JSON");
+    let measured = json["verilog_hash"].as_str().expect("the results name their Verilog's hash");
+    let files = shelling_testbench::export::read(&verilog_dir()).expect("hdl/verilog reads");
+    assert_eq!(
+        measured,
+        shelling_testbench::export::hash(&files),
+        "hdl/fpga/ is stale: the Verilog changed since it was measured. Run `cargo xtask fpga --out out/fpga \
+         --families ecp5 --blocks processing_element,screener,intersection_unit,patch_cache --seeds 1,2,3,4,5` \
+         and copy out/fpga/fpga.md to hdl/fpga/ecp5.md and out/fpga/fpga-seeds.json to hdl/fpga/ecp5-seeds.json"
+    );
+    let blocks = json["blocks"].as_array().expect("the results list blocks");
+    assert!(blocks.iter().any(|b| b["block"] == "processing_element" && b["median_mhz"].is_f64()));
+}
+
 /// Runs Yosys' ECP5 synthesis on one exported block, as the FPGA flow does (`SHELLING_ECP5`
 /// defined: the `BramOut` leaves are hand-instantiated `DP16KD`s); returns its statistics.
 fn synth_ecp5(name: &str) -> String {

@@ -17,9 +17,21 @@ use crate::trace::{Method, TraceError};
 /// The most rays of one bundle on the PE (its ray memory): the default rays of a solve on it.
 pub use shelling_testbench::pe::PE_RAY_MEMORY;
 
-/// The post-route clock rate assumed for the solve's time unless another is given: the PE on
-/// ECP5 LFE5U-85F-6 at placement seed 1, as measured in PERFORMANCE.md (one seed only).
-pub const PE_CLOCK_MHZ: f64 = 142.2;
+/// The committed post-route results of the FPGA flow (`cargo xtask fpga --seeds ...`), embedded
+/// at build time; `tests/hardware.rs` fails when they are not of the committed Verilog.
+const FPGA_RESULTS: &str = include_str!("../../hdl/fpga/ecp5-seeds.json");
+
+/// The post-route clock rate assumed for the solve's time unless another is given: the median
+/// over the placement seeds of the PE on ECP5 LFE5U-85F-6 in `hdl/fpga/ecp5-seeds.json`.
+pub fn pe_clock_mhz() -> f64 {
+    let json: serde_json::Value =
+        serde_json::from_str(FPGA_RESULTS).expect("hdl/fpga/ecp5-seeds.json is JSON");
+    json["blocks"]
+        .as_array()
+        .and_then(|b| b.iter().find(|b| b["block"] == "processing_element" && b["family"] == "ecp5"))
+        .and_then(|b| b["median_mhz"].as_f64())
+        .expect("hdl/fpga/ecp5-seeds.json holds the PE's median fmax on ECP5")
+}
 
 /// The hardware's side of a solve: the sums over every bundle co-simulated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
@@ -141,9 +153,10 @@ pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<S
     let scene = room(&RoomSpec::default()).expect("the default room is valid");
     let prepared = GriddedScene::new(scene, GridParams::default());
     let base = FfParams { rays: PE_RAY_MEMORY, arith: crate::arith::Arith::Fixed, ..FfParams::default() };
+    let clock = pe_clock_mhz();
     let mut out = format!(
         "Default room ({} patches), full matrix: {} origins × {} {} rays per patch ({} bundles), T_c = {tc}, \
-         patch cache of {cache} lines, {} simulation; time at {PE_CLOCK_MHZ} MHz.\n\n",
+         patch cache of {cache} lines, {} simulation; time at {clock} MHz (the PE's median post-route rate).\n\n",
         prepared.scene.len(),
         base.origins,
         base.rays,
@@ -169,7 +182,7 @@ pub fn whole_solve_table(engine: cosim::Engine, tc: u32, cache: u32) -> Result<S
                 t.patch_loads,
                 t.cache_hits,
                 t.intersection_busy_cycles as f64 / t.cycles as f64,
-                t.cycles as f64 / (PE_CLOCK_MHZ * 1e3),
+                t.cycles as f64 / (clock * 1e3),
                 base_cycles as f64 / t.cycles as f64,
                 t.golden_agree as f64 / t.rays as f64,
             );
