@@ -20,6 +20,7 @@
 
 pub mod brute;
 pub mod gen;
+pub mod grid;
 pub mod hemisphere;
 pub mod obj;
 pub mod scene;
