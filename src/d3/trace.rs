@@ -1,0 +1,288 @@
+//! The 3D tracers: every ray of a bundle's nearest hit, and the paper's counters (the 2D
+//! [`Counters`], same names and meanings).
+//!
+//! * [`brute`]: every ray against every polygon that passes the screener; the oracle.
+//! * [`conventional`]: ray by ray through the [`Grid3`] (empty space by macro-region jumps);
+//!   every polygon registered in every non-empty cell the ray enters is loaded for that ray and,
+//!   if it passes the screener, tested.
+//!
+//! # The hit definition
+//!
+//! A bundle ([`Bundle3`]) is a source point `O` with a unit normal `n_s` (a point on a patch and
+//! the patch's normal), optionally the index of the source's own patch, and ray directions (a
+//! [`HemisphereRays`] set, or any directions). Ray `i` hits polygon `P` when `P` passes the
+//! screener for the source and [`super::brute::intersect`] hits it; its nearest hit is the hit of
+//! smallest `t`, of equal `t` the polygon of lowest index (as [`super::brute::nearest`]).
+//!
+//! **Backface screening**, per polygon and source, before any test, as in 2D
+//! (`crate::trace::screen`): `P` is screened out when it is
+//!
+//! * the source's own patch ([`Screen3::Source`]);
+//! * *backward*: wholly behind the source's plane, every vertex `v` with `(v − O) · n_s ≤ 0`
+//!   (Def. 2.2; [`Screen3::Backward`]);
+//! * *back-facing*: the source lies behind `P`'s plane or on it, `(O − O_P) · n_P ≤ 0` with
+//!   `O_P` its centre (the plane the hit rule intersects), so every ray would meet it from behind
+//!   ([`Screen3::BackFacing`]).
+//!
+//! So every hit the tracers report is on a polygon's front side ([`Hit::front`] is true). Both
+//! tracers screen by the same function and test by the same function, so they agree ray for ray
+//! (rung 1).
+//!
+//! # Counters
+//!
+//! * `patches_read_before_screening`: brute `R·N`; conventional, the distinct polygons of the
+//!   non-empty cells a ray enters, per ray (a per-ray mailbox loads a polygon listed in several
+//!   cells once per ray).
+//! * `patches_read_after_screening`: the loaded polygons that pass the screener; each is tested,
+//!   so `intersection_computations` is the same number.
+//! * `cells_traversed`: walk steps (a macro-region jump counts once); 0 for brute.
+//! * `actual_intersections`: the rays that hit something.
+//! * `adlc_true` = `adlc_estimated`: Def. 2.10 over the nearest hits, the rays that hit over the
+//!   distinct polygons they hit (0 when nothing is hit); neither tracer tracks anything.
+//!
+//! # Stopping
+//!
+//! The conventional walk stops after the first cell (or region) whose exit distance exceeds the
+//! nearest hit found so far by more than the stopping margin, [`Grid3::stop_margin`] divided by
+//! the ray direction's length (`4·eps` in world units, `eps` the registration margin). A hit's
+//! point and a cell's exit are each rounded by far less than `eps`, so every polygon whose hit
+//! could be nearer than or tie with the best so far lies in a cell already visited, and exact
+//! ties across a cell boundary are still resolved by index.
+
+use super::brute::{intersect, Hit};
+use super::grid::Grid3;
+use super::hemisphere::HemisphereRays;
+use super::scene::{Polygon, Scene3};
+use crate::counters::Counters;
+use glam::DVec3;
+
+/// The source of a bundle: a point with a unit normal, and the patch it lies on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Source3 {
+    pub origin: DVec3,
+    /// The unit normal of the source's hemisphere.
+    pub normal: DVec3,
+    /// The source's own patch, never hit.
+    pub patch: Option<usize>,
+}
+
+/// A bundle of rays from one source.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bundle3 {
+    pub source: Source3,
+    /// The ray directions (need not be unit; `t` is in units of each direction's length).
+    pub directions: Vec<DVec3>,
+}
+
+impl Bundle3 {
+    /// The bundle of a hemisphere ray set leaving from patch `patch`.
+    pub fn from_hemisphere(rays: &HemisphereRays, patch: Option<usize>) -> Bundle3 {
+        Bundle3 {
+            source: Source3 { origin: rays.origin, normal: rays.normal, patch },
+            directions: rays.rays.iter().map(|r| r.direction).collect(),
+        }
+    }
+
+    /// The number of rays.
+    pub fn len(&self) -> usize {
+        self.directions.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.directions.is_empty()
+    }
+}
+
+/// The screener's verdict on a polygon for a source (module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Screen3 {
+    /// May be hit by the source's rays.
+    Pass,
+    /// Wholly behind the source's plane.
+    Backward,
+    /// The source lies behind the polygon's plane or on it.
+    BackFacing,
+    /// The source's own patch.
+    Source,
+}
+
+/// Screens polygon `k` for `source` (module docs).
+pub fn screen(source: &Source3, k: usize, polygon: &Polygon) -> Screen3 {
+    if source.patch == Some(k) {
+        Screen3::Source
+    } else if polygon.vertices.iter().all(|v| (*v - source.origin).dot(source.normal) <= 0.0) {
+        Screen3::Backward
+    } else if (source.origin - polygon.centre).dot(polygon.normal) <= 0.0 {
+        Screen3::BackFacing
+    } else {
+        Screen3::Pass
+    }
+}
+
+/// A 3D tracing technique.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Method3 {
+    Brute,
+    Conventional,
+}
+
+/// What a tracer returns.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Trace3 {
+    /// The nearest hit of each ray, by ray index.
+    pub hits: Vec<Option<Hit>>,
+    pub counters: Counters,
+}
+
+/// Offers hit `(k, t)` to `best`: nearer wins, of equal `t` the lower index.
+#[inline]
+fn offer(best: &mut Option<Hit>, k: usize, t: f64, front: bool) {
+    if best.is_none_or(|b| t < b.t || (t == b.t && k < b.polygon)) {
+        *best = Some(Hit { polygon: k, t, front });
+    }
+}
+
+/// Fills in the counters every tracer shares: actual intersections and the ADLC.
+fn finish(hits: Vec<Option<Hit>>, mut counters: Counters) -> Trace3 {
+    let mut ids: Vec<usize> = hits.iter().flatten().map(|h| h.polygon).collect();
+    let total = ids.len();
+    ids.sort_unstable();
+    ids.dedup();
+    counters.actual_intersections = total as u64;
+    counters.adlc_true = if total == 0 { 0.0 } else { total as f64 / ids.len() as f64 };
+    counters.adlc_estimated = counters.adlc_true;
+    Trace3 { hits, counters }
+}
+
+/// Every ray against every polygon that passes the screener: the oracle.
+pub fn brute(scene: &Scene3, bundle: &Bundle3) -> Trace3 {
+    let passing: Vec<usize> = (0..scene.polygons.len())
+        .filter(|&k| screen(&bundle.source, k, &scene.polygons[k]) == Screen3::Pass)
+        .collect();
+    let r = bundle.len() as u64;
+    let mut c = Counters {
+        patches_read_before_screening: r * scene.polygons.len() as u64,
+        patches_read_after_screening: r * passing.len() as u64,
+        ..Counters::default()
+    };
+    c.intersection_computations = c.patches_read_after_screening;
+    let o = bundle.source.origin;
+    let hits = bundle
+        .directions
+        .iter()
+        .map(|&d| {
+            let mut best = None;
+            for &k in &passing {
+                let p = &scene.polygons[k];
+                if let Some(t) = intersect(o, d, p) {
+                    offer(&mut best, k, t, d.dot(p.normal) < 0.0);
+                }
+            }
+            best
+        })
+        .collect();
+    finish(hits, c)
+}
+
+/// Ray by ray through `grid` (built over `scene`), see the module docs.
+pub fn conventional(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
+    let n = scene.polygons.len();
+    // Screening verdicts, computed on a polygon's first load for this source.
+    let mut verdict: Vec<Option<Screen3>> = vec![None; n];
+    // The per-ray mailbox: the ray that last loaded each polygon, plus one.
+    let mut stamp = vec![0usize; n];
+    let mut c = Counters::default();
+    let o = bundle.source.origin;
+    let mut hits = Vec::with_capacity(bundle.len());
+    for (r, &d) in bundle.directions.iter().enumerate() {
+        let margin = grid.stop_margin() / d.length();
+        let mut best: Option<Hit> = None;
+        grid.walk(o, d, |step| {
+            c.cells_traversed += 1;
+            if step.region.is_none() {
+                for &k in grid.cell_items(step.cell) {
+                    let k = k as usize;
+                    if stamp[k] == r + 1 {
+                        continue;
+                    }
+                    stamp[k] = r + 1;
+                    c.patches_read_before_screening += 1;
+                    let p = &scene.polygons[k];
+                    let v = *verdict[k].get_or_insert_with(|| screen(&bundle.source, k, p));
+                    if v != Screen3::Pass {
+                        continue;
+                    }
+                    c.patches_read_after_screening += 1;
+                    c.intersection_computations += 1;
+                    if let Some(t) = intersect(o, d, p) {
+                        offer(&mut best, k, t, d.dot(p.normal) < 0.0);
+                    }
+                }
+            }
+            // Continue while a polygon beyond this cell could still be nearer (or tie).
+            !matches!(best, Some(b) if b.t < step.t_exit - margin)
+        });
+        hits.push(best);
+    }
+    finish(hits, c)
+}
+
+/// The trace of `bundle` by `method` (`grid` is used by the conventional technique only).
+pub fn trace(method: Method3, scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
+    match method {
+        Method3::Brute => brute(scene, bundle),
+        Method3::Conventional => conventional(scene, grid, bundle),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::d3::gen::box_room;
+    use crate::d3::grid::Grid3Params;
+    use crate::d3::hemisphere::Strata;
+
+    #[test]
+    fn the_box_room_from_the_floor_hits_everywhere_and_both_tracers_agree() {
+        let scene = box_room();
+        let grid = Grid3::build(&scene, Grid3Params::default()).unwrap();
+        // Patch 4 is the floor's middle square (normal +y).
+        let p = &scene.polygons[4];
+        let rays = HemisphereRays::new(p.centre, p.normal, 16, 8, Strata::Cosine).unwrap();
+        let bundle = Bundle3::from_hemisphere(&rays, Some(4));
+        let b = brute(&scene, &bundle);
+        let c = conventional(&scene, &grid, &bundle);
+        assert_eq!(b.hits, c.hits);
+        assert!(b.hits.iter().all(|h| h.is_some_and(|h| h.front && h.polygon != 4)));
+        assert_eq!(b.counters.actual_intersections, 128);
+        assert_eq!(c.counters.actual_intersections, 128);
+        // The floor's squares are backward (in the source's plane): screened out.
+        assert_eq!(b.counters.patches_read_after_screening, 128 * (54 - 9));
+        assert!(c.counters.intersection_computations < b.counters.intersection_computations);
+        assert!(c.counters.cells_traversed > 0 && b.counters.cells_traversed == 0);
+        assert!(b.counters.adlc_true > 1.0 && b.counters.adlc_true == c.counters.adlc_true);
+    }
+
+    #[test]
+    fn screening_rules() {
+        let sq = |z: f64, flip: bool| {
+            let mut v = vec![
+                DVec3::new(0.0, 0.0, z),
+                DVec3::new(1.0, 0.0, z),
+                DVec3::new(1.0, 1.0, z),
+                DVec3::new(0.0, 1.0, z),
+            ];
+            if flip {
+                v.reverse();
+            }
+            Polygon::new(v).unwrap()
+        };
+        let s = Source3 { origin: DVec3::new(0.5, 0.5, 0.0), normal: DVec3::Z, patch: Some(7) };
+        // Facing down (-z), above the source: passes.
+        assert_eq!(screen(&s, 0, &sq(1.0, true)), Screen3::Pass);
+        assert_eq!(screen(&s, 0, &sq(1.0, false)), Screen3::BackFacing);
+        assert_eq!(screen(&s, 0, &sq(-1.0, false)), Screen3::Backward);
+        assert_eq!(screen(&s, 0, &sq(0.0, true)), Screen3::Backward);
+        assert_eq!(screen(&s, 7, &sq(1.0, true)), Screen3::Source);
+    }
+}
