@@ -4,6 +4,7 @@
 mod cli;
 mod cosim;
 mod figures;
+mod grid3d;
 mod hardware;
 mod limits;
 mod radiosity;
