@@ -308,3 +308,141 @@ fn polygons_through_the_sources_plane_agree() {
         }
     }
 }
+
+/// The side of the framed world of the targeted tests below.
+const FRAMED: f64 = 1000.0;
+
+/// Two tiny triangles at the corners `0` and `FRAMED·(1, 1, 1)`: they fix the bounds, so that
+/// with an explicit resolution the grid's cell planes are known before the polygons under test
+/// are placed (inside the world, they do not change the layout).
+fn frame_polygons() -> Vec<Polygon> {
+    let tri = |c: DVec3, s: f64| Polygon::new(vec![c, c + DVec3::X * s, c + DVec3::Y * s]).unwrap();
+    vec![tri(DVec3::ZERO, 1.0), tri(DVec3::splat(FRAMED), -1.0)]
+}
+
+fn framed_params() -> Grid3Params {
+    Grid3Params { cells_per_polygon: 1.0, cells_per_axis: Some(10) }
+}
+
+/// The grid of the frame alone.
+fn frame_grid() -> Grid3 {
+    let scene = Scene3 { polygons: frame_polygons(), materials: vec![] };
+    Grid3::build(&scene, framed_params()).unwrap()
+}
+
+/// `polygons` (indices from 0) plus the frame, and its grid, checked to have `layout`'s cells.
+fn framed(polygons: Vec<Polygon>, layout: &Grid3) -> (Scene3, Grid3) {
+    let mut polygons = polygons;
+    polygons.extend(frame_polygons());
+    let scene = Scene3 { polygons, materials: vec![] };
+    let grid = Grid3::build(&scene, framed_params()).unwrap();
+    assert_eq!((grid.origin, grid.cell_size, grid.n), (layout.origin, layout.cell_size, layout.n));
+    (scene, grid)
+}
+
+/// A square of side `side` centred at `c` in the plane spanned by unit `u`, `v`, facing `u × v`.
+fn square(c: DVec3, u: DVec3, v: DVec3, side: f64) -> Polygon {
+    let h = side / 2.0;
+    Polygon::new(vec![c - u * h - v * h, c + u * h - v * h, c + u * h + v * h, c - u * h + v * h]).unwrap()
+}
+
+#[test]
+fn a_hit_just_beyond_a_cells_exit_does_not_stop_the_walk_before_a_nearer_polygon() {
+    // The ray runs along +x through cell column (·, 5, 5) and crosses the cell plane x = X.
+    // Polygon 1 (oblique) reaches back into cell 4 and is hit 3·eps beyond X; polygon 0 lies
+    // wholly in cell 5, 2·eps beyond X, so it is nearer. Only a walk that keeps going past a hit
+    // within the stopping margin of the exit finds polygon 0.
+    let g = frame_grid();
+    let (s, eps) = (g.cell_size, g.eps);
+    let x = g.origin.x + 5.0 * s;
+    let (y, z) = (g.origin.y + 5.5 * s, g.origin.z + 5.5 * s);
+    let near = square(DVec3::new(x + 2.0 * eps, y, z), DVec3::Z, DVec3::Y, 0.2 * s); // faces −x
+    let tilt = DVec3::new(1.0, -1.0, 0.0).normalize();
+    let far = square(DVec3::new(x + 3.0 * eps, y, z), DVec3::Z, tilt, 0.4 * s); // faces (−1, −1, 0)/√2
+    let (scene, grid) = framed(vec![near, far], &g);
+    assert!(
+        grid.cell_items(grid.index([4, 5, 5])).contains(&1)
+            && !grid.cell_items(grid.index([4, 5, 5])).contains(&0)
+    );
+    let o = DVec3::new(g.origin.x + 4.5 * s, y, z);
+    let bundle = Bundle3 {
+        source: Source3 { origin: o, normal: DVec3::X, patch: None },
+        directions: vec![DVec3::X, DVec3::new(1.0, 1e-9, -1e-9)],
+    };
+    let b = agree("stopping margin", &scene, &grid, &bundle);
+    assert!(b.hits.iter().all(|h| h.is_some_and(|h| h.polygon == 0)), "{:?}", b.hits);
+}
+
+#[test]
+fn hits_in_the_margin_beyond_a_sharp_vertex_are_found_in_the_next_cell() {
+    // A sliver triangle (apex angle 1e-6) whose apex lies just inside cell 4 of the x axis; the
+    // hit rule's inside margin (1e-9 of its size from each edge line) reaches about 0.03 beyond
+    // the apex, across the cell plane x = X. A ray through that reach, in cell 5, must find it.
+    let g = frame_grid();
+    let s = g.cell_size;
+    let x = g.origin.x + 5.0 * s;
+    let (y, z) = (g.origin.y + 5.5 * s, g.origin.z + 5.5 * s);
+    let (len, theta) = (30.0, 1e-6);
+    let w = len * (theta / 2.0f64).tan();
+    let apex = DVec3::new(x - 0.005, y, z);
+    // Counter-clockwise seen from below: faces −z.
+    let sliver =
+        Polygon::new(vec![apex, apex + DVec3::new(-len, -w, 0.0), apex + DVec3::new(-len, w, 0.0)]).unwrap();
+    assert!(sliver.normal.z < 0.0);
+    let (scene, grid) = framed(vec![sliver], &g);
+    let mut directions = Vec::new();
+    let mut origins = Vec::new();
+    for k in 0..8 {
+        let beyond = 0.002 * (k + 1) as f64; // 0.002 to 0.016 past the cell plane
+        origins.push(DVec3::new(x + beyond, y, z - 0.5 * s));
+        directions.push(DVec3::Z);
+    }
+    let mut found = 0;
+    for (i, (&o, &d)) in origins.iter().zip(&directions).enumerate() {
+        if brute::intersect(o, d, &scene.polygons[0]).is_some() {
+            found += 1;
+        }
+        let bundle =
+            Bundle3 { source: Source3 { origin: o, normal: DVec3::Z, patch: None }, directions: vec![d] };
+        agree(&format!("sharp vertex, ray {i}"), &scene, &grid, &bundle);
+    }
+    assert!(found >= 4, "the construction must put hits beyond the cell plane ({found})");
+}
+
+#[test]
+fn an_almost_planar_polygons_hits_on_its_plane_are_found() {
+    // A twisted quad (corners ±h off its plane, within the planarity tolerance): the hit rule
+    // meets the plane through its centre, which at corner 0 lies h below the corner itself. The
+    // cell plane z = Z runs between them, and corner 0 sits 10 units inside the corner of its
+    // cell column: there the quad's vertices (and their hull) lie only above Z, while the hits
+    // lie below it. Only a registration on the hit rule's plane lists the quad there.
+    let g = frame_grid();
+    let s = g.cell_size;
+    let z = g.origin.z + 5.0 * s;
+    let side = 300.0;
+    let h = 0.4e-5 * side; // within the tolerance 1e-5 of the size (√2·side)
+    let a = side / 2.0;
+    let corner = DVec3::new(g.origin.x + 5.0 * s - 10.0, g.origin.y + 5.0 * s - 10.0, z + 0.5 * h);
+    let c = corner + DVec3::new(a, a, -h);
+    let quad = Polygon::new(vec![
+        c + DVec3::new(-a, -a, h),
+        c + DVec3::new(-a, a, -h),
+        c + DVec3::new(a, a, h),
+        c + DVec3::new(a, -a, -h),
+    ])
+    .unwrap(); // clockwise seen from above: faces −z
+    assert!(quad.normal.z < -0.999 && (quad.centre.z - (z - 0.5 * h)).abs() < 1e-9);
+    let (scene, grid) = framed(vec![quad], &g);
+    let mut rng = ChaCha8Rng::seed_from_u64(600);
+    for i in 0..64 {
+        // From below, straight up, within 10 units of corner 0 (its cell column).
+        let o = corner + DVec3::new(rng.random::<f64>() * 9.9, rng.random::<f64>() * 9.9, -10.0 - 0.5 * h);
+        let bundle = Bundle3 {
+            source: Source3 { origin: o, normal: DVec3::Z, patch: None },
+            directions: vec![DVec3::Z],
+        };
+        let b = agree(&format!("seed 600: twisted quad, ray {i}"), &scene, &grid, &bundle);
+        let hit = b.hits[0].unwrap_or_else(|| panic!("ray {i} from {o} misses the quad"));
+        assert!(o.z + hit.t < z, "ray {i}: the hit must lie below the cell plane");
+    }
+}

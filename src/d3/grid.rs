@@ -612,9 +612,11 @@ impl RegistrationPolygon {
         let m = 2.0 * EDGE_MARGIN * p.size;
         let vertices: Vec<DVec3> = (0..k)
             .map(|i| {
-                let (o0, o1) = (out[(i + k - 1) % k], out[i]);
-                let denom = (1.0 + o0.dot(o1)).max(1e-12);
-                v[i] + (o0 + o1) * (m / denom)
+                // Where the two offset edge lines meet: `2m·b / |b|²` along the bisector
+                // `b = o₀ + o₁` (`m / sin(½ interior angle)` from the vertex; no cancellation
+                // as in `1 + o₀·o₁` at a sharp vertex).
+                let b = out[(i + k - 1) % k] + out[i];
+                v[i] + b * (2.0 * m / b.length_squared().max(f64::MIN_POSITIVE))
             })
             .collect();
         let (lo, hi) = vertices.iter().fold((vertices[0], vertices[0]), |(l, h), v| (l.min(*v), h.max(*v)));
