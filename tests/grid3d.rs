@@ -358,17 +358,18 @@ fn a_hit_just_beyond_a_cells_exit_does_not_stop_the_walk_before_a_nearer_polygon
     let (y, z) = (g.origin.y + 5.5 * s, g.origin.z + 5.5 * s);
     let near = square(DVec3::new(x + 2.0 * eps, y, z), DVec3::Z, DVec3::Y, 0.2 * s); // faces −x
     let tilt = DVec3::new(1.0, -1.0, 0.0).normalize();
-    let far = square(DVec3::new(x + 3.0 * eps, y, z), DVec3::Z, tilt, 0.4 * s); // faces (−1, −1, 0)/√2
+    let far = square(DVec3::new(x + 3.0 * eps, y, z), tilt, DVec3::Z, 0.4 * s); // faces (−1, −1, 0)/√2
     let (scene, grid) = framed(vec![near, far], &g);
     assert!(
         grid.cell_items(grid.index([4, 5, 5])).contains(&1)
             && !grid.cell_items(grid.index([4, 5, 5])).contains(&0)
     );
     let o = DVec3::new(g.origin.x + 4.5 * s, y, z);
-    let bundle = Bundle3 {
-        source: Source3 { origin: o, normal: DVec3::X, patch: None },
-        directions: vec![DVec3::X, DVec3::new(1.0, 1e-9, -1e-9)],
-    };
+    let source = Source3 { origin: o, normal: DVec3::X, patch: None };
+    for k in 0..2 {
+        assert_eq!(trace::screen(&source, k, &scene.polygons[k]), trace::Screen3::Pass, "polygon {k}");
+    }
+    let bundle = Bundle3 { source, directions: vec![DVec3::X, DVec3::new(1.0, 1e-9, -1e-9)] };
     let b = agree("stopping margin", &scene, &grid, &bundle);
     assert!(b.hits.iter().all(|h| h.is_some_and(|h| h.polygon == 0)), "{:?}", b.hits);
 }
