@@ -14,7 +14,8 @@
 //! * [`hemisphere`]: the ray sets over a point with a unit normal, stratified in Def. 2.5's
 //!   angles (Θ, Φ), with solid-angle form-factor weights or the cosine-weighted (Nusselt) set.
 //! * [`brute`]: the brute-force ray–convex-polygon intersection, the 3D oracle.
-//! * [`grid`]: the uniform 3D grid with macro-regions and its 3D-DDA walk (issue 18 part 3).
+//! * [`grid`]: the uniform 3D grid with macro-regions (issue 18 part 3), and [`walk`], its 3D-DDA
+//!   traversal.
 //! * [`trace`]: the brute-force and conventional 3D tracers with backface screening and the
 //!   paper's counters (issue 18 part 4, first half).
 //! * [`cli`]: `shelling scene gen --dim 3`.
@@ -28,5 +29,6 @@ pub mod hemisphere;
 pub mod obj;
 pub mod scene;
 pub mod trace;
+pub mod walk;
 
 pub use scene::{Material3, Polygon, PolygonProblem, Scene3, Scene3Error, COORD_LIMIT};
