@@ -24,8 +24,8 @@ const MAX_STEPS: usize = 10_000_000;
 /// How each form-factor row is estimated.
 #[derive(Args, Clone)]
 pub struct FfArgs {
-    /// Rays per origin (1 to 1048576; with --on-pe at most 1024, the PE's ray memory) [default:
-    /// 2048, with --on-pe 1024].
+    /// Rays per origin, 1 to 1048576 (default 2048; with `radiosity --on-pe` at most and by
+    /// default 1024, the PE's ray memory).
     #[arg(long, allow_negative_numbers = true)]
     rays: Option<usize>,
     /// Origins per source patch, stratified along it (1 to 4096); 1 is the paper's centre.

@@ -1,5 +1,6 @@
 //! The picture of a solve (`shelling radiosity --svg FILE`): the scene with each patch coloured
-//! by its radiosity (viridis, with a colour bar), beside the convergence curve.
+//! by its radiosity (viridis, with a colour bar over the patches that do not emit; the lights, far
+//! brighter, take the top colour), beside the convergence curve.
 
 use super::solve::Solution;
 use crate::scene::Scene;
@@ -9,7 +10,12 @@ use plotters::prelude::*;
 pub fn render(scene: &Scene, solution: &Solution, title: &str, what: &str) -> Result<String, String> {
     let err = |e: &dyn std::fmt::Display| format!("drawing the radiosity picture: {e}");
     let b = &solution.radiosity;
-    let (lo, hi) = b.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
+    // The colour scale spans the patches that do not emit (the lights outshine the rest by orders
+    // of magnitude and are drawn at the top colour); a scene where everything emits uses all.
+    let lit = |i: usize| scene.material(i).emission_or_default() > 0.0;
+    let reflecting: Vec<f64> = (0..b.len()).filter(|&i| !lit(i)).map(|i| b[i]).collect();
+    let scale = if reflecting.is_empty() { b.as_slice() } else { reflecting.as_slice() };
+    let (lo, hi) = scale.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
     let hi = if hi > lo { hi } else { lo + 1.0 };
     let bounds = scene.bounds();
     let size = bounds.size();
@@ -50,7 +56,13 @@ pub fn render(scene: &Scene, solution: &Solution, title: &str, what: &str) -> Re
             .caption("B", ("sans-serif", 16))
             .build_cartesian_2d(0.0..1.0, lo..hi)
             .map_err(|e| err(&e))?;
-        bar_chart.configure_mesh().disable_mesh().disable_x_axis().draw().map_err(|e| err(&e))?;
+        bar_chart
+            .configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .label_style(("sans-serif", 12))
+            .draw()
+            .map_err(|e| err(&e))?;
         let steps = 64;
         bar_chart
             .draw_series((0..steps).map(|k| {
@@ -77,7 +89,7 @@ pub fn render(scene: &Scene, solution: &Solution, title: &str, what: &str) -> Re
             .caption("convergence", ("sans-serif", 16))
             .build_cartesian_2d(0.0..x_hi, y_lo..0.2)
             .map_err(|e| err(&e))?;
-        let y_fmt = |y: &f64| format!("1e{}", y.round());
+        let y_fmt = |y: &f64| format!("{:.0e}", 10f64.powf(*y));
         curve_chart
             .configure_mesh()
             .x_desc("step")
