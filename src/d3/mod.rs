@@ -1,5 +1,7 @@
-//! Shelling in 3D, parts 1 and 2 of issue 18: scenes of convex planar polygons and the
-//! hemisphere ray sets shot from a point on them.
+//! Shelling in 3D: scenes of convex planar polygons, the hemisphere ray sets shot from a point
+//! on them, the 3D grid with macro-regions and the brute-force and conventional tracers (the
+//! paper's two extensions, polar and sweep, are still to come). `shelling scene gen --dim 3`
+//! (in `main.rs`) writes the 3D workload.
 //!
 //! Everything else in the crate is 2D (segments in the plane); this module tree is its 3D
 //! counterpart, built with `glam`'s [`DVec3`](glam::DVec3):
@@ -18,7 +20,6 @@
 //!   traversal.
 //! * [`trace`]: the brute-force and conventional 3D tracers with backface screening and the
 //!   paper's counters (issue 18 part 4, first half).
-//! * [`cli`]: `shelling scene gen --dim 3`.
 //!
 //! Conventions, the errors and the shipped scenes are documented in `SCENES3D.md`.
 
