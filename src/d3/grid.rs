@@ -63,8 +63,9 @@ pub const MAX_REGISTRATION_COLUMNS: u64 = 1 << 27;
 /// The most registrations (cell, polygon pairs) a grid holds.
 pub const MAX_REGISTRATIONS: usize = 1 << 26;
 
-/// The stopping margin of the tracers, in units of [`Grid3::eps`] (see [`Grid3::stop_margin`]).
-pub const STOP_MARGIN_EPS: f64 = 4.0;
+/// The stopping margin of the tracers, in units of [`Grid3::eps`] (see [`Grid3::stop_margin`]):
+/// the 2D grid's, for the same reason.
+pub use crate::grid::STOP_MARGIN_EPS;
 
 /// Marks a non-empty cell in the per-cell region table.
 const NO_REGION: u32 = u32::MAX;
