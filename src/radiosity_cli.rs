@@ -333,9 +333,7 @@ struct SolutionJson {
 
 pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     let mut out = Out::new();
-    if !(solve::MIN_TOLERANCE..1.0).contains(&a.tolerance) {
-        bail!("--tolerance must be a number in [1e-12, 1), got {}", a.tolerance);
-    }
+    solve::check_tolerance(a.tolerance)?;
     check_range("--max-steps", a.max_steps, 1, MAX_STEPS).map_err(anyhow::Error::msg)?;
     if a.matrix.is_some() && a.solver != Solver::Full {
         bail!("--matrix needs --solver full: progressive refinement computes its rows as it shoots");
@@ -410,14 +408,11 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
                 }
                 None if a.on_pe => {
                     let bar = progress_bar(prepared.scene.len(), "rows on the PE", a.quiet);
-                    let rows = (0..prepared.scene.len())
-                        .map(|k| {
-                            bar.inc(1);
-                            row(k)
-                        })
-                        .collect::<Result<Vec<_>>>();
+                    let done = on_pe::all_rows(&prepared, &params, &config, |k| bar.set_position(k as u64));
                     bar.finish_and_clear();
-                    rows?
+                    let (rows, t) = done?;
+                    totals = t;
+                    rows
                 }
                 None => {
                     let bar = progress_bar(prepared.scene.len(), "rows", a.quiet);

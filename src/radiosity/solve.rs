@@ -100,7 +100,8 @@ pub struct Solution {
     pub rows: Vec<usize>,
 }
 
-fn check_tolerance(t: f64) -> Result<(), SolveError> {
+/// `tolerance` within `[MIN_TOLERANCE, 1)`, the range both solvers accept.
+pub fn check_tolerance(t: f64) -> Result<(), SolveError> {
     if (MIN_TOLERANCE..1.0).contains(&t) {
         Ok(())
     } else {
