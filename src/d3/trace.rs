@@ -122,8 +122,29 @@ pub fn screen(source: &Source3, k: usize, polygon: &Polygon) -> Screen3 {
 /// A 3D tracing technique.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Method3 {
+    /// Every ray against every polygon (the oracle).
     Brute,
+    /// Ray by ray through the 3D grid.
     Conventional,
+}
+
+impl Method3 {
+    /// Every 3D technique, in the order the tables list them.
+    pub const ALL: [Method3; 2] = [Method3::Brute, Method3::Conventional];
+
+    /// The technique's name on the command line and in tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method3::Brute => "brute",
+            Method3::Conventional => "conventional",
+        }
+    }
+}
+
+impl std::fmt::Display for Method3 {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 /// What a tracer returns.
