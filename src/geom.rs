@@ -150,13 +150,24 @@ pub fn facing(origin: Vec2, normal: Vec2, seg: &Segment) -> Facing {
 /// returns the distance `t > 0` at which the ray meets the segment, or `None`.
 #[inline(always)]
 pub fn hit_front(ray: &Ray, seg: &Segment) -> Option<f64> {
-    FrontPatch::new(ray.origin, seg).hit(ray)
+    // [`FrontPatch::hit`]'s operations on the same operands, with the distance's operands
+    // computed only for a ray that meets the segment (most tested rays miss).
+    let (o, p) = (ray.origin, ray.probe);
+    let (da, certain_a) = orient_filter(o - seg.a, p - seg.a);
+    let (db, certain_b) = orient_filter(o - seg.b, p - seg.b);
+    let miss = if certain_a & certain_b { (da > 0.0) | (db < 0.0) } else { misses_exactly(o, p, seg) };
+    if miss {
+        return None;
+    }
+    let (e, w) = (seg.b - seg.a, seg.a - o);
+    let t = cross(w, e) / cross(ray.dir, e);
+    Some(settle(t, w.dot(ray.dir), (seg.b - o).dot(ray.dir)))
 }
 
 /// [`hit_front`] for one patch and many rays from one origin: what depends only on the origin
 /// and the patch is computed once. [`FrontPatch::hit`] performs exactly the operations of
-/// [`hit_front`] on exactly the same operands (`hit_front` is built from it), so its answers are
-/// bit-identical.
+/// [`hit_front`] on exactly the same operands, so its answers are
+/// bit-identical (a test holds them to it).
 #[derive(Clone, Copy, Debug)]
 pub struct FrontPatch {
     /// The rays' common origin `O`.

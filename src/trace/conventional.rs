@@ -35,18 +35,19 @@ pub(super) fn trace<H: HitTest>(
                 if step.region.is_none() {
                     for &p in grid.cell_items(step.cell) {
                         let i = p as usize;
-                        if scratch.patch_stamp[i] == ray_tick {
+                        let slot = &mut scratch.mailbox[i];
+                        if slot.ray == ray_tick {
                             continue;
                         }
-                        scratch.patch_stamp[i] = ray_tick;
+                        slot.ray = ray_tick;
                         c.patches_read_before_screening += 1;
                         test.load(p);
                         let seg = &scene.segments[i];
-                        if scratch.screen_stamp[i] != source_tick {
-                            scratch.screen[i] = screen(bundle, p, seg);
-                            scratch.screen_stamp[i] = source_tick;
+                        if slot.screened >> 1 != source_tick {
+                            let pass = screen(bundle, p, seg) == Screen::Pass;
+                            slot.screened = source_tick << 1 | pass as u64;
                         }
-                        if scratch.screen[i] != Screen::Pass {
+                        if slot.screened & 1 == 0 {
                             continue;
                         }
                         c.patches_read_after_screening += 1;

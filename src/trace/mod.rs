@@ -378,6 +378,17 @@ impl PatchCold {
     const EMPTY: PatchCold = PatchCold { r_min: 0.0, flatness: 0.0, angle_lo: 0.0 };
 }
 
+/// What the conventional tracer keeps of a patch, in one 16-byte slot (both words are read at
+/// every load of the patch): the tick of the last ray that loaded it (the per-ray mailbox) and
+/// the tick of the source its screening verdict is for, shifted left by one, with the verdict
+/// (passes the screener) in the low bit. Ticks stay below 2⁶³.
+#[derive(Clone, Copy, Debug, Default)]
+#[repr(C, align(16))]
+pub(crate) struct RayMailbox {
+    pub ray: u64,
+    pub screened: u64,
+}
+
 /// Reusable per-thread working memory of the grid tracers, so that tracing a bundle allocates and
 /// clears nothing proportional to the scene. Every array holds stamps: an entry is valid only if
 /// its stamp equals the tick it is compared with, and ticks (64-bit) are never reused.
@@ -387,8 +398,8 @@ pub(crate) struct Scratch {
     pub tick: u64,
     pub hot: Vec<PatchHot>,
     pub cold: Vec<PatchCold>,
-    pub screen: Vec<Screen>,
-    pub screen_stamp: Vec<u64>,
+    /// The conventional tracer's per-patch mailbox and screening verdict ([`RayMailbox`]).
+    pub mailbox: Vec<RayMailbox>,
     pub patch_stamp: Vec<u64>,
     pub cell_stamp: Vec<u64>,
     pub region_stamp: Vec<u64>,
@@ -401,8 +412,7 @@ impl Scratch {
         if self.hot.len() < n {
             self.hot.resize(n, PatchHot::EMPTY);
             self.cold.resize(n, PatchCold::EMPTY);
-            self.screen.resize(n, Screen::Pass);
-            self.screen_stamp.resize(n, 0);
+            self.mailbox.resize(n, RayMailbox::default());
             self.patch_stamp.resize(n, 0);
         }
         if self.cell_stamp.len() < scene.grid.len() {
