@@ -109,6 +109,8 @@ impl FixedBundle {
 }
 
 impl HitTest for FixedBundle {
+    const HOOKS: bool = false;
+
     #[inline]
     fn hit(&self, _bundle: &Bundle, i: usize, p: u32, _seg: &Segment) -> Option<f64> {
         test(self.patch(p)?, self.dirs[i]).map(key_distance)

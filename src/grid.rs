@@ -107,6 +107,11 @@ pub struct Grid {
     /// of its segment list for a non-empty cell, `[region | EMPTY, x1 of the region]` for an
     /// empty one.
     scan: Vec<[u32; 2]>,
+    /// Per segment, whether it is registered in more than one cell; and per cell, the list of
+    /// its segments that are, in compressed-row form like `items` ([`Grid::cell_shared_items`]).
+    segment_shared: Vec<bool>,
+    shared_offsets: Vec<u32>,
+    shared_items: Vec<u32>,
 }
 
 /// One cell as a row scan sees it ([`Grid::scan_cell`]).
@@ -158,6 +163,9 @@ impl Grid {
             cell_region: Vec::new(),
             regions: Vec::new(),
             scan: Vec::new(),
+            segment_shared: Vec::new(),
+            shared_offsets: Vec::new(),
+            shared_items: Vec::new(),
         };
         grid.register(segments);
         grid.build_macro_regions();
@@ -208,6 +216,21 @@ impl Grid {
     #[inline]
     pub fn cell_items(&self, c: usize) -> &[u32] {
         &self.items[self.offsets[c] as usize..self.offsets[c + 1] as usize]
+    }
+
+    /// Whether segment `i` is registered in more than one cell. A ray's walk enters each cell at
+    /// most once, so it meets a segment that is not (a private one) once: a tracer needs a
+    /// per-ray mailbox only for the shared ones.
+    #[inline]
+    pub fn is_shared(&self, i: u32) -> bool {
+        self.segment_shared[i as usize]
+    }
+
+    /// The segments of cell `c` registered in other cells too ([`Grid::is_shared`]), in the
+    /// order of [`Grid::cell_items`].
+    #[inline]
+    pub fn cell_shared_items(&self, c: usize) -> &[u32] {
+        &self.shared_items[self.shared_offsets[c] as usize..self.shared_offsets[c + 1] as usize]
     }
 
     /// The macro-region of cell `c`, or `None` when the cell holds segments.
@@ -291,6 +314,19 @@ impl Grid {
                     cursor[c] += 1;
                 }
             });
+        }
+        // A segment registered in one cell only is private to it.
+        let mut cells_of = vec![0u32; segments.len()];
+        for &i in &items {
+            cells_of[i as usize] += 1;
+        }
+        self.segment_shared = cells_of.iter().map(|&n| n > 1).collect();
+        self.shared_offsets = Vec::with_capacity(self.len() + 1);
+        self.shared_offsets.push(0);
+        for c in 0..self.len() {
+            let cell = &items[offsets[c] as usize..offsets[c + 1] as usize];
+            self.shared_items.extend(cell.iter().filter(|&&i| self.segment_shared[i as usize]));
+            self.shared_offsets.push(self.shared_items.len() as u32);
         }
         self.offsets = offsets;
         self.items = items;

@@ -8,7 +8,7 @@ use shelling::grid::GridParams;
 use shelling::rays::{Bundle, RaySet, Source};
 use shelling::run::GriddedScene;
 use shelling::scene::{self, Bounds, Scene};
-use shelling::trace::{Method, ShellParams, TraceResult};
+use shelling::trace::{trace_with, FloatHits, HitTest, Method, ShellParams, TraceResult};
 
 fn v(x: f64, y: f64) -> Vec2 {
     Vec2::new(x, y)
@@ -16,6 +16,17 @@ fn v(x: f64, y: f64) -> Vec2 {
 
 fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Segment {
     Segment::new(v(ax, ay), v(bx, by))
+}
+
+/// The golden model's hit test in a backend that observes the work-stream hooks.
+struct Hooked;
+
+impl HitTest for Hooked {
+    const HOOKS: bool = true;
+
+    fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64> {
+        FloatHits.hit(bundle, i, p, seg)
+    }
 }
 
 /// Traces `bundle` with every method and checks each against brute force and the counter
@@ -32,6 +43,12 @@ fn check(p: &GriddedScene, bundle: &Bundle, params: &ShellParams, what: &str) ->
                 bundle.rays[i].dir
             );
         }
+        // A backend that observes the work-stream hooks takes the tracers' patch-by-patch path
+        // (the conventional tracer's per-source cell screening is only for backends that do
+        // not): the same hits and the same counters.
+        let hooked = trace_with(method, p.view(), bundle, params, &Hooked).unwrap();
+        assert_eq!(hooked.hits, r.hits, "{what}: {method} with hooks observed");
+        assert_eq!(hooked.counters, r.counters, "{what}: {method} with hooks observed");
         let c = &r.counters;
         assert!(c.patches_read_after_screening <= c.patches_read_before_screening, "{what}: {method}: {c:?}");
         assert!(c.intersection_computations >= c.actual_intersections, "{what}: {method}: {c:?}");

@@ -6,7 +6,7 @@
 //! the first cell whose exit lies beyond the nearest hit found so far (by more than the grid's
 //! rounding margin, so exact ties across a cell boundary are still resolved by index).
 
-use super::{offer, screen, with_scratch, HitTest, SceneView, Screen};
+use super::{offer, screen, with_scratch, CellPass, HitTest, SceneView, Screen};
 use crate::counters::Counters;
 use crate::geom::Hit;
 use crate::rays::Bundle;
@@ -26,6 +26,7 @@ pub(super) fn trace<H: HitTest>(
         // per-ray mailbox loads a patch listed in several cells once per ray.
         scratch.tick += 1;
         let source_tick = scratch.tick;
+        scratch.pass_items.clear();
         for (r, ray) in bundle.rays.iter().enumerate() {
             scratch.tick += 1;
             let ray_tick = scratch.tick;
@@ -33,28 +34,78 @@ pub(super) fn trace<H: HitTest>(
             grid.walk(ray.origin, ray.dir, |step| {
                 c.cells_traversed += 1;
                 if step.region.is_none() {
-                    for &p in grid.cell_items(step.cell) {
-                        let i = p as usize;
-                        let slot = &mut scratch.mailbox[i];
-                        if slot.ray == ray_tick {
-                            continue;
+                    let items = grid.cell_items(step.cell);
+                    if !H::HOOKS {
+                        // A private patch of the cell meets this ray here only (no mailbox), and
+                        // the cell's private patches are screened once for the source; the
+                        // shared ones go through the mailbox as below.
+                        let pass = &mut scratch.cell_pass[step.cell];
+                        if pass.stamp != source_tick {
+                            let start = scratch.pass_items.len() as u32;
+                            let passing = items.iter().filter(|&&p| {
+                                !grid.is_shared(p)
+                                    && screen(bundle, p, &scene.segments[p as usize]) == Screen::Pass
+                            });
+                            scratch.pass_items.extend(passing);
+                            let end = scratch.pass_items.len() as u32;
+                            *pass = CellPass { stamp: source_tick, start, end };
                         }
-                        slot.ray = ray_tick;
-                        c.patches_read_before_screening += 1;
-                        test.load(p);
-                        let seg = &scene.segments[i];
-                        if slot.screened >> 1 != source_tick {
-                            let pass = screen(bundle, p, seg) == Screen::Pass;
-                            slot.screened = source_tick << 1 | pass as u64;
+                        let shared = grid.cell_shared_items(step.cell);
+                        let passing = &scratch.pass_items[pass.start as usize..pass.end as usize];
+                        c.patches_read_before_screening += (items.len() - shared.len()) as u64;
+                        c.patches_read_after_screening += passing.len() as u64;
+                        c.intersection_computations += passing.len() as u64;
+                        for &p in passing {
+                            if let Some(t) = test.hit(bundle, r, p, &scene.segments[p as usize]) {
+                                offer(&mut best, Hit { t, segment: p });
+                            }
                         }
-                        if slot.screened & 1 == 0 {
-                            continue;
+                        for &p in shared {
+                            let i = p as usize;
+                            let slot = &mut scratch.mailbox[i];
+                            if slot.ray == ray_tick {
+                                continue;
+                            }
+                            slot.ray = ray_tick;
+                            c.patches_read_before_screening += 1;
+                            let seg = &scene.segments[i];
+                            if slot.screened >> 1 != source_tick {
+                                let pass = screen(bundle, p, seg) == Screen::Pass;
+                                slot.screened = source_tick << 1 | pass as u64;
+                            }
+                            if slot.screened & 1 == 0 {
+                                continue;
+                            }
+                            c.patches_read_after_screening += 1;
+                            c.intersection_computations += 1;
+                            if let Some(t) = test.hit(bundle, r, p, seg) {
+                                offer(&mut best, Hit { t, segment: p });
+                            }
                         }
-                        c.patches_read_after_screening += 1;
-                        c.intersection_computations += 1;
-                        test.span(p, r..r + 1);
-                        if let Some(t) = test.hit(bundle, r, p, seg) {
-                            offer(&mut best, Hit { t, segment: p });
+                    } else {
+                        for &p in items {
+                            let i = p as usize;
+                            let slot = &mut scratch.mailbox[i];
+                            if slot.ray == ray_tick {
+                                continue;
+                            }
+                            slot.ray = ray_tick;
+                            c.patches_read_before_screening += 1;
+                            test.load(p);
+                            let seg = &scene.segments[i];
+                            if slot.screened >> 1 != source_tick {
+                                let pass = screen(bundle, p, seg) == Screen::Pass;
+                                slot.screened = source_tick << 1 | pass as u64;
+                            }
+                            if slot.screened & 1 == 0 {
+                                continue;
+                            }
+                            c.patches_read_after_screening += 1;
+                            c.intersection_computations += 1;
+                            test.span(p, r..r + 1);
+                            if let Some(t) = test.hit(bundle, r, p, seg) {
+                                offer(&mut best, Hit { t, segment: p });
+                            }
                         }
                     }
                 }

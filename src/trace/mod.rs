@@ -90,6 +90,13 @@ pub enum TraceError {
 /// The tracers also announce the work stream's other items through the hooks below, in the
 /// order they happen (no-ops by default; `crate::workstream` records them for the hardware).
 pub trait HitTest {
+    /// Whether the backend observes the work-stream hooks ([`HitTest::load`] and the others
+    /// below) and so needs them called patch by patch in the order they happen. A backend that
+    /// does not (its hooks are the default no-ops) sets it `false`, which lets a tracer take
+    /// shortcuts that keep every hit and every counter but not the hooks' order (the
+    /// conventional tracer's per-source screening of a cell, `conventional.rs`).
+    const HOOKS: bool = true;
+
     fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64>;
 
     /// [`HitTest::hit`] of patch `p` for the rays `base + k`, one for each set bit `k` of
@@ -154,6 +161,8 @@ pub trait HitTest {
 pub struct FloatHits;
 
 impl HitTest for FloatHits {
+    const HOOKS: bool = false;
+
     #[inline(always)]
     fn hit(&self, bundle: &Bundle, i: usize, _p: u32, seg: &Segment) -> Option<f64> {
         hit_front(&bundle.rays[i], seg)
@@ -389,6 +398,15 @@ pub(crate) struct RayMailbox {
     pub screened: u64,
 }
 
+/// A private cell's patches that pass the screener for one source: `pass_items[start..end]` of
+/// [`Scratch`], valid when `stamp` is the source's tick.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct CellPass {
+    pub stamp: u64,
+    pub start: u32,
+    pub end: u32,
+}
+
 /// Reusable per-thread working memory of the grid tracers, so that tracing a bundle allocates and
 /// clears nothing proportional to the scene. Every array holds stamps: an entry is valid only if
 /// its stamp equals the tick it is compared with, and ticks (64-bit) are never reused.
@@ -401,6 +419,10 @@ pub(crate) struct Scratch {
     /// The conventional tracer's per-patch mailbox and screening verdict ([`RayMailbox`]).
     pub mailbox: Vec<RayMailbox>,
     pub patch_stamp: Vec<u64>,
+    /// The conventional tracer's per-source screening of private cells ([`CellPass`]).
+    pub cell_pass: Vec<CellPass>,
+    /// The patches of those cells that pass the screener, in cell order, for this source.
+    pub pass_items: Vec<u32>,
     pub cell_stamp: Vec<u64>,
     pub region_stamp: Vec<u64>,
 }
@@ -417,6 +439,7 @@ impl Scratch {
         }
         if self.cell_stamp.len() < scene.grid.len() {
             self.cell_stamp.resize(scene.grid.len(), 0);
+            self.cell_pass.resize(scene.grid.len(), CellPass::default());
         }
         if self.region_stamp.len() < scene.grid.region_count() {
             self.region_stamp.resize(scene.grid.region_count(), 0);
