@@ -9,6 +9,7 @@
 use super::{offer, screen, with_scratch, CellPass, HitTest, SceneView, Screen};
 use crate::counters::Counters;
 use crate::geom::Hit;
+use crate::geom::{hit_front, FrontQuad};
 use crate::rays::Bundle;
 
 pub(super) fn trace<H: HitTest>(
@@ -27,6 +28,7 @@ pub(super) fn trace<H: HitTest>(
         scratch.tick += 1;
         let source_tick = scratch.tick;
         scratch.pass_items.clear();
+        scratch.pass_quads.clear();
         for (r, ray) in bundle.rays.iter().enumerate() {
             scratch.tick += 1;
             let ray_tick = scratch.tick;
@@ -48,16 +50,40 @@ pub(super) fn trace<H: HitTest>(
                             });
                             scratch.pass_items.extend(passing);
                             let end = scratch.pass_items.len() as u32;
-                            *pass = CellPass { stamp: source_tick, start, end };
+                            let quads = scratch.pass_quads.len() as u32;
+                            for four in scratch.pass_items[start as usize..].chunks(4) {
+                                let mut q = FrontQuad::default();
+                                for (k, &p) in four.iter().enumerate() {
+                                    q.set(k, &scene.segments[p as usize]);
+                                }
+                                scratch.pass_quads.push(q);
+                            }
+                            *pass = CellPass { stamp: source_tick, start, end, quads };
                         }
                         let shared = grid.cell_shared_items(step.cell);
                         let passing = &scratch.pass_items[pass.start as usize..pass.end as usize];
                         c.patches_read_before_screening += (items.len() - shared.len()) as u64;
                         c.patches_read_after_screening += passing.len() as u64;
                         c.intersection_computations += passing.len() as u64;
-                        for &p in passing {
-                            if let Some(t) = test.hit(bundle, r, p, &scene.segments[p as usize]) {
-                                offer(&mut best, Hit { t, segment: p });
+                        if H::GOLDEN {
+                            // Four patches at a time through the test's filter; the lanes it
+                            // cannot call a miss go to the test itself.
+                            let quads = &scratch.pass_quads[pass.quads as usize..];
+                            for (four, q) in passing.chunks(4).zip(quads) {
+                                let mut maybe = !q.certain_misses(ray) & ((1 << four.len()) - 1);
+                                while maybe != 0 {
+                                    let p = four[maybe.trailing_zeros() as usize];
+                                    maybe &= maybe - 1;
+                                    if let Some(t) = hit_front(ray, &scene.segments[p as usize]) {
+                                        offer(&mut best, Hit { t, segment: p });
+                                    }
+                                }
+                            }
+                        } else {
+                            for &p in passing {
+                                if let Some(t) = test.hit(bundle, r, p, &scene.segments[p as usize]) {
+                                    offer(&mut best, Hit { t, segment: p });
+                                }
                             }
                         }
                         for &p in shared {

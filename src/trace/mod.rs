@@ -15,7 +15,9 @@ mod shelling;
 pub use shelling::{ShellParams, ShellStats};
 
 use crate::counters::Counters;
-use crate::geom::{angle_of, facing, hit_front, Facing, FrontPatch, Hit, NearestHits, Segment, Vec2};
+use crate::geom::{
+    angle_of, facing, hit_front, Facing, FrontPatch, FrontQuad, Hit, NearestHits, Segment, Vec2,
+};
 use crate::grid::Grid;
 use crate::rays::Bundle;
 use std::fmt;
@@ -97,6 +99,10 @@ pub trait HitTest {
     /// conventional tracer's per-source screening of a cell, `conventional.rs`).
     const HOOKS: bool = true;
 
+    /// Whether [`HitTest::hit`] is [`hit_front`] (the golden model's test), so that a tracer
+    /// may take its verdicts from [`FrontQuad::certain_misses`] four patches at a time.
+    const GOLDEN: bool = false;
+
     fn hit(&self, bundle: &Bundle, i: usize, p: u32, seg: &Segment) -> Option<f64>;
 
     /// [`HitTest::hit`] of patch `p` for the rays `base + k`, one for each set bit `k` of
@@ -162,6 +168,7 @@ pub struct FloatHits;
 
 impl HitTest for FloatHits {
     const HOOKS: bool = false;
+    const GOLDEN: bool = true;
 
     #[inline(always)]
     fn hit(&self, bundle: &Bundle, i: usize, _p: u32, seg: &Segment) -> Option<f64> {
@@ -399,12 +406,14 @@ pub(crate) struct RayMailbox {
 }
 
 /// A private cell's patches that pass the screener for one source: `pass_items[start..end]` of
-/// [`Scratch`], valid when `stamp` is the source's tick.
+/// [`Scratch`] (and from `pass_quads[quads]` on), valid when `stamp` is the source's tick.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct CellPass {
     pub stamp: u64,
     pub start: u32,
     pub end: u32,
+    /// The first of the list's quads in `pass_quads`.
+    pub quads: u32,
 }
 
 /// Reusable per-thread working memory of the grid tracers, so that tracing a bundle allocates and
@@ -423,6 +432,8 @@ pub(crate) struct Scratch {
     pub cell_pass: Vec<CellPass>,
     /// The patches of those cells that pass the screener, in cell order, for this source.
     pub pass_items: Vec<u32>,
+    /// The same patches four to a [`FrontQuad`], each cell's list starting a quad.
+    pub pass_quads: Vec<FrontQuad>,
     pub cell_stamp: Vec<u64>,
     pub region_stamp: Vec<u64>,
 }
