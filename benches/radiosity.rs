@@ -7,7 +7,8 @@
 //!    of 0.5, four boxes of 64) at R = 1024, M = 4 on all cores, by the technique fastest in 1
 //!    and by the conventional one. Goal: under 10 s on 2 cores.
 //!
-//! Run: `cargo bench --bench radiosity` (`-- --rounds N`; `-- --small` skips part 2).
+//! Run: `cargo bench --bench radiosity` (`-- --rounds N`; `-- --small` skips part 2;
+//! `-- --full METHOD` times part 2 with that technique only).
 
 use shelling::grid::GridParams;
 use shelling::radiosity::form_factors::{self, FfParams};
@@ -22,6 +23,12 @@ fn main() {
     let rounds =
         args.iter().skip_while(|a| *a != "--rounds").nth(1).and_then(|v| v.parse().ok()).unwrap_or(5usize);
     let small = args.iter().any(|a| a == "--small");
+    let full: Option<Method> = args.iter().skip_while(|a| *a != "--full").nth(1).map(|name| {
+        *Method::ALL.iter().find(|m| m.name() == name).unwrap_or_else(|| {
+            eprintln!("--full {name}: no such technique (brute, conventional, stochastic, deterministic)");
+            std::process::exit(2)
+        })
+    });
 
     let prepared =
         GriddedScene::new(room(&RoomSpec::default()).expect("the default room"), GridParams::default());
@@ -79,6 +86,9 @@ fn main() {
     let mut methods = vec![best.0];
     if best.0 != Method::Conventional {
         methods.push(Method::Conventional);
+    }
+    if let Some(m) = full {
+        methods = vec![m];
     }
     for method in methods {
         let p = FfParams { method, ..fp.clone() };

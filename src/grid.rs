@@ -596,8 +596,10 @@ impl Grid {
         };
         let p = origin + dir * t;
         let clamp = |v: i64, n: usize| v.clamp(0, n as i64 - 1);
-        let mut ix = clamp(self.coord(p.x, self.origin.x), self.nx);
-        let mut iy = clamp(self.coord(p.y, self.origin.y), self.ny);
+        // `coord_by` is `coord` (the same cells), its division mostly replaced by a product.
+        let inv = 1.0 / self.cell_size;
+        let mut ix = clamp(self.coord_by(p.x, self.origin.x, inv), self.nx);
+        let mut iy = clamp(self.coord_by(p.y, self.origin.y, inv), self.ny);
         let (nx, ny) = (self.nx as i64, self.ny as i64);
         let s = self.cell_size;
         loop {
@@ -630,13 +632,13 @@ impl Grid {
             if tx <= ty {
                 jx = if dir.x > 0.0 { r.x1 as i64 + 1 } else { r.x0 as i64 - 1 };
             } else {
-                let v = self.coord(q.x, self.origin.x).clamp(r.x0 as i64, r.x1 as i64);
+                let v = self.coord_by(q.x, self.origin.x, inv).clamp(r.x0 as i64, r.x1 as i64);
                 jx = if dir.x >= 0.0 { v.max(ix) } else { v.min(ix) };
             }
             if ty <= tx {
                 jy = if dir.y > 0.0 { r.y1 as i64 + 1 } else { r.y0 as i64 - 1 };
             } else {
-                let v = self.coord(q.y, self.origin.y).clamp(r.y0 as i64, r.y1 as i64);
+                let v = self.coord_by(q.y, self.origin.y, inv).clamp(r.y0 as i64, r.y1 as i64);
                 jy = if dir.y >= 0.0 { v.max(iy) } else { v.min(iy) };
             }
             if jx < 0 || jx >= nx || jy < 0 || jy >= ny {

@@ -5,11 +5,22 @@
 //! A patch listed in several cells is loaded once per ray (a per-ray mailbox). The walk stops at
 //! the first cell whose exit lies beyond the nearest hit found so far (by more than the grid's
 //! rounding margin, so exact ties across a cell boundary are still resolved by index).
+//!
+//! With a backend that does not observe the work-stream hooks ([`HitTest::HOOKS`]: the golden
+//! model and the bit-true model, not the hardware's recorder), two shortcuts keep every hit and
+//! every counter: a cell's *private* patches (registered in it alone, [`Grid::is_shared`]) need
+//! no mailbox, since the walk enters each cell once, and they are screened once per source per
+//! cell, the ones that pass kept in a list, so a ray's visit loads nothing it will not test; with
+//! the golden model's test ([`HitTest::GOLDEN`]) that list is also kept four to a
+//! [`FrontQuad`], whose filter rules out most of a ray's misses four patches at a time. The
+//! cell's shared patches go through the mailbox as with any backend. `tests/tracers.rs`
+//! compares both paths' hits and counters.
+//!
+//! [`Grid::is_shared`]: crate::grid::Grid::is_shared
 
 use super::{offer, screen, with_scratch, CellPass, HitTest, SceneView, Screen};
 use crate::counters::Counters;
-use crate::geom::Hit;
-use crate::geom::{hit_front, FrontQuad};
+use crate::geom::{hit_front, FrontQuad, Hit};
 use crate::rays::Bundle;
 
 pub(super) fn trace<H: HitTest>(
