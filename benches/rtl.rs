@@ -15,8 +15,8 @@
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use shelling_hdl::formats::PatchSetup;
 use shelling_hdl::intersection::IntersectionUnit;
-use shelling_hdl::screener::model::PatchSetup;
 use shelling_testbench::intersection::{model_bundle, run_bundle, Job};
 use shelling_testbench::{Driver, Pacing};
 use std::hint::black_box;

@@ -15,9 +15,10 @@
 use crate::geom::Segment;
 use crate::rays::Bundle;
 use crate::trace::HitTest;
+use shelling_hdl::formats::PatchSetup;
 use shelling_hdl::formats::{direction, key_distance, FormatError, Quantizer, ID_BITS};
 use shelling_hdl::intersection::model::test;
-use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
+use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
 
 /// Which arithmetic answers the per-ray hit tests.
 #[derive(

@@ -16,7 +16,7 @@ use crate::run::Scheduled;
 use crate::staged::Staged;
 use crate::workstream::{commands, StreamError};
 use serde::Serialize;
-use shelling_hdl::intersection::model::Nearest;
+use shelling_hdl::formats::Nearest;
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
 use shelling_testbench::pe::{rust_hdl_pe, RustHdlPe};

@@ -27,7 +27,7 @@ use crate::arith::FixedBundle;
 use crate::geom::Segment;
 use crate::rays::Bundle;
 use crate::trace::HitTest;
-use shelling_hdl::intersection::model::Nearest;
+use shelling_hdl::formats::Nearest;
 use shelling_testbench::pe::{model, Command, ModelCounts, PeSetup, PE_RAY_MEMORY};
 use std::cell::RefCell;
 use std::ops::Range;

@@ -111,7 +111,7 @@
 //! ids in request order. [`model::schedule`] gives the exact lookup, host request and response
 //! cycles from the request cycles, the hit/miss sequence and `T_c`.
 
-use crate::leaf::{bram_out_tile_width, Bram, BramOut};
+use crate::prim::{bram_out_tile_width, Bram, BramOut};
 use rust_hdl::prelude::*;
 
 /// Address width of the cache lanes: at most `2^CACHE_BITS` lines.

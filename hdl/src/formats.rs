@@ -14,6 +14,11 @@
 //!
 //! Conversions round to nearest (ties away from zero). Values that do not fit are errors
 //! ([`FormatError`]), never wrapped.
+//!
+//! The records that cross from one block's model to another's live here too, so that no block
+//! imports another: [`PatchSetup`] (the screener's output, the intersection unit's input),
+//! [`Nearest`] (a ray's nearest hit) and [`key`] (the distance key, computed by the intersection
+//! unit's key stage).
 
 /// Fraction bits of a coordinate.
 pub const COORD_FRAC: u32 = 6;
@@ -34,6 +39,8 @@ pub const KEY_FRAC: u32 = 26;
 pub const SH_MAX: i32 = 31;
 /// Smallest per-patch exponent `sh` (a left shift of the key, saturating).
 pub const SH_MIN: i32 = -3;
+/// Width of the per-patch exponent `sh` (two's complement).
+pub const SH_BITS: u32 = 6;
 /// Margin of the sector screen, in LSBs of a side value (see `FORMATS.md`).
 pub const SECTOR_MARGIN: i64 = 256;
 /// Width of a patch id.
@@ -176,6 +183,46 @@ pub const fn to_bits(v: i64, bits: u32) -> u64 {
 pub const fn from_bits(v: u64, bits: u32) -> i64 {
     let shift = 64 - bits;
     ((v << shift) as i64) >> shift
+}
+
+/// What the intersection unit needs of a patch: the screener's output, set up for one bundle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct PatchSetup {
+    pub id: u16,
+    /// Endpoints relative to the origin (Q12.6, 18 bits signed).
+    pub a: [i32; 2],
+    pub b: [i32; 2],
+    /// Inverse-distance vector (18 bits signed, normalised by `sh`).
+    pub w: [i32; 2],
+    /// Exponent of `w`, in `[SH_MIN, SH_MAX]`: the key of a hit is `dot(d, w)·2^-sh`.
+    pub sh: i8,
+}
+
+/// A ray's nearest hit: distance key (larger is nearer) and patch id.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Nearest {
+    pub key: u32,
+    pub id: u16,
+}
+
+/// The distance key of a hit from `q = dot(d, w)`: `q·2^-sh`, truncated, clamped into
+/// `[1, 2³² − 1]` (a grazing hit whose `q` rounds to zero or below is the farthest key; one
+/// nearer than 2⁻⁶ units saturates). `|q| < 2^29.5`, so `q << 2` never overflows.
+#[inline]
+pub fn key(q: i32, sh: i8) -> u32 {
+    if q <= 0 {
+        return 1;
+    }
+    let q = q as u32;
+    let sh = sh.clamp(SH_MIN as i8, SH_MAX as i8);
+    let u = if sh >= 0 {
+        q >> sh
+    } else if (q >> (32 + sh as i32)) != 0 {
+        u32::MAX
+    } else {
+        q << -sh
+    };
+    u.max(1)
 }
 
 #[cfg(test)]

@@ -65,7 +65,7 @@
 //! and sent again each time), with the coordinates the memory holds; `loads` equals the number
 //! of ids; plus the exact cycle counts of an unstalled stream.
 
-use crate::leaf::FifoRam;
+use crate::prim::FifoRam;
 use rust_hdl::prelude::*;
 
 /// FIFO capacity in patches (slots reserved, requested or buffered).

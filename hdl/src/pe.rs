@@ -81,8 +81,8 @@
 
 use crate::cache::PatchCache;
 use crate::intersection::IntersectionUnit;
-use crate::leaf::FifoRam;
 use crate::loader::PatchLoader;
+use crate::prim::FifoRam;
 use crate::screener::Screener;
 use crate::slice::PatchSlice;
 use rust_hdl::prelude::*;

@@ -10,10 +10,10 @@
 use crate::{impl_clocked, Driver, Error, Pacing, Result, Source};
 use rust_hdl::prelude::*;
 use shelling_hdl::formats::to_bits;
-use shelling_hdl::intersection::model::{replaces, test, Nearest};
+use shelling_hdl::formats::{Nearest, PatchSetup};
+use shelling_hdl::intersection::model::{replaces, test};
 use shelling_hdl::intersection::{IntersectionUnit, RAY_BITS, READOUT_LATENCY};
 use shelling_hdl::pe::ProcessingElement;
-use shelling_hdl::screener::model::PatchSetup;
 
 impl_clocked!(IntersectionUnit);
 

@@ -17,8 +17,8 @@ use crate::intersection::RayBench;
 use crate::replay::PortDir;
 use crate::{Driver, Error, Result};
 use rust_hdl::prelude::*;
+use shelling_hdl::formats::Nearest;
 use shelling_hdl::formats::{from_bits, to_bits};
-use shelling_hdl::intersection::model::Nearest;
 use shelling_hdl::pe::ProcessingElement;
 
 /// A port's value as a Rust value: `bool`, an unsigned id or address, or a two's-complement

@@ -9,10 +9,11 @@
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
+use shelling_hdl::formats::PatchSetup;
 use shelling_hdl::formats::{direction, Quantizer};
 use shelling_hdl::intersection::IntersectionUnit;
-use shelling_hdl::leaf::BramOut;
-use shelling_hdl::screener::model::{screen, BundleSetup, Patch, PatchSetup, Verdict};
+use shelling_hdl::prim::BramOut;
+use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
 use shelling_testbench::intersection::{
     load_directions, model_bundle, model_bundle_counted, run_bundle, stream_jobs, Job, RayBench, MAX_BUNDLE,
 };

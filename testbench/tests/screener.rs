@@ -9,10 +9,12 @@ use std::path::PathBuf;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
+use shelling_hdl::formats::PatchSetup;
 use shelling_hdl::formats::{cross, direction, dot, from_bits, to_bits};
-use shelling_hdl::leaf::{restoring_quotient, FifoRam, PipeDivider, DIV_LATENCY};
+use shelling_hdl::prim::FifoRam;
+use shelling_hdl::screener::divider::{restoring_quotient, PipeDivider, DIV_LATENCY};
 use shelling_hdl::screener::model::{
-    accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, PatchSetup, Verdict,
+    accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, Verdict,
 };
 use shelling_hdl::screener::{Screener, COUNT_LATENCY, DEPTH, LATENCY, VERDICT_LATENCY};
 use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};

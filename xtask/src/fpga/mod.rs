@@ -141,8 +141,8 @@ struct Target {
     device: String,
     synth: &'static str,
     /// Verilog defines for `read_verilog` (`-DSHELLING_ECP5` selects the hand-instantiated
-    /// block RAMs of `shelling_hdl::leaf::BramOut` and multipliers; `-DSHELLING_ICE40` the
-    /// second memory copy of `shelling_hdl::leaf::FifoRam`).
+    /// block RAMs of `shelling_hdl::prim::BramOut` and multipliers; `-DSHELLING_ICE40` the
+    /// second memory copy of `shelling_hdl::prim::FifoRam`).
     defines: &'static str,
     nextpnr_device: Vec<String>,
     mhz: f64,

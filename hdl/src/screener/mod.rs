@@ -82,7 +82,7 @@
 //! * stage 9 ([`COUNT_LATENCY`]), beside the divider's first: the verdict, registered as one
 //!   flag per counter, is counted;
 //! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
-//!   `K`, one stage per quotient bit ([`DIV_STEPS`](crate::leaf::DIV_STEPS) = 17 steps of a
+//!   `K`, one stage per quotient bit ([`DIV_STEPS`](divider::DIV_STEPS) = 17 steps of a
 //!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 26
 //!   `W = sign(n)·q` completes the patch's slot;
 //! * stages 27–28: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
@@ -133,8 +133,12 @@
 //! included) and 4227 flip-flops, of which the divider takes about 1000 LUT4, 580 `CCU2C` carry
 //! cells and 2000 flip-flops.
 
-use crate::formats::{cross, dot, SECTOR_MARGIN, SH_MAX, SH_MIN};
-use crate::leaf::{FifoRam, Mul18, PipeDivider, DIV_LATENCY};
+use crate::formats::{cross, dot, to_bits, PatchSetup, SECTOR_MARGIN, SH_BITS, SH_MAX, SH_MIN};
+use crate::prim::{FifoRam, Mul18};
+
+pub mod divider;
+
+use divider::{PipeDivider, DIV_LATENCY};
 use rust_hdl::prelude::*;
 
 /// The bit-true model of the screener: plain integer functions.
@@ -160,19 +164,6 @@ pub mod model {
         pub id: u16,
         pub a: [i32; 2],
         pub b: [i32; 2],
-    }
-
-    /// What the intersection unit needs of a patch.
-    #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-    pub struct PatchSetup {
-        pub id: u16,
-        /// Endpoints relative to the origin (Q12.6, 18 bits signed).
-        pub a: [i32; 2],
-        pub b: [i32; 2],
-        /// Inverse-distance vector (18 bits signed, normalised by `sh`).
-        pub w: [i32; 2],
-        /// Exponent of `w`, in `[SH_MIN, SH_MAX]`: the key of a hit is `dot(d, w)·2^-sh`.
-        pub sh: i8,
     }
 
     /// The screener's decision on one patch.
@@ -284,6 +275,10 @@ pub const LATENCY: u64 = VERDICT_LATENCY + DIV_LATENCY + 2;
 pub const DEPTH: usize = 32;
 /// Address width of the output FIFO's lanes: `2^ADDR_BITS == DEPTH`.
 pub const ADDR_BITS: usize = 5;
+
+/// The sign bit of a 32-bit side value. The sector screen flips it, so that an unsigned compare
+/// orders the signed values, and compares with `2³¹ ∓ SECTOR_MARGIN`.
+const SIGN32: u64 = 1 << 31;
 
 /// The backface screener (see the [module documentation](self)): a pipeline that accepts one
 /// patch per clock.
@@ -928,9 +923,9 @@ impl Default for Screener {
             zero18: Constant::new(0u64.into()),
             zero32: Constant::new(0u64.into()),
             one32: Constant::new(1u64.into()),
-            msb32: Constant::new(0x8000_0000u64.into()),
-            thr_f: Constant::new(0x7FFF_FF00u64.into()),
-            thr_l: Constant::new(0x8000_0100u64.into()),
+            msb32: Constant::new(SIGN32.into()),
+            thr_f: Constant::new((SIGN32 - SECTOR_MARGIN as u64).into()),
+            thr_l: Constant::new((SIGN32 + SECTOR_MARGIN as u64).into()),
             zero16: Constant::new(0u64.into()),
             zero14: Constant::new(0u64.into()),
             zero8: Constant::new(0u64.into()),
@@ -952,9 +947,9 @@ impl Default for Screener {
             c4_6: Constant::new(4u64.into()),
             c2_6: Constant::new(2u64.into()),
             c1_6: Constant::new(1u64.into()),
-            sh_lo: Constant::new(61u64.into()),
-            sh_m1: Constant::new(63u64.into()),
-            sh_m2: Constant::new(62u64.into()),
+            sh_lo: Constant::new(to_bits(SH_MIN as i64, SH_BITS).into()),
+            sh_m1: Constant::new(to_bits(-1, SH_BITS).into()),
+            sh_m2: Constant::new(to_bits(-2, SH_BITS).into()),
             tag_pass: Constant::new(1u64.into()),
             tag_negx: Constant::new(2u64.into()),
             tag_negy: Constant::new(4u64.into()),

@@ -60,7 +60,7 @@
 //!   each candidate for the ray's nearest hit (registered: larger key, equal key, lower id);
 //! * stage 9: the newest candidate picks the verdict; write back at the end of the clock.
 //!
-//! Every register of the unit is in a hand-written leaf (`leaf.rs`; a Rust model on plain
+//! Every register of the unit is in a hand-written leaf ([`stages`]; a Rust model on plain
 //! integers and a Verilog body), so that a settle pass of the simulation visits a handful of
 //! blocks instead of some eighty `DFF`s: [`IssueSequencer`] (stages 0 and 1: the sequencer,
 //! the current patch, the issued ray's operands and tag), [`RayProductsPipe`] and
@@ -69,7 +69,7 @@
 //! and 9: comparisons, forwarding, verdict, write-back and the readout's clear), and the five
 //! [`BramOut`]s. The unit's own logic is wiring, the ray memory's read-address multiplexer and
 //! the readout's zeroing, all combinational. (As 73 `DFF`s of the unit, the registers cost the
-//! simulation 2.7 times as long: README, "Speed".)
+//! simulation 2.7 times as long: PERFORMANCE.md, "Speed".)
 //!
 //! `tests` counts a live test three clocks after its issue.
 //!
@@ -106,26 +106,21 @@
 //!
 //! # Models
 //!
-//! [`model::test`], [`model::key`] and [`model::replaces`] are the bit-true model; the
+//! [`model::test`], [`key`] and [`model::replaces`] are the bit-true model (the key and the
+//! [`Nearest`] record live in [`crate::formats`], shared with the stages and the hosts); the
 //! testbench's `intersection::model_bundle` applies them to a whole job stream.
 
-use crate::formats::{cross, dot, SH_MAX, SH_MIN};
-use crate::leaf::{
-    BramOut, HitPipe, IssueSequencer, KeyScalePipe, NearestMerge, RayProductsPipe, KEY_PIPE_LATENCY,
-};
-use crate::screener::model::PatchSetup;
+use crate::formats::{cross, dot, key, Nearest, PatchSetup};
+use crate::prim::BramOut;
 use rust_hdl::prelude::*;
+
+pub mod stages;
+
+use stages::{HitPipe, IssueSequencer, KeyScalePipe, NearestMerge, RayProductsPipe, KEY_PIPE_LATENCY};
 
 /// The bit-true model of the intersection unit.
 pub mod model {
     use super::*;
-
-    /// A ray's nearest hit: distance key (larger is nearer) and patch id.
-    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-    pub struct Nearest {
-        pub key: u32,
-        pub id: u16,
-    }
 
     /// Tests one ray (direction `d`, Q2.16) against a set-up patch: the distance key of the hit,
     /// or `None`. The ray hits when `a` lies on its right or on it and `b` on its left or on it;
@@ -138,26 +133,6 @@ pub mod model {
             return None;
         }
         Some(key(dot(d, p.w), p.sh))
-    }
-
-    /// The distance key of a hit from `q = dot(d, w)`: `q·2^-sh`, truncated, clamped into
-    /// `[1, 2³² − 1]` (a grazing hit whose `q` rounds to zero or below is the farthest key; one
-    /// nearer than 2⁻⁶ units saturates). `|q| < 2^29.5`, so `q << 2` never overflows.
-    #[inline]
-    pub fn key(q: i32, sh: i8) -> u32 {
-        if q <= 0 {
-            return 1;
-        }
-        let q = q as u32;
-        let sh = sh.clamp(SH_MIN as i8, SH_MAX as i8);
-        let u = if sh >= 0 {
-            q >> sh
-        } else if (q >> (32 + sh as i32)) != 0 {
-            u32::MAX
-        } else {
-            q << -sh
-        };
-        u.max(1)
     }
 
     /// `true` when a hit with `key` on patch `id` replaces `old`: a larger key (nearer), or an

@@ -1,0 +1,890 @@
+//! The intersection unit's stages, each a hand-written leaf (a Rust model on plain integers and
+//! a Verilog body), so that a settle pass of the simulation visits a handful of blocks instead of
+//! some eighty `DFF`s (as `DFF`s they cost the simulation 2.7 times as long: PERFORMANCE.md, "Speed").
+//! Their outputs are registers or functions of registers only, so they add no update pass.
+//!
+//! * [`IssueSequencer`]: stages 0–1, the sequencer, the current patch, the issued ray's
+//!   operands and tag.
+//! * [`RayProductsPipe`]: the six products of a ray direction with a patch's three vectors and
+//!   their operand registers (six DSP blocks; on ECP5 the `MULT18X18D`s' own input and output
+//!   registers); one leaf so that a settle pass visits one block instead of twelve.
+//! * [`KeyScalePipe`]: the distance key, `q·2^-sh` saturated into `[1, 2³² − 1]` in four
+//!   register stages, the bit-true [`crate::formats::key`]. It is a leaf because it is a barrel
+//!   shifter: rust-hdl 0.46 simulates every `<<`, `>>` and `get_bits` of a `Bits` through a
+//!   heap-allocated big integer, which made this one stage a third of the unit's simulation
+//!   time.
+//! * [`HitPipe`]: stages 2–8 but for the products and the key: live bit, test counter, side
+//!   values, hit decision, each test's ray and id.
+//! * [`NearestMerge`]: stages 8–9 and the readout's clear: comparisons, forwarding, verdict and
+//!   write-back.
+//!
+//! Their Rust and Verilog halves are checked against each other by the unit's rung-4 replays.
+
+use crate::formats::{from_bits, key, PRODUCT_SHIFT};
+use crate::prim::clocked;
+use crate::prim::mul::mult18x18d;
+use rust_hdl::prelude::*;
+
+/// The plain Verilog of [`RayProductsPipe`] (every simulator, the formal tasks, iCE40 and the
+/// rung-5 netlists): operand registers, six signed products, registered outputs.
+fn ray_products_verilog() -> String {
+    let mut v = String::from(
+        "\
+reg signed [17:0] dx_r;
+reg signed [17:0] dy_r;
+",
+    );
+    let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
+    for o in ops {
+        v += &format!("reg signed [17:0] {o}_1;\nreg signed [17:0] {o}_r;\n");
+    }
+    let products = [("dx", "ay"), ("dy", "ax"), ("dx", "by"), ("dy", "bx"), ("dx", "wx"), ("dy", "wy")];
+    for (d, o) in products {
+        v += &format!("wire signed [35:0] {d}_{o}_m = {d}_r * {o}_r;\n");
+    }
+    v += "initial begin\n   dx_r = 18'sd0;\n   dy_r = 18'sd0;\n";
+    for o in ops {
+        v += &format!("   {o}_1 = 18'sd0;\n   {o}_r = 18'sd0;\n");
+    }
+    for (d, o) in products {
+        v += &format!("   {d}_{o} = 32'd0;\n");
+    }
+    v += "end\nalways @(posedge clock) begin\n   dx_r <= dx;\n   dy_r <= dy;\n";
+    for o in ops {
+        v += &format!("   {o}_1 <= {o};\n   {o}_r <= {o}_1;\n");
+    }
+    for (d, o) in products {
+        v += &format!("   {d}_{o} <= {d}_{o}_m[{}:{}];\n", 31 + PRODUCT_SHIFT, PRODUCT_SHIFT);
+    }
+    v += "end\n";
+    v
+}
+
+/// Clocks from presenting `q` and `sh` to [`KeyScalePipe`] to their key on `key`.
+pub const KEY_PIPE_LATENCY: u64 = 4;
+
+/// The intersection unit's distance-key stage, three register stages after its input
+/// registers, for a faster clock: the distance key of [`crate::formats::key`] of the `q` and `sh` presented
+/// [`KEY_PIPE_LATENCY`] clocks earlier, one key per clock. Stage 1 selects the left shift (for
+/// `sh < 0`, saturating), the value 1 (for `q < 0`) or `q` shifted right by the multiple of 8 in
+/// `sh`; stage 2 shifts right by the rest (0 to 7); stage 3 raises a zero to 1.
+#[derive(LogicBlock, Default)]
+pub struct KeyScalePipe {
+    pub clock: Signal<In, Clock>,
+    pub q: Signal<In, Bits<32>>,
+    pub sh: Signal<In, Bits<6>>,
+    pub key: Signal<Out, Bits<32>>,
+    /// The inputs of the last three clocks, newest first.
+    _pipe: [(u32, i8); 3],
+}
+
+impl Logic for KeyScalePipe {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let (q, sh) = self._pipe[2];
+            self.key.next = Bits::from(key(q as i32, sh) as u64);
+            self._pipe = [
+                (self.q.val().to_u32(), from_bits(self.sh.val().to_u64(), 6) as i8),
+                self._pipe[0],
+                self._pipe[1],
+            ];
+        }
+    }
+
+    fn connect(&mut self) {
+        self.key.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        // sh < -3 is clamped to -3 (SH_MIN), as in the model. A zero q gives zero in stages 1
+        // and 2 (any shift) and 1 in stage 3, as a negative one does.
+        Verilog::Custom(
+            "\
+reg [31:0] q_r;
+reg [5:0] sh_r;
+reg [31:0] c1;
+reg [2:0] f1;
+reg [31:0] r2;
+reg [31:0] left;
+reg [31:0] coarse;
+initial begin
+   q_r = 32'd0;
+   sh_r = 6'd0;
+   c1 = 32'd0;
+   f1 = 3'd0;
+   r2 = 32'd0;
+   key = 32'd0;
+end
+always @(*) begin
+   if (sh_r == 6'h3f) left = {q_r[30:0], 1'b0};
+   else if (sh_r == 6'h3e) left = (q_r[31:30] == 2'd0) ? {q_r[29:0], 2'b0} : 32'hffffffff;
+   else left = (q_r[31:29] == 3'd0) ? {q_r[28:0], 3'b0} : 32'hffffffff;
+   case (sh_r[4:3])
+      2'd0: coarse = q_r;
+      2'd1: coarse = {8'd0, q_r[31:8]};
+      2'd2: coarse = {16'd0, q_r[31:16]};
+      default: coarse = {24'd0, q_r[31:24]};
+   endcase
+end
+always @(posedge clock) begin
+   q_r <= q;
+   sh_r <= sh;
+   if (q_r[31]) begin
+      c1 <= 32'd1;
+      f1 <= 3'd0;
+   end else if (sh_r[5]) begin
+      c1 <= left;
+      f1 <= 3'd0;
+   end else begin
+      c1 <= coarse;
+      f1 <= sh_r[2:0];
+   end
+   r2 <= c1 >> f1;
+   key <= (r2 == 32'd0) ? 32'd1 : r2;
+end
+"
+            .into(),
+        )
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        clocked("key_scale_pipe", &["q", "sh"], &["key"])
+    }
+}
+
+/// The intersection unit's six products of one ray direction `d` with a patch's three vectors
+/// `a`, `b`, `w`: six [`Mul18`]s in one leaf, with the patch operands held one clock longer
+/// than the direction. Outputs, each `(d·x) >> 4` as 32 bits ([`crate::formats::mul`]):
+/// `dx_ay`, `dy_ax`, `dx_by`, `dy_bx`, `dx_wx`, `dy_wy`.
+///
+/// Timing: `ax` … `wy` are presented in one clock (stage 0), `dx`, `dy` in the next (stage 1);
+/// their products appear two clocks after `dx`, `dy` (stage 3), one set per clock. The
+/// operand registers of stage 1 and the multipliers' input and output registers are inside the
+/// leaf: in simulation they are six integers instead of six `DFF`s and six `Mul18` blocks in
+/// every settle pass. Maps to six DSP blocks, as six `Mul18`s do.
+///
+/// On ECP5 (Verilog define `SHELLING_ECP5`) the multipliers are six [`mult18x18d`](crate::prim::mul::mult18x18d) instances
+/// with their own input and output registers; without the define the Verilog is plain
+/// registers and products.
+#[derive(LogicBlock, Default)]
+pub struct RayProductsPipe {
+    pub clock: Signal<In, Clock>,
+    pub dx: Signal<In, Bits<18>>,
+    pub dy: Signal<In, Bits<18>>,
+    pub ax: Signal<In, Bits<18>>,
+    pub ay: Signal<In, Bits<18>>,
+    pub bx: Signal<In, Bits<18>>,
+    pub by: Signal<In, Bits<18>>,
+    pub wx: Signal<In, Bits<18>>,
+    pub wy: Signal<In, Bits<18>>,
+    pub dx_ay: Signal<Out, Bits<32>>,
+    pub dy_ax: Signal<Out, Bits<32>>,
+    pub dx_by: Signal<Out, Bits<32>>,
+    pub dy_bx: Signal<Out, Bits<32>>,
+    pub dx_wx: Signal<Out, Bits<32>>,
+    pub dy_wy: Signal<Out, Bits<32>>,
+    /// Stage-1 operand registers: ax, ay, bx, by, wx, wy.
+    _ops: [i64; 6],
+    /// Multiplier input registers: dx, dy, then the operands.
+    _mul: [i64; 8],
+}
+
+impl Logic for RayProductsPipe {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let [dx, dy, ax, ay, bx, by, wx, wy] = self._mul;
+            let p = |x: i64, y: i64| Bits::<32>::from(((x * y) >> PRODUCT_SHIFT) as u32 as u64);
+            self.dx_ay.next = p(dx, ay);
+            self.dy_ax.next = p(dy, ax);
+            self.dx_by.next = p(dx, by);
+            self.dy_bx.next = p(dy, bx);
+            self.dx_wx.next = p(dx, wx);
+            self.dy_wy.next = p(dy, wy);
+            let v = |b: Bits<18>| from_bits(b.to_u64(), 18);
+            let o = self._ops;
+            self._mul = [v(self.dx.val()), v(self.dy.val()), o[0], o[1], o[2], o[3], o[4], o[5]];
+            self._ops = [
+                v(self.ax.val()),
+                v(self.ay.val()),
+                v(self.bx.val()),
+                v(self.by.val()),
+                v(self.wx.val()),
+                v(self.wy.val()),
+            ];
+        }
+    }
+
+    fn connect(&mut self) {
+        self.dx_ay.connect();
+        self.dy_ax.connect();
+        self.dx_by.connect();
+        self.dy_bx.connect();
+        self.dx_wx.connect();
+        self.dy_wy.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let generic = ray_products_verilog();
+        let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
+        let mut v = String::from("`ifdef SHELLING_ECP5\n");
+        for o in ops {
+            v += &format!("reg [17:0] {o}_1;\n");
+        }
+        v += "initial begin\n";
+        for o in ops {
+            v += &format!("   {o}_1 = 18'd0;\n");
+        }
+        v += "end\nalways @(posedge clock) begin\n";
+        for o in ops {
+            v += &format!("   {o}_1 <= {o};\n");
+        }
+        v += "end\n";
+        let products = [("dx", "ay"), ("dy", "ax"), ("dx", "by"), ("dy", "bx"), ("dx", "wx"), ("dy", "wy")];
+        for (d, o) in products {
+            v += &format!("wire [35:0] {d}_{o}_p;\n");
+            v += &mult18x18d(&format!("{d}_{o}_dsp"), d, &format!("{o}_1"), &format!("{d}_{o}_p"));
+        }
+        v += "always @(*) begin\n";
+        for (d, o) in products {
+            v += &format!("   {d}_{o} = {d}_{o}_p[{}:{}];\n", 31 + PRODUCT_SHIFT, PRODUCT_SHIFT);
+        }
+        v += "end\n`else\n";
+        v += &generic;
+        v += "`endif\n";
+        Verilog::Custom(v)
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        clocked(
+            "ray_products_pipe",
+            &["dx", "dy", "ax", "ay", "bx", "by", "wx", "wy"],
+            &["dx_ay", "dy_ax", "dx_by", "dy_bx", "dx_wx", "dy_wy"],
+        )
+    }
+}
+
+/// A `Bits<N>` from a plain integer (the low `N` bits).
+#[inline(always)]
+fn bits<const N: usize>(v: u32) -> Bits<N> {
+    Bits::from(v as u64)
+}
+
+/// The registers of [`IssueSequencer`], as in its Verilog.
+#[derive(Clone, Copy, Debug, Default)]
+struct IssueRegs {
+    remaining: u32,
+    /// `remaining > 1`, kept in a register of its own.
+    full: bool,
+    cur: u32,
+    /// The current patch: ax, ay, bx, by, wx, wy.
+    p: [u32; 6],
+    p_sh: u32,
+    p_id: u32,
+    p_retire: bool,
+    v1: bool,
+    tag1: u32,
+    /// Stage 1's patch operands: ax, ay, bx, by, wx, wy.
+    o: [u32; 6],
+}
+
+/// The intersection unit's stages 0 and 1 ([`crate::intersection`]): the sequencer that issues
+/// one ray of the current patch per clock, the current patch's fields, and stage 1's registers.
+///
+/// Ports (formats as in the unit's patch port): in `patch_valid`, `patch_ax` … `patch_wy` (18
+/// bits each, two's complement), `patch_sh` (6), `patch_id` (16), `patch_first` (10),
+/// `patch_count` (11), `patch_retire`; out `full`, `busy`, `kill`, `cur` (10), `v1`,
+/// `tag1` (32), `o_ax` … `o_wy` (18 each).
+///
+/// Registers: `remaining` (rays of the current patch still to issue), `full` (`remaining > 1`:
+/// no patch can be taken), `cur` (the ray issued in this clock while `remaining ≠ 0`), the
+/// current patch `p_*` and stage 1: `v1` (a ray of a test job was issued in the clock before),
+/// `tag1` = `{ray (31…22), sh (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
+/// patch is taken at the rising edge when `patch_valid && !full`; otherwise a ray issues when
+/// `remaining ≠ 0` (`remaining` counts down, `cur` up, modulo 1024). `full` is updated beside
+/// `remaining` from shallow tests (`patch_count > 1` on a take, `remaining > 2` on an issue),
+/// so that the unit's `patch_ready`, its complement, is a register: in the processing element
+/// it feeds the slice in front of the unit, whose pop decides the take.
+///
+/// Outputs, all functions of the registers only (so the leaf has no combinational path from an
+/// input): `full` (the register), `busy` = a ray issues or `v1`, `kill` = a ray of a
+/// retire job issues (its live bit is cleared), and the registers `cur`, `v1`, `tag1`, `o_*`.
+/// Latency: `v1`, `tag1` and `o_*` describe the ray issued one clock earlier. All registers
+/// are zero at power-up.
+#[derive(LogicBlock, Default)]
+pub struct IssueSequencer {
+    pub clock: Signal<In, Clock>,
+    pub patch_valid: Signal<In, bool>,
+    pub patch_ax: Signal<In, Bits<18>>,
+    pub patch_ay: Signal<In, Bits<18>>,
+    pub patch_bx: Signal<In, Bits<18>>,
+    pub patch_by: Signal<In, Bits<18>>,
+    pub patch_wx: Signal<In, Bits<18>>,
+    pub patch_wy: Signal<In, Bits<18>>,
+    pub patch_sh: Signal<In, Bits<6>>,
+    pub patch_id: Signal<In, Bits<16>>,
+    pub patch_first: Signal<In, Bits<10>>,
+    pub patch_count: Signal<In, Bits<11>>,
+    pub patch_retire: Signal<In, bool>,
+    pub full: Signal<Out, bool>,
+    pub busy: Signal<Out, bool>,
+    pub kill: Signal<Out, bool>,
+    pub cur: Signal<Out, Bits<10>>,
+    pub v1: Signal<Out, bool>,
+    pub tag1: Signal<Out, Bits<32>>,
+    pub o_ax: Signal<Out, Bits<18>>,
+    pub o_ay: Signal<Out, Bits<18>>,
+    pub o_bx: Signal<Out, Bits<18>>,
+    pub o_by: Signal<Out, Bits<18>>,
+    pub o_wx: Signal<Out, Bits<18>>,
+    pub o_wy: Signal<Out, Bits<18>>,
+    _r: IssueRegs,
+}
+
+impl Logic for IssueSequencer {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let s = self._r;
+            let issue = s.remaining != 0;
+            let mut n = s;
+            n.v1 = issue && !s.p_retire;
+            n.tag1 = (s.cur << 22) | (s.p_sh << 16) | s.p_id;
+            n.o = s.p;
+            if self.patch_valid.val() && !s.full {
+                n.remaining = self.patch_count.val().to_u32();
+                n.full = n.remaining > 1;
+                n.cur = self.patch_first.val().to_u32();
+                n.p = [
+                    self.patch_ax.val().to_u32(),
+                    self.patch_ay.val().to_u32(),
+                    self.patch_bx.val().to_u32(),
+                    self.patch_by.val().to_u32(),
+                    self.patch_wx.val().to_u32(),
+                    self.patch_wy.val().to_u32(),
+                ];
+                n.p_sh = self.patch_sh.val().to_u32();
+                n.p_id = self.patch_id.val().to_u32();
+                n.p_retire = self.patch_retire.val();
+            } else if issue {
+                n.remaining = s.remaining - 1;
+                n.full = s.remaining > 2;
+                n.cur = (s.cur + 1) & 0x3ff;
+            }
+            debug_assert_eq!(n.full, n.remaining > 1);
+            self._r = n;
+            let issue = n.remaining != 0;
+            self.full.next = n.full;
+            self.busy.next = issue || n.v1;
+            self.kill.next = issue && n.p_retire;
+            self.cur.next = bits(n.cur);
+            self.v1.next = n.v1;
+            self.tag1.next = bits(n.tag1);
+            self.o_ax.next = bits(n.o[0]);
+            self.o_ay.next = bits(n.o[1]);
+            self.o_bx.next = bits(n.o[2]);
+            self.o_by.next = bits(n.o[3]);
+            self.o_wx.next = bits(n.o[4]);
+            self.o_wy.next = bits(n.o[5]);
+        }
+    }
+
+    fn connect(&mut self) {
+        self.full.connect();
+        self.busy.connect();
+        self.kill.connect();
+        self.cur.connect();
+        self.v1.connect();
+        self.tag1.connect();
+        self.o_ax.connect();
+        self.o_ay.connect();
+        self.o_bx.connect();
+        self.o_by.connect();
+        self.o_wx.connect();
+        self.o_wy.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let ops = ["ax", "ay", "bx", "by", "wx", "wy"];
+        let mut v = String::from("reg [10:0] remaining;\nreg p_retire;\nreg [5:0] p_sh;\nreg [15:0] p_id;\n");
+        for o in ops {
+            v += &format!("reg [17:0] p_{o};\n");
+        }
+        v += "wire issue = remaining != 11'd0;\n";
+        v += "initial begin\n   remaining = 11'd0;\n   p_retire = 1'b0;\n   p_sh = 6'd0;\n   p_id = 16'd0;\n";
+        v += "   full = 1'b0;\n   cur = 10'd0;\n   v1 = 1'b0;\n   tag1 = 32'd0;\n";
+        for o in ops {
+            v += &format!("   p_{o} = 18'd0;\n   o_{o} = 18'd0;\n");
+        }
+        v += "end\n";
+        v += "always @(*) begin\n   busy = issue || v1;\n   kill = issue && p_retire;\nend\n";
+        v += "always @(posedge clock) begin\n   v1 <= issue && !p_retire;\n   tag1 <= {cur, p_sh, p_id};\n";
+        for o in ops {
+            v += &format!("   o_{o} <= p_{o};\n");
+        }
+        v += "   if (patch_valid && !full) begin\n      remaining <= patch_count;\n";
+        v += "      full <= patch_count[10:1] != 10'd0;\n      cur <= patch_first;\n";
+        for o in ops {
+            v += &format!("      p_{o} <= patch_{o};\n");
+        }
+        v += "      p_sh <= patch_sh;\n      p_id <= patch_id;\n      p_retire <= patch_retire;\n";
+        v += "   end else if (issue) begin\n      remaining <= remaining - 11'd1;\n";
+        v += "      full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;\n      cur <= cur + 10'd1;\n   end\nend\n";
+        Verilog::Custom(v)
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        clocked(
+            "issue_sequencer",
+            &[
+                "patch_valid",
+                "patch_ax",
+                "patch_ay",
+                "patch_bx",
+                "patch_by",
+                "patch_wx",
+                "patch_wy",
+                "patch_sh",
+                "patch_id",
+                "patch_first",
+                "patch_count",
+                "patch_retire",
+            ],
+            &["full", "busy", "kill", "cur", "v1", "tag1", "o_ax", "o_ay", "o_bx", "o_by", "o_wx", "o_wy"],
+        )
+    }
+}
+
+/// The registers of [`HitPipe`], as in its Verilog: `v[k]` is stage `k`'s valid bit (index
+/// 0 and 1 unused), `tag2` … `tag4` the issue's tag, `t5` … `t8` its ray and id.
+#[derive(Clone, Copy, Debug, Default)]
+struct HitRegs {
+    v: [bool; 9],
+    tag2: u32,
+    tag3: u32,
+    tag4: u32,
+    count: u32,
+    sa5: u32,
+    sb5: u32,
+    t5: u32,
+    t6: u32,
+    t7: u32,
+    t8: u32,
+}
+
+/// The intersection unit's stages 2 to 8 ([`crate::intersection`]) but for the products and the
+/// key (the [`RayProductsPipe`] and [`KeyScalePipe`] leaves beside it): the live bit, the test
+/// counter, the side values, the hit decision, and each test's ray and patch id until its key
+/// arrives.
+///
+/// Ports: in `v1`, `tag1` (32: ray 31…22, `sh` 21…16, id 15…0) from [`IssueSequencer`], `alive`
+/// (the ray's live bit, arriving in stage 2), the products `dx_ay`, `dy_ax`, `dx_by`, `dy_bx`
+/// (32 bits two's complement, arriving in stage 4); out `tests` (32, the live tests so far,
+/// wrapping), `busy` (a test in stages 2 to 8), `sh4` (6: stage 4's `sh`, for the key leaf),
+/// `ray6` (10: stage 6's ray, the ray-memory read), `v8` and `tag8` (26: ray 25…16, id 15…0):
+/// stage 8's hit.
+///
+/// Stages (one register set each, clock by clock): 2 takes `v1`, `tag1`; 3: the test is live
+/// (`v2 && alive`; `tests` counts it); 4: a copy; 5: `sa5 = dx_ay − dy_ax`, `sb5 = dx_by −
+/// dy_bx` (32 bits, wrapping), the ray and id; 6: hit = `v5 && sa5 ≤ 0 ≤ sb5` (signed); 7, 8:
+/// copies. So `v8`, `tag8` describe the ray issued eight clocks before, `tests` counts a live
+/// test three clocks after its issue. Outputs are registers or functions of registers only.
+/// All registers are zero at power-up.
+#[derive(LogicBlock, Default)]
+pub struct HitPipe {
+    pub clock: Signal<In, Clock>,
+    pub v1: Signal<In, bool>,
+    pub tag1: Signal<In, Bits<32>>,
+    pub alive: Signal<In, bool>,
+    pub dx_ay: Signal<In, Bits<32>>,
+    pub dy_ax: Signal<In, Bits<32>>,
+    pub dx_by: Signal<In, Bits<32>>,
+    pub dy_bx: Signal<In, Bits<32>>,
+    pub tests: Signal<Out, Bits<32>>,
+    pub busy: Signal<Out, bool>,
+    pub sh4: Signal<Out, Bits<6>>,
+    pub ray6: Signal<Out, Bits<10>>,
+    pub v8: Signal<Out, bool>,
+    pub tag8: Signal<Out, Bits<26>>,
+    _r: HitRegs,
+}
+
+impl Logic for HitPipe {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let s = self._r;
+            let live = s.v[2] && self.alive.val();
+            let n = HitRegs {
+                v: [
+                    false,
+                    false,
+                    self.v1.val(),
+                    live,
+                    s.v[3],
+                    s.v[4],
+                    s.v[5] && (s.sa5 == 0 || s.sa5 >> 31 != 0) && s.sb5 >> 31 == 0,
+                    s.v[6],
+                    s.v[7],
+                ],
+                tag2: self.tag1.val().to_u32(),
+                tag3: s.tag2,
+                tag4: s.tag3,
+                count: s.count.wrapping_add(live as u32),
+                sa5: self.dx_ay.val().to_u32().wrapping_sub(self.dy_ax.val().to_u32()),
+                sb5: self.dx_by.val().to_u32().wrapping_sub(self.dy_bx.val().to_u32()),
+                t5: ((s.tag4 >> 22) << 16) | (s.tag4 & 0xffff),
+                t6: s.t5,
+                t7: s.t6,
+                t8: s.t7,
+            };
+            self._r = n;
+            self.tests.next = bits(n.count);
+            self.busy.next = n.v[2..].iter().any(|&v| v);
+            self.sh4.next = bits((n.tag4 >> 16) & 0x3f);
+            self.ray6.next = bits(n.t6 >> 16);
+            self.v8.next = n.v[8];
+            self.tag8.next = bits(n.t8);
+        }
+    }
+
+    fn connect(&mut self) {
+        self.tests.connect();
+        self.busy.connect();
+        self.sh4.connect();
+        self.ray6.connect();
+        self.v8.connect();
+        self.tag8.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(
+            "\
+reg v2, v3, v4, v5, v6, v7;
+reg [31:0] tag2;
+reg [31:0] tag3;
+reg [31:0] tag4;
+reg [31:0] sa5;
+reg [31:0] sb5;
+reg [25:0] t5;
+reg [25:0] t6;
+reg [25:0] t7;
+wire live = v2 && alive;
+initial begin
+   v2 = 1'b0;
+   v3 = 1'b0;
+   v4 = 1'b0;
+   v5 = 1'b0;
+   v6 = 1'b0;
+   v7 = 1'b0;
+   v8 = 1'b0;
+   tag2 = 32'd0;
+   tag3 = 32'd0;
+   tag4 = 32'd0;
+   sa5 = 32'd0;
+   sb5 = 32'd0;
+   t5 = 26'd0;
+   t6 = 26'd0;
+   t7 = 26'd0;
+   tag8 = 26'd0;
+   tests = 32'd0;
+end
+always @(*) begin
+   busy = v2 || v3 || v4 || v5 || v6 || v7 || v8;
+   sh4 = tag4[21:16];
+   ray6 = t6[25:16];
+end
+always @(posedge clock) begin
+   v2 <= v1;
+   tag2 <= tag1;
+   v3 <= live;
+   tag3 <= tag2;
+   if (live) tests <= tests + 32'd1;
+   v4 <= v3;
+   tag4 <= tag3;
+   v5 <= v4;
+   sa5 <= dx_ay - dy_ax;
+   sb5 <= dx_by - dy_bx;
+   t5 <= {tag4[31:22], tag4[15:0]};
+   v6 <= v5 && (sa5 == 32'd0 || sa5[31]) && !sb5[31];
+   t6 <= t5;
+   v7 <= v6;
+   t7 <= t6;
+   v8 <= v7;
+   tag8 <= t7;
+end
+"
+            .into(),
+        )
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        clocked(
+            "hit_pipe",
+            &["v1", "tag1", "alive", "dx_ay", "dy_ax", "dx_by", "dy_bx"],
+            &["tests", "busy", "sh4", "ray6", "v8", "tag8"],
+        )
+    }
+}
+
+/// One write of [`NearestMerge`]'s forwarding registers: verdict (written), ray, key, id.
+#[derive(Clone, Copy, Debug, Default)]
+struct MergeWrite {
+    valid: bool,
+    ray: u32,
+    key: u32,
+    id: u32,
+}
+
+/// The registers of [`NearestMerge`], as in its Verilog.
+#[derive(Clone, Copy, Debug, Default)]
+struct MergeRegs {
+    /// The new hit against the memory's word: hit flag, larger key, equal key, lower id.
+    cm: [bool; 4],
+    /// Against stage 9's write, the last one and the one before (`c1`, `c2`, `c3`): larger
+    /// key, equal key, lower id.
+    c: [[bool; 3]; 3],
+    /// Stage 9's ray is that of the write one, two, three clocks back (`m1` … `m3`).
+    m: [bool; 3],
+    v9: bool,
+    ray9: u32,
+    id9: u32,
+    key9: u32,
+    /// The writes of the last two clocks (`fw`, `fw2`).
+    fw: [MergeWrite; 2],
+    fw3_valid: bool,
+    rd_valid: bool,
+    rd_addr: u32,
+    z1: bool,
+    z2: bool,
+}
+
+impl MergeRegs {
+    /// Stage 9's verdict: the newest of the last three writes to the ray decides, otherwise the
+    /// memory's word.
+    fn better(&self) -> bool {
+        let wins = |c: [bool; 3]| c[0] || (c[1] && c[2]);
+        let w = if self.m[0] && self.fw[0].valid {
+            wins(self.c[0])
+        } else if self.m[1] && self.fw[1].valid {
+            wins(self.c[1])
+        } else if self.m[2] && self.fw3_valid {
+            wins(self.c[2])
+        } else {
+            !self.cm[0] || self.cm[1] || (self.cm[2] && self.cm[3])
+        };
+        self.v9 && w
+    }
+}
+
+/// The intersection unit's stages 8 and 9 and its readout clear ([`crate::intersection`]): the
+/// new hit against every candidate for its ray's nearest hit (the ray memory's word and the
+/// three writes after its read), the verdict, the write-back, and the clear of a ray read out.
+///
+/// Ports: in `v8`, `tag8` (26: ray 25…16, id 15…0) from [`HitPipe`], `key` (32, unsigned, from
+/// [`KeyScalePipe`]), the ray memory's word `mem_key` (32) and `mem_meta` (17: hit flag 16, id
+/// 15…0), all arriving in stage 8; the readout request `res_re`, `res_addr` (10); out the ray
+/// memory's write port `write_address` (10), `write_key` (32), `write_meta` (17),
+/// `write_enable`, `z2` (the readout answered now read a ray whose clear it could not see:
+/// report zero), `busy` (a test in stage 9) and `fw_valid` (stage 9 wrote in the clock
+/// before).
+///
+/// Stage 8 (registered at its end): the new key and id against the memory's word (`cm_*`: hit
+/// flag, larger key, equal key, lower id), against stage 9's (`c1_*`), the last write's
+/// (`c2_*`, `fw_*`) and the one before (`c3_*`, `fw2_*`); `m1` … `m3`: the ray is theirs.
+/// Stage 9 (combinational, from registers only): the newest write to the ray among the last
+/// three (`fw_valid`, `fw2_valid`, `fw3_valid`: the verdicts of the last three clocks)
+/// decides, without one the memory's word; a hit that wins is written (`{1, id}` and its key)
+/// at the end of the clock. A readout request is registered (`rd_valid`, `rd_addr`) and clears
+/// its ray in the next clock, in place of stage 9's write; `z1`, `z2` mark a readout of the
+/// ray read (and cleared) in the clock before, two clocks on. All registers are zero at
+/// power-up.
+#[derive(LogicBlock, Default)]
+pub struct NearestMerge {
+    pub clock: Signal<In, Clock>,
+    pub v8: Signal<In, bool>,
+    pub tag8: Signal<In, Bits<26>>,
+    pub key: Signal<In, Bits<32>>,
+    pub mem_key: Signal<In, Bits<32>>,
+    pub mem_meta: Signal<In, Bits<17>>,
+    pub res_re: Signal<In, bool>,
+    pub res_addr: Signal<In, Bits<10>>,
+    pub write_address: Signal<Out, Bits<10>>,
+    pub write_key: Signal<Out, Bits<32>>,
+    pub write_meta: Signal<Out, Bits<17>>,
+    pub write_enable: Signal<Out, bool>,
+    pub z2: Signal<Out, bool>,
+    pub busy: Signal<Out, bool>,
+    pub fw_valid: Signal<Out, bool>,
+    _r: MergeRegs,
+}
+
+impl Logic for NearestMerge {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            let s = self._r;
+            let t8 = self.tag8.val().to_u32();
+            let (ray8, id8) = (t8 >> 16, t8 & 0xffff);
+            let key = self.key.val().to_u32();
+            let (mem_key, meta) = (self.mem_key.val().to_u32(), self.mem_meta.val().to_u32());
+            let cmp = |k: u32, id: u32| [key > k, key == k, id8 < id];
+            let (res_re, res_addr) = (self.res_re.val(), self.res_addr.val().to_u32());
+            let n = MergeRegs {
+                cm: [meta >> 16 != 0, key > mem_key, key == mem_key, id8 < (meta & 0xffff)],
+                c: [cmp(s.key9, s.id9), cmp(s.fw[0].key, s.fw[0].id), cmp(s.fw[1].key, s.fw[1].id)],
+                m: [ray8 == s.ray9, ray8 == s.fw[0].ray, ray8 == s.fw[1].ray],
+                v9: self.v8.val(),
+                ray9: ray8,
+                id9: id8,
+                key9: key,
+                fw: [MergeWrite { valid: s.better(), ray: s.ray9, key: s.key9, id: s.id9 }, s.fw[0]],
+                fw3_valid: s.fw[1].valid,
+                rd_valid: res_re,
+                rd_addr: res_addr,
+                z1: res_re && s.rd_valid && res_addr == s.rd_addr,
+                z2: s.z1,
+            };
+            self._r = n;
+            if n.rd_valid {
+                self.write_address.next = bits(n.rd_addr);
+                self.write_key.next = bits(0);
+                self.write_meta.next = bits(0);
+                self.write_enable.next = true;
+            } else {
+                self.write_address.next = bits(n.ray9);
+                self.write_key.next = bits(n.key9);
+                self.write_meta.next = bits(0x1_0000 | n.id9);
+                self.write_enable.next = n.better();
+            }
+            self.z2.next = n.z2;
+            self.busy.next = n.v9;
+            self.fw_valid.next = n.fw[0].valid;
+        }
+    }
+
+    fn connect(&mut self) {
+        self.write_address.connect();
+        self.write_key.connect();
+        self.write_meta.connect();
+        self.write_enable.connect();
+        self.z2.connect();
+        self.busy.connect();
+        self.fw_valid.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let mut v = String::from(
+            "\
+wire [9:0] ray8 = tag8[25:16];
+wire [15:0] id8 = tag8[15:0];
+reg cm_hit, cm_gt, cm_eq, cm_lt;
+reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
+reg m1, m2, m3;
+reg v9;
+reg [9:0] ray9;
+reg [15:0] id9;
+reg [31:0] key9;
+reg [9:0] fw_ray;
+reg [31:0] fw_key;
+reg [15:0] fw_id;
+reg fw2_valid;
+reg [9:0] fw2_ray;
+reg [31:0] fw2_key;
+reg [15:0] fw2_id;
+reg fw3_valid;
+reg rd_valid;
+reg [9:0] rd_addr;
+reg z1;
+reg better;
+initial begin
+",
+        );
+        for r in [
+            "cm_hit",
+            "cm_gt",
+            "cm_eq",
+            "cm_lt",
+            "m1",
+            "m2",
+            "m3",
+            "v9",
+            "fw_valid",
+            "fw2_valid",
+            "fw3_valid",
+        ] {
+            v += &format!("   {r} = 1'b0;\n");
+        }
+        for c in 1..=3 {
+            v += &format!("   c{c}_gt = 1'b0;\n   c{c}_eq = 1'b0;\n   c{c}_lt = 1'b0;\n");
+        }
+        for r in ["ray9", "fw_ray", "fw2_ray", "rd_addr"] {
+            v += &format!("   {r} = 10'd0;\n");
+        }
+        for r in ["id9", "fw_id", "fw2_id"] {
+            v += &format!("   {r} = 16'd0;\n");
+        }
+        for r in ["key9", "fw_key", "fw2_key"] {
+            v += &format!("   {r} = 32'd0;\n");
+        }
+        v += "   rd_valid = 1'b0;\n   z1 = 1'b0;\n   z2 = 1'b0;\nend\n";
+        v += "\
+always @(*) begin
+   if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
+   else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
+   else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
+   else better = v9 && (!cm_hit || cm_gt || (cm_eq && cm_lt));
+   if (rd_valid) begin
+      write_address = rd_addr;
+      write_key = 32'd0;
+      write_meta = 17'd0;
+      write_enable = 1'b1;
+   end else begin
+      write_address = ray9;
+      write_key = key9;
+      write_meta = {1'b1, id9};
+      write_enable = better;
+   end
+   busy = v9;
+end
+always @(posedge clock) begin
+   cm_hit <= mem_meta[16];
+   cm_gt <= key > mem_key;
+   cm_eq <= key == mem_key;
+   cm_lt <= id8 < mem_meta[15:0];
+";
+        for (c, (k, id)) in
+            [("c1", ("key9", "id9")), ("c2", ("fw_key", "fw_id")), ("c3", ("fw2_key", "fw2_id"))]
+        {
+            v += &format!("   {c}_gt <= key > {k};\n   {c}_eq <= key == {k};\n   {c}_lt <= id8 < {id};\n");
+        }
+        v += "\
+   m1 <= ray8 == ray9;
+   m2 <= ray8 == fw_ray;
+   m3 <= ray8 == fw2_ray;
+   v9 <= v8;
+   ray9 <= ray8;
+   id9 <= id8;
+   key9 <= key;
+   fw_valid <= better;
+   fw_ray <= ray9;
+   fw_key <= key9;
+   fw_id <= id9;
+   fw2_valid <= fw_valid;
+   fw2_ray <= fw_ray;
+   fw2_key <= fw_key;
+   fw2_id <= fw_id;
+   fw3_valid <= fw2_valid;
+   rd_valid <= res_re;
+   rd_addr <= res_addr;
+   z1 <= res_re && rd_valid && res_addr == rd_addr;
+   z2 <= z1;
+end
+";
+        Verilog::Custom(v)
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        clocked(
+            "nearest_merge",
+            &["v8", "tag8", "key", "mem_key", "mem_meta", "res_re", "res_addr"],
+            &["write_address", "write_key", "write_meta", "write_enable", "z2", "busy", "fw_valid"],
+        )
+    }
+}
