@@ -3,6 +3,7 @@
 
 mod cli;
 mod cosim;
+mod ff3d;
 mod figures;
 mod grid3d;
 mod hardware;

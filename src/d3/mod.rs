@@ -20,10 +20,13 @@
 //!   traversal.
 //! * [`trace`]: the brute-force and conventional 3D tracers with backface screening and the
 //!   paper's counters (issue 18 part 4, first half).
+//! * [`form_factors`]: the 3D form factors `F_ij` of a polygon's row from cosine-weighted
+//!   hemisphere sets shot from `M` origins spread over it, by any tracer (issue 18 part 6).
 //!
 //! Conventions, the errors and the shipped scenes are documented in `SCENES3D.md`.
 
 pub mod brute;
+pub mod form_factors;
 pub mod gen;
 pub mod grid;
 pub mod hemisphere;

@@ -1,4 +1,5 @@
 //! Helpers shared by the test binaries of tier 1 (`tests/tests.rs`) and tier 2
 //! (`tests/tier2/main.rs`).
 
+pub mod closed3d;
 pub mod replay;
