@@ -18,7 +18,7 @@
 //!
 //! [`Grid::is_shared`]: crate::grid::Grid::is_shared
 
-use super::{offer, screen, with_scratch, CellPass, HitTest, SceneView, Screen};
+use super::{offer, screen, with_scratch, CellPass, HitTest, SceneView, Scratch, Screen};
 use crate::counters::Counters;
 use crate::geom::{hit_front, FrontQuad, Hit};
 use crate::rays::Bundle;
@@ -46,104 +46,68 @@ pub(super) fn trace<H: HitTest>(
             let mut best: Option<Hit> = None;
             grid.walk(ray.origin, ray.dir, |step| {
                 c.cells_traversed += 1;
-                if step.region.is_none() {
-                    let items = grid.cell_items(step.cell);
-                    if !H::HOOKS {
-                        // A private patch of the cell meets this ray here only (no mailbox), and
-                        // the cell's private patches are screened once for the source; the
-                        // shared ones go through the mailbox as below.
-                        let pass = &mut scratch.cell_pass[step.cell];
-                        if pass.stamp != source_tick {
-                            let start = scratch.pass_items.len() as u32;
-                            let passing = items.iter().filter(|&&p| {
-                                !grid.is_shared(p)
-                                    && screen(bundle, p, &scene.segments[p as usize]) == Screen::Pass
-                            });
-                            scratch.pass_items.extend(passing);
-                            let end = scratch.pass_items.len() as u32;
-                            let quads = scratch.pass_quads.len() as u32;
-                            for four in scratch.pass_items[start as usize..].chunks(4) {
-                                let mut q = FrontQuad::default();
-                                for (k, &p) in four.iter().enumerate() {
-                                    q.set(k, &scene.segments[p as usize]);
-                                }
-                                scratch.pass_quads.push(q);
-                            }
-                            *pass = CellPass { stamp: source_tick, start, end, quads };
-                        }
-                        let shared = grid.cell_shared_items(step.cell);
-                        let passing = &scratch.pass_items[pass.start as usize..pass.end as usize];
-                        c.patches_read_before_screening += (items.len() - shared.len()) as u64;
-                        c.patches_read_after_screening += passing.len() as u64;
-                        c.intersection_computations += passing.len() as u64;
-                        if H::GOLDEN {
-                            // Four patches at a time through the test's filter; the lanes it
-                            // cannot call a miss go to the test itself.
-                            let quads = &scratch.pass_quads[pass.quads as usize..];
-                            for (four, q) in passing.chunks(4).zip(quads) {
-                                let mut maybe = !q.certain_misses(ray) & ((1 << four.len()) - 1);
-                                while maybe != 0 {
-                                    let p = four[maybe.trailing_zeros() as usize];
-                                    maybe &= maybe - 1;
-                                    if let Some(t) = hit_front(ray, &scene.segments[p as usize]) {
-                                        offer(&mut best, Hit { t, segment: p });
-                                    }
-                                }
-                            }
-                        } else {
-                            for &p in passing {
-                                if let Some(t) = test.hit(bundle, r, p, &scene.segments[p as usize]) {
+                if step.region.is_some() {
+                    return true;
+                }
+                let items = grid.cell_items(step.cell);
+                // The patches that go through the mailbox one by one: all of them with a backend
+                // that observes the hooks, else the shared ones only.
+                let mailboxed = if H::HOOKS {
+                    items
+                } else {
+                    // A private patch meets this ray here only (no mailbox), and the cell's
+                    // private patches are screened once for the source.
+                    let pass = private_pass(scratch, scene, bundle, step.cell, source_tick);
+                    let shared = grid.cell_shared_items(step.cell);
+                    let passing = &scratch.pass_items[pass.start as usize..pass.end as usize];
+                    c.patches_read_before_screening += (items.len() - shared.len()) as u64;
+                    c.patches_read_after_screening += passing.len() as u64;
+                    c.intersection_computations += passing.len() as u64;
+                    if H::GOLDEN {
+                        // Four patches at a time through the test's filter; the lanes it cannot
+                        // call a miss go to the test itself.
+                        let quads = &scratch.pass_quads[pass.quads as usize..];
+                        for (four, q) in passing.chunks(4).zip(quads) {
+                            let mut maybe = !q.certain_misses(ray) & ((1 << four.len()) - 1);
+                            while maybe != 0 {
+                                let p = four[maybe.trailing_zeros() as usize];
+                                maybe &= maybe - 1;
+                                if let Some(t) = hit_front(ray, &scene.segments[p as usize]) {
                                     offer(&mut best, Hit { t, segment: p });
                                 }
                             }
                         }
-                        for &p in shared {
-                            let i = p as usize;
-                            let slot = &mut scratch.mailbox[i];
-                            if slot.ray == ray_tick {
-                                continue;
-                            }
-                            slot.ray = ray_tick;
-                            c.patches_read_before_screening += 1;
-                            let seg = &scene.segments[i];
-                            if slot.screened >> 1 != source_tick {
-                                let pass = screen(bundle, p, seg) == Screen::Pass;
-                                slot.screened = source_tick << 1 | pass as u64;
-                            }
-                            if slot.screened & 1 == 0 {
-                                continue;
-                            }
-                            c.patches_read_after_screening += 1;
-                            c.intersection_computations += 1;
-                            if let Some(t) = test.hit(bundle, r, p, seg) {
-                                offer(&mut best, Hit { t, segment: p });
-                            }
-                        }
                     } else {
-                        for &p in items {
-                            let i = p as usize;
-                            let slot = &mut scratch.mailbox[i];
-                            if slot.ray == ray_tick {
-                                continue;
-                            }
-                            slot.ray = ray_tick;
-                            c.patches_read_before_screening += 1;
-                            test.load(p);
-                            let seg = &scene.segments[i];
-                            if slot.screened >> 1 != source_tick {
-                                let pass = screen(bundle, p, seg) == Screen::Pass;
-                                slot.screened = source_tick << 1 | pass as u64;
-                            }
-                            if slot.screened & 1 == 0 {
-                                continue;
-                            }
-                            c.patches_read_after_screening += 1;
-                            c.intersection_computations += 1;
-                            test.span(p, r..r + 1);
-                            if let Some(t) = test.hit(bundle, r, p, seg) {
+                        for &p in passing {
+                            if let Some(t) = test.hit(bundle, r, p, &scene.segments[p as usize]) {
                                 offer(&mut best, Hit { t, segment: p });
                             }
                         }
+                    }
+                    shared
+                };
+                for &p in mailboxed {
+                    let i = p as usize;
+                    let slot = &mut scratch.mailbox[i];
+                    if slot.ray == ray_tick {
+                        continue;
+                    }
+                    slot.ray = ray_tick;
+                    c.patches_read_before_screening += 1;
+                    test.load(p);
+                    let seg = &scene.segments[i];
+                    if slot.screened >> 1 != source_tick {
+                        let pass = screen(bundle, p, seg) == Screen::Pass;
+                        slot.screened = source_tick << 1 | pass as u64;
+                    }
+                    if slot.screened & 1 == 0 {
+                        continue;
+                    }
+                    c.patches_read_after_screening += 1;
+                    c.intersection_computations += 1;
+                    test.span(p, r..r + 1);
+                    if let Some(t) = test.hit(bundle, r, p, seg) {
+                        offer(&mut best, Hit { t, segment: p });
                     }
                 }
                 // Continue while a patch beyond this cell could still be nearer (or tie).
@@ -153,4 +117,37 @@ pub(super) fn trace<H: HitTest>(
         }
     });
     (hits, c)
+}
+
+/// The private patches of `cell` that pass the screener for the source of `source_tick`, as a
+/// range of `scratch.pass_items` (and its quads from `pass_quads[quads]`): computed on the
+/// source's first visit of the cell, looked up on the others.
+fn private_pass(
+    scratch: &mut Scratch,
+    scene: SceneView<'_>,
+    bundle: &Bundle,
+    cell: usize,
+    source_tick: u64,
+) -> CellPass {
+    let grid = scene.grid;
+    if scratch.cell_pass[cell].stamp == source_tick {
+        return scratch.cell_pass[cell];
+    }
+    let start = scratch.pass_items.len() as u32;
+    let passing = grid
+        .cell_items(cell)
+        .iter()
+        .filter(|&&p| !grid.is_shared(p) && screen(bundle, p, &scene.segments[p as usize]) == Screen::Pass);
+    scratch.pass_items.extend(passing);
+    let end = scratch.pass_items.len() as u32;
+    let quads = scratch.pass_quads.len() as u32;
+    for four in scratch.pass_items[start as usize..].chunks(4) {
+        let mut q = FrontQuad::default();
+        for (k, &p) in four.iter().enumerate() {
+            q.set(k, &scene.segments[p as usize]);
+        }
+        scratch.pass_quads.push(q);
+    }
+    scratch.cell_pass[cell] = CellPass { stamp: source_tick, start, end, quads };
+    scratch.cell_pass[cell]
 }
