@@ -171,13 +171,40 @@ pub fn row(scene: &Scene3, grid: &Grid3, k: usize, p: &Ff3Params) -> Result<Row,
             }
         }
     }
+    Ok(to_row(k, &acc))
+}
+
+/// The differential form factors `F(x → j)` of the point `origin` with normal `normal` (any
+/// non-zero length): one origin, no polygon excluded; the row's `source` is
+/// `usize::MAX`.
+pub fn point_row(
+    scene: &Scene3,
+    grid: &Grid3,
+    origin: DVec3,
+    normal: DVec3,
+    p: &Ff3Params,
+) -> Result<Row, Ff3Error> {
+    let (n_theta, n_phi) = split_rays(p.rays)?;
+    let set = HemisphereRays::new(origin, normal, n_theta, n_phi, p.strata)?;
+    let traced = trace::trace(p.method, scene, grid, &Bundle3::from_hemisphere(&set, None));
+    let mut acc = vec![0.0f64; scene.polygons.len()];
+    for (hit, ray) in traced.hits.iter().zip(&set.rays) {
+        if let Some(h) = hit {
+            acc[h.polygon] += ray.weight;
+        }
+    }
+    Ok(to_row(usize::MAX, &acc))
+}
+
+/// The row of `acc`, zeros left out.
+fn to_row(k: usize, acc: &[f64]) -> Row {
     let entries = acc
         .iter()
         .enumerate()
         .filter(|(_, &f)| f != 0.0)
         .map(|(j, &ff)| Entry { patch: j as u32, ff })
         .collect();
-    Ok(Row { source: k, entries })
+    Row { source: k, entries }
 }
 
 /// The rows of the sources `range`, computed on all cores, in order; `progress` is called once
