@@ -39,7 +39,7 @@
 //!
 //! At the defaults ([`DEFAULT_RAYS`] = 4096 cosine rays as 128 × 32, [`DEFAULT_ORIGINS`] = 256)
 //! the closed-form cases of `tests/ff3d.rs` (Howell's C-11 and C-14, the cube, coaxial discs)
-//! are within 0.5 % (measured: SCENES3D.md has the table and the command). Rows of a closed
+//! are within 0.2 % (measured: SCENES3D.md has the table and the command). Rows of a closed
 //! scene sum to 1 up to rounding, whatever `R` and `M`, since every ray hits something.
 
 use super::grid::Grid3;
