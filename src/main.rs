@@ -792,6 +792,9 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
         bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
     }
     a.from.check(limits::PE_RAY_MEMORY, "(the processing element's ray memory)")?;
+    if d3_cli::is_3d(&a.from.scene)? {
+        bail!("--scene {}: an OBJ scene is 3D, and the processing element is 2D", a.from.scene.display());
+    }
     check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(m)?;
     if let Some(c) = a.cache {
         limits::check_cache("--cache", c).map_err(m)?;

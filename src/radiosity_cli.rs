@@ -396,6 +396,12 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
             bail!("--clock-mhz must be a positive number up to 10000, got {}", a.clock_mhz);
         }
     }
+    if let Some(p) = a.scene.as_deref().filter(|p| super::d3_cli::is_3d(p).unwrap_or(false)) {
+        bail!(
+            "--scene {}: radiosity solves 2D scenes only so far (3D: form-factors --source K)",
+            p.display()
+        );
+    }
     let (scene, name) = match &a.scene {
         Some(p) => (Scene::load(p)?, p.display().to_string()),
         None => (scene::room(&RoomSpec::default())?, "the default room".to_string()),

@@ -150,6 +150,8 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     f(&["--source", "1", "--arith", "fixed"], &["--arith fixed", "2D"]);
     f(&["--rows", "0..2", "--out", "x.json"], &["--rows", "2D"]);
     f(&["--source", "1", "--method", "deterministic"], &["--method deterministic", "2D"]);
+    fails(&["cosim", "--scene", CORNELL, "--source", "1"], &["--scene", "3D", "2D"]);
+    fails(&["radiosity", "--scene", CORNELL], &["--scene", "2D scenes only"]);
     // And the other way: a 3D value on a 2D scene.
     let dir = TempDir::new("cli3d-2d");
     let scene = crate::cli::gen_scene(&dir, "s.json", 20, 32.0, 1);
