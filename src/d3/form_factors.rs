@@ -139,7 +139,9 @@ pub fn origins(polygon: &Polygon, m: usize) -> Result<Vec<DVec3>, Ff3Error> {
                 below += areas[k];
                 k += 1;
             }
-            let along = ((u - below) / areas[k]).clamp(0.0, 1.0);
+            // The centroid is inside a convex polygon, so no fan triangle has zero area; should
+            // rounding make one so, never divide by its area.
+            let along = if areas[k] > 0.0 { ((u - below) / areas[k]).clamp(0.0, 1.0) } else { 0.5 };
             c + ((v[k] - c) * (1.0 - along) + (v[(k + 1) % n] - c) * along) * w
         })
         .collect())
@@ -247,6 +249,24 @@ mod tests {
         }
         assert_eq!(split_rays(0), Err(Ff3Error::BadRays(0)));
         assert!(split_rays(MAX_HEMISPHERE_RAYS + 1).is_err());
+    }
+
+    #[test]
+    fn collinear_vertices_give_finite_origins() {
+        // A square with an extra vertex in the middle of two sides (collinear vertices, which a
+        // valid polygon may have): six fan triangles of two sizes.
+        let p = Polygon::new(vec![
+            DVec3::ZERO,
+            DVec3::new(0.5, 0.0, 0.0),
+            DVec3::X,
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(0.5, 1.0, 0.0),
+            DVec3::Y,
+        ])
+        .unwrap();
+        for m in [1, 2, 3, 7, 64, 1000] {
+            assert!(origins(&p, m).unwrap().iter().all(|o| o.is_finite() && o.z == 0.0), "m = {m}");
+        }
     }
 
     #[test]
