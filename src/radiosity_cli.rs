@@ -24,8 +24,8 @@ const MAX_STEPS: usize = 10_000_000;
 /// How each form-factor row is estimated.
 #[derive(Args, Clone)]
 pub struct FfArgs {
-    /// Rays per origin, 1 to 1048576 (default 2048; with `radiosity --on-pe` at most and by
-    /// default 1024, the PE's ray memory).
+    /// Rays per origin, 1 to 1048576 (default 2048, 3D 4096 as n_theta × n_phi; with
+    /// `radiosity --on-pe` at most and by default 1024, the PE's ray memory).
     #[arg(long, allow_negative_numbers = true)]
     rays: Option<usize>,
     /// Origins per source patch, stratified along it (1 to 4096; default 16, 3D 256, spread
@@ -97,7 +97,7 @@ pub struct FormFactorsArgs {
     /// Output file of --rows and --merge.
     #[arg(long, value_name = "FILE")]
     out: Option<PathBuf>,
-    /// With --source: print the row as JSON.
+    /// With --source (or, 3D, --origin): print the row as JSON.
     #[arg(long)]
     json: bool,
     /// No progress bar.
