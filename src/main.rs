@@ -224,9 +224,10 @@ struct TuneArgs {
     /// farthest corner).
     #[arg(long, allow_negative_numbers = true)]
     shell_depth: Option<f64>,
-    /// Widest sector in rays (the ray memory of one processing element), 1 to 1048576.
-    #[arg(long, default_value_t = ShellParams::default().max_sector, allow_negative_numbers = true)]
-    max_sector: usize,
+    /// Widest sector in rays (the ray memory of one processing element), 1 to 1048576
+    /// (default 64).
+    #[arg(long, allow_negative_numbers = true)]
+    max_sector: Option<usize>,
 }
 
 impl TuneArgs {
@@ -246,12 +247,12 @@ impl TuneArgs {
                 bail!("--shell-depth must be a positive number, got {d}");
             }
         }
-        check_range("--max-sector", self.max_sector, 1, limits::MAX_BUNDLE_RAYS)
-            .map_err(anyhow::Error::msg)?;
+        let max_sector = self.max_sector.unwrap_or(ShellParams::default().max_sector);
+        check_range("--max-sector", max_sector, 1, limits::MAX_BUNDLE_RAYS).map_err(anyhow::Error::msg)?;
         let p = ShellParams {
             shell_depth: self.shell_depth,
-            max_sector: self.max_sector,
-            min_sector: ShellParams::default().min_sector.min(self.max_sector),
+            max_sector,
+            min_sector: ShellParams::default().min_sector.min(max_sector),
             ..ShellParams::default()
         };
         p.validate().map_err(anyhow::Error::msg)?;
@@ -272,26 +273,28 @@ impl TuneArgs {
 #[derive(Args)]
 #[command(group(ArgGroup::new("from").args(["source", "origin"]).required(true)))]
 struct SourceArgs {
-    /// Scene file (JSON, see SCENES.md).
+    /// Scene file: JSON segments (SCENES.md) or, for `trace`, an OBJ scene of polygons
+    /// (SCENES3D.md; a `.obj` name, or any file not starting with `{`).
     #[arg(long)]
     scene: PathBuf,
-    /// Source patch K (index into the scene's segments, 0 to N−1): the origin is its midpoint,
-    /// the normal its normal; it is excluded from hits. Give either --source or --origin with
-    /// --normal.
+    /// Source patch K (index into the scene's segments or polygons, 0 to N−1): the origin is
+    /// its midpoint (3D: its vertex centroid), the normal its (front) normal; it is excluded
+    /// from hits. Give either --source or --origin with --normal.
     #[arg(long, conflicts_with_all = ["origin", "normal"], allow_negative_numbers = true)]
     source: Option<usize>,
-    /// Free origin X,Y (with --normal) instead of a source patch; each coordinate between −1e9
-    /// and 1e9, the range of scene coordinates.
-    #[arg(long, value_parser = parse_vec2, requires = "normal", allow_hyphen_values = true)]
-    origin: Option<Vec2>,
-    /// Normal NX,NY of a free origin (normalised; must be non-zero).
-    #[arg(long, value_parser = parse_vec2, requires = "origin", allow_hyphen_values = true)]
-    normal: Option<Vec2>,
+    /// Free origin X,Y (3D: X,Y,Z) with --normal instead of a source patch; each coordinate
+    /// between −1e9 and 1e9, the range of scene coordinates.
+    #[arg(long, value_parser = d3_cli::parse_coords, requires = "normal", allow_hyphen_values = true)]
+    origin: Option<d3_cli::Coords>,
+    /// Normal NX,NY (3D: NX,NY,NZ) of a free origin (normalised; must be non-zero).
+    #[arg(long, value_parser = d3_cli::parse_coords, requires = "origin", allow_hyphen_values = true)]
+    normal: Option<d3_cli::Coords>,
     /// Number of rays over the half-circle: 1 to 1048576 (`cosim`: 1 to 1024, the processing
-    /// element's ray memory).
+    /// element's ray memory). 3D: over the hemisphere, as n_theta × n_phi (SCENES3D.md).
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     rays: usize,
-    /// Ray set: `angle` (uniform in angle) or `sine` (uniform in sin φ, form factor 1/R each).
+    /// Ray set: `angle` (uniform in angle) or `sine` (uniform in sin φ, form factor 1/R each;
+    /// in 3D the cosine-weighted set, each ray 1/R).
     #[arg(long, value_enum, default_value_t = RaySet::Angle)]
     ray_set: RaySet,
 }
@@ -301,16 +304,7 @@ impl SourceArgs {
     /// `--normal`.
     fn check(&self, max_rays: usize, note: &str) -> Result<()> {
         check_range_for("--rays", self.rays, 1, max_rays, note).map_err(anyhow::Error::msg)?;
-        if let Some(o) = self.origin {
-            limits::check_point("--origin", o.x, o.y).map_err(anyhow::Error::msg)?;
-        }
-        if let Some(n) = self.normal {
-            let len = n.length();
-            if !(len.is_finite() && len > 0.0) {
-                bail!("--normal must be a finite, non-zero vector, got {},{}", n.x, n.y);
-            }
-        }
-        Ok(())
+        d3_cli::check_origin_normal(self.origin.as_ref(), self.normal.as_ref())
     }
 
     /// Loads the scene, builds its grid and the bundle, checking `--source`, the grid options
@@ -324,9 +318,9 @@ impl SourceArgs {
                 .map_err(anyhow::Error::msg)?;
         }
         let prepared = GriddedScene::new(scene, grid);
-        let source = match (self.source, self.origin, self.normal) {
+        let source = match (self.source, &self.origin, &self.normal) {
             (Some(k), _, _) => Source::from_patch(&prepared.scene.segments, k)?,
-            (None, Some(o), Some(n)) => Source::at(o, n)?,
+            (None, Some(o), Some(n)) => Source::at(o.vec2("--origin")?, n.vec2("--normal")?)?,
             _ => bail!("give either --source K or both --origin X,Y and --normal NX,NY"),
         };
         let (lo, hi) = prepared.grid.extent();
@@ -381,11 +375,13 @@ struct CosimArgs {
 struct TraceArgs {
     #[command(flatten)]
     from: SourceArgs,
-    /// Tracing technique.
-    #[arg(long, value_enum, default_value_t = Method::Stochastic)]
-    method: Method,
+    /// Tracing technique: 2D brute, conventional, stochastic or deterministic (default
+    /// stochastic); 3D any of the 3D techniques (default conventional).
+    #[arg(long, value_parser = d3_cli::parse_method)]
+    method: Option<d3_cli::MethodArg>,
     /// Arithmetic of the hit tests: `float` (the f64 golden model) or `fixed` (the bit-true
-    /// model of the RTL datapath, hdl/FORMATS.md; the scene must fit its 2048-unit window).
+    /// model of the RTL datapath, hdl/FORMATS.md; the scene must fit its 2048-unit window;
+    /// 2D only).
     #[arg(long, value_enum, default_value_t = Arith::Float)]
     arith: Arith,
     /// Print the full result as JSON (every ray's hit and the counters).
@@ -473,22 +469,6 @@ struct FiguresArgs {
     tune: TuneArgs,
 }
 
-fn parse_vec2(s: &str) -> Result<Vec2, String> {
-    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
-    if parts.len() != 2 {
-        return Err(format!("expected two numbers X,Y, got {s:?}"));
-    }
-    let num = |p: &str| -> Result<f64, String> {
-        let v: f64 = p.parse().map_err(|_| format!("{p:?} is not a number"))?;
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(format!("{p:?} is not a finite number"))
-        }
-    };
-    Ok(Vec2::new(num(parts[0])?, num(parts[1])?))
-}
-
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
@@ -539,7 +519,8 @@ macro_rules! say {
     }};
 }
 
-// After `say!`, which it uses.
+// After `say!`, which they use.
+mod d3_cli;
 mod radiosity_cli;
 
 /// A progress bar on standard error (hidden where standard error is not a terminal).
@@ -765,10 +746,14 @@ fn run(cli: Cli) -> Result<()> {
 
 fn trace_cmd(a: TraceArgs) -> Result<()> {
     a.from.check(limits::MAX_BUNDLE_RAYS, "")?;
+    if d3_cli::is_3d(&a.from.scene)? {
+        return d3_cli::trace_cmd(&a);
+    }
+    let method = d3_cli::MethodArg::two_d(a.method.as_ref(), Method::Stochastic)?;
     let shells = a.tune.shells()?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
     let source = bundle.source;
-    let result = prepared.trace_in(a.arith, a.method, &bundle, &shells)?;
+    let result = prepared.trace_in(a.arith, method, &bundle, &shells)?;
     let mut out = Out::new();
     if a.json {
         let json = serde_json::to_string_pretty(&TraceJson::new(&result, &bundle, a.arith))
@@ -782,12 +767,12 @@ fn trace_cmd(a: TraceArgs) -> Result<()> {
             bundle.len(),
             source.origin.x,
             source.origin.y,
-            a.method,
+            method,
             a.arith,
             hits,
             bundle.len() - hits
         );
-        print_counters(&mut out, &[(a.method, result.counters)])?;
+        print_counters(&mut out, &[(method.name(), result.counters)])?;
         if result.stats.shells > 0 {
             say!(
                 out,
@@ -807,6 +792,9 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
         bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
     }
     a.from.check(limits::PE_RAY_MEMORY, "(the processing element's ray memory)")?;
+    if d3_cli::is_3d(&a.from.scene)? {
+        bail!("--scene {}: an OBJ scene is 3D, and the processing element is 2D", a.from.scene.display());
+    }
     check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(m)?;
     if let Some(c) = a.cache {
         limits::check_cache("--cache", c).map_err(m)?;
@@ -929,7 +917,7 @@ fn demo(a: DemoArgs) -> Result<()> {
         if disagree > 0 {
             bail!("{method} disagrees with brute force on {disagree} rays");
         }
-        rows.push((method, r.counters));
+        rows.push((method.name(), r.counters));
     }
     print_counters(&mut out, &rows)?;
     say!(out, "\nevery technique returned the brute-force nearest hit for all {} rays", bundle.len());
@@ -1016,14 +1004,14 @@ fn demo(a: DemoArgs) -> Result<()> {
     out.flush()
 }
 
-fn print_counters(out: &mut Out, rows: &[(Method, Counters)]) -> Result<()> {
+fn print_counters(out: &mut Out, rows: &[(&str, Counters)]) -> Result<()> {
     out.write_fmt(format_args!("{:<14}", "method"))?;
     for s in Counters::LABELS {
         out.write_fmt(format_args!("{s:>12}"))?;
     }
     say!(out);
     for (m, c) in rows {
-        out.write_fmt(format_args!("{:<14}", m.name()))?;
+        out.write_fmt(format_args!("{m:<14}"))?;
         for (v, integral) in c.values().iter().zip(Counters::INTEGRAL) {
             if !integral {
                 out.write_fmt(format_args!("{v:>12.2}"))?;

@@ -24,20 +24,24 @@ const MAX_STEPS: usize = 10_000_000;
 /// How each form-factor row is estimated.
 #[derive(Args, Clone)]
 pub struct FfArgs {
-    /// Rays per origin, 1 to 1048576 (default 2048; with `radiosity --on-pe` at most and by
-    /// default 1024, the PE's ray memory).
+    /// Rays per origin, 1 to 1048576 (default 2048, 3D 4096 as n_theta × n_phi; with
+    /// `radiosity --on-pe` at most and by default 1024, the PE's ray memory).
     #[arg(long, allow_negative_numbers = true)]
     rays: Option<usize>,
-    /// Origins per source patch, stratified along it (1 to 4096); 1 is the paper's centre.
-    #[arg(long, default_value_t = DEFAULT_ORIGINS, allow_negative_numbers = true)]
-    origins: usize,
-    /// Ray set: `sine` (each ray carries form factor 1/R) or `angle` (each ray its cell's).
+    /// Origins per source patch, stratified along it (1 to 4096; default 16, 3D 256, spread
+    /// over the polygon); 1 is the paper's centre.
+    #[arg(long, allow_negative_numbers = true)]
+    origins: Option<usize>,
+    /// Ray set: `sine` (each ray carries form factor 1/R; in 3D the cosine-weighted set) or
+    /// `angle` (each ray its cell's).
     #[arg(long, value_enum, default_value_t = RaySet::Sine)]
     ray_set: RaySet,
-    /// Tracing technique (all give the same form factors in f64).
-    #[arg(long, value_enum, default_value_t = Method::Deterministic)]
-    method: Method,
-    /// Arithmetic of the hit tests: `float` or `fixed` (the RTL's bit-true model).
+    /// Tracing technique, all giving the same form factors in f64: 2D brute, conventional,
+    /// stochastic or deterministic (default deterministic); 3D any 3D technique (default
+    /// conventional).
+    #[arg(long, value_parser = super::d3_cli::parse_method)]
+    method: Option<super::d3_cli::MethodArg>,
+    /// Arithmetic of the hit tests: `float` or `fixed` (the RTL's bit-true model; 2D only).
     #[arg(long, value_enum, default_value_t = Arith::Float)]
     arith: Arith,
 }
@@ -51,12 +55,13 @@ impl FfArgs {
         };
         let note = if on_pe { "with --on-pe (the PE's ray memory)" } else { "" };
         check_range_for("--rays", rays, 1, max, note).map_err(anyhow::Error::msg)?;
-        check_range("--origins", self.origins, 1, MAX_ORIGINS).map_err(anyhow::Error::msg)?;
+        let origins = self.origins.unwrap_or(DEFAULT_ORIGINS);
+        check_range("--origins", origins, 1, MAX_ORIGINS).map_err(anyhow::Error::msg)?;
         Ok(FfParams {
             rays,
-            origins: self.origins,
+            origins,
             ray_set: self.ray_set,
-            method: self.method,
+            method: super::d3_cli::MethodArg::two_d(self.method.as_ref(), Method::Deterministic)?,
             arith: self.arith,
             shells: tune.shells()?,
         })
@@ -64,26 +69,35 @@ impl FfArgs {
 }
 
 #[derive(Args)]
-#[command(group(ArgGroup::new("what").args(["source", "rows", "merge"]).required(true)))]
+#[command(group(ArgGroup::new("what").args(["source", "rows", "merge", "origin"]).required(true)))]
 pub struct FormFactorsArgs {
-    /// Scene file (JSON, see SCENES.md); not used with --merge.
+    /// Scene file: JSON segments (SCENES.md) or an OBJ scene of polygons (SCENES3D.md; a
+    /// `.obj` name, or any file not starting with `{`); not used with --merge.
     #[arg(long, required_unless_present = "merge", conflicts_with = "merge")]
     scene: Option<PathBuf>,
-    /// One row: the form factors from source patch K.
+    /// One row: the form factors from source patch K (3D: polygon K, in the file's order).
     #[arg(long, value_name = "K", allow_negative_numbers = true)]
     source: Option<usize>,
+    /// 3D only: the differential form factors of the point X,Y,Z (with --normal) to every
+    /// polygon, from one origin.
+    #[arg(long, value_parser = super::d3_cli::parse_coords, requires = "normal", conflicts_with = "source",
+          allow_hyphen_values = true)]
+    origin: Option<super::d3_cli::Coords>,
+    /// 3D only: the normal NX,NY,NZ of --origin (normalised; must be non-zero).
+    #[arg(long, value_parser = super::d3_cli::parse_coords, requires = "origin", allow_hyphen_values = true)]
+    normal: Option<super::d3_cli::Coords>,
     /// The rows A..B (sources A to B−1) as a matrix slice file (RADIOSITY.md); `..` alone is
     /// every row.
     #[arg(long, value_name = "A..B", value_parser = parse_rows, requires = "out")]
     rows: Option<RowsArg>,
     /// Merge matrix slice files (comma separated) into one matrix file (--out).
     #[arg(long, value_name = "FILES", value_delimiter = ',', num_args = 1.., requires = "out",
-          conflicts_with_all = ["rays", "origins", "ray_set", "method", "arith", "cells_per_segment", "shell_depth", "max_sector"])]
+          conflicts_with_all = ["rays", "origins", "ray_set", "method", "arith", "cells_per_segment", "shell_depth", "max_sector", "origin"])]
     merge: Vec<PathBuf>,
     /// Output file of --rows and --merge.
     #[arg(long, value_name = "FILE")]
     out: Option<PathBuf>,
-    /// With --source: print the row as JSON.
+    /// With --source (or, 3D, --origin): print the row as JSON.
     #[arg(long)]
     json: bool,
     /// No progress bar.
@@ -176,6 +190,12 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
         return out.flush();
     }
     let path = a.scene.as_deref().expect("clap requires --scene");
+    if super::d3_cli::is_3d(path)? {
+        return form_factors_3d(&a, path);
+    }
+    if a.origin.is_some() {
+        bail!("--origin belongs to 3D scenes (2D form factors are from whole segments: give --source K)");
+    }
     let params = a.ff.params(&a.tune, false)?;
     let scene = Scene::load(path)?;
     let grid = a.tune.grid(scene.len())?;
@@ -234,6 +254,32 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
         file.rows.iter().map(|r| r.entries.len()).sum::<usize>()
     );
     out.flush()
+}
+
+/// `form-factors` on an OBJ scene: the options of 2D scenes only refused by name.
+fn form_factors_3d(a: &FormFactorsArgs, path: &Path) -> Result<()> {
+    let two_d = [
+        ("--rows", a.rows.is_some()),
+        ("--out", a.out.is_some()),
+        ("--arith fixed", a.ff.arith != Arith::Float),
+    ];
+    if let Some((option, _)) = two_d.iter().find(|(_, given)| *given) {
+        bail!(
+            "{option} belongs to 2D scenes: in 3D, form-factors takes --source K or --origin with --normal"
+        );
+    }
+    super::d3_cli::form_factors_cmd(super::d3_cli::FormFactors3 {
+        scene: path,
+        source: a.source,
+        origin: a.origin.as_ref(),
+        normal: a.normal.as_ref(),
+        rays: a.ff.rays,
+        origins: a.ff.origins,
+        ray_set: a.ff.ray_set,
+        method: a.ff.method.as_ref(),
+        json: a.json,
+        tune: &a.tune,
+    })
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, serde::Serialize)]
@@ -339,7 +385,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         bail!("--matrix needs --solver full: progressive refinement computes its rows as it shoots");
     }
     if a.on_pe {
-        if a.ff.method == Method::Brute {
+        if a.ff.method.as_ref().is_some_and(|m| m.0 == Method::Brute.name()) {
             bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
         }
         check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(anyhow::Error::msg)?;
@@ -349,6 +395,12 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         if !(a.clock_mhz.is_finite() && a.clock_mhz > 0.0 && a.clock_mhz <= 10_000.0) {
             bail!("--clock-mhz must be a positive number up to 10000, got {}", a.clock_mhz);
         }
+    }
+    if let Some(p) = a.scene.as_deref().filter(|p| super::d3_cli::is_3d(p).unwrap_or(false)) {
+        bail!(
+            "--scene {}: radiosity solves 2D scenes only so far (3D: form-factors --source K)",
+            p.display()
+        );
     }
     let (scene, name) = match &a.scene {
         Some(p) => (Scene::load(p)?, p.display().to_string()),

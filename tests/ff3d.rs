@@ -98,7 +98,9 @@ fn reciprocity_on_the_cornell_box() {
     // each plus 2/R for a pair seen at grazing angles, where a few horizon cells decide it).
     let scene = closed3d::cornell();
     let n = scene.polygons.len();
-    let p = Ff3Params::default();
+    // Brute force is the fastest tracer on 17 polygons (PERFORMANCE.md); every tracer gives the
+    // same rows (the last test).
+    let p = Ff3Params { method: Method3::Brute, ..Ff3Params::default() };
     let rows = form_factors::rows(&scene, &grid(&scene), 0..n, &p, || {}).unwrap();
     let (cells, mut worst, mut pairs) = (2.0 / p.rays as f64, (0.0, 0, 0), 0);
     for i in (0..n).filter(|i| !PARTLY_HIDDEN.contains(i)) {

@@ -2,6 +2,7 @@
 //! equivalence checks, is `tests/tier2/main.rs`.
 
 mod cli;
+mod cli3d;
 mod cosim;
 mod ff3d;
 mod figures;

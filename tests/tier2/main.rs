@@ -4,5 +4,6 @@
 #[path = "../support/mod.rs"]
 mod support;
 
+mod ff3d;
 mod radiosity;
 mod replay;

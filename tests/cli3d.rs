@@ -1,0 +1,161 @@
+//! The 3D forms of `trace` and `form-factors` end to end (CLI.md): OBJ scenes recognised by
+//! name or content, a source polygon by index or a free 3D origin and normal, the JSON of the 2D
+//! forms with a third coordinate, and every 2D-only option or bad 3D value refused by name.
+
+use crate::cli::{fails, ok, path_arg, TempDir};
+use serde_json::Value;
+use shelling::d3::trace::Method3;
+
+const CORNELL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cornell_box.obj");
+const ROOM: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/box_room.obj");
+
+fn json(args: &[&str]) -> Value {
+    serde_json::from_str(&ok(args)).unwrap_or_else(|e| panic!("shelling {args:?}: not JSON: {e}"))
+}
+
+#[test]
+fn trace_an_obj_scene_from_a_polygon_every_technique_the_same_hits() {
+    let mut first: Option<Value> = None;
+    for m in Method3::ALL {
+        let v = json(&[
+            "trace",
+            "--scene",
+            CORNELL,
+            "--source",
+            "1",
+            "--rays",
+            "256",
+            "--method",
+            m.name(),
+            "--json",
+        ]);
+        assert_eq!(v["method"], m.name());
+        let source = &v["source"];
+        // The ceiling's vertex centroid and front normal (SCENES3D.md).
+        assert_eq!(source["patch"], 1);
+        assert_eq!(source["normal"], serde_json::json!([0.0, -1.0, 0.0]));
+        assert_eq!(source["origin"].as_array().unwrap().len(), 3);
+        let rays = v["rays"].as_array().unwrap();
+        assert_eq!(rays.len(), 256);
+        assert!(rays.iter().all(|r| r["direction"].as_array().unwrap().len() == 3));
+        assert!(rays.iter().all(|r| r["hit"] != 1), "the source polygon is never hit");
+        let hits = rays.iter().filter(|r| !r["hit"].is_null()).count() as u64;
+        assert_eq!(v["counters"]["actual_intersections"], hits);
+        // The open front lets some rays out, the rest hit.
+        assert!(hits > 128 && hits < 256, "{hits} hits");
+        let hits: Vec<&Value> = rays.iter().map(|r| &r["hit"]).collect();
+        match &first {
+            None => first = Some(serde_json::json!(hits)),
+            Some(f) => assert_eq!(f, &serde_json::json!(hits), "{m} against {}", Method3::ALL[0]),
+        }
+    }
+}
+
+#[test]
+fn trace_from_a_free_origin_in_the_closed_room_hits_every_ray() {
+    let v = json(&[
+        "trace",
+        "--scene",
+        ROOM,
+        "--origin",
+        "128,1,128",
+        "--normal",
+        "0,2,0",
+        "--rays",
+        "512",
+        "--ray-set",
+        "sine",
+        "--json",
+    ]);
+    assert_eq!(v["source"]["patch"], Value::Null);
+    assert_eq!(v["source"]["normal"], serde_json::json!([0.0, 1.0, 0.0]));
+    assert_eq!(v["source"]["ray_set"], "sine");
+    assert_eq!(v["counters"]["actual_intersections"], 512);
+    let text = ok(&["trace", "--scene", ROOM, "--origin", "128,1,128", "--normal", "0,1,0", "--rays", "512"]);
+    assert!(text.contains("512 rays (64 × 8)") && text.contains("512 hit a polygon, 0 escaped"), "{text}");
+}
+
+#[test]
+fn an_obj_scene_is_recognised_by_its_content_under_any_name() {
+    let dir = TempDir::new("cli3d-content");
+    let scene = dir.join("room.scene");
+    std::fs::copy(ROOM, &scene).unwrap();
+    std::fs::copy(ROOM.replace(".obj", ".mtl"), dir.join("box_room.mtl")).unwrap();
+    let v = json(&["trace", "--scene", path_arg(&scene), "--source", "4", "--rays", "64", "--json"]);
+    assert_eq!(v["counters"]["actual_intersections"], 64);
+}
+
+#[test]
+fn form_factors_of_an_obj_polygon_and_of_a_free_point() {
+    // The box room's floor middle square (4) to the rest: a closed room, the row sums to 1.
+    let v = json(&[
+        "form-factors",
+        "--scene",
+        ROOM,
+        "--source",
+        "4",
+        "--rays",
+        "1024",
+        "--origins",
+        "16",
+        "--json",
+    ]);
+    assert_eq!(
+        (v["source"].as_u64(), v["rays"].as_u64(), v["origins"].as_u64()),
+        (Some(4), Some(1024), Some(16))
+    );
+    assert_eq!(v["method"], "conventional");
+    assert!((v["sum"].as_f64().unwrap() - 1.0).abs() < 1e-12, "{}", v["sum"]);
+    // A free point at the floor's centre: the differential form factor to the light, the
+    // ceiling's middle square (13 = 9 + 4), against the closed form of a differential area to a
+    // parallel rectangle on its axis (SCENES3D.md: 0.03411).
+    let v = json(&["form-factors", "--scene", ROOM, "--origin", "128,0,128", "--normal", "0,1,0", "--json"]);
+    assert_eq!((v["source"].clone(), v["origins"].as_u64()), (Value::Null, Some(1)));
+    let light = v["form_factors"].as_array().unwrap().iter().find(|e| e["patch"] == 13).unwrap();
+    let f = light["ff"].as_f64().unwrap();
+    assert!((f - 0.03411).abs() < 1e-3, "F to the light {f}");
+    let text = ok(&["form-factors", "--scene", CORNELL, "--source", "6", "--rays", "1024", "--origins", "4"]);
+    assert!(
+        text.starts_with("form factors from polygon 6 (4 origins × 1024 sine rays, conventional)"),
+        "{text}"
+    );
+}
+
+#[test]
+fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
+    let t = |extra: &[&str], expect: &[&str]| {
+        let mut args = vec!["trace", "--scene", CORNELL];
+        args.extend_from_slice(extra);
+        fails(&args, expect);
+    };
+    t(&["--source", "17"], &["--source", "between 0 and 16", "17 polygons", "got 17"]);
+    t(&["--origin", "1,2,3", "--normal", "0,0,0"], &["--normal", "non-zero", "0,0,0"]);
+    t(&["--origin", "1,2,3", "--normal", "0,inf,0"], &["--normal", "finite"]);
+    t(&["--origin", "1,2", "--normal", "0,1"], &["--origin", "two coordinates", "3D"]);
+    t(&["--origin", "1,2,3", "--normal", "0,1"], &["--origin", "--normal", "as many coordinates"]);
+    t(&["--origin", "1,2,2e9", "--normal", "0,1,0"], &["--origin", "between"]);
+    t(&["--source", "1", "--method", "stochastic"], &["--method stochastic", "2D", "brute, conventional"]);
+    t(&["--source", "1", "--arith", "fixed"], &["--arith fixed", "2D"]);
+    t(&["--source", "1", "--shell-depth", "3"], &["--shell-depth", "2D"]);
+    t(&["--source", "1", "--max-sector", "8"], &["--max-sector", "2D"]);
+    t(&["--source", "1", "--rays", "0"], &["--rays", "between 1 and 1048576", "got 0"]);
+    let f = |extra: &[&str], expect: &[&str]| {
+        let mut args = vec!["form-factors", "--scene", CORNELL];
+        args.extend_from_slice(extra);
+        fails(&args, expect);
+    };
+    f(&["--source", "99"], &["--source", "between 0 and 16"]);
+    f(&["--source", "1", "--origins", "0"], &["--origins", "between 1 and 4096", "got 0"]);
+    f(&["--origin", "1,2,3", "--normal", "0,1,0", "--origins", "4"], &["--origins", "--source"]);
+    f(&["--source", "1", "--arith", "fixed"], &["--arith fixed", "2D"]);
+    f(&["--rows", "0..2", "--out", "x.json"], &["--rows", "2D"]);
+    f(&["--source", "1", "--method", "deterministic"], &["--method deterministic", "2D"]);
+    fails(&["cosim", "--scene", CORNELL, "--source", "1"], &["--scene", "3D", "2D"]);
+    fails(&["radiosity", "--scene", CORNELL], &["--scene", "2D scenes only"]);
+    // And the other way: a 3D value on a 2D scene.
+    let dir = TempDir::new("cli3d-2d");
+    let scene = crate::cli::gen_scene(&dir, "s.json", 20, 32.0, 1);
+    let s = path_arg(&scene);
+    fails(&["trace", "--scene", s, "--origin", "1,2,3", "--normal", "0,1,0"], &["--origin", "three", "2D"]);
+    fails(&["form-factors", "--scene", s, "--origin", "1,2", "--normal", "0,1"], &["--origin", "3D scenes"]);
+}
