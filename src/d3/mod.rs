@@ -28,7 +28,10 @@ pub mod gen;
 pub mod grid;
 pub mod hemisphere;
 pub mod obj;
+pub mod polar;
 pub mod scene;
+pub mod span;
+pub mod sweep;
 pub mod trace;
 pub mod walk;
 
