@@ -2,3 +2,4 @@
 //! (`tests/tier2/main.rs`).
 
 pub mod replay;
+pub mod tracers3d;

@@ -6,3 +6,4 @@ mod support;
 
 mod radiosity;
 mod replay;
+mod tracers3d;
