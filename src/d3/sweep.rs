@@ -230,7 +230,7 @@ pub fn trace(scene: &Scene3, bundle: &Bundle3, params: &ShellParams) -> Result<T
             let view = SceneView { segments: &scene2.segments, grid };
             let backend = Hits3 { scene, bundle, plane };
             let r = trace_with(Method::Deterministic, view, &plane.bundle, params, &backend)
-                .map_err(|e| Trace3Error::InvalidParams(e.to_string()))?;
+                .map_err(|crate::trace::TraceError::InvalidParams(e)| Trace3Error::InvalidParams(e))?;
             for (i, h) in r.hits.iter().enumerate() {
                 if let Some(h) = h {
                     let k = plane.polygons[h.segment as usize];
