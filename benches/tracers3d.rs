@@ -88,7 +88,11 @@ impl Workload {
         let mut hits = Vec::with_capacity(self.rays());
         for b in &self.bundles {
             hits.extend(
-                trace::trace(method, &self.scene, &self.grid, b).hits.iter().map(|h| h.map(|h| h.polygon)),
+                trace::trace(method, &self.scene, &self.grid, b, &shelling::trace::ShellParams::default())
+                    .expect("default parameters are valid")
+                    .hits
+                    .iter()
+                    .map(|h| h.map(|h| h.polygon)),
             );
         }
         hits

@@ -227,7 +227,7 @@ pub fn trace_cmd(a: &TraceArgs) -> Result<()> {
     };
     let set = HemisphereRays::new(origin, normal, n_theta, n_phi, strata(a.from.ray_set))?;
     let bundle = Bundle3::from_hemisphere(&set, patch);
-    let result = trace3::trace(method, &scene, &grid, &bundle);
+    let result = trace3::trace(method, &scene, &grid, &bundle, &shelling::trace::ShellParams::default())?;
     let mut out = Out::new();
     if a.json {
         let json = TraceJson {
@@ -325,6 +325,7 @@ pub fn form_factors_cmd(a: FormFactors3) -> Result<()> {
         origins: a.origins.unwrap_or(ff3::DEFAULT_ORIGINS),
         strata: strata(a.ray_set),
         method,
+        ..Ff3Params::default()
     };
     let (row, free) = match (a.source, a.origin, a.normal) {
         (Some(k), _, _) => {

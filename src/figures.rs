@@ -40,6 +40,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 pub mod cycles;
+pub mod d3;
 mod plot;
 
 /// The techniques measured, in row order.

@@ -267,15 +267,11 @@ impl Grid {
         iy * self.nx + ix
     }
 
-    /// Cell coordinate (possibly outside the grid) of a world coordinate along one axis.
-    #[inline]
-    fn coord(&self, v: f64, origin: f64) -> i64 {
-        floor_i64((v - origin) / self.cell_size)
-    }
-
-    /// [`Grid::coord`] with `inv = 1 / cell_size`: the quotient is taken by multiplying, which
-    /// has the same floor unless it lies within a few ulps of an integer; there (and for
-    /// non-finite or huge values) the division decides, so the answer is always `coord`'s.
+    /// Cell coordinate (possibly outside the grid) of a world coordinate along one axis,
+    /// `floor((v − origin) / cell_size)`, given `inv = 1 / cell_size`: the quotient is taken by
+    /// multiplying, which has the same floor unless it lies within a few ulps of an integer;
+    /// there (and for non-finite or huge values) the division decides, so the answer is always
+    /// the division's.
     #[inline(always)]
     fn coord_by(&self, v: f64, origin: f64, inv: f64) -> i64 {
         let x = v - origin;
@@ -596,7 +592,7 @@ impl Grid {
         };
         let p = origin + dir * t;
         let clamp = |v: i64, n: usize| v.clamp(0, n as i64 - 1);
-        // `coord_by` is `coord` (the same cells), its division mostly replaced by a product.
+        // Cell coordinates by `coord_by`: the cells of the division, mostly by a product.
         let inv = 1.0 / self.cell_size;
         let mut ix = clamp(self.coord_by(p.x, self.origin.x, inv), self.nx);
         let mut iy = clamp(self.coord_by(p.y, self.origin.y, inv), self.ny);

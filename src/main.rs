@@ -419,10 +419,19 @@ struct DemoArgs {
 
 #[derive(Args)]
 struct FiguresArgs {
-    /// Output directory for figures.csv and the SVG plots (created if missing; the files appear
-    /// only when the whole run succeeds).
+    /// Output directory for figures.csv and the SVG plots (figures3d.csv and figures3d.md with
+    /// --dim 3; created if missing; the files appear only when the whole run succeeds).
     #[arg(long)]
     out: PathBuf,
+    /// The dimension: 2 (the paper's segments: conventional, stochastic and deterministic) or 3
+    /// (the 3D workload of --count squares per --sizes: conventional, polar and sweep; --rays
+    /// must be 4·k², --ray-set angle or sine picks equal-angle or cosine-weighted cells).
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3))]
+    dim: u8,
+    /// 3D: the squares' sides, comma separated: 1 to 64 distinct sizes, each greater than 0 and
+    /// less than 1024/√3 (default 2,4,8,16,32,64,128,256).
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+    sizes: Option<Vec<f64>>,
     /// Scenes (seeds) per segment length, 1 to 1000.
     #[arg(long, default_value_t = 5, allow_negative_numbers = true)]
     seeds: usize,
@@ -470,8 +479,13 @@ struct FiguresArgs {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    match run(cli) {
+    let matches = <Cli as clap::CommandFactory>::command().get_matches();
+    let given = figures_2d_given(&matches);
+    let cli = match <Cli as clap::FromArgMatches>::from_arg_matches(&matches) {
+        Ok(cli) => cli,
+        Err(e) => e.exit(),
+    };
+    match run(cli, &given) {
         Ok(()) => ExitCode::SUCCESS,
         // The reader of standard output went away (`shelling ... | head`): stop quietly.
         Err(e)
@@ -612,8 +626,14 @@ fn scene_gen_3d(a: &GenArgs) -> Result<()> {
 }
 
 /// `figures`: every option checked against its range before anything runs.
-fn figures_cmd(a: FiguresArgs) -> Result<()> {
+fn figures_cmd(a: FiguresArgs, given: &[&'static str]) -> Result<()> {
     let m = anyhow::Error::msg;
+    if a.dim == 3 {
+        return figures_3d(a, given);
+    }
+    if a.sizes.is_some() {
+        bail!("--sizes belongs to --dim 3 (in 2D, --lengths gives the segments' lengths)");
+    }
     check_range("--seeds", a.seeds, 1, figures::MAX_SEEDS).map_err(m)?;
     check_range("--count", a.count, 1, limits::MAX_COUNT).map_err(m)?;
     check_range_for("--sources", a.sources, 1, a.count, "(--count)").map_err(m)?;
@@ -691,6 +711,76 @@ fn figures_cmd(a: FiguresArgs) -> Result<()> {
     out.flush()
 }
 
+/// The options of `figures` that only the 2D figures take (clap's ids).
+const FIGURES_2D_ONLY: [(&str, &str); 5] = [
+    ("lengths", "--lengths"),
+    ("cosim_sources", "--cosim-sources"),
+    ("tcs", "--tc"),
+    ("cache_lines", "--cache-lines"),
+    ("engine", "--engine"),
+];
+
+/// The 2D-only options of `figures` given on the command line.
+fn figures_2d_given(matches: &clap::ArgMatches) -> Vec<&'static str> {
+    let Some(m) = matches.subcommand_matches("figures") else { return Vec::new() };
+    FIGURES_2D_ONLY
+        .iter()
+        .filter(|(id, _)| m.value_source(id) == Some(clap::parser::ValueSource::CommandLine))
+        .map(|(_, option)| *option)
+        .collect()
+}
+
+/// `figures --dim 3`: the 3D workload (src/figures/d3.rs), every option checked first.
+fn figures_3d(a: FiguresArgs, given: &[&'static str]) -> Result<()> {
+    if let Some(option) = given.first() {
+        bail!("{option} belongs to the 2D figures: --dim 3 takes --sizes, --count, --seeds, --sources, --rays, --ray-set and the tuning options");
+    }
+    let sizes = a.sizes.unwrap_or_else(|| figures::d3::DEFAULT_SIZES.to_vec());
+    check_range("--count", a.count, 1, limits::MAX_COUNT).map_err(anyhow::Error::msg)?;
+    let (seeds, n) = (a.seeds as u64, sizes.len() as u64);
+    limits::check_product(
+        "the rays traced, --seeds × sizes × --sources × --rays,",
+        &[seeds, n, a.sources as u64, a.rays as u64],
+        limits::MAX_WORKLOAD_RAYS,
+    )
+    .map_err(anyhow::Error::msg)?;
+    limits::check_product(
+        "the squares held, --seeds × sizes × --count,",
+        &[seeds, n, a.count as u64],
+        limits::MAX_WORKLOAD_SEGMENTS,
+    )
+    .map_err(anyhow::Error::msg)?;
+    let shells = a.tune.shells()?;
+    // The 3D scenes fill [0, 1024)³; the grid pads it by 0.1 % on every side.
+    let side = shelling::d3::gen::WORLD * 1.002;
+    a.tune.check_depth(side, side * 3f64.sqrt())?;
+    if !(a.tune.cells_per_segment.is_finite() && a.tune.cells_per_segment > 0.0) {
+        bail!("--cells-per-segment must be a positive number, got {}", a.tune.cells_per_segment);
+    }
+    let opts = figures::d3::Figure3Options {
+        out: a.out,
+        seeds: a.seeds,
+        sources: a.sources,
+        rays: a.rays,
+        count: a.count,
+        sizes,
+        strata: match a.ray_set {
+            RaySet::Angle => shelling::d3::hemisphere::Strata::Angle,
+            RaySet::Sine => shelling::d3::hemisphere::Strata::Cosine,
+        },
+        grid: shelling::d3::grid::Grid3Params {
+            cells_per_polygon: a.tune.cells_per_segment,
+            cells_per_axis: None,
+        },
+        shells,
+        progress: !a.quiet,
+    };
+    let report = figures::d3::run(&opts)?;
+    let mut out = Out::new();
+    say!(out, "{report}");
+    out.flush()
+}
+
 /// `agreement`: the paper's workload in f64 and in fixed point, with a progress bar.
 fn agreement_cmd(a: AgreementArgs) -> Result<()> {
     let w = agreement::Workload {
@@ -723,7 +813,7 @@ fn agreement_cmd(a: AgreementArgs) -> Result<()> {
     Ok(())
 }
 
-fn run(cli: Cli) -> Result<()> {
+fn run(cli: Cli, figures_given: &[&'static str]) -> Result<()> {
     match cli.command {
         Command::Demo(a) => demo(a),
         Command::Scene { command: SceneCommand::Gen(a) } => scene_gen(a),
@@ -740,7 +830,7 @@ fn run(cli: Cli) -> Result<()> {
             out.flush()
         }
         Command::Agreement(a) => agreement_cmd(a),
-        Command::Figures(a) => figures_cmd(a),
+        Command::Figures(a) => figures_cmd(a, figures_given),
     }
 }
 

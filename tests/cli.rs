@@ -410,6 +410,8 @@ fn cli_help_mentions_every_option() {
             &["figures"],
             &[
                 "--out",
+                "--dim",
+                "--sizes",
                 "--seeds",
                 "--sources",
                 "--rays",

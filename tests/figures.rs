@@ -1,6 +1,7 @@
 //! The cycle figures of `shelling figures` on a tiny sample: one length, one co-simulated
 //! source, T_c 1 and 16, without and with the patch cache. The CSV has a row per technique and
-//! setting, and its values obey what the hardware guarantees.
+//! setting, and its values obey what the hardware guarantees. And `figures --dim 3` on a small
+//! 3D workload, end to end: its CSV and table, and its errors.
 
 use shelling::cosim::Engine;
 use shelling::figures::cycles::{self, CSV_HEADER, SVGS};
@@ -162,4 +163,75 @@ fn cycle_figures_can_be_skipped_and_reject_bad_options() {
         assert!(cycles::measure(&o).is_err(), "{what} accepted by measure");
     }
     assert!(!dir.exists(), "a rejected run created its output directory");
+}
+
+#[test]
+fn figures_dim_3_writes_the_3d_table_and_csv() {
+    use crate::cli::{fails, ok, path_arg, TempDir};
+    let dir = TempDir::new("figures3d");
+    let out = dir.join("f3");
+    let o = path_arg(&out);
+    let base =
+        ["figures", "--dim", "3", "--out", o, "--seeds", "2", "--sources", "4", "--count", "300", "--quiet"];
+    let mut args = base.to_vec();
+    args.extend_from_slice(&["--sizes", "8,64", "--rays", "256"]);
+    let stdout = ok(&args);
+    assert!(stdout.contains("32 × 8") && stdout.contains("| 64 | sweep |"), "{stdout}");
+    assert!(!stdout.contains("WARNING"), "every 3D tracer must agree with the conventional one:\n{stdout}");
+    let csv = std::fs::read_to_string(out.join("figures3d.csv")).expect("no figures3d.csv");
+    let md = std::fs::read_to_string(out.join("figures3d.md")).expect("no figures3d.md");
+    assert!(md.contains("| size | method |"), "{md}");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], format!("size,method,sources,{}", shelling::counters::Counters::NAMES.join(",")));
+    assert_eq!(lines.len(), 1 + 2 * 3, "{csv}");
+    let col = |row: &str, name: &str| -> f64 {
+        let i = lines[0].split(',').position(|c| c == name).unwrap();
+        row.split(',').nth(i).unwrap().parse().unwrap()
+    };
+    for size in ["8", "64"] {
+        let rows: Vec<&str> =
+            lines[1..].iter().copied().filter(|l| l.starts_with(&format!("{size},"))).collect();
+        assert_eq!(rows.len(), 3, "{csv}");
+        assert!(
+            rows[0].contains(",conventional,8,")
+                && rows[1].contains(",polar,")
+                && rows[2].contains(",sweep,")
+        );
+        // Every technique finds the same hits: the same actual intersections and true ADLC.
+        for r in &rows[1..] {
+            assert_eq!(col(r, "actual_intersections"), col(rows[0], "actual_intersections"), "{csv}");
+            assert_eq!(col(r, "adlc_true"), col(rows[0], "adlc_true"), "{csv}");
+            assert!(col(r, "patches_read_after_screening") <= col(r, "patches_read_before_screening"));
+        }
+    }
+    // Larger squares are hit more: more actual intersections.
+    let actual = |i: usize| col(lines[i], "actual_intersections");
+    assert!(actual(4) > actual(1), "{csv}");
+    // The same run gives the same bytes.
+    let again = dir.join("f3b");
+    let mut args = base.to_vec();
+    args[4] = path_arg(&again);
+    args.extend_from_slice(&["--sizes", "8,64", "--rays", "256"]);
+    ok(&args);
+    assert_eq!(std::fs::read_to_string(again.join("figures3d.csv")).unwrap(), csv);
+    // Bad parameters, each named.
+    let t = |extra: &[&str], expect: &[&str]| {
+        let mut args = base.to_vec();
+        args.extend_from_slice(extra);
+        fails(&args, expect);
+    };
+    t(&["--rays", "1000"], &["--rays must be 4·k²", "900 and 1024"]);
+    t(&["--rays", "2"], &["--rays", "the smallest is 4"]);
+    t(&["--sizes", "8,8"], &["--sizes", "8 twice"]);
+    t(&["--sizes", "0"], &["--sizes", "greater than 0"]);
+    t(&["--sizes", "600"], &["--sizes", "1024/√3"]);
+    t(&["--tc", "4"], &["--tc belongs to the 2D figures"]);
+    t(&["--lengths", "8"], &["--lengths belongs to the 2D figures"]);
+    fails(
+        &["figures", "--dim", "3", "--out", o, "--count", "300", "--sources", "301"],
+        &["--sources", "301"],
+    );
+    t(&["--cells-per-segment", "0"], &["--cells-per-segment"]);
+    fails(&["figures", "--out", o, "--sizes", "8", "--quiet"], &["--sizes belongs to --dim 3"]);
+    fails(&["figures", "--dim", "4", "--out", o], &["--dim", "4"]);
 }

@@ -166,8 +166,11 @@ fn rays_through_shared_edges_and_vertices_of_the_box_room_hit_and_agree() {
             for (s, &o) in sources.iter().enumerate() {
                 let directions: Vec<DVec3> =
                     targets.iter().map(|t| *t - o).filter(|d| d.dot(p.normal) > 0.0).collect();
-                let bundle =
-                    Bundle3 { source: Source3 { origin: o, normal: p.normal, patch: Some(k) }, directions };
+                let bundle = Bundle3 {
+                    source: Source3 { origin: o, normal: p.normal, patch: Some(k) },
+                    directions,
+                    layout: None,
+                };
                 let what = format!("seed 300: box room λ={lambda} axis={axis:?}, patch {k} source {s}");
                 let b = agree(&what, &scene, &grid, &bundle);
                 assert_eq!(b.counters.actual_intersections, bundle.len() as u64, "{what}: a ray escaped");
@@ -197,6 +200,7 @@ fn axis_parallel_rays_along_shared_edges_and_cell_planes_agree() {
             let bundle = Bundle3 {
                 source: Source3 { origin: o, normal: DVec3::Y, patch: None },
                 directions: directions.clone(),
+                layout: None,
             };
             let what = format!("box room axis={axis:?}, floor source {s} at {o}");
             let b = agree(&what, &scene, &grid, &bundle);
@@ -237,8 +241,11 @@ fn grazing_rays_agree() {
                 directions.push(g + q.normal * (1e-10 * g.length()));
             }
             directions.retain(|d| d.dot(p.normal) > 0.0 && d.length() > 0.0);
-            let bundle =
-                Bundle3 { source: Source3 { origin: o, normal: p.normal, patch: Some(k) }, directions };
+            let bundle = Bundle3 {
+                source: Source3 { origin: o, normal: p.normal, patch: Some(k) },
+                directions,
+                layout: None,
+            };
             agree(&format!("seed {seed}: grazing, source {s} on patch {k}"), &scene, &grid, &bundle);
         }
     }
@@ -369,7 +376,7 @@ fn a_hit_just_beyond_a_cells_exit_does_not_stop_the_walk_before_a_nearer_polygon
     for k in 0..2 {
         assert_eq!(trace::screen(&source, k, &scene.polygons[k]), trace::Screen3::Pass, "polygon {k}");
     }
-    let bundle = Bundle3 { source, directions: vec![DVec3::X, DVec3::new(1.0, 1e-9, -1e-9)] };
+    let bundle = Bundle3 { source, directions: vec![DVec3::X, DVec3::new(1.0, 1e-9, -1e-9)], layout: None };
     let b = agree("stopping margin", &scene, &grid, &bundle);
     assert!(b.hits.iter().all(|h| h.is_some_and(|h| h.polygon == 0)), "{:?}", b.hits);
 }
@@ -403,8 +410,11 @@ fn hits_in_the_margin_beyond_a_sharp_vertex_are_found_in_the_next_cell() {
         if brute::intersect(o, d, &scene.polygons[0]).is_some() {
             found += 1;
         }
-        let bundle =
-            Bundle3 { source: Source3 { origin: o, normal: DVec3::Z, patch: None }, directions: vec![d] };
+        let bundle = Bundle3 {
+            source: Source3 { origin: o, normal: DVec3::Z, patch: None },
+            directions: vec![d],
+            layout: None,
+        };
         agree(&format!("sharp vertex, ray {i}"), &scene, &grid, &bundle);
     }
     assert!(found >= 4, "the construction must put hits beyond the cell plane ({found})");
@@ -441,6 +451,7 @@ fn an_almost_planar_polygons_hits_on_its_plane_are_found() {
         let bundle = Bundle3 {
             source: Source3 { origin: o, normal: DVec3::Z, patch: None },
             directions: vec![DVec3::Z],
+            layout: None,
         };
         let b = agree(&format!("seed 600: twisted quad, ray {i}"), &scene, &grid, &bundle);
         let hit = b.hits[0].unwrap_or_else(|| panic!("ray {i} from {o} misses the quad"));

@@ -15,4 +15,5 @@ mod scene3d;
 mod scene_loader;
 mod support;
 mod tracers;
+mod tracers3d;
 mod workstream;

@@ -45,8 +45,9 @@
 use super::grid::Grid3;
 use super::hemisphere::{HemisphereError, HemisphereRays, Strata, MAX_HEMISPHERE_RAYS};
 use super::scene::{Polygon, Scene3};
-use super::trace::{self, Bundle3, Method3};
+use super::trace::{self, Bundle3, Method3, Trace3Error};
 use crate::radiosity::form_factors::{Entry, Row, MAX_ORIGINS};
+use crate::trace::ShellParams;
 use glam::DVec3;
 
 /// Rays per origin of the 3D form factors, unless asked otherwise (128 × 32, [`split_rays`]).
@@ -69,6 +70,8 @@ pub struct Ff3Params {
     pub strata: Strata,
     /// The tracer (all give the same form factors).
     pub method: Method3,
+    /// The shell parameters of the polar and sweep tracers.
+    pub shells: ShellParams,
 }
 
 impl Default for Ff3Params {
@@ -78,6 +81,7 @@ impl Default for Ff3Params {
             origins: DEFAULT_ORIGINS,
             strata: Strata::Cosine,
             method: Method3::Conventional,
+            shells: ShellParams::default(),
         }
     }
 }
@@ -93,6 +97,8 @@ pub enum Ff3Error {
     NoSuchPolygon { index: usize, count: usize },
     #[error(transparent)]
     Hemisphere(#[from] HemisphereError),
+    #[error(transparent)]
+    Trace(#[from] Trace3Error),
 }
 
 /// The counts `(n_theta, n_phi)` of an `r`-ray hemisphere set: `n_phi` is the divisor of `r`
@@ -166,7 +172,8 @@ pub fn row(scene: &Scene3, grid: &Grid3, k: usize, p: &Ff3Params) -> Result<Row,
     let mut acc = vec![0.0f64; scene.polygons.len()];
     for origin in origins {
         set.origin = origin;
-        let traced = trace::trace(p.method, scene, grid, &Bundle3::from_hemisphere(&set, Some(k)));
+        let traced =
+            trace::trace(p.method, scene, grid, &Bundle3::from_hemisphere(&set, Some(k)), &p.shells)?;
         for (hit, ray) in traced.hits.iter().zip(&set.rays) {
             if let Some(h) = hit {
                 acc[h.polygon] += ray.weight * scale;
@@ -188,7 +195,7 @@ pub fn point_row(
 ) -> Result<Row, Ff3Error> {
     let (n_theta, n_phi) = split_rays(p.rays)?;
     let set = HemisphereRays::new(origin, normal, n_theta, n_phi, p.strata)?;
-    let traced = trace::trace(p.method, scene, grid, &Bundle3::from_hemisphere(&set, None));
+    let traced = trace::trace(p.method, scene, grid, &Bundle3::from_hemisphere(&set, None), &p.shells)?;
     let mut acc = vec![0.0f64; scene.polygons.len()];
     for (hit, ray) in traced.hits.iter().zip(&set.rays) {
         if let Some(h) = hit {

@@ -479,9 +479,12 @@ fn axes(normal: DVec3) -> (usize, usize, usize) {
 
 /// A polygon as registration sees it (module docs): its vertices projected onto its plane and
 /// offset outwards by twice the hit rule's margin.
+/// The polar and sweep tracers take their spans and slices from it too, so that every hit the
+/// hit rule accepts lies inside it with room to spare.
 #[derive(Clone, Debug)]
-struct RegistrationPolygon {
-    vertices: Vec<DVec3>,
+pub(crate) struct RegistrationPolygon {
+    /// The offset vertices, in the polygon's order.
+    pub(crate) vertices: Vec<DVec3>,
     normal: DVec3,
     centre: DVec3,
     lo: DVec3,
@@ -489,7 +492,7 @@ struct RegistrationPolygon {
 }
 
 impl RegistrationPolygon {
-    fn new(p: &Polygon) -> RegistrationPolygon {
+    pub(crate) fn new(p: &Polygon) -> RegistrationPolygon {
         let n = p.normal;
         let c = p.centre;
         let v: Vec<DVec3> = p.vertices.iter().map(|v| *v - n * (*v - c).dot(n)).collect();

@@ -1,7 +1,8 @@
 //! Shelling in 3D: scenes of convex planar polygons, the hemisphere ray sets shot from a point
-//! on them, the 3D grid with macro-regions and the brute-force and conventional tracers (the
-//! paper's two extensions, polar and sweep, are still to come). `shelling scene gen --dim 3`
-//! (in `main.rs`) writes the 3D workload.
+//! on them, the 3D grid with macro-regions and four tracers: brute force, the conventional
+//! technique and the paper's two extensions, polar and sweep. `shelling scene gen --dim 3` (in
+//! `main.rs`) writes the 3D workload, and `shelling figures --dim 3` measures it
+//! (`crate::figures::d3`).
 //!
 //! Everything else in the crate is 2D (segments in the plane); this module tree is its 3D
 //! counterpart, built with `glam`'s [`DVec3`](glam::DVec3):
@@ -18,8 +19,12 @@
 //! * [`brute`]: the brute-force ray–convex-polygon intersection, the 3D oracle.
 //! * [`grid`]: the uniform 3D grid with macro-regions (issue 18 part 3), and [`walk`], its 3D-DDA
 //!   traversal.
-//! * [`trace`]: the brute-force and conventional 3D tracers with backface screening and the
-//!   paper's counters (issue 18 part 4, first half).
+//! * [`trace`]: the tracers' entry point ([`trace::trace`], [`trace::Method3`]), the brute-force
+//!   and conventional 3D tracers with backface screening and the paper's counters.
+//! * [`polar`]: the direct extension (sectors in (Θ, Φ), shells of constant depth, tracking S),
+//!   with [`span`], a polygon's spanning angles computed exactly.
+//! * [`sweep`]: the sweep-plane extension, each plane a 2D scene traced by the 2D deterministic
+//!   tracer with hits decided in 3D.
 //! * [`form_factors`]: the 3D form factors `F_ij` of a polygon's row from cosine-weighted
 //!   hemisphere sets shot from `M` origins spread over it, by any tracer (issue 18 part 6).
 //!
@@ -31,7 +36,10 @@ pub mod gen;
 pub mod grid;
 pub mod hemisphere;
 pub mod obj;
+pub mod polar;
 pub mod scene;
+pub mod span;
+pub mod sweep;
 pub mod trace;
 pub mod walk;
 

@@ -54,6 +54,7 @@ use super::grid::Grid3;
 use super::hemisphere::HemisphereRays;
 use super::scene::{Polygon, Scene3};
 use crate::counters::Counters;
+use crate::trace::ShellParams;
 use glam::DVec3;
 
 /// The source of a bundle: a point with a unit normal, and the patch it lies on.
@@ -66,20 +67,69 @@ pub struct Source3 {
     pub patch: Option<usize>,
 }
 
+/// How a bundle's rays are stratified in (Θ, Φ): the numbering of [`HemisphereRays`] (ray `k`
+/// is band `k / n_phi`, cell `k % n_phi`), which the polar and sweep tracers need.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout3 {
+    /// The number of Θ-bands; band `i`'s rays have `Θ = (i + ½)·2π/n_theta`.
+    pub n_theta: usize,
+    /// The number of Φ-cells per band.
+    pub n_phi: usize,
+    /// The frame's first tangent (`Θ = 0`).
+    pub tangent: DVec3,
+    /// The frame's second tangent (`Θ = π/2`).
+    pub bitangent: DVec3,
+    /// The `Φ` of the rays of cell `j`, increasing in `j` (the same in every band).
+    pub phi: Vec<f64>,
+}
+
 /// A bundle of rays from one source.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bundle3 {
     pub source: Source3,
     /// The ray directions (need not be unit; `t` is in units of each direction's length).
     pub directions: Vec<DVec3>,
+    /// The (Θ, Φ) stratification of the directions, when they are a hemisphere set's (unit
+    /// directions, in its numbering); `None` for free directions, which only the brute and
+    /// conventional tracers take.
+    pub layout: Option<Layout3>,
 }
 
 impl Bundle3 {
+    /// The layout the polar and sweep tracers (`method`) need, checked against the directions:
+    /// `n_theta × n_phi` unit directions and `n_phi` increasing angles.
+    pub(crate) fn layout_for(&self, method: Method3) -> Result<&Layout3, Trace3Error> {
+        let l = self.layout.as_ref().ok_or(Trace3Error::NoLayout(method))?;
+        if l.n_theta.checked_mul(l.n_phi) != Some(self.directions.len()) || l.phi.len() != l.n_phi {
+            return Err(Trace3Error::BadLayout(format!(
+                "{} × {} cells with {} angles for {} directions",
+                l.n_theta,
+                l.n_phi,
+                l.phi.len(),
+                self.directions.len()
+            )));
+        }
+        if let Some(i) = self.directions.iter().position(|d| !((d.length() - 1.0).abs() <= 1e-12)) {
+            return Err(Trace3Error::BadLayout(format!("direction {i} is not a unit vector")));
+        }
+        if !l.phi.windows(2).all(|w| w[0] < w[1]) {
+            return Err(Trace3Error::BadLayout("the cells' angles do not increase".to_string()));
+        }
+        Ok(l)
+    }
+
     /// The bundle of a hemisphere ray set leaving from patch `patch`.
     pub fn from_hemisphere(rays: &HemisphereRays, patch: Option<usize>) -> Bundle3 {
         Bundle3 {
             source: Source3 { origin: rays.origin, normal: rays.normal, patch },
             directions: rays.rays.iter().map(|r| r.direction).collect(),
+            layout: Some(Layout3 {
+                n_theta: rays.n_theta,
+                n_phi: rays.n_phi,
+                tangent: rays.tangent,
+                bitangent: rays.bitangent,
+                phi: rays.rays[..rays.n_phi].iter().map(|r| r.phi).collect(),
+            }),
         }
     }
 
@@ -126,19 +176,44 @@ pub enum Method3 {
     Brute,
     /// Ray by ray through the 3D grid.
     Conventional,
+    /// The paper's direct extension: sectors in (Θ, Φ), shells of constant depth, subshells
+    /// from the neighbouring shell (`super::polar`).
+    Polar,
+    /// The paper's second extension: a plane rotated about the normal, the 2D deterministic
+    /// technique in each plane (`super::sweep`).
+    Sweep,
 }
 
 impl Method3 {
     /// Every 3D technique, in the order the tables list them.
-    pub const ALL: [Method3; 2] = [Method3::Brute, Method3::Conventional];
+    pub const ALL: [Method3; 4] = [Method3::Brute, Method3::Conventional, Method3::Polar, Method3::Sweep];
 
     /// The technique's name on the command line and in tables.
     pub fn name(self) -> &'static str {
         match self {
             Method3::Brute => "brute",
             Method3::Conventional => "conventional",
+            Method3::Polar => "polar",
+            Method3::Sweep => "sweep",
         }
     }
+}
+
+/// Why a 3D trace cannot run.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum Trace3Error {
+    /// The polar and sweep tracers need the (Θ, Φ) numbering of a hemisphere set.
+    #[error("the {0} tracer needs a hemisphere ray set (stratified in Θ and Φ), not free directions")]
+    NoLayout(Method3),
+    /// The layout does not describe the directions.
+    #[error("the bundle's layout does not fit its directions: {0}")]
+    BadLayout(String),
+    /// The sweep plane holds two opposite Θ-bands, so their number must be even.
+    #[error("the sweep tracer needs an even number of Θ-bands (a plane holds two opposite bands), got {0}")]
+    OddBands(usize),
+    /// The shell parameters are invalid (the message names the parameter).
+    #[error("invalid shell parameters: {0}")]
+    InvalidParams(String),
 }
 
 impl std::fmt::Display for Method3 {
@@ -157,21 +232,32 @@ pub struct Trace3 {
 
 /// Offers hit `(k, t)` to `best`: nearer wins, of equal `t` the lower index.
 #[inline]
-fn offer(best: &mut Option<Hit>, k: usize, t: f64, front: bool) {
+pub(crate) fn offer(best: &mut Option<Hit>, k: usize, t: f64, front: bool) {
     if best.is_none_or(|b| t < b.t || (t == b.t && k < b.polygon)) {
         *best = Some(Hit { polygon: k, t, front });
     }
 }
 
-/// Fills in the counters every tracer shares: actual intersections and the ADLC.
-fn finish(hits: Vec<Option<Hit>>, mut counters: Counters) -> Trace3 {
+/// The average degree of local coherence (Def. 2.10) of a set of nearest hits: the rays that
+/// hit over the distinct polygons they hit (0 when nothing is hit).
+pub fn adlc3(hits: &[Option<Hit>]) -> f64 {
     let mut ids: Vec<usize> = hits.iter().flatten().map(|h| h.polygon).collect();
     let total = ids.len();
     ids.sort_unstable();
     ids.dedup();
-    counters.actual_intersections = total as u64;
-    counters.adlc_true = if total == 0 { 0.0 } else { total as f64 / ids.len() as f64 };
-    counters.adlc_estimated = counters.adlc_true;
+    if total == 0 {
+        0.0
+    } else {
+        total as f64 / ids.len() as f64
+    }
+}
+
+/// Fills in the counters every tracer shares: actual intersections and the ADLC; the estimate
+/// is the true value for a tracer that tracks nothing (`estimate` `None`).
+pub(crate) fn finish(hits: Vec<Option<Hit>>, mut counters: Counters, estimate: Option<f64>) -> Trace3 {
+    counters.actual_intersections = hits.iter().flatten().count() as u64;
+    counters.adlc_true = adlc3(&hits);
+    counters.adlc_estimated = estimate.unwrap_or(counters.adlc_true);
     Trace3 { hits, counters }
 }
 
@@ -202,7 +288,7 @@ pub fn brute(scene: &Scene3, bundle: &Bundle3) -> Trace3 {
             best
         })
         .collect();
-    finish(hits, c)
+    finish(hits, c, None)
 }
 
 /// Ray by ray through `grid` (built over `scene`), see the module docs.
@@ -245,15 +331,25 @@ pub fn conventional(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
         });
         hits.push(best);
     }
-    finish(hits, c)
+    finish(hits, c, None)
 }
 
-/// The trace of `bundle` by `method` (`grid` is used by the conventional technique only).
-pub fn trace(method: Method3, scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
-    match method {
+/// The trace of `bundle` by `method` (`grid` is used by the grid tracers; `params`, the 2D
+/// shell parameters, by polar and sweep, checked first whichever the method).
+pub fn trace(
+    method: Method3,
+    scene: &Scene3,
+    grid: &Grid3,
+    bundle: &Bundle3,
+    params: &ShellParams,
+) -> Result<Trace3, Trace3Error> {
+    params.validate().map_err(Trace3Error::InvalidParams)?;
+    Ok(match method {
         Method3::Brute => brute(scene, bundle),
         Method3::Conventional => conventional(scene, grid, bundle),
-    }
+        Method3::Polar => super::polar::trace(scene, grid, bundle, params)?,
+        Method3::Sweep => super::sweep::trace(scene, bundle, params)?,
+    })
 }
 
 #[cfg(test)]

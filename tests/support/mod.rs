@@ -3,3 +3,4 @@
 
 pub mod closed3d;
 pub mod replay;
+pub mod tracers3d;

@@ -7,3 +7,4 @@ mod support;
 mod ff3d;
 mod radiosity;
 mod replay;
+mod tracers3d;
