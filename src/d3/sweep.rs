@@ -175,7 +175,10 @@ pub fn planes(scene: &Scene3, bundle: &Bundle3) -> Result<Vec<SweepPlane>, Trace
             let q0 = q0 - dir * q0.dot(dir);
             // Front side along n2: b − a runs along −dir.
             let seg = Segment::new(q0 + dir * shi, q0 + dir * slo);
-            if !(shi > slo) || facing(Vec2::ZERO, Vec2::Y, &seg) == Facing::BackFacing || seg.a == seg.b {
+            if shi.partial_cmp(&slo) != Some(std::cmp::Ordering::Greater)
+                || facing(Vec2::ZERO, Vec2::Y, &seg) == Facing::BackFacing
+                || seg.a == seg.b
+            {
                 direct.push(k);
                 continue;
             }

@@ -109,7 +109,11 @@ impl Bundle3 {
                 self.directions.len()
             )));
         }
-        if let Some(i) = self.directions.iter().position(|d| !((d.length() - 1.0).abs() <= 1e-12)) {
+        if let Some(i) = self
+            .directions
+            .iter()
+            .position(|d| (d.length() - 1.0).abs().partial_cmp(&1e-12) != Some(std::cmp::Ordering::Less))
+        {
             return Err(Trace3Error::BadLayout(format!("direction {i} is not a unit vector")));
         }
         if !l.phi.windows(2).all(|w| w[0] < w[1]) {
