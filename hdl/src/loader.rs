@@ -41,13 +41,15 @@
 //! response in flight has a slot waiting for it: nothing can be dropped, and backpressure on the
 //! output stops the id stream (`id_ready` low) instead.
 //!
-//! Counters (5 bits, `0..=16`): `reserved` (ids accepted, not yet sent out) and `done` (responses
-//! written, not yet sent out), `done ≤ reserved ≤ DEPTH`. Every cycle the lanes read the head slot
-//! (`rd_ptr`) and the one after it into their read registers and show the second after a pop,
+//! The FIFO's response pointer, read side and count of filled slots are a [`FifoControl`] (the
+//! one first-word-fall-through FIFO block of the PE: a response is its push, a patch leaving its
+//! pop). Counters (5 bits, `0..=16`): `reserved` (ids accepted, not yet sent out; the loader's
+//! own) and the control's `count` (responses written, not yet sent out), `count ≤ reserved ≤
+//! DEPTH`. Every cycle the lanes read the head slot and the one after it into their read registers and show the second after a pop,
 //! so `out_ready` reaches no RAM address (it did, through the address multiplexer, on the
 //! processing element's critical path at 144 MHz); `out_valid` is set for the
 //! next cycle when a filled slot remains after this cycle's pop *excluding* this cycle's write
-//! (`done − pop > 0`), because the block RAM reads before it writes.
+//! (`count − pop > 0`), because the block RAM reads before it writes.
 //!
 //! # Latency and throughput
 //!

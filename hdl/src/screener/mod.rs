@@ -90,7 +90,8 @@
 //!
 //! The stages are cut for an ECP5 (LFE5U-85F, speed grade 6) clock of 150 MHz: at most one
 //! carry chain, or two or three conditional shifts, between registers; the output FIFO reads
-//! the head and the slot after it every cycle (`rd_ptr + 1` kept in a register), so that
+//! the head and the slot after it every cycle (a [`FifoControl`]: fill pointer, read side and
+//! count of complete slots, `rd_ptr + 1` kept in a register), so that
 //! `out_ready` reaches no read address, only the registered choice between the two; the
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
@@ -1595,7 +1596,7 @@ impl Logic for Screener {
         self.out_wy.next = self.lane_wy.read_data.val();
 
         // Counters of the credit scheme: `used` counts a patch from its acceptance until it
-        // leaves; `done` counts complete slots not yet out.
+        // leaves; the FIFO control's `count` counts complete slots not yet out.
         self.used_inc.next = self.used.q.val() + self.one6.val();
         self.used_dec.next = self.used.q.val() - self.one6.val();
         self.used_next.next = self.used.q.val();
