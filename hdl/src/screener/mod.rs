@@ -96,7 +96,7 @@
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 153.8 MHz (141.1–157.7; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`);
+//! median of 150.8 MHz (140.0–158.7; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`);
 //! its slowest path at seed 1 is stage 7's normalised exponent into stage 8 (7.09 ns).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
