@@ -66,6 +66,20 @@ macro_rules! counters {
                 [$(self.$field.to_f64()),*]
             }
 
+            /// The exact per-source means of these totals over `sources` sources (at least
+            /// one), in [`Counters::NAMES`] order.
+            pub fn exact_means(&self, sources: usize) -> [f64; Self::COUNT] {
+                let n = sources.max(1) as f64;
+                self.values().map(|v| v / n)
+            }
+
+            /// The exact per-source mean of the total named `name` (one of
+            /// [`Counters::NAMES`]) over `sources` sources.
+            pub fn exact_mean_of(&self, sources: usize, name: &str) -> Option<f64> {
+                let i = Self::NAMES.iter().position(|n| *n == name)?;
+                Some(self.exact_means(sources)[i])
+            }
+
             /// The per-source mean of these totals over `n` sources: the work counts rounded to
             /// whole counts, the ADLC fields divided.
             pub fn mean(&self, n: f64) -> Counters {

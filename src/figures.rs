@@ -161,14 +161,12 @@ pub struct Row {
 impl Row {
     /// Exact per-source means of the counters, in [`Counters::NAMES`] order.
     pub fn mean_values(&self) -> [f64; 7] {
-        let n = self.sources.max(1) as f64;
-        self.total.values().map(|v| v / n)
+        self.total.exact_means(self.sources)
     }
 
     /// The exact per-source mean of the counter named `name` (one of [`Counters::NAMES`]).
     pub fn mean_of(&self, name: &str) -> Option<f64> {
-        let i = Counters::NAMES.iter().position(|n| *n == name)?;
-        Some(self.mean_values()[i])
+        self.total.exact_mean_of(self.sources, name)
     }
 }
 
