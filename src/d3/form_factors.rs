@@ -46,7 +46,7 @@ use super::grid::Grid3;
 use super::hemisphere::{HemisphereError, HemisphereRays, Strata, MAX_HEMISPHERE_RAYS};
 use super::scene::{Polygon, Scene3};
 use super::trace::{self, Bundle3, Method3, Trace3Error};
-use crate::radiosity::form_factors::{Entry, Row, MAX_ORIGINS};
+use crate::radiosity::form_factors::{par_rows, Entry, Row, MAX_ORIGINS};
 use crate::trace::ShellParams;
 use glam::DVec3;
 
@@ -225,15 +225,7 @@ pub fn rows(
     p: &Ff3Params,
     progress: impl Fn() + Sync,
 ) -> Result<Vec<Row>, Ff3Error> {
-    use rayon::prelude::*;
-    range
-        .into_par_iter()
-        .map(|k| {
-            let r = row(scene, grid, k, p);
-            progress();
-            r
-        })
-        .collect()
+    par_rows(range, progress, |k| row(scene, grid, k, p))
 }
 
 #[cfg(test)]

@@ -217,11 +217,21 @@ pub fn rows(
     p: &FfParams,
     progress: impl Fn() + Sync,
 ) -> Result<Vec<Row>, FfError> {
+    par_rows(range, progress, |k| row(prepared, k, p))
+}
+
+/// `row(k)` for every source `k` of `range` on all cores, in order, calling `progress` once per
+/// finished row (the 2D and the 3D rows alike).
+pub(crate) fn par_rows<E: Send>(
+    range: std::ops::Range<usize>,
+    progress: impl Fn() + Sync,
+    row: impl Fn(usize) -> Result<Row, E> + Sync,
+) -> Result<Vec<Row>, E> {
     use rayon::prelude::*;
     range
         .into_par_iter()
         .map(|k| {
-            let r = row(prepared, k, p);
+            let r = row(k);
             progress();
             r
         })
