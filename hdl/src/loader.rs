@@ -41,13 +41,15 @@
 //! response in flight has a slot waiting for it: nothing can be dropped, and backpressure on the
 //! output stops the id stream (`id_ready` low) instead.
 //!
-//! Counters (5 bits, `0..=16`): `reserved` (ids accepted, not yet sent out) and `done` (responses
-//! written, not yet sent out), `done ≤ reserved ≤ DEPTH`. Every cycle the lanes read the head slot
-//! (`rd_ptr`) and the one after it into their read registers and show the second after a pop,
+//! The FIFO's response pointer, read side and count of filled slots are a [`FifoControl`] (the
+//! one first-word-fall-through FIFO block of the PE: a response is its push, a patch leaving its
+//! pop). Counters (5 bits, `0..=16`): `reserved` (ids accepted, not yet sent out; the loader's
+//! own) and the control's `count` (responses written, not yet sent out), `count ≤ reserved ≤
+//! DEPTH`. Every cycle the lanes read the head slot and the one after it into their read registers and show the second after a pop,
 //! so `out_ready` reaches no RAM address (it did, through the address multiplexer, on the
 //! processing element's critical path at 144 MHz); `out_valid` is set for the
 //! next cycle when a filled slot remains after this cycle's pop *excluding* this cycle's write
-//! (`done − pop > 0`), because the block RAM reads before it writes.
+//! (`count − pop > 0`), because the block RAM reads before it writes.
 //!
 //! # Latency and throughput
 //!
@@ -65,7 +67,7 @@
 //! and sent again each time), with the coordinates the memory holds; `loads` equals the number
 //! of ids; plus the exact cycle counts of an unstalled stream.
 
-use crate::prim::FifoRam;
+use crate::prim::{FifoControl, FifoRam};
 use rust_hdl::prelude::*;
 
 /// FIFO capacity in patches (slots reserved, requested or buffered).
@@ -166,14 +168,13 @@ pub struct PatchLoader {
     pub loads: Signal<Out, Bits<32>>,
     // Pointers and counters.
     req_ptr: DFF<Bits<4>>,
-    resp_ptr: DFF<Bits<4>>,
-    rd_ptr: DFF<Bits<4>>,
     reserved: DFF<Bits<5>>,
-    done: DFF<Bits<5>>,
-    head_valid: DFF<bool>,
     req_valid: DFF<bool>,
     req_addr: DFF<Bits<16>>,
     load_count: DFF<Bits<32>>,
+    /// The FIFO's response pointer (its tail), read side and count of filled slots: a word is
+    /// pushed when its response arrives.
+    fifo: FifoControl<4, 5>,
     // The FIFO lanes.
     lane_id: FifoRam<16, 4>,
     lane_ax: FifoRam<17, 4>,
@@ -185,17 +186,11 @@ pub struct PatchLoader {
     accept: Signal<Local, bool>,
     pop: Signal<Local, bool>,
     req_inc: Signal<Local, Bits<4>>,
-    resp_inc: Signal<Local, Bits<4>>,
-    rd_inc: Signal<Local, Bits<4>>,
     reserved_inc: Signal<Local, Bits<5>>,
     reserved_dec: Signal<Local, Bits<5>>,
-    done_inc: Signal<Local, Bits<5>>,
-    done_dec: Signal<Local, Bits<5>>,
-    done_left: Signal<Local, Bits<5>>,
     load_inc: Signal<Local, Bits<32>>,
     // Constants.
     depth5: Constant<Bits<5>>,
-    zero5: Constant<Bits<5>>,
     one5: Constant<Bits<5>>,
     one4: Constant<Bits<4>>,
     one32: Constant<Bits<32>>,
@@ -225,14 +220,11 @@ impl Default for PatchLoader {
             out_by: Default::default(),
             loads: Default::default(),
             req_ptr: Default::default(),
-            resp_ptr: Default::default(),
-            rd_ptr: Default::default(),
             reserved: Default::default(),
-            done: Default::default(),
-            head_valid: Default::default(),
             req_valid: Default::default(),
             req_addr: Default::default(),
             load_count: Default::default(),
+            fifo: Default::default(),
             lane_id: Default::default(),
             lane_ax: Default::default(),
             lane_ay: Default::default(),
@@ -242,16 +234,10 @@ impl Default for PatchLoader {
             accept: Default::default(),
             pop: Default::default(),
             req_inc: Default::default(),
-            resp_inc: Default::default(),
-            rd_inc: Default::default(),
             reserved_inc: Default::default(),
             reserved_dec: Default::default(),
-            done_inc: Default::default(),
-            done_dec: Default::default(),
-            done_left: Default::default(),
             load_inc: Default::default(),
             depth5: Constant::new((DEPTH as u64).into()),
-            zero5: Constant::new(0.into()),
             one5: Constant::new(1.into()),
             one4: Constant::new(1.into()),
             one32: Constant::new(1.into()),
@@ -267,17 +253,15 @@ impl PatchLoader {
 
     /// Slots holding a fetched patch that has not left yet, `0..=reserved()`: for testbenches.
     pub fn filled(&self) -> usize {
-        self.done.q.val().index()
+        self.fifo.count.val().index()
     }
 }
 
 impl Logic for PatchLoader {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clock, req_ptr, resp_ptr, rd_ptr, reserved, done, head_valid, req_valid, req_addr,
-            load_count
-        );
+        dff_setup!(self, clock, req_ptr, reserved, req_valid, req_addr, load_count);
+        self.fifo.clock.next = self.clock.val();
         self.lane_id.clock.next = self.clock.val();
         self.lane_ax.clock.next = self.clock.val();
         self.lane_ay.clock.next = self.clock.val();
@@ -288,16 +272,13 @@ impl Logic for PatchLoader {
         self.room.next = self.reserved.q.val() != self.depth5.val();
         self.id_ready.next = self.room.val();
         self.accept.next = self.id_valid.val() & self.room.val();
-        self.pop.next = self.head_valid.q.val() & self.out_ready.val();
+        self.pop.next = self.fifo.valid.val() & self.out_ready.val();
+        self.fifo.pop.next = self.pop.val();
 
         // Pointer and counter arithmetic, each at its exact width.
         self.req_inc.next = self.req_ptr.q.val() + self.one4.val();
-        self.resp_inc.next = self.resp_ptr.q.val() + self.one4.val();
-        self.rd_inc.next = self.rd_ptr.q.val() + self.one4.val();
         self.reserved_inc.next = self.reserved.q.val() + self.one5.val();
         self.reserved_dec.next = self.reserved.q.val() - self.one5.val();
-        self.done_inc.next = self.done.q.val() + self.one5.val();
-        self.done_dec.next = self.done.q.val() - self.one5.val();
         self.load_inc.next = self.load_count.q.val() + self.one32.val();
 
         // Id accepted: reserve the next slot, write its id, issue the request (next cycle).
@@ -313,10 +294,10 @@ impl Logic for PatchLoader {
         self.mem_addr.next = self.req_addr.q.val();
 
         // Response: fill the oldest slot awaiting one.
-        self.lane_ax.write_address.next = self.resp_ptr.q.val();
-        self.lane_ay.write_address.next = self.resp_ptr.q.val();
-        self.lane_bx.write_address.next = self.resp_ptr.q.val();
-        self.lane_by.write_address.next = self.resp_ptr.q.val();
+        self.lane_ax.write_address.next = self.fifo.tail_address.val();
+        self.lane_ay.write_address.next = self.fifo.tail_address.val();
+        self.lane_bx.write_address.next = self.fifo.tail_address.val();
+        self.lane_by.write_address.next = self.fifo.tail_address.val();
         self.lane_ax.write_data.next = self.mem_ax.val();
         self.lane_ay.write_data.next = self.mem_ay.val();
         self.lane_bx.write_data.next = self.mem_bx.val();
@@ -325,36 +306,29 @@ impl Logic for PatchLoader {
         self.lane_ay.write_enable.next = self.mem_valid.val();
         self.lane_bx.write_enable.next = self.mem_valid.val();
         self.lane_by.write_enable.next = self.mem_valid.val();
+        self.fifo.push.next = self.mem_valid.val();
         if self.mem_valid.val() {
-            self.resp_ptr.d.next = self.resp_inc.val();
             self.load_count.d.next = self.load_inc.val();
         }
         self.loads.next = self.load_count.q.val();
 
         // Head: read the head slot and the one after it; after a pop the second is the head.
-        self.done_left.next = self.done.q.val();
-        if self.pop.val() {
-            self.rd_ptr.d.next = self.rd_inc.val();
-            self.done_left.next = self.done_dec.val();
-        }
-        self.lane_id.head_address.next = self.rd_ptr.q.val();
-        self.lane_id.next_address.next = self.rd_inc.val();
+        self.lane_id.head_address.next = self.fifo.head_address.val();
+        self.lane_id.next_address.next = self.fifo.next_address.val();
         self.lane_id.pop.next = self.pop.val();
-        self.lane_ax.head_address.next = self.rd_ptr.q.val();
-        self.lane_ax.next_address.next = self.rd_inc.val();
+        self.lane_ax.head_address.next = self.fifo.head_address.val();
+        self.lane_ax.next_address.next = self.fifo.next_address.val();
         self.lane_ax.pop.next = self.pop.val();
-        self.lane_ay.head_address.next = self.rd_ptr.q.val();
-        self.lane_ay.next_address.next = self.rd_inc.val();
+        self.lane_ay.head_address.next = self.fifo.head_address.val();
+        self.lane_ay.next_address.next = self.fifo.next_address.val();
         self.lane_ay.pop.next = self.pop.val();
-        self.lane_bx.head_address.next = self.rd_ptr.q.val();
-        self.lane_bx.next_address.next = self.rd_inc.val();
+        self.lane_bx.head_address.next = self.fifo.head_address.val();
+        self.lane_bx.next_address.next = self.fifo.next_address.val();
         self.lane_bx.pop.next = self.pop.val();
-        self.lane_by.head_address.next = self.rd_ptr.q.val();
-        self.lane_by.next_address.next = self.rd_inc.val();
+        self.lane_by.head_address.next = self.fifo.head_address.val();
+        self.lane_by.next_address.next = self.fifo.next_address.val();
         self.lane_by.pop.next = self.pop.val();
-        // Valid next cycle when the head was written before this edge (read before write).
-        self.head_valid.d.next = self.done_left.val() != self.zero5.val();
-        self.out_valid.next = self.head_valid.q.val();
+        self.out_valid.next = self.fifo.valid.val();
         self.out_id.next = self.lane_id.read_data.val();
         self.out_ax.next = self.lane_ax.read_data.val();
         self.out_ay.next = self.lane_ay.read_data.val();
@@ -367,12 +341,6 @@ impl Logic for PatchLoader {
         }
         if !self.accept.val() & self.pop.val() {
             self.reserved.d.next = self.reserved_dec.val();
-        }
-        if self.mem_valid.val() & !self.pop.val() {
-            self.done.d.next = self.done_inc.val();
-        }
-        if !self.mem_valid.val() & self.pop.val() {
-            self.done.d.next = self.done_dec.val();
         }
     }
 }

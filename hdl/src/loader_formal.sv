@@ -53,7 +53,9 @@ module loader_formal (
     wire [31:0] loads;
     // Internal state, exposed by loader.sby (not ports of the exported module).
     wire [4:0]  reserved, done;
-    wire [3:0]  req_ptr, resp_ptr, rd_ptr;
+    // `done`, `resp_ptr`, `rd_ptr` and `rd_inc_x` (rd_ptr + 1 with bit 0 inverted) are the
+    // FIFO control's word count, tail, head and next read address (`prim::FifoControl`).
+    wire [3:0]  req_ptr, resp_ptr, rd_ptr, rd_inc_x;
     wire [15:0] lane_id [0:15];
     wire [16:0] lane_ax [0:15];
     wire [16:0] lane_ay [0:15];
@@ -69,8 +71,9 @@ module loader_formal (
         .out_ax(out_ax), .out_ay(out_ay), .out_bx(out_bx), .out_by(out_by),
         .loads(loads)
 `ifdef INDUCTION
-        , .reserved$q(reserved), .done$q(done),
-        .req_ptr$q(req_ptr), .resp_ptr$q(resp_ptr), .rd_ptr$q(rd_ptr),
+        , .reserved$q(reserved), .fifo_words_q(done),
+        .req_ptr$q(req_ptr), .fifo_tail_ptr_q(resp_ptr), .fifo_rd_ptr_q(rd_ptr),
+        .fifo_rd_inc_x_q(rd_inc_x),
         `LANE16(lane_id, lane_id), `LANE16(lane_ax, lane_ax), `LANE16(lane_ay, lane_ay),
         `LANE16(lane_bx, lane_bx), `LANE16(lane_by, lane_by)
 `endif
@@ -192,6 +195,7 @@ module loader_formal (
         // reserved (their id written).
         i_req_ptr: assert(req_ptr == rd_ptr + reserved[3:0]);
         i_resp_ptr: assert(resp_ptr == rd_ptr + done[3:0]);
+        i_rd_inc: assert(rd_inc_x == ((rd_ptr + 4'd1) ^ 4'd1));
         // The read registers show the head slot whenever they are presented.
         if (out_valid) begin
             i_head: assert(out_id == lane_id[rd_ptr] && out_ax == lane_ax[rd_ptr]

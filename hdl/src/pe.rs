@@ -48,7 +48,7 @@
 //!
 //! A [`PatchSlice`] (two entries, `in_ready` a register) sits on each side of the merger: every
 //! input of the merger is a register, and the unit's `patch_ready` reaches only the second
-//! slice, never the screener's output FIFO or the tag FIFO. The tag FIFO (a [`FifoRam`]) reads its
+//! slice, never the screener's output FIFO or the tag FIFO. The tag FIFO (a [`Fifo`]) reads its
 //! head and the entry after it every cycle, so that no RAM address depends on the merger's pop
 //! either.
 //!
@@ -67,9 +67,9 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 4096-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 8358 LUT4s, 6509 flip-flops, 16 `MULT18X18D`,
-//! 31 `DP16KD`, 244 LUT RAMs at placement seed 1; on LFE5U-85F-6 a median of 147.6 MHz over
-//! placement seeds 1–5 (139.0–153.9; 71.8 at seed 1 before the 150 MHz work), its critical path
+//! flow's register wrapper, wrapper excluded): 8257 LUT4s, 6512 flip-flops, 16 `MULT18X18D`,
+//! 31 `DP16KD`, 244 LUT RAMs at placement seed 1; on LFE5U-85F-6 a median of 144.5 MHz over
+//! placement seeds 1–5 (129.7–147.9; 71.8 at seed 1 before the 150 MHz work), its critical path
 //! at seed 1 the screener's stage-7 side flags into `outside8` (`hdl/fpga/ecp5.md`, checked
 //! against the committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
 //!
@@ -82,7 +82,7 @@
 use crate::cache::PatchCache;
 use crate::intersection::IntersectionUnit;
 use crate::loader::PatchLoader;
-use crate::prim::FifoRam;
+use crate::prim::Fifo;
 use crate::screener::Screener;
 use crate::slice::PatchSlice;
 use rust_hdl::prelude::*;
@@ -159,19 +159,11 @@ pub struct ProcessingElement {
     screener: Screener,
     unit: IntersectionUnit,
     // The tag FIFO.
-    /// Reads the head and the entry after it every cycle ([`FifoRam`]).
-    tags: FifoRam<TAG_WIDTH, TAG_BITS>,
-    /// `rd_ptr + 1` with bit 0 inverted (so that its power-up zero stands for 1): no carry chain
-    /// before the second read address.
-    rd_inc_x: DFF<Bits<TAG_BITS>>,
-    wr_ptr: DFF<Bits<TAG_BITS>>,
-    rd_ptr: DFF<Bits<TAG_BITS>>,
-    tag_count: DFF<Bits<7>>,
-    head_valid: DFF<bool>,
+    /// Reads the head and the entry after it every cycle ([`Fifo`]).
+    tags: Fifo<TAG_WIDTH, TAG_BITS, 7>,
     accept: Signal<Local, bool>,
     pop: Signal<Local, bool>,
     head_tag: Signal<Local, Bits<TAG_WIDTH>>,
-    rd_inc: Signal<Local, Bits<TAG_BITS>>,
     head_retire: Signal<Local, bool>,
     head_first: Signal<Local, Bits<10>>,
     head_count: Signal<Local, Bits<11>>,
@@ -179,8 +171,6 @@ pub struct ProcessingElement {
     retire_flag: Constant<Bits<TAG_WIDTH>>,
     full: Constant<Bits<7>>,
     zero7: Constant<Bits<7>>,
-    one7: Constant<Bits<7>>,
-    one_ptr: Constant<Bits<TAG_BITS>>,
 }
 
 impl Default for ProcessingElement {
@@ -237,15 +227,9 @@ impl Default for ProcessingElement {
             screener: Default::default(),
             unit: Default::default(),
             tags: Default::default(),
-            rd_inc_x: Default::default(),
-            wr_ptr: Default::default(),
-            rd_ptr: Default::default(),
-            tag_count: Default::default(),
-            head_valid: Default::default(),
             accept: Default::default(),
             pop: Default::default(),
             head_tag: Default::default(),
-            rd_inc: Default::default(),
             head_retire: Default::default(),
             head_first: Default::default(),
             head_count: Default::default(),
@@ -253,8 +237,6 @@ impl Default for ProcessingElement {
             retire_flag: Constant::new((1u64 << (TAG_WIDTH - 1)).into()),
             full: Constant::new((TAG_DEPTH as u64).into()),
             zero7: Constant::new(0.into()),
-            one7: Constant::new(1.into()),
-            one_ptr: Constant::new(1.into()),
         }
     }
 }
@@ -262,7 +244,6 @@ impl Default for ProcessingElement {
 impl Logic for ProcessingElement {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wr_ptr, rd_ptr, tag_count, head_valid, rd_inc_x);
         self.loader.clock.next = self.clock.val();
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
@@ -293,9 +274,9 @@ impl Logic for ProcessingElement {
         self.screener.last_y.next = self.last_y.val();
 
         // Commands: a tag for each, the id of a job to the loader.
-        self.cmd_ready.next = (self.tag_count.q.val() != self.full.val()) & self.loader.id_ready.val();
+        self.cmd_ready.next = (self.tags.count.val() != self.full.val()) & self.loader.id_ready.val();
         self.accept.next =
-            self.cmd_valid.val() & (self.tag_count.q.val() != self.full.val()) & self.loader.id_ready.val();
+            self.cmd_valid.val() & (self.tags.count.val() != self.full.val()) & self.loader.id_ready.val();
         self.loader.id_valid.next = self.accept.val() & !self.cmd_retire.val();
         self.loader.id.next = self.cmd_id.val();
         self.new_tag.next = (bit_cast::<TAG_WIDTH, 10>(self.cmd_first.val()) << 11)
@@ -303,12 +284,8 @@ impl Logic for ProcessingElement {
         if self.cmd_retire.val() {
             self.new_tag.next = self.new_tag.val() | self.retire_flag.val();
         }
-        self.tags.write_address.next = self.wr_ptr.q.val();
-        self.tags.write_data.next = self.new_tag.val();
-        self.tags.write_enable.next = self.accept.val();
-        if self.accept.val() {
-            self.wr_ptr.d.next = self.wr_ptr.q.val() + self.one_ptr.val();
-        }
+        self.tags.data_in.next = self.new_tag.val();
+        self.tags.push.next = self.accept.val();
 
         // Host memory: the loader's port through the cache.
         self.cache.cfg_enable.next = self.cfg_cache_enable.val();
@@ -356,7 +333,7 @@ impl Logic for ProcessingElement {
 
         // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job);
         // what it sends goes through a second slice, whose `in_ready` is a register.
-        self.head_tag.next = self.tags.read_data.val();
+        self.head_tag.next = self.tags.data_out.val();
         self.head_retire.next = self.head_tag.val().get_bit(21);
         self.head_first.next = self.head_tag.val().get_bits::<10>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
@@ -375,7 +352,7 @@ impl Logic for ProcessingElement {
         self.iu_slice.in_valid.next = false;
         self.sc_slice.out_ready.next = false;
         self.pop.next = false;
-        if self.head_valid.q.val() {
+        if self.tags.valid.val() {
             if self.head_retire.val() {
                 self.iu_slice.in_valid.next = true;
                 self.pop.next = self.iu_slice.in_ready.val();
@@ -404,31 +381,12 @@ impl Logic for ProcessingElement {
         self.unit.patch_count.next = self.iu_slice.out_count.val();
         self.unit.patch_retire.next = self.iu_slice.out_retire.val();
 
-        // The tag FIFO's read side: every cycle `tags` reads the entry at the read pointer and
-        // the one after it, and shows the second after a pop (so no RAM address depends on this
-        // cycle's pop, which depends on the unit's `patch_ready`). The head is valid next cycle
-        // when an entry written before this cycle remains (the RAM reads before it writes).
-        self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one_ptr.val();
-        self.tags.head_address.next = self.rd_ptr.q.val();
-        self.tags.next_address.next = self.rd_inc.val();
+        // The tag FIFO's read side: the merger's pop (the head, read every cycle with the entry
+        // after it, depends on no pop: see [`Fifo`]).
         self.tags.pop.next = self.pop.val();
-        if self.pop.val() {
-            self.rd_ptr.d.next = self.rd_inc.val();
-            self.rd_inc_x.d.next = (self.rd_inc.val() + self.one_ptr.val()) ^ self.one_ptr.val();
-        }
-        self.head_valid.d.next = self.tag_count.q.val() > self.zero7.val();
-        if self.pop.val() {
-            self.head_valid.d.next = self.tag_count.q.val() > self.one7.val();
-        }
-        if self.accept.val() & !self.pop.val() {
-            self.tag_count.d.next = self.tag_count.q.val() + self.one7.val();
-        }
-        if !self.accept.val() & self.pop.val() {
-            self.tag_count.d.next = self.tag_count.q.val() - self.one7.val();
-        }
 
         // Status and counters.
-        self.busy.next = (self.tag_count.q.val() != self.zero7.val())
+        self.busy.next = (self.tags.count.val() != self.zero7.val())
             | self.iu_slice.occupied.val()
             | self.unit.busy.val()
             | self.cache.flushing.val();

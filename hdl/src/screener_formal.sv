@@ -96,8 +96,9 @@ module screener_formal (
     // module): the stage valid bits and ids, the screens' registers of stages 7 and 8, the
     // divider's tag pipeline (3 bits per stage, bit 0: a slot to complete), the verdict flags of
     // stage 9 (what is counted), the credit and FIFO
-    // counters and pointers (rd_inc_x: rd_ptr + 1 with bit 0 inverted), and the output FIFO's
-    // lanes.
+    // counters and pointers (done, fill_ptr, rd_ptr and rd_inc_x, rd_ptr + 1 with bit 0
+    // inverted, are the FIFO control's word count, tail, head and next read address:
+    // `prim::FifoControl`), and the output FIFO's lanes.
     wire        v1, v2, v3, v4, v5, v6, v7, v8;
     wire        backward7, back_facing7, backward8, back_facing8, outside8;
     wire        pass9, backward9, back_facing9, outside9, near9;
@@ -128,8 +129,8 @@ module screener_formal (
         .backward8$q(backward8), .back_facing8$q(back_facing8), .outside8$q(outside8),
         .pass9$q(pass9), .backward9$q(backward9), .back_facing9$q(back_facing9),
         .outside9$q(outside9), .near9$q(near9),
-        .divider_tgp(tgp), .used$q(used), .done$q(done),
-        .res_ptr$q(res_ptr), .fill_ptr$q(fill_ptr), .rd_ptr$q(rd_ptr), .rd_inc_x$q(rd_inc_x),
+        .divider_tgp(tgp), .used$q(used), .fifo_words_q(done),
+        .res_ptr$q(res_ptr), .fifo_tail_ptr_q(fill_ptr), .fifo_rd_ptr_q(rd_ptr), .fifo_rd_inc_x_q(rd_inc_x),
         `LANE32(lane_id, lane_id), `LANE32(lane_sh, lane_sh)
 `endif
     );

@@ -3,3 +3,4 @@ patch_cache.v
 screener.v
 intersection_unit.v
 processing_element.v
+fwft_fifo.v

@@ -26,7 +26,6 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     
     // Constant declarations
     localparam  depth5 = 5'b10000;
-    localparam  zero5 = 5'b0;
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
@@ -35,21 +34,9 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     reg  [3:0] req_ptr$d;
     wire  [3:0] req_ptr$q;
     reg  req_ptr$clock;
-    reg  [3:0] resp_ptr$d;
-    wire  [3:0] resp_ptr$q;
-    reg  resp_ptr$clock;
-    reg  [3:0] rd_ptr$d;
-    wire  [3:0] rd_ptr$q;
-    reg  rd_ptr$clock;
     reg  [4:0] reserved$d;
     wire  [4:0] reserved$q;
     reg  reserved$clock;
-    reg  [4:0] done$d;
-    wire  [4:0] done$q;
-    reg  done$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
     reg  req_valid$d;
     wire  req_valid$q;
     reg  req_valid$clock;
@@ -59,6 +46,14 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     reg  [31:0] load_count$d;
     wire  [31:0] load_count$q;
     reg  load_count$clock;
+    reg  fifo$clock;
+    reg  fifo$push;
+    reg  fifo$pop;
+    wire  [3:0] fifo$tail_address;
+    wire  [3:0] fifo$head_address;
+    wire  [3:0] fifo$next_address;
+    wire  fifo$valid;
+    wire  [4:0] fifo$count;
     reg  lane_id$clock;
     reg  [3:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
@@ -105,13 +100,8 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     reg  accept;
     reg  pop;
     reg  [3:0] req_inc;
-    reg  [3:0] resp_inc;
-    reg  [3:0] rd_inc;
     reg  [4:0] reserved_inc;
     reg  [4:0] reserved_dec;
-    reg  [4:0] done_inc;
-    reg  [4:0] done_dec;
-    reg  [4:0] done_left;
     reg  [31:0] load_inc;
     
     // Sub module instances
@@ -120,30 +110,10 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         .q(req_ptr$q),
         .clock(req_ptr$clock)
     );
-    patch_loader$resp_ptr resp_ptr(
-        .d(resp_ptr$d),
-        .q(resp_ptr$q),
-        .clock(resp_ptr$clock)
-    );
-    patch_loader$rd_ptr rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
-    );
     patch_loader$reserved reserved(
         .d(reserved$d),
         .q(reserved$q),
         .clock(reserved$clock)
-    );
-    patch_loader$done done(
-        .d(done$d),
-        .q(done$q),
-        .clock(done$clock)
-    );
-    patch_loader$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
     );
     patch_loader$req_valid req_valid(
         .d(req_valid$d),
@@ -159,6 +129,16 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         .d(load_count$d),
         .q(load_count$q),
         .clock(load_count$clock)
+    );
+    patch_loader$fifo fifo(
+        .clock(fifo$clock),
+        .push(fifo$push),
+        .pop(fifo$pop),
+        .tail_address(fifo$tail_address),
+        .head_address(fifo$head_address),
+        .next_address(fifo$next_address),
+        .valid(fifo$valid),
+        .count(fifo$count)
     );
     patch_loader$lane_id lane_id(
         .clock(lane_id$clock),
@@ -214,23 +194,16 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     // Update code
     always @(*) begin
         req_ptr$clock = clock;
-        resp_ptr$clock = clock;
-        rd_ptr$clock = clock;
         reserved$clock = clock;
-        done$clock = clock;
-        head_valid$clock = clock;
         req_valid$clock = clock;
         req_addr$clock = clock;
         load_count$clock = clock;
         req_ptr$d = req_ptr$q;
-        resp_ptr$d = resp_ptr$q;
-        rd_ptr$d = rd_ptr$q;
         reserved$d = reserved$q;
-        done$d = done$q;
-        head_valid$d = head_valid$q;
         req_valid$d = req_valid$q;
         req_addr$d = req_addr$q;
         load_count$d = load_count$q;
+        fifo$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
         lane_ay$clock = clock;
@@ -239,14 +212,11 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         room = reserved$q != depth5;
         id_ready = room;
         accept = id_valid & room;
-        pop = head_valid$q & out_ready;
+        pop = fifo$valid & out_ready;
+        fifo$pop = pop;
         req_inc = req_ptr$q + one4;
-        resp_inc = resp_ptr$q + one4;
-        rd_inc = rd_ptr$q + one4;
         reserved_inc = reserved$q + one5;
         reserved_dec = reserved$q - one5;
-        done_inc = done$q + one5;
-        done_dec = done$q - one5;
         load_inc = load_count$q + one32;
         lane_id$write_address = req_ptr$q;
         lane_id$write_data = id;
@@ -258,10 +228,10 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         end
         mem_req = req_valid$q;
         mem_addr = req_addr$q;
-        lane_ax$write_address = resp_ptr$q;
-        lane_ay$write_address = resp_ptr$q;
-        lane_bx$write_address = resp_ptr$q;
-        lane_by$write_address = resp_ptr$q;
+        lane_ax$write_address = fifo$tail_address;
+        lane_ay$write_address = fifo$tail_address;
+        lane_bx$write_address = fifo$tail_address;
+        lane_by$write_address = fifo$tail_address;
         lane_ax$write_data = mem_ax;
         lane_ay$write_data = mem_ay;
         lane_bx$write_data = mem_bx;
@@ -270,33 +240,27 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         lane_ay$write_enable = mem_valid;
         lane_bx$write_enable = mem_valid;
         lane_by$write_enable = mem_valid;
+        fifo$push = mem_valid;
         if (mem_valid) begin
-            resp_ptr$d = resp_inc;
             load_count$d = load_inc;
         end
         loads = load_count$q;
-        done_left = done$q;
-        if (pop) begin
-            rd_ptr$d = rd_inc;
-            done_left = done_dec;
-        end
-        lane_id$head_address = rd_ptr$q;
-        lane_id$next_address = rd_inc;
+        lane_id$head_address = fifo$head_address;
+        lane_id$next_address = fifo$next_address;
         lane_id$pop = pop;
-        lane_ax$head_address = rd_ptr$q;
-        lane_ax$next_address = rd_inc;
+        lane_ax$head_address = fifo$head_address;
+        lane_ax$next_address = fifo$next_address;
         lane_ax$pop = pop;
-        lane_ay$head_address = rd_ptr$q;
-        lane_ay$next_address = rd_inc;
+        lane_ay$head_address = fifo$head_address;
+        lane_ay$next_address = fifo$next_address;
         lane_ay$pop = pop;
-        lane_bx$head_address = rd_ptr$q;
-        lane_bx$next_address = rd_inc;
+        lane_bx$head_address = fifo$head_address;
+        lane_bx$next_address = fifo$next_address;
         lane_bx$pop = pop;
-        lane_by$head_address = rd_ptr$q;
-        lane_by$next_address = rd_inc;
+        lane_by$head_address = fifo$head_address;
+        lane_by$next_address = fifo$next_address;
         lane_by$pop = pop;
-        head_valid$d = done_left != zero5;
-        out_valid = head_valid$q;
+        out_valid = fifo$valid;
         out_id = lane_id$read_data;
         out_ax = lane_ax$read_data;
         out_ay = lane_ay$read_data;
@@ -308,37 +272,118 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         if (~accept & pop) begin
             reserved$d = reserved_dec;
         end
-        if (mem_valid & ~pop) begin
-            done$d = done_inc;
-        end
-        if (~mem_valid & pop) begin
-            done$d = done_dec;
-        end
     end
     
 endmodule // patch_loader
 
 
-module patch_loader$done(d,q,clock);
+module patch_loader$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
     
     // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
     input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [3:0] tail_address;
+    output reg  [3:0] head_address;
+    output reg  [3:0] next_address;
+    output reg  valid;
+    output reg  [4:0] count;
     
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
+    // Constant declarations
+    localparam  one_a = 4'h1;
+    localparam  one_c = 5'b1;
+    localparam  zero_c = 5'b0;
+    
+    // Stub signals
+    reg  [3:0] tail_ptr$d;
+    wire  [3:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [3:0] rd_inc_x$d;
+    wire  [3:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] words$d;
+    wire  [4:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_inc2;
+    reg  [4:0] left;
+    
+    // Sub module instances
+    patch_loader$fifo$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    patch_loader$fifo$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    patch_loader$fifo$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    patch_loader$fifo$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    patch_loader$fifo$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_loader$done
+endmodule // patch_loader$fifo
 
 
-module patch_loader$head_valid(d,q,clock);
+module patch_loader$fifo$head_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -354,7 +399,83 @@ module patch_loader$head_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // patch_loader$head_valid
+endmodule // patch_loader$fifo$head_valid
+
+
+module patch_loader$fifo$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$fifo$rd_inc_x
+
+
+module patch_loader$fifo$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$fifo$rd_ptr
+
+
+module patch_loader$fifo$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$fifo$tail_ptr
+
+
+module patch_loader$fifo$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$fifo$words
 
 
 module patch_loader$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -616,25 +737,6 @@ module patch_loader$load_count(d,q,clock);
 endmodule // patch_loader$load_count
 
 
-module patch_loader$rd_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_loader$rd_ptr
-
-
 module patch_loader$req_addr(d,q,clock);
     
     // Module arguments
@@ -709,22 +811,3 @@ module patch_loader$reserved(d,q,clock);
     end
           
 endmodule // patch_loader$reserved
-
-
-module patch_loader$resp_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_loader$resp_ptr

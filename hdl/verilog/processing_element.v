@@ -53,8 +53,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     localparam  retire_flag = 22'h200000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
-    localparam  one7 = 7'b1;
-    localparam  one_ptr = 6'b1;
     
     // Stub signals
     reg  loader$clock;
@@ -215,34 +213,17 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  unit$busy;
     wire  [31:0] unit$tests;
     reg  tags$clock;
-    reg  [5:0] tags$write_address;
-    reg  [21:0] tags$write_data;
-    reg  tags$write_enable;
-    reg  [5:0] tags$head_address;
-    reg  [5:0] tags$next_address;
+    reg  tags$push;
+    reg  [21:0] tags$data_in;
     reg  tags$pop;
-    wire  [21:0] tags$read_data;
-    reg  [5:0] rd_inc_x$d;
-    wire  [5:0] rd_inc_x$q;
-    reg  rd_inc_x$clock;
-    reg  [5:0] wr_ptr$d;
-    wire  [5:0] wr_ptr$q;
-    reg  wr_ptr$clock;
-    reg  [5:0] rd_ptr$d;
-    wire  [5:0] rd_ptr$q;
-    reg  rd_ptr$clock;
-    reg  [6:0] tag_count$d;
-    wire  [6:0] tag_count$q;
-    reg  tag_count$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
+    wire  tags$valid;
+    wire  [21:0] tags$data_out;
+    wire  [6:0] tags$count;
     
     // Local signals
     reg  accept;
     reg  pop;
     reg  [21:0] head_tag;
-    reg  [5:0] rd_inc;
     reg  head_retire;
     reg  [9:0] head_first;
     reg  [10:0] head_count;
@@ -420,52 +401,16 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     );
     processing_element$tags tags(
         .clock(tags$clock),
-        .write_address(tags$write_address),
-        .write_data(tags$write_data),
-        .write_enable(tags$write_enable),
-        .head_address(tags$head_address),
-        .next_address(tags$next_address),
+        .push(tags$push),
+        .data_in(tags$data_in),
         .pop(tags$pop),
-        .read_data(tags$read_data)
-    );
-    processing_element$rd_inc_x rd_inc_x(
-        .d(rd_inc_x$d),
-        .q(rd_inc_x$q),
-        .clock(rd_inc_x$clock)
-    );
-    processing_element$wr_ptr wr_ptr(
-        .d(wr_ptr$d),
-        .q(wr_ptr$q),
-        .clock(wr_ptr$clock)
-    );
-    processing_element$rd_ptr rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
-    );
-    processing_element$tag_count tag_count(
-        .d(tag_count$d),
-        .q(tag_count$q),
-        .clock(tag_count$clock)
-    );
-    processing_element$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
+        .valid(tags$valid),
+        .data_out(tags$data_out),
+        .count(tags$count)
     );
     
     // Update code
     always @(*) begin
-        wr_ptr$clock = clock;
-        rd_ptr$clock = clock;
-        tag_count$clock = clock;
-        head_valid$clock = clock;
-        rd_inc_x$clock = clock;
-        wr_ptr$d = wr_ptr$q;
-        rd_ptr$d = rd_ptr$q;
-        tag_count$d = tag_count$q;
-        head_valid$d = head_valid$q;
-        rd_inc_x$d = rd_inc_x$q;
         loader$clock = clock;
         cache$clock = clock;
         screener$clock = clock;
@@ -490,20 +435,16 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         screener$first_y = first_y;
         screener$last_x = last_x;
         screener$last_y = last_y;
-        cmd_ready = (tag_count$q != full) & loader$id_ready;
-        accept = cmd_valid & (tag_count$q != full) & loader$id_ready;
+        cmd_ready = (tags$count != full) & loader$id_ready;
+        accept = cmd_valid & (tags$count != full) & loader$id_ready;
         loader$id_valid = accept & ~cmd_retire;
         loader$id = cmd_id;
         new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
         if (cmd_retire) begin
             new_tag = new_tag | retire_flag;
         end
-        tags$write_address = wr_ptr$q;
-        tags$write_data = new_tag;
-        tags$write_enable = accept;
-        if (accept) begin
-            wr_ptr$d = wr_ptr$q + one_ptr;
-        end
+        tags$data_in = new_tag;
+        tags$push = accept;
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -542,7 +483,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         sc_slice$in_first = 32'h0;
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
-        head_tag = tags$read_data;
+        head_tag = tags$data_out;
         head_retire = head_tag[32'h15];
         head_first = head_tag[(32'hb)+:(10)];
         head_count = head_tag[(32'h0)+:(11)];
@@ -561,7 +502,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         iu_slice$in_valid = 1'b0;
         sc_slice$out_ready = 1'b0;
         pop = 1'b0;
-        if (head_valid$q) begin
+        if (tags$valid) begin
             if (head_retire) begin
                 iu_slice$in_valid = 1'b1;
                 pop = iu_slice$in_ready;
@@ -591,25 +532,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_first = iu_slice$out_first;
         unit$patch_count = iu_slice$out_count;
         unit$patch_retire = iu_slice$out_retire;
-        rd_inc = rd_inc_x$q ^ one_ptr;
-        tags$head_address = rd_ptr$q;
-        tags$next_address = rd_inc;
         tags$pop = pop;
-        if (pop) begin
-            rd_ptr$d = rd_inc;
-            rd_inc_x$d = (rd_inc + one_ptr) ^ one_ptr;
-        end
-        head_valid$d = tag_count$q > zero7;
-        if (pop) begin
-            head_valid$d = tag_count$q > one7;
-        end
-        if (accept & ~pop) begin
-            tag_count$d = tag_count$q + one7;
-        end
-        if (~accept & pop) begin
-            tag_count$d = tag_count$q - one7;
-        end
-        busy = (tag_count$q != zero7) | iu_slice$occupied | unit$busy | cache$flushing;
+        busy = (tags$count != zero7) | iu_slice$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
         cache_misses = cache$misses;
@@ -3728,25 +3652,6 @@ module processing_element$cache$wr_ptr(d,q,clock);
 endmodule // processing_element$cache$wr_ptr
 
 
-module processing_element$head_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$head_valid
-
-
 module processing_element$iu_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
     
     // Module arguments
@@ -4641,7 +4546,6 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     
     // Constant declarations
     localparam  depth5 = 5'b10000;
-    localparam  zero5 = 5'b0;
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
@@ -4650,21 +4554,9 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     reg  [3:0] req_ptr$d;
     wire  [3:0] req_ptr$q;
     reg  req_ptr$clock;
-    reg  [3:0] resp_ptr$d;
-    wire  [3:0] resp_ptr$q;
-    reg  resp_ptr$clock;
-    reg  [3:0] rd_ptr$d;
-    wire  [3:0] rd_ptr$q;
-    reg  rd_ptr$clock;
     reg  [4:0] reserved$d;
     wire  [4:0] reserved$q;
     reg  reserved$clock;
-    reg  [4:0] done$d;
-    wire  [4:0] done$q;
-    reg  done$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
     reg  req_valid$d;
     wire  req_valid$q;
     reg  req_valid$clock;
@@ -4674,6 +4566,14 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     reg  [31:0] load_count$d;
     wire  [31:0] load_count$q;
     reg  load_count$clock;
+    reg  fifo$clock;
+    reg  fifo$push;
+    reg  fifo$pop;
+    wire  [3:0] fifo$tail_address;
+    wire  [3:0] fifo$head_address;
+    wire  [3:0] fifo$next_address;
+    wire  fifo$valid;
+    wire  [4:0] fifo$count;
     reg  lane_id$clock;
     reg  [3:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
@@ -4720,13 +4620,8 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     reg  accept;
     reg  pop;
     reg  [3:0] req_inc;
-    reg  [3:0] resp_inc;
-    reg  [3:0] rd_inc;
     reg  [4:0] reserved_inc;
     reg  [4:0] reserved_dec;
-    reg  [4:0] done_inc;
-    reg  [4:0] done_dec;
-    reg  [4:0] done_left;
     reg  [31:0] load_inc;
     
     // Sub module instances
@@ -4735,30 +4630,10 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         .q(req_ptr$q),
         .clock(req_ptr$clock)
     );
-    processing_element$loader$resp_ptr resp_ptr(
-        .d(resp_ptr$d),
-        .q(resp_ptr$q),
-        .clock(resp_ptr$clock)
-    );
-    processing_element$loader$rd_ptr rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
-    );
     processing_element$loader$reserved reserved(
         .d(reserved$d),
         .q(reserved$q),
         .clock(reserved$clock)
-    );
-    processing_element$loader$done done(
-        .d(done$d),
-        .q(done$q),
-        .clock(done$clock)
-    );
-    processing_element$loader$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
     );
     processing_element$loader$req_valid req_valid(
         .d(req_valid$d),
@@ -4774,6 +4649,16 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         .d(load_count$d),
         .q(load_count$q),
         .clock(load_count$clock)
+    );
+    processing_element$loader$fifo fifo(
+        .clock(fifo$clock),
+        .push(fifo$push),
+        .pop(fifo$pop),
+        .tail_address(fifo$tail_address),
+        .head_address(fifo$head_address),
+        .next_address(fifo$next_address),
+        .valid(fifo$valid),
+        .count(fifo$count)
     );
     processing_element$loader$lane_id lane_id(
         .clock(lane_id$clock),
@@ -4829,23 +4714,16 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     // Update code
     always @(*) begin
         req_ptr$clock = clock;
-        resp_ptr$clock = clock;
-        rd_ptr$clock = clock;
         reserved$clock = clock;
-        done$clock = clock;
-        head_valid$clock = clock;
         req_valid$clock = clock;
         req_addr$clock = clock;
         load_count$clock = clock;
         req_ptr$d = req_ptr$q;
-        resp_ptr$d = resp_ptr$q;
-        rd_ptr$d = rd_ptr$q;
         reserved$d = reserved$q;
-        done$d = done$q;
-        head_valid$d = head_valid$q;
         req_valid$d = req_valid$q;
         req_addr$d = req_addr$q;
         load_count$d = load_count$q;
+        fifo$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
         lane_ay$clock = clock;
@@ -4854,14 +4732,11 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         room = reserved$q != depth5;
         id_ready = room;
         accept = id_valid & room;
-        pop = head_valid$q & out_ready;
+        pop = fifo$valid & out_ready;
+        fifo$pop = pop;
         req_inc = req_ptr$q + one4;
-        resp_inc = resp_ptr$q + one4;
-        rd_inc = rd_ptr$q + one4;
         reserved_inc = reserved$q + one5;
         reserved_dec = reserved$q - one5;
-        done_inc = done$q + one5;
-        done_dec = done$q - one5;
         load_inc = load_count$q + one32;
         lane_id$write_address = req_ptr$q;
         lane_id$write_data = id;
@@ -4873,10 +4748,10 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         end
         mem_req = req_valid$q;
         mem_addr = req_addr$q;
-        lane_ax$write_address = resp_ptr$q;
-        lane_ay$write_address = resp_ptr$q;
-        lane_bx$write_address = resp_ptr$q;
-        lane_by$write_address = resp_ptr$q;
+        lane_ax$write_address = fifo$tail_address;
+        lane_ay$write_address = fifo$tail_address;
+        lane_bx$write_address = fifo$tail_address;
+        lane_by$write_address = fifo$tail_address;
         lane_ax$write_data = mem_ax;
         lane_ay$write_data = mem_ay;
         lane_bx$write_data = mem_bx;
@@ -4885,33 +4760,27 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         lane_ay$write_enable = mem_valid;
         lane_bx$write_enable = mem_valid;
         lane_by$write_enable = mem_valid;
+        fifo$push = mem_valid;
         if (mem_valid) begin
-            resp_ptr$d = resp_inc;
             load_count$d = load_inc;
         end
         loads = load_count$q;
-        done_left = done$q;
-        if (pop) begin
-            rd_ptr$d = rd_inc;
-            done_left = done_dec;
-        end
-        lane_id$head_address = rd_ptr$q;
-        lane_id$next_address = rd_inc;
+        lane_id$head_address = fifo$head_address;
+        lane_id$next_address = fifo$next_address;
         lane_id$pop = pop;
-        lane_ax$head_address = rd_ptr$q;
-        lane_ax$next_address = rd_inc;
+        lane_ax$head_address = fifo$head_address;
+        lane_ax$next_address = fifo$next_address;
         lane_ax$pop = pop;
-        lane_ay$head_address = rd_ptr$q;
-        lane_ay$next_address = rd_inc;
+        lane_ay$head_address = fifo$head_address;
+        lane_ay$next_address = fifo$next_address;
         lane_ay$pop = pop;
-        lane_bx$head_address = rd_ptr$q;
-        lane_bx$next_address = rd_inc;
+        lane_bx$head_address = fifo$head_address;
+        lane_bx$next_address = fifo$next_address;
         lane_bx$pop = pop;
-        lane_by$head_address = rd_ptr$q;
-        lane_by$next_address = rd_inc;
+        lane_by$head_address = fifo$head_address;
+        lane_by$next_address = fifo$next_address;
         lane_by$pop = pop;
-        head_valid$d = done_left != zero5;
-        out_valid = head_valid$q;
+        out_valid = fifo$valid;
         out_id = lane_id$read_data;
         out_ax = lane_ax$read_data;
         out_ay = lane_ay$read_data;
@@ -4923,37 +4792,118 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         if (~accept & pop) begin
             reserved$d = reserved_dec;
         end
-        if (mem_valid & ~pop) begin
-            done$d = done_inc;
-        end
-        if (~mem_valid & pop) begin
-            done$d = done_dec;
-        end
     end
     
 endmodule // processing_element$loader
 
 
-module processing_element$loader$done(d,q,clock);
+module processing_element$loader$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
     
     // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
     input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [3:0] tail_address;
+    output reg  [3:0] head_address;
+    output reg  [3:0] next_address;
+    output reg  valid;
+    output reg  [4:0] count;
     
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
+    // Constant declarations
+    localparam  one_a = 4'h1;
+    localparam  one_c = 5'b1;
+    localparam  zero_c = 5'b0;
+    
+    // Stub signals
+    reg  [3:0] tail_ptr$d;
+    wire  [3:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [3:0] rd_inc_x$d;
+    wire  [3:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] words$d;
+    wire  [4:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_inc2;
+    reg  [4:0] left;
+    
+    // Sub module instances
+    processing_element$loader$fifo$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$loader$fifo$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$loader$fifo$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$loader$fifo$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$loader$fifo$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
     end
     
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$loader$done
+endmodule // processing_element$loader$fifo
 
 
-module processing_element$loader$head_valid(d,q,clock);
+module processing_element$loader$fifo$head_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4969,7 +4919,83 @@ module processing_element$loader$head_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$loader$head_valid
+endmodule // processing_element$loader$fifo$head_valid
+
+
+module processing_element$loader$fifo$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$fifo$rd_inc_x
+
+
+module processing_element$loader$fifo$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$fifo$rd_ptr
+
+
+module processing_element$loader$fifo$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$fifo$tail_ptr
+
+
+module processing_element$loader$fifo$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$fifo$words
 
 
 module processing_element$loader$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -5231,25 +5257,6 @@ module processing_element$loader$load_count(d,q,clock);
 endmodule // processing_element$loader$load_count
 
 
-module processing_element$loader$rd_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$loader$rd_ptr
-
-
 module processing_element$loader$req_addr(d,q,clock);
     
     // Module arguments
@@ -5324,63 +5331,6 @@ module processing_element$loader$reserved(d,q,clock);
     end
           
 endmodule // processing_element$loader$reserved
-
-
-module processing_element$loader$resp_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$loader$resp_ptr
-
-
-module processing_element$rd_inc_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$rd_inc_x
-
-
-module processing_element$rd_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$rd_ptr
 
 
 module processing_element$sc_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
@@ -6332,24 +6282,17 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [5:0] used$d;
     wire  [5:0] used$q;
     reg  used$clock;
-    reg  [5:0] done$d;
-    wire  [5:0] done$q;
-    reg  done$clock;
     reg  [4:0] res_ptr$d;
     wire  [4:0] res_ptr$q;
     reg  res_ptr$clock;
-    reg  [4:0] fill_ptr$d;
-    wire  [4:0] fill_ptr$q;
-    reg  fill_ptr$clock;
-    reg  [4:0] rd_ptr$d;
-    wire  [4:0] rd_ptr$q;
-    reg  rd_ptr$clock;
-    reg  [4:0] rd_inc_x$d;
-    wire  [4:0] rd_inc_x$q;
-    reg  rd_inc_x$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
+    reg  fifo$clock;
+    reg  fifo$push;
+    reg  fifo$pop;
+    wire  [4:0] fifo$tail_address;
+    wire  [4:0] fifo$head_address;
+    wire  [4:0] fifo$next_address;
+    wire  fifo$valid;
+    wire  [5:0] fifo$count;
     reg  lane_id$clock;
     reg  [4:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
@@ -6862,13 +6805,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  fill;
     reg  [5:0] used_inc;
     reg  [5:0] used_dec;
-    reg  [5:0] done_inc;
-    reg  [5:0] done_dec;
-    reg  [5:0] done_left;
     reg  [4:0] res_inc;
-    reg  [4:0] fill_inc;
-    reg  [4:0] rd_inc;
-    reg  [4:0] rd_inc2;
     reg  [17:0] ext_ox;
     reg  [17:0] ext_oy;
     reg  [17:0] ext_ax;
@@ -6955,35 +6892,20 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(used$q),
         .clock(used$clock)
     );
-    processing_element$screener$done done(
-        .d(done$d),
-        .q(done$q),
-        .clock(done$clock)
-    );
     processing_element$screener$res_ptr res_ptr(
         .d(res_ptr$d),
         .q(res_ptr$q),
         .clock(res_ptr$clock)
     );
-    processing_element$screener$fill_ptr fill_ptr(
-        .d(fill_ptr$d),
-        .q(fill_ptr$q),
-        .clock(fill_ptr$clock)
-    );
-    processing_element$screener$rd_ptr rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
-    );
-    processing_element$screener$rd_inc_x rd_inc_x(
-        .d(rd_inc_x$d),
-        .q(rd_inc_x$q),
-        .clock(rd_inc_x$clock)
-    );
-    processing_element$screener$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
+    processing_element$screener$fifo fifo(
+        .clock(fifo$clock),
+        .push(fifo$push),
+        .pop(fifo$pop),
+        .tail_address(fifo$tail_address),
+        .head_address(fifo$head_address),
+        .next_address(fifo$next_address),
+        .valid(fifo$valid),
+        .count(fifo$count)
     );
     processing_element$screener$lane_id lane_id(
         .clock(lane_id$clock),
@@ -7787,12 +7709,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     always @(*) begin
         used$clock = clock;
         full$clock = clock;
-        done$clock = clock;
         res_ptr$clock = clock;
-        fill_ptr$clock = clock;
-        rd_ptr$clock = clock;
-        rd_inc_x$clock = clock;
-        head_valid$clock = clock;
         v1$clock = clock;
         id1$clock = clock;
         ax1$clock = clock;
@@ -7923,12 +7840,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         c_near$clock = clock;
         used$d = used$q;
         full$d = full$q;
-        done$d = done$q;
         res_ptr$d = res_ptr$q;
-        fill_ptr$d = fill_ptr$q;
-        rd_ptr$d = rd_ptr$q;
-        rd_inc_x$d = rd_inc_x$q;
-        head_valid$d = head_valid$q;
         v1$d = v1$q;
         id1$d = id1$q;
         ax1$d = ax1$q;
@@ -8057,6 +7969,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         c_back_facing$d = c_back_facing$q;
         c_outside$d = c_outside$q;
         c_near$d = c_near$q;
+        fifo$clock = clock;
         m_nax$clock = clock;
         m_nay$clock = clock;
         m_nbx$clock = clock;
@@ -8438,8 +8351,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         qy18 = ((divider$qy) & 18'h3ffff);
         wx_neg = zero18 - qx18;
         wy_neg = zero18 - qy18;
-        lane_wx$write_address = fill_ptr$q;
-        lane_wy$write_address = fill_ptr$q;
+        lane_wx$write_address = fifo$tail_address;
+        lane_wy$write_address = fifo$tail_address;
         lane_wx$write_data = qx18;
         if (divider$tag_out[32'h1]) begin
             lane_wx$write_data = wx_neg;
@@ -8450,46 +8363,34 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         end
         lane_wx$write_enable = fill;
         lane_wy$write_enable = fill;
-        fill_inc = fill_ptr$q + one5;
-        if (fill) begin
-            fill_ptr$d = fill_inc;
-        end
-        pop = head_valid$q & out_ready;
-        rd_inc = rd_inc_x$q ^ one5;
-        rd_inc2 = rd_inc + one5;
-        done_dec = done$q - one6;
-        done_left = done$q;
-        if (pop) begin
-            rd_ptr$d = rd_inc;
-            rd_inc_x$d = rd_inc2 ^ one5;
-            done_left = done_dec;
-        end
-        lane_id$head_address = rd_ptr$q;
-        lane_id$next_address = rd_inc;
+        fifo$push = fill;
+        pop = fifo$valid & out_ready;
+        fifo$pop = pop;
+        lane_id$head_address = fifo$head_address;
+        lane_id$next_address = fifo$next_address;
         lane_id$pop = pop;
-        lane_ax$head_address = rd_ptr$q;
-        lane_ax$next_address = rd_inc;
+        lane_ax$head_address = fifo$head_address;
+        lane_ax$next_address = fifo$next_address;
         lane_ax$pop = pop;
-        lane_ay$head_address = rd_ptr$q;
-        lane_ay$next_address = rd_inc;
+        lane_ay$head_address = fifo$head_address;
+        lane_ay$next_address = fifo$next_address;
         lane_ay$pop = pop;
-        lane_bx$head_address = rd_ptr$q;
-        lane_bx$next_address = rd_inc;
+        lane_bx$head_address = fifo$head_address;
+        lane_bx$next_address = fifo$next_address;
         lane_bx$pop = pop;
-        lane_by$head_address = rd_ptr$q;
-        lane_by$next_address = rd_inc;
+        lane_by$head_address = fifo$head_address;
+        lane_by$next_address = fifo$next_address;
         lane_by$pop = pop;
-        lane_sh$head_address = rd_ptr$q;
-        lane_sh$next_address = rd_inc;
+        lane_sh$head_address = fifo$head_address;
+        lane_sh$next_address = fifo$next_address;
         lane_sh$pop = pop;
-        lane_wx$head_address = rd_ptr$q;
-        lane_wx$next_address = rd_inc;
+        lane_wx$head_address = fifo$head_address;
+        lane_wx$next_address = fifo$next_address;
         lane_wx$pop = pop;
-        lane_wy$head_address = rd_ptr$q;
-        lane_wy$next_address = rd_inc;
+        lane_wy$head_address = fifo$head_address;
+        lane_wy$next_address = fifo$next_address;
         lane_wy$pop = pop;
-        head_valid$d = done_left != zero6;
-        out_valid = head_valid$q;
+        out_valid = fifo$valid;
         out_id = lane_id$read_data;
         out_ax = lane_ax$read_data;
         out_ay = lane_ay$read_data;
@@ -8510,13 +8411,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         end
         used$d = used_next;
         full$d = used_next == depth6;
-        done_inc = done$q + one6;
-        if (fill & ~pop) begin
-            done$d = done_inc;
-        end
-        if (~fill & pop) begin
-            done$d = done_dec;
-        end
     end
     
 endmodule // processing_element$screener
@@ -9795,25 +9689,6 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out
 endmodule // processing_element$screener$divider
 
 
-module processing_element$screener$done(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$screener$done
-
-
 module processing_element$screener$exp8(d,q,clock);
     
     // Module arguments
@@ -9833,7 +9708,132 @@ module processing_element$screener$exp8(d,q,clock);
 endmodule // processing_element$screener$exp8
 
 
-module processing_element$screener$fill_ptr(d,q,clock);
+module processing_element$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [4:0] tail_address;
+    output reg  [4:0] head_address;
+    output reg  [4:0] next_address;
+    output reg  valid;
+    output reg  [5:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 5'b1;
+    localparam  one_c = 6'b1;
+    localparam  zero_c = 6'b0;
+    
+    // Stub signals
+    reg  [4:0] tail_ptr$d;
+    wire  [4:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [4:0] rd_ptr$d;
+    wire  [4:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [4:0] rd_inc_x$d;
+    wire  [4:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [5:0] words$d;
+    wire  [5:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [4:0] rd_inc;
+    reg  [4:0] rd_inc2;
+    reg  [5:0] left;
+    
+    // Sub module instances
+    processing_element$screener$fifo$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$screener$fifo$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$screener$fifo$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$screener$fifo$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$screener$fifo$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$screener$fifo
+
+
+module processing_element$screener$fifo$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$fifo$head_valid
+
+
+module processing_element$screener$fifo$rd_inc_x(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -9849,7 +9849,64 @@ module processing_element$screener$fill_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$screener$fill_ptr
+endmodule // processing_element$screener$fifo$rd_inc_x
+
+
+module processing_element$screener$fifo$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$fifo$rd_ptr
+
+
+module processing_element$screener$fifo$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$fifo$tail_ptr
+
+
+module processing_element$screener$fifo$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$fifo$words
 
 
 module processing_element$screener$full(d,q,clock);
@@ -9945,25 +10002,6 @@ module processing_element$screener$hb_open7(d,q,clock);
     end
           
 endmodule // processing_element$screener$hb_open7
-
-
-module processing_element$screener$head_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$screener$head_valid
 
 
 module processing_element$screener$id1(d,q,clock);
@@ -12200,44 +12238,6 @@ module processing_element$screener$pass9(d,q,clock);
 endmodule // processing_element$screener$pass9
 
 
-module processing_element$screener$rd_inc_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$screener$rd_inc_x
-
-
-module processing_element$screener$rd_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$screener$rd_ptr
-
-
 module processing_element$screener$res_ptr(d,q,clock);
     
     // Module arguments
@@ -12466,7 +12466,260 @@ module processing_element$screener$v8(d,q,clock);
 endmodule // processing_element$screener$v8
 
 
-module processing_element$tag_count(d,q,clock);
+module processing_element$tags(clock,push,data_in,pop,valid,data_out,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  [21:0] data_in;
+    input wire  pop;
+    output reg  valid;
+    output reg  [21:0] data_out;
+    output reg  [6:0] count;
+    
+    // Stub signals
+    reg  control$clock;
+    reg  control$push;
+    reg  control$pop;
+    wire  [5:0] control$tail_address;
+    wire  [5:0] control$head_address;
+    wire  [5:0] control$next_address;
+    wire  control$valid;
+    wire  [6:0] control$count;
+    reg  lane$clock;
+    reg  [5:0] lane$write_address;
+    reg  [21:0] lane$write_data;
+    reg  lane$write_enable;
+    reg  [5:0] lane$head_address;
+    reg  [5:0] lane$next_address;
+    reg  lane$pop;
+    wire  [21:0] lane$read_data;
+    
+    // Sub module instances
+    processing_element$tags$control control(
+        .clock(control$clock),
+        .push(control$push),
+        .pop(control$pop),
+        .tail_address(control$tail_address),
+        .head_address(control$head_address),
+        .next_address(control$next_address),
+        .valid(control$valid),
+        .count(control$count)
+    );
+    processing_element$tags$lane lane(
+        .clock(lane$clock),
+        .write_address(lane$write_address),
+        .write_data(lane$write_data),
+        .write_enable(lane$write_enable),
+        .head_address(lane$head_address),
+        .next_address(lane$next_address),
+        .pop(lane$pop),
+        .read_data(lane$read_data)
+    );
+    
+    // Update code
+    always @(*) begin
+        control$clock = clock;
+        lane$clock = clock;
+        control$push = push;
+        control$pop = pop;
+        lane$write_address = control$tail_address;
+        lane$write_data = data_in;
+        lane$write_enable = push;
+        lane$head_address = control$head_address;
+        lane$next_address = control$next_address;
+        lane$pop = pop;
+        valid = control$valid;
+        data_out = lane$read_data;
+        count = control$count;
+    end
+    
+endmodule // processing_element$tags
+
+
+module processing_element$tags$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [5:0] tail_address;
+    output reg  [5:0] head_address;
+    output reg  [5:0] next_address;
+    output reg  valid;
+    output reg  [6:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 6'b1;
+    localparam  one_c = 7'b1;
+    localparam  zero_c = 7'b0;
+    
+    // Stub signals
+    reg  [5:0] tail_ptr$d;
+    wire  [5:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [5:0] rd_ptr$d;
+    wire  [5:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [5:0] rd_inc_x$d;
+    wire  [5:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [6:0] words$d;
+    wire  [6:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [5:0] rd_inc;
+    reg  [5:0] rd_inc2;
+    reg  [6:0] left;
+    
+    // Sub module instances
+    processing_element$tags$control$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$tags$control$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$tags$control$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$tags$control$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$tags$control$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$tags$control
+
+
+module processing_element$tags$control$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tags$control$head_valid
+
+
+module processing_element$tags$control$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tags$control$rd_inc_x
+
+
+module processing_element$tags$control$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tags$control$rd_ptr
+
+
+module processing_element$tags$control$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tags$control$tail_ptr
+
+
+module processing_element$tags$control$words(d,q,clock);
     
     // Module arguments
     input wire  [6:0] d;
@@ -12482,10 +12735,10 @@ module processing_element$tag_count(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$tag_count
+endmodule // processing_element$tags$control$words
 
 
-module processing_element$tags(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+module processing_element$tags$lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
@@ -12530,7 +12783,7 @@ module processing_element$tags(clock,write_address,write_data,write_enable,head_
        end
     end
     always @(*) read_data = popped ? next_r : head_r;
-endmodule // processing_element$tags
+endmodule // processing_element$tags$lane
 
 
 module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
@@ -14246,22 +14499,3 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        end
     end
 endmodule // processing_element$unit$seq
-
-
-module processing_element$wr_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$wr_ptr

@@ -81,24 +81,17 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [5:0] used$d;
     wire  [5:0] used$q;
     reg  used$clock;
-    reg  [5:0] done$d;
-    wire  [5:0] done$q;
-    reg  done$clock;
     reg  [4:0] res_ptr$d;
     wire  [4:0] res_ptr$q;
     reg  res_ptr$clock;
-    reg  [4:0] fill_ptr$d;
-    wire  [4:0] fill_ptr$q;
-    reg  fill_ptr$clock;
-    reg  [4:0] rd_ptr$d;
-    wire  [4:0] rd_ptr$q;
-    reg  rd_ptr$clock;
-    reg  [4:0] rd_inc_x$d;
-    wire  [4:0] rd_inc_x$q;
-    reg  rd_inc_x$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
+    reg  fifo$clock;
+    reg  fifo$push;
+    reg  fifo$pop;
+    wire  [4:0] fifo$tail_address;
+    wire  [4:0] fifo$head_address;
+    wire  [4:0] fifo$next_address;
+    wire  fifo$valid;
+    wire  [5:0] fifo$count;
     reg  lane_id$clock;
     reg  [4:0] lane_id$write_address;
     reg  [15:0] lane_id$write_data;
@@ -611,13 +604,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  fill;
     reg  [5:0] used_inc;
     reg  [5:0] used_dec;
-    reg  [5:0] done_inc;
-    reg  [5:0] done_dec;
-    reg  [5:0] done_left;
     reg  [4:0] res_inc;
-    reg  [4:0] fill_inc;
-    reg  [4:0] rd_inc;
-    reg  [4:0] rd_inc2;
     reg  [17:0] ext_ox;
     reg  [17:0] ext_oy;
     reg  [17:0] ext_ax;
@@ -704,35 +691,20 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(used$q),
         .clock(used$clock)
     );
-    screener$done done(
-        .d(done$d),
-        .q(done$q),
-        .clock(done$clock)
-    );
     screener$res_ptr res_ptr(
         .d(res_ptr$d),
         .q(res_ptr$q),
         .clock(res_ptr$clock)
     );
-    screener$fill_ptr fill_ptr(
-        .d(fill_ptr$d),
-        .q(fill_ptr$q),
-        .clock(fill_ptr$clock)
-    );
-    screener$rd_ptr rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
-    );
-    screener$rd_inc_x rd_inc_x(
-        .d(rd_inc_x$d),
-        .q(rd_inc_x$q),
-        .clock(rd_inc_x$clock)
-    );
-    screener$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
+    screener$fifo fifo(
+        .clock(fifo$clock),
+        .push(fifo$push),
+        .pop(fifo$pop),
+        .tail_address(fifo$tail_address),
+        .head_address(fifo$head_address),
+        .next_address(fifo$next_address),
+        .valid(fifo$valid),
+        .count(fifo$count)
     );
     screener$lane_id lane_id(
         .clock(lane_id$clock),
@@ -1536,12 +1508,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     always @(*) begin
         used$clock = clock;
         full$clock = clock;
-        done$clock = clock;
         res_ptr$clock = clock;
-        fill_ptr$clock = clock;
-        rd_ptr$clock = clock;
-        rd_inc_x$clock = clock;
-        head_valid$clock = clock;
         v1$clock = clock;
         id1$clock = clock;
         ax1$clock = clock;
@@ -1672,12 +1639,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         c_near$clock = clock;
         used$d = used$q;
         full$d = full$q;
-        done$d = done$q;
         res_ptr$d = res_ptr$q;
-        fill_ptr$d = fill_ptr$q;
-        rd_ptr$d = rd_ptr$q;
-        rd_inc_x$d = rd_inc_x$q;
-        head_valid$d = head_valid$q;
         v1$d = v1$q;
         id1$d = id1$q;
         ax1$d = ax1$q;
@@ -1806,6 +1768,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         c_back_facing$d = c_back_facing$q;
         c_outside$d = c_outside$q;
         c_near$d = c_near$q;
+        fifo$clock = clock;
         m_nax$clock = clock;
         m_nay$clock = clock;
         m_nbx$clock = clock;
@@ -2187,8 +2150,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         qy18 = ((divider$qy) & 18'h3ffff);
         wx_neg = zero18 - qx18;
         wy_neg = zero18 - qy18;
-        lane_wx$write_address = fill_ptr$q;
-        lane_wy$write_address = fill_ptr$q;
+        lane_wx$write_address = fifo$tail_address;
+        lane_wy$write_address = fifo$tail_address;
         lane_wx$write_data = qx18;
         if (divider$tag_out[32'h1]) begin
             lane_wx$write_data = wx_neg;
@@ -2199,46 +2162,34 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         end
         lane_wx$write_enable = fill;
         lane_wy$write_enable = fill;
-        fill_inc = fill_ptr$q + one5;
-        if (fill) begin
-            fill_ptr$d = fill_inc;
-        end
-        pop = head_valid$q & out_ready;
-        rd_inc = rd_inc_x$q ^ one5;
-        rd_inc2 = rd_inc + one5;
-        done_dec = done$q - one6;
-        done_left = done$q;
-        if (pop) begin
-            rd_ptr$d = rd_inc;
-            rd_inc_x$d = rd_inc2 ^ one5;
-            done_left = done_dec;
-        end
-        lane_id$head_address = rd_ptr$q;
-        lane_id$next_address = rd_inc;
+        fifo$push = fill;
+        pop = fifo$valid & out_ready;
+        fifo$pop = pop;
+        lane_id$head_address = fifo$head_address;
+        lane_id$next_address = fifo$next_address;
         lane_id$pop = pop;
-        lane_ax$head_address = rd_ptr$q;
-        lane_ax$next_address = rd_inc;
+        lane_ax$head_address = fifo$head_address;
+        lane_ax$next_address = fifo$next_address;
         lane_ax$pop = pop;
-        lane_ay$head_address = rd_ptr$q;
-        lane_ay$next_address = rd_inc;
+        lane_ay$head_address = fifo$head_address;
+        lane_ay$next_address = fifo$next_address;
         lane_ay$pop = pop;
-        lane_bx$head_address = rd_ptr$q;
-        lane_bx$next_address = rd_inc;
+        lane_bx$head_address = fifo$head_address;
+        lane_bx$next_address = fifo$next_address;
         lane_bx$pop = pop;
-        lane_by$head_address = rd_ptr$q;
-        lane_by$next_address = rd_inc;
+        lane_by$head_address = fifo$head_address;
+        lane_by$next_address = fifo$next_address;
         lane_by$pop = pop;
-        lane_sh$head_address = rd_ptr$q;
-        lane_sh$next_address = rd_inc;
+        lane_sh$head_address = fifo$head_address;
+        lane_sh$next_address = fifo$next_address;
         lane_sh$pop = pop;
-        lane_wx$head_address = rd_ptr$q;
-        lane_wx$next_address = rd_inc;
+        lane_wx$head_address = fifo$head_address;
+        lane_wx$next_address = fifo$next_address;
         lane_wx$pop = pop;
-        lane_wy$head_address = rd_ptr$q;
-        lane_wy$next_address = rd_inc;
+        lane_wy$head_address = fifo$head_address;
+        lane_wy$next_address = fifo$next_address;
         lane_wy$pop = pop;
-        head_valid$d = done_left != zero6;
-        out_valid = head_valid$q;
+        out_valid = fifo$valid;
         out_id = lane_id$read_data;
         out_ax = lane_ax$read_data;
         out_ay = lane_ay$read_data;
@@ -2259,13 +2210,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         end
         used$d = used_next;
         full$d = used_next == depth6;
-        done_inc = done$q + one6;
-        if (fill & ~pop) begin
-            done$d = done_inc;
-        end
-        if (~fill & pop) begin
-            done$d = done_dec;
-        end
     end
     
 endmodule // screener
@@ -3544,25 +3488,6 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
 endmodule // screener$divider
 
 
-module screener$done(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$done
-
-
 module screener$exp8(d,q,clock);
     
     // Module arguments
@@ -3582,7 +3507,132 @@ module screener$exp8(d,q,clock);
 endmodule // screener$exp8
 
 
-module screener$fill_ptr(d,q,clock);
+module screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [4:0] tail_address;
+    output reg  [4:0] head_address;
+    output reg  [4:0] next_address;
+    output reg  valid;
+    output reg  [5:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 5'b1;
+    localparam  one_c = 6'b1;
+    localparam  zero_c = 6'b0;
+    
+    // Stub signals
+    reg  [4:0] tail_ptr$d;
+    wire  [4:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [4:0] rd_ptr$d;
+    wire  [4:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [4:0] rd_inc_x$d;
+    wire  [4:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [5:0] words$d;
+    wire  [5:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [4:0] rd_inc;
+    reg  [4:0] rd_inc2;
+    reg  [5:0] left;
+    
+    // Sub module instances
+    screener$fifo$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    screener$fifo$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    screener$fifo$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    screener$fifo$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    screener$fifo$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // screener$fifo
+
+
+module screener$fifo$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$fifo$head_valid
+
+
+module screener$fifo$rd_inc_x(d,q,clock);
     
     // Module arguments
     input wire  [4:0] d;
@@ -3598,7 +3648,64 @@ module screener$fill_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$fill_ptr
+endmodule // screener$fifo$rd_inc_x
+
+
+module screener$fifo$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$fifo$rd_ptr
+
+
+module screener$fifo$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$fifo$tail_ptr
+
+
+module screener$fifo$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$fifo$words
 
 
 module screener$full(d,q,clock);
@@ -3694,25 +3801,6 @@ module screener$hb_open7(d,q,clock);
     end
           
 endmodule // screener$hb_open7
-
-
-module screener$head_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$head_valid
 
 
 module screener$id1(d,q,clock);
@@ -5947,44 +6035,6 @@ module screener$pass9(d,q,clock);
     end
           
 endmodule // screener$pass9
-
-
-module screener$rd_inc_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$rd_inc_x
-
-
-module screener$rd_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$rd_ptr
 
 
 module screener$res_ptr(d,q,clock);

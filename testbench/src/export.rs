@@ -9,11 +9,16 @@ use shelling_hdl::cache::PatchCache;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
 use shelling_hdl::pe::ProcessingElement;
+use shelling_hdl::prim::Fifo;
 use shelling_hdl::screener::Screener;
 use std::path::{Path, PathBuf};
 
 /// Name of the file list written beside the Verilog files.
 pub const FILE_LIST: &str = "files.f";
+
+/// The FIFO block exported on its own, for its cross-simulation and its formal task
+/// (`hdl/src/fifo.sby`): 16 words of 8 bits.
+pub type FwftFifo = Fifo<8, 4, 5>;
 
 /// The blocks exported, by module name, each freshly built and connected.
 pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
@@ -27,12 +32,15 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     screener.connect_all();
     let mut pe = ProcessingElement::default();
     pe.connect_all();
+    let mut fifo = FwftFifo::default();
+    fifo.connect_all();
     vec![
         ("patch_loader", Box::new(loader)),
         ("patch_cache", Box::new(cache)),
         ("screener", Box::new(screener)),
         ("intersection_unit", Box::new(iu)),
         ("processing_element", Box::new(pe)),
+        ("fwft_fifo", Box::new(fifo)),
     ]
 }
 

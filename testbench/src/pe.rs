@@ -375,8 +375,8 @@ const PROTOCOL_SIGNALS: [&str; 20] = [
     "uut.screener.out_ready",
     "uut.screener.out_id",
     "uut.screener.used.q",
-    "uut.tag_count.q",
-    "uut.tags.write_enable",
+    "uut.tags.count",
+    "uut.tags.push",
     "uut.busy",
 ];
 
@@ -415,7 +415,7 @@ pub fn check_protocol(path: &std::path::Path) -> Result<ProtocolReport> {
     let (s_valid, s_ready, s_id) =
         (s("uut.screener.out_valid")?, s("uut.screener.out_ready")?, s("uut.screener.out_id")?);
     let (used, tags, tag_we, busy) =
-        (s("uut.screener.used.q")?, s("uut.tag_count.q")?, s("uut.tags.write_enable")?, s("uut.busy")?);
+        (s("uut.screener.used.q")?, s("uut.tags.count")?, s("uut.tags.push")?, s("uut.busy")?);
     let n = w.cycles();
     if n == 0 || w.first_cycle != 0 {
         return Err(Error::new(format!(

@@ -11,13 +11,18 @@
 //!   registered twice; on ECP5 hand-instantiated `DP16KD`s with their output register on) and
 //!   [`FifoRam`] (the storage of a first-word-fall-through FIFO: head and next read, a registered
 //!   pop).
+//! * [`fifo`]: [`FifoControl`], the pointers, word count and registered head-valid flag of a
+//!   first-word-fall-through FIFO over [`FifoRam`] lanes (every FIFO of the processing element),
+//!   and [`Fifo`], a FIFO of one lane.
 //!
 //! A part here knows nothing of the blocks that use it. The blocks' own hand-written stages live
 //! beside them (`intersection::stages`, `screener::divider`).
 
+pub mod fifo;
 pub mod mul;
 pub mod ram;
 
+pub use fifo::{Fifo, FifoControl};
 pub use mul::Mul18;
 pub use ram::{bram_out_tile_width, Bram, BramOut, FifoRam};
 

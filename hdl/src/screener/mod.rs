@@ -90,12 +90,13 @@
 //!
 //! The stages are cut for an ECP5 (LFE5U-85F, speed grade 6) clock of 150 MHz: at most one
 //! carry chain, or two or three conditional shifts, between registers; the output FIFO reads
-//! the head and the slot after it every cycle (`rd_ptr + 1` kept in a register), so that
+//! the head and the slot after it every cycle (a [`FifoControl`]: fill pointer, read side and
+//! count of complete slots, `rd_ptr + 1` kept in a register), so that
 //! `out_ready` reaches no read address, only the registered choice between the two; the
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 153.8 MHz (141.1–157.7; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`);
+//! median of 150.8 MHz (140.0–158.7; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`);
 //! its slowest path at seed 1 is stage 7's normalised exponent into stage 8 (7.09 ns).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
@@ -134,7 +135,7 @@
 //! cells and 2000 flip-flops.
 
 use crate::formats::{cross, dot, to_bits, PatchSetup, SECTOR_MARGIN, SH_BITS, SH_MAX, SH_MIN};
-use crate::prim::{FifoRam, Mul18};
+use crate::prim::{FifoControl, FifoRam, Mul18};
 
 pub mod divider;
 
@@ -322,12 +323,10 @@ pub struct Screener {
     pub near: Signal<Out, Bits<32>>,
     // Credits and the output FIFO.
     used: DFF<Bits<6>>,
-    done: DFF<Bits<6>>,
     res_ptr: DFF<Bits<5>>,
-    fill_ptr: DFF<Bits<5>>,
-    rd_ptr: DFF<Bits<5>>,
-    rd_inc_x: DFF<Bits<5>>,
-    head_valid: DFF<bool>,
+    /// The output FIFO's fill pointer (its tail), read side and count of complete slots: a slot
+    /// is pushed when its quotients arrive.
+    fifo: FifoControl<5, 6>,
     lane_id: FifoRam<16, 5>,
     lane_ax: FifoRam<18, 5>,
     lane_ay: FifoRam<18, 5>,
@@ -349,13 +348,7 @@ pub struct Screener {
     fill: Signal<Local, bool>,
     used_inc: Signal<Local, Bits<6>>,
     used_dec: Signal<Local, Bits<6>>,
-    done_inc: Signal<Local, Bits<6>>,
-    done_dec: Signal<Local, Bits<6>>,
-    done_left: Signal<Local, Bits<6>>,
     res_inc: Signal<Local, Bits<5>>,
-    fill_inc: Signal<Local, Bits<5>>,
-    rd_inc: Signal<Local, Bits<5>>,
-    rd_inc2: Signal<Local, Bits<5>>,
     // Stage 0: coordinates relative to the origin.
     ext_ox: Signal<Local, Bits<18>>,
     ext_oy: Signal<Local, Bits<18>>,
@@ -666,12 +659,8 @@ impl Default for Screener {
             outside: Default::default(),
             near: Default::default(),
             used: Default::default(),
-            done: Default::default(),
             res_ptr: Default::default(),
-            fill_ptr: Default::default(),
-            rd_ptr: Default::default(),
-            rd_inc_x: Default::default(),
-            head_valid: Default::default(),
+            fifo: Default::default(),
             lane_id: Default::default(),
             lane_ax: Default::default(),
             lane_ay: Default::default(),
@@ -691,13 +680,7 @@ impl Default for Screener {
             fill: Default::default(),
             used_inc: Default::default(),
             used_dec: Default::default(),
-            done_inc: Default::default(),
-            done_dec: Default::default(),
-            done_left: Default::default(),
             res_inc: Default::default(),
-            fill_inc: Default::default(),
-            rd_inc: Default::default(),
-            rd_inc2: Default::default(),
             ext_ox: Default::default(),
             ext_oy: Default::default(),
             ext_ax: Default::default(),
@@ -968,7 +951,7 @@ impl Screener {
     /// Patches whose slot is complete in the output FIFO and has not left yet: for
     /// testbenches.
     pub fn buffered(&self) -> usize {
-        self.done.q.val().index()
+        self.fifo.count.val().index()
     }
 }
 
@@ -980,12 +963,7 @@ impl Logic for Screener {
             clock,
             used,
             full,
-            done,
             res_ptr,
-            fill_ptr,
-            rd_ptr,
-            rd_inc_x,
-            head_valid,
             v1,
             id1,
             ax1,
@@ -1115,6 +1093,7 @@ impl Logic for Screener {
             c_outside,
             c_near
         );
+        self.fifo.clock.next = self.clock.val();
         self.m_nax.clock.next = self.clock.val();
         self.m_nay.clock.next = self.clock.val();
         self.m_nbx.clock.next = self.clock.val();
@@ -1560,8 +1539,8 @@ impl Logic for Screener {
         self.qy18.next = bit_cast::<18, 17>(self.divider.qy.val());
         self.wx_neg.next = self.zero18.val() - self.qx18.val();
         self.wy_neg.next = self.zero18.val() - self.qy18.val();
-        self.lane_wx.write_address.next = self.fill_ptr.q.val();
-        self.lane_wy.write_address.next = self.fill_ptr.q.val();
+        self.lane_wx.write_address.next = self.fifo.tail_address.val();
+        self.lane_wy.write_address.next = self.fifo.tail_address.val();
         self.lane_wx.write_data.next = self.qx18.val();
         if self.divider.tag_out.val().get_bit(1) {
             self.lane_wx.write_data.next = self.wx_neg.val();
@@ -1572,54 +1551,40 @@ impl Logic for Screener {
         }
         self.lane_wx.write_enable.next = self.fill.val();
         self.lane_wy.write_enable.next = self.fill.val();
-        self.fill_inc.next = self.fill_ptr.q.val() + self.one5.val();
-        if self.fill.val() {
-            self.fill_ptr.d.next = self.fill_inc.val();
-        }
+        self.fifo.push.next = self.fill.val();
 
         // Output: every cycle the lanes read the head slot (rd_ptr) and the one after it
         // (rd_ptr + 1) into their read registers and show the second after a pop
         // ([`FifoRam`]): no read address depends on out_ready. out_valid is set for the next
         // cycle when a complete slot remains after this cycle's pop, excluding this cycle's
         // fill (the lanes read before they write).
-        self.pop.next = self.head_valid.q.val() & self.out_ready.val();
-        // rd_ptr + 1 is kept in a register (rd_inc_x, bit 0 inverted so that its power-up zero
-        // stands for 1): no carry chain before the lanes' second read address.
-        self.rd_inc.next = self.rd_inc_x.q.val() ^ self.one5.val();
-        self.rd_inc2.next = self.rd_inc.val() + self.one5.val();
-        self.done_dec.next = self.done.q.val() - self.one6.val();
-        self.done_left.next = self.done.q.val();
-        if self.pop.val() {
-            self.rd_ptr.d.next = self.rd_inc.val();
-            self.rd_inc_x.d.next = self.rd_inc2.val() ^ self.one5.val();
-            self.done_left.next = self.done_dec.val();
-        }
-        self.lane_id.head_address.next = self.rd_ptr.q.val();
-        self.lane_id.next_address.next = self.rd_inc.val();
+        self.pop.next = self.fifo.valid.val() & self.out_ready.val();
+        self.fifo.pop.next = self.pop.val();
+        self.lane_id.head_address.next = self.fifo.head_address.val();
+        self.lane_id.next_address.next = self.fifo.next_address.val();
         self.lane_id.pop.next = self.pop.val();
-        self.lane_ax.head_address.next = self.rd_ptr.q.val();
-        self.lane_ax.next_address.next = self.rd_inc.val();
+        self.lane_ax.head_address.next = self.fifo.head_address.val();
+        self.lane_ax.next_address.next = self.fifo.next_address.val();
         self.lane_ax.pop.next = self.pop.val();
-        self.lane_ay.head_address.next = self.rd_ptr.q.val();
-        self.lane_ay.next_address.next = self.rd_inc.val();
+        self.lane_ay.head_address.next = self.fifo.head_address.val();
+        self.lane_ay.next_address.next = self.fifo.next_address.val();
         self.lane_ay.pop.next = self.pop.val();
-        self.lane_bx.head_address.next = self.rd_ptr.q.val();
-        self.lane_bx.next_address.next = self.rd_inc.val();
+        self.lane_bx.head_address.next = self.fifo.head_address.val();
+        self.lane_bx.next_address.next = self.fifo.next_address.val();
         self.lane_bx.pop.next = self.pop.val();
-        self.lane_by.head_address.next = self.rd_ptr.q.val();
-        self.lane_by.next_address.next = self.rd_inc.val();
+        self.lane_by.head_address.next = self.fifo.head_address.val();
+        self.lane_by.next_address.next = self.fifo.next_address.val();
         self.lane_by.pop.next = self.pop.val();
-        self.lane_sh.head_address.next = self.rd_ptr.q.val();
-        self.lane_sh.next_address.next = self.rd_inc.val();
+        self.lane_sh.head_address.next = self.fifo.head_address.val();
+        self.lane_sh.next_address.next = self.fifo.next_address.val();
         self.lane_sh.pop.next = self.pop.val();
-        self.lane_wx.head_address.next = self.rd_ptr.q.val();
-        self.lane_wx.next_address.next = self.rd_inc.val();
+        self.lane_wx.head_address.next = self.fifo.head_address.val();
+        self.lane_wx.next_address.next = self.fifo.next_address.val();
         self.lane_wx.pop.next = self.pop.val();
-        self.lane_wy.head_address.next = self.rd_ptr.q.val();
-        self.lane_wy.next_address.next = self.rd_inc.val();
+        self.lane_wy.head_address.next = self.fifo.head_address.val();
+        self.lane_wy.next_address.next = self.fifo.next_address.val();
         self.lane_wy.pop.next = self.pop.val();
-        self.head_valid.d.next = self.done_left.val() != self.zero6.val();
-        self.out_valid.next = self.head_valid.q.val();
+        self.out_valid.next = self.fifo.valid.val();
         self.out_id.next = self.lane_id.read_data.val();
         self.out_ax.next = self.lane_ax.read_data.val();
         self.out_ay.next = self.lane_ay.read_data.val();
@@ -1631,7 +1596,7 @@ impl Logic for Screener {
         self.out_wy.next = self.lane_wy.read_data.val();
 
         // Counters of the credit scheme: `used` counts a patch from its acceptance until it
-        // leaves; `done` counts complete slots not yet out.
+        // leaves; the FIFO control's `count` counts complete slots not yet out.
         self.used_inc.next = self.used.q.val() + self.one6.val();
         self.used_dec.next = self.used.q.val() - self.one6.val();
         self.used_next.next = self.used.q.val();
@@ -1643,12 +1608,5 @@ impl Logic for Screener {
         }
         self.used.d.next = self.used_next.val();
         self.full.d.next = self.used_next.val() == self.depth6.val();
-        self.done_inc.next = self.done.q.val() + self.one6.val();
-        if self.fill.val() & !self.pop.val() {
-            self.done.d.next = self.done_inc.val();
-        }
-        if !self.fill.val() & self.pop.val() {
-            self.done.d.next = self.done_dec.val();
-        }
     }
 }

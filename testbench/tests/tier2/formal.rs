@@ -5,6 +5,10 @@
 //!   FIFO and never loses, duplicates or reorders a patch, under any backpressure and any memory
 //!   latency; its covers (a full FIFO, a transfer out) are reachable; three broken variants of it
 //!   (overflow, misplaced data, a duplicated patch) are caught, so the proof can fail;
+//! * the first-word-fall-through FIFO (`prim::fifo`): a full proof by k-induction that it
+//!   moves every word from its push to its pop once, in order, with its count and `valid` as
+//!   documented; its covers reachable; two broken variants (a head never advanced, a word never
+//!   written) caught;
 //! * the intersection unit: its handshake invariants proved by induction; its live-bit and
 //!   result properties checked to a bounded depth (9 and 11 cycles); its covers reached (the
 //!   all-properties bounded task, `intersection.sby bmc`, takes minutes: run it by hand);
@@ -120,6 +124,19 @@ fn the_loader_proof_catches_broken_loaders() {
     // FAIL when the broken loader is caught.
     for mutant in ["mutant_full", "mutant_data", "mutant_dup"] {
         expect("loader", mutant, "FAIL");
+    }
+}
+
+#[test]
+fn the_fifo_is_proved_by_induction() {
+    expect("fifo", "prove", "PASS");
+    expect("fifo", "cover", "PASS");
+}
+
+#[test]
+fn the_fifo_proof_catches_broken_fifos() {
+    for mutant in ["mutant_dup", "mutant_lost"] {
+        expect("fifo", mutant, "FAIL");
     }
 }
 
