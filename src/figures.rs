@@ -420,6 +420,7 @@ pub fn run(opts: &FigureOptions) -> Result<FigureReport> {
         let (cycle_rows, runs) = cycles::measure_runs(opts)?;
         let cosim_elapsed = start.elapsed();
         write("cycles.csv", cycles::csv(&cycle_rows))?;
+        write("cycles.md", cycles::markdown(&cycle_rows))?;
         for (name, svg) in cycles::svgs(opts, &cycle_rows)? {
             write(name, svg)?;
         }

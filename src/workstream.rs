@@ -197,7 +197,8 @@ pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamEr
 
 /// The source and the command stream the host sends a processing element for `stream`: the
 /// quantised directions and patches of `fixed`, one command per item (consecutive retirements
-/// of neighbouring rays merged into one range).
+/// of neighbouring rays merged into one range; a job's range trimmed to its live rays,
+/// [`live_span`]).
 pub fn commands(
     stream: &WorkStream,
     fixed: &FixedBundle,
@@ -210,24 +211,46 @@ pub fn commands(
     };
     let patches = fixed.patches.iter().map(|p| [p.a[0], p.a[1], p.b[0], p.b[1]]).collect();
     let mut cmds: Vec<Command> = Vec::with_capacity(stream.items.len());
+    let mut live = vec![true; stream.rays];
     for it in &stream.items {
         match *it {
             Item::Sector { ref rays } => cmds.push(Command::Sector {
                 first: fixed.dirs[rays.start as usize],
                 last: fixed.dirs[rays.end as usize - 1],
             }),
-            Item::Job { patch, ref rays } => cmds.push(Command::Job {
-                id: patch as u16,
-                first: rays.start as u16,
-                count: rays.len() as u16,
-            }),
-            Item::Retire { ray } => match cmds.last_mut() {
-                Some(Command::Retire { first, count }) if (*first + *count) as u32 == ray => *count += 1,
-                _ => cmds.push(Command::Retire { first: ray as u16, count: 1 }),
-            },
+            Item::Job { patch, ref rays } => {
+                let span = live_span(&live, rays);
+                cmds.push(Command::Job {
+                    id: patch as u16,
+                    first: span.start as u16,
+                    count: span.len() as u16,
+                })
+            }
+            Item::Retire { ray } => {
+                live[ray as usize] = false;
+                match cmds.last_mut() {
+                    Some(Command::Retire { first, count }) if (*first + *count) as u32 == ray => *count += 1,
+                    _ => cmds.push(Command::Retire { first: ray as u16, count: 1 }),
+                }
+            }
         }
     }
     Ok((setup, patches, cmds))
+}
+
+/// The part of `rays` from its first live ray to its last (empty, at `rays.start`, if none is
+/// live): a job's range as the host sends it, so that the intersection unit spends no slot on the
+/// retired rays at either end of it (those between, it still issues: `ModelCounts::live_runs`
+/// counts what splitting the range at them would cost in commands).
+fn live_span(live: &[bool], rays: &Range<u32>) -> Range<u32> {
+    let r = rays.start as usize..rays.end as usize;
+    match live[r.clone()].iter().position(|&l| l) {
+        None => rays.start..rays.start,
+        Some(lo) => {
+            let hi = live[r.clone()].iter().rposition(|&l| l).expect("a live ray");
+            (r.start + lo) as u32..(r.start + hi + 1) as u32
+        }
+    }
 }
 
 /// Executes a stream in the bit-true models, command by command as the processing element does

@@ -42,6 +42,7 @@ fn cycle_figures_on_a_tiny_sample() {
     assert_eq!(report.cycles.len(), 3 * 2 * 2);
     assert!(report.to_string().contains("co-simulation"));
 
+    assert!(dir.join("cycles.md").exists(), "no cycles.md");
     let text = std::fs::read_to_string(dir.join("cycles.csv")).expect("cycles.csv");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
@@ -64,6 +65,10 @@ fn cycle_figures_on_a_tiny_sample() {
         assert!((eff - num(r, "intersection_busy_cycles") / cycles).abs() < 1e-5, "{r:?}");
         assert!(num(r, "tests") >= num(r, "intersection_busy_cycles"), "{r:?}");
         assert!(num(r, "ray_slots") >= num(r, "tests"), "{r:?}");
+        assert!(
+            num(r, "live_runs") <= num(r, "tests") && num(r, "live_runs") <= num(r, "passed") * 1024.0,
+            "{r:?}"
+        );
         assert!(num(r, "passed") <= num(r, "patch_loads"), "{r:?}");
         assert!(num(r, "sectors") >= 1.0 || r["method"] == "conventional", "{r:?}");
         assert!(cycles >= num(r, "bound_cycles"), "{r:?}");
@@ -181,6 +186,15 @@ fn figures_dim_3_writes_the_3d_table_and_csv() {
     let csv = std::fs::read_to_string(out.join("figures3d.csv")).expect("no figures3d.csv");
     let md = std::fs::read_to_string(out.join("figures3d.md")).expect("no figures3d.md");
     assert!(md.contains("| size | method |"), "{md}");
+    for fig in ["fig08", "fig09", "fig10", "fig11", "fig13"] {
+        let name = std::fs::read_dir(&out)
+            .unwrap()
+            .filter_map(|e| e.ok()?.file_name().into_string().ok())
+            .find(|n| n.starts_with(&format!("{fig}_3d_")) && n.ends_with(".svg"))
+            .unwrap_or_else(|| panic!("no {fig}_3d_*.svg"));
+        let svg = std::fs::read_to_string(out.join(&name)).unwrap();
+        assert!(svg.contains("<svg") && svg.contains("sweep") && svg.contains("3D"), "{name}");
+    }
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], format!("size,method,sources,{}", shelling::counters::Counters::NAMES.join(",")));
     assert_eq!(lines.len(), 1 + 2 * 3, "{csv}");
@@ -234,4 +248,19 @@ fn figures_dim_3_writes_the_3d_table_and_csv() {
     t(&["--cells-per-segment", "0"], &["--cells-per-segment"]);
     fails(&["figures", "--out", o, "--sizes", "8", "--quiet"], &["--sizes belongs to --dim 3"]);
     fails(&["figures", "--dim", "4", "--out", o], &["--dim", "4"]);
+}
+
+#[test]
+fn figures_md_holds_the_committed_cycle_table() {
+    const BEGIN: &str = "<!-- cycles-table:begin (figures/cycles.md, written by the command above) -->\n";
+    const END: &str = "<!-- cycles-table:end -->";
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(root.join("FIGURES.md")).unwrap();
+    let table = std::fs::read_to_string(root.join("figures/cycles.md")).unwrap();
+    let (start, end) = match (text.find(BEGIN), text.find(END)) {
+        (Some(s), Some(e)) if s < e => (s + BEGIN.len(), e),
+        _ => panic!("FIGURES.md has no {BEGIN:?} … {END:?} block"),
+    };
+    assert!(table.lines().count() > 2, "figures/cycles.md holds no rows:\n{table}");
+    assert_eq!(&text[start..end], table, "FIGURES.md's cycle table is not figures/cycles.md: copy it over");
 }

@@ -8,8 +8,9 @@ use shelling::rays::RaySet;
 use shelling::run::GriddedScene;
 use shelling::scene::{self, PAPER_WORLD};
 use shelling::trace::{Method, ShellParams};
-use shelling::workstream::{execute, Item};
+use shelling::workstream::{commands, execute, Item};
 use shelling_hdl::formats::key_distance;
+use shelling_testbench::pe::{model, Command};
 
 const METHODS: [Method; 3] = [Method::Conventional, Method::Stochastic, Method::Deterministic];
 
@@ -45,5 +46,54 @@ fn executing_the_stream_gives_the_bit_true_tracers_hits() {
                 }
             }
         }
+    }
+}
+
+#[test]
+fn the_host_trims_each_jobs_range_to_its_live_rays_and_loses_no_test() {
+    let scene = scene::generate(1000, 16.0, 4, PAPER_WORLD).expect("scene");
+    let prepared = GriddedScene::new(scene, GridParams::default());
+    let bundle = prepared.patch_bundle(300, RaySet::Angle, 1024).expect("source");
+    for m in [Method::Stochastic, Method::Deterministic] {
+        let s = prepared.schedule(m, &bundle, &ShellParams::default()).expect("fits");
+        let (setup, patches, cmds) = commands(&s.stream, &s.fixed).expect("a valid stream");
+        // The untrimmed commands: each job with its range as the scheduler announced it.
+        let mut jobs = s.stream.items.iter().filter_map(|i| match i {
+            Item::Job { rays, .. } => Some(rays.clone()),
+            _ => None,
+        });
+        let mut live = vec![true; s.stream.rays];
+        let mut untrimmed = Vec::new();
+        for c in &cmds {
+            match *c {
+                Command::Job { id, first, count } => {
+                    let r = jobs.next().expect("one command per job");
+                    let (lo, hi) = (first as u32, first as u32 + count as u32);
+                    assert!(count == 0 || (r.start <= lo && hi <= r.end), "{m}: {c:?} outside {r:?}");
+                    if count > 0 {
+                        assert!(live[lo as usize] && live[hi as usize - 1], "{m}: {c:?} ends on a dead ray");
+                    }
+                    for ray in r.clone().filter(|&x| x < lo || x >= hi) {
+                        assert!(!live[ray as usize], "{m}: {c:?} drops live ray {ray} of {r:?}");
+                    }
+                    untrimmed.push(Command::Job { id, first: r.start as u16, count: r.len() as u16 });
+                }
+                Command::Retire { first, count } => {
+                    live[first as usize..(first + count) as usize].fill(false);
+                    untrimmed.push(*c);
+                }
+                Command::Sector { .. } => untrimmed.push(*c),
+            }
+        }
+        let (hits, trimmed) = model(&setup, &patches, &cmds);
+        let (want, full) = model(&setup, &patches, &untrimmed);
+        assert_eq!(hits, want, "{m}: hits");
+        assert_eq!((trimmed.tests, trimmed.live_runs), (full.tests, full.live_runs), "{m}");
+        assert!(trimmed.ray_slots < full.ray_slots, "{m}: nothing trimmed: {trimmed:?} vs {full:?}");
+        assert!(trimmed.tests <= trimmed.ray_slots && trimmed.live_runs <= trimmed.tests, "{m}: {trimmed:?}");
+        println!(
+            "{m}: ray slots {} untrimmed, {} trimmed, {} tests in {} live runs",
+            full.ray_slots, trimmed.ray_slots, trimmed.tests, trimmed.live_runs
+        );
     }
 }

@@ -95,6 +95,9 @@ pub struct CycleTotals {
     pub ray_slots: u64,
     /// Ray–patch tests of live rays.
     pub tests: u64,
+    /// Runs of live rays in the passed jobs' ranges ([`ModelCounts::live_runs`]): the jobs the
+    /// unit would take if the host split the ranges at their retired rays.
+    pub live_runs: u64,
     /// Sector changes (each drains the PE).
     pub sectors: u64,
     /// Σ over sources of `max(memory_loads · T_c, patch_loads, tests · T_λ)`: the cycles the host
@@ -114,6 +117,7 @@ impl CycleTotals {
         self.passed += h.passed;
         self.ray_slots += m.ray_slots;
         self.tests += h.tests;
+        self.live_runs += m.live_runs;
         self.sectors += m.sectors;
         self.bound_cycles += (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests);
     }
@@ -465,7 +469,7 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
 /// The CSV header of `cycles.csv`.
 pub const CSV_HEADER: &str = "length,method,tc,cache_lines,sources,cycles,intersection_busy_cycles,\
 pipeline_efficiency,stall_cycles,drain_cycles,sectors,patch_loads,memory_loads,cache_hits,passed,ray_slots,\
-tests,bound_cycles,s_measured,adlc_true,speedup,speedup_vs_shared_conventional,predicted_speedup,predicted_branch";
+tests,live_runs,bound_cycles,s_measured,adlc_true,speedup,speedup_vs_shared_conventional,predicted_speedup,predicted_branch";
 
 /// The text of `cycles.csv`: per-source means (pipeline efficiency over all cycles of the row);
 /// `cache_lines` 0 is the shared memory without cache. `speedup` is the conventional technique's
@@ -499,6 +503,7 @@ pub fn csv(rows: &[CycleRow]) -> String {
             t.passed,
             t.ray_slots,
             t.tests,
+            t.live_runs,
             t.bound_cycles,
         ] {
             cols.push(csv_num(r.mean(v)));
@@ -520,6 +525,80 @@ pub fn csv(rows: &[CycleRow]) -> String {
         cols.push(pred.map(|p| p.branch.name().to_string()).unwrap_or_default());
         out.push_str(&cols.join(","));
         out.push('\n');
+    }
+    out
+}
+
+/// The table of FIGURES.md ("The paper's claim, measured"), written to `cycles.md`: per length
+/// and `T_c`, per-source means of the shared-memory runs, the speedups with the predictions of
+/// Eqs. 10 and 11 ([`speedups`]), pipeline efficiencies and the shelling techniques' cycles over
+/// the bound ([`CycleRow::overhead`]). Rows the measurement lacks are left out.
+pub fn markdown(rows: &[CycleRow]) -> String {
+    let sp = speedups(rows);
+    let mut out = String::from(
+        "| L | ADLC | S | T_c | conv. cycles | S cycles | SF S | SF D | Eq. 10 | SF S, cache | Eq. 11 \
+         | SF S, both cache | eff. conv. | eff. S | eff. D | S / bound | D / bound |\n\
+         |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    let mut lengths: Vec<f64> = Vec::new();
+    for r in rows {
+        if !lengths.contains(&r.length) {
+            lengths.push(r.length);
+        }
+    }
+    for &l in &lengths {
+        let mut tcs: Vec<u32> = Vec::new();
+        for r in rows.iter().filter(|r| r.length == l) {
+            if !tcs.contains(&r.tc) {
+                tcs.push(r.tc);
+            }
+        }
+        for (k, &tc) in tcs.iter().enumerate() {
+            let (Some(conv), Some(s), Some(d)) = (
+                find(rows, l, Method::Conventional, tc, false),
+                find(rows, l, Method::Stochastic, tc, false),
+                find(rows, l, Method::Deterministic, tc, false),
+            ) else {
+                continue;
+            };
+            let cached = find(rows, l, Method::Stochastic, tc, true);
+            let of = |r: Option<&CycleRow>, sc| r.and_then(|r| speedup_of(&sp, r, sc));
+            let sf = |x: Option<Speedup>| x.map_or_else(String::new, |x| format!("{:.1}", x.measured));
+            let pred = |x: Option<Speedup>| x.and_then(|x| x.predicted);
+            let shared = of(Some(s), Scenario::Shared);
+            let eq10 = pred(shared).map_or_else(String::new, |p| {
+                format!("{:.1} {}", p.value, if p.branch == Branch::Compute { 'c' } else { 'm' })
+            });
+            let paper = of(cached, Scenario::PaperCache);
+            let eq11 = pred(paper).map_or_else(String::new, |p| format!("{:.1}", p.value));
+            let both =
+                of(cached, Scenario::Cached).map_or_else(String::new, |x| format!("{:.2}", x.measured));
+            let (adlc, sm) = if k == 0 {
+                (format!("{:.1}", s.adlc_true), s.s_measured.map_or_else(String::new, |v| format!("{v:.2}")))
+            } else {
+                (String::new(), String::new())
+            };
+            let cols = [
+                if k == 0 { csv_num(l) } else { String::new() },
+                adlc,
+                sm,
+                tc.to_string(),
+                format!("{:.0}", conv.mean_cycles()),
+                format!("{:.0}", s.mean_cycles()),
+                sf(shared),
+                sf(of(Some(d), Scenario::Shared)),
+                eq10,
+                sf(paper),
+                eq11,
+                both,
+                format!("{:.3}", conv.pipeline_efficiency()),
+                format!("{:.3}", s.pipeline_efficiency()),
+                format!("{:.3}", d.pipeline_efficiency()),
+                format!("{:.2}", s.overhead()),
+                format!("{:.2}", d.overhead()),
+            ];
+            out.push_str(&format!("| {} |\n", cols.join(" | ")));
+        }
     }
     out
 }

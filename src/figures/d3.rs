@@ -11,9 +11,10 @@
 //! `adlc_estimated` is the ADLC captured in its planes (`crate::d3::sweep`), which FIGURES.md
 //! sets beside the true 3D ADLC.
 //!
-//! [`run`] writes `figures3d.csv` and `figures3d.md` (the same means as a markdown table) into
-//! [`Figure3Options::out`].
+//! [`run`] writes `figures3d.csv`, `figures3d.md` (the same means as a markdown table) and the
+//! charts of [`svgs`] into [`Figure3Options::out`].
 
+use super::plot::{method_color, method_marker, render, Chart, Marker, Series, XAxis, CHART_SIZE, GREY};
 use super::{csv_num, scene_seed, source_patches, MAX_SEEDS};
 use crate::counters::Counters;
 use crate::d3::gen::{generate, WORLD};
@@ -22,7 +23,7 @@ use crate::d3::hemisphere::{HemisphereRays, Strata};
 use crate::d3::trace::{trace, Bundle3, Method3};
 use crate::limits::{MAX_COUNT, MAX_LENGTHS};
 use crate::staged::Staged;
-use crate::trace::ShellParams;
+use crate::trace::{Method, ShellParams};
 use anyhow::{anyhow, bail, Context, Result};
 use rayon::prelude::*;
 use std::fmt;
@@ -213,6 +214,88 @@ pub fn csv(rows: &[Row3]) -> String {
     out
 }
 
+/// The 2D technique whose colour and marker a 3D one takes in the charts: the conventional
+/// technique its own, polar (sectors and shells, like stochastic shelling) the stochastic one's,
+/// the sweep (the deterministic technique in each plane) the deterministic one's.
+fn look(m: Method3) -> Method {
+    match m {
+        Method3::Brute => Method::Brute,
+        Method3::Conventional => Method::Conventional,
+        Method3::Polar => Method::Stochastic,
+        Method3::Sweep => Method::Deterministic,
+    }
+}
+
+/// Figures 8–11 and 13 in 3D as `(file name, SVG text)`: per-source means over the patch size,
+/// one series per technique of the rows; Figure 11 with the actual intersections, Figure 13 the
+/// true 3D ADLC beside each technique's estimate (the sweep's is the ADLC its planes capture).
+pub fn svgs(opts: &Figure3Options, rows: &[Row3]) -> Result<Vec<(&'static str, String)>> {
+    let mut sizes = opts.sizes.clone();
+    sizes.sort_by(f64::total_cmp);
+    let workload =
+        format!("N = {}, R = {}, {} sources × {} seeds", opts.count, opts.rays, opts.sources, opts.seeds);
+    let mut methods: Vec<Method3> = Vec::new();
+    for r in rows {
+        if !methods.contains(&r.method) {
+            methods.push(r.method);
+        }
+    }
+    let points = |m: Method3, i: usize| -> Vec<(f64, f64)> {
+        rows.iter().filter(|r| r.method == m).map(|r| (r.size, r.mean_values()[i])).collect()
+    };
+    let series = |m: Method3, label: String, i: usize| {
+        Series::new(label, points(m, i), method_color(look(m)), method_marker(look(m)))
+    };
+    let per_method =
+        |i: usize| -> Vec<Series> { methods.iter().map(|&m| series(m, m.name().into(), i)).collect() };
+    let chart = |title: &str, y_label: &str, series: Vec<Series>| Chart {
+        size: CHART_SIZE,
+        title: format!("{title}, 3D ({workload})"),
+        x_label: "patch size L (log₂ scale)".to_string(),
+        y_label: y_label.to_string(),
+        x: XAxis::Log2(sizes.clone()),
+        series,
+    };
+    let first = methods.first().copied().ok_or_else(|| anyhow!("no rows to plot"))?;
+    let mut s11 = per_method(3);
+    s11.push(Series::new("actual intersections", points(first, 4), GREY, Marker::Cross));
+    let mut s13 = vec![Series::new("ADLC true (all methods)", points(first, 5), GREY, Marker::Cross)];
+    for &m in methods.iter().filter(|&&m| m != Method3::Conventional) {
+        let what = if m == Method3::Sweep { "captured in its planes" } else { "estimated" };
+        s13.push(series(m, format!("ADLC {what}: {}", m.name()), 6));
+    }
+    Ok(vec![
+        (
+            "fig08_3d_patches_read_before_screening.svg",
+            render(&chart(
+                "Fig. 8: patches read before screening",
+                "patches read per source",
+                per_method(0),
+            ))?,
+        ),
+        (
+            "fig09_3d_patches_read_after_screening.svg",
+            render(&chart("Fig. 9: patches read after screening", "patches per source", per_method(1)))?,
+        ),
+        (
+            "fig10_3d_cells_traversed.svg",
+            render(&chart("Fig. 10: cells traversed", "cells traversed per source", per_method(2)))?,
+        ),
+        (
+            "fig11_3d_intersection_computations.svg",
+            render(&chart("Fig. 11: intersection computations", "ray-polygon tests per source", s11))?,
+        ),
+        (
+            "fig13_3d_adlc.svg",
+            render(&chart(
+                "Fig. 13: average degree of local coherence",
+                "ADLC (rays per distinct patch hit)",
+                s13,
+            ))?,
+        ),
+    ])
+}
+
 /// Runs the workload: one row per size (in the order of [`Figure3Options::sizes`]) and technique
 /// (in the order of [`METHODS3`]), the scenes and jobs counted, and the disagreements.
 pub fn measure(opts: &Figure3Options) -> Result<(Vec<Row3>, usize, usize, u64)> {
@@ -316,7 +399,9 @@ pub fn run(opts: &Figure3Options) -> Result<Figure3Report> {
         opts.strata,
         table(&rows)
     );
-    for (name, text) in [("figures3d.csv", csv(&rows)), ("figures3d.md", md)] {
+    let mut texts = vec![("figures3d.csv", csv(&rows)), ("figures3d.md", md)];
+    texts.extend(svgs(opts, &rows)?);
+    for (name, text) in texts {
         let path = staged.path().join(name);
         let shown = opts.out.join(name);
         std::fs::write(&path, text).with_context(|| format!("writing {}", shown.display()))?;

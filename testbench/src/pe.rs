@@ -82,6 +82,10 @@ pub struct ModelCounts {
     pub ray_slots: u64,
     /// Ray-patch tests of live rays.
     pub tests: u64,
+    /// Maximal runs of live rays within passed jobs' ranges: the jobs the intersection unit
+    /// would take if the host split every range at its retired rays (one command per run), so
+    /// that `ray_slots − tests` slots would go (the price of that option, against the bubbles).
+    pub live_runs: u64,
     /// Rays retired.
     pub retires: u64,
 }
@@ -114,10 +118,14 @@ pub fn model(
                 };
                 c.passed += 1;
                 c.ray_slots += count as u64;
+                let mut run = false;
                 for r in first as usize..first as usize + count as usize {
                     if !live[r] {
+                        run = false;
                         continue;
                     }
+                    c.live_runs += !run as u64;
+                    run = true;
                     c.tests += 1;
                     if let Some(key) = test(&p, setup.dirs[r]) {
                         if replaces(key, id, best[r]) {

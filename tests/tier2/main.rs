@@ -5,6 +5,7 @@
 mod support;
 
 mod ff3d;
+mod figures;
 mod radiosity;
 mod replay;
 mod tracers3d;
