@@ -14,7 +14,7 @@ use shelling::geom::Vec2;
 use shelling::limits;
 use shelling::radiosity::form_factors::{Entry, MAX_ORIGINS};
 use shelling::rays::RaySet;
-use shelling::trace::{Method, ShellStats};
+use shelling::trace::{Method, ShellParams, ShellStats};
 use std::io::Read;
 use std::path::Path;
 
@@ -151,6 +151,13 @@ fn check_tune(tune: &TuneArgs) -> Result<()> {
     Ok(())
 }
 
+/// The shell parameters of the 3D tracers: the defaults with `--phi-cells` (checked).
+fn polar_params(tune: &TuneArgs) -> Result<ShellParams> {
+    let phi_cells = tune.phi_cells.unwrap_or(ShellParams::default().phi_cells);
+    limits::check_range("--phi-cells", phi_cells, 1, limits::MAX_BUNDLE_RAYS).map_err(anyhow::Error::msg)?;
+    Ok(ShellParams { phi_cells, ..ShellParams::default() })
+}
+
 /// Loads the OBJ scene and builds its grid (`--cells-per-segment` as λ, checked as in 2D).
 fn load(path: &Path, tune: &TuneArgs) -> Result<(Scene3, Grid3)> {
     check_tune(tune)?;
@@ -227,7 +234,7 @@ pub fn trace_cmd(a: &TraceArgs) -> Result<()> {
     };
     let set = HemisphereRays::new(origin, normal, n_theta, n_phi, strata(a.from.ray_set))?;
     let bundle = Bundle3::from_hemisphere(&set, patch);
-    let result = trace3::trace(method, &scene, &grid, &bundle, &shelling::trace::ShellParams::default())?;
+    let result = trace3::trace(method, &scene, &grid, &bundle, &polar_params(&a.tune)?)?;
     let mut out = Out::new();
     if a.json {
         let json = TraceJson {
@@ -325,6 +332,7 @@ pub fn form_factors_cmd(a: FormFactors3) -> Result<()> {
         origins: a.origins.unwrap_or(ff3::DEFAULT_ORIGINS),
         strata: strata(a.ray_set),
         method,
+        shells: polar_params(a.tune)?,
         ..Ff3Params::default()
     };
     let (row, free) = match (a.source, a.origin, a.normal) {

@@ -228,6 +228,10 @@ struct TuneArgs {
     /// (default 64).
     #[arg(long, allow_negative_numbers = true)]
     max_sector: Option<usize>,
+    /// 3D scenes: the polar tracer's sector height in Φ-cells (the fixed angle's rows), 1 to
+    /// 1048576 (default 4; fewer where the ray set has fewer cells).
+    #[arg(long, allow_negative_numbers = true)]
+    phi_cells: Option<usize>,
 }
 
 impl TuneArgs {
@@ -242,6 +246,8 @@ impl TuneArgs {
     /// The shell parameters; the shell depth is checked against a scene's grid by
     /// [`TuneArgs::check_depth`].
     fn shells(&self) -> Result<ShellParams> {
+        let phi_cells = self.phi_cells.unwrap_or(ShellParams::default().phi_cells);
+        check_range("--phi-cells", phi_cells, 1, limits::MAX_BUNDLE_RAYS).map_err(anyhow::Error::msg)?;
         if let Some(d) = self.shell_depth {
             if !(d.is_finite() && d > 0.0) {
                 bail!("--shell-depth must be a positive number, got {d}");
@@ -253,10 +259,19 @@ impl TuneArgs {
             shell_depth: self.shell_depth,
             max_sector,
             min_sector: ShellParams::default().min_sector.min(max_sector),
+            phi_cells,
             ..ShellParams::default()
         };
         p.validate().map_err(anyhow::Error::msg)?;
         Ok(p)
+    }
+
+    /// [`TuneArgs::shells`] for a 2D command, which has no use for `--phi-cells`.
+    fn shells_2d(&self) -> Result<ShellParams> {
+        if self.phi_cells.is_some() {
+            bail!("--phi-cells belongs to 3D scenes (the polar tracer's sectors)");
+        }
+        self.shells()
     }
 
     /// `--shell-depth` against the grid of side `width`, for a source whose farthest grid
@@ -685,7 +700,7 @@ fn figures_cmd(a: FiguresArgs, given: &[&'static str]) -> Result<()> {
     )
     .map_err(m)?;
     let grid = a.tune.grid(a.count)?;
-    let shells = a.tune.shells()?;
+    let shells = a.tune.shells_2d()?;
     // The scenes fill the paper's world; the grid pads it by 0.1 % on every side.
     let side = scene::PAPER_WORLD.size().max_element() * 1.002;
     a.tune.check_depth(side, side * std::f64::consts::SQRT_2)?;
@@ -840,7 +855,7 @@ fn trace_cmd(a: TraceArgs) -> Result<()> {
         return d3_cli::trace_cmd(&a);
     }
     let method = d3_cli::MethodArg::two_d(a.method.as_ref(), Method::Stochastic)?;
-    let shells = a.tune.shells()?;
+    let shells = a.tune.shells_2d()?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
     let source = bundle.source;
     let result = prepared.trace_in(a.arith, method, &bundle, &shells)?;
@@ -900,7 +915,7 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     if a.engine == Engine::Verilator && vcd.is_some() {
         bail!("--vcd needs --engine rust-hdl (or auto): the compiled PE writes no waveforms");
     }
-    let params = a.tune.shells()?;
+    let params = a.tune.shells_2d()?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
     let scheduled = prepared.schedule(a.method, &bundle, &params)?;
     let config = CosimConfig { tc: a.tc, cache: a.cache, engine: a.engine.resolve(vcd.is_some()), vcd };

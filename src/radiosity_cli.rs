@@ -63,7 +63,7 @@ impl FfArgs {
             ray_set: self.ray_set,
             method: super::d3_cli::MethodArg::two_d(self.method.as_ref(), Method::Deterministic)?,
             arith: self.arith,
-            shells: tune.shells()?,
+            shells: tune.shells_2d()?,
         })
     }
 }

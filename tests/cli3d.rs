@@ -139,6 +139,10 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     t(&["--source", "1", "--shell-depth", "3"], &["--shell-depth", "2D"]);
     t(&["--source", "1", "--max-sector", "8"], &["--max-sector", "2D"]);
     t(&["--source", "1", "--rays", "0"], &["--rays", "between 1 and 1048576", "got 0"]);
+    t(
+        &["--source", "1", "--method", "polar", "--phi-cells", "0"],
+        &["--phi-cells", "between 1 and", "got 0"],
+    );
     let f = |extra: &[&str], expect: &[&str]| {
         let mut args = vec!["form-factors", "--scene", CORNELL];
         args.extend_from_slice(extra);
@@ -158,4 +162,37 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     let s = path_arg(&scene);
     fails(&["trace", "--scene", s, "--origin", "1,2,3", "--normal", "0,1,0"], &["--origin", "three", "2D"]);
     fails(&["form-factors", "--scene", s, "--origin", "1,2", "--normal", "0,1"], &["--origin", "3D scenes"]);
+    fails(&["trace", "--scene", s, "--source", "1", "--phi-cells", "2"], &["--phi-cells", "3D scenes"]);
+    fails(
+        &["form-factors", "--scene", s, "--source", "1", "--phi-cells", "2"],
+        &["--phi-cells", "3D scenes"],
+    );
+    fails(&["figures", "--out", s, "--phi-cells", "2"], &["--phi-cells", "3D scenes"]);
+}
+
+#[test]
+fn the_polar_sectors_height_changes_the_work_not_the_hits() {
+    let run = |phi: &str| {
+        let v = json(&[
+            "trace",
+            "--scene",
+            CORNELL,
+            "--source",
+            "1",
+            "--rays",
+            "1024",
+            "--method",
+            "polar",
+            "--phi-cells",
+            phi,
+            "--json",
+        ]);
+        let hits: Vec<Value> = v["rays"].as_array().unwrap().iter().map(|r| r["hit"].clone()).collect();
+        (hits, v["counters"]["patches_read_before_screening"].clone())
+    };
+    let (one, loads_one) = run("1");
+    let (four, loads_four) = run("4");
+    let (all, loads_all) = run("1048576");
+    assert!(one == four && four == all, "the height of a polar sector changed a hit");
+    assert!(loads_one != loads_four || loads_four != loads_all, "--phi-cells changed nothing: {loads_one}");
 }

@@ -347,6 +347,7 @@ fn invalid_shell_parameters_are_errors_not_hangs() {
         ShellParams { first_sector: 0, ..Default::default() },
         ShellParams { default_adlc: 0.5, ..Default::default() },
         ShellParams { min_subshell_fraction: 0.0, ..Default::default() },
+        ShellParams { phi_cells: 0, ..Default::default() },
     ] {
         for method in Method::ALL {
             let err = p.trace(method, &bundle, &bad).unwrap_err();

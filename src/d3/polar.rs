@@ -2,7 +2,7 @@
 //! the stochastic tracking mechanism of §3.1.
 //!
 //! * **Sectors in (Θ, Φ).** A sector is a block of the hemisphere set's cells, `w` Θ-bands by
-//!   `h` Φ-cells ([`SECTOR_PHI_CELLS`], fewer when the set has fewer cells or the widest sector
+//!   `h` Φ-cells ([`ShellParams::phi_cells`], by default [`SECTOR_PHI_CELLS`], fewer when the set has fewer cells or the widest sector
 //!   is narrower): the same rows of Φ-cells in every sector, so **Φ is the angle fixed** to pass
 //!   neighbourhood information, and the sectors of a row go round in Θ, each the Θ-neighbour of
 //!   the one before. The width is the 2D rule's in rays, `clamp(round(α·ADLC), w_min, w_max)`
@@ -54,7 +54,8 @@ use crate::trace::ShellParams;
 use glam::DVec3;
 use std::f64::consts::TAU;
 
-/// The Φ-cells of a sector's row (the fixed angle), when the set and the widest sector allow.
+/// The default Φ-cells of a sector's row (the fixed angle, [`ShellParams::phi_cells`]), when the
+/// set and the widest sector allow.
 pub const SECTOR_PHI_CELLS: usize = 4;
 
 /// What the tracker knows of a polygon for one source, computed on its first load.
@@ -151,7 +152,7 @@ pub fn trace(
         c: Counters::default(),
         estimate: (0.0, 0.0),
     };
-    let h = SECTOR_PHI_CELLS.min(layout.n_phi).min(params.max_sector).max(1);
+    let h = params.phi_cells.min(layout.n_phi).min(params.max_sector).max(1);
     let mut j0 = 0;
     while j0 < layout.n_phi {
         let h = h.min(layout.n_phi - j0);

@@ -105,6 +105,10 @@ pub struct ShellParams {
     pub default_adlc: f64,
     /// Smallest radial subshell, as a fraction of `Γ`.
     pub min_subshell_fraction: f64,
+    /// The 3D polar tracer's sector height in Φ-cells (the fixed angle's rows,
+    /// `crate::d3::polar`; fewer when the set has fewer cells or the widest sector is narrower).
+    /// The 2D tracers do not use it.
+    pub phi_cells: usize,
 }
 
 impl Default for ShellParams {
@@ -117,6 +121,7 @@ impl Default for ShellParams {
             max_sector: 64,
             default_adlc: 4.0,
             min_subshell_fraction: 0.125,
+            phi_cells: crate::d3::polar::SECTOR_PHI_CELLS,
         }
     }
 }
@@ -149,6 +154,12 @@ impl ShellParams {
         }
         if !(self.sector_per_adlc.is_finite() && self.sector_per_adlc > 0.0) {
             return Err(format!("sector_per_adlc must be positive, got {}", self.sector_per_adlc));
+        }
+        if self.phi_cells == 0 || self.phi_cells > MAX_BUNDLE_RAYS {
+            return Err(format!(
+                "a polar sector must be 1 to {MAX_BUNDLE_RAYS} Φ-cells high, got {}",
+                self.phi_cells
+            ));
         }
         if !(self.default_adlc.is_finite() && self.default_adlc >= 1.0) {
             return Err(format!("default_adlc must be at least 1, got {}", self.default_adlc));
