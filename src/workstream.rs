@@ -198,7 +198,7 @@ pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamEr
 /// The source and the command stream the host sends a processing element for `stream`: the
 /// quantised directions and patches of `fixed`, one command per item (consecutive retirements
 /// of neighbouring rays merged into one range; a job's range trimmed to its live rays,
-/// [`live_span`]).
+/// `live_span`).
 pub fn commands(
     stream: &WorkStream,
     fixed: &FixedBundle,

@@ -2,13 +2,13 @@
 //! the stochastic tracking mechanism of §3.1.
 //!
 //! * **Sectors in (Θ, Φ).** A sector is a block of the hemisphere set's cells, `w` Θ-bands by
-//!   `h` Φ-cells ([`ShellParams::phi_cells`], by default [`SECTOR_PHI_CELLS`], fewer when the set has fewer cells or the widest sector
-//!   is narrower): the same rows of Φ-cells in every sector, so **Φ is the angle fixed** to pass
-//!   neighbourhood information, and the sectors of a row go round in Θ, each the Θ-neighbour of
-//!   the one before. The width is the 2D rule's in rays, `clamp(round(α·ADLC), w_min, w_max)`
-//!   from the first shell (with relevant polygons) of the previous sector, spread over the row's
-//!   `h` cells: `w = max(1, round(width / h))` bands, at most `max(1, w_max / h)`. A row starts
-//!   again from [`ShellParams::first_sector`].
+//!   `h` Φ-cells ([`ShellParams::phi_cells`], by default [`SECTOR_PHI_CELLS`]; fewer when the
+//!   set has fewer cells or the widest sector is narrower): the same rows of Φ-cells in every
+//!   sector, so **Φ is the angle fixed** to pass neighbourhood information, and the sectors of
+//!   a row go round in Θ, each the Θ-neighbour of the one before. The width is the 2D rule's in
+//!   rays, `clamp(round(α·ADLC), w_min, w_max)` from the first shell (with relevant polygons) of
+//!   the previous sector, spread over the row's `h` cells: `w = max(1, round(width / h))` bands,
+//!   at most `max(1, w_max / h)`. A row starts again from [`ShellParams::first_sector`].
 //! * **Shells of constant depth** `Γ` ([`ShellParams::shell_depth`], by default 4 cell sides):
 //!   shell `j` of a sector holds the points at distances `[jΓ, (j + 1)Γ)` from the source in the
 //!   directions of the sector's remaining rays. Its cells are those whose box comes within the

@@ -469,7 +469,8 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
 /// The CSV header of `cycles.csv`.
 pub const CSV_HEADER: &str = "length,method,tc,cache_lines,sources,cycles,intersection_busy_cycles,\
 pipeline_efficiency,stall_cycles,drain_cycles,sectors,patch_loads,memory_loads,cache_hits,passed,ray_slots,\
-tests,live_runs,bound_cycles,s_measured,adlc_true,speedup,speedup_vs_shared_conventional,predicted_speedup,predicted_branch";
+tests,live_runs,bound_cycles,s_measured,adlc_true,speedup,speedup_vs_shared_conventional,predicted_speedup,\
+predicted_branch";
 
 /// The text of `cycles.csv`: per-source means (pipeline efficiency over all cycles of the row);
 /// `cache_lines` 0 is the shared memory without cache. `speedup` is the conventional technique's
