@@ -196,9 +196,12 @@ pub fn validate(stream: &WorkStream, fixed: &FixedBundle) -> Result<(), StreamEr
 }
 
 /// The source and the command stream the host sends a processing element for `stream`: the
-/// quantised directions and patches of `fixed`, one command per item (consecutive retirements
-/// of neighbouring rays merged into one range; a job's range trimmed to its live rays,
-/// `live_span`).
+/// quantised directions and patches of `fixed`, a command per sector and per job, a job's range
+/// trimmed to its live rays (`live_span`). Retirements are sent late: a retired ray is told to
+/// the PE only just before the first job whose (trimmed) range holds it, neighbouring rays as
+/// one range, so that inside every job's range the PE's live bits are the tracker's and the
+/// same rays are tested, while a retirement that no later range needs costs the intersection
+/// unit no slot (it retires one ray per clock).
 pub fn commands(
     stream: &WorkStream,
     fixed: &FixedBundle,
@@ -212,6 +215,8 @@ pub fn commands(
     let patches = fixed.patches.iter().map(|p| [p.a[0], p.a[1], p.b[0], p.b[1]]).collect();
     let mut cmds: Vec<Command> = Vec::with_capacity(stream.items.len());
     let mut live = vec![true; stream.rays];
+    // Retired by the tracker, not yet told to the PE.
+    let mut unsent = vec![false; stream.rays];
     for it in &stream.items {
         match *it {
             Item::Sector { ref rays } => cmds.push(Command::Sector {
@@ -220,6 +225,18 @@ pub fn commands(
             }),
             Item::Job { patch, ref rays } => {
                 let span = live_span(&live, rays);
+                let mut r = span.start as usize;
+                while r < span.end as usize {
+                    let first = r;
+                    while r < span.end as usize && unsent[r] {
+                        unsent[r] = false;
+                        r += 1;
+                    }
+                    if r > first {
+                        cmds.push(Command::Retire { first: first as u16, count: (r - first) as u16 });
+                    }
+                    r += 1;
+                }
                 cmds.push(Command::Job {
                     id: patch as u16,
                     first: span.start as u16,
@@ -228,10 +245,7 @@ pub fn commands(
             }
             Item::Retire { ray } => {
                 live[ray as usize] = false;
-                match cmds.last_mut() {
-                    Some(Command::Retire { first, count }) if (*first + *count) as u32 == ray => *count += 1,
-                    _ => cmds.push(Command::Retire { first: ray as u16, count: 1 }),
-                }
+                unsent[ray as usize] = true;
             }
         }
     }

@@ -39,10 +39,14 @@ fn executing_the_stream_gives_the_bit_true_tracers_hits() {
                 assert!(counts.tests <= c.intersection_computations, "{what}: {counts:?} vs {c:?}");
                 assert!(counts.tests * 10 >= c.intersection_computations * 9, "{what}: {counts:?} vs {c:?}");
                 assert!(counts.tests > 0 && counts.ray_slots >= counts.tests, "{what}: {counts:?}");
-                let sectors = s.stream.items.iter().filter(|i| matches!(i, Item::Sector { .. })).count();
+                let count = |f: fn(&Item) -> bool| s.stream.items.iter().filter(|&i| f(i)).count() as u64;
+                let sectors = count(|i| matches!(i, Item::Sector { .. }));
+                let retired = count(|i| matches!(i, Item::Retire { .. }));
+                // The PE is told only the retirements a later job's range needs.
+                assert!(counts.retires <= retired, "{what}: {counts:?}, {retired} retired");
                 match m {
-                    Method::Conventional => assert_eq!((sectors, counts.retires), (1, 0), "{what}"),
-                    _ => assert!(sectors as u64 == s.trace.stats.sectors && counts.retires > 0, "{what}"),
+                    Method::Conventional => assert_eq!((sectors, retired), (1, 0), "{what}"),
+                    _ => assert!(sectors == s.trace.stats.sectors && retired > 0, "{what}"),
                 }
             }
         }
@@ -50,50 +54,58 @@ fn executing_the_stream_gives_the_bit_true_tracers_hits() {
 }
 
 #[test]
-fn the_host_trims_each_jobs_range_to_its_live_rays_and_loses_no_test() {
+fn the_host_trims_each_jobs_range_and_retires_late_and_loses_no_test() {
     let scene = scene::generate(1000, 16.0, 4, PAPER_WORLD).expect("scene");
     let prepared = GriddedScene::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(300, RaySet::Angle, 1024).expect("source");
     for m in [Method::Stochastic, Method::Deterministic] {
         let s = prepared.schedule(m, &bundle, &ShellParams::default()).expect("fits");
         let (setup, patches, cmds) = commands(&s.stream, &s.fixed).expect("a valid stream");
-        // The untrimmed commands: each job with its range as the scheduler announced it.
-        let mut jobs = s.stream.items.iter().filter_map(|i| match i {
-            Item::Job { rays, .. } => Some(rays.clone()),
-            _ => None,
-        });
+        let mut sent = cmds.iter().filter(|c| matches!(c, Command::Job { .. }));
+        // The eager, untrimmed commands: each item as it comes, each job with its range as the
+        // scheduler announced it, each retirement at once.
         let mut live = vec![true; s.stream.rays];
-        let mut untrimmed = Vec::new();
-        for c in &cmds {
-            match *c {
-                Command::Job { id, first, count } => {
-                    let r = jobs.next().expect("one command per job");
+        let mut eager = Vec::new();
+        for it in &s.stream.items {
+            match *it {
+                Item::Job { patch, ref rays } => {
+                    let c = *sent.next().expect("one command per job");
+                    let Command::Job { id, first, count } = c else { unreachable!() };
                     let (lo, hi) = (first as u32, first as u32 + count as u32);
-                    assert!(count == 0 || (r.start <= lo && hi <= r.end), "{m}: {c:?} outside {r:?}");
+                    assert_eq!(id as u32, patch, "{m}: {c:?}");
+                    assert!(
+                        count == 0 || (rays.start <= lo && hi <= rays.end),
+                        "{m}: {c:?} outside {rays:?}"
+                    );
                     if count > 0 {
                         assert!(live[lo as usize] && live[hi as usize - 1], "{m}: {c:?} ends on a dead ray");
                     }
-                    for ray in r.clone().filter(|&x| x < lo || x >= hi) {
-                        assert!(!live[ray as usize], "{m}: {c:?} drops live ray {ray} of {r:?}");
+                    for ray in rays.clone().filter(|&x| x < lo || x >= hi) {
+                        assert!(!live[ray as usize], "{m}: {c:?} drops live ray {ray} of {rays:?}");
                     }
-                    untrimmed.push(Command::Job { id, first: r.start as u16, count: r.len() as u16 });
+                    eager.push(Command::Job { id, first: rays.start as u16, count: rays.len() as u16 });
                 }
-                Command::Retire { first, count } => {
-                    live[first as usize..(first + count) as usize].fill(false);
-                    untrimmed.push(*c);
+                Item::Retire { ray } => {
+                    live[ray as usize] = false;
+                    eager.push(Command::Retire { first: ray as u16, count: 1 });
                 }
-                Command::Sector { .. } => untrimmed.push(*c),
+                Item::Sector { ref rays } => eager.push(Command::Sector {
+                    first: s.fixed.dirs[rays.start as usize],
+                    last: s.fixed.dirs[rays.end as usize - 1],
+                }),
             }
         }
-        let (hits, trimmed) = model(&setup, &patches, &cmds);
-        let (want, full) = model(&setup, &patches, &untrimmed);
+        assert!(sent.next().is_none(), "{m}: more job commands than jobs");
+        let (hits, late) = model(&setup, &patches, &cmds);
+        let (want, full) = model(&setup, &patches, &eager);
         assert_eq!(hits, want, "{m}: hits");
-        assert_eq!((trimmed.tests, trimmed.live_runs), (full.tests, full.live_runs), "{m}");
-        assert!(trimmed.ray_slots < full.ray_slots, "{m}: nothing trimmed: {trimmed:?} vs {full:?}");
-        assert!(trimmed.tests <= trimmed.ray_slots && trimmed.live_runs <= trimmed.tests, "{m}: {trimmed:?}");
+        assert_eq!((late.tests, late.live_runs, late.loads), (full.tests, full.live_runs, full.loads), "{m}");
+        assert!(late.ray_slots < full.ray_slots, "{m}: nothing trimmed: {late:?} vs {full:?}");
+        assert!(late.retires < full.retires, "{m}: no retirement saved: {late:?} vs {full:?}");
+        assert!(late.tests <= late.ray_slots && late.live_runs <= late.tests, "{m}: {late:?}");
         println!(
-            "{m}: ray slots {} untrimmed, {} trimmed, {} tests in {} live runs",
-            full.ray_slots, trimmed.ray_slots, trimmed.tests, trimmed.live_runs
+            "{m}: ray slots {} untrimmed, {} trimmed, {} tests in {} live runs; rays retired in the PE {} of {}",
+            full.ray_slots, late.ray_slots, late.tests, late.live_runs, late.retires, full.retires
         );
     }
 }

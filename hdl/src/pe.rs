@@ -117,6 +117,7 @@ pub struct ProcessingElement {
     pub cmd_valid: Signal<In, bool>,
     pub cmd_ready: Signal<Out, bool>,
     pub cmd_retire: Signal<In, bool>,
+    pub cmd_sector: Signal<In, bool>,
     pub cmd_id: Signal<In, Bits<16>>,
     pub cmd_first: Signal<In, Bits<10>>,
     pub cmd_count: Signal<In, Bits<11>>,
@@ -168,6 +169,45 @@ pub struct ProcessingElement {
     head_first: Signal<Local, Bits<10>>,
     head_count: Signal<Local, Bits<11>>,
     new_tag: Signal<Local, Bits<TAG_WIDTH>>,
+    // Sectors: two banks, a pending sector command, the jobs of each bank before the
+    // screener's sector read.
+    /// The bank of every job in the loader, in order: pushed as the loader takes the id,
+    /// popped as the screener takes the patch.
+    job_banks: Fifo<1, 4, 5>,
+    room: Signal<Local, bool>,
+    job: Signal<Local, bool>,
+    /// The bank the jobs accepted now belong to: the last sector command's.
+    bank: DFF<bool>,
+    pend: DFF<bool>,
+    pend_first_x: DFF<Bits<18>>,
+    pend_first_y: DFF<Bits<18>>,
+    pend_last_x: DFF<Bits<18>>,
+    pend_last_y: DFF<Bits<18>>,
+    first0_x: DFF<Bits<18>>,
+    first0_y: DFF<Bits<18>>,
+    last0_x: DFF<Bits<18>>,
+    last0_y: DFF<Bits<18>>,
+    first1_x: DFF<Bits<18>>,
+    first1_y: DFF<Bits<18>>,
+    last1_x: DFF<Bits<18>>,
+    last1_y: DFF<Bits<18>>,
+    /// Jobs of bank 0 (1) accepted and not yet past the screener's sector read.
+    jobs0: DFF<Bits<7>>,
+    jobs1: DFF<Bits<7>>,
+    /// The bank a pending sector overwrites (not `bank`) holds no job before its sector read.
+    other_free: Signal<Local, bool>,
+    in0: Signal<Local, bool>,
+    sector_in: Signal<Local, bool>,
+    new_first_x: Signal<Local, Bits<18>>,
+    new_first_y: Signal<Local, Bits<18>>,
+    new_last_x: Signal<Local, Bits<18>>,
+    new_last_y: Signal<Local, Bits<18>>,
+    in1: Signal<Local, bool>,
+    out0: Signal<Local, bool>,
+    out1: Signal<Local, bool>,
+    one7: Constant<Bits<7>>,
+    zero1: Constant<Bits<1>>,
+    one1: Constant<Bits<1>>,
     retire_flag: Constant<Bits<TAG_WIDTH>>,
     full: Constant<Bits<7>>,
     zero7: Constant<Bits<7>>,
@@ -192,6 +232,7 @@ impl Default for ProcessingElement {
             cmd_valid: Default::default(),
             cmd_ready: Default::default(),
             cmd_retire: Default::default(),
+            cmd_sector: Default::default(),
             cmd_id: Default::default(),
             cmd_first: Default::default(),
             cmd_count: Default::default(),
@@ -234,6 +275,38 @@ impl Default for ProcessingElement {
             head_first: Default::default(),
             head_count: Default::default(),
             new_tag: Default::default(),
+            job_banks: Default::default(),
+            room: Default::default(),
+            job: Default::default(),
+            bank: Default::default(),
+            pend: Default::default(),
+            pend_first_x: Default::default(),
+            pend_first_y: Default::default(),
+            pend_last_x: Default::default(),
+            pend_last_y: Default::default(),
+            first0_x: Default::default(),
+            first0_y: Default::default(),
+            last0_x: Default::default(),
+            last0_y: Default::default(),
+            first1_x: Default::default(),
+            first1_y: Default::default(),
+            last1_x: Default::default(),
+            last1_y: Default::default(),
+            jobs0: Default::default(),
+            jobs1: Default::default(),
+            other_free: Default::default(),
+            in0: Default::default(),
+            sector_in: Default::default(),
+            new_first_x: Default::default(),
+            new_first_y: Default::default(),
+            new_last_x: Default::default(),
+            new_last_y: Default::default(),
+            in1: Default::default(),
+            out0: Default::default(),
+            out1: Default::default(),
+            one7: Constant::new(1.into()),
+            zero1: Constant::new(0.into()),
+            one1: Constant::new(1.into()),
             retire_flag: Constant::new((1u64 << (TAG_WIDTH - 1)).into()),
             full: Constant::new((TAG_DEPTH as u64).into()),
             zero7: Constant::new(0.into()),
@@ -244,6 +317,27 @@ impl Default for ProcessingElement {
 impl Logic for ProcessingElement {
     #[hdl_gen]
     fn update(&mut self) {
+        dff_setup!(
+            self,
+            clock,
+            bank,
+            pend,
+            pend_first_x,
+            pend_first_y,
+            pend_last_x,
+            pend_last_y,
+            first0_x,
+            first0_y,
+            last0_x,
+            last0_y,
+            first1_x,
+            first1_y,
+            last1_x,
+            last1_y,
+            jobs0,
+            jobs1
+        );
+        self.job_banks.clock.next = self.clock.val();
         self.loader.clock.next = self.clock.val();
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
@@ -263,29 +357,104 @@ impl Logic for ProcessingElement {
         self.res_id.next = self.unit.res_id.val();
         self.res_key.next = self.unit.res_key.val();
 
-        // Source and sector: the screener's setup.
+        // The source: the screener's setup. The sector: the bank of the patch in the
+        // screener's stage 3.
         self.screener.origin_x.next = self.origin_x.val();
         self.screener.origin_y.next = self.origin_y.val();
         self.screener.normal_x.next = self.normal_x.val();
         self.screener.normal_y.next = self.normal_y.val();
-        self.screener.first_x.next = self.first_x.val();
-        self.screener.first_y.next = self.first_y.val();
-        self.screener.last_x.next = self.last_x.val();
-        self.screener.last_y.next = self.last_y.val();
+        self.screener.first_x.next = self.first0_x.q.val();
+        self.screener.first_y.next = self.first0_y.q.val();
+        self.screener.last_x.next = self.last0_x.q.val();
+        self.screener.last_y.next = self.last0_y.q.val();
+        if self.screener.sector_bank.val() {
+            self.screener.first_x.next = self.first1_x.q.val();
+            self.screener.first_y.next = self.first1_y.q.val();
+            self.screener.last_x.next = self.last1_x.q.val();
+            self.screener.last_y.next = self.last1_y.q.val();
+        }
 
-        // Commands: a tag for each, the id of a job to the loader.
-        self.cmd_ready.next = (self.tags.count.val() != self.full.val()) & self.loader.id_ready.val();
-        self.accept.next =
-            self.cmd_valid.val() & (self.tags.count.val() != self.full.val()) & self.loader.id_ready.val();
-        self.loader.id_valid.next = self.accept.val() & !self.cmd_retire.val();
+        // Commands: a tag for each job and retire, the id of a job to the loader with its
+        // bank beside it; a sector into the pending register. Ready depends on registers only.
+        self.room.next =
+            (self.tags.count.val() != self.full.val()) & self.loader.id_ready.val() & !self.pend.q.val();
+        self.cmd_ready.next = self.room.val();
+        self.accept.next = self.cmd_valid.val() & self.room.val();
+        self.job.next = self.accept.val() & !self.cmd_retire.val() & !self.cmd_sector.val();
+        self.loader.id_valid.next = self.job.val();
         self.loader.id.next = self.cmd_id.val();
+        self.job_banks.push.next = self.job.val();
+        self.job_banks.data_in.next = self.zero1.val();
+        if self.bank.q.val() {
+            self.job_banks.data_in.next = self.one1.val();
+        }
+        self.job_banks.pop.next = self.loader.out_valid.val() & self.screener.in_ready.val();
+        self.screener.in_bank.next = self.job_banks.data_out.val() == self.one1.val();
+
+        // A sector takes the bank the jobs do not use (the other one) as soon as that bank
+        // holds no job before the sector read: at once if it is free when the command is
+        // taken, else from `pend`, holding the stream meanwhile. The jobs after it belong to it.
+        self.other_free.next = self.jobs1.q.val() == self.zero7.val();
+        if self.bank.q.val() {
+            self.other_free.next = self.jobs0.q.val() == self.zero7.val();
+        }
+        self.sector_in.next = self.accept.val() & self.cmd_sector.val();
+        self.new_first_x.next = self.first_x.val();
+        self.new_first_y.next = self.first_y.val();
+        self.new_last_x.next = self.last_x.val();
+        self.new_last_y.next = self.last_y.val();
+        if self.pend.q.val() {
+            self.new_first_x.next = self.pend_first_x.q.val();
+            self.new_first_y.next = self.pend_first_y.q.val();
+            self.new_last_x.next = self.pend_last_x.q.val();
+            self.new_last_y.next = self.pend_last_y.q.val();
+        }
+        if self.sector_in.val() & !self.other_free.val() {
+            self.pend.d.next = true;
+            self.pend_first_x.d.next = self.first_x.val();
+            self.pend_first_y.d.next = self.first_y.val();
+            self.pend_last_x.d.next = self.last_x.val();
+            self.pend_last_y.d.next = self.last_y.val();
+        }
+        if (self.sector_in.val() | self.pend.q.val()) & self.other_free.val() {
+            self.pend.d.next = false;
+            self.bank.d.next = !self.bank.q.val();
+            if self.bank.q.val() {
+                self.first0_x.d.next = self.new_first_x.val();
+                self.first0_y.d.next = self.new_first_y.val();
+                self.last0_x.d.next = self.new_last_x.val();
+                self.last0_y.d.next = self.new_last_y.val();
+            } else {
+                self.first1_x.d.next = self.new_first_x.val();
+                self.first1_y.d.next = self.new_first_y.val();
+                self.last1_x.d.next = self.new_last_x.val();
+                self.last1_y.d.next = self.new_last_y.val();
+            }
+        }
+        // Each bank's jobs: counted in as accepted, out as they pass the sector read.
+        self.in0.next = self.job.val() & !self.bank.q.val();
+        self.in1.next = self.job.val() & self.bank.q.val();
+        self.out0.next = self.screener.sector_read.val() & !self.screener.sector_bank.val();
+        self.out1.next = self.screener.sector_read.val() & self.screener.sector_bank.val();
+        if self.in0.val() & !self.out0.val() {
+            self.jobs0.d.next = self.jobs0.q.val() + self.one7.val();
+        }
+        if self.out0.val() & !self.in0.val() & (self.jobs0.q.val() != self.zero7.val()) {
+            self.jobs0.d.next = self.jobs0.q.val() - self.one7.val();
+        }
+        if self.in1.val() & !self.out1.val() {
+            self.jobs1.d.next = self.jobs1.q.val() + self.one7.val();
+        }
+        if self.out1.val() & !self.in1.val() & (self.jobs1.q.val() != self.zero7.val()) {
+            self.jobs1.d.next = self.jobs1.q.val() - self.one7.val();
+        }
         self.new_tag.next = (bit_cast::<TAG_WIDTH, 10>(self.cmd_first.val()) << 11)
             | bit_cast::<TAG_WIDTH, 11>(self.cmd_count.val());
         if self.cmd_retire.val() {
             self.new_tag.next = self.new_tag.val() | self.retire_flag.val();
         }
         self.tags.data_in.next = self.new_tag.val();
-        self.tags.push.next = self.accept.val();
+        self.tags.push.next = self.accept.val() & !self.cmd_sector.val();
 
         // Host memory: the loader's port through the cache.
         self.cache.cfg_enable.next = self.cfg_cache_enable.val();
@@ -387,6 +556,7 @@ impl Logic for ProcessingElement {
 
         // Status and counters.
         self.busy.next = (self.tags.count.val() != self.zero7.val())
+            | self.pend.q.val()
             | self.iu_slice.occupied.val()
             | self.unit.busy.val()
             | self.cache.flushing.val();

@@ -76,6 +76,7 @@ module screener_formal (
     input wire [16:0] in_ay,
     input wire [16:0] in_bx,
     input wire [16:0] in_by,
+    input wire        in_bank,
     input wire        out_ready,
     // Chooses the patch the harness follows: the first one accepted while `pick` is high and
     // no patch is followed.
@@ -87,7 +88,7 @@ module screener_formal (
     localparam COUNT_LATENCY = VERDICT_LATENCY + 1;
     localparam DIV_LATENCY = 18;
 
-    wire        in_ready, out_valid, out_pass;
+    wire        in_ready, out_valid, out_pass, sector_read, sector_bank;
     wire [15:0] out_id;
     wire [17:0] out_ax, out_ay, out_bx, out_by, out_wx, out_wy;
     wire [5:0]  out_sh;
@@ -114,7 +115,8 @@ module screener_formal (
         .origin_x(origin_x), .origin_y(origin_y), .normal_x(normal_x), .normal_y(normal_y),
         .first_x(first_x), .first_y(first_y), .last_x(last_x), .last_y(last_y),
         .in_valid(in_valid), .in_ready(in_ready), .in_id(in_id),
-        .in_ax(in_ax), .in_ay(in_ay), .in_bx(in_bx), .in_by(in_by),
+        .in_ax(in_ax), .in_ay(in_ay), .in_bx(in_bx), .in_by(in_by), .in_bank(in_bank),
+        .sector_read(sector_read), .sector_bank(sector_bank),
         .out_valid(out_valid), .out_ready(out_ready), .out_id(out_id),
         .out_ax(out_ax), .out_ay(out_ay), .out_bx(out_bx), .out_by(out_by),
         .out_wx(out_wx), .out_wy(out_wy), .out_sh(out_sh), .out_pass(out_pass),
@@ -169,6 +171,7 @@ module screener_formal (
     reg [6:0]  f_ahead = 7'd0;    // patches to leave before it
     reg [5:0]  f_age = 6'd0;      // cycles since its acceptance (saturating)
     reg        f_vpass = 1'b0;    // its verdict was counted in `passed`
+    reg        f_bank = 1'b0;     // its `in_bank`
     wire       f_out = f_trk && pop && f_ahead == 7'd0;
 
     always @(posedge clock) begin
@@ -176,6 +179,7 @@ module screener_formal (
             if (take && pick) begin
                 f_trk <= 1'b1;
                 f_id <= in_id;
+                f_bank <= in_bank;
                 f_ahead <= f_held - pop;
                 f_age <= 6'd1;
             end
@@ -201,7 +205,11 @@ module screener_formal (
         if (!f_past) a_counters_init: assert(passed == 32'd0 && backward == 32'd0
                                              && back_facing == 32'd0 && outside == 32'd0
                                              && near == 32'd0);
+        // The sector is read in stage 3 (SECTOR_STAGE) of every patch, and only then.
+        a_sector_read: assert(sector_read == f_sr[3]);
         if (f_trk) begin
+            // The followed patch shows its own bank when it reads the sector.
+            if (f_age == 6'd3) a_sector_bank: assert(sector_read && sector_bank == f_bank);
             a_ahead: assert(f_ahead < f_held);
             // The followed patch is presented exactly from LATENCY cycles after its acceptance
             // on, once the patches before it have left.

@@ -1,7 +1,7 @@
 // processing_element: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
+module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_sector,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
     
     // Module arguments
     input wire  clock;
@@ -20,6 +20,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     input wire  cmd_valid;
     output reg  cmd_ready;
     input wire  cmd_retire;
+    input wire  cmd_sector;
     input wire  [15:0] cmd_id;
     input wire  [9:0] cmd_first;
     input wire  [10:0] cmd_count;
@@ -50,6 +51,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     output reg  [31:0] tests;
     
     // Constant declarations
+    localparam  one7 = 7'b1;
+    localparam  zero1 = 1'b0;
+    localparam  one1 = 1'b1;
     localparam  retire_flag = 22'h200000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
@@ -171,6 +175,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [16:0] screener$in_ay;
     reg  [16:0] screener$in_bx;
     reg  [16:0] screener$in_by;
+    reg  screener$in_bank;
+    wire  screener$sector_read;
+    wire  screener$sector_bank;
     wire  screener$out_valid;
     reg  screener$out_ready;
     wire  [15:0] screener$out_id;
@@ -219,6 +226,61 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  tags$valid;
     wire  [21:0] tags$data_out;
     wire  [6:0] tags$count;
+    reg  job_banks$clock;
+    reg  job_banks$push;
+    reg  job_banks$data_in;
+    reg  job_banks$pop;
+    wire  job_banks$valid;
+    wire  job_banks$data_out;
+    wire  [4:0] job_banks$count;
+    reg  bank$d;
+    wire  bank$q;
+    reg  bank$clock;
+    reg  pend$d;
+    wire  pend$q;
+    reg  pend$clock;
+    reg  [17:0] pend_first_x$d;
+    wire  [17:0] pend_first_x$q;
+    reg  pend_first_x$clock;
+    reg  [17:0] pend_first_y$d;
+    wire  [17:0] pend_first_y$q;
+    reg  pend_first_y$clock;
+    reg  [17:0] pend_last_x$d;
+    wire  [17:0] pend_last_x$q;
+    reg  pend_last_x$clock;
+    reg  [17:0] pend_last_y$d;
+    wire  [17:0] pend_last_y$q;
+    reg  pend_last_y$clock;
+    reg  [17:0] first0_x$d;
+    wire  [17:0] first0_x$q;
+    reg  first0_x$clock;
+    reg  [17:0] first0_y$d;
+    wire  [17:0] first0_y$q;
+    reg  first0_y$clock;
+    reg  [17:0] last0_x$d;
+    wire  [17:0] last0_x$q;
+    reg  last0_x$clock;
+    reg  [17:0] last0_y$d;
+    wire  [17:0] last0_y$q;
+    reg  last0_y$clock;
+    reg  [17:0] first1_x$d;
+    wire  [17:0] first1_x$q;
+    reg  first1_x$clock;
+    reg  [17:0] first1_y$d;
+    wire  [17:0] first1_y$q;
+    reg  first1_y$clock;
+    reg  [17:0] last1_x$d;
+    wire  [17:0] last1_x$q;
+    reg  last1_x$clock;
+    reg  [17:0] last1_y$d;
+    wire  [17:0] last1_y$q;
+    reg  last1_y$clock;
+    reg  [6:0] jobs0$d;
+    wire  [6:0] jobs0$q;
+    reg  jobs0$clock;
+    reg  [6:0] jobs1$d;
+    wire  [6:0] jobs1$q;
+    reg  jobs1$clock;
     
     // Local signals
     reg  accept;
@@ -228,6 +290,18 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [9:0] head_first;
     reg  [10:0] head_count;
     reg  [21:0] new_tag;
+    reg  room;
+    reg  job;
+    reg  other_free;
+    reg  in0;
+    reg  sector_in;
+    reg  [17:0] new_first_x;
+    reg  [17:0] new_first_y;
+    reg  [17:0] new_last_x;
+    reg  [17:0] new_last_y;
+    reg  in1;
+    reg  out0;
+    reg  out1;
     
     // Sub module instances
     processing_element$loader loader(
@@ -355,6 +429,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .in_ay(screener$in_ay),
         .in_bx(screener$in_bx),
         .in_by(screener$in_by),
+        .in_bank(screener$in_bank),
+        .sector_read(screener$sector_read),
+        .sector_bank(screener$sector_bank),
         .out_valid(screener$out_valid),
         .out_ready(screener$out_ready),
         .out_id(screener$out_id),
@@ -408,9 +485,131 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .data_out(tags$data_out),
         .count(tags$count)
     );
+    processing_element$job_banks job_banks(
+        .clock(job_banks$clock),
+        .push(job_banks$push),
+        .data_in(job_banks$data_in),
+        .pop(job_banks$pop),
+        .valid(job_banks$valid),
+        .data_out(job_banks$data_out),
+        .count(job_banks$count)
+    );
+    processing_element$bank bank(
+        .d(bank$d),
+        .q(bank$q),
+        .clock(bank$clock)
+    );
+    processing_element$pend pend(
+        .d(pend$d),
+        .q(pend$q),
+        .clock(pend$clock)
+    );
+    processing_element$pend_first_x pend_first_x(
+        .d(pend_first_x$d),
+        .q(pend_first_x$q),
+        .clock(pend_first_x$clock)
+    );
+    processing_element$pend_first_y pend_first_y(
+        .d(pend_first_y$d),
+        .q(pend_first_y$q),
+        .clock(pend_first_y$clock)
+    );
+    processing_element$pend_last_x pend_last_x(
+        .d(pend_last_x$d),
+        .q(pend_last_x$q),
+        .clock(pend_last_x$clock)
+    );
+    processing_element$pend_last_y pend_last_y(
+        .d(pend_last_y$d),
+        .q(pend_last_y$q),
+        .clock(pend_last_y$clock)
+    );
+    processing_element$first0_x first0_x(
+        .d(first0_x$d),
+        .q(first0_x$q),
+        .clock(first0_x$clock)
+    );
+    processing_element$first0_y first0_y(
+        .d(first0_y$d),
+        .q(first0_y$q),
+        .clock(first0_y$clock)
+    );
+    processing_element$last0_x last0_x(
+        .d(last0_x$d),
+        .q(last0_x$q),
+        .clock(last0_x$clock)
+    );
+    processing_element$last0_y last0_y(
+        .d(last0_y$d),
+        .q(last0_y$q),
+        .clock(last0_y$clock)
+    );
+    processing_element$first1_x first1_x(
+        .d(first1_x$d),
+        .q(first1_x$q),
+        .clock(first1_x$clock)
+    );
+    processing_element$first1_y first1_y(
+        .d(first1_y$d),
+        .q(first1_y$q),
+        .clock(first1_y$clock)
+    );
+    processing_element$last1_x last1_x(
+        .d(last1_x$d),
+        .q(last1_x$q),
+        .clock(last1_x$clock)
+    );
+    processing_element$last1_y last1_y(
+        .d(last1_y$d),
+        .q(last1_y$q),
+        .clock(last1_y$clock)
+    );
+    processing_element$jobs0 jobs0(
+        .d(jobs0$d),
+        .q(jobs0$q),
+        .clock(jobs0$clock)
+    );
+    processing_element$jobs1 jobs1(
+        .d(jobs1$d),
+        .q(jobs1$q),
+        .clock(jobs1$clock)
+    );
     
     // Update code
     always @(*) begin
+        bank$clock = clock;
+        pend$clock = clock;
+        pend_first_x$clock = clock;
+        pend_first_y$clock = clock;
+        pend_last_x$clock = clock;
+        pend_last_y$clock = clock;
+        first0_x$clock = clock;
+        first0_y$clock = clock;
+        last0_x$clock = clock;
+        last0_y$clock = clock;
+        first1_x$clock = clock;
+        first1_y$clock = clock;
+        last1_x$clock = clock;
+        last1_y$clock = clock;
+        jobs0$clock = clock;
+        jobs1$clock = clock;
+        bank$d = bank$q;
+        pend$d = pend$q;
+        pend_first_x$d = pend_first_x$q;
+        pend_first_y$d = pend_first_y$q;
+        pend_last_x$d = pend_last_x$q;
+        pend_last_y$d = pend_last_y$q;
+        first0_x$d = first0_x$q;
+        first0_y$d = first0_y$q;
+        last0_x$d = last0_x$q;
+        last0_y$d = last0_y$q;
+        first1_x$d = first1_x$q;
+        first1_y$d = first1_y$q;
+        last1_x$d = last1_x$q;
+        last1_y$d = last1_y$q;
+        jobs0$d = jobs0$q;
+        jobs1$d = jobs1$q;
+        job_banks$clock = clock;
         loader$clock = clock;
         cache$clock = clock;
         screener$clock = clock;
@@ -431,20 +630,89 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         screener$origin_y = origin_y;
         screener$normal_x = normal_x;
         screener$normal_y = normal_y;
-        screener$first_x = first_x;
-        screener$first_y = first_y;
-        screener$last_x = last_x;
-        screener$last_y = last_y;
-        cmd_ready = (tags$count != full) & loader$id_ready;
-        accept = cmd_valid & (tags$count != full) & loader$id_ready;
-        loader$id_valid = accept & ~cmd_retire;
+        screener$first_x = first0_x$q;
+        screener$first_y = first0_y$q;
+        screener$last_x = last0_x$q;
+        screener$last_y = last0_y$q;
+        if (screener$sector_bank) begin
+            screener$first_x = first1_x$q;
+            screener$first_y = first1_y$q;
+            screener$last_x = last1_x$q;
+            screener$last_y = last1_y$q;
+        end
+        room = (tags$count != full) & loader$id_ready & ~pend$q;
+        cmd_ready = room;
+        accept = cmd_valid & room;
+        job = accept & ~cmd_retire & ~cmd_sector;
+        loader$id_valid = job;
         loader$id = cmd_id;
+        job_banks$push = job;
+        job_banks$data_in = zero1;
+        if (bank$q) begin
+            job_banks$data_in = one1;
+        end
+        job_banks$pop = loader$out_valid & screener$in_ready;
+        screener$in_bank = job_banks$data_out == one1;
+        other_free = jobs1$q == zero7;
+        if (bank$q) begin
+            other_free = jobs0$q == zero7;
+        end
+        sector_in = accept & cmd_sector;
+        new_first_x = first_x;
+        new_first_y = first_y;
+        new_last_x = last_x;
+        new_last_y = last_y;
+        if (pend$q) begin
+            new_first_x = pend_first_x$q;
+            new_first_y = pend_first_y$q;
+            new_last_x = pend_last_x$q;
+            new_last_y = pend_last_y$q;
+        end
+        if (sector_in & ~other_free) begin
+            pend$d = 1'b1;
+            pend_first_x$d = first_x;
+            pend_first_y$d = first_y;
+            pend_last_x$d = last_x;
+            pend_last_y$d = last_y;
+        end
+        if ((sector_in | pend$q) & other_free) begin
+            pend$d = 1'b0;
+            bank$d = ~bank$q;
+            if (bank$q) begin
+                first0_x$d = new_first_x;
+                first0_y$d = new_first_y;
+                last0_x$d = new_last_x;
+                last0_y$d = new_last_y;
+            end
+            else begin
+                first1_x$d = new_first_x;
+                first1_y$d = new_first_y;
+                last1_x$d = new_last_x;
+                last1_y$d = new_last_y;
+            end
+        end
+        in0 = job & ~bank$q;
+        in1 = job & bank$q;
+        out0 = screener$sector_read & ~screener$sector_bank;
+        out1 = screener$sector_read & screener$sector_bank;
+        if (in0 & ~out0) begin
+            jobs0$d = jobs0$q + one7;
+        end
+        if (out0 & ~in0 & (jobs0$q != zero7)) begin
+            jobs0$d = jobs0$q - one7;
+        end
+        if (in1 & ~out1) begin
+            jobs1$d = jobs1$q + one7;
+        end
+        if (out1 & ~in1 & (jobs1$q != zero7)) begin
+            jobs1$d = jobs1$q - one7;
+        end
         new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
         if (cmd_retire) begin
             new_tag = new_tag | retire_flag;
         end
         tags$data_in = new_tag;
-        tags$push = accept;
+        tags$push = accept & ~cmd_sector;
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -533,7 +801,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_count = iu_slice$out_count;
         unit$patch_retire = iu_slice$out_retire;
         tags$pop = pop;
-        busy = (tags$count != zero7) | iu_slice$occupied | unit$busy | cache$flushing;
+        busy = (tags$count != zero7) | pend$q | iu_slice$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
         cache_misses = cache$misses;
@@ -546,6 +814,25 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     end
     
 endmodule // processing_element
+
+
+module processing_element$bank(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$bank
 
 
 module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,resp_ax,resp_ay,resp_bx,resp_by,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,hits,misses);
@@ -3652,6 +3939,82 @@ module processing_element$cache$wr_ptr(d,q,clock);
 endmodule // processing_element$cache$wr_ptr
 
 
+module processing_element$first0_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$first0_x
+
+
+module processing_element$first0_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$first0_y
+
+
+module processing_element$first1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$first1_x
+
+
+module processing_element$first1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$first1_y
+
+
 module processing_element$iu_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
     
     // Module arguments
@@ -4521,6 +4884,440 @@ module processing_element$iu_slice$s_wy(d,q,clock);
 endmodule // processing_element$iu_slice$s_wy
 
 
+module processing_element$job_banks(clock,push,data_in,pop,valid,data_out,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  data_in;
+    input wire  pop;
+    output reg  valid;
+    output reg  data_out;
+    output reg  [4:0] count;
+    
+    // Stub signals
+    reg  control$clock;
+    reg  control$push;
+    reg  control$pop;
+    wire  [3:0] control$tail_address;
+    wire  [3:0] control$head_address;
+    wire  [3:0] control$next_address;
+    wire  control$valid;
+    wire  [4:0] control$count;
+    reg  lane$clock;
+    reg  [3:0] lane$write_address;
+    reg  lane$write_data;
+    reg  lane$write_enable;
+    reg  [3:0] lane$head_address;
+    reg  [3:0] lane$next_address;
+    reg  lane$pop;
+    wire  lane$read_data;
+    
+    // Sub module instances
+    processing_element$job_banks$control control(
+        .clock(control$clock),
+        .push(control$push),
+        .pop(control$pop),
+        .tail_address(control$tail_address),
+        .head_address(control$head_address),
+        .next_address(control$next_address),
+        .valid(control$valid),
+        .count(control$count)
+    );
+    processing_element$job_banks$lane lane(
+        .clock(lane$clock),
+        .write_address(lane$write_address),
+        .write_data(lane$write_data),
+        .write_enable(lane$write_enable),
+        .head_address(lane$head_address),
+        .next_address(lane$next_address),
+        .pop(lane$pop),
+        .read_data(lane$read_data)
+    );
+    
+    // Update code
+    always @(*) begin
+        control$clock = clock;
+        lane$clock = clock;
+        control$push = push;
+        control$pop = pop;
+        lane$write_address = control$tail_address;
+        lane$write_data = data_in;
+        lane$write_enable = push;
+        lane$head_address = control$head_address;
+        lane$next_address = control$next_address;
+        lane$pop = pop;
+        valid = control$valid;
+        data_out = lane$read_data;
+        count = control$count;
+    end
+    
+endmodule // processing_element$job_banks
+
+
+module processing_element$job_banks$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [3:0] tail_address;
+    output reg  [3:0] head_address;
+    output reg  [3:0] next_address;
+    output reg  valid;
+    output reg  [4:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 4'h1;
+    localparam  one_c = 5'b1;
+    localparam  zero_c = 5'b0;
+    
+    // Stub signals
+    reg  [3:0] tail_ptr$d;
+    wire  [3:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [3:0] rd_inc_x$d;
+    wire  [3:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] words$d;
+    wire  [4:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_inc2;
+    reg  [4:0] left;
+    
+    // Sub module instances
+    processing_element$job_banks$control$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$job_banks$control$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$job_banks$control$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$job_banks$control$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$job_banks$control$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$job_banks$control
+
+
+module processing_element$job_banks$control$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$control$head_valid
+
+
+module processing_element$job_banks$control$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$control$rd_inc_x
+
+
+module processing_element$job_banks$control$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$control$rd_ptr
+
+
+module processing_element$job_banks$control$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$control$tail_ptr
+
+
+module processing_element$job_banks$control$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$control$words
+
+
+module processing_element$job_banks$lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  read_data;
+    
+    // Update code (custom)
+    reg [0:0] mem [0:15];
+    reg [0:0] head_r;
+    reg [0:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [0:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 1'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 1'd0;
+       head_r = 1'd0;
+       next_r = 1'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$job_banks$lane
+
+
+module processing_element$jobs0(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$jobs0
+
+
+module processing_element$jobs1(d,q,clock);
+    
+    // Module arguments
+    input wire  [6:0] d;
+    output reg  [6:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 7'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$jobs1
+
+
+module processing_element$last0_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$last0_x
+
+
+module processing_element$last0_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$last0_y
+
+
+module processing_element$last1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$last1_x
+
+
+module processing_element$last1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$last1_y
+
+
 module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
@@ -5331,6 +6128,101 @@ module processing_element$loader$reserved(d,q,clock);
     end
           
 endmodule // processing_element$loader$reserved
+
+
+module processing_element$pend(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$pend
+
+
+module processing_element$pend_first_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$pend_first_x
+
+
+module processing_element$pend_first_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$pend_first_y
+
+
+module processing_element$pend_last_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$pend_last_x
+
+
+module processing_element$pend_last_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$pend_last_y
 
 
 module processing_element$sc_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
@@ -6202,7 +7094,7 @@ module processing_element$sc_slice$s_wy(d,q,clock);
 endmodule // processing_element$sc_slice$s_wy
 
 
-module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
+module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
     
     // Module arguments
     input wire  clock;
@@ -6221,6 +7113,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     input wire  [16:0] in_ay;
     input wire  [16:0] in_bx;
     input wire  [16:0] in_by;
+    input wire  in_bank;
+    output reg  sector_read;
+    output reg  sector_bank;
     output reg  out_valid;
     input wire  out_ready;
     output reg  [15:0] out_id;
@@ -6363,6 +7258,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  v1$d;
     wire  v1$q;
     reg  v1$clock;
+    reg  bank1$d;
+    wire  bank1$q;
+    reg  bank1$clock;
     reg  [15:0] id1$d;
     wire  [15:0] id1$q;
     reg  id1$clock;
@@ -6421,6 +7319,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  v2$d;
     wire  v2$q;
     reg  v2$clock;
+    reg  bank2$d;
+    wire  bank2$q;
+    reg  bank2$clock;
     reg  [15:0] id2$d;
     wire  [15:0] id2$q;
     reg  id2$clock;
@@ -6457,6 +7358,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
+    reg  bank3$d;
+    wire  bank3$q;
+    reg  bank3$clock;
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
@@ -6997,6 +7901,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(v1$q),
         .clock(v1$clock)
     );
+    processing_element$screener$bank1 bank1(
+        .d(bank1$d),
+        .q(bank1$q),
+        .clock(bank1$clock)
+    );
     processing_element$screener$id1 id1(
         .d(id1$d),
         .q(id1$q),
@@ -7087,6 +7996,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(v2$q),
         .clock(v2$clock)
     );
+    processing_element$screener$bank2 bank2(
+        .d(bank2$d),
+        .q(bank2$q),
+        .clock(bank2$clock)
+    );
     processing_element$screener$id2 id2(
         .d(id2$d),
         .q(id2$q),
@@ -7146,6 +8060,11 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .d(v3$d),
         .q(v3$q),
         .clock(v3$clock)
+    );
+    processing_element$screener$bank3 bank3(
+        .d(bank3$d),
+        .q(bank3$q),
+        .clock(bank3$clock)
     );
     processing_element$screener$id3 id3(
         .d(id3$d),
@@ -7711,12 +8630,14 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         full$clock = clock;
         res_ptr$clock = clock;
         v1$clock = clock;
+        bank1$clock = clock;
         id1$clock = clock;
         ax1$clock = clock;
         ay1$clock = clock;
         bx1$clock = clock;
         by1$clock = clock;
         v2$clock = clock;
+        bank2$clock = clock;
         id2$clock = clock;
         ax2$clock = clock;
         ay2$clock = clock;
@@ -7729,6 +8650,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         normal_x2$clock = clock;
         normal_y2$clock = clock;
         v3$clock = clock;
+        bank3$clock = clock;
         id3$clock = clock;
         ax3$clock = clock;
         ay3$clock = clock;
@@ -7842,12 +8764,14 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         full$d = full$q;
         res_ptr$d = res_ptr$q;
         v1$d = v1$q;
+        bank1$d = bank1$q;
         id1$d = id1$q;
         ax1$d = ax1$q;
         ay1$d = ay1$q;
         bx1$d = bx1$q;
         by1$d = by1$q;
         v2$d = v2$q;
+        bank2$d = bank2$q;
         id2$d = id2$q;
         ax2$d = ax2$q;
         ay2$d = ay2$q;
@@ -7860,6 +8784,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         normal_x2$d = normal_x2$q;
         normal_y2$d = normal_y2$q;
         v3$d = v3$q;
+        bank3$d = bank3$q;
         id3$d = id3$q;
         ax3$d = ax3$q;
         ay3$d = ay3$q;
@@ -7999,6 +8924,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         ext_bx = ((in_bx) & 18'h3ffff);
         ext_by = ((in_by) & 18'h3ffff);
         v1$d = take;
+        bank1$d = in_bank;
         id1$d = in_id;
         ax1$d = ext_ax - ext_ox;
         ay1$d = ext_ay - ext_oy;
@@ -8021,6 +8947,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             absny = ny_neg;
         end
         v2$d = v1$q;
+        bank2$d = bank1$q;
         id2$d = id1$q;
         ax2$d = ax1$q;
         ay2$d = ay1$q;
@@ -8045,6 +8972,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             nmax = absnx2$q;
         end
         v3$d = v2$q;
+        bank3$d = bank2$q;
         id3$d = id2$q;
         ax3$d = ax2$q;
         ay3$d = ay2$q;
@@ -8055,6 +8983,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         negx3$d = negx2$q;
         negy3$d = negy2$q;
         nmax3$d = nmax;
+        sector_read = v3$q;
+        sector_bank = bank3$q;
         m_fby$a = first_x;
         m_fby$b = by3$q;
         m_fbx$a = first_y;
@@ -9098,6 +10028,63 @@ module processing_element$screener$backward9(d,q,clock);
     end
           
 endmodule // processing_element$screener$backward9
+
+
+module processing_element$screener$bank1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bank1
+
+
+module processing_element$screener$bank2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bank2
+
+
+module processing_element$screener$bank3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$bank3
 
 
 module processing_element$screener$bx1(d,q,clock);

@@ -1,7 +1,7 @@
 // screener: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
+module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
     
     // Module arguments
     input wire  clock;
@@ -20,6 +20,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     input wire  [16:0] in_ay;
     input wire  [16:0] in_bx;
     input wire  [16:0] in_by;
+    input wire  in_bank;
+    output reg  sector_read;
+    output reg  sector_bank;
     output reg  out_valid;
     input wire  out_ready;
     output reg  [15:0] out_id;
@@ -162,6 +165,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  v1$d;
     wire  v1$q;
     reg  v1$clock;
+    reg  bank1$d;
+    wire  bank1$q;
+    reg  bank1$clock;
     reg  [15:0] id1$d;
     wire  [15:0] id1$q;
     reg  id1$clock;
@@ -220,6 +226,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  v2$d;
     wire  v2$q;
     reg  v2$clock;
+    reg  bank2$d;
+    wire  bank2$q;
+    reg  bank2$clock;
     reg  [15:0] id2$d;
     wire  [15:0] id2$q;
     reg  id2$clock;
@@ -256,6 +265,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
+    reg  bank3$d;
+    wire  bank3$q;
+    reg  bank3$clock;
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
@@ -796,6 +808,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(v1$q),
         .clock(v1$clock)
     );
+    screener$bank1 bank1(
+        .d(bank1$d),
+        .q(bank1$q),
+        .clock(bank1$clock)
+    );
     screener$id1 id1(
         .d(id1$d),
         .q(id1$q),
@@ -886,6 +903,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(v2$q),
         .clock(v2$clock)
     );
+    screener$bank2 bank2(
+        .d(bank2$d),
+        .q(bank2$q),
+        .clock(bank2$clock)
+    );
     screener$id2 id2(
         .d(id2$d),
         .q(id2$q),
@@ -945,6 +967,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(v3$d),
         .q(v3$q),
         .clock(v3$clock)
+    );
+    screener$bank3 bank3(
+        .d(bank3$d),
+        .q(bank3$q),
+        .clock(bank3$clock)
     );
     screener$id3 id3(
         .d(id3$d),
@@ -1510,12 +1537,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         full$clock = clock;
         res_ptr$clock = clock;
         v1$clock = clock;
+        bank1$clock = clock;
         id1$clock = clock;
         ax1$clock = clock;
         ay1$clock = clock;
         bx1$clock = clock;
         by1$clock = clock;
         v2$clock = clock;
+        bank2$clock = clock;
         id2$clock = clock;
         ax2$clock = clock;
         ay2$clock = clock;
@@ -1528,6 +1557,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         normal_x2$clock = clock;
         normal_y2$clock = clock;
         v3$clock = clock;
+        bank3$clock = clock;
         id3$clock = clock;
         ax3$clock = clock;
         ay3$clock = clock;
@@ -1641,12 +1671,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         full$d = full$q;
         res_ptr$d = res_ptr$q;
         v1$d = v1$q;
+        bank1$d = bank1$q;
         id1$d = id1$q;
         ax1$d = ax1$q;
         ay1$d = ay1$q;
         bx1$d = bx1$q;
         by1$d = by1$q;
         v2$d = v2$q;
+        bank2$d = bank2$q;
         id2$d = id2$q;
         ax2$d = ax2$q;
         ay2$d = ay2$q;
@@ -1659,6 +1691,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         normal_x2$d = normal_x2$q;
         normal_y2$d = normal_y2$q;
         v3$d = v3$q;
+        bank3$d = bank3$q;
         id3$d = id3$q;
         ax3$d = ax3$q;
         ay3$d = ay3$q;
@@ -1798,6 +1831,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         ext_bx = ((in_bx) & 18'h3ffff);
         ext_by = ((in_by) & 18'h3ffff);
         v1$d = take;
+        bank1$d = in_bank;
         id1$d = in_id;
         ax1$d = ext_ax - ext_ox;
         ay1$d = ext_ay - ext_oy;
@@ -1820,6 +1854,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             absny = ny_neg;
         end
         v2$d = v1$q;
+        bank2$d = bank1$q;
         id2$d = id1$q;
         ax2$d = ax1$q;
         ay2$d = ay1$q;
@@ -1844,6 +1879,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             nmax = absnx2$q;
         end
         v3$d = v2$q;
+        bank3$d = bank2$q;
         id3$d = id2$q;
         ax3$d = ax2$q;
         ay3$d = ay2$q;
@@ -1854,6 +1890,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx3$d = negx2$q;
         negy3$d = negy2$q;
         nmax3$d = nmax;
+        sector_read = v3$q;
+        sector_bank = bank3$q;
         m_fby$a = first_x;
         m_fby$b = by3$q;
         m_fbx$a = first_y;
@@ -2897,6 +2935,63 @@ module screener$backward9(d,q,clock);
     end
           
 endmodule // screener$backward9
+
+
+module screener$bank1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bank1
+
+
+module screener$bank2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bank2
+
+
+module screener$bank3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$bank3
 
 
 module screener$bx1(d,q,clock);

@@ -1,13 +1,14 @@
 //! Driving the processing element ([`ProcessingElement`]) through a whole source, as the host
-//! does: ray directions, then the command stream with the sector changes between, the host
+//! does: ray directions, then the command stream with the sector changes in it, the host
 //! memory answering the PE's requests, then the readout. [`model`] is what it must return.
 //!
-//! The host changes the sector (the screener's setup) only while the PE is idle, so a sector
-//! change drains the PE: those cycles are counted apart ([`PeCounters::drain_cycles`]).
+//! A sector change is a command like the others: the PE keeps two sectors and never drains
+//! between them. It holds the stream only while the sector before last still has jobs before
+//! the screener; those cycles are counted apart ([`PeCounters::drain_cycles`]).
 
 use crate::intersection::{load_directions, read_hits};
 use crate::memory::HostMemory;
-use crate::pe_sim::{PeInputs, PeOutputs, PeRays, PeSim};
+use crate::pe_sim::{PeOutputs, PeRays, PeSim};
 use crate::{impl_clocked, Error, Result};
 use shelling_hdl::cache::LINES;
 use shelling_hdl::formats::Nearest;
@@ -24,7 +25,8 @@ pub const PE_RAY_MEMORY: usize = 1 << RAY_BITS;
 /// One command of the host, in stream order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Command {
-    /// Drain the PE, then set the sector's first and last ray directions (Q2.16).
+    /// The sector's first and last ray directions (Q2.16): the jobs after it are screened for
+    /// it.
     Sector { first: [i32; 2], last: [i32; 2] },
     /// Load patch `id`, screen it, and test it against the live rays `first .. first + count`.
     Job { id: u16, first: u16, count: u16 },
@@ -86,7 +88,7 @@ pub struct ModelCounts {
     /// would take if the host split every range at its retired rays (one command per run), so
     /// that `ray_slots − tests` slots would go (the price of that option, against the bubbles).
     pub live_runs: u64,
-    /// Rays retired.
+    /// Rays retired by retire commands (each costs the intersection unit a slot).
     pub retires: u64,
 }
 
@@ -155,7 +157,9 @@ pub struct PeCounters {
     /// Cycles the PE held work but the intersection unit tested nothing (waiting for patches,
     /// filling its pipeline, bubbles of retired rays), sector drains included.
     pub stall_cycles: u64,
-    /// Cycles spent draining the PE before a sector change.
+    /// Stall cycles in which the command stream waited on a sector change (`cmd_ready` low
+    /// after a sector command until the next command was taken: the PE's bank for the new
+    /// sector still held jobs of the sector before last).
     pub drain_cycles: u64,
     /// Patches loaded by the PE's loader.
     pub patch_loads: u64,
@@ -220,20 +224,22 @@ pub fn run<S: PeSim>(
     let mut k = PeCounters::default();
     let n = setup.dirs.len();
 
-    // Directions, source and the whole bundle as the first sector.
+    // Directions and source.
     let start = sim.cycles();
-    let (o, nm, d0, d1) = (setup.origin, setup.normal, setup.dirs[0], setup.dirs[n - 1]);
+    let (o, nm) = (setup.origin, setup.normal);
     sim.drive(|i| {
         [i.origin_x, i.origin_y] = o;
         [i.normal_x, i.normal_y] = nm;
-        set_sector(i, d0, d1);
         i.cfg_cache_enable = cache.lines.is_some();
         i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
     })?;
     load_directions(&mut PeRays(sim), &setup.dirs)?;
     k.setup_cycles = sim.cycles() - start;
 
-    // Commands. The memory's answer to a request is presented from the next cycle on.
+    // Commands, after the whole bundle as the first sector. The memory's answer to a request
+    // is presented from the next cycle on.
+    let whole = Command::Sector { first: setup.dirs[0], last: setup.dirs[n - 1] };
+    let stream: Vec<Command> = std::iter::once(whole).chain(commands.iter().copied()).collect();
     let start = sim.cycles();
     // The PE's counters wrap and run from power-up: a run counts what they add.
     let counters = |o: PeOutputs| {
@@ -245,40 +251,41 @@ pub fn run<S: PeSim>(
     let mut last_progress = 0u64;
     let mut idle_since = sim.cycles();
     let mut tests_before = base[1];
+    // The last command taken was a sector.
+    let mut after_sector = false;
     loop {
-        let cmd = commands.get(next).copied();
-        let draining = matches!(cmd, Some(Command::Sector { .. }));
-        let busy_before = sim.outputs().busy;
+        let cmd = stream.get(next).copied();
         sim.drive(|i| {
             i.mem_valid = response.is_some();
             if let Some(m) = response {
                 [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = m;
             }
-            i.cmd_valid = false;
+            i.cmd_valid = cmd.is_some();
+            i.cmd_retire = matches!(cmd, Some(Command::Retire { .. }));
+            i.cmd_sector = matches!(cmd, Some(Command::Sector { .. }));
             match cmd {
-                Some(Command::Sector { first, last }) if !busy_before => set_sector(i, first, last),
+                Some(Command::Sector { first, last }) => {
+                    [i.first_x, i.first_y] = first;
+                    [i.last_x, i.last_y] = last;
+                }
                 Some(Command::Job { id, first, count }) => {
-                    i.cmd_valid = true;
-                    i.cmd_retire = false;
                     i.cmd_id = id;
                     i.cmd_first = first;
                     i.cmd_count = count;
                 }
                 Some(Command::Retire { first, count }) => {
-                    i.cmd_valid = true;
-                    i.cmd_retire = true;
                     i.cmd_first = first;
                     i.cmd_count = count;
                 }
-                _ => {}
+                None => {}
             }
         })?;
         let out = sim.outputs();
         let busy = out.busy;
-        match cmd {
-            Some(Command::Sector { .. }) if !busy => next += 1,
-            Some(Command::Job { .. } | Command::Retire { .. }) if out.cmd_ready => next += 1,
-            _ => {}
+        let waiting = after_sector && !out.cmd_ready;
+        if cmd.is_some() && out.cmd_ready {
+            after_sector = matches!(cmd, Some(Command::Sector { .. }));
+            next += 1;
         }
         let request = out.mem_req.then_some(out.mem_addr);
         response = memory.cycle(request)?;
@@ -287,9 +294,9 @@ pub fn run<S: PeSim>(
         let tested = out.tests != tests_before;
         tests_before = out.tests;
         k.intersection_busy_cycles += tested as u64;
-        if !tested && (busy || next < commands.len()) {
+        if !tested && (busy || next < stream.len()) {
             k.stall_cycles += 1;
-            k.drain_cycles += draining as u64;
+            k.drain_cycles += waiting as u64;
         }
         if tested || next as u64 != last_progress {
             idle_since = sim.cycles();
@@ -297,18 +304,19 @@ pub fn run<S: PeSim>(
         if next as u64 != last_progress {
             last_progress = next as u64;
             if next.is_multiple_of(256) {
-                progress(next, commands.len());
+                progress(next - 1, commands.len());
             }
         }
-        if next == commands.len() && !out.busy && response.is_none() && memory.pending() == 0 {
+        if next == stream.len() && !out.busy && response.is_none() && memory.pending() == 0 {
             break;
         }
         if sim.cycles() - idle_since > 64 * (memory.tc() as u64 + 64) {
             return Err(Error::new(format!(
-                "no progress for {} cycles at command {next} of {} ({:?})",
+                "no progress for {} cycles at command {} of {} ({:?})",
                 sim.cycles() - idle_since,
+                next as i64 - 1,
                 commands.len(),
-                commands.get(next)
+                stream.get(next)
             )));
         }
     }
@@ -357,11 +365,6 @@ pub fn flush_cache(sim: &mut impl PeSim) -> Result<u64> {
         sim.cycle(|i| i.cfg_cache_flush = raise)?;
         flushed |= raise;
     }
-}
-
-fn set_sector(i: &mut PeInputs, first: [i32; 2], last: [i32; 2]) {
-    [i.first_x, i.first_y] = first;
-    [i.last_x, i.last_y] = last;
 }
 
 /// The PE's signals [`check_protocol`] reads from a VCD.

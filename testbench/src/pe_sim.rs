@@ -165,6 +165,7 @@ pe_ports! {
         last_y: i32 = 18,
         cmd_valid: bool = 1,
         cmd_retire: bool = 1,
+        cmd_sector: bool = 1,
         cmd_id: u16 = 16,
         cmd_first: u16 = 10,
         cmd_count: u16 = 11,

@@ -30,14 +30,20 @@
 //! | `normal_x/y`, `first_x/y`, `last_x/y` | in | 6 × 18 | bundle setup: source normal, sector's first and last ray (Q2.16) |
 //! | `in_valid`, `in_ready`, `in_id` | in, out, in | 1, 1, 16 | patch stream in (valid/ready) |
 //! | `in_ax`, `in_ay`, `in_bx`, `in_by` | in | 4 × 17 | endpoints, world coordinates (Q11.6 unsigned) |
+//! | `in_bank` | in | 1 | the patch's sector bank: a tag carried to stage 3, where the sector is read |
+//! | `sector_read`, `sector_bank` | out | 1, 1 | a patch is in stage 3 and reads `first`/`last` in this cycle; its `in_bank` (both registers) |
 //! | `out_valid`, `out_ready`, `out_id` | out, in, out | 1, 1, 16 | every patch out (valid/ready), in acceptance order |
 //! | `out_pass` | out | 1 | the patch passed; if not, only `out_id` is meaningful (the consumer drops it) |
 //! | `out_ax`, `out_ay`, `out_bx`, `out_by` | out | 4 × 18 | endpoints relative to the origin (Q12.6) |
 //! | `out_wx`, `out_wy`, `out_sh` | out | 18, 18, 6 | inverse-distance vector, its exponent in [−3, 31] |
 //! | `passed`, `backward`, `back_facing`, `outside`, `near` | out | 5 × 32 | verdict counters, wrapping at 2³² |
 //!
-//! The bundle setup is held constant while its patches stream (from the first patch's
-//! acceptance until the last one's verdict, [`VERDICT_LATENCY`] cycles later). A transfer happens
+//! The source's setup (`origin`, `normal`) is held constant while its patches stream (from the
+//! first patch's acceptance until the last one's verdict, [`VERDICT_LATENCY`] cycles later). The
+//! sector's (`first`, `last`) is read once per patch, in its stage 3 ([`SECTOR_STAGE`]): a user
+//! that changes sectors while patches stream tags each patch with `in_bank` and presents the
+//! sector of the bank `sector_bank` shows (the processing element keeps two banks and
+//! multiplexes them; with `in_bank` held low the screener is the one-sector block). A transfer happens
 //! in a cycle where `valid && ready` holds before the rising edge. `in_ready` depends only on
 //! registers (not on `in_valid` or `out_ready`); `out_valid` is a register and the `out_*` data
 //! depend only on registers (the output FIFO's two read registers, chosen by the registered
@@ -258,6 +264,10 @@ pub mod model {
 // The RTL block.
 // ---------------------------------------------------------------------------------------------
 
+/// Pipeline stage in which a patch reads the sector (`first`, `last`): a patch accepted in
+/// cycle `a` reads it in cycle `a + SECTOR_STAGE`, when `sector_read` is high with its bank on
+/// `sector_bank`.
+pub const SECTOR_STAGE: u64 = 3;
 /// Pipeline stage of the verdict: a patch accepted in cycle `a` is decided in cycle
 /// `a + VERDICT_LATENCY` (and takes its output FIFO slot then).
 pub const VERDICT_LATENCY: u64 = 8;
@@ -303,6 +313,11 @@ pub struct Screener {
     pub in_ay: Signal<In, Bits<17>>,
     pub in_bx: Signal<In, Bits<17>>,
     pub in_by: Signal<In, Bits<17>>,
+    /// The patch's sector bank, carried to stage 3 ([`sector_bank`](Self::sector_bank)).
+    pub in_bank: Signal<In, bool>,
+    // The sector read: the bank of the patch in stage 3.
+    pub sector_read: Signal<Out, bool>,
+    pub sector_bank: Signal<Out, bool>,
     // Every patch out, with its verdict.
     pub out_valid: Signal<Out, bool>,
     pub out_ready: Signal<In, bool>,
@@ -358,6 +373,7 @@ pub struct Screener {
     ext_by: Signal<Local, Bits<18>>,
     // Stage 1: the products of K start; n and |n|.
     v1: DFF<bool>,
+    bank1: DFF<bool>,
     id1: DFF<Bits<16>>,
     ax1: DFF<Bits<18>>,
     ay1: DFF<Bits<18>>,
@@ -381,6 +397,7 @@ pub struct Screener {
     absny: Signal<Local, Bits<18>>,
     // Stage 2: the products of dot(n_s, a), dot(n_s, b) start; nmax.
     v2: DFF<bool>,
+    bank2: DFF<bool>,
     id2: DFF<Bits<16>>,
     ax2: DFF<Bits<18>>,
     ay2: DFF<Bits<18>>,
@@ -395,6 +412,7 @@ pub struct Screener {
     nmax: Signal<Local, Bits<18>>,
     // Stage 3: the side products start; those of K arrive; the first two shifts of clz(nmax).
     v3: DFF<bool>,
+    bank3: DFF<bool>,
     id3: DFF<Bits<16>>,
     ax3: DFF<Bits<18>>,
     ay3: DFF<Bits<18>>,
@@ -642,6 +660,9 @@ impl Default for Screener {
             in_ay: Default::default(),
             in_bx: Default::default(),
             in_by: Default::default(),
+            in_bank: Default::default(),
+            sector_read: Default::default(),
+            sector_bank: Default::default(),
             out_valid: Default::default(),
             out_ready: Default::default(),
             out_id: Default::default(),
@@ -688,6 +709,7 @@ impl Default for Screener {
             ext_bx: Default::default(),
             ext_by: Default::default(),
             v1: Default::default(),
+            bank1: Default::default(),
             id1: Default::default(),
             ax1: Default::default(),
             ay1: Default::default(),
@@ -710,6 +732,7 @@ impl Default for Screener {
             absnx: Default::default(),
             absny: Default::default(),
             v2: Default::default(),
+            bank2: Default::default(),
             id2: Default::default(),
             ax2: Default::default(),
             ay2: Default::default(),
@@ -723,6 +746,7 @@ impl Default for Screener {
             normal_y2: Default::default(),
             nmax: Default::default(),
             v3: Default::default(),
+            bank3: Default::default(),
             id3: Default::default(),
             ax3: Default::default(),
             ay3: Default::default(),
@@ -965,12 +989,14 @@ impl Logic for Screener {
             full,
             res_ptr,
             v1,
+            bank1,
             id1,
             ax1,
             ay1,
             bx1,
             by1,
             v2,
+            bank2,
             id2,
             ax2,
             ay2,
@@ -983,6 +1009,7 @@ impl Logic for Screener {
             normal_x2,
             normal_y2,
             v3,
+            bank3,
             id3,
             ax3,
             ay3,
@@ -1127,6 +1154,7 @@ impl Logic for Screener {
         self.ext_bx.next = bit_cast::<18, 17>(self.in_bx.val());
         self.ext_by.next = bit_cast::<18, 17>(self.in_by.val());
         self.v1.d.next = self.take.val();
+        self.bank1.d.next = self.in_bank.val();
         self.id1.d.next = self.in_id.val();
         self.ax1.d.next = self.ext_ax.val() - self.ext_ox.val();
         self.ay1.d.next = self.ext_ay.val() - self.ext_oy.val();
@@ -1136,7 +1164,7 @@ impl Logic for Screener {
         // Stage 1: the products start in three groups, one stage apart, so that every
         // multiplier's operand register is a stage register of its own (no register drives two
         // multipliers): those of K now, those of the dot products with n_s in stage 2, the side
-        // products in stage 3 (the bundle setup is held meanwhile). n = (b.y − a.y, a.x − b.x)
+        // products in stage 3 (the source's setup is held meanwhile). n = (b.y − a.y, a.x − b.x)
         // = (B.y − A.y, A.x − B.x), so |n_c| < 2^17, and its magnitudes (each negation as the
         // reversed difference, in parallel: the same 18 bits as 0 − n_c).
         self.m_aby.a.next = self.ax1.q.val();
@@ -1156,6 +1184,7 @@ impl Logic for Screener {
             self.absny.next = self.ny_neg.val();
         }
         self.v2.d.next = self.v1.q.val();
+        self.bank2.d.next = self.bank1.q.val();
         self.id2.d.next = self.id1.q.val();
         self.ax2.d.next = self.ax1.q.val();
         self.ay2.d.next = self.ay1.q.val();
@@ -1183,6 +1212,7 @@ impl Logic for Screener {
             self.nmax.next = self.absnx2.q.val();
         }
         self.v3.d.next = self.v2.q.val();
+        self.bank3.d.next = self.bank2.q.val();
         self.id3.d.next = self.id2.q.val();
         self.ax3.d.next = self.ax2.q.val();
         self.ay3.d.next = self.ay2.q.val();
@@ -1194,10 +1224,14 @@ impl Logic for Screener {
         self.negy3.d.next = self.negy2.q.val();
         self.nmax3.d.next = self.nmax.val();
 
-        // Stage 3: the side products start; the products of K arrive and are registered once
-        // more, as they are (the multiplier's product register drives nothing else). The
+        // Stage 3: the side products start, from the sector of the patch's bank (shown on
+        // `sector_bank`: the setup's `first`/`last` are read now); the products of K arrive
+        // and are registered once more, as they are (the multiplier's product register drives
+        // nothing else). The
         // leading zeros of nmax (as 32 bits) by five conditional shifts, which also normalise it
         // (its leading one at bit 31): the first two here, the last three in stage 4.
+        self.sector_read.next = self.v3.q.val();
+        self.sector_bank.next = self.bank3.q.val();
         self.m_fby.a.next = self.first_x.val();
         self.m_fby.b.next = self.by3.q.val();
         self.m_fbx.a.next = self.first_y.val();
