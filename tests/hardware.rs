@@ -185,11 +185,11 @@ fn multipliers_use_their_own_registers() {
 }
 
 /// The loader has no multiplier; the screener's ten products take one DSP each and its pipelined
-/// divider none (LUTs and carry chains). Both FIFOs map to LUT RAM, as does the FIFO block alone
-/// (`fwft_fifo`, `prim::Fifo`).
+/// divider none (LUTs and carry chains). Both FIFOs map to LUT RAM, as do the FIFO block alone
+/// (`fwft_fifo`, `prim::Fifo`) and the PE's job queue (`job_queue`).
 #[test]
-fn patch_loader_screener_and_fifo_synthesize_without_latches() {
-    for (block, dsps) in [("patch_loader", 0), ("screener", 10), ("fwft_fifo", 0)] {
+fn patch_loader_screener_and_fifos_synthesize_without_latches() {
+    for (block, dsps) in [("patch_loader", 0), ("screener", 10), ("fwft_fifo", 0), ("job_queue", 0)] {
         let stat = synth_ecp5(block);
         for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
             assert!(!stat.contains(latch), "{block}: a latch was inferred:\n{stat}");

@@ -10,6 +10,7 @@ pub mod intersection;
 pub mod loader;
 pub mod pe;
 pub mod prim;
+pub mod queue;
 pub mod screener;
 pub mod slice;
 

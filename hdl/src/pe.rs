@@ -3,18 +3,22 @@
 //!
 //! # Purpose
 //!
-//! One PE traces one source's bundle (up to 1024 rays). The host writes the ray directions, sets
-//! the sector (the screener's bundle setup) and streams commands, each one item of the work
-//! stream (`src/workstream.rs`):
+//! One PE traces one source's bundle (up to 1024 rays). The host writes the ray directions and
+//! the source (origin, normal), then streams commands, each one item of the work stream
+//! (`src/workstream.rs`):
 //!
-//! * a **job**: load patch `cmd_id` from host memory, screen it for the current sector and, if it
+//! * a **sector** (`cmd_sector`): the sector's first and last ray directions (`first_*`,
+//!   `last_*`, taken with the command); the jobs after it are screened for it;
+//! * a **job**: load patch `cmd_id` from host memory, screen it for its sector and, if it
 //!   passes, test it against the live rays `cmd_first .. cmd_first + cmd_count`;
 //! * a **retire**: rays `cmd_first .. cmd_first + cmd_count` leave the bundle (tracking).
 //!
 //! Commands take effect in stream order: a retire reaches the intersection unit after every job
 //! sent before it, and before any job sent after it, although jobs spend the loader's and the
-//! screener's latency on the way and retires do not. The nearest hits are read from the ray
-//! memory when the PE is idle.
+//! screener's latency on the way and retires do not; a job is screened for the last sector sent
+//! before it, although the next sector may arrive while it is still in the loader (the
+//! paper's Figure 12, its steps overlapped: the PE never drains between sectors). The nearest
+//! hits are read from the ray memory when the PE is idle.
 //!
 //! # Ports ([`ProcessingElement`])
 //!
@@ -22,15 +26,17 @@
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock |
 //! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 10, 18, 18 | write ray `dir_addr`'s direction (Q2.16); the ray becomes live |
-//! | `origin_x/y`, `normal_x/y`, `first_x/y`, `last_x/y` | in | 17, 18 | the screener's bundle setup (source and sector), changed only while not `busy` |
+//! | `origin_x/y`, `normal_x/y` | in | 17, 18 | the source (the screener's setup), changed only while not `busy` |
 //! | `cmd_valid`, `cmd_ready` | in, out | 1, 1 | command stream (valid/ready) |
-//! | `cmd_retire`, `cmd_id`, `cmd_first`, `cmd_count` | in | 1, 16, 10, 11 | retire or job; patch id; ray range |
+//! | `cmd_sector`, `cmd_retire` | in | 1, 1 | a sector, a retire, or (both low) a job |
+//! | `first_x/y`, `last_x/y` | in | 18 | a sector command's first and last ray (Q2.16) |
+//! | `cmd_id`, `cmd_first`, `cmd_count` | in | 16, 10, 11 | a job's patch id; a job's or a retire's ray range |
 //! | `cfg_cache_enable`, `cfg_cache_mask` | in | 1, 12 | the patch cache: on, and its lines − 1 (a power of two up to 4096), held during a run |
 //! | `cfg_cache_flush` | in | 1 | invalidate the cache (a new scene in the host memory): raise while not `busy`; `busy` stays high for the 4096 cycles it takes ([`PatchCache`]) |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host memory request (one pulse per patch) |
 //! | `mem_valid`, `mem_ax` … `mem_by` | in | 1, 4 × 17 | host memory response, in request order (world coordinates, Q11.6) |
 //! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (two cycles after, [`crate::intersection::READOUT_LATENCY`]; only while not `busy`) |
-//! | `busy` | out | 1 | a command is in flight, or the cache is flushing |
+//! | `busy` | out | 1 | a command is in flight (a sector waiting included), or the cache is flushing |
 //! | `loads`, `cache_hits`, `cache_misses`, `passed`, `backward`, `back_facing`, `outside`, `near`, `tests` | out | 32 each | counters (wrapping): patches loaded, the cache's hits and misses, the screener's verdicts, ray-patch tests of live rays |
 //!
 //! # Structure
@@ -46,23 +52,42 @@
 //! retire goes straight to the [`IntersectionUnit`] as a retire job; a job waits for its patch's
 //! verdict, then goes to the unit with the tag's ray range if it passed, or is dropped.
 //!
-//! A [`PatchSlice`] (two entries, `in_ready` a register) sits on each side of the merger: every
-//! input of the merger is a register, and the unit's `patch_ready` reaches only the second
-//! slice, never the screener's output FIFO or the tag FIFO. The tag FIFO (a [`Fifo`]) reads its
+//! A [`PatchSlice`] (two entries, `in_ready` a register) sits between the screener and the
+//! merger and a [`JobQueue`] between the merger and the unit: every input of the merger is a
+//! register, and the unit's `patch_ready` reaches only the queue, never the screener's output
+//! FIFO or the tag FIFO. The tag FIFO (a [`Fifo`]) reads its
 //! head and the entry after it every cycle, so that no RAM address depends on the merger's pop
 //! either.
 //!
-//! `cmd_ready` is high while the tag FIFO has room and the loader can take an id (for a retire
-//! too: the condition must not depend on `cmd_retire`); it depends on registers only.
+//! **The job queue.** The second slice is a 16-entry [`JobQueue`] (LUT RAM): the merger pushes
+//! passed jobs and retires into it and drops screened-out patches, and so runs up to sixteen
+//! jobs ahead of the unit: the patches screened out behind a long job cost the unit nothing.
+//!
+//! **Sectors, overlapped.** The PE holds two sectors (two banks of first and last ray, in
+//! registers) and the bank the jobs being accepted belong to. Each job's bank goes into a
+//! one-bit [`Fifo`] beside the loader as its id goes in (`job_banks`), leaves it as the screener
+//! takes the patch (`in_bank`), and rides the screener's pipeline to its stage 3, where the
+//! screener reads the sector (`sector_bank`): the PE presents that bank's first and last ray.
+//! Each bank counts its jobs accepted and not yet past that read (`jobs0`, `jobs1`). A sector
+//! command takes the other bank at once if that bank's count is zero, or waits in a register
+//! (`pend`) until it is, with `cmd_ready` low meanwhile; then the accepted jobs' bank flips. So
+//! a sector change stalls the stream only while the sector before last still has jobs before
+//! the screener's stage 3: with sectors of a few jobs and a long memory latency. Jobs before
+//! the first sector command are screened for a zero sector (the host always sends one first).
+//!
+//! `cmd_ready` is high while the tag FIFO has room, the loader can take an id and no sector
+//! waits (for every kind of command: the condition must not depend on `cmd_retire` or
+//! `cmd_sector`); it depends on registers only.
 //!
 //! # Latency and throughput
 //!
 //! A job reaches the intersection unit the loader's latency (`T_c + 3` without a cache) plus the
-//! screener's plus the two slices' (one clock each) after it is accepted; the unit then issues
-//! one ray per clock. Jobs stream back to back at one per clock through the loader, the screener
-//! and the slices, so in steady state the PE is bound
-//! by the slower of the host memory (one patch per `T_c`) and the intersection unit (one ray per
-//! clock), the balance Section 4 of the paper is about.
+//! screener's plus the slice's (one clock) and the queue's (two) after it is accepted; the unit then issues
+//! one ray per clock. Commands are taken one per clock and jobs stream back to back at one per
+//! clock through the loader, the screener, the slice and the queue, so in steady state the PE
+//! is bound by the slowest of the command stream (one command per clock: sectors, jobs and
+//! retires), the host memory (one patch per `T_c`) and the intersection unit (one ray per
+//! clock, tested or retired), the balance Section 4 of the paper is about.
 //!
 //! # Resources
 //!
@@ -83,6 +108,7 @@ use crate::cache::PatchCache;
 use crate::intersection::IntersectionUnit;
 use crate::loader::PatchLoader;
 use crate::prim::Fifo;
+use crate::queue::JobQueue;
 use crate::screener::Screener;
 use crate::slice::PatchSlice;
 use rust_hdl::prelude::*;
@@ -156,7 +182,7 @@ pub struct ProcessingElement {
     /// The screener's patches into the merger.
     sc_slice: PatchSlice,
     /// The merger's jobs into the intersection unit.
-    iu_slice: PatchSlice,
+    queue: JobQueue,
     screener: Screener,
     unit: IntersectionUnit,
     // The tag FIFO.
@@ -264,7 +290,7 @@ impl Default for ProcessingElement {
             loader: Default::default(),
             cache: Default::default(),
             sc_slice: Default::default(),
-            iu_slice: Default::default(),
+            queue: Default::default(),
             screener: Default::default(),
             unit: Default::default(),
             tags: Default::default(),
@@ -343,7 +369,7 @@ impl Logic for ProcessingElement {
         self.screener.clock.next = self.clock.val();
         self.unit.clock.next = self.clock.val();
         self.sc_slice.clock.next = self.clock.val();
-        self.iu_slice.clock.next = self.clock.val();
+        self.queue.clock.next = self.clock.val();
         self.tags.clock.next = self.clock.val();
 
         // Rays and readout: straight to the intersection unit.
@@ -506,49 +532,48 @@ impl Logic for ProcessingElement {
         self.head_retire.next = self.head_tag.val().get_bit(21);
         self.head_first.next = self.head_tag.val().get_bits::<10>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
-        self.iu_slice.in_id.next = self.sc_slice.out_id.val();
-        self.iu_slice.in_ax.next = self.sc_slice.out_ax.val();
-        self.iu_slice.in_ay.next = self.sc_slice.out_ay.val();
-        self.iu_slice.in_bx.next = self.sc_slice.out_bx.val();
-        self.iu_slice.in_by.next = self.sc_slice.out_by.val();
-        self.iu_slice.in_wx.next = self.sc_slice.out_wx.val();
-        self.iu_slice.in_wy.next = self.sc_slice.out_wy.val();
-        self.iu_slice.in_sh.next = self.sc_slice.out_sh.val();
-        self.iu_slice.in_pass.next = false;
-        self.iu_slice.in_first.next = self.head_first.val();
-        self.iu_slice.in_count.next = self.head_count.val();
-        self.iu_slice.in_retire.next = self.head_retire.val();
-        self.iu_slice.in_valid.next = false;
+        self.queue.in_id.next = self.sc_slice.out_id.val();
+        self.queue.in_ax.next = self.sc_slice.out_ax.val();
+        self.queue.in_ay.next = self.sc_slice.out_ay.val();
+        self.queue.in_bx.next = self.sc_slice.out_bx.val();
+        self.queue.in_by.next = self.sc_slice.out_by.val();
+        self.queue.in_wx.next = self.sc_slice.out_wx.val();
+        self.queue.in_wy.next = self.sc_slice.out_wy.val();
+        self.queue.in_sh.next = self.sc_slice.out_sh.val();
+        self.queue.in_first.next = self.head_first.val();
+        self.queue.in_count.next = self.head_count.val();
+        self.queue.in_retire.next = self.head_retire.val();
+        self.queue.in_valid.next = false;
         self.sc_slice.out_ready.next = false;
         self.pop.next = false;
         if self.tags.valid.val() {
             if self.head_retire.val() {
-                self.iu_slice.in_valid.next = true;
-                self.pop.next = self.iu_slice.in_ready.val();
+                self.queue.in_valid.next = true;
+                self.pop.next = self.queue.in_ready.val();
             } else if self.sc_slice.out_valid.val() {
                 if self.sc_slice.out_pass.val() {
-                    self.iu_slice.in_valid.next = true;
-                    self.sc_slice.out_ready.next = self.iu_slice.in_ready.val();
-                    self.pop.next = self.iu_slice.in_ready.val();
+                    self.queue.in_valid.next = true;
+                    self.sc_slice.out_ready.next = self.queue.in_ready.val();
+                    self.pop.next = self.queue.in_ready.val();
                 } else {
                     self.sc_slice.out_ready.next = true;
                     self.pop.next = true;
                 }
             }
         }
-        self.unit.patch_valid.next = self.iu_slice.out_valid.val();
-        self.iu_slice.out_ready.next = self.unit.patch_ready.val();
-        self.unit.patch_id.next = self.iu_slice.out_id.val();
-        self.unit.patch_ax.next = self.iu_slice.out_ax.val();
-        self.unit.patch_ay.next = self.iu_slice.out_ay.val();
-        self.unit.patch_bx.next = self.iu_slice.out_bx.val();
-        self.unit.patch_by.next = self.iu_slice.out_by.val();
-        self.unit.patch_wx.next = self.iu_slice.out_wx.val();
-        self.unit.patch_wy.next = self.iu_slice.out_wy.val();
-        self.unit.patch_sh.next = self.iu_slice.out_sh.val();
-        self.unit.patch_first.next = self.iu_slice.out_first.val();
-        self.unit.patch_count.next = self.iu_slice.out_count.val();
-        self.unit.patch_retire.next = self.iu_slice.out_retire.val();
+        self.unit.patch_valid.next = self.queue.out_valid.val();
+        self.queue.out_ready.next = self.unit.patch_ready.val();
+        self.unit.patch_id.next = self.queue.out_id.val();
+        self.unit.patch_ax.next = self.queue.out_ax.val();
+        self.unit.patch_ay.next = self.queue.out_ay.val();
+        self.unit.patch_bx.next = self.queue.out_bx.val();
+        self.unit.patch_by.next = self.queue.out_by.val();
+        self.unit.patch_wx.next = self.queue.out_wx.val();
+        self.unit.patch_wy.next = self.queue.out_wy.val();
+        self.unit.patch_sh.next = self.queue.out_sh.val();
+        self.unit.patch_first.next = self.queue.out_first.val();
+        self.unit.patch_count.next = self.queue.out_count.val();
+        self.unit.patch_retire.next = self.queue.out_retire.val();
 
         // The tag FIFO's read side: the merger's pop (the head, read every cycle with the entry
         // after it, depends on no pop: see [`Fifo`]).
@@ -557,7 +582,7 @@ impl Logic for ProcessingElement {
         // Status and counters.
         self.busy.next = (self.tags.count.val() != self.zero7.val())
             | self.pend.q.val()
-            | self.iu_slice.occupied.val()
+            | self.queue.occupied.val()
             | self.unit.busy.val()
             | self.cache.flushing.val();
         self.loads.next = self.loader.loads.val();

@@ -4,3 +4,4 @@ screener.v
 intersection_unit.v
 processing_element.v
 fwft_fifo.v
+job_queue.v

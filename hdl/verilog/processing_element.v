@@ -129,36 +129,34 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  [10:0] sc_slice$out_count;
     wire  sc_slice$out_retire;
     wire  sc_slice$occupied;
-    reg  iu_slice$clock;
-    reg  iu_slice$in_valid;
-    wire  iu_slice$in_ready;
-    reg  [15:0] iu_slice$in_id;
-    reg  [17:0] iu_slice$in_ax;
-    reg  [17:0] iu_slice$in_ay;
-    reg  [17:0] iu_slice$in_bx;
-    reg  [17:0] iu_slice$in_by;
-    reg  [17:0] iu_slice$in_wx;
-    reg  [17:0] iu_slice$in_wy;
-    reg  [5:0] iu_slice$in_sh;
-    reg  iu_slice$in_pass;
-    reg  [9:0] iu_slice$in_first;
-    reg  [10:0] iu_slice$in_count;
-    reg  iu_slice$in_retire;
-    wire  iu_slice$out_valid;
-    reg  iu_slice$out_ready;
-    wire  [15:0] iu_slice$out_id;
-    wire  [17:0] iu_slice$out_ax;
-    wire  [17:0] iu_slice$out_ay;
-    wire  [17:0] iu_slice$out_bx;
-    wire  [17:0] iu_slice$out_by;
-    wire  [17:0] iu_slice$out_wx;
-    wire  [17:0] iu_slice$out_wy;
-    wire  [5:0] iu_slice$out_sh;
-    wire  iu_slice$out_pass;
-    wire  [9:0] iu_slice$out_first;
-    wire  [10:0] iu_slice$out_count;
-    wire  iu_slice$out_retire;
-    wire  iu_slice$occupied;
+    reg  queue$clock;
+    reg  queue$in_valid;
+    wire  queue$in_ready;
+    reg  [15:0] queue$in_id;
+    reg  [17:0] queue$in_ax;
+    reg  [17:0] queue$in_ay;
+    reg  [17:0] queue$in_bx;
+    reg  [17:0] queue$in_by;
+    reg  [17:0] queue$in_wx;
+    reg  [17:0] queue$in_wy;
+    reg  [5:0] queue$in_sh;
+    reg  [9:0] queue$in_first;
+    reg  [10:0] queue$in_count;
+    reg  queue$in_retire;
+    wire  queue$out_valid;
+    reg  queue$out_ready;
+    wire  [15:0] queue$out_id;
+    wire  [17:0] queue$out_ax;
+    wire  [17:0] queue$out_ay;
+    wire  [17:0] queue$out_bx;
+    wire  [17:0] queue$out_by;
+    wire  [17:0] queue$out_wx;
+    wire  [17:0] queue$out_wy;
+    wire  [5:0] queue$out_sh;
+    wire  [9:0] queue$out_first;
+    wire  [10:0] queue$out_count;
+    wire  queue$out_retire;
+    wire  queue$occupied;
     reg  screener$clock;
     reg  [16:0] screener$origin_x;
     reg  [16:0] screener$origin_y;
@@ -380,37 +378,35 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .out_retire(sc_slice$out_retire),
         .occupied(sc_slice$occupied)
     );
-    processing_element$iu_slice iu_slice(
-        .clock(iu_slice$clock),
-        .in_valid(iu_slice$in_valid),
-        .in_ready(iu_slice$in_ready),
-        .in_id(iu_slice$in_id),
-        .in_ax(iu_slice$in_ax),
-        .in_ay(iu_slice$in_ay),
-        .in_bx(iu_slice$in_bx),
-        .in_by(iu_slice$in_by),
-        .in_wx(iu_slice$in_wx),
-        .in_wy(iu_slice$in_wy),
-        .in_sh(iu_slice$in_sh),
-        .in_pass(iu_slice$in_pass),
-        .in_first(iu_slice$in_first),
-        .in_count(iu_slice$in_count),
-        .in_retire(iu_slice$in_retire),
-        .out_valid(iu_slice$out_valid),
-        .out_ready(iu_slice$out_ready),
-        .out_id(iu_slice$out_id),
-        .out_ax(iu_slice$out_ax),
-        .out_ay(iu_slice$out_ay),
-        .out_bx(iu_slice$out_bx),
-        .out_by(iu_slice$out_by),
-        .out_wx(iu_slice$out_wx),
-        .out_wy(iu_slice$out_wy),
-        .out_sh(iu_slice$out_sh),
-        .out_pass(iu_slice$out_pass),
-        .out_first(iu_slice$out_first),
-        .out_count(iu_slice$out_count),
-        .out_retire(iu_slice$out_retire),
-        .occupied(iu_slice$occupied)
+    processing_element$queue queue(
+        .clock(queue$clock),
+        .in_valid(queue$in_valid),
+        .in_ready(queue$in_ready),
+        .in_id(queue$in_id),
+        .in_ax(queue$in_ax),
+        .in_ay(queue$in_ay),
+        .in_bx(queue$in_bx),
+        .in_by(queue$in_by),
+        .in_wx(queue$in_wx),
+        .in_wy(queue$in_wy),
+        .in_sh(queue$in_sh),
+        .in_first(queue$in_first),
+        .in_count(queue$in_count),
+        .in_retire(queue$in_retire),
+        .out_valid(queue$out_valid),
+        .out_ready(queue$out_ready),
+        .out_id(queue$out_id),
+        .out_ax(queue$out_ax),
+        .out_ay(queue$out_ay),
+        .out_bx(queue$out_bx),
+        .out_by(queue$out_by),
+        .out_wx(queue$out_wx),
+        .out_wy(queue$out_wy),
+        .out_sh(queue$out_sh),
+        .out_first(queue$out_first),
+        .out_count(queue$out_count),
+        .out_retire(queue$out_retire),
+        .occupied(queue$occupied)
     );
     processing_element$screener screener(
         .clock(screener$clock),
@@ -615,7 +611,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         screener$clock = clock;
         unit$clock = clock;
         sc_slice$clock = clock;
-        iu_slice$clock = clock;
+        queue$clock = clock;
         tags$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
@@ -755,31 +751,30 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         head_retire = head_tag[32'h15];
         head_first = head_tag[(32'hb)+:(10)];
         head_count = head_tag[(32'h0)+:(11)];
-        iu_slice$in_id = sc_slice$out_id;
-        iu_slice$in_ax = sc_slice$out_ax;
-        iu_slice$in_ay = sc_slice$out_ay;
-        iu_slice$in_bx = sc_slice$out_bx;
-        iu_slice$in_by = sc_slice$out_by;
-        iu_slice$in_wx = sc_slice$out_wx;
-        iu_slice$in_wy = sc_slice$out_wy;
-        iu_slice$in_sh = sc_slice$out_sh;
-        iu_slice$in_pass = 1'b0;
-        iu_slice$in_first = head_first;
-        iu_slice$in_count = head_count;
-        iu_slice$in_retire = head_retire;
-        iu_slice$in_valid = 1'b0;
+        queue$in_id = sc_slice$out_id;
+        queue$in_ax = sc_slice$out_ax;
+        queue$in_ay = sc_slice$out_ay;
+        queue$in_bx = sc_slice$out_bx;
+        queue$in_by = sc_slice$out_by;
+        queue$in_wx = sc_slice$out_wx;
+        queue$in_wy = sc_slice$out_wy;
+        queue$in_sh = sc_slice$out_sh;
+        queue$in_first = head_first;
+        queue$in_count = head_count;
+        queue$in_retire = head_retire;
+        queue$in_valid = 1'b0;
         sc_slice$out_ready = 1'b0;
         pop = 1'b0;
         if (tags$valid) begin
             if (head_retire) begin
-                iu_slice$in_valid = 1'b1;
-                pop = iu_slice$in_ready;
+                queue$in_valid = 1'b1;
+                pop = queue$in_ready;
             end
             else if (sc_slice$out_valid) begin
                 if (sc_slice$out_pass) begin
-                    iu_slice$in_valid = 1'b1;
-                    sc_slice$out_ready = iu_slice$in_ready;
-                    pop = iu_slice$in_ready;
+                    queue$in_valid = 1'b1;
+                    sc_slice$out_ready = queue$in_ready;
+                    pop = queue$in_ready;
                 end
                 else begin
                     sc_slice$out_ready = 1'b1;
@@ -787,21 +782,21 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
                 end
             end
         end
-        unit$patch_valid = iu_slice$out_valid;
-        iu_slice$out_ready = unit$patch_ready;
-        unit$patch_id = iu_slice$out_id;
-        unit$patch_ax = iu_slice$out_ax;
-        unit$patch_ay = iu_slice$out_ay;
-        unit$patch_bx = iu_slice$out_bx;
-        unit$patch_by = iu_slice$out_by;
-        unit$patch_wx = iu_slice$out_wx;
-        unit$patch_wy = iu_slice$out_wy;
-        unit$patch_sh = iu_slice$out_sh;
-        unit$patch_first = iu_slice$out_first;
-        unit$patch_count = iu_slice$out_count;
-        unit$patch_retire = iu_slice$out_retire;
+        unit$patch_valid = queue$out_valid;
+        queue$out_ready = unit$patch_ready;
+        unit$patch_id = queue$out_id;
+        unit$patch_ax = queue$out_ax;
+        unit$patch_ay = queue$out_ay;
+        unit$patch_bx = queue$out_bx;
+        unit$patch_by = queue$out_by;
+        unit$patch_wx = queue$out_wx;
+        unit$patch_wy = queue$out_wy;
+        unit$patch_sh = queue$out_sh;
+        unit$patch_first = queue$out_first;
+        unit$patch_count = queue$out_count;
+        unit$patch_retire = queue$out_retire;
         tags$pop = pop;
-        busy = (tags$count != zero7) | pend$q | iu_slice$occupied | unit$busy | cache$flushing;
+        busy = (tags$count != zero7) | pend$q | queue$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
         cache_misses = cache$misses;
@@ -4015,875 +4010,6 @@ module processing_element$first1_y(d,q,clock);
 endmodule // processing_element$first1_y
 
 
-module processing_element$iu_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  in_valid;
-    output reg  in_ready;
-    input wire  [15:0] in_id;
-    input wire  [17:0] in_ax;
-    input wire  [17:0] in_ay;
-    input wire  [17:0] in_bx;
-    input wire  [17:0] in_by;
-    input wire  [17:0] in_wx;
-    input wire  [17:0] in_wy;
-    input wire  [5:0] in_sh;
-    input wire  in_pass;
-    input wire  [9:0] in_first;
-    input wire  [10:0] in_count;
-    input wire  in_retire;
-    output reg  out_valid;
-    input wire  out_ready;
-    output reg  [15:0] out_id;
-    output reg  [17:0] out_ax;
-    output reg  [17:0] out_ay;
-    output reg  [17:0] out_bx;
-    output reg  [17:0] out_by;
-    output reg  [17:0] out_wx;
-    output reg  [17:0] out_wy;
-    output reg  [5:0] out_sh;
-    output reg  out_pass;
-    output reg  [9:0] out_first;
-    output reg  [10:0] out_count;
-    output reg  out_retire;
-    output reg  occupied;
-    
-    // Stub signals
-    reg  m_v$d;
-    wire  m_v$q;
-    reg  m_v$clock;
-    reg  [15:0] m_id$d;
-    wire  [15:0] m_id$q;
-    reg  m_id$clock;
-    reg  [17:0] m_ax$d;
-    wire  [17:0] m_ax$q;
-    reg  m_ax$clock;
-    reg  [17:0] m_ay$d;
-    wire  [17:0] m_ay$q;
-    reg  m_ay$clock;
-    reg  [17:0] m_bx$d;
-    wire  [17:0] m_bx$q;
-    reg  m_bx$clock;
-    reg  [17:0] m_by$d;
-    wire  [17:0] m_by$q;
-    reg  m_by$clock;
-    reg  [17:0] m_wx$d;
-    wire  [17:0] m_wx$q;
-    reg  m_wx$clock;
-    reg  [17:0] m_wy$d;
-    wire  [17:0] m_wy$q;
-    reg  m_wy$clock;
-    reg  [5:0] m_sh$d;
-    wire  [5:0] m_sh$q;
-    reg  m_sh$clock;
-    reg  m_pass$d;
-    wire  m_pass$q;
-    reg  m_pass$clock;
-    reg  [9:0] m_first$d;
-    wire  [9:0] m_first$q;
-    reg  m_first$clock;
-    reg  [10:0] m_count$d;
-    wire  [10:0] m_count$q;
-    reg  m_count$clock;
-    reg  m_retire$d;
-    wire  m_retire$q;
-    reg  m_retire$clock;
-    reg  s_v$d;
-    wire  s_v$q;
-    reg  s_v$clock;
-    reg  [15:0] s_id$d;
-    wire  [15:0] s_id$q;
-    reg  s_id$clock;
-    reg  [17:0] s_ax$d;
-    wire  [17:0] s_ax$q;
-    reg  s_ax$clock;
-    reg  [17:0] s_ay$d;
-    wire  [17:0] s_ay$q;
-    reg  s_ay$clock;
-    reg  [17:0] s_bx$d;
-    wire  [17:0] s_bx$q;
-    reg  s_bx$clock;
-    reg  [17:0] s_by$d;
-    wire  [17:0] s_by$q;
-    reg  s_by$clock;
-    reg  [17:0] s_wx$d;
-    wire  [17:0] s_wx$q;
-    reg  s_wx$clock;
-    reg  [17:0] s_wy$d;
-    wire  [17:0] s_wy$q;
-    reg  s_wy$clock;
-    reg  [5:0] s_sh$d;
-    wire  [5:0] s_sh$q;
-    reg  s_sh$clock;
-    reg  s_pass$d;
-    wire  s_pass$q;
-    reg  s_pass$clock;
-    reg  [9:0] s_first$d;
-    wire  [9:0] s_first$q;
-    reg  s_first$clock;
-    reg  [10:0] s_count$d;
-    wire  [10:0] s_count$q;
-    reg  s_count$clock;
-    reg  s_retire$d;
-    wire  s_retire$q;
-    reg  s_retire$clock;
-    
-    // Local signals
-    reg  take;
-    reg  load_main;
-    
-    // Sub module instances
-    processing_element$iu_slice$m_v m_v(
-        .d(m_v$d),
-        .q(m_v$q),
-        .clock(m_v$clock)
-    );
-    processing_element$iu_slice$m_id m_id(
-        .d(m_id$d),
-        .q(m_id$q),
-        .clock(m_id$clock)
-    );
-    processing_element$iu_slice$m_ax m_ax(
-        .d(m_ax$d),
-        .q(m_ax$q),
-        .clock(m_ax$clock)
-    );
-    processing_element$iu_slice$m_ay m_ay(
-        .d(m_ay$d),
-        .q(m_ay$q),
-        .clock(m_ay$clock)
-    );
-    processing_element$iu_slice$m_bx m_bx(
-        .d(m_bx$d),
-        .q(m_bx$q),
-        .clock(m_bx$clock)
-    );
-    processing_element$iu_slice$m_by m_by(
-        .d(m_by$d),
-        .q(m_by$q),
-        .clock(m_by$clock)
-    );
-    processing_element$iu_slice$m_wx m_wx(
-        .d(m_wx$d),
-        .q(m_wx$q),
-        .clock(m_wx$clock)
-    );
-    processing_element$iu_slice$m_wy m_wy(
-        .d(m_wy$d),
-        .q(m_wy$q),
-        .clock(m_wy$clock)
-    );
-    processing_element$iu_slice$m_sh m_sh(
-        .d(m_sh$d),
-        .q(m_sh$q),
-        .clock(m_sh$clock)
-    );
-    processing_element$iu_slice$m_pass m_pass(
-        .d(m_pass$d),
-        .q(m_pass$q),
-        .clock(m_pass$clock)
-    );
-    processing_element$iu_slice$m_first m_first(
-        .d(m_first$d),
-        .q(m_first$q),
-        .clock(m_first$clock)
-    );
-    processing_element$iu_slice$m_count m_count(
-        .d(m_count$d),
-        .q(m_count$q),
-        .clock(m_count$clock)
-    );
-    processing_element$iu_slice$m_retire m_retire(
-        .d(m_retire$d),
-        .q(m_retire$q),
-        .clock(m_retire$clock)
-    );
-    processing_element$iu_slice$s_v s_v(
-        .d(s_v$d),
-        .q(s_v$q),
-        .clock(s_v$clock)
-    );
-    processing_element$iu_slice$s_id s_id(
-        .d(s_id$d),
-        .q(s_id$q),
-        .clock(s_id$clock)
-    );
-    processing_element$iu_slice$s_ax s_ax(
-        .d(s_ax$d),
-        .q(s_ax$q),
-        .clock(s_ax$clock)
-    );
-    processing_element$iu_slice$s_ay s_ay(
-        .d(s_ay$d),
-        .q(s_ay$q),
-        .clock(s_ay$clock)
-    );
-    processing_element$iu_slice$s_bx s_bx(
-        .d(s_bx$d),
-        .q(s_bx$q),
-        .clock(s_bx$clock)
-    );
-    processing_element$iu_slice$s_by s_by(
-        .d(s_by$d),
-        .q(s_by$q),
-        .clock(s_by$clock)
-    );
-    processing_element$iu_slice$s_wx s_wx(
-        .d(s_wx$d),
-        .q(s_wx$q),
-        .clock(s_wx$clock)
-    );
-    processing_element$iu_slice$s_wy s_wy(
-        .d(s_wy$d),
-        .q(s_wy$q),
-        .clock(s_wy$clock)
-    );
-    processing_element$iu_slice$s_sh s_sh(
-        .d(s_sh$d),
-        .q(s_sh$q),
-        .clock(s_sh$clock)
-    );
-    processing_element$iu_slice$s_pass s_pass(
-        .d(s_pass$d),
-        .q(s_pass$q),
-        .clock(s_pass$clock)
-    );
-    processing_element$iu_slice$s_first s_first(
-        .d(s_first$d),
-        .q(s_first$q),
-        .clock(s_first$clock)
-    );
-    processing_element$iu_slice$s_count s_count(
-        .d(s_count$d),
-        .q(s_count$q),
-        .clock(s_count$clock)
-    );
-    processing_element$iu_slice$s_retire s_retire(
-        .d(s_retire$d),
-        .q(s_retire$q),
-        .clock(s_retire$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        m_v$clock = clock;
-        m_id$clock = clock;
-        m_ax$clock = clock;
-        m_ay$clock = clock;
-        m_bx$clock = clock;
-        m_by$clock = clock;
-        m_wx$clock = clock;
-        m_wy$clock = clock;
-        m_sh$clock = clock;
-        m_pass$clock = clock;
-        m_first$clock = clock;
-        m_count$clock = clock;
-        m_retire$clock = clock;
-        s_v$clock = clock;
-        s_id$clock = clock;
-        s_ax$clock = clock;
-        s_ay$clock = clock;
-        s_bx$clock = clock;
-        s_by$clock = clock;
-        s_wx$clock = clock;
-        s_wy$clock = clock;
-        s_sh$clock = clock;
-        s_pass$clock = clock;
-        s_first$clock = clock;
-        s_count$clock = clock;
-        s_retire$clock = clock;
-        m_v$d = m_v$q;
-        m_id$d = m_id$q;
-        m_ax$d = m_ax$q;
-        m_ay$d = m_ay$q;
-        m_bx$d = m_bx$q;
-        m_by$d = m_by$q;
-        m_wx$d = m_wx$q;
-        m_wy$d = m_wy$q;
-        m_sh$d = m_sh$q;
-        m_pass$d = m_pass$q;
-        m_first$d = m_first$q;
-        m_count$d = m_count$q;
-        m_retire$d = m_retire$q;
-        s_v$d = s_v$q;
-        s_id$d = s_id$q;
-        s_ax$d = s_ax$q;
-        s_ay$d = s_ay$q;
-        s_bx$d = s_bx$q;
-        s_by$d = s_by$q;
-        s_wx$d = s_wx$q;
-        s_wy$d = s_wy$q;
-        s_sh$d = s_sh$q;
-        s_pass$d = s_pass$q;
-        s_first$d = s_first$q;
-        s_count$d = s_count$q;
-        s_retire$d = s_retire$q;
-        in_ready = ~s_v$q;
-        take = in_valid & ~s_v$q;
-        load_main = ~m_v$q | out_ready;
-        if (load_main) begin
-            m_v$d = s_v$q | take;
-            s_v$d = 1'b0;
-            if (s_v$q) begin
-                m_id$d = s_id$q;
-                m_ax$d = s_ax$q;
-                m_ay$d = s_ay$q;
-                m_bx$d = s_bx$q;
-                m_by$d = s_by$q;
-                m_wx$d = s_wx$q;
-                m_wy$d = s_wy$q;
-                m_sh$d = s_sh$q;
-                m_pass$d = s_pass$q;
-                m_first$d = s_first$q;
-                m_count$d = s_count$q;
-                m_retire$d = s_retire$q;
-            end
-            else begin
-                m_id$d = in_id;
-                m_ax$d = in_ax;
-                m_ay$d = in_ay;
-                m_bx$d = in_bx;
-                m_by$d = in_by;
-                m_wx$d = in_wx;
-                m_wy$d = in_wy;
-                m_sh$d = in_sh;
-                m_pass$d = in_pass;
-                m_first$d = in_first;
-                m_count$d = in_count;
-                m_retire$d = in_retire;
-            end
-        end
-        else begin
-            s_v$d = s_v$q | take;
-        end
-        if (~s_v$q) begin
-            s_id$d = in_id;
-            s_ax$d = in_ax;
-            s_ay$d = in_ay;
-            s_bx$d = in_bx;
-            s_by$d = in_by;
-            s_wx$d = in_wx;
-            s_wy$d = in_wy;
-            s_sh$d = in_sh;
-            s_pass$d = in_pass;
-            s_first$d = in_first;
-            s_count$d = in_count;
-            s_retire$d = in_retire;
-        end
-        out_valid = m_v$q;
-        out_id = m_id$q;
-        out_ax = m_ax$q;
-        out_ay = m_ay$q;
-        out_bx = m_bx$q;
-        out_by = m_by$q;
-        out_wx = m_wx$q;
-        out_wy = m_wy$q;
-        out_sh = m_sh$q;
-        out_pass = m_pass$q;
-        out_first = m_first$q;
-        out_count = m_count$q;
-        out_retire = m_retire$q;
-        occupied = m_v$q | s_v$q;
-    end
-    
-endmodule // processing_element$iu_slice
-
-
-module processing_element$iu_slice$m_ax(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_ax
-
-
-module processing_element$iu_slice$m_ay(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_ay
-
-
-module processing_element$iu_slice$m_bx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_bx
-
-
-module processing_element$iu_slice$m_by(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_by
-
-
-module processing_element$iu_slice$m_count(d,q,clock);
-    
-    // Module arguments
-    input wire  [10:0] d;
-    output reg  [10:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 11'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_count
-
-
-module processing_element$iu_slice$m_first(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_first
-
-
-module processing_element$iu_slice$m_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_id
-
-
-module processing_element$iu_slice$m_pass(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_pass
-
-
-module processing_element$iu_slice$m_retire(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_retire
-
-
-module processing_element$iu_slice$m_sh(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_sh
-
-
-module processing_element$iu_slice$m_v(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_v
-
-
-module processing_element$iu_slice$m_wx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_wx
-
-
-module processing_element$iu_slice$m_wy(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$m_wy
-
-
-module processing_element$iu_slice$s_ax(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_ax
-
-
-module processing_element$iu_slice$s_ay(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_ay
-
-
-module processing_element$iu_slice$s_bx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_bx
-
-
-module processing_element$iu_slice$s_by(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_by
-
-
-module processing_element$iu_slice$s_count(d,q,clock);
-    
-    // Module arguments
-    input wire  [10:0] d;
-    output reg  [10:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 11'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_count
-
-
-module processing_element$iu_slice$s_first(d,q,clock);
-    
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_first
-
-
-module processing_element$iu_slice$s_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_id
-
-
-module processing_element$iu_slice$s_pass(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_pass
-
-
-module processing_element$iu_slice$s_retire(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_retire
-
-
-module processing_element$iu_slice$s_sh(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_sh
-
-
-module processing_element$iu_slice$s_v(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_v
-
-
-module processing_element$iu_slice$s_wx(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_wx
-
-
-module processing_element$iu_slice$s_wy(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$iu_slice$s_wy
-
-
 module processing_element$job_banks(clock,push,data_in,pop,valid,data_out,count);
     
     // Module arguments
@@ -6223,6 +5349,893 @@ module processing_element$pend_last_y(d,q,clock);
     end
           
 endmodule // processing_element$pend_last_y
+
+
+module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_first,out_count,out_retire,occupied);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  in_valid;
+    output reg  in_ready;
+    input wire  [15:0] in_id;
+    input wire  [17:0] in_ax;
+    input wire  [17:0] in_ay;
+    input wire  [17:0] in_bx;
+    input wire  [17:0] in_by;
+    input wire  [17:0] in_wx;
+    input wire  [17:0] in_wy;
+    input wire  [5:0] in_sh;
+    input wire  [9:0] in_first;
+    input wire  [10:0] in_count;
+    input wire  in_retire;
+    output reg  out_valid;
+    input wire  out_ready;
+    output reg  [15:0] out_id;
+    output reg  [17:0] out_ax;
+    output reg  [17:0] out_ay;
+    output reg  [17:0] out_bx;
+    output reg  [17:0] out_by;
+    output reg  [17:0] out_wx;
+    output reg  [17:0] out_wy;
+    output reg  [5:0] out_sh;
+    output reg  [9:0] out_first;
+    output reg  [10:0] out_count;
+    output reg  out_retire;
+    output reg  occupied;
+    
+    // Constant declarations
+    localparam  retire_bit = 28'h200000;
+    localparam  full = 5'b10000;
+    localparam  empty = 5'b0;
+    
+    // Stub signals
+    reg  control$clock;
+    reg  control$push;
+    reg  control$pop;
+    wire  [3:0] control$tail_address;
+    wire  [3:0] control$head_address;
+    wire  [3:0] control$next_address;
+    wire  control$valid;
+    wire  [4:0] control$count;
+    reg  lane_id$clock;
+    reg  [3:0] lane_id$write_address;
+    reg  [15:0] lane_id$write_data;
+    reg  lane_id$write_enable;
+    reg  [3:0] lane_id$head_address;
+    reg  [3:0] lane_id$next_address;
+    reg  lane_id$pop;
+    wire  [15:0] lane_id$read_data;
+    reg  lane_ax$clock;
+    reg  [3:0] lane_ax$write_address;
+    reg  [17:0] lane_ax$write_data;
+    reg  lane_ax$write_enable;
+    reg  [3:0] lane_ax$head_address;
+    reg  [3:0] lane_ax$next_address;
+    reg  lane_ax$pop;
+    wire  [17:0] lane_ax$read_data;
+    reg  lane_ay$clock;
+    reg  [3:0] lane_ay$write_address;
+    reg  [17:0] lane_ay$write_data;
+    reg  lane_ay$write_enable;
+    reg  [3:0] lane_ay$head_address;
+    reg  [3:0] lane_ay$next_address;
+    reg  lane_ay$pop;
+    wire  [17:0] lane_ay$read_data;
+    reg  lane_bx$clock;
+    reg  [3:0] lane_bx$write_address;
+    reg  [17:0] lane_bx$write_data;
+    reg  lane_bx$write_enable;
+    reg  [3:0] lane_bx$head_address;
+    reg  [3:0] lane_bx$next_address;
+    reg  lane_bx$pop;
+    wire  [17:0] lane_bx$read_data;
+    reg  lane_by$clock;
+    reg  [3:0] lane_by$write_address;
+    reg  [17:0] lane_by$write_data;
+    reg  lane_by$write_enable;
+    reg  [3:0] lane_by$head_address;
+    reg  [3:0] lane_by$next_address;
+    reg  lane_by$pop;
+    wire  [17:0] lane_by$read_data;
+    reg  lane_wx$clock;
+    reg  [3:0] lane_wx$write_address;
+    reg  [17:0] lane_wx$write_data;
+    reg  lane_wx$write_enable;
+    reg  [3:0] lane_wx$head_address;
+    reg  [3:0] lane_wx$next_address;
+    reg  lane_wx$pop;
+    wire  [17:0] lane_wx$read_data;
+    reg  lane_wy$clock;
+    reg  [3:0] lane_wy$write_address;
+    reg  [17:0] lane_wy$write_data;
+    reg  lane_wy$write_enable;
+    reg  [3:0] lane_wy$head_address;
+    reg  [3:0] lane_wy$next_address;
+    reg  lane_wy$pop;
+    wire  [17:0] lane_wy$read_data;
+    reg  lane_job$clock;
+    reg  [3:0] lane_job$write_address;
+    reg  [27:0] lane_job$write_data;
+    reg  lane_job$write_enable;
+    reg  [3:0] lane_job$head_address;
+    reg  [3:0] lane_job$next_address;
+    reg  lane_job$pop;
+    wire  [27:0] lane_job$read_data;
+    
+    // Local signals
+    reg  push;
+    reg  pop;
+    reg  [27:0] sh28;
+    reg  [27:0] first28;
+    reg  [27:0] count28;
+    reg  [27:0] job_in;
+    reg  [27:0] job_out;
+    
+    // Sub module instances
+    processing_element$queue$control control(
+        .clock(control$clock),
+        .push(control$push),
+        .pop(control$pop),
+        .tail_address(control$tail_address),
+        .head_address(control$head_address),
+        .next_address(control$next_address),
+        .valid(control$valid),
+        .count(control$count)
+    );
+    processing_element$queue$lane_id lane_id(
+        .clock(lane_id$clock),
+        .write_address(lane_id$write_address),
+        .write_data(lane_id$write_data),
+        .write_enable(lane_id$write_enable),
+        .head_address(lane_id$head_address),
+        .next_address(lane_id$next_address),
+        .pop(lane_id$pop),
+        .read_data(lane_id$read_data)
+    );
+    processing_element$queue$lane_ax lane_ax(
+        .clock(lane_ax$clock),
+        .write_address(lane_ax$write_address),
+        .write_data(lane_ax$write_data),
+        .write_enable(lane_ax$write_enable),
+        .head_address(lane_ax$head_address),
+        .next_address(lane_ax$next_address),
+        .pop(lane_ax$pop),
+        .read_data(lane_ax$read_data)
+    );
+    processing_element$queue$lane_ay lane_ay(
+        .clock(lane_ay$clock),
+        .write_address(lane_ay$write_address),
+        .write_data(lane_ay$write_data),
+        .write_enable(lane_ay$write_enable),
+        .head_address(lane_ay$head_address),
+        .next_address(lane_ay$next_address),
+        .pop(lane_ay$pop),
+        .read_data(lane_ay$read_data)
+    );
+    processing_element$queue$lane_bx lane_bx(
+        .clock(lane_bx$clock),
+        .write_address(lane_bx$write_address),
+        .write_data(lane_bx$write_data),
+        .write_enable(lane_bx$write_enable),
+        .head_address(lane_bx$head_address),
+        .next_address(lane_bx$next_address),
+        .pop(lane_bx$pop),
+        .read_data(lane_bx$read_data)
+    );
+    processing_element$queue$lane_by lane_by(
+        .clock(lane_by$clock),
+        .write_address(lane_by$write_address),
+        .write_data(lane_by$write_data),
+        .write_enable(lane_by$write_enable),
+        .head_address(lane_by$head_address),
+        .next_address(lane_by$next_address),
+        .pop(lane_by$pop),
+        .read_data(lane_by$read_data)
+    );
+    processing_element$queue$lane_wx lane_wx(
+        .clock(lane_wx$clock),
+        .write_address(lane_wx$write_address),
+        .write_data(lane_wx$write_data),
+        .write_enable(lane_wx$write_enable),
+        .head_address(lane_wx$head_address),
+        .next_address(lane_wx$next_address),
+        .pop(lane_wx$pop),
+        .read_data(lane_wx$read_data)
+    );
+    processing_element$queue$lane_wy lane_wy(
+        .clock(lane_wy$clock),
+        .write_address(lane_wy$write_address),
+        .write_data(lane_wy$write_data),
+        .write_enable(lane_wy$write_enable),
+        .head_address(lane_wy$head_address),
+        .next_address(lane_wy$next_address),
+        .pop(lane_wy$pop),
+        .read_data(lane_wy$read_data)
+    );
+    processing_element$queue$lane_job lane_job(
+        .clock(lane_job$clock),
+        .write_address(lane_job$write_address),
+        .write_data(lane_job$write_data),
+        .write_enable(lane_job$write_enable),
+        .head_address(lane_job$head_address),
+        .next_address(lane_job$next_address),
+        .pop(lane_job$pop),
+        .read_data(lane_job$read_data)
+    );
+    
+    // Update code
+    always @(*) begin
+        control$clock = clock;
+        lane_id$clock = clock;
+        lane_ax$clock = clock;
+        lane_ay$clock = clock;
+        lane_bx$clock = clock;
+        lane_by$clock = clock;
+        lane_wx$clock = clock;
+        lane_wy$clock = clock;
+        lane_job$clock = clock;
+        in_ready = control$count != full;
+        push = in_valid & (control$count != full);
+        control$push = push;
+        sh28 = ((in_sh) & 28'hfffffff);
+        first28 = ((in_first) & 28'hfffffff);
+        count28 = ((in_count) & 28'hfffffff);
+        job_in = (sh28 << 32'h16) | (first28 << 32'hb) | count28;
+        if (in_retire) begin
+            job_in = job_in | retire_bit;
+        end
+        lane_id$write_data = in_id;
+        lane_ax$write_data = in_ax;
+        lane_ay$write_data = in_ay;
+        lane_bx$write_data = in_bx;
+        lane_by$write_data = in_by;
+        lane_wx$write_data = in_wx;
+        lane_wy$write_data = in_wy;
+        lane_job$write_data = job_in;
+        pop = control$valid & out_ready;
+        control$pop = pop;
+        out_valid = control$valid;
+        occupied = control$count != empty;
+        out_id = lane_id$read_data;
+        out_ax = lane_ax$read_data;
+        out_ay = lane_ay$read_data;
+        out_bx = lane_bx$read_data;
+        out_by = lane_by$read_data;
+        out_wx = lane_wx$read_data;
+        out_wy = lane_wy$read_data;
+        job_out = lane_job$read_data;
+        out_sh = job_out[(32'h16)+:(6)];
+        out_retire = job_out[32'h15];
+        out_first = job_out[(32'hb)+:(10)];
+        out_count = job_out[(32'h0)+:(11)];
+        lane_id$write_address = control$tail_address;
+        lane_id$write_enable = push;
+        lane_id$head_address = control$head_address;
+        lane_id$next_address = control$next_address;
+        lane_id$pop = pop;
+        lane_ax$write_address = control$tail_address;
+        lane_ax$write_enable = push;
+        lane_ax$head_address = control$head_address;
+        lane_ax$next_address = control$next_address;
+        lane_ax$pop = pop;
+        lane_ay$write_address = control$tail_address;
+        lane_ay$write_enable = push;
+        lane_ay$head_address = control$head_address;
+        lane_ay$next_address = control$next_address;
+        lane_ay$pop = pop;
+        lane_bx$write_address = control$tail_address;
+        lane_bx$write_enable = push;
+        lane_bx$head_address = control$head_address;
+        lane_bx$next_address = control$next_address;
+        lane_bx$pop = pop;
+        lane_by$write_address = control$tail_address;
+        lane_by$write_enable = push;
+        lane_by$head_address = control$head_address;
+        lane_by$next_address = control$next_address;
+        lane_by$pop = pop;
+        lane_wx$write_address = control$tail_address;
+        lane_wx$write_enable = push;
+        lane_wx$head_address = control$head_address;
+        lane_wx$next_address = control$next_address;
+        lane_wx$pop = pop;
+        lane_wy$write_address = control$tail_address;
+        lane_wy$write_enable = push;
+        lane_wy$head_address = control$head_address;
+        lane_wy$next_address = control$next_address;
+        lane_wy$pop = pop;
+        lane_job$write_address = control$tail_address;
+        lane_job$write_enable = push;
+        lane_job$head_address = control$head_address;
+        lane_job$next_address = control$next_address;
+        lane_job$pop = pop;
+    end
+    
+endmodule // processing_element$queue
+
+
+module processing_element$queue$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [3:0] tail_address;
+    output reg  [3:0] head_address;
+    output reg  [3:0] next_address;
+    output reg  valid;
+    output reg  [4:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 4'h1;
+    localparam  one_c = 5'b1;
+    localparam  zero_c = 5'b0;
+    
+    // Stub signals
+    reg  [3:0] tail_ptr$d;
+    wire  [3:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [3:0] rd_inc_x$d;
+    wire  [3:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] words$d;
+    wire  [4:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_inc2;
+    reg  [4:0] left;
+    
+    // Sub module instances
+    processing_element$queue$control$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$queue$control$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$queue$control$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$queue$control$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$queue$control$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$queue$control
+
+
+module processing_element$queue$control$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$control$head_valid
+
+
+module processing_element$queue$control$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$control$rd_inc_x
+
+
+module processing_element$queue$control$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$control$rd_ptr
+
+
+module processing_element$queue$control$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$control$tail_ptr
+
+
+module processing_element$queue$control$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$control$words
+
+
+module processing_element$queue$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:15];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_ax
+
+
+module processing_element$queue$lane_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:15];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_ay
+
+
+module processing_element$queue$lane_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:15];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_bx
+
+
+module processing_element$queue$lane_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:15];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_by
+
+
+module processing_element$queue$lane_id(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [15:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [15:0] read_data;
+    
+    // Update code (custom)
+    reg [15:0] mem [0:15];
+    reg [15:0] head_r;
+    reg [15:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [15:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 16'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 16'd0;
+       head_r = 16'd0;
+       next_r = 16'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_id
+
+
+module processing_element$queue$lane_job(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [27:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [27:0] read_data;
+    
+    // Update code (custom)
+    reg [27:0] mem [0:15];
+    reg [27:0] head_r;
+    reg [27:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [27:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 28'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 28'd0;
+       head_r = 28'd0;
+       next_r = 28'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_job
+
+
+module processing_element$queue$lane_wx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:15];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_wx
+
+
+module processing_element$queue$lane_wy(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [17:0] read_data;
+    
+    // Update code (custom)
+    reg [17:0] mem [0:15];
+    reg [17:0] head_r;
+    reg [17:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [17:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 18'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 18'd0;
+       head_r = 18'd0;
+       next_r = 18'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$queue$lane_wy
 
 
 module processing_element$sc_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);

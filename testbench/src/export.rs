@@ -10,6 +10,7 @@ use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
 use shelling_hdl::pe::ProcessingElement;
 use shelling_hdl::prim::Fifo;
+use shelling_hdl::queue::JobQueue;
 use shelling_hdl::screener::Screener;
 use std::path::{Path, PathBuf};
 
@@ -34,6 +35,8 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     pe.connect_all();
     let mut fifo = FwftFifo::default();
     fifo.connect_all();
+    let mut queue = JobQueue::default();
+    queue.connect_all();
     vec![
         ("patch_loader", Box::new(loader)),
         ("patch_cache", Box::new(cache)),
@@ -41,6 +44,7 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
         ("intersection_unit", Box::new(iu)),
         ("processing_element", Box::new(pe)),
         ("fwft_fifo", Box::new(fifo)),
+        ("job_queue", Box::new(queue)),
     ]
 }
 

@@ -14,7 +14,10 @@
 //!   all-properties bounded task, `intersection.sby bmc`, takes minutes: run it by hand);
 //! * the screener: its credit and counting invariants proved by induction; every patch leaving
 //!   once, in order, with its verdict and the documented latency checked to depth 34; its covers
-//!   reached; two broken variants (a verdict not counted, a patch's id lost) caught.
+//!   reached; two broken variants (a verdict not counted, a patch's id lost) caught;
+//! * the processing element's job queue: a full proof by k-induction that every job leaves
+//!   once, in order, with all its fields, its handshakes as documented; its covers reached; two
+//!   broken variants (a lane never written, the packed lane's pop lost) caught.
 //!
 //! SymbiYosys, the Yosys it drives and the yices solver: the test uses, in this order, a native
 //! `sby` (with `yosys`, `yosys-smtbmc` beside it) on the PATH, `yowasp-sby` (with
@@ -173,5 +176,19 @@ fn the_screeners_covers_are_reachable() {
 fn the_screener_proof_catches_broken_screeners() {
     for mutant in ["mutant_count", "mutant_lost"] {
         expect("screener", mutant, "FAIL");
+    }
+}
+
+#[test]
+fn the_job_queue_is_proved_by_induction() {
+    for task in ["prove", "cover"] {
+        expect("queue", task, "PASS");
+    }
+}
+
+#[test]
+fn the_job_queue_check_catches_broken_queues() {
+    for mutant in ["mutant_lane", "mutant_pack"] {
+        expect("queue", mutant, "FAIL");
     }
 }
