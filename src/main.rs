@@ -954,7 +954,7 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     );
     say!(
         out,
-        "cycles {}  intersection busy {}  pipeline efficiency {:.3}  stalls {} (sector drains {})",
+        "cycles {}  intersection busy {}  pipeline efficiency {:.3}  stalls {} (waiting on a sector {})",
         h.cycles,
         h.intersection_busy_cycles,
         h.pipeline_efficiency,
@@ -1042,7 +1042,7 @@ fn demo(a: DemoArgs) -> Result<()> {
         "tests",
         "cycles",
         "efficiency",
-        "drains",
+        "sector wait",
         "speedup"
     );
     out.flush()?;

@@ -102,8 +102,7 @@
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 150.8 MHz (140.0–158.7; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`);
-//! its slowest path at seed 1 is stage 7's normalised exponent into stage 8 (7.09 ns).
+//! median of 153.4 MHz (150.0–161.4; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
