@@ -22,8 +22,8 @@
 //! (`sh` in bits 22..27, `retire` in bit 21, `first` in bits 11..20, `count` in bits 0..10).
 //! A job pushed into an empty queue is on the outputs two clocks later (the lanes read before
 //! they write); one push and one pop per clock; the output stream is the input stream, in
-//! order, none lost or duplicated (the control's proof, `fifo.sby`, covers the pointers; the
-//! lanes are the FIFO block's). `out_ready` reaches the control's pop and the lanes' output
+//! order, none lost or duplicated, no field mixed between jobs (proved for all time by
+//! `queue.sby`). `out_ready` reaches the control's pop and the lanes' output
 //! multiplexers only, no RAM address.
 //!
 //! # Model

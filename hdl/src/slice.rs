@@ -1,7 +1,8 @@
 //! The patch slice: a two-entry register FIFO (a skid buffer) on a valid/ready patch stream,
 //! whose `in_ready` is a register. The processing element puts one between the screener and the
-//! merger and one between the merger and the intersection unit, so that no combinational path
-//! runs from the unit's `patch_ready` through the merger into the screener's output FIFO (the
+//! merger (and the [`crate::queue::JobQueue`] between the merger and the intersection unit), so
+//! that no combinational path runs from the unit's `patch_ready` through the merger into the
+//! screener's output FIFO (the
 //! PE's critical path at 107–120 MHz before, with most of its delay in routing between the
 //! blocks).
 //!

@@ -155,7 +155,7 @@ pub struct PeCounters {
     /// `intersection_busy_cycles / cycles`.
     pub pipeline_efficiency: f64,
     /// Cycles the PE held work but the intersection unit tested nothing (waiting for patches,
-    /// filling its pipeline, bubbles of retired rays), sector drains included.
+    /// filling its pipeline, bubbles of retired rays), sector waits included.
     pub stall_cycles: u64,
     /// Stall cycles in which the command stream waited on a sector change (`cmd_ready` low
     /// after a sector command until the next command was taken: the PE's bank for the new
