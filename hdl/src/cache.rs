@@ -45,73 +45,90 @@
 //!
 //! # Enabled: structure
 //!
+//! A non-blocking, in-order cache: lookups run ahead of the answers, so a miss does not stop
+//! the hits and misses behind it; up to [`MISSES`] misses are outstanding at the host at once,
+//! and every request is answered in request order.
+//!
 //! * A request queue of [`QUEUE_DEPTH`] ids (a [`Bram`] lane with registered read, as the
 //!   loader's FIFO, with five-bit pointers). The client must keep at most [`QUEUE_DEPTH`]
 //!   requests outstanding (the loader does: at most one per FIFO slot, `crate::loader::DEPTH` =
-//!   16); a request leaves the queue when it is answered, so the queue cannot overflow.
+//!   16); a request leaves the queue when its lookup is accepted, and stays in the answer queue
+//!   until it is answered, so neither queue can overflow.
 //! * Five [`BramOut`] lanes of [`LINES`] words, two clocks from read address to data (on ECP5
 //!   block RAMs with their output register): the tag (bit 16: valid, bits 15…0: the whole id)
 //!   and the four 17-bit coordinates; zero (invalid) at power-up.
-//! * A speculative lookup pipeline, one request per clock, in request order:
+//! * A lookup pipeline, one request per clock, in request order:
 //!   - **Q** (issue): the id of the next request to look up is at the queue lane's read
 //!     register; its line is presented to the lanes and the request moves to S1, and the queue
 //!     lane reads the request after it.
 //!   - **S1**: the lanes' first read register.
 //!   - **S2**: the lanes' output registers hold the request's line; `tag == {1, id}` is
 //!     computed by 4-bit slices (on ECP5 one per block RAM tile of the tag lane), each
-//!     registered, with the line's words.
-//!   - **S3** (lookup): a hit is answered from the registered words; a miss issues the host
-//!     request and goes to W.
-//!   - **W** (wait): the miss waits for `mem_valid`; the response is written into its line
-//!     (tag and data) and forwarded to the client. A `mem_valid` with no miss waiting is a
-//!     protocol violation and is ignored.
+//!     registered, with the line's words; and the staleness check (below), registered.
+//!   - **S3** (lookup): the request is accepted, a hit with its words or a miss, into the
+//!     answer queue; a miss also into the miss table, and its host request goes out in the
+//!     next cycle. Or it is not accepted (below) and the lookups are rewound to it.
+//! * The **miss table**: the ids and lines of the [`MISSES`] newest misses accepted and not yet
+//!   answered (registers), oldest first, and the id and line filled in the last cycle.
+//! * The **answer queue** ([`FifoControl`] over [`FifoRam`] lanes, [`QUEUE_DEPTH`] entries):
+//!   every accepted request in order, a hit with its four words, a miss with its id and line.
+//!   The **return queue** ([`MISSES`] entries): the host's answers, in order, until their turn.
+//! * The **answer**: the answer queue's head is answered (`resp_*` registered) when it is a hit,
+//!   or a miss whose patch is at the return queue's head; a miss's patch is then written into
+//!   its line (tag and data) and the miss leaves the table. One answer per clock.
 //!
-//!   Requests are looked up before the ones ahead of them are answered. A miss voids the three
-//!   lookups behind it (in S1, S2 and S3 while it waits) and rewinds the queue's read pointer to the
-//!   request after it: after the fill those are issued again, so they see the line it wrote
-//!   (the lanes read before they write, and nothing is issued until the cycle after the fill).
-//!   Only fills write, and nothing is issued while a fill is pending, so there is no other
-//!   hazard. The tag compare feeds registers only, one per tile: no path runs from a block RAM
-//!   through the compare into the pipeline's control, and each slice's compare can be placed
-//!   next to its tile (the block RAMs sit far apart on the die; from the tag's tiles to one
-//!   compare the routing alone took 3 ns). The queue's pointers keep `+ 1` in registers and
-//!   compare each candidate for the next read with the write pointer beside the choice, so
-//!   no carry chain or compare follows the pointer multiplexer.
-//! * With the cache enabled every output is a register (`mem_req`, `mem_addr`, `resp_*`,
-//!   counters): no combinational path crosses the block. `resp_*` are meaningful only while
-//!   `resp_valid` is high (the data registers take every looked-up line's words), and
-//!   `mem_addr` only while `mem_req` is, identically in the rust-hdl simulation and in the
-//!   Verilog.
+//! Staleness. A request reads its line in Q, but a miss ahead of it writes that line only when
+//! it is answered: the words read may be older than the model's line. In S1 the request's line
+//! and id are compared with the table's entries, the last fill, S3's request if it is a miss
+//! (it enters the table at that edge), and S2's if it turns out a miss in S3; each compare is
+//! registered and they are combined in S2. If none matches, the words read are the model's. If some match by line only, the newest of them (a different id) holds the line
+//! in the model: the request is a miss, whatever the stale tag says, and its host request goes
+//! out at once (misses to one line are filled in order). If one matches the request's own id,
+//! its patch is not in the line yet: S3 does not accept it and rewinds the lookups (the request
+//! and the two behind it are void, and Q reads it again), until that fill is in the line; so
+//! also when the table is full. The conditions of a rewind are registers (the staleness check's
+//! and the table's valid bits): the tag compare reaches no pointer. The tag compare feeds
+//! registers only, one per tile: no path runs from a block RAM through the compare into the
+//! pipeline's control, and each slice's compare can be placed next to its tile (the block RAMs
+//! sit far apart on the die; from the tag's tiles to one compare the routing alone took 3 ns).
+//! The queue's pointers keep `+ 1` in registers and compare each candidate for the next read
+//! with the write pointer beside the choice, so no carry chain or compare follows the pointer
+//! multiplexer.
+//!
+//! With the cache enabled every output is a register (`mem_req`, `mem_addr`, `resp_*`,
+//! counters): no combinational path crosses the block. `resp_*` are meaningful only while
+//! `resp_valid` is high, and `mem_addr` only while `mem_req` is, identically in the rust-hdl
+//! simulation and in the Verilog.
 //!
 //! # Latency and throughput (enabled)
 //!
-//! For a request seen (`req` high) in cycle `a` by an idle block ([`model::schedule`] gives
-//! the exact cycles of any stream):
+//! For a request seen (`req` high) in cycle `a` by an idle block:
 //!
 //! * it is looked up (in S3) in cycle `a + 5` ([`model::LOOKUP_DELAY`]);
-//! * a **hit** is answered (`resp_valid`) in cycle `a + 6` ([`model::HIT_LATENCY`]);
-//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 6`; the host answers in
-//!   cycle `a + 6 + T_c`; the client's response follows in cycle `a + 7 + T_c`
-//!   (`T_c +` [`model::MISS_OVERHEAD`]).
+//! * a **hit** is answered (`resp_valid`) in cycle `a + 8` ([`model::HIT_LATENCY`]: the answer
+//!   queue's two clocks and the response register);
+//! * a **miss** is requested from the host (`mem_req`) in cycle `a + 6`
+//!   ([`model::HOST_REQUEST_DELAY`]); the host answers in cycle `a + 6 + T_c`; the client's
+//!   response follows in cycle `a + 9 + T_c` (`T_c +` [`model::MISS_OVERHEAD`]).
 //!
-//! Request `k` is looked up in cycle `b_k = max(a_k + 5, f_{k−1})`, where `f` is when the
-//! lookup stage can next hold a valid request: `f_k = b_k + 1` after a hit, `b_k + T_c + 5`
-//! after a miss ([`model::MISS_RESTART`]: its host request goes out in `b_k + 1`, the fill
-//! comes in `b_k + 1 + T_c`, the next request is issued again in the cycle after it and looked
-//! up three cycles later). So a stream of hits is answered **one per clock**, and each miss
-//! occupies the pipeline for `T_c + 5` cycles (two more than with a one-clock read and an
-//! unregistered compare, the price of a 150 MHz clock). The host sees at most one request
-//! outstanding.
+//! A stream of hits is answered **one per clock**; lookups go on behind a miss, so the host
+//! gets the next miss's request while it serves the first (up to [`MISSES`] outstanding), and a
+//! host serving one load per `T_c` cycles is kept busy: a stream with `m` misses takes about
+//! `max(m·T_c, requests)` cycles plus the latency. A request for the id of a miss still
+//! outstanding waits for that miss's fill (a rewind costs [`model::REWIND_DELAY`] cycles per
+//! try). [`model::schedule`] gives the exact lookup, host request and response cycles of any
+//! stream.
 //!
 //! # Model
 //!
 //! [`model::Cache`]: the direct-mapped cache state, `access(id) → hit?`. For any request
 //! stream the RTL's hit/miss sequence equals the model's, its host requests are exactly the
 //! missed ids in order, and the responses carry the host memory's coordinates of the requested
-//! ids in request order. [`model::schedule`] gives the exact lookup, host request and response
-//! cycles from the request cycles, the hit/miss sequence and `T_c`.
+//! ids in request order. [`model::schedule`] steps the RTL's control on plain values and gives
+//! the exact lookup, host request and response cycles from the request cycles and ids, the
+//! hit/miss sequence and `T_c`.
 
-use crate::prim::{bram_out_tile_width, Bram, BramOut};
+use crate::prim::{bram_out_tile_width, Bram, BramOut, FifoControl, FifoRam};
 use rust_hdl::prelude::*;
 
 /// Address width of the cache lanes: at most `2^CACHE_BITS` lines.
@@ -122,6 +139,10 @@ pub const LINES: usize = 1 << CACHE_BITS;
 pub const QUEUE_DEPTH: usize = 16;
 /// Address width of the request queue: `2^QUEUE_BITS == QUEUE_DEPTH`.
 pub const QUEUE_BITS: usize = 4;
+/// The most misses outstanding (accepted, not yet answered): the miss table's entries.
+pub const MISSES: usize = 4;
+/// Address width of the return queue: `2^MISS_BITS == MISSES`.
+pub const MISS_BITS: usize = 2;
 
 /// The behavioural model of the patch cache: its state, and its exact timing.
 pub mod model {
@@ -129,17 +150,19 @@ pub mod model {
 
     /// Cycles from a request (`req` high) to its lookup, in an idle block.
     pub const LOOKUP_DELAY: u64 = 5;
-    /// Cycles from a request to its response when it hits, in an idle block: the response
-    /// register after the lookup.
-    pub const HIT_LATENCY: u64 = LOOKUP_DELAY + 1;
+    /// Cycles from a request to its response when it hits, in an idle block: the answer queue
+    /// (two clocks from its push to its head) and the response register after the lookup.
+    pub const HIT_LATENCY: u64 = LOOKUP_DELAY + 3;
+    /// Cycles from a request to its host request when it misses, in an idle block.
+    pub const HOST_REQUEST_DELAY: u64 = LOOKUP_DELAY + 1;
     /// Cycles from a request to its response beyond the host's `T_c` when it misses, in an idle
     /// block: the response comes `T_c + MISS_OVERHEAD` cycles after the request (the host
-    /// request one cycle after the lookup, the response register one after the fill).
-    pub const MISS_OVERHEAD: u64 = LOOKUP_DELAY + 2;
-    /// Cycles from a miss's lookup, beyond the host's `T_c`, to the next lookup: the host
-    /// request (1), the fill, then the next request's read is issued again (1), takes the lanes'
-    /// two read registers (2) and its compare's register (1).
-    pub const MISS_RESTART: u64 = 5;
+    /// request one cycle after the lookup, the return queue's two clocks, the response
+    /// register).
+    pub const MISS_OVERHEAD: u64 = LOOKUP_DELAY + 4;
+    /// Cycles from a lookup that is not accepted (its line may be stale, or the miss table is
+    /// full) to its next lookup: it is read again from the request queue and passes S1 and S2.
+    pub const REWIND_DELAY: u64 = 4;
 
     /// The mask for `lines` lines (a power of two, 1 … [`LINES`]), or `None`.
     pub fn mask_for(lines: usize) -> Option<u16> {
@@ -206,7 +229,7 @@ pub mod model {
     /// When one request is processed by the RTL.
     #[derive(Clone, Copy, Debug, PartialEq, Eq)]
     pub struct RequestTiming {
-        /// The cycle it is in the lookup stage (S3).
+        /// The cycle it is accepted in the lookup stage (S3).
         pub lookup: u64,
         /// The cycle of its host request (`mem_req`), on a miss.
         pub host_request: Option<u64>,
@@ -214,29 +237,118 @@ pub mod model {
         pub response: u64,
     }
 
+    /// One request of a stream for [`schedule`].
+    #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+    pub struct Request {
+        /// The cycle it is seen (`req` high); strictly increasing along the stream.
+        pub cycle: u64,
+        /// Its patch id.
+        pub id: u16,
+        /// Whether it hits ([`Cache::access`] in stream order).
+        pub hit: bool,
+    }
+
     /// The exact cycles of a request stream through the enabled RTL, from power-up or from an
-    /// idle block (the stream's first request comes no earlier than the cycle in which the
-    /// last earlier request was answered): request `k` is seen in cycle `requests[k].0`
-    /// (strictly increasing) and hits when `requests[k].1`; the host answers each request `tc`
-    /// cycles after it (it serves only this cache, which keeps at most one request
-    /// outstanding). `b_k = max(a_k + LOOKUP_DELAY, f_{k−1})`, `f_k = b_k + 1` after a hit and
-    /// `b_k + tc + MISS_RESTART` after a miss; a hit is answered in `b_k + 1`, a miss requested
-    /// from the host in `b_k + 1` and answered in `b_k + tc + 2`.
-    pub fn schedule(requests: &[(u64, bool)], tc: u64) -> Vec<RequestTiming> {
-        let mut free = 0u64;
-        requests
-            .iter()
-            .map(|&(a, hit)| {
-                let lookup = (a + LOOKUP_DELAY).max(free);
-                if hit {
-                    free = lookup + 1;
-                    RequestTiming { lookup, host_request: None, response: lookup + 1 }
-                } else {
-                    free = lookup + tc + MISS_RESTART;
-                    RequestTiming { lookup, host_request: Some(lookup + 1), response: lookup + tc + 2 }
+    /// idle block, with a host that serves its requests in order, one at a time, `tc` cycles
+    /// each (`testbench::memory::HostMemory`: request `k`, made in cycle `r_k`, is answered in
+    /// `e_k = max(r_k, e_{k−1}) + tc`). The RTL's control stepped on plain values, cycle by
+    /// cycle, register by register:
+    ///
+    /// * the request queue is read one request ahead (Q); the request read moves to S1, S2
+    ///   and S3 one stage per cycle;
+    /// * S3 accepts its request unless its own id may be on its way into its line (computed in
+    ///   S1 and S2: a miss to the same id not yet filled, or filled since its read)
+    ///   or the miss table holds [`super::MISSES`] misses; otherwise S3 rewinds (S1 and S2
+    ///   void, Q reads the request again);
+    /// * an accepted request enters the answer queue (at its head two cycles later); a miss
+    ///   enters the table and is requested from the host in the next cycle; the host's answer
+    ///   enters the return queue (at its head two cycles later);
+    /// * the head of the answer queue is answered (`resp_valid` in the next cycle) when it is a
+    ///   hit or its patch is at the head of the return queue; a miss then fills its line and
+    ///   leaves the table.
+    pub fn schedule(requests: &[Request], tc: u64) -> Vec<RequestTiming> {
+        use std::collections::VecDeque;
+        let n = requests.len();
+        let mut out: Vec<RequestTiming> =
+            vec![RequestTiming { lookup: 0, host_request: None, response: 0 }; n];
+        let (mut sp, mut rd, mut q_valid) = (0usize, 0usize, false);
+        let (mut s1, mut s2, mut s3): (Option<usize>, Option<usize>, Option<usize>) = (None, None, None);
+        let mut conf3 = false;
+        // The ids of the misses accepted and not yet filled.
+        let mut table: VecDeque<u16> = VecDeque::new();
+        let (mut f1, mut f2): (Option<u16>, Option<u16>) = (None, None);
+        // (request, cycle pushed) of the answer queue; (cycle pushed) of the return queue.
+        let mut answers: VecDeque<(usize, u64)> = VecDeque::new();
+        let mut returns: VecDeque<u64> = VecDeque::new();
+        // Host answers still to come: their cycles.
+        let mut host: VecDeque<u64> = VecDeque::new();
+        let mut last_answer = 0u64;
+        let mut answered = 0usize;
+        let start = requests.first().map_or(0, |r| r.cycle);
+        let mut t = start;
+        while answered < n {
+            assert!(t - start <= (n as u64 + 1) * (tc + 64) + 1024, "the cache model stalled at cycle {t}");
+            // Requests written into the queue before this cycle's edge.
+            let written = requests.iter().take_while(|r| r.cycle < t).count();
+            // S3.
+            let rewind = s3.is_some() && (conf3 || table.len() == super::MISSES);
+            let accept = if rewind { None } else { s3 };
+            // S2's staleness check, for S3 next cycle.
+            let conflict = s2.is_some_and(|k| {
+                let id = requests[k].id;
+                table.contains(&id)
+                    || f1 == Some(id)
+                    || f2 == Some(id)
+                    || s3.is_some_and(|j| !requests[j].hit && requests[j].id == id)
+            });
+            // The answer stage.
+            let head = answers.front().filter(|&&(_, pushed)| pushed + 2 <= t).map(|&(k, _)| k);
+            let ret_ready = returns.front().is_some_and(|&pushed| pushed + 2 <= t);
+            let answer = head.filter(|&k| requests[k].hit || ret_ready);
+            let fill = answer.filter(|&k| !requests[k].hit).map(|k| requests[k].id);
+            // The host's answer presented in this cycle enters the return queue.
+            if host.front() == Some(&t) {
+                host.pop_front();
+                returns.push_back(t);
+            }
+            // The edge.
+            if let Some(k) = answer {
+                answers.pop_front();
+                out[k].response = t + 1;
+                answered += 1;
+            }
+            if fill.is_some() {
+                returns.pop_front();
+                table.pop_front();
+            }
+            (f2, f1) = (f1, fill);
+            if let Some(k) = accept {
+                out[k].lookup = t;
+                answers.push_back((k, t));
+                rd += 1;
+                if !requests[k].hit {
+                    table.push_back(requests[k].id);
+                    let r = t + 1;
+                    out[k].host_request = Some(r);
+                    last_answer = r.max(last_answer) + tc;
+                    host.push_back(last_answer);
                 }
-            })
-            .collect()
+            }
+            let issue = q_valid && !rewind;
+            let next = if rewind {
+                rd
+            } else if issue {
+                sp + 1
+            } else {
+                sp
+            };
+            (s3, s2, s1) = if rewind { (None, None, None) } else { (s2, s1, issue.then_some(sp)) };
+            conf3 = conflict;
+            sp = next;
+            q_valid = sp < written;
+            t += 1;
+        }
+        out
     }
 
     /// Cycles (rising edges) from cycle 0 until the last response of `n` hits requested back to
@@ -281,7 +393,7 @@ pub struct PatchCache {
     // Request queue: five-bit pointers (slot = low four bits), so that full and empty differ.
     q_lane: Bram<16, QUEUE_BITS>,
     wr_ptr: DFF<Bits<5>>,
-    /// The oldest request not yet answered.
+    /// The oldest request not yet accepted by the lookup (S3).
     rd_ptr: DFF<Bits<5>>,
     /// The request whose id is at the queue lane's read register (stage Q).
     sp: DFF<Bits<5>>,
@@ -303,7 +415,6 @@ pub struct PatchCache {
     // Stage S3 (lookup): S2's request, its tag compare and its line's words, registered.
     v3: DFF<bool>,
     id3: DFF<Bits<16>>,
-    key3: DFF<Bits<17>>,
     line3: DFF<Bits<12>>,
     /// The tag compare by 4-bit slices of the tag (on ECP5 one per `DP16KD` tile), each
     /// registered: bits 0–3, 4–7, 8–11, 12–15 and 16.
@@ -312,20 +423,72 @@ pub struct PatchCache {
     match3_2: DFF<bool>,
     match3_3: DFF<bool>,
     match3_4: DFF<bool>,
+    /// S3's line may be stale: a miss to it was outstanding when S3's request read the lanes
+    /// (`lconf3`); one of those misses was S3's own id (`iconf3`).
+    lconf3: DFF<bool>,
+    iconf3: DFF<bool>,
     ax3: DFF<Bits<17>>,
     ay3: DFF<Bits<17>>,
     bx3: DFF<Bits<17>>,
     by3: DFF<Bits<17>>,
-    // W: a miss waiting for the host, its id, key and line.
-    w_valid: DFF<bool>,
-    w_id: DFF<Bits<16>>,
-    w_key: DFF<Bits<17>>,
-    w_line: DFF<Bits<12>>,
+    // The miss table: the ids and lines of the misses accepted and not yet filled, oldest at
+    // `t_rp`.
+    t_id0: DFF<Bits<16>>,
+    t_id1: DFF<Bits<16>>,
+    t_id2: DFF<Bits<16>>,
+    t_id3: DFF<Bits<16>>,
+    t_line0: DFF<Bits<12>>,
+    t_line1: DFF<Bits<12>>,
+    t_line2: DFF<Bits<12>>,
+    t_line3: DFF<Bits<12>>,
+    t_v0: DFF<bool>,
+    t_v1: DFF<bool>,
+    t_v2: DFF<bool>,
+    t_v3: DFF<bool>,
+    t_wp: DFF<Bits<2>>,
+    t_rp: DFF<Bits<2>>,
+    /// The id and line filled in the last cycle (out of the table, maybe not yet seen by a read).
+    f_id1: DFF<Bits<16>>,
+    f_line1: DFF<Bits<12>>,
+    f_v1: DFF<bool>,
+    /// The staleness check's compares, made in S1 and registered into S2, against each source
+    /// of a fill S1's request may not have read: the table's four entries, the last fill,
+    /// S3's request if a miss, and S2's (a miss or not is known a cycle later). `mi*`: the
+    /// same id; `ml*`: the same line.
+    mi0: DFF<bool>,
+    mi1: DFF<bool>,
+    mi2: DFF<bool>,
+    mi3: DFF<bool>,
+    mif: DFF<bool>,
+    mis3: DFF<bool>,
+    mis2: DFF<bool>,
+    ml0: DFF<bool>,
+    ml1: DFF<bool>,
+    ml2: DFF<bool>,
+    ml3: DFF<bool>,
+    mlf: DFF<bool>,
+    mls3: DFF<bool>,
+    mls2: DFF<bool>,
+    // The answer queue: every accepted request in order; a hit with its words, a miss with
+    // its id and line ({miss, line, id} in the meta lane).
+    ans: FifoControl<QUEUE_BITS, 5>,
+    ans_ax: FifoRam<17, QUEUE_BITS>,
+    ans_ay: FifoRam<17, QUEUE_BITS>,
+    ans_bx: FifoRam<17, QUEUE_BITS>,
+    ans_by: FifoRam<17, QUEUE_BITS>,
+    ans_meta: FifoRam<29, QUEUE_BITS>,
+    // The host's answers to the misses, in order, until their turn comes.
+    ret: FifoControl<MISS_BITS, 3>,
+    ret_ax: FifoRam<17, MISS_BITS>,
+    ret_ay: FifoRam<17, MISS_BITS>,
+    ret_bx: FifoRam<17, MISS_BITS>,
+    ret_by: FifoRam<17, MISS_BITS>,
     // Flush: on, and the line being cleared.
     fl_on: DFF<bool>,
     fl_line: DFF<Bits<12>>,
     // Registered outputs.
     mreq: DFF<bool>,
+    maddr: DFF<Bits<16>>,
     rv: DFF<bool>,
     rax: DFF<Bits<17>>,
     ray: DFF<Bits<17>>,
@@ -344,10 +507,24 @@ pub struct PatchCache {
     // Combinational.
     push: Signal<Local, bool>,
     issue: Signal<Local, bool>,
+    table_full: Signal<Local, bool>,
+    ret_push: Signal<Local, bool>,
+    waiting_any: Signal<Local, bool>,
+    rewind: Signal<Local, bool>,
+    accept: Signal<Local, bool>,
     tag_hit: Signal<Local, bool>,
     hit: Signal<Local, bool>,
     miss: Signal<Local, bool>,
+    line_conflict: Signal<Local, bool>,
+    id_conflict: Signal<Local, bool>,
+    miss3: Signal<Local, bool>,
+    head_id_fill: Signal<Local, Bits<16>>,
+    head_miss: Signal<Local, bool>,
+    answer: Signal<Local, bool>,
     fill: Signal<Local, bool>,
+    meta_in: Signal<Local, Bits<29>>,
+    head_key_fill: Signal<Local, Bits<17>>,
+    head_line_fill: Signal<Local, Bits<12>>,
     wr_inc: Signal<Local, Bits<5>>,
     rd_inc: Signal<Local, Bits<5>>,
     rd_next: Signal<Local, Bits<5>>,
@@ -360,7 +537,6 @@ pub struct PatchCache {
     ne_sp: Signal<Local, bool>,
     ne_sp_inc: Signal<Local, bool>,
     ne_rd: Signal<Local, bool>,
-    ne_rd_inc: Signal<Local, bool>,
     read_new: Signal<Local, bool>,
     head_low: Signal<Local, Bits<12>>,
     head_line: Signal<Local, Bits<12>>,
@@ -368,11 +544,19 @@ pub struct PatchCache {
     hit_inc: Signal<Local, Bits<32>>,
     miss_inc: Signal<Local, Bits<32>>,
     fl_inc: Signal<Local, Bits<12>>,
+    t_wp_inc: Signal<Local, Bits<2>>,
+    t_rp_inc: Signal<Local, Bits<2>>,
     // Constants.
     valid_flag: Constant<Bits<17>>,
+    miss_flag: Constant<Bits<29>>,
     one5: Constant<Bits<5>>,
     one32: Constant<Bits<32>>,
     one12: Constant<Bits<12>>,
+    one2: Constant<Bits<2>>,
+    slot0: Constant<Bits<2>>,
+    slot1: Constant<Bits<2>>,
+    slot2: Constant<Bits<2>>,
+    slot3: Constant<Bits<2>>,
     last_line: Constant<Bits<12>>,
     zero12: Constant<Bits<12>>,
     zero17: Constant<Bits<17>>,
@@ -381,6 +565,7 @@ pub struct PatchCache {
 impl Default for PatchCache {
     fn default() -> Self {
         assert_eq!(1 << QUEUE_BITS, QUEUE_DEPTH);
+        assert_eq!(1 << MISS_BITS, MISSES);
         assert_eq!(bram_out_tile_width(CACHE_BITS), 4, "the tag compare's slices are the tag's DP16KD tiles");
         PatchCache {
             clock: Default::default(),
@@ -421,24 +606,64 @@ impl Default for PatchCache {
             line2: Default::default(),
             v3: Default::default(),
             id3: Default::default(),
-            key3: Default::default(),
             line3: Default::default(),
             match3_0: Default::default(),
             match3_1: Default::default(),
             match3_2: Default::default(),
             match3_3: Default::default(),
             match3_4: Default::default(),
+            lconf3: Default::default(),
+            iconf3: Default::default(),
             ax3: Default::default(),
             ay3: Default::default(),
             bx3: Default::default(),
             by3: Default::default(),
-            w_valid: Default::default(),
-            w_id: Default::default(),
-            w_key: Default::default(),
-            w_line: Default::default(),
+            t_id0: Default::default(),
+            t_id1: Default::default(),
+            t_id2: Default::default(),
+            t_id3: Default::default(),
+            t_line0: Default::default(),
+            t_line1: Default::default(),
+            t_line2: Default::default(),
+            t_line3: Default::default(),
+            t_v0: Default::default(),
+            t_v1: Default::default(),
+            t_v2: Default::default(),
+            t_v3: Default::default(),
+            t_wp: Default::default(),
+            t_rp: Default::default(),
+            f_id1: Default::default(),
+            f_line1: Default::default(),
+            f_v1: Default::default(),
+            mi0: Default::default(),
+            mi1: Default::default(),
+            mi2: Default::default(),
+            mi3: Default::default(),
+            mif: Default::default(),
+            mis3: Default::default(),
+            mis2: Default::default(),
+            ml0: Default::default(),
+            ml1: Default::default(),
+            ml2: Default::default(),
+            ml3: Default::default(),
+            mlf: Default::default(),
+            mls3: Default::default(),
+            mls2: Default::default(),
+            ans: Default::default(),
+            ans_ax: Default::default(),
+            ans_ay: Default::default(),
+            ans_bx: Default::default(),
+            ans_by: Default::default(),
+            ans_meta: Default::default(),
+            ret: Default::default(),
+            ret_ax: Default::default(),
+            ret_ay: Default::default(),
+            ret_bx: Default::default(),
+            ret_by: Default::default(),
             fl_on: Default::default(),
             fl_line: Default::default(),
             mreq: Default::default(),
+            maddr: Default::default(),
             rv: Default::default(),
             rax: Default::default(),
             ray: Default::default(),
@@ -454,10 +679,24 @@ impl Default for PatchCache {
             lane_by: Default::default(),
             push: Default::default(),
             issue: Default::default(),
+            table_full: Default::default(),
+            ret_push: Default::default(),
+            waiting_any: Default::default(),
+            rewind: Default::default(),
+            accept: Default::default(),
             tag_hit: Default::default(),
             hit: Default::default(),
             miss: Default::default(),
+            line_conflict: Default::default(),
+            id_conflict: Default::default(),
+            miss3: Default::default(),
+            head_id_fill: Default::default(),
+            head_miss: Default::default(),
+            answer: Default::default(),
             fill: Default::default(),
+            meta_in: Default::default(),
+            head_key_fill: Default::default(),
+            head_line_fill: Default::default(),
             wr_inc: Default::default(),
             rd_inc: Default::default(),
             rd_next: Default::default(),
@@ -470,7 +709,6 @@ impl Default for PatchCache {
             ne_sp: Default::default(),
             ne_sp_inc: Default::default(),
             ne_rd: Default::default(),
-            ne_rd_inc: Default::default(),
             read_new: Default::default(),
             head_low: Default::default(),
             head_line: Default::default(),
@@ -478,26 +716,37 @@ impl Default for PatchCache {
             hit_inc: Default::default(),
             miss_inc: Default::default(),
             fl_inc: Default::default(),
+            t_wp_inc: Default::default(),
+            t_rp_inc: Default::default(),
             valid_flag: Constant::new(0x1_0000u64.into()),
+            miss_flag: Constant::new((1u64 << 28).into()),
             one5: Constant::new(1.into()),
             one32: Constant::new(1.into()),
             one12: Constant::new(1.into()),
+            one2: Constant::new(1.into()),
+            slot0: Constant::new(0.into()),
+            slot1: Constant::new(1.into()),
+            slot2: Constant::new(2.into()),
+            slot3: Constant::new(3.into()),
             last_line: Constant::new(((LINES - 1) as u64).into()),
             zero12: Constant::new(0.into()),
             zero17: Constant::new(0.into()),
         }
     }
 }
-
 impl PatchCache {
-    /// Requests held in the queue (not yet answered), `0..=QUEUE_DEPTH`: for testbenches.
+    /// Requests taken and not yet answered (in the request queue or the answer queue),
+    /// `0..=QUEUE_DEPTH`: for testbenches.
     pub fn queued(&self) -> usize {
-        (self.wr_ptr.q.val().index().wrapping_sub(self.rd_ptr.q.val().index())) % (2 * QUEUE_DEPTH)
+        let in_queue =
+            (self.wr_ptr.q.val().index().wrapping_sub(self.rd_ptr.q.val().index())) % (2 * QUEUE_DEPTH);
+        in_queue + self.ans.count.val().index()
     }
 
-    /// Whether a miss is waiting for the host: for testbenches.
-    pub fn waiting(&self) -> bool {
-        self.w_valid.q.val()
+    /// Misses accepted and not yet answered (waiting for the host or for their turn): for
+    /// testbenches.
+    pub fn waiting(&self) -> usize {
+        [&self.t_v0, &self.t_v1, &self.t_v2, &self.t_v3].iter().filter(|v| v.q.val()).count()
     }
 }
 
@@ -506,9 +755,11 @@ impl Logic for PatchCache {
     fn update(&mut self) {
         dff_setup!(
             self, clock, wr_ptr, rd_ptr, sp, rd_inc_x, sp_inc_x, q_valid, v1, id1, key1, line1, v2, id2,
-            key2, line2, v3, id3, key3, line3, match3_0, match3_1, match3_2, match3_3, match3_4, ax3, ay3,
-            bx3, by3, w_valid, w_id, w_key, w_line, fl_on, fl_line, mreq, rv, rax, ray, rbx, rby, hit_count,
-            miss_count, hit_r
+            key2, line2, v3, id3, line3, match3_0, match3_1, match3_2, match3_3, match3_4, lconf3, iconf3,
+            ax3, ay3, bx3, by3, t_id0, t_id1, t_id2, t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1,
+            t_v2, t_v3, t_wp, t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2,
+            ml3, mlf, mls3, mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count,
+            hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -516,6 +767,17 @@ impl Logic for PatchCache {
         self.lane_ay.clock.next = self.clock.val();
         self.lane_bx.clock.next = self.clock.val();
         self.lane_by.clock.next = self.clock.val();
+        self.ans.clock.next = self.clock.val();
+        self.ans_ax.clock.next = self.clock.val();
+        self.ans_ay.clock.next = self.clock.val();
+        self.ans_bx.clock.next = self.clock.val();
+        self.ans_by.clock.next = self.clock.val();
+        self.ans_meta.clock.next = self.clock.val();
+        self.ret.clock.next = self.clock.val();
+        self.ret_ax.clock.next = self.clock.val();
+        self.ret_ay.clock.next = self.clock.val();
+        self.ret_bx.clock.next = self.clock.val();
+        self.ret_by.clock.next = self.clock.val();
 
         // Pointer and counter arithmetic, each at its exact width.
         self.wr_inc.next = self.wr_ptr.q.val() + self.one5.val();
@@ -525,12 +787,31 @@ impl Logic for PatchCache {
         self.sp_inc2.next = self.sp_inc.val() + self.one5.val();
         self.hit_inc.next = self.hit_count.q.val() + self.one32.val();
         self.miss_inc.next = self.miss_count.q.val() + self.one32.val();
+        self.t_wp_inc.next = self.t_wp.q.val() + self.one2.val();
+        self.t_rp_inc.next = self.t_rp.q.val() + self.one2.val();
 
-        // S2: the lanes' output registers hold the line of S2's id. While a miss waits, every
-        // lookup in flight is void (it is issued again after the fill).
-        self.v3.d.next = self.v2.q.val() & !self.w_valid.q.val();
+        // S3: the lookup, from registers only. A request whose own id may be on its way into its
+        // line (`iconf3`), or any request while the miss table is full, is not accepted: the
+        // lookups are rewound to it (it and the two behind it are void, and it is read again
+        // from the queue). Neither condition depends on the tag compare, so the compare reaches
+        // no pointer. A request whose line is on its way to another id (`lconf3` only) is a
+        // miss whatever the stale tag says.
+        self.table_full.next = self.t_v0.q.val() & self.t_v1.q.val() & self.t_v2.q.val() & self.t_v3.q.val();
+        self.waiting_any.next = self.t_v0.q.val() | self.t_v1.q.val() | self.t_v2.q.val() | self.t_v3.q.val();
+        self.rewind.next = self.v3.q.val() & (self.iconf3.q.val() | self.table_full.val());
+        self.accept.next = self.v3.q.val() & !self.iconf3.q.val() & !self.table_full.val();
+        self.tag_hit.next = self.match3_0.q.val()
+            & self.match3_1.q.val()
+            & self.match3_2.q.val()
+            & self.match3_3.q.val()
+            & self.match3_4.q.val();
+        self.miss3.next = self.lconf3.q.val() | !self.tag_hit.val();
+        self.hit.next = self.accept.val() & !self.miss3.val();
+        self.miss.next = self.accept.val() & self.miss3.val();
+
+        // S2: the lanes' output registers hold the line of S2's id. Void while S3 rewinds.
+        self.v3.d.next = self.v2.q.val() & !self.rewind.val();
         self.id3.d.next = self.id2.q.val();
-        self.key3.d.next = self.key2.q.val();
         self.line3.d.next = self.line2.q.val();
         // The tag compare by slices, each registered: on ECP5 a slice is one DP16KD tile's
         // output, so each compare can sit next to its tile and only the registered bits
@@ -548,16 +829,45 @@ impl Logic for PatchCache {
         self.ay3.d.next = self.lane_ay.read_data.val();
         self.bx3.d.next = self.lane_bx.read_data.val();
         self.by3.d.next = self.lane_by.read_data.val();
-        // S3: the lookup, from registers only.
-        self.tag_hit.next = self.match3_0.q.val()
-            & self.match3_1.q.val()
-            & self.match3_2.q.val()
-            & self.match3_3.q.val()
-            & self.match3_4.q.val();
-        self.hit.next = self.v3.q.val() & !self.w_valid.q.val() & self.tag_hit.val();
-        self.miss.next = self.v3.q.val() & !self.w_valid.q.val() & !self.tag_hit.val();
-        // W: the host's answer to the miss.
-        self.fill.next = self.w_valid.q.val() & self.mem_valid.val();
+        // The staleness check. A request reads its line in Q, in cycle `c`; a fill of that line
+        // in `c` or later, for a miss ahead of it, is not in the words it read. In S1 (`c + 1`)
+        // such a miss is in the table (not filled by the last edge), or was filled in `c`
+        // (`f_*1`), or is S3's request, a miss (it enters the table at this edge), or S2's
+        // request, if that is a miss in S3 next cycle. The compares are made here, each
+        // registered, and combined in S2. If one of them is S2's own id, its patch is not in
+        // the line yet: the request must wait for it; if only the line matches, the newest of
+        // those misses holds the line in the model: the request is a miss.
+        self.mi0.d.next = self.t_v0.q.val() & (self.t_id0.q.val() == self.id1.q.val());
+        self.mi1.d.next = self.t_v1.q.val() & (self.t_id1.q.val() == self.id1.q.val());
+        self.mi2.d.next = self.t_v2.q.val() & (self.t_id2.q.val() == self.id1.q.val());
+        self.mi3.d.next = self.t_v3.q.val() & (self.t_id3.q.val() == self.id1.q.val());
+        self.mif.d.next = self.f_v1.q.val() & (self.f_id1.q.val() == self.id1.q.val());
+        self.mis3.d.next = self.v3.q.val() & self.miss3.val() & (self.id3.q.val() == self.id1.q.val());
+        self.mis2.d.next = self.v2.q.val() & (self.id2.q.val() == self.id1.q.val());
+        self.ml0.d.next = self.t_v0.q.val() & (self.t_line0.q.val() == self.line1.q.val());
+        self.ml1.d.next = self.t_v1.q.val() & (self.t_line1.q.val() == self.line1.q.val());
+        self.ml2.d.next = self.t_v2.q.val() & (self.t_line2.q.val() == self.line1.q.val());
+        self.ml3.d.next = self.t_v3.q.val() & (self.t_line3.q.val() == self.line1.q.val());
+        self.mlf.d.next = self.f_v1.q.val() & (self.f_line1.q.val() == self.line1.q.val());
+        self.mls3.d.next = self.v3.q.val() & self.miss3.val() & (self.line3.q.val() == self.line1.q.val());
+        self.mls2.d.next = self.v2.q.val() & (self.line2.q.val() == self.line1.q.val());
+        // S2: the compares combined (S3's request now was S2's then).
+        self.id_conflict.next = self.mi0.q.val()
+            | self.mi1.q.val()
+            | self.mi2.q.val()
+            | self.mi3.q.val()
+            | self.mif.q.val()
+            | self.mis3.q.val()
+            | (self.mis2.q.val() & self.v3.q.val() & self.miss3.val());
+        self.line_conflict.next = self.ml0.q.val()
+            | self.ml1.q.val()
+            | self.ml2.q.val()
+            | self.ml3.q.val()
+            | self.mlf.q.val()
+            | self.mls3.q.val()
+            | (self.mls2.q.val() & self.v3.q.val() & self.miss3.val());
+        self.lconf3.d.next = self.line_conflict.val();
+        self.iconf3.d.next = self.id_conflict.val();
 
         // Request queue: push at the tail.
         self.push.next = self.cfg_enable.val() & self.req.val();
@@ -567,27 +877,26 @@ impl Logic for PatchCache {
         if self.push.val() {
             self.wr_ptr.d.next = self.wr_inc.val();
         }
-        // A hit or a fill answers the oldest request.
+        // An accepted request leaves the request queue.
         self.rd_next.next = self.rd_ptr.q.val();
         self.rd_next_inc.next = self.rd_inc.val();
-        if self.hit.val() | self.fill.val() {
+        if self.accept.val() {
             self.rd_next.next = self.rd_inc.val();
             self.rd_next_inc.next = self.rd_inc2.val();
         }
         self.rd_ptr.d.next = self.rd_next.val();
         self.rd_inc_x.d.next = self.rd_next_inc.val() ^ self.one5.val();
 
-        // Q: issue the request at the queue lane's read register into S1, unless a miss waits;
-        // then read the next one. While a miss waits, read the oldest unanswered request: after
-        // the fill, the lookups start again from it.
+        // Q: issue the request at the queue lane's read register into S1, unless S3 rewinds;
+        // then read the next one. On a rewind, read the oldest request not accepted (S3's):
+        // the lookups start again from it.
         // The read is valid next cycle when its request was written before this edge (read
         // before write): each candidate is compared with wr_ptr beside the choice, so no
         // compare follows the pointer multiplexer.
-        self.issue.next = self.q_valid.q.val() & !self.w_valid.q.val();
+        self.issue.next = self.q_valid.q.val() & !self.rewind.val();
         self.ne_sp.next = self.sp.q.val() != self.wr_ptr.q.val();
         self.ne_sp_inc.next = self.sp_inc.val() != self.wr_ptr.q.val();
         self.ne_rd.next = self.rd_ptr.q.val() != self.wr_ptr.q.val();
-        self.ne_rd_inc.next = self.rd_inc.val() != self.wr_ptr.q.val();
         self.read_ptr.next = self.sp.q.val();
         self.read_inc.next = self.sp_inc.val();
         self.read_new.next = self.ne_sp.val();
@@ -596,17 +905,10 @@ impl Logic for PatchCache {
             self.read_inc.next = self.sp_inc2.val();
             self.read_new.next = self.ne_sp_inc.val();
         }
-        // (rd_next without the hit term: no hit while a miss waits. The tag compare must not
-        // reach the queue's pointers.)
-        if self.w_valid.q.val() {
+        if self.rewind.val() {
             self.read_ptr.next = self.rd_ptr.q.val();
             self.read_inc.next = self.rd_inc.val();
             self.read_new.next = self.ne_rd.val();
-            if self.mem_valid.val() {
-                self.read_ptr.next = self.rd_inc.val();
-                self.read_inc.next = self.rd_inc2.val();
-                self.read_new.next = self.ne_rd_inc.val();
-            }
         }
         self.sp.d.next = self.read_ptr.val();
         self.sp_inc_x.d.next = self.read_inc.val() ^ self.one5.val();
@@ -626,31 +928,167 @@ impl Logic for PatchCache {
         self.id1.d.next = self.q_lane.read_data.val();
         self.key1.d.next = self.head_key.val();
         self.line1.d.next = self.head_line.val();
-        self.v2.d.next = self.v1.q.val() & !self.w_valid.q.val();
+        self.v2.d.next = self.v1.q.val() & !self.rewind.val();
         self.id2.d.next = self.id1.q.val();
         self.key2.d.next = self.key1.q.val();
         self.line2.d.next = self.line1.q.val();
 
-        // A miss: request the patch (next cycle) and wait for it.
-        self.mreq.d.next = self.miss.val();
-        self.w_valid.d.next = (self.w_valid.q.val() & !self.mem_valid.val()) | self.miss.val();
-        if !self.w_valid.q.val() {
-            self.w_id.d.next = self.id3.q.val();
-            self.w_key.d.next = self.key3.q.val();
-            self.w_line.d.next = self.line3.q.val();
+        // S3 accepts: into the answer queue, a hit with its words, a miss with its id and line.
+        self.meta_in.next =
+            (bit_cast::<29, 12>(self.line3.q.val()) << 16) | bit_cast::<29, 16>(self.id3.q.val());
+        if self.miss3.val() {
+            self.meta_in.next = self.meta_in.val() | self.miss_flag.val();
         }
+        self.ans.push.next = self.accept.val();
+        self.ans_ax.write_data.next = self.ax3.q.val();
+        self.ans_ay.write_data.next = self.ay3.q.val();
+        self.ans_bx.write_data.next = self.bx3.q.val();
+        self.ans_by.write_data.next = self.by3.q.val();
+        self.ans_meta.write_data.next = self.meta_in.val();
+        // A miss: request the patch from the host (next cycle) and enter the table. The free
+        // entry at `t_wp` takes S3's id and line in every cycle (off the tag compare's path); a
+        // miss makes it valid.
+        self.mreq.d.next = self.miss.val();
+        self.maddr.d.next = self.id3.q.val();
+        if self.miss.val() {
+            self.t_wp.d.next = self.t_wp_inc.val();
+        }
+        if !self.t_v0.q.val() & (self.t_wp.q.val() == self.slot0.val()) {
+            self.t_id0.d.next = self.id3.q.val();
+            self.t_line0.d.next = self.line3.q.val();
+        }
+        if self.miss.val() & (self.t_wp.q.val() == self.slot0.val()) {
+            self.t_v0.d.next = true;
+        }
+        if !self.t_v1.q.val() & (self.t_wp.q.val() == self.slot1.val()) {
+            self.t_id1.d.next = self.id3.q.val();
+            self.t_line1.d.next = self.line3.q.val();
+        }
+        if self.miss.val() & (self.t_wp.q.val() == self.slot1.val()) {
+            self.t_v1.d.next = true;
+        }
+        if !self.t_v2.q.val() & (self.t_wp.q.val() == self.slot2.val()) {
+            self.t_id2.d.next = self.id3.q.val();
+            self.t_line2.d.next = self.line3.q.val();
+        }
+        if self.miss.val() & (self.t_wp.q.val() == self.slot2.val()) {
+            self.t_v2.d.next = true;
+        }
+        if !self.t_v3.q.val() & (self.t_wp.q.val() == self.slot3.val()) {
+            self.t_id3.d.next = self.id3.q.val();
+            self.t_line3.d.next = self.line3.q.val();
+        }
+        if self.miss.val() & (self.t_wp.q.val() == self.slot3.val()) {
+            self.t_v3.d.next = true;
+        }
+        // The host's answers wait in order for their turn (one ignored while no miss waits: a
+        // protocol violation).
+        self.ret_push.next = self.cfg_enable.val() & self.mem_valid.val() & self.waiting_any.val();
+        self.ret.push.next = self.ret_push.val();
+        self.ret_ax.write_data.next = self.mem_ax.val();
+        self.ret_ay.write_data.next = self.mem_ay.val();
+        self.ret_bx.write_data.next = self.mem_bx.val();
+        self.ret_by.write_data.next = self.mem_by.val();
+
+        // The answer: the head of the answer queue when it is a hit, or a miss whose patch has
+        // come; a miss's patch is written into its line (tag and data) as it is answered.
+        self.head_miss.next = self.ans_meta.read_data.val().get_bit(28);
+        self.answer.next = self.ans.valid.val() & (!self.head_miss.val() | self.ret.valid.val());
+        self.fill.next = self.answer.val() & self.head_miss.val();
+        self.ans.pop.next = self.answer.val();
+        self.ret.pop.next = self.fill.val();
+        self.rv.d.next = self.answer.val();
+        self.rax.d.next = self.ans_ax.read_data.val();
+        self.ray.d.next = self.ans_ay.read_data.val();
+        self.rbx.d.next = self.ans_bx.read_data.val();
+        self.rby.d.next = self.ans_by.read_data.val();
+        if self.head_miss.val() {
+            self.rax.d.next = self.ret_ax.read_data.val();
+            self.ray.d.next = self.ret_ay.read_data.val();
+            self.rbx.d.next = self.ret_bx.read_data.val();
+            self.rby.d.next = self.ret_by.read_data.val();
+        }
+        // The fill leaves the table (the oldest miss) and is remembered for two cycles.
+        if self.fill.val() {
+            self.t_rp.d.next = self.t_rp_inc.val();
+        }
+        if self.fill.val() & (self.t_rp.q.val() == self.slot0.val()) {
+            self.t_v0.d.next = false;
+        }
+        if self.fill.val() & (self.t_rp.q.val() == self.slot1.val()) {
+            self.t_v1.d.next = false;
+        }
+        if self.fill.val() & (self.t_rp.q.val() == self.slot2.val()) {
+            self.t_v2.d.next = false;
+        }
+        if self.fill.val() & (self.t_rp.q.val() == self.slot3.val()) {
+            self.t_v3.d.next = false;
+        }
+        self.head_line_fill.next = self.ans_meta.read_data.val().get_bits::<12>(16);
+        self.head_id_fill.next = self.ans_meta.read_data.val().get_bits::<16>(0);
+        self.head_key_fill.next = self.valid_flag.val() | bit_cast::<17, 16>(self.head_id_fill.val());
+        self.f_v1.d.next = self.fill.val();
+        self.f_id1.d.next = self.head_id_fill.val();
+        self.f_line1.d.next = self.head_line_fill.val();
+
+        // The answer and return queues' lanes.
+        self.ans_ax.write_address.next = self.ans.tail_address.val();
+        self.ans_ay.write_address.next = self.ans.tail_address.val();
+        self.ans_bx.write_address.next = self.ans.tail_address.val();
+        self.ans_by.write_address.next = self.ans.tail_address.val();
+        self.ans_meta.write_address.next = self.ans.tail_address.val();
+        self.ans_ax.write_enable.next = self.accept.val();
+        self.ans_ay.write_enable.next = self.accept.val();
+        self.ans_bx.write_enable.next = self.accept.val();
+        self.ans_by.write_enable.next = self.accept.val();
+        self.ans_meta.write_enable.next = self.accept.val();
+        self.ans_ax.head_address.next = self.ans.head_address.val();
+        self.ans_ay.head_address.next = self.ans.head_address.val();
+        self.ans_bx.head_address.next = self.ans.head_address.val();
+        self.ans_by.head_address.next = self.ans.head_address.val();
+        self.ans_meta.head_address.next = self.ans.head_address.val();
+        self.ans_ax.next_address.next = self.ans.next_address.val();
+        self.ans_ay.next_address.next = self.ans.next_address.val();
+        self.ans_bx.next_address.next = self.ans.next_address.val();
+        self.ans_by.next_address.next = self.ans.next_address.val();
+        self.ans_meta.next_address.next = self.ans.next_address.val();
+        self.ans_ax.pop.next = self.answer.val();
+        self.ans_ay.pop.next = self.answer.val();
+        self.ans_bx.pop.next = self.answer.val();
+        self.ans_by.pop.next = self.answer.val();
+        self.ans_meta.pop.next = self.answer.val();
+        self.ret_ax.write_address.next = self.ret.tail_address.val();
+        self.ret_ay.write_address.next = self.ret.tail_address.val();
+        self.ret_bx.write_address.next = self.ret.tail_address.val();
+        self.ret_by.write_address.next = self.ret.tail_address.val();
+        self.ret_ax.write_enable.next = self.ret_push.val();
+        self.ret_ay.write_enable.next = self.ret_push.val();
+        self.ret_bx.write_enable.next = self.ret_push.val();
+        self.ret_by.write_enable.next = self.ret_push.val();
+        self.ret_ax.head_address.next = self.ret.head_address.val();
+        self.ret_ay.head_address.next = self.ret.head_address.val();
+        self.ret_bx.head_address.next = self.ret.head_address.val();
+        self.ret_by.head_address.next = self.ret.head_address.val();
+        self.ret_ax.next_address.next = self.ret.next_address.val();
+        self.ret_ay.next_address.next = self.ret.next_address.val();
+        self.ret_bx.next_address.next = self.ret.next_address.val();
+        self.ret_by.next_address.next = self.ret.next_address.val();
+        self.ret_ax.pop.next = self.fill.val();
+        self.ret_ay.pop.next = self.fill.val();
+        self.ret_bx.pop.next = self.fill.val();
+        self.ret_by.pop.next = self.fill.val();
 
         // The fill: write the line, tag and data.
-        self.tag.write_address.next = self.w_line.q.val();
-        self.lane_ax.write_address.next = self.w_line.q.val();
-        self.lane_ay.write_address.next = self.w_line.q.val();
-        self.lane_bx.write_address.next = self.w_line.q.val();
-        self.lane_by.write_address.next = self.w_line.q.val();
-        self.tag.write_data.next = self.w_key.q.val();
-        self.lane_ax.write_data.next = self.mem_ax.val();
-        self.lane_ay.write_data.next = self.mem_ay.val();
-        self.lane_bx.write_data.next = self.mem_bx.val();
-        self.lane_by.write_data.next = self.mem_by.val();
+        self.tag.write_address.next = self.head_line_fill.val();
+        self.lane_ax.write_address.next = self.head_line_fill.val();
+        self.lane_ay.write_address.next = self.head_line_fill.val();
+        self.lane_bx.write_address.next = self.head_line_fill.val();
+        self.lane_by.write_address.next = self.head_line_fill.val();
+        self.tag.write_data.next = self.head_key_fill.val();
+        self.lane_ax.write_data.next = self.ret_ax.read_data.val();
+        self.lane_ay.write_data.next = self.ret_ay.read_data.val();
+        self.lane_bx.write_data.next = self.ret_bx.read_data.val();
+        self.lane_by.write_data.next = self.ret_by.read_data.val();
         self.tag.write_enable.next = self.fill.val();
         // The flush: clear one tag per cycle, line 0 to the last (no fill can be pending).
         self.fl_inc.next = self.fl_line.q.val() + self.one12.val();
@@ -673,22 +1111,6 @@ impl Logic for PatchCache {
         self.lane_bx.write_enable.next = self.fill.val();
         self.lane_by.write_enable.next = self.fill.val();
 
-        // Responses: a hit from S3's words, a fill from the host. The data registers take S3's
-        // words whatever the tag said (fewer loads on the lookup); they matter only with `rv`.
-        self.rv.d.next = self.hit.val() | self.fill.val();
-        if self.v3.q.val() {
-            self.rax.d.next = self.ax3.q.val();
-            self.ray.d.next = self.ay3.q.val();
-            self.rbx.d.next = self.bx3.q.val();
-            self.rby.d.next = self.by3.q.val();
-        }
-        if self.w_valid.q.val() {
-            self.rax.d.next = self.mem_ax.val();
-            self.ray.d.next = self.mem_ay.val();
-            self.rbx.d.next = self.mem_bx.val();
-            self.rby.d.next = self.mem_by.val();
-        }
-
         // Counters, a cycle after the lookup (a miss's host request is that cycle's `mreq`).
         self.hit_r.d.next = self.hit.val();
         if self.hit_r.q.val() {
@@ -710,7 +1132,7 @@ impl Logic for PatchCache {
         self.resp_by.next = self.mem_by.val();
         if self.cfg_enable.val() {
             self.mem_req.next = self.mreq.q.val();
-            self.mem_addr.next = self.w_id.q.val();
+            self.mem_addr.next = self.maddr.q.val();
             self.resp_valid.next = self.rv.q.val();
             self.resp_ax.next = self.rax.q.val();
             self.resp_ay.next = self.ray.q.val();
@@ -742,17 +1164,31 @@ mod tests {
         assert_eq!(mask_for(12), None);
     }
 
+    fn stream(reqs: &[(u64, u16, bool)]) -> Vec<Request> {
+        reqs.iter().map(|&(cycle, id, hit)| Request { cycle, id, hit }).collect()
+    }
+
     #[test]
-    fn schedule_gives_one_hit_per_clock_and_t_c_plus_5_per_miss() {
-        let hits: Vec<(u64, bool)> = (0..5).map(|k| (k, true)).collect();
-        let s = schedule(&hits, 8);
-        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [6, 7, 8, 9, 10]);
-        assert_eq!(all_hit_cycles(5), 11);
-        let s = schedule(&[(0, false), (1, true), (2, false), (30, true)], 8);
-        assert_eq!(s[0], RequestTiming { lookup: 5, host_request: Some(6), response: 15 });
-        assert_eq!(s[1], RequestTiming { lookup: 18, host_request: None, response: 19 });
-        assert_eq!(s[2], RequestTiming { lookup: 19, host_request: Some(20), response: 29 });
-        assert_eq!(s[3], RequestTiming { lookup: 35, host_request: None, response: 36 });
+    fn schedule_gives_one_hit_per_clock_and_overlaps_misses() {
+        let hits: Vec<_> = (0..5).map(|k| (k, k as u16, true)).collect();
+        let s = schedule(&stream(&hits), 8);
+        assert_eq!(s.iter().map(|t| t.response).collect::<Vec<_>>(), [8, 9, 10, 11, 12]);
+        assert_eq!(all_hit_cycles(5), 13);
+        // Two misses in flight at once; the hit between them answered right after the first.
+        let s = schedule(&stream(&[(0, 1, false), (1, 2, true), (2, 3, false), (30, 4, true)]), 8);
+        assert_eq!(s[0], RequestTiming { lookup: 5, host_request: Some(6), response: 17 });
+        assert_eq!(s[1], RequestTiming { lookup: 6, host_request: None, response: 18 });
+        assert_eq!(s[2], RequestTiming { lookup: 7, host_request: Some(8), response: 25 });
+        assert_eq!(s[3], RequestTiming { lookup: 35, host_request: None, response: 38 });
+        // Another id of the same line does not wait: a miss (lookup 6), the host's next load.
+        let s = schedule(&stream(&[(0, 7, false), (1, 23, false)]), 8);
+        assert_eq!(s[1], RequestTiming { lookup: 6, host_request: Some(7), response: 25 });
+        // The same id twice: the second waits for the first's fill (in cycle 16): it is
+        // rewound in 6, 10, 14 (the miss in the table) and 18 (its read in 15 came before the
+        // fill), and accepted in 22.
+        let s = schedule(&stream(&[(0, 7, false), (1, 7, true)]), 8);
+        assert_eq!(s[0], RequestTiming { lookup: 5, host_request: Some(6), response: 17 });
+        assert_eq!(s[1], RequestTiming { lookup: 22, host_request: None, response: 25 });
     }
 
     /// A quick directed run: a miss, hits one per clock, then two ids that evict each other, at
@@ -766,16 +1202,16 @@ mod tests {
         let data = |id: u16| [id as u64, id as u64 + 1, id as u64 * 2, 0x1_FFFF - id as u64];
         let ids = [5u16, 5, 5, 5, 21, 5, 21];
         let mut cache = Cache::new(15);
-        let expect = schedule(
-            &ids.iter().enumerate().map(|(k, &id)| (k as u64, cache.access(id))).collect::<Vec<_>>(),
-            tc,
-        );
-        let mut inflight: Option<(u64, u16)> = None;
+        let reqs: Vec<_> = ids.iter().enumerate().map(|(k, &id)| (k as u64, id, cache.access(id))).collect();
+        let expect = schedule(&stream(&reqs), tc);
+        // The host: in order, one at a time, `tc` cycles each.
+        let mut host: std::collections::VecDeque<(u64, u16)> = Default::default();
+        let mut last = 0u64;
         let mut got = vec![];
-        for cycle in 0..40u64 {
-            let answer = inflight.filter(|r| r.0 == cycle).map(|r| r.1);
+        for cycle in 0..60u64 {
+            let answer = host.front().filter(|r| r.0 == cycle).map(|r| r.1);
             if answer.is_some() {
-                inflight = None;
+                host.pop_front();
             }
             u.clock.next = false.into();
             u.cfg_enable.next = true;
@@ -791,8 +1227,8 @@ mod tests {
             u.mem_by.next = m[3].into();
             assert!(simulate(&mut u, 100));
             if u.mem_req.val() {
-                assert!(inflight.is_none());
-                inflight = Some((cycle + tc, u.mem_addr.val().to_u16()));
+                last = last.max(cycle) + tc;
+                host.push_back((last, u.mem_addr.val().to_u16()));
             }
             if u.resp_valid.val() {
                 let d =

@@ -246,7 +246,12 @@ impl Bench {
                 u.mem_valid.next = answer.is_some();
             })?;
             let u = self.drv.uut();
-            if answer.is_some() || u.resp_valid.val() || u.mem_req.val() || u.queued() != 0 || u.waiting() {
+            if answer.is_some()
+                || u.resp_valid.val()
+                || u.mem_req.val()
+                || u.queued() != 0
+                || u.waiting() != 0
+            {
                 return Err(Error::new(format!("cycle {cycle}: activity after the last response")));
             }
             self.presented = self.mem.cycle(None)?;
@@ -274,8 +279,13 @@ impl Bench {
                     ids.len()
                 )));
             }
-            let reqs: Vec<(u64, bool)> =
-                out.arrivals.iter().copied().zip(out.model_hits.iter().copied()).collect();
+            let reqs: Vec<model::Request> = out
+                .arrivals
+                .iter()
+                .zip(ids)
+                .zip(&out.model_hits)
+                .map(|((&cycle, &id), &hit)| model::Request { cycle, id, hit })
+                .collect();
             let timing = model::schedule(&reqs, tc);
             let responses: Vec<u64> = timing.iter().map(|t| t.response).collect();
             let host: Vec<u64> = timing.iter().filter_map(|t| t.host_request).collect();
@@ -414,8 +424,43 @@ fn a_stream_of_hits_is_answered_one_per_clock() -> Result<()> {
     Ok(())
 }
 
+/// Misses under misses: a back-to-back stream of misses to distinct lines, with hits between
+/// them, keeps the host busy: the host requests go out one per lookup, the host answers one
+/// every `T_c` cycles, and the run takes the host's time plus the pipeline's, not a miss's full
+/// latency per miss; every hit behind a miss is answered in the cycle after the one before it.
+#[test]
+fn misses_under_misses_keep_the_host_busy() -> Result<()> {
+    for tc in [4u32, 16, 64] {
+        let seed = 0xcac4_3333 + u64::from(tc);
+        let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
+        let cfg = Config::Lines(4096);
+        // Warm lines 0..8; then 8 rounds of a miss to a new line and a hit.
+        let warm: Vec<u16> = (0..8).collect();
+        bench.run(cfg, &warm, Pacing::NONE, seed, OUTSTANDING)?;
+        let ids: Vec<u16> = (0..8u16).flat_map(|k| [100 + k, k]).collect();
+        let out = bench.run(cfg, &ids, Pacing::NONE, seed, OUTSTANDING)?;
+        let misses = out.model_hits.iter().filter(|&&h| !h).count() as u64;
+        assert_eq!(misses, 8);
+        let tc = u64::from(tc);
+        let bound = misses * tc + model::MISS_OVERHEAD + model::LOOKUP_DELAY + 4;
+        assert!(
+            out.cycles <= bound,
+            "tc = {tc}: {} cycles for {misses} misses, more than the host's {} and the pipeline's",
+            out.cycles,
+            misses * tc
+        );
+        // More than one host request outstanding at once.
+        let answers = answer_cycles(&out.host_requests, tc);
+        assert!(
+            out.host_requests.iter().skip(1).zip(&answers).any(|(r, e)| r < e),
+            "tc = {tc}: one at a time"
+        );
+    }
+    Ok(())
+}
+
 /// Isolated requests (the block idle each time): a miss is answered `T_c + MISS_OVERHEAD`
-/// cycles after its request, its host request `HIT_LATENCY` cycles after it; a hit
+/// cycles after its request, its host request `HOST_REQUEST_DELAY` cycles after it; a hit
 /// `HIT_LATENCY` cycles after it. With the cache disabled a request is answered in `T_c`.
 #[test]
 fn isolated_requests_take_the_stated_latencies() -> Result<()> {
@@ -440,7 +485,7 @@ fn isolated_requests_take_the_stated_latencies() -> Result<()> {
                 assert_eq!(out.responses[0], a + model::HIT_LATENCY, "hit, tc = {tc}");
             } else {
                 assert!(!out.model_hits[0], "{id}");
-                assert_eq!(out.host_requests, [a + model::HIT_LATENCY], "miss, tc = {tc}");
+                assert_eq!(out.host_requests, [a + model::HOST_REQUEST_DELAY], "miss, tc = {tc}");
                 assert_eq!(out.responses[0], a + tc + model::MISS_OVERHEAD, "miss, tc = {tc}");
             }
         }
