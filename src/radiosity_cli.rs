@@ -626,6 +626,8 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         shells: super::d3_cli::polar_params(&a.tune)?,
     };
     let name = path.display().to_string();
+    // A scene that cannot be solved is refused before any row is traced.
+    rad3::check(&scene, &name)?;
     let n = scene.polygons.len();
     let solution = match a.solver {
         Solver::Progressive => {

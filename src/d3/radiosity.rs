@@ -14,9 +14,10 @@
 //!   rows computed, each once).
 //!
 //! A channel in which nothing emits has the solution 0 everywhere and takes no step; a scene in
-//! which nothing emits in any channel is an error ([`SolveError::NothingEmits`]). The scalar
-//! radiosity of a polygon ([`Solution3::mean`]) is the mean of its three channels, as the
-//! scene's scalar reflectance and emission are the means of `Kd` and `Ke`. (It is not the solve
+//! which nothing emits in any channel, with a `Kd` channel of 1 or whose emitted power
+//! overflows is an error, before any row is traced ([`check`]). The scalar radiosity of a
+//! polygon ([`Solution3::mean`]) is the mean of its three channels, as the scene's scalar
+//! reflectance and emission are the means of `Kd` and `Ke`. (It is not the solve
 //! with the mean reflectance: `B` is not linear in `ρ`.)
 
 use super::scene::Scene3;
@@ -88,13 +89,43 @@ fn dark(n: usize) -> Solution {
     }
 }
 
-/// The error of a scene where nothing emits in any channel, named `name`.
-fn check_emits(scene: &Scene3, name: &str) -> Result<[Surfaces; 3], SolveError> {
+/// The names of the channels in errors, in the order of [`CHANNELS`].
+const CHANNEL_NAMES: [&str; 3] = ["red", "green", "blue"];
+
+/// What the solvers know of `scene` (named `name` in errors) in each channel, or why it cannot
+/// be solved: nothing emits in any channel ([`SolveError::NothingEmits3`]); a material some
+/// polygon uses has a `Kd` channel of 1 or more ([`SolveError::ReflectsAll`]: the loader allows
+/// a channel of 1 when the mean is below 1, but that channel's light is never absorbed); a
+/// channel's emitted power is not finite ([`SolveError::NotFinite`]). The solvers call it
+/// first; a caller calls it before tracing any row, so that a bad scene costs no work.
+pub fn check(scene: &Scene3, name: &str) -> Result<[Surfaces; 3], SolveError> {
+    for p in &scene.polygons {
+        let m = &scene.materials[p.material];
+        if let Some(c) = (0..3).find(|&c| m.kd[c] >= 1.0 || m.kd[c].is_nan()) {
+            return Err(SolveError::ReflectsAll {
+                name: name.to_string(),
+                material: m.name.clone(),
+                channel: CHANNEL_NAMES[c],
+                kd: m.kd[c],
+            });
+        }
+    }
     let s = [0, 1, 2].map(|c| surfaces(scene, c));
+    if let Some(c) = (0..3).find(|&c| !s[c].emitted().is_finite()) {
+        return Err(SolveError::NotFinite { name: name.to_string(), channel: CHANNEL_NAMES[c] });
+    }
     if s.iter().all(|s| s.emitted() <= 0.0) {
-        return Err(SolveError::NothingEmits { name: name.to_string() });
+        return Err(SolveError::NothingEmits3 { name: name.to_string() });
     }
     Ok(s)
+}
+
+/// `solution`, or [`SolveError::NotFinite`] if a radiosity overflowed in some channel.
+fn finite(solution: Solution3, name: &str) -> Result<Solution3, SolveError> {
+    match (0..3).find(|&c| solution.channels[c].radiosity.iter().any(|b| !b.is_finite())) {
+        Some(c) => Err(SolveError::NotFinite { name: name.to_string(), channel: CHANNEL_NAMES[c] }),
+        None => Ok(solution),
+    }
 }
 
 /// The full solve of `scene` (named `name` in errors) over its whole form-factor matrix `rows`
@@ -107,13 +138,14 @@ pub fn full(
     max_steps: usize,
 ) -> Result<Solution3, SolveError> {
     solve::check_tolerance(tolerance)?;
-    let [r, g, b] = check_emits(scene, name)?;
+    let [r, g, b] = check(scene, name)?;
     let n = scene.polygons.len();
     let one = |s: &Surfaces| match s.emitted() > 0.0 {
         true => solve::full(s, rows, tolerance, max_steps),
         false => Ok(dark(n)),
     };
-    Ok(Solution3 { channels: [one(&r)?, one(&g)?, one(&b)?], rows: (0..rows.len()).collect() })
+    let solution = Solution3 { channels: [one(&r)?, one(&g)?, one(&b)?], rows: (0..rows.len()).collect() };
+    finite(solution, name)
 }
 
 /// Progressive refinement of `scene` (named `name` in errors) in each channel, until the unshot
@@ -127,7 +159,7 @@ pub fn progressive<E: From<SolveError>>(
     mut row: impl FnMut(usize) -> Result<Row, E>,
 ) -> Result<Solution3, E> {
     solve::check_tolerance(tolerance)?;
-    let surfaces = check_emits(scene, name)?;
+    let surfaces = check(scene, name)?;
     let n = scene.polygons.len();
     let mut kept: HashMap<usize, Row> = HashMap::new();
     let mut order = Vec::new();
@@ -147,7 +179,7 @@ pub fn progressive<E: From<SolveError>>(
     };
     let [r, g, b] = &surfaces;
     let channels = [solve(r)?, solve(g)?, solve(b)?];
-    Ok(Solution3 { channels, rows: order })
+    Ok(finite(Solution3 { channels, rows: order }, name)?)
 }
 
 /// The relative residual of the radiosity equation in every channel for `solution` against the

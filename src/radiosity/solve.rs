@@ -45,6 +45,22 @@ pub enum SolveError {
     NotConverged { steps: usize, left: f64 },
     #[error("the form-factor matrix has rows for {rows} patches, the scene has {patches}")]
     WrongSize { rows: usize, patches: usize },
+    #[error(
+        "{name}: nothing in the scene emits: every material's Ke is 0 in all three channels; \
+         give the material of at least one polygon a Ke above 0"
+    )]
+    NothingEmits3 { name: String },
+    #[error(
+        "{name}: material \"{material}\" has Kd {kd} in the {channel} channel; radiosity needs every \
+         channel of Kd below 1 (a surface of reflectance 1 absorbs nothing, so the light of a \
+         closed scene never dies out)"
+    )]
+    ReflectsAll { name: String, material: String, channel: &'static str, kd: f64 },
+    #[error(
+        "{name}: the power in the {channel} channel is not a finite number (Ke times the \
+         polygons' areas, or the radiosity it builds up, overflows f64); scale the scene or its Ke down"
+    )]
+    NotFinite { name: String, channel: &'static str },
 }
 
 /// The smallest tolerance accepted.
