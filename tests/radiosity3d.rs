@@ -314,7 +314,7 @@ fn energy_balances_in_every_channel_closed_and_open() {
 /// The residuals and the agreement of the two solvers on `t`; returns, per channel, the full
 /// solver's relative residual, progressive's against the shooting matrix, and the relative
 /// difference of the two solutions in power.
-fn residuals_and_agreement(t: &Traced, agree: f64) -> Vec<(f64, f64, f64)> {
+fn residuals_and_agreement(t: &Traced, agree: Option<f64>) -> Vec<(f64, f64, f64)> {
     let (full, progressive) = (t.full(), t.progressive());
     (0..3)
         .map(|c| {
@@ -349,7 +349,14 @@ fn residuals_and_agreement(t: &Traced, agree: f64) -> Vec<(f64, f64, f64)> {
                 t.name
             );
             let difference = power(t, &d) / power(t, bf);
-            assert!(difference <= agree, "{} channel {c}: the solvers differ by {difference:.3e}", t.name);
+            // The Cornell box's differ by its floor's reciprocity error (asserted elsewhere).
+            if let Some(agree) = agree {
+                assert!(
+                    difference <= agree,
+                    "{} channel {c}: the solvers differ by {difference:.3e}",
+                    t.name
+                );
+            }
             (full_residual, shot, difference)
         })
         .collect()
@@ -359,8 +366,9 @@ fn residuals_and_agreement(t: &Traced, agree: f64) -> Vec<(f64, f64, f64)> {
 fn both_solvers_solve_the_equation_and_agree() {
     // They differ by the tolerances and the rows' reciprocity error (Σ|ΔAF| / ΣAF, printed by
     // the reciprocity test): within 2e-3 of the power on the box room, 1e-2 on the open room's
-    // 1024 rays from 64 origins.
-    for (t, agree) in [(box_room(), 2e-3), (open_room(), 1e-2)] {
+    // 1024 rays from 64 origins. The Cornell box's polygons have areas far apart (the
+    // residuals weigh by them); its solutions differ by its floor's reciprocity error.
+    for (t, agree) in [(box_room(), Some(2e-3)), (open_room(), Some(1e-2)), (cornell(), None)] {
         for (c, (full, shot, difference)) in residuals_and_agreement(t, agree).into_iter().enumerate() {
             println!(
                 "{}, channel {c}: full residual {full:.2e}, progressive (shooting) residual \
