@@ -152,14 +152,14 @@ fn check_tune(tune: &TuneArgs) -> Result<()> {
 }
 
 /// The shell parameters of the 3D tracers: the defaults with `--phi-cells` (checked).
-fn polar_params(tune: &TuneArgs) -> Result<ShellParams> {
+pub fn polar_params(tune: &TuneArgs) -> Result<ShellParams> {
     let phi_cells = tune.phi_cells.unwrap_or(ShellParams::default().phi_cells);
     limits::check_range("--phi-cells", phi_cells, 1, limits::MAX_BUNDLE_RAYS).map_err(anyhow::Error::msg)?;
     Ok(ShellParams { phi_cells, ..ShellParams::default() })
 }
 
 /// Loads the OBJ scene and builds its grid (`--cells-per-segment` as λ, checked as in 2D).
-fn load(path: &Path, tune: &TuneArgs) -> Result<(Scene3, Grid3)> {
+pub fn load(path: &Path, tune: &TuneArgs) -> Result<(Scene3, Grid3)> {
     check_tune(tune)?;
     let scene = obj::load(path)?;
     limits::check_cells_per_segment("--cells-per-segment", tune.cells_per_segment, scene.polygons.len())
@@ -178,7 +178,8 @@ fn check_source(k: usize, scene: &Scene3) -> Result<()> {
     Ok(())
 }
 
-fn strata(set: RaySet) -> Strata {
+/// The hemisphere set of `--ray-set`: `sine` is the cosine-weighted set.
+pub fn strata(set: RaySet) -> Strata {
     match set {
         RaySet::Angle => Strata::Angle,
         RaySet::Sine => Strata::Cosine,

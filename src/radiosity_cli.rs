@@ -396,11 +396,10 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
             bail!("--clock-mhz must be a positive number up to 10000, got {}", a.clock_mhz);
         }
     }
-    if let Some(p) = a.scene.as_deref().filter(|p| super::d3_cli::is_3d(p).unwrap_or(false)) {
-        bail!(
-            "--scene {}: radiosity solves 2D scenes only so far (3D: form-factors --source K)",
-            p.display()
-        );
+    if let Some(p) = a.scene.as_deref() {
+        if super::d3_cli::is_3d(p)? {
+            return radiosity_3d(&a, p);
+        }
     }
     let (scene, name) = match &a.scene {
         Some(p) => (Scene::load(p)?, p.display().to_string()),
@@ -554,6 +553,157 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     }
     if let Some(path) = &a.svg {
         say!(out, "picture: {}", path.display());
+    }
+    out.flush()
+}
+
+#[derive(serde::Serialize)]
+struct PatchJson3 {
+    index: usize,
+    /// The mean of the three channels.
+    radiosity: f64,
+    rgb: [f64; 3],
+}
+
+#[derive(serde::Serialize)]
+struct ChannelJson {
+    channel: &'static str,
+    steps: usize,
+    unshot: f64,
+    emitted: f64,
+    absorbed: f64,
+    escaped: f64,
+}
+
+/// `radiosity --json` on an OBJ scene: the 2D shape (the scalar values the means over the
+/// channels, `steps` their sum, `unshot` their largest) with each polygon's `rgb`, the
+/// `escaped` power, the estimate's parameters and each channel's own figures.
+#[derive(serde::Serialize)]
+struct SolutionJson3 {
+    scene: String,
+    solver: Solver,
+    patches: Vec<PatchJson3>,
+    steps: usize,
+    unshot: f64,
+    emitted: f64,
+    absorbed: f64,
+    escaped: f64,
+    rows: usize,
+    rays: usize,
+    origins: usize,
+    ray_set: RaySet,
+    method: &'static str,
+    channels: Vec<ChannelJson>,
+}
+
+/// `radiosity` on an OBJ scene (RADIOSITY.md, "In 3D"): the 3D form factors of every polygon
+/// and the 2D solvers in each colour channel; the options of 2D scenes only refused by name.
+fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
+    use shelling::d3::form_factors::{self as ff3, Ff3Params};
+    use shelling::d3::radiosity::{self as rad3, CHANNELS};
+    use shelling::d3::trace::Method3;
+    let two_d = [
+        ("--on-pe", a.on_pe),
+        ("--matrix", a.matrix.is_some()),
+        ("--arith fixed", a.ff.arith != Arith::Float),
+        ("--svg", a.svg.is_some()),
+    ];
+    if let Some((option, _)) = two_d.iter().find(|(_, given)| *given) {
+        bail!("{option} belongs to 2D scenes: in 3D, radiosity traces every row with the 3D tracers in f64");
+    }
+    let method = super::d3_cli::MethodArg::three_d(a.ff.method.as_ref(), Method3::Conventional)?;
+    let rays = a.ff.rays.unwrap_or(ff3::DEFAULT_RAYS);
+    check_range("--rays", rays, 1, shelling::d3::hemisphere::MAX_HEMISPHERE_RAYS)
+        .map_err(anyhow::Error::msg)?;
+    let origins = a.ff.origins.unwrap_or(ff3::DEFAULT_ORIGINS);
+    check_range("--origins", origins, 1, MAX_ORIGINS).map_err(anyhow::Error::msg)?;
+    let (scene, grid) = super::d3_cli::load(path, &a.tune)?;
+    let params = Ff3Params {
+        rays,
+        origins,
+        strata: super::d3_cli::strata(a.ff.ray_set),
+        method,
+        shells: super::d3_cli::polar_params(&a.tune)?,
+    };
+    let name = path.display().to_string();
+    // A scene that cannot be solved is refused before any row is traced.
+    rad3::check(&scene, &name)?;
+    let n = scene.polygons.len();
+    let solution = match a.solver {
+        Solver::Progressive => {
+            let bar = progress_bar(n, "rows", a.quiet);
+            let s = rad3::progressive(&scene, &name, a.tolerance, a.max_steps, |k| {
+                let r = ff3::row(&scene, &grid, k, &params).map_err(anyhow::Error::from);
+                bar.inc(1);
+                r
+            });
+            bar.finish_and_clear();
+            s?
+        }
+        Solver::Full => {
+            let bar = progress_bar(n, "rows", a.quiet);
+            let rows = ff3::rows(&scene, &grid, 0..n, &params, || bar.inc(1));
+            bar.finish_and_clear();
+            rad3::full(&scene, &name, &rows?, a.tolerance, a.max_steps)?
+        }
+    };
+    let mut out = Out::new();
+    if a.json {
+        let json = SolutionJson3 {
+            scene: name,
+            solver: a.solver,
+            patches: (0..n)
+                .map(|j| PatchJson3 { index: j, radiosity: solution.mean(j), rgb: solution.rgb(j) })
+                .collect(),
+            steps: solution.steps(),
+            unshot: solution.unshot(),
+            emitted: solution.mean_of(|s| s.emitted),
+            absorbed: solution.mean_of(|s| s.absorbed),
+            escaped: solution.mean_of(|s| s.escaped),
+            rows: solution.rows.len(),
+            rays,
+            origins,
+            ray_set: a.ff.ray_set,
+            method: method.name(),
+            channels: CHANNELS
+                .iter()
+                .zip(&solution.channels)
+                .map(|(&channel, s)| ChannelJson {
+                    channel,
+                    steps: s.steps,
+                    unshot: s.unshot,
+                    emitted: s.emitted,
+                    absorbed: s.absorbed,
+                    escaped: s.escaped,
+                })
+                .collect(),
+        };
+        say!(out, "{}", serde_json::to_string_pretty(&json)?);
+        return out.flush();
+    }
+    say!(
+        out,
+        "{name}: {n} polygons, {} solver, {} steps, {} form-factor rows ({origins} origins × {rays} {} rays, {method})",
+        format!("{:?}", a.solver).to_lowercase(),
+        solution.steps(),
+        solution.rows.len(),
+        a.ff.ray_set,
+    );
+    for (c, s) in CHANNELS.iter().zip(&solution.channels) {
+        say!(
+            out,
+            "{c}: {} steps, left {:.3e}; emitted {:.6}, absorbed {:.6}, escaped {:.6}",
+            s.steps,
+            s.unshot,
+            s.emitted,
+            s.absorbed,
+            s.escaped
+        );
+    }
+    say!(out, "{:>8}{:>14}{:>14}{:>14}{:>14}", "polygon", "B", "r", "g", "b");
+    for j in 0..n {
+        let [r, g, b] = solution.rgb(j);
+        say!(out, "{j:>8}{:>14.6}{r:>14.6}{g:>14.6}{b:>14.6}", solution.mean(j));
     }
     out.flush()
 }

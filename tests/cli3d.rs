@@ -155,7 +155,8 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     f(&["--rows", "0..2", "--out", "x.json"], &["--rows", "2D"]);
     f(&["--source", "1", "--method", "deterministic"], &["--method deterministic", "2D"]);
     fails(&["cosim", "--scene", CORNELL, "--source", "1"], &["--scene", "3D", "2D"]);
-    fails(&["radiosity", "--scene", CORNELL], &["--scene", "2D scenes only"]);
+    fails(&["radiosity", "--scene", CORNELL, "--on-pe"], &["--on-pe", "2D scenes"]);
+    fails(&["radiosity", "--scene", CORNELL, "--origins", "0"], &["--origins", "between 1 and 4096"]);
     // And the other way: a 3D value on a 2D scene.
     let dir = TempDir::new("cli3d-2d");
     let scene = crate::cli::gen_scene(&dir, "s.json", 20, 32.0, 1);

@@ -10,6 +10,7 @@ mod grid3d;
 mod hardware;
 mod limits;
 mod radiosity;
+mod radiosity3d;
 mod replay;
 mod scene3d;
 mod scene_loader;

@@ -27,6 +27,7 @@
 //!   tracer with hits decided in 3D.
 //! * [`form_factors`]: the 3D form factors `F_ij` of a polygon's row from cosine-weighted
 //!   hemisphere sets shot from `M` origins spread over it, by any tracer (issue 18 part 6).
+//! * [`radiosity`]: the 2D solvers on those rows, once per colour channel (`Kd`, `Ke`).
 //!
 //! Conventions, the errors and the shipped scenes are documented in `SCENES3D.md`.
 
@@ -37,6 +38,7 @@ pub mod grid;
 pub mod hemisphere;
 pub mod obj;
 pub mod polar;
+pub mod radiosity;
 pub mod scene;
 pub mod span;
 pub mod sweep;

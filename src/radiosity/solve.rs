@@ -45,6 +45,22 @@ pub enum SolveError {
     NotConverged { steps: usize, left: f64 },
     #[error("the form-factor matrix has rows for {rows} patches, the scene has {patches}")]
     WrongSize { rows: usize, patches: usize },
+    #[error(
+        "{name}: nothing in the scene emits: every material's Ke is 0 in all three channels; \
+         give the material of at least one polygon a Ke above 0"
+    )]
+    NothingEmits3 { name: String },
+    #[error(
+        "{name}: material \"{material}\" has Kd {kd} in the {channel} channel; radiosity needs every \
+         channel of Kd below 1 (a surface of reflectance 1 absorbs nothing, so the light of a \
+         closed scene never dies out)"
+    )]
+    ReflectsAll { name: String, material: String, channel: &'static str, kd: f64 },
+    #[error(
+        "{name}: the power in the {channel} channel is not a finite number (Ke times the \
+         polygons' areas, or the radiosity it builds up, overflows f64); scale the scene or its Ke down"
+    )]
+    NotFinite { name: String, channel: &'static str },
 }
 
 /// The smallest tolerance accepted.
@@ -95,6 +111,11 @@ pub struct Solution {
     pub emitted: f64,
     /// `Σ (1 − ρ_j) H_j L_j`: the power the patches absorb.
     pub absorbed: f64,
+    /// The power that leaves the scene (rays that hit nothing; zero in a closed room):
+    /// progressive, `Σ` over shots of the shot power times `1 − Σ_j F_ij`; full,
+    /// `Σ_i L_i B_i (1 − Σ_j F_ij)`. Emitted = absorbed + escaped (+ unshot) up to the
+    /// reciprocity error of the rows.
+    pub escaped: f64,
     /// The sources of the rows computed, in order (progressive: one per step; full: every
     /// patch once).
     pub rows: Vec<usize>,
@@ -123,6 +144,7 @@ pub fn progressive<E: From<SolveError>>(
     let mut unshot = s.emission.clone();
     let mut left = emitted;
     let mut absorbed = 0.0;
+    let mut escaped = 0.0;
     let mut history = Vec::new();
     let mut rows = Vec::new();
     while left > tolerance * emitted {
@@ -135,7 +157,9 @@ pub fn progressive<E: From<SolveError>>(
         let shot = unshot[i];
         unshot[i] = 0.0;
         let power = shot * s.length[i];
-        for e in row(i)?.entries {
+        let row = row(i)?;
+        escaped += power * (1.0 - row.sum());
+        for e in row.entries {
             let j = e.patch as usize;
             let received = power * e.ff; // power arriving at j
             absorbed += (1.0 - s.reflectance[j]) * received;
@@ -148,7 +172,16 @@ pub fn progressive<E: From<SolveError>>(
         left = unshot.iter().zip(&s.length).map(|(u, l)| u * l).sum();
         history.push(left / emitted);
     }
-    Ok(Solution { radiosity: b, steps: rows.len(), unshot: left / emitted, history, emitted, absorbed, rows })
+    Ok(Solution {
+        radiosity: b,
+        steps: rows.len(),
+        unshot: left / emitted,
+        history,
+        emitted,
+        absorbed,
+        escaped,
+        rows,
+    })
 }
 
 /// The full solve over the form-factor matrix `rows` (row `j` is `F_j·`), Gauss–Seidel.
@@ -181,6 +214,7 @@ pub fn full(s: &Surfaces, rows: &[Row], tolerance: f64, max_steps: usize) -> Res
         }
     }
     let absorbed = (0..s.len()).map(|j| (1.0 - s.reflectance[j]) * gather(&b, j) * s.length[j]).sum::<f64>();
+    let escaped = (0..s.len()).map(|i| s.length[i] * b[i] * (1.0 - rows[i].sum())).sum::<f64>();
     Ok(Solution {
         radiosity: b,
         steps: history.len(),
@@ -188,6 +222,7 @@ pub fn full(s: &Surfaces, rows: &[Row], tolerance: f64, max_steps: usize) -> Res
         history,
         emitted,
         absorbed,
+        escaped,
         rows: (0..s.len()).collect(),
     })
 }
