@@ -857,9 +857,15 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     
     // Constant declarations
     localparam  valid_flag = 17'b10000000000000000;
+    localparam  miss_flag = 29'h10000000;
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
     localparam  one12 = 12'h1;
+    localparam  one2 = 2'b1;
+    localparam  slot0 = 2'b0;
+    localparam  slot1 = 2'b1;
+    localparam  slot2 = 2'b10;
+    localparam  slot3 = 2'b11;
     localparam  last_line = 12'hfff;
     localparam  zero12 = 12'h0;
     localparam  zero17 = 17'b0;
@@ -919,9 +925,6 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
-    reg  [16:0] key3$d;
-    wire  [16:0] key3$q;
-    reg  key3$clock;
     reg  [11:0] line3$d;
     wire  [11:0] line3$q;
     reg  line3$clock;
@@ -940,6 +943,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  match3_4$d;
     wire  match3_4$q;
     reg  match3_4$clock;
+    reg  lconf3$d;
+    wire  lconf3$q;
+    reg  lconf3$clock;
+    reg  iconf3$d;
+    wire  iconf3$q;
+    reg  iconf3$clock;
     reg  [16:0] ax3$d;
     wire  [16:0] ax3$q;
     reg  ax3$clock;
@@ -952,18 +961,187 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [16:0] by3$d;
     wire  [16:0] by3$q;
     reg  by3$clock;
-    reg  w_valid$d;
-    wire  w_valid$q;
-    reg  w_valid$clock;
-    reg  [15:0] w_id$d;
-    wire  [15:0] w_id$q;
-    reg  w_id$clock;
-    reg  [16:0] w_key$d;
-    wire  [16:0] w_key$q;
-    reg  w_key$clock;
-    reg  [11:0] w_line$d;
-    wire  [11:0] w_line$q;
-    reg  w_line$clock;
+    reg  [15:0] t_id0$d;
+    wire  [15:0] t_id0$q;
+    reg  t_id0$clock;
+    reg  [15:0] t_id1$d;
+    wire  [15:0] t_id1$q;
+    reg  t_id1$clock;
+    reg  [15:0] t_id2$d;
+    wire  [15:0] t_id2$q;
+    reg  t_id2$clock;
+    reg  [15:0] t_id3$d;
+    wire  [15:0] t_id3$q;
+    reg  t_id3$clock;
+    reg  [11:0] t_line0$d;
+    wire  [11:0] t_line0$q;
+    reg  t_line0$clock;
+    reg  [11:0] t_line1$d;
+    wire  [11:0] t_line1$q;
+    reg  t_line1$clock;
+    reg  [11:0] t_line2$d;
+    wire  [11:0] t_line2$q;
+    reg  t_line2$clock;
+    reg  [11:0] t_line3$d;
+    wire  [11:0] t_line3$q;
+    reg  t_line3$clock;
+    reg  t_v0$d;
+    wire  t_v0$q;
+    reg  t_v0$clock;
+    reg  t_v1$d;
+    wire  t_v1$q;
+    reg  t_v1$clock;
+    reg  t_v2$d;
+    wire  t_v2$q;
+    reg  t_v2$clock;
+    reg  t_v3$d;
+    wire  t_v3$q;
+    reg  t_v3$clock;
+    reg  [1:0] t_wp$d;
+    wire  [1:0] t_wp$q;
+    reg  t_wp$clock;
+    reg  [1:0] t_rp$d;
+    wire  [1:0] t_rp$q;
+    reg  t_rp$clock;
+    reg  [15:0] f_id1$d;
+    wire  [15:0] f_id1$q;
+    reg  f_id1$clock;
+    reg  [11:0] f_line1$d;
+    wire  [11:0] f_line1$q;
+    reg  f_line1$clock;
+    reg  f_v1$d;
+    wire  f_v1$q;
+    reg  f_v1$clock;
+    reg  mi0$d;
+    wire  mi0$q;
+    reg  mi0$clock;
+    reg  mi1$d;
+    wire  mi1$q;
+    reg  mi1$clock;
+    reg  mi2$d;
+    wire  mi2$q;
+    reg  mi2$clock;
+    reg  mi3$d;
+    wire  mi3$q;
+    reg  mi3$clock;
+    reg  mif$d;
+    wire  mif$q;
+    reg  mif$clock;
+    reg  mis3$d;
+    wire  mis3$q;
+    reg  mis3$clock;
+    reg  mis2$d;
+    wire  mis2$q;
+    reg  mis2$clock;
+    reg  ml0$d;
+    wire  ml0$q;
+    reg  ml0$clock;
+    reg  ml1$d;
+    wire  ml1$q;
+    reg  ml1$clock;
+    reg  ml2$d;
+    wire  ml2$q;
+    reg  ml2$clock;
+    reg  ml3$d;
+    wire  ml3$q;
+    reg  ml3$clock;
+    reg  mlf$d;
+    wire  mlf$q;
+    reg  mlf$clock;
+    reg  mls3$d;
+    wire  mls3$q;
+    reg  mls3$clock;
+    reg  mls2$d;
+    wire  mls2$q;
+    reg  mls2$clock;
+    reg  ans$clock;
+    reg  ans$push;
+    reg  ans$pop;
+    wire  [3:0] ans$tail_address;
+    wire  [3:0] ans$head_address;
+    wire  [3:0] ans$next_address;
+    wire  ans$valid;
+    wire  [4:0] ans$count;
+    reg  ans_ax$clock;
+    reg  [3:0] ans_ax$write_address;
+    reg  [16:0] ans_ax$write_data;
+    reg  ans_ax$write_enable;
+    reg  [3:0] ans_ax$head_address;
+    reg  [3:0] ans_ax$next_address;
+    reg  ans_ax$pop;
+    wire  [16:0] ans_ax$read_data;
+    reg  ans_ay$clock;
+    reg  [3:0] ans_ay$write_address;
+    reg  [16:0] ans_ay$write_data;
+    reg  ans_ay$write_enable;
+    reg  [3:0] ans_ay$head_address;
+    reg  [3:0] ans_ay$next_address;
+    reg  ans_ay$pop;
+    wire  [16:0] ans_ay$read_data;
+    reg  ans_bx$clock;
+    reg  [3:0] ans_bx$write_address;
+    reg  [16:0] ans_bx$write_data;
+    reg  ans_bx$write_enable;
+    reg  [3:0] ans_bx$head_address;
+    reg  [3:0] ans_bx$next_address;
+    reg  ans_bx$pop;
+    wire  [16:0] ans_bx$read_data;
+    reg  ans_by$clock;
+    reg  [3:0] ans_by$write_address;
+    reg  [16:0] ans_by$write_data;
+    reg  ans_by$write_enable;
+    reg  [3:0] ans_by$head_address;
+    reg  [3:0] ans_by$next_address;
+    reg  ans_by$pop;
+    wire  [16:0] ans_by$read_data;
+    reg  ans_meta$clock;
+    reg  [3:0] ans_meta$write_address;
+    reg  [28:0] ans_meta$write_data;
+    reg  ans_meta$write_enable;
+    reg  [3:0] ans_meta$head_address;
+    reg  [3:0] ans_meta$next_address;
+    reg  ans_meta$pop;
+    wire  [28:0] ans_meta$read_data;
+    reg  ret$clock;
+    reg  ret$push;
+    reg  ret$pop;
+    wire  [1:0] ret$tail_address;
+    wire  [1:0] ret$head_address;
+    wire  [1:0] ret$next_address;
+    wire  ret$valid;
+    wire  [2:0] ret$count;
+    reg  ret_ax$clock;
+    reg  [1:0] ret_ax$write_address;
+    reg  [16:0] ret_ax$write_data;
+    reg  ret_ax$write_enable;
+    reg  [1:0] ret_ax$head_address;
+    reg  [1:0] ret_ax$next_address;
+    reg  ret_ax$pop;
+    wire  [16:0] ret_ax$read_data;
+    reg  ret_ay$clock;
+    reg  [1:0] ret_ay$write_address;
+    reg  [16:0] ret_ay$write_data;
+    reg  ret_ay$write_enable;
+    reg  [1:0] ret_ay$head_address;
+    reg  [1:0] ret_ay$next_address;
+    reg  ret_ay$pop;
+    wire  [16:0] ret_ay$read_data;
+    reg  ret_bx$clock;
+    reg  [1:0] ret_bx$write_address;
+    reg  [16:0] ret_bx$write_data;
+    reg  ret_bx$write_enable;
+    reg  [1:0] ret_bx$head_address;
+    reg  [1:0] ret_bx$next_address;
+    reg  ret_bx$pop;
+    wire  [16:0] ret_bx$read_data;
+    reg  ret_by$clock;
+    reg  [1:0] ret_by$write_address;
+    reg  [16:0] ret_by$write_data;
+    reg  ret_by$write_enable;
+    reg  [1:0] ret_by$head_address;
+    reg  [1:0] ret_by$next_address;
+    reg  ret_by$pop;
+    wire  [16:0] ret_by$read_data;
     reg  fl_on$d;
     wire  fl_on$q;
     reg  fl_on$clock;
@@ -973,6 +1151,9 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  mreq$d;
     wire  mreq$q;
     reg  mreq$clock;
+    reg  [15:0] maddr$d;
+    wire  [15:0] maddr$q;
+    reg  maddr$clock;
     reg  rv$d;
     wire  rv$q;
     reg  rv$clock;
@@ -1031,10 +1212,24 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     // Local signals
     reg  push;
     reg  issue;
+    reg  table_full;
+    reg  ret_push;
+    reg  waiting_any;
+    reg  rewind;
+    reg  accept;
     reg  tag_hit;
     reg  hit;
     reg  miss;
+    reg  line_conflict;
+    reg  id_conflict;
+    reg  miss3;
+    reg  [15:0] head_id_fill;
+    reg  head_miss;
+    reg  answer;
     reg  fill;
+    reg  [28:0] meta_in;
+    reg  [16:0] head_key_fill;
+    reg  [11:0] head_line_fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
@@ -1047,7 +1242,6 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  ne_sp;
     reg  ne_sp_inc;
     reg  ne_rd;
-    reg  ne_rd_inc;
     reg  read_new;
     reg  [11:0] head_low;
     reg  [11:0] head_line;
@@ -1055,6 +1249,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
     reg  [11:0] fl_inc;
+    reg  [1:0] t_wp_inc;
+    reg  [1:0] t_rp_inc;
     
     // Sub module instances
     processing_element$cache$q_lane q_lane(
@@ -1145,11 +1341,6 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(id3$q),
         .clock(id3$clock)
     );
-    processing_element$cache$key3 key3(
-        .d(key3$d),
-        .q(key3$q),
-        .clock(key3$clock)
-    );
     processing_element$cache$line3 line3(
         .d(line3$d),
         .q(line3$q),
@@ -1180,6 +1371,16 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(match3_4$q),
         .clock(match3_4$clock)
     );
+    processing_element$cache$lconf3 lconf3(
+        .d(lconf3$d),
+        .q(lconf3$q),
+        .clock(lconf3$clock)
+    );
+    processing_element$cache$iconf3 iconf3(
+        .d(iconf3$d),
+        .q(iconf3$q),
+        .clock(iconf3$clock)
+    );
     processing_element$cache$ax3 ax3(
         .d(ax3$d),
         .q(ax3$q),
@@ -1200,25 +1401,270 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(by3$q),
         .clock(by3$clock)
     );
-    processing_element$cache$w_valid w_valid(
-        .d(w_valid$d),
-        .q(w_valid$q),
-        .clock(w_valid$clock)
+    processing_element$cache$t_id0 t_id0(
+        .d(t_id0$d),
+        .q(t_id0$q),
+        .clock(t_id0$clock)
     );
-    processing_element$cache$w_id w_id(
-        .d(w_id$d),
-        .q(w_id$q),
-        .clock(w_id$clock)
+    processing_element$cache$t_id1 t_id1(
+        .d(t_id1$d),
+        .q(t_id1$q),
+        .clock(t_id1$clock)
     );
-    processing_element$cache$w_key w_key(
-        .d(w_key$d),
-        .q(w_key$q),
-        .clock(w_key$clock)
+    processing_element$cache$t_id2 t_id2(
+        .d(t_id2$d),
+        .q(t_id2$q),
+        .clock(t_id2$clock)
     );
-    processing_element$cache$w_line w_line(
-        .d(w_line$d),
-        .q(w_line$q),
-        .clock(w_line$clock)
+    processing_element$cache$t_id3 t_id3(
+        .d(t_id3$d),
+        .q(t_id3$q),
+        .clock(t_id3$clock)
+    );
+    processing_element$cache$t_line0 t_line0(
+        .d(t_line0$d),
+        .q(t_line0$q),
+        .clock(t_line0$clock)
+    );
+    processing_element$cache$t_line1 t_line1(
+        .d(t_line1$d),
+        .q(t_line1$q),
+        .clock(t_line1$clock)
+    );
+    processing_element$cache$t_line2 t_line2(
+        .d(t_line2$d),
+        .q(t_line2$q),
+        .clock(t_line2$clock)
+    );
+    processing_element$cache$t_line3 t_line3(
+        .d(t_line3$d),
+        .q(t_line3$q),
+        .clock(t_line3$clock)
+    );
+    processing_element$cache$t_v0 t_v0(
+        .d(t_v0$d),
+        .q(t_v0$q),
+        .clock(t_v0$clock)
+    );
+    processing_element$cache$t_v1 t_v1(
+        .d(t_v1$d),
+        .q(t_v1$q),
+        .clock(t_v1$clock)
+    );
+    processing_element$cache$t_v2 t_v2(
+        .d(t_v2$d),
+        .q(t_v2$q),
+        .clock(t_v2$clock)
+    );
+    processing_element$cache$t_v3 t_v3(
+        .d(t_v3$d),
+        .q(t_v3$q),
+        .clock(t_v3$clock)
+    );
+    processing_element$cache$t_wp t_wp(
+        .d(t_wp$d),
+        .q(t_wp$q),
+        .clock(t_wp$clock)
+    );
+    processing_element$cache$t_rp t_rp(
+        .d(t_rp$d),
+        .q(t_rp$q),
+        .clock(t_rp$clock)
+    );
+    processing_element$cache$f_id1 f_id1(
+        .d(f_id1$d),
+        .q(f_id1$q),
+        .clock(f_id1$clock)
+    );
+    processing_element$cache$f_line1 f_line1(
+        .d(f_line1$d),
+        .q(f_line1$q),
+        .clock(f_line1$clock)
+    );
+    processing_element$cache$f_v1 f_v1(
+        .d(f_v1$d),
+        .q(f_v1$q),
+        .clock(f_v1$clock)
+    );
+    processing_element$cache$mi0 mi0(
+        .d(mi0$d),
+        .q(mi0$q),
+        .clock(mi0$clock)
+    );
+    processing_element$cache$mi1 mi1(
+        .d(mi1$d),
+        .q(mi1$q),
+        .clock(mi1$clock)
+    );
+    processing_element$cache$mi2 mi2(
+        .d(mi2$d),
+        .q(mi2$q),
+        .clock(mi2$clock)
+    );
+    processing_element$cache$mi3 mi3(
+        .d(mi3$d),
+        .q(mi3$q),
+        .clock(mi3$clock)
+    );
+    processing_element$cache$mif mif(
+        .d(mif$d),
+        .q(mif$q),
+        .clock(mif$clock)
+    );
+    processing_element$cache$mis3 mis3(
+        .d(mis3$d),
+        .q(mis3$q),
+        .clock(mis3$clock)
+    );
+    processing_element$cache$mis2 mis2(
+        .d(mis2$d),
+        .q(mis2$q),
+        .clock(mis2$clock)
+    );
+    processing_element$cache$ml0 ml0(
+        .d(ml0$d),
+        .q(ml0$q),
+        .clock(ml0$clock)
+    );
+    processing_element$cache$ml1 ml1(
+        .d(ml1$d),
+        .q(ml1$q),
+        .clock(ml1$clock)
+    );
+    processing_element$cache$ml2 ml2(
+        .d(ml2$d),
+        .q(ml2$q),
+        .clock(ml2$clock)
+    );
+    processing_element$cache$ml3 ml3(
+        .d(ml3$d),
+        .q(ml3$q),
+        .clock(ml3$clock)
+    );
+    processing_element$cache$mlf mlf(
+        .d(mlf$d),
+        .q(mlf$q),
+        .clock(mlf$clock)
+    );
+    processing_element$cache$mls3 mls3(
+        .d(mls3$d),
+        .q(mls3$q),
+        .clock(mls3$clock)
+    );
+    processing_element$cache$mls2 mls2(
+        .d(mls2$d),
+        .q(mls2$q),
+        .clock(mls2$clock)
+    );
+    processing_element$cache$ans ans(
+        .clock(ans$clock),
+        .push(ans$push),
+        .pop(ans$pop),
+        .tail_address(ans$tail_address),
+        .head_address(ans$head_address),
+        .next_address(ans$next_address),
+        .valid(ans$valid),
+        .count(ans$count)
+    );
+    processing_element$cache$ans_ax ans_ax(
+        .clock(ans_ax$clock),
+        .write_address(ans_ax$write_address),
+        .write_data(ans_ax$write_data),
+        .write_enable(ans_ax$write_enable),
+        .head_address(ans_ax$head_address),
+        .next_address(ans_ax$next_address),
+        .pop(ans_ax$pop),
+        .read_data(ans_ax$read_data)
+    );
+    processing_element$cache$ans_ay ans_ay(
+        .clock(ans_ay$clock),
+        .write_address(ans_ay$write_address),
+        .write_data(ans_ay$write_data),
+        .write_enable(ans_ay$write_enable),
+        .head_address(ans_ay$head_address),
+        .next_address(ans_ay$next_address),
+        .pop(ans_ay$pop),
+        .read_data(ans_ay$read_data)
+    );
+    processing_element$cache$ans_bx ans_bx(
+        .clock(ans_bx$clock),
+        .write_address(ans_bx$write_address),
+        .write_data(ans_bx$write_data),
+        .write_enable(ans_bx$write_enable),
+        .head_address(ans_bx$head_address),
+        .next_address(ans_bx$next_address),
+        .pop(ans_bx$pop),
+        .read_data(ans_bx$read_data)
+    );
+    processing_element$cache$ans_by ans_by(
+        .clock(ans_by$clock),
+        .write_address(ans_by$write_address),
+        .write_data(ans_by$write_data),
+        .write_enable(ans_by$write_enable),
+        .head_address(ans_by$head_address),
+        .next_address(ans_by$next_address),
+        .pop(ans_by$pop),
+        .read_data(ans_by$read_data)
+    );
+    processing_element$cache$ans_meta ans_meta(
+        .clock(ans_meta$clock),
+        .write_address(ans_meta$write_address),
+        .write_data(ans_meta$write_data),
+        .write_enable(ans_meta$write_enable),
+        .head_address(ans_meta$head_address),
+        .next_address(ans_meta$next_address),
+        .pop(ans_meta$pop),
+        .read_data(ans_meta$read_data)
+    );
+    processing_element$cache$ret ret(
+        .clock(ret$clock),
+        .push(ret$push),
+        .pop(ret$pop),
+        .tail_address(ret$tail_address),
+        .head_address(ret$head_address),
+        .next_address(ret$next_address),
+        .valid(ret$valid),
+        .count(ret$count)
+    );
+    processing_element$cache$ret_ax ret_ax(
+        .clock(ret_ax$clock),
+        .write_address(ret_ax$write_address),
+        .write_data(ret_ax$write_data),
+        .write_enable(ret_ax$write_enable),
+        .head_address(ret_ax$head_address),
+        .next_address(ret_ax$next_address),
+        .pop(ret_ax$pop),
+        .read_data(ret_ax$read_data)
+    );
+    processing_element$cache$ret_ay ret_ay(
+        .clock(ret_ay$clock),
+        .write_address(ret_ay$write_address),
+        .write_data(ret_ay$write_data),
+        .write_enable(ret_ay$write_enable),
+        .head_address(ret_ay$head_address),
+        .next_address(ret_ay$next_address),
+        .pop(ret_ay$pop),
+        .read_data(ret_ay$read_data)
+    );
+    processing_element$cache$ret_bx ret_bx(
+        .clock(ret_bx$clock),
+        .write_address(ret_bx$write_address),
+        .write_data(ret_bx$write_data),
+        .write_enable(ret_bx$write_enable),
+        .head_address(ret_bx$head_address),
+        .next_address(ret_bx$next_address),
+        .pop(ret_bx$pop),
+        .read_data(ret_bx$read_data)
+    );
+    processing_element$cache$ret_by ret_by(
+        .clock(ret_by$clock),
+        .write_address(ret_by$write_address),
+        .write_data(ret_by$write_data),
+        .write_enable(ret_by$write_enable),
+        .head_address(ret_by$head_address),
+        .next_address(ret_by$next_address),
+        .pop(ret_by$pop),
+        .read_data(ret_by$read_data)
     );
     processing_element$cache$fl_on fl_on(
         .d(fl_on$d),
@@ -1234,6 +1680,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .d(mreq$d),
         .q(mreq$q),
         .clock(mreq$clock)
+    );
+    processing_element$cache$maddr maddr(
+        .d(maddr$d),
+        .q(maddr$q),
+        .clock(maddr$clock)
     );
     processing_element$cache$rv rv(
         .d(rv$d),
@@ -1334,24 +1785,53 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         line2$clock = clock;
         v3$clock = clock;
         id3$clock = clock;
-        key3$clock = clock;
         line3$clock = clock;
         match3_0$clock = clock;
         match3_1$clock = clock;
         match3_2$clock = clock;
         match3_3$clock = clock;
         match3_4$clock = clock;
+        lconf3$clock = clock;
+        iconf3$clock = clock;
         ax3$clock = clock;
         ay3$clock = clock;
         bx3$clock = clock;
         by3$clock = clock;
-        w_valid$clock = clock;
-        w_id$clock = clock;
-        w_key$clock = clock;
-        w_line$clock = clock;
+        t_id0$clock = clock;
+        t_id1$clock = clock;
+        t_id2$clock = clock;
+        t_id3$clock = clock;
+        t_line0$clock = clock;
+        t_line1$clock = clock;
+        t_line2$clock = clock;
+        t_line3$clock = clock;
+        t_v0$clock = clock;
+        t_v1$clock = clock;
+        t_v2$clock = clock;
+        t_v3$clock = clock;
+        t_wp$clock = clock;
+        t_rp$clock = clock;
+        f_id1$clock = clock;
+        f_line1$clock = clock;
+        f_v1$clock = clock;
+        mi0$clock = clock;
+        mi1$clock = clock;
+        mi2$clock = clock;
+        mi3$clock = clock;
+        mif$clock = clock;
+        mis3$clock = clock;
+        mis2$clock = clock;
+        ml0$clock = clock;
+        ml1$clock = clock;
+        ml2$clock = clock;
+        ml3$clock = clock;
+        mlf$clock = clock;
+        mls3$clock = clock;
+        mls2$clock = clock;
         fl_on$clock = clock;
         fl_line$clock = clock;
         mreq$clock = clock;
+        maddr$clock = clock;
         rv$clock = clock;
         rax$clock = clock;
         ray$clock = clock;
@@ -1376,24 +1856,53 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         line2$d = line2$q;
         v3$d = v3$q;
         id3$d = id3$q;
-        key3$d = key3$q;
         line3$d = line3$q;
         match3_0$d = match3_0$q;
         match3_1$d = match3_1$q;
         match3_2$d = match3_2$q;
         match3_3$d = match3_3$q;
         match3_4$d = match3_4$q;
+        lconf3$d = lconf3$q;
+        iconf3$d = iconf3$q;
         ax3$d = ax3$q;
         ay3$d = ay3$q;
         bx3$d = bx3$q;
         by3$d = by3$q;
-        w_valid$d = w_valid$q;
-        w_id$d = w_id$q;
-        w_key$d = w_key$q;
-        w_line$d = w_line$q;
+        t_id0$d = t_id0$q;
+        t_id1$d = t_id1$q;
+        t_id2$d = t_id2$q;
+        t_id3$d = t_id3$q;
+        t_line0$d = t_line0$q;
+        t_line1$d = t_line1$q;
+        t_line2$d = t_line2$q;
+        t_line3$d = t_line3$q;
+        t_v0$d = t_v0$q;
+        t_v1$d = t_v1$q;
+        t_v2$d = t_v2$q;
+        t_v3$d = t_v3$q;
+        t_wp$d = t_wp$q;
+        t_rp$d = t_rp$q;
+        f_id1$d = f_id1$q;
+        f_line1$d = f_line1$q;
+        f_v1$d = f_v1$q;
+        mi0$d = mi0$q;
+        mi1$d = mi1$q;
+        mi2$d = mi2$q;
+        mi3$d = mi3$q;
+        mif$d = mif$q;
+        mis3$d = mis3$q;
+        mis2$d = mis2$q;
+        ml0$d = ml0$q;
+        ml1$d = ml1$q;
+        ml2$d = ml2$q;
+        ml3$d = ml3$q;
+        mlf$d = mlf$q;
+        mls3$d = mls3$q;
+        mls2$d = mls2$q;
         fl_on$d = fl_on$q;
         fl_line$d = fl_line$q;
         mreq$d = mreq$q;
+        maddr$d = maddr$q;
         rv$d = rv$q;
         rax$d = rax$q;
         ray$d = ray$q;
@@ -1408,6 +1917,17 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         lane_ay$clock = clock;
         lane_bx$clock = clock;
         lane_by$clock = clock;
+        ans$clock = clock;
+        ans_ax$clock = clock;
+        ans_ay$clock = clock;
+        ans_bx$clock = clock;
+        ans_by$clock = clock;
+        ans_meta$clock = clock;
+        ret$clock = clock;
+        ret_ax$clock = clock;
+        ret_ay$clock = clock;
+        ret_bx$clock = clock;
+        ret_by$clock = clock;
         wr_inc = wr_ptr$q + one5;
         rd_inc = rd_inc_x$q ^ one5;
         rd_inc2 = rd_inc + one5;
@@ -1415,9 +1935,18 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         sp_inc2 = sp_inc + one5;
         hit_inc = hit_count$q + one32;
         miss_inc = miss_count$q + one32;
-        v3$d = v2$q & ~w_valid$q;
+        t_wp_inc = t_wp$q + one2;
+        t_rp_inc = t_rp$q + one2;
+        table_full = t_v0$q & t_v1$q & t_v2$q & t_v3$q;
+        waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
+        rewind = v3$q & (iconf3$q | table_full);
+        accept = v3$q & ~iconf3$q & ~table_full;
+        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        miss3 = lconf3$q | ~tag_hit;
+        hit = accept & ~miss3;
+        miss = accept & miss3;
+        v3$d = v2$q & ~rewind;
         id3$d = id2$q;
-        key3$d = key2$q;
         line3$d = line2$q;
         match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
         match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
@@ -1428,10 +1957,24 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
         by3$d = lane_by$read_data;
-        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
-        hit = v3$q & ~w_valid$q & tag_hit;
-        miss = v3$q & ~w_valid$q & ~tag_hit;
-        fill = w_valid$q & mem_valid;
+        mi0$d = t_v0$q & (t_id0$q == id1$q);
+        mi1$d = t_v1$q & (t_id1$q == id1$q);
+        mi2$d = t_v2$q & (t_id2$q == id1$q);
+        mi3$d = t_v3$q & (t_id3$q == id1$q);
+        mif$d = f_v1$q & (f_id1$q == id1$q);
+        mis3$d = v3$q & miss3 & (id3$q == id1$q);
+        mis2$d = v2$q & (id2$q == id1$q);
+        ml0$d = t_v0$q & (t_line0$q == line1$q);
+        ml1$d = t_v1$q & (t_line1$q == line1$q);
+        ml2$d = t_v2$q & (t_line2$q == line1$q);
+        ml3$d = t_v3$q & (t_line3$q == line1$q);
+        mlf$d = f_v1$q & (f_line1$q == line1$q);
+        mls3$d = v3$q & miss3 & (line3$q == line1$q);
+        mls2$d = v2$q & (line2$q == line1$q);
+        id_conflict = mi0$q | mi1$q | mi2$q | mi3$q | mif$q | mis3$q | (mis2$q & v3$q & miss3);
+        line_conflict = ml0$q | ml1$q | ml2$q | ml3$q | mlf$q | mls3$q | (mls2$q & v3$q & miss3);
+        lconf3$d = line_conflict;
+        iconf3$d = id_conflict;
         push = cfg_enable & req;
         q_lane$write_address = wr_ptr$q[(32'h0)+:(4)];
         q_lane$write_data = addr;
@@ -1441,17 +1984,16 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         end
         rd_next = rd_ptr$q;
         rd_next_inc = rd_inc;
-        if (hit | fill) begin
+        if (accept) begin
             rd_next = rd_inc;
             rd_next_inc = rd_inc2;
         end
         rd_ptr$d = rd_next;
         rd_inc_x$d = rd_next_inc ^ one5;
-        issue = q_valid$q & ~w_valid$q;
+        issue = q_valid$q & ~rewind;
         ne_sp = sp$q != wr_ptr$q;
         ne_sp_inc = sp_inc != wr_ptr$q;
         ne_rd = rd_ptr$q != wr_ptr$q;
-        ne_rd_inc = rd_inc != wr_ptr$q;
         read_ptr = sp$q;
         read_inc = sp_inc;
         read_new = ne_sp;
@@ -1460,15 +2002,10 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
             read_inc = sp_inc2;
             read_new = ne_sp_inc;
         end
-        if (w_valid$q) begin
+        if (rewind) begin
             read_ptr = rd_ptr$q;
             read_inc = rd_inc;
             read_new = ne_rd;
-            if (mem_valid) begin
-                read_ptr = rd_inc;
-                read_inc = rd_inc2;
-                read_new = ne_rd_inc;
-            end
         end
         sp$d = read_ptr;
         sp_inc_x$d = read_inc ^ one5;
@@ -1486,27 +2023,151 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         id1$d = q_lane$read_data;
         key1$d = head_key;
         line1$d = head_line;
-        v2$d = v1$q & ~w_valid$q;
+        v2$d = v1$q & ~rewind;
         id2$d = id1$q;
         key2$d = key1$q;
         line2$d = line1$q;
-        mreq$d = miss;
-        w_valid$d = (w_valid$q & ~mem_valid) | miss;
-        if (~w_valid$q) begin
-            w_id$d = id3$q;
-            w_key$d = key3$q;
-            w_line$d = line3$q;
+        meta_in = (((line3$q) & 29'h1fffffff) << 32'h10) | ((id3$q) & 29'h1fffffff);
+        if (miss3) begin
+            meta_in = meta_in | miss_flag;
         end
-        tag$write_address = w_line$q;
-        lane_ax$write_address = w_line$q;
-        lane_ay$write_address = w_line$q;
-        lane_bx$write_address = w_line$q;
-        lane_by$write_address = w_line$q;
-        tag$write_data = w_key$q;
-        lane_ax$write_data = mem_ax;
-        lane_ay$write_data = mem_ay;
-        lane_bx$write_data = mem_bx;
-        lane_by$write_data = mem_by;
+        ans$push = accept;
+        ans_ax$write_data = ax3$q;
+        ans_ay$write_data = ay3$q;
+        ans_bx$write_data = bx3$q;
+        ans_by$write_data = by3$q;
+        ans_meta$write_data = meta_in;
+        mreq$d = miss;
+        maddr$d = id3$q;
+        if (miss) begin
+            t_wp$d = t_wp_inc;
+        end
+        if (~t_v0$q & (t_wp$q == slot0)) begin
+            t_id0$d = id3$q;
+            t_line0$d = line3$q;
+        end
+        if (miss & (t_wp$q == slot0)) begin
+            t_v0$d = 1'b1;
+        end
+        if (~t_v1$q & (t_wp$q == slot1)) begin
+            t_id1$d = id3$q;
+            t_line1$d = line3$q;
+        end
+        if (miss & (t_wp$q == slot1)) begin
+            t_v1$d = 1'b1;
+        end
+        if (~t_v2$q & (t_wp$q == slot2)) begin
+            t_id2$d = id3$q;
+            t_line2$d = line3$q;
+        end
+        if (miss & (t_wp$q == slot2)) begin
+            t_v2$d = 1'b1;
+        end
+        if (~t_v3$q & (t_wp$q == slot3)) begin
+            t_id3$d = id3$q;
+            t_line3$d = line3$q;
+        end
+        if (miss & (t_wp$q == slot3)) begin
+            t_v3$d = 1'b1;
+        end
+        ret_push = cfg_enable & mem_valid & waiting_any;
+        ret$push = ret_push;
+        ret_ax$write_data = mem_ax;
+        ret_ay$write_data = mem_ay;
+        ret_bx$write_data = mem_bx;
+        ret_by$write_data = mem_by;
+        head_miss = ans_meta$read_data[32'h1c];
+        answer = ans$valid & (~head_miss | ret$valid);
+        fill = answer & head_miss;
+        ans$pop = answer;
+        ret$pop = fill;
+        rv$d = answer;
+        rax$d = ans_ax$read_data;
+        ray$d = ans_ay$read_data;
+        rbx$d = ans_bx$read_data;
+        rby$d = ans_by$read_data;
+        if (head_miss) begin
+            rax$d = ret_ax$read_data;
+            ray$d = ret_ay$read_data;
+            rbx$d = ret_bx$read_data;
+            rby$d = ret_by$read_data;
+        end
+        if (fill) begin
+            t_rp$d = t_rp_inc;
+        end
+        if (fill & (t_rp$q == slot0)) begin
+            t_v0$d = 1'b0;
+        end
+        if (fill & (t_rp$q == slot1)) begin
+            t_v1$d = 1'b0;
+        end
+        if (fill & (t_rp$q == slot2)) begin
+            t_v2$d = 1'b0;
+        end
+        if (fill & (t_rp$q == slot3)) begin
+            t_v3$d = 1'b0;
+        end
+        head_line_fill = ans_meta$read_data[(32'h10)+:(12)];
+        head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
+        head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
+        f_v1$d = fill;
+        f_id1$d = head_id_fill;
+        f_line1$d = head_line_fill;
+        ans_ax$write_address = ans$tail_address;
+        ans_ay$write_address = ans$tail_address;
+        ans_bx$write_address = ans$tail_address;
+        ans_by$write_address = ans$tail_address;
+        ans_meta$write_address = ans$tail_address;
+        ans_ax$write_enable = accept;
+        ans_ay$write_enable = accept;
+        ans_bx$write_enable = accept;
+        ans_by$write_enable = accept;
+        ans_meta$write_enable = accept;
+        ans_ax$head_address = ans$head_address;
+        ans_ay$head_address = ans$head_address;
+        ans_bx$head_address = ans$head_address;
+        ans_by$head_address = ans$head_address;
+        ans_meta$head_address = ans$head_address;
+        ans_ax$next_address = ans$next_address;
+        ans_ay$next_address = ans$next_address;
+        ans_bx$next_address = ans$next_address;
+        ans_by$next_address = ans$next_address;
+        ans_meta$next_address = ans$next_address;
+        ans_ax$pop = answer;
+        ans_ay$pop = answer;
+        ans_bx$pop = answer;
+        ans_by$pop = answer;
+        ans_meta$pop = answer;
+        ret_ax$write_address = ret$tail_address;
+        ret_ay$write_address = ret$tail_address;
+        ret_bx$write_address = ret$tail_address;
+        ret_by$write_address = ret$tail_address;
+        ret_ax$write_enable = ret_push;
+        ret_ay$write_enable = ret_push;
+        ret_bx$write_enable = ret_push;
+        ret_by$write_enable = ret_push;
+        ret_ax$head_address = ret$head_address;
+        ret_ay$head_address = ret$head_address;
+        ret_bx$head_address = ret$head_address;
+        ret_by$head_address = ret$head_address;
+        ret_ax$next_address = ret$next_address;
+        ret_ay$next_address = ret$next_address;
+        ret_bx$next_address = ret$next_address;
+        ret_by$next_address = ret$next_address;
+        ret_ax$pop = fill;
+        ret_ay$pop = fill;
+        ret_bx$pop = fill;
+        ret_by$pop = fill;
+        tag$write_address = head_line_fill;
+        lane_ax$write_address = head_line_fill;
+        lane_ay$write_address = head_line_fill;
+        lane_bx$write_address = head_line_fill;
+        lane_by$write_address = head_line_fill;
+        tag$write_data = head_key_fill;
+        lane_ax$write_data = ret_ax$read_data;
+        lane_ay$write_data = ret_ay$read_data;
+        lane_bx$write_data = ret_bx$read_data;
+        lane_by$write_data = ret_by$read_data;
         tag$write_enable = fill;
         fl_inc = fl_line$q + one12;
         if (fl_on$q) begin
@@ -1527,19 +2188,6 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         lane_ay$write_enable = fill;
         lane_bx$write_enable = fill;
         lane_by$write_enable = fill;
-        rv$d = hit | fill;
-        if (v3$q) begin
-            rax$d = ax3$q;
-            ray$d = ay3$q;
-            rbx$d = bx3$q;
-            rby$d = by3$q;
-        end
-        if (w_valid$q) begin
-            rax$d = mem_ax;
-            ray$d = mem_ay;
-            rbx$d = mem_bx;
-            rby$d = mem_by;
-        end
         hit_r$d = hit;
         if (hit_r$q) begin
             hit_count$d = hit_inc;
@@ -1558,7 +2206,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         resp_by = mem_by;
         if (cfg_enable) begin
             mem_req = mreq$q;
-            mem_addr = w_id$q;
+            mem_addr = maddr$q;
             resp_valid = rv$q;
             resp_ax = rax$q;
             resp_ay = ray$q;
@@ -1568,6 +2216,447 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     end
     
 endmodule // processing_element$cache
+
+
+module processing_element$cache$ans(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [3:0] tail_address;
+    output reg  [3:0] head_address;
+    output reg  [3:0] next_address;
+    output reg  valid;
+    output reg  [4:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 4'h1;
+    localparam  one_c = 5'b1;
+    localparam  zero_c = 5'b0;
+    
+    // Stub signals
+    reg  [3:0] tail_ptr$d;
+    wire  [3:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [3:0] rd_inc_x$d;
+    wire  [3:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] words$d;
+    wire  [4:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_inc2;
+    reg  [4:0] left;
+    
+    // Sub module instances
+    processing_element$cache$ans$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$cache$ans$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$cache$ans$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$cache$ans$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$cache$ans$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$cache$ans
+
+
+module processing_element$cache$ans$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ans$head_valid
+
+
+module processing_element$cache$ans$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ans$rd_inc_x
+
+
+module processing_element$cache$ans$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ans$rd_ptr
+
+
+module processing_element$cache$ans$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ans$tail_ptr
+
+
+module processing_element$cache$ans$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ans$words
+
+
+module processing_element$cache$ans_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ans_ax
+
+
+module processing_element$cache$ans_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ans_ay
+
+
+module processing_element$cache$ans_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ans_bx
+
+
+module processing_element$cache$ans_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ans_by
+
+
+module processing_element$cache$ans_meta(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [28:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [28:0] read_data;
+    
+    // Update code (custom)
+    reg [28:0] mem [0:15];
+    reg [28:0] head_r;
+    reg [28:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [28:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
+       head_r = 29'd0;
+       next_r = 29'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ans_meta
 
 
 module processing_element$cache$ax3(d,q,clock);
@@ -1646,6 +2735,63 @@ module processing_element$cache$by3(d,q,clock);
 endmodule // processing_element$cache$by3
 
 
+module processing_element$cache$f_id1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$f_id1
+
+
+module processing_element$cache$f_line1(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$f_line1
+
+
+module processing_element$cache$f_v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$f_v1
+
+
 module processing_element$cache$fl_line(d,q,clock);
     
     // Module arguments
@@ -1720,6 +2866,25 @@ module processing_element$cache$hit_r(d,q,clock);
     end
           
 endmodule // processing_element$cache$hit_r
+
+
+module processing_element$cache$iconf3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$iconf3
 
 
 module processing_element$cache$id1(d,q,clock);
@@ -1815,25 +2980,6 @@ module processing_element$cache$key2(d,q,clock);
     end
           
 endmodule // processing_element$cache$key2
-
-
-module processing_element$cache$key3(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$key3
 
 
 module processing_element$cache$lane_ax(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -3068,6 +4214,25 @@ module processing_element$cache$lane_by(clock,read_address,read_data,write_addre
 endmodule // processing_element$cache$lane_by
 
 
+module processing_element$cache$lconf3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$lconf3
+
+
 module processing_element$cache$line1(d,q,clock);
     
     // Module arguments
@@ -3123,6 +4288,25 @@ module processing_element$cache$line3(d,q,clock);
     end
           
 endmodule // processing_element$cache$line3
+
+
+module processing_element$cache$maddr(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$maddr
 
 
 module processing_element$cache$match3_0(d,q,clock);
@@ -3220,6 +4404,139 @@ module processing_element$cache$match3_4(d,q,clock);
 endmodule // processing_element$cache$match3_4
 
 
+module processing_element$cache$mi0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mi0
+
+
+module processing_element$cache$mi1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mi1
+
+
+module processing_element$cache$mi2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mi2
+
+
+module processing_element$cache$mi3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mi3
+
+
+module processing_element$cache$mif(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mif
+
+
+module processing_element$cache$mis2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mis2
+
+
+module processing_element$cache$mis3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mis3
+
+
 module processing_element$cache$miss_count(d,q,clock);
     
     // Module arguments
@@ -3237,6 +4554,139 @@ module processing_element$cache$miss_count(d,q,clock);
     end
           
 endmodule // processing_element$cache$miss_count
+
+
+module processing_element$cache$ml0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ml0
+
+
+module processing_element$cache$ml1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ml1
+
+
+module processing_element$cache$ml2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ml2
+
+
+module processing_element$cache$ml3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ml3
+
+
+module processing_element$cache$mlf(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mlf
+
+
+module processing_element$cache$mls2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mls2
+
+
+module processing_element$cache$mls3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$mls3
 
 
 module processing_element$cache$mreq(d,q,clock);
@@ -3417,6 +4867,399 @@ module processing_element$cache$rd_ptr(d,q,clock);
 endmodule // processing_element$cache$rd_ptr
 
 
+module processing_element$cache$ret(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [1:0] tail_address;
+    output reg  [1:0] head_address;
+    output reg  [1:0] next_address;
+    output reg  valid;
+    output reg  [2:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 2'b1;
+    localparam  one_c = 3'b1;
+    localparam  zero_c = 3'b0;
+    
+    // Stub signals
+    reg  [1:0] tail_ptr$d;
+    wire  [1:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [1:0] rd_ptr$d;
+    wire  [1:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [1:0] rd_inc_x$d;
+    wire  [1:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [2:0] words$d;
+    wire  [2:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [1:0] rd_inc;
+    reg  [1:0] rd_inc2;
+    reg  [2:0] left;
+    
+    // Sub module instances
+    processing_element$cache$ret$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$cache$ret$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$cache$ret$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$cache$ret$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$cache$ret$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        left = words$q;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+            left = words$q - one_c;
+        end
+        head_valid$d = left != zero_c;
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$cache$ret
+
+
+module processing_element$cache$ret$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ret$head_valid
+
+
+module processing_element$cache$ret$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ret$rd_inc_x
+
+
+module processing_element$cache$ret$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ret$rd_ptr
+
+
+module processing_element$cache$ret$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ret$tail_ptr
+
+
+module processing_element$cache$ret$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ret$words
+
+
+module processing_element$cache$ret_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [1:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [1:0] head_address;
+    input wire  [1:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:3];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:3];
+    initial for (i = 0; i <= 3; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 3; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ret_ax
+
+
+module processing_element$cache$ret_ay(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [1:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [1:0] head_address;
+    input wire  [1:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:3];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:3];
+    initial for (i = 0; i <= 3; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 3; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ret_ay
+
+
+module processing_element$cache$ret_bx(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [1:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [1:0] head_address;
+    input wire  [1:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:3];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:3];
+    initial for (i = 0; i <= 3; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 3; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ret_bx
+
+
+module processing_element$cache$ret_by(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [1:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [1:0] head_address;
+    input wire  [1:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:3];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:3];
+    initial for (i = 0; i <= 3; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 3; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$cache$ret_by
+
+
 module processing_element$cache$rv(d,q,clock);
     
     // Module arguments
@@ -3472,6 +5315,272 @@ module processing_element$cache$sp_inc_x(d,q,clock);
     end
           
 endmodule // processing_element$cache$sp_inc_x
+
+
+module processing_element$cache$t_id0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_id0
+
+
+module processing_element$cache$t_id1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_id1
+
+
+module processing_element$cache$t_id2(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_id2
+
+
+module processing_element$cache$t_id3(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_id3
+
+
+module processing_element$cache$t_line0(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_line0
+
+
+module processing_element$cache$t_line1(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_line1
+
+
+module processing_element$cache$t_line2(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_line2
+
+
+module processing_element$cache$t_line3(d,q,clock);
+    
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_line3
+
+
+module processing_element$cache$t_rp(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_rp
+
+
+module processing_element$cache$t_v0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_v0
+
+
+module processing_element$cache$t_v1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_v1
+
+
+module processing_element$cache$t_v2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_v2
+
+
+module processing_element$cache$t_v3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_v3
+
+
+module processing_element$cache$t_wp(d,q,clock);
+    
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_wp
 
 
 module processing_element$cache$tag(clock,read_address,read_data,write_address,write_data,write_enable);
@@ -3837,82 +5946,6 @@ module processing_element$cache$v3(d,q,clock);
     end
           
 endmodule // processing_element$cache$v3
-
-
-module processing_element$cache$w_id(d,q,clock);
-    
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$w_id
-
-
-module processing_element$cache$w_key(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$w_key
-
-
-module processing_element$cache$w_line(d,q,clock);
-    
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$w_line
-
-
-module processing_element$cache$w_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$w_valid
 
 
 module processing_element$cache$wr_ptr(d,q,clock);
