@@ -43,7 +43,9 @@
 //!
 //! The loader's memory port goes through the [`PatchCache`] to the host port: with the cache off
 //! it is a wire (the paper's shared memory, every load `T_c`); with it on, a patch loaded before
-//! comes from block RAM in one clock (the paper's "high speed cache memory for each PE").
+//! comes from block RAM (the paper's "high speed cache memory for each PE"), one per clock, 8
+//! cycles after its request, and a miss does not hold the requests behind it (up to four misses
+//! at the host at once; the answers in request order).
 //!
 //! Every command accepted writes a **tag** (retire flag, first, count) into a [`TAG_DEPTH`]-entry
 //! FIFO in LUT RAM; a job also hands its id to the [`PatchLoader`]. The loader's patches go
