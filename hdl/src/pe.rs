@@ -94,11 +94,12 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 4096-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 9049 LUT4s, 6776 flip-flops, 16 `MULT18X18D`,
-//! 31 `DP16KD`, 328 LUT RAMs at placement seed 1; on LFE5U-85F-6 a median of 140.9 MHz over
-//! placement seeds 1–5 (131.4–147.7; 144.5 before the sector banks and the job queue, 71.8 at
-//! seed 1 before the 150 MHz work), its critical paths now in the new glue (the tag FIFO's pop
-//! into the queue's write enable, the bank counters into `pend`) and the unit's merge (`hdl/fpga/ecp5.md`, checked
+//! flow's register wrapper, wrapper excluded): 10198 LUT4s, 7282 flip-flops, 16 `MULT18X18D`,
+//! 31 `DP16KD`, 424 LUT RAMs at placement seed 1 (with the non-blocking cache); on LFE5U-85F-6 a
+//! median of 139.1 MHz over placement seeds 1–5 (121.0–146.5; 140.9 before the non-blocking
+//! cache, 71.8 at seed 1 before the 150 MHz work), its critical paths in the command glue (the
+//! tag FIFO's count into the bank counters, the loader's reservations and `pend` into the tag
+//! FIFO's write enable) and the screener's input FIFO (`hdl/fpga/ecp5.md`, checked
 //! against the committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
 //!
 //! # Models
