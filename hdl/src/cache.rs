@@ -75,7 +75,8 @@
 //!   The **return queue** ([`MISSES`] entries): the host's answers, in order, until their turn.
 //! * The **answer**: the answer queue's head is answered (`resp_*` registered) when it is a hit,
 //!   or a miss whose patch is at the return queue's head; a miss's patch is then written into
-//!   its line (tag and data) and the miss leaves the table. One answer per clock.
+//!   its line (tag and data) and the miss leaves the table. One answer per clock. A
+//!   `mem_valid` while no miss is outstanding is a protocol violation and is ignored.
 //!
 //! Staleness. A request reads its line in Q, but a miss ahead of it writes that line only when
 //! it is answered: the words read may be older than the model's line. In S1 the request's line
