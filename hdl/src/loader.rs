@@ -13,7 +13,7 @@
 //! | `loads` | out | 32 | patches fetched from memory so far (responses received), wraps at 2³² |
 //!
 //! Handshakes: a transfer happens in a cycle where `valid && ready` holds before the rising edge.
-//! `id_ready` depends only on registers (not on `id_valid` or `out_ready`); `out_valid` is a
+//! `id_ready` is a register (not a function of `id_valid` or `out_ready`); `out_valid` is a
 //! register and the `out_*` data depend only on registers (the lanes' two read registers, chosen
 //! by the registered pop), so no combinational path crosses the block. The `out_*` data keep their last value while `out_valid` is low (zero after
 //! power-up), identically in the rust-hdl simulation and in the Verilog.
@@ -169,6 +169,9 @@ pub struct PatchLoader {
     // Pointers and counters.
     req_ptr: DFF<Bits<4>>,
     reserved: DFF<Bits<5>>,
+    /// `reserved` is [`DEPTH`]: a register of its own (set from the counter's next value), so
+    /// that `id_ready` is a register and reaches the producer's write enables directly.
+    full: DFF<bool>,
     req_valid: DFF<bool>,
     req_addr: DFF<Bits<16>>,
     load_count: DFF<Bits<32>>,
@@ -191,6 +194,7 @@ pub struct PatchLoader {
     load_inc: Signal<Local, Bits<32>>,
     // Constants.
     depth5: Constant<Bits<5>>,
+    almost5: Constant<Bits<5>>,
     one5: Constant<Bits<5>>,
     one4: Constant<Bits<4>>,
     one32: Constant<Bits<32>>,
@@ -221,6 +225,7 @@ impl Default for PatchLoader {
             loads: Default::default(),
             req_ptr: Default::default(),
             reserved: Default::default(),
+            full: Default::default(),
             req_valid: Default::default(),
             req_addr: Default::default(),
             load_count: Default::default(),
@@ -238,6 +243,7 @@ impl Default for PatchLoader {
             reserved_dec: Default::default(),
             load_inc: Default::default(),
             depth5: Constant::new((DEPTH as u64).into()),
+            almost5: Constant::new((DEPTH as u64 - 1).into()),
             one5: Constant::new(1.into()),
             one4: Constant::new(1.into()),
             one32: Constant::new(1.into()),
@@ -260,7 +266,7 @@ impl PatchLoader {
 impl Logic for PatchLoader {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, req_ptr, reserved, req_valid, req_addr, load_count);
+        dff_setup!(self, clock, req_ptr, reserved, full, req_valid, req_addr, load_count);
         self.fifo.clock.next = self.clock.val();
         self.lane_id.clock.next = self.clock.val();
         self.lane_ax.clock.next = self.clock.val();
@@ -269,7 +275,7 @@ impl Logic for PatchLoader {
         self.lane_by.clock.next = self.clock.val();
 
         // Handshakes.
-        self.room.next = self.reserved.q.val() != self.depth5.val();
+        self.room.next = !self.full.q.val();
         self.id_ready.next = self.room.val();
         self.accept.next = self.id_valid.val() & self.room.val();
         self.pop.next = self.fifo.valid.val() & self.out_ready.val();
@@ -342,6 +348,9 @@ impl Logic for PatchLoader {
         if !self.accept.val() & self.pop.val() {
             self.reserved.d.next = self.reserved_dec.val();
         }
+        // Full after this edge: full with no pop, or one short with an id and no pop.
+        self.full.d.next = ((self.reserved.q.val() == self.depth5.val()) & !self.pop.val())
+            | ((self.reserved.q.val() == self.almost5.val()) & self.accept.val() & !self.pop.val());
     }
 }
 

@@ -224,6 +224,14 @@ pub struct ProcessingElement {
     /// Jobs of bank 0 (1) accepted and not yet past the screener's sector read.
     jobs0: DFF<Bits<7>>,
     jobs1: DFF<Bits<7>>,
+    /// `jobs0 != 0`, `jobs1 != 0`, kept in registers of their own (from the counters' next
+    /// values) so that no compare of a counter lies between the counters and the sector's
+    /// clock enables.
+    used0: DFF<bool>,
+    used1: DFF<bool>,
+    /// The tag FIFO holds [`TAG_DEPTH`] tags: its count's compare, registered (from the count's
+    /// next value), so that `cmd_ready` is an AND of three registers.
+    tags_full: DFF<bool>,
     /// The bank a pending sector overwrites (not `bank`) holds no job before its sector read.
     other_free: Signal<Local, bool>,
     in0: Signal<Local, bool>,
@@ -235,7 +243,9 @@ pub struct ProcessingElement {
     in1: Signal<Local, bool>,
     out0: Signal<Local, bool>,
     out1: Signal<Local, bool>,
+    pend_next: Signal<Local, bool>,
     one7: Constant<Bits<7>>,
+    almost_full: Constant<Bits<7>>,
     zero1: Constant<Bits<1>>,
     one1: Constant<Bits<1>>,
     retire_flag: Constant<Bits<TAG_WIDTH>>,
@@ -324,6 +334,9 @@ impl Default for ProcessingElement {
             last1_y: Default::default(),
             jobs0: Default::default(),
             jobs1: Default::default(),
+            used0: Default::default(),
+            used1: Default::default(),
+            tags_full: Default::default(),
             other_free: Default::default(),
             in0: Default::default(),
             sector_in: Default::default(),
@@ -334,7 +347,9 @@ impl Default for ProcessingElement {
             in1: Default::default(),
             out0: Default::default(),
             out1: Default::default(),
+            pend_next: Default::default(),
             one7: Constant::new(1.into()),
+            almost_full: Constant::new(((TAG_DEPTH - 1) as u64).into()),
             zero1: Constant::new(0.into()),
             one1: Constant::new(1.into()),
             retire_flag: Constant::new((1u64 << (TAG_WIDTH - 1)).into()),
@@ -365,7 +380,10 @@ impl Logic for ProcessingElement {
             last1_x,
             last1_y,
             jobs0,
-            jobs1
+            jobs1,
+            used0,
+            used1,
+            tags_full
         );
         self.job_banks.clock.next = self.clock.val();
         self.loader.clock.next = self.clock.val();
@@ -406,8 +424,7 @@ impl Logic for ProcessingElement {
 
         // Commands: a tag for each job and retire, the id of a job to the loader with its
         // bank beside it; a sector into the pending register. Ready depends on registers only.
-        self.room.next =
-            (self.tags.count.val() != self.full.val()) & self.loader.id_ready.val() & !self.pend.q.val();
+        self.room.next = !self.tags_full.q.val() & self.loader.id_ready.val() & !self.pend.q.val();
         self.cmd_ready.next = self.room.val();
         self.accept.next = self.cmd_valid.val() & self.room.val();
         self.job.next = self.accept.val() & !self.cmd_retire.val() & !self.cmd_sector.val();
@@ -424,9 +441,9 @@ impl Logic for ProcessingElement {
         // A sector takes the bank the jobs do not use (the other one) as soon as that bank
         // holds no job before the sector read: at once if it is free when the command is
         // taken, else from `pend`, holding the stream meanwhile. The jobs after it belong to it.
-        self.other_free.next = self.jobs1.q.val() == self.zero7.val();
+        self.other_free.next = !self.used1.q.val();
         if self.bank.q.val() {
-            self.other_free.next = self.jobs0.q.val() == self.zero7.val();
+            self.other_free.next = !self.used0.q.val();
         }
         self.sector_in.next = self.accept.val() & self.cmd_sector.val();
         self.new_first_x.next = self.first_x.val();
@@ -439,15 +456,16 @@ impl Logic for ProcessingElement {
             self.new_last_x.next = self.pend_last_x.q.val();
             self.new_last_y.next = self.pend_last_y.q.val();
         }
+        self.pend_next.next = self.pend.q.val();
         if self.sector_in.val() & !self.other_free.val() {
-            self.pend.d.next = true;
+            self.pend_next.next = true;
             self.pend_first_x.d.next = self.first_x.val();
             self.pend_first_y.d.next = self.first_y.val();
             self.pend_last_x.d.next = self.last_x.val();
             self.pend_last_y.d.next = self.last_y.val();
         }
         if (self.sector_in.val() | self.pend.q.val()) & self.other_free.val() {
-            self.pend.d.next = false;
+            self.pend_next.next = false;
             self.bank.d.next = !self.bank.q.val();
             if self.bank.q.val() {
                 self.first0_x.d.next = self.new_first_x.val();
@@ -461,6 +479,7 @@ impl Logic for ProcessingElement {
                 self.last1_y.d.next = self.new_last_y.val();
             }
         }
+        self.pend.d.next = self.pend_next.val();
         // Each bank's jobs: counted in as accepted, out as they pass the sector read.
         self.in0.next = self.job.val() & !self.bank.q.val();
         self.in1.next = self.job.val() & self.bank.q.val();
@@ -477,6 +496,22 @@ impl Logic for ProcessingElement {
         }
         if self.out1.val() & !self.in1.val() & (self.jobs1.q.val() != self.zero7.val()) {
             self.jobs1.d.next = self.jobs1.q.val() - self.one7.val();
+        }
+        // `used`: the counter's next value is not zero (it leaves zero on a job in alone, and
+        // reaches zero from one on a job out alone).
+        self.used0.d.next = self.used0.q.val();
+        if self.in0.val() & !self.out0.val() {
+            self.used0.d.next = true;
+        }
+        if self.out0.val() & !self.in0.val() & (self.jobs0.q.val() == self.one7.val()) {
+            self.used0.d.next = false;
+        }
+        self.used1.d.next = self.used1.q.val();
+        if self.in1.val() & !self.out1.val() {
+            self.used1.d.next = true;
+        }
+        if self.out1.val() & !self.in1.val() & (self.jobs1.q.val() == self.one7.val()) {
+            self.used1.d.next = false;
         }
         self.new_tag.next = (bit_cast::<TAG_WIDTH, 10>(self.cmd_first.val()) << 11)
             | bit_cast::<TAG_WIDTH, 11>(self.cmd_count.val());
@@ -582,6 +617,10 @@ impl Logic for ProcessingElement {
         // The tag FIFO's read side: the merger's pop (the head, read every cycle with the entry
         // after it, depends on no pop: see [`Fifo`]).
         self.tags.pop.next = self.pop.val();
+        // The tag FIFO full after this edge: full and no pop, or one short of full with a push
+        // and no pop (no push while full: `cmd_ready` is low).
+        self.tags_full.d.next = ((self.tags.count.val() == self.full.val()) & !self.pop.val())
+            | ((self.tags.count.val() == self.almost_full.val()) & self.accept.val() & !self.cmd_sector.val() & !self.pop.val());
 
         // Status and counters.
         self.busy.next = (self.tags.count.val() != self.zero7.val())

@@ -6,7 +6,8 @@
 // by its own `in_ready`), bounded:
 //
 // * `in_ready` is high exactly while fewer than 16 jobs are held, `occupied` while any is;
-// * `out_valid` is high exactly while a job taken before the previous edge is held;
+// * `out_valid` is high exactly while a job taken before the last two edges is held (a job
+//   taken waits one clock in the input register, then one in the lanes' read registers);
 // * no loss, duplication or reordering, and no field mixed up between jobs: the harness follows
 //   one job, chosen freely (`pick`), from its transfer in to its transfer out, and every
 //   `out_*` field is that job's whenever it is the head and `out_valid` is high;
@@ -59,6 +60,12 @@ module queue_formal (
     wire [15:0] m_id [0:15];
     wire [17:0] m_ax [0:15], m_ay [0:15], m_bx [0:15], m_by [0:15], m_wx [0:15], m_wy [0:15];
     wire [27:0] m_job [0:15];
+    // The input register (the job taken at the last edge) and the held count.
+    wire        p_valid, held_full;
+    wire [15:0] p_id;
+    wire [17:0] p_ax, p_ay, p_bx, p_by, p_wx, p_wy;
+    wire [27:0] p_job;
+    wire [4:0]  held;
 `endif
 
     job_queue dut (
@@ -74,7 +81,10 @@ module queue_formal (
         .control_rd_inc_x_q(rd_inc_x),
         `LANE16(lane_id, m_id), `LANE16(lane_ax, m_ax), `LANE16(lane_ay, m_ay),
         `LANE16(lane_bx, m_bx), `LANE16(lane_by, m_by), `LANE16(lane_wx, m_wx),
-        `LANE16(lane_wy, m_wy), `LANE16(lane_job, m_job)
+        `LANE16(lane_wy, m_wy), `LANE16(lane_job, m_job),
+        .p_valid$q(p_valid), .p_id$q(p_id), .p_ax$q(p_ax), .p_ay$q(p_ay), .p_bx$q(p_bx),
+        .p_by$q(p_by), .p_wx$q(p_wx), .p_wy$q(p_wy), .p_job$q(p_job), .held$q(held),
+        .held_full$q(held_full)
 `endif
     );
 
@@ -90,11 +100,13 @@ module queue_formal (
     reg        f_past = 1'b0;
     reg [5:0]  f_held = 6'd0;    // jobs taken, not yet given
     reg        f_tp = 1'b0;      // a job was taken at the previous edge
+    reg        f_tp2 = 1'b0;     // a job was taken at the edge before
     reg        f_full = 1'b0;    // the queue has been full (for the covers)
     always @(posedge clock) begin
         f_past <= 1'b1;
         f_held <= f_held + take - give;
         f_tp <= take;
+        f_tp2 <= f_tp;
         if (f_held == DEPTH) f_full <= 1'b1;
     end
 
@@ -118,10 +130,10 @@ module queue_formal (
 
     // ---- The properties. ----
     always @(*) begin
-        a_held: assert(f_held <= DEPTH && (!f_tp || f_held != 6'd0));
+        a_held: assert(f_held <= DEPTH && f_tp + f_tp2 <= f_held);
         a_in_ready: assert(in_ready == (f_held != DEPTH));
         a_occupied: assert(occupied == (f_held != 6'd0));
-        a_valid: assert(out_valid == (f_held - f_tp != 6'd0));
+        a_valid: assert(out_valid == (f_held - f_tp - f_tp2 != 6'd0));
         if (f_trk) a_ahead: assert(f_ahead < f_held);
         if (f_head && out_valid) a_order: assert(out_job == f_job);
     end
@@ -144,12 +156,20 @@ module queue_formal (
                            m_job[i][27:22], m_job[i][20:11], m_job[i][10:0], m_job[i][21]};
         end
     endgenerate
+    // The input register as a job.
+    wire [170:0] p = {p_id, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_job[27:22], p_job[20:11],
+                      p_job[10:0], p_job[21]};
     always @(*) begin
-        i_words: assert({1'b0, words} == f_held);
+        i_held: assert({1'b0, held} == f_held && held_full == (f_held == DEPTH));
+        i_p_valid: assert(p_valid == f_tp);
+        i_words: assert({1'b0, words} == f_held - p_valid);
         i_tail: assert(tail_ptr == rd_ptr + words[3:0]);
         i_rd_inc: assert(rd_inc_x == ((rd_ptr + 4'd1) ^ 4'd1));
         if (out_valid) i_head: assert(out_job == m[rd_ptr]);
-        if (f_trk) i_trk_job: assert(m[rd_ptr + f_ahead[3:0]] == f_job);
+        // The followed job: in the input register when it is the last taken and was taken at
+        // the last edge, else in its slot.
+        if (f_trk && p_valid && f_ahead == f_held - 6'd1) i_trk_p: assert(p == f_job);
+        else if (f_trk) i_trk_job: assert(m[rd_ptr + f_ahead[3:0]] == f_job);
     end
 `endif
 

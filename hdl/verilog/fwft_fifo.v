@@ -109,7 +109,6 @@ module fwft_fifo$control(clock,push,pop,tail_address,head_address,next_address,v
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     fwft_fifo$control$tail_ptr tail_ptr(
@@ -158,13 +157,11 @@ module fwft_fifo$control(clock,push,pop,tail_address,head_address,next_address,v
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;

@@ -427,12 +427,25 @@ module intersection_unit$alive_mem(clock,read_address,read_data,write_address,wr
     );
     always @(*) read_data = bo_rd[0:0];
     `else
-    reg [0:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [0:0] mem [0:WORDS-1];
     reg [0:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 1'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 1'd0;
        r1 = 1'd0;
        collided = 1'b0;
        read_data = 1'd0;
@@ -523,12 +536,25 @@ module intersection_unit$dir_mem_x(clock,read_address,read_data,write_address,wr
     );
     always @(*) read_data = bo_rd[17:0];
     `else
-    reg [17:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
        collided = 1'b0;
        read_data = 18'd0;
@@ -619,12 +645,25 @@ module intersection_unit$dir_mem_y(clock,read_address,read_data,write_address,wr
     );
     always @(*) read_data = bo_rd[17:0];
     `else
-    reg [17:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
        collided = 1'b0;
        read_data = 18'd0;
@@ -822,12 +861,25 @@ module intersection_unit$mem_key(clock,read_address,read_data,write_address,writ
     );
     always @(*) read_data = bo_rd[31:0];
     `else
-    reg [31:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [31:0] mem [0:WORDS-1];
     reg [31:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 32'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 32'd0;
        r1 = 32'd0;
        collided = 1'b0;
        read_data = 32'd0;
@@ -918,12 +970,25 @@ module intersection_unit$mem_meta(clock,read_address,read_data,write_address,wri
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -965,7 +1030,7 @@ module intersection_unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_add
     // Update code (custom)
     wire [9:0] ray8 = tag8[25:16];
     wire [15:0] id8 = tag8[15:0];
-    reg cm_hit, cm_gt, cm_eq, cm_lt;
+    reg cm_hit, cm_gt_hi, cm_eq_hi, cm_lo;
     reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
     reg m1, m2, m3;
     reg v9;
@@ -986,9 +1051,9 @@ module intersection_unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_add
     reg better;
     initial begin
        cm_hit = 1'b0;
-       cm_gt = 1'b0;
-       cm_eq = 1'b0;
-       cm_lt = 1'b0;
+       cm_gt_hi = 1'b0;
+       cm_eq_hi = 1'b0;
+       cm_lo = 1'b0;
        m1 = 1'b0;
        m2 = 1'b0;
        m3 = 1'b0;
@@ -1023,7 +1088,7 @@ module intersection_unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_add
        if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
        else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
        else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-       else better = v9 && (!cm_hit || cm_gt || (cm_eq && cm_lt));
+       else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && cm_lo));
        if (rd_valid) begin
           write_address = rd_addr;
           write_key = 32'd0;
@@ -1039,9 +1104,9 @@ module intersection_unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_add
     end
     always @(posedge clock) begin
        cm_hit <= mem_meta[16];
-       cm_gt <= key > mem_key;
-       cm_eq <= key == mem_key;
-       cm_lt <= id8 < mem_meta[15:0];
+       cm_gt_hi <= key[31:16] > mem_key[31:16];
+       cm_eq_hi <= key[31:16] == mem_key[31:16];
+       cm_lo <= key[15:0] > mem_key[15:0] || (key[15:0] == mem_key[15:0] && id8 < mem_meta[15:0]);
        c1_gt <= key > key9;
        c1_eq <= key == key9;
        c1_lt <= id8 < id9;

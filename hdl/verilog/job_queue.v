@@ -35,6 +35,8 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     
     // Constant declarations
     localparam  retire_bit = 28'h200000;
+    localparam  one5 = 5'b1;
+    localparam  almost_full = 5'b1111;
     localparam  full = 5'b10000;
     localparam  empty = 5'b0;
     
@@ -111,8 +113,42 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     reg  [3:0] lane_job$next_address;
     reg  lane_job$pop;
     wire  [27:0] lane_job$read_data;
+    reg  p_valid$d;
+    wire  p_valid$q;
+    reg  p_valid$clock;
+    reg  [15:0] p_id$d;
+    wire  [15:0] p_id$q;
+    reg  p_id$clock;
+    reg  [17:0] p_ax$d;
+    wire  [17:0] p_ax$q;
+    reg  p_ax$clock;
+    reg  [17:0] p_ay$d;
+    wire  [17:0] p_ay$q;
+    reg  p_ay$clock;
+    reg  [17:0] p_bx$d;
+    wire  [17:0] p_bx$q;
+    reg  p_bx$clock;
+    reg  [17:0] p_by$d;
+    wire  [17:0] p_by$q;
+    reg  p_by$clock;
+    reg  [17:0] p_wx$d;
+    wire  [17:0] p_wx$q;
+    reg  p_wx$clock;
+    reg  [17:0] p_wy$d;
+    wire  [17:0] p_wy$q;
+    reg  p_wy$clock;
+    reg  [27:0] p_job$d;
+    wire  [27:0] p_job$q;
+    reg  p_job$clock;
+    reg  [4:0] held$d;
+    wire  [4:0] held$q;
+    reg  held$clock;
+    reg  held_full$d;
+    wire  held_full$q;
+    reg  held_full$clock;
     
     // Local signals
+    reg  take;
     reg  push;
     reg  pop;
     reg  [27:0] sh28;
@@ -212,9 +248,86 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
         .pop(lane_job$pop),
         .read_data(lane_job$read_data)
     );
+    job_queue$p_valid p_valid(
+        .d(p_valid$d),
+        .q(p_valid$q),
+        .clock(p_valid$clock)
+    );
+    job_queue$p_id p_id(
+        .d(p_id$d),
+        .q(p_id$q),
+        .clock(p_id$clock)
+    );
+    job_queue$p_ax p_ax(
+        .d(p_ax$d),
+        .q(p_ax$q),
+        .clock(p_ax$clock)
+    );
+    job_queue$p_ay p_ay(
+        .d(p_ay$d),
+        .q(p_ay$q),
+        .clock(p_ay$clock)
+    );
+    job_queue$p_bx p_bx(
+        .d(p_bx$d),
+        .q(p_bx$q),
+        .clock(p_bx$clock)
+    );
+    job_queue$p_by p_by(
+        .d(p_by$d),
+        .q(p_by$q),
+        .clock(p_by$clock)
+    );
+    job_queue$p_wx p_wx(
+        .d(p_wx$d),
+        .q(p_wx$q),
+        .clock(p_wx$clock)
+    );
+    job_queue$p_wy p_wy(
+        .d(p_wy$d),
+        .q(p_wy$q),
+        .clock(p_wy$clock)
+    );
+    job_queue$p_job p_job(
+        .d(p_job$d),
+        .q(p_job$q),
+        .clock(p_job$clock)
+    );
+    job_queue$held held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+    job_queue$held_full held_full(
+        .d(held_full$d),
+        .q(held_full$q),
+        .clock(held_full$clock)
+    );
     
     // Update code
     always @(*) begin
+        p_valid$clock = clock;
+        p_id$clock = clock;
+        p_ax$clock = clock;
+        p_ay$clock = clock;
+        p_bx$clock = clock;
+        p_by$clock = clock;
+        p_wx$clock = clock;
+        p_wy$clock = clock;
+        p_job$clock = clock;
+        held$clock = clock;
+        held_full$clock = clock;
+        p_valid$d = p_valid$q;
+        p_id$d = p_id$q;
+        p_ax$d = p_ax$q;
+        p_ay$d = p_ay$q;
+        p_bx$d = p_bx$q;
+        p_by$d = p_by$q;
+        p_wx$d = p_wx$q;
+        p_wy$d = p_wy$q;
+        p_job$d = p_job$q;
+        held$d = held$q;
+        held_full$d = held_full$q;
         control$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
@@ -224,8 +337,9 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
         lane_wx$clock = clock;
         lane_wy$clock = clock;
         lane_job$clock = clock;
-        in_ready = control$count != full;
-        push = in_valid & (control$count != full);
+        in_ready = ~held_full$q;
+        take = in_valid & ~held_full$q;
+        push = p_valid$q;
         control$push = push;
         sh28 = ((in_sh) & 28'hfffffff);
         first28 = ((in_first) & 28'hfffffff);
@@ -234,18 +348,34 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
         if (in_retire) begin
             job_in = job_in | retire_bit;
         end
-        lane_id$write_data = in_id;
-        lane_ax$write_data = in_ax;
-        lane_ay$write_data = in_ay;
-        lane_bx$write_data = in_bx;
-        lane_by$write_data = in_by;
-        lane_wx$write_data = in_wx;
-        lane_wy$write_data = in_wy;
-        lane_job$write_data = job_in;
+        p_valid$d = take;
+        p_id$d = in_id;
+        p_ax$d = in_ax;
+        p_ay$d = in_ay;
+        p_bx$d = in_bx;
+        p_by$d = in_by;
+        p_wx$d = in_wx;
+        p_wy$d = in_wy;
+        p_job$d = job_in;
+        lane_id$write_data = p_id$q;
+        lane_ax$write_data = p_ax$q;
+        lane_ay$write_data = p_ay$q;
+        lane_bx$write_data = p_bx$q;
+        lane_by$write_data = p_by$q;
+        lane_wx$write_data = p_wx$q;
+        lane_wy$write_data = p_wy$q;
+        lane_job$write_data = p_job$q;
         pop = control$valid & out_ready;
         control$pop = pop;
         out_valid = control$valid;
-        occupied = control$count != empty;
+        occupied = held$q != empty;
+        if (take & ~pop) begin
+            held$d = held$q + one5;
+        end
+        if (~take & pop) begin
+            held$d = held$q - one5;
+        end
+        held_full$d = ((held$q == full) & ~pop) | ((held$q == almost_full) & take & ~pop);
         out_id = lane_id$read_data;
         out_ax = lane_ax$read_data;
         out_ay = lane_ay$read_data;
@@ -340,7 +470,6 @@ module job_queue$control(clock,push,pop,tail_address,head_address,next_address,v
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     job_queue$control$tail_ptr tail_ptr(
@@ -389,13 +518,11 @@ module job_queue$control(clock,push,pop,tail_address,head_address,next_address,v
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -502,6 +629,44 @@ module job_queue$control$words(d,q,clock);
     end
           
 endmodule // job_queue$control$words
+
+
+module job_queue$held(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$held
+
+
+module job_queue$held_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$held_full
 
 
 module job_queue$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -886,3 +1051,174 @@ module job_queue$lane_wy(clock,write_address,write_data,write_enable,head_addres
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // job_queue$lane_wy
+
+
+module job_queue$p_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_ax
+
+
+module job_queue$p_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_ay
+
+
+module job_queue$p_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_bx
+
+
+module job_queue$p_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_by
+
+
+module job_queue$p_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_id
+
+
+module job_queue$p_job(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_job
+
+
+module job_queue$p_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_valid
+
+
+module job_queue$p_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_wx
+
+
+module job_queue$p_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // job_queue$p_wy

@@ -1426,7 +1426,6 @@ module patch_cache$ans(clock,push,pop,tail_address,head_address,next_address,val
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     patch_cache$ans$tail_ptr tail_ptr(
@@ -1475,13 +1474,11 @@ module patch_cache$ans(clock,push,pop,tail_address,head_address,next_address,val
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -2436,12 +2433,25 @@ module patch_cache$lane_ax(clock,read_address,read_data,write_address,write_data
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -2744,12 +2754,25 @@ module patch_cache$lane_ay(clock,read_address,read_data,write_address,write_data
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -3052,12 +3075,25 @@ module patch_cache$lane_bx(clock,read_address,read_data,write_address,write_data
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -3360,12 +3396,25 @@ module patch_cache$lane_by(clock,read_address,read_data,write_address,write_data
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -4075,7 +4124,6 @@ module patch_cache$ret(clock,push,pop,tail_address,head_address,next_address,val
     // Local signals
     reg  [1:0] rd_inc;
     reg  [1:0] rd_inc2;
-    reg  [2:0] left;
     
     // Sub module instances
     patch_cache$ret$tail_ptr tail_ptr(
@@ -4124,13 +4172,11 @@ module patch_cache$ret(clock,push,pop,tail_address,head_address,next_address,val
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -5037,12 +5083,25 @@ module patch_cache$tag(clock,read_address,read_data,write_address,write_data,wri
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;

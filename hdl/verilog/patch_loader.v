@@ -26,6 +26,7 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     
     // Constant declarations
     localparam  depth5 = 5'b10000;
+    localparam  almost5 = 5'b1111;
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
@@ -37,6 +38,9 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     reg  [4:0] reserved$d;
     wire  [4:0] reserved$q;
     reg  reserved$clock;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
     reg  req_valid$d;
     wire  req_valid$q;
     reg  req_valid$clock;
@@ -114,6 +118,11 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         .d(reserved$d),
         .q(reserved$q),
         .clock(reserved$clock)
+    );
+    patch_loader$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
     );
     patch_loader$req_valid req_valid(
         .d(req_valid$d),
@@ -195,11 +204,13 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     always @(*) begin
         req_ptr$clock = clock;
         reserved$clock = clock;
+        full$clock = clock;
         req_valid$clock = clock;
         req_addr$clock = clock;
         load_count$clock = clock;
         req_ptr$d = req_ptr$q;
         reserved$d = reserved$q;
+        full$d = full$q;
         req_valid$d = req_valid$q;
         req_addr$d = req_addr$q;
         load_count$d = load_count$q;
@@ -209,7 +220,7 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         lane_ay$clock = clock;
         lane_bx$clock = clock;
         lane_by$clock = clock;
-        room = reserved$q != depth5;
+        room = ~full$q;
         id_ready = room;
         accept = id_valid & room;
         pop = fifo$valid & out_ready;
@@ -272,6 +283,7 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         if (~accept & pop) begin
             reserved$d = reserved_dec;
         end
+        full$d = ((reserved$q == depth5) & ~pop) | ((reserved$q == almost5) & accept & ~pop);
     end
     
 endmodule // patch_loader
@@ -314,7 +326,6 @@ module patch_loader$fifo(clock,push,pop,tail_address,head_address,next_address,v
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     patch_loader$fifo$tail_ptr tail_ptr(
@@ -363,13 +374,11 @@ module patch_loader$fifo(clock,push,pop,tail_address,head_address,next_address,v
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -476,6 +485,25 @@ module patch_loader$fifo$words(d,q,clock);
     end
           
 endmodule // patch_loader$fifo$words
+
+
+module patch_loader$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_loader$full
 
 
 module patch_loader$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);

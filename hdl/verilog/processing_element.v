@@ -52,6 +52,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     
     // Constant declarations
     localparam  one7 = 7'b1;
+    localparam  almost_full = 7'b111111;
     localparam  zero1 = 1'b0;
     localparam  one1 = 1'b1;
     localparam  retire_flag = 22'h200000;
@@ -279,6 +280,15 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [6:0] jobs1$d;
     wire  [6:0] jobs1$q;
     reg  jobs1$clock;
+    reg  used0$d;
+    wire  used0$q;
+    reg  used0$clock;
+    reg  used1$d;
+    wire  used1$q;
+    reg  used1$clock;
+    reg  tags_full$d;
+    wire  tags_full$q;
+    reg  tags_full$clock;
     
     // Local signals
     reg  accept;
@@ -300,6 +310,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  in1;
     reg  out0;
     reg  out1;
+    reg  pend_next;
     
     // Sub module instances
     processing_element$loader loader(
@@ -570,6 +581,21 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .q(jobs1$q),
         .clock(jobs1$clock)
     );
+    processing_element$used0 used0(
+        .d(used0$d),
+        .q(used0$q),
+        .clock(used0$clock)
+    );
+    processing_element$used1 used1(
+        .d(used1$d),
+        .q(used1$q),
+        .clock(used1$clock)
+    );
+    processing_element$tags_full tags_full(
+        .d(tags_full$d),
+        .q(tags_full$q),
+        .clock(tags_full$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -589,6 +615,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         last1_y$clock = clock;
         jobs0$clock = clock;
         jobs1$clock = clock;
+        used0$clock = clock;
+        used1$clock = clock;
+        tags_full$clock = clock;
         bank$d = bank$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
@@ -605,6 +634,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         last1_y$d = last1_y$q;
         jobs0$d = jobs0$q;
         jobs1$d = jobs1$q;
+        used0$d = used0$q;
+        used1$d = used1$q;
+        tags_full$d = tags_full$q;
         job_banks$clock = clock;
         loader$clock = clock;
         cache$clock = clock;
@@ -636,7 +668,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             screener$last_x = last1_x$q;
             screener$last_y = last1_y$q;
         end
-        room = (tags$count != full) & loader$id_ready & ~pend$q;
+        room = ~tags_full$q & loader$id_ready & ~pend$q;
         cmd_ready = room;
         accept = cmd_valid & room;
         job = accept & ~cmd_retire & ~cmd_sector;
@@ -649,9 +681,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         end
         job_banks$pop = loader$out_valid & screener$in_ready;
         screener$in_bank = job_banks$data_out == one1;
-        other_free = jobs1$q == zero7;
+        other_free = ~used1$q;
         if (bank$q) begin
-            other_free = jobs0$q == zero7;
+            other_free = ~used0$q;
         end
         sector_in = accept & cmd_sector;
         new_first_x = first_x;
@@ -664,15 +696,16 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             new_last_x = pend_last_x$q;
             new_last_y = pend_last_y$q;
         end
+        pend_next = pend$q;
         if (sector_in & ~other_free) begin
-            pend$d = 1'b1;
+            pend_next = 1'b1;
             pend_first_x$d = first_x;
             pend_first_y$d = first_y;
             pend_last_x$d = last_x;
             pend_last_y$d = last_y;
         end
         if ((sector_in | pend$q) & other_free) begin
-            pend$d = 1'b0;
+            pend_next = 1'b0;
             bank$d = ~bank$q;
             if (bank$q) begin
                 first0_x$d = new_first_x;
@@ -687,6 +720,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
                 last1_y$d = new_last_y;
             end
         end
+        pend$d = pend_next;
         in0 = job & ~bank$q;
         in1 = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
@@ -702,6 +736,20 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         end
         if (out1 & ~in1 & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
+        end
+        used0$d = used0$q;
+        if (in0 & ~out0) begin
+            used0$d = 1'b1;
+        end
+        if (out0 & ~in0 & (jobs0$q == one7)) begin
+            used0$d = 1'b0;
+        end
+        used1$d = used1$q;
+        if (in1 & ~out1) begin
+            used1$d = 1'b1;
+        end
+        if (out1 & ~in1 & (jobs1$q == one7)) begin
+            used1$d = 1'b0;
         end
         new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
         if (cmd_retire) begin
@@ -796,6 +844,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
+        tags_full$d = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
         busy = (tags$count != zero7) | pend$q | queue$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
@@ -2255,7 +2304,6 @@ module processing_element$cache$ans(clock,push,pop,tail_address,head_address,nex
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     processing_element$cache$ans$tail_ptr tail_ptr(
@@ -2304,13 +2352,11 @@ module processing_element$cache$ans(clock,push,pop,tail_address,head_address,nex
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -3265,12 +3311,25 @@ module processing_element$cache$lane_ax(clock,read_address,read_data,write_addre
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -3573,12 +3632,25 @@ module processing_element$cache$lane_ay(clock,read_address,read_data,write_addre
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -3881,12 +3953,25 @@ module processing_element$cache$lane_bx(clock,read_address,read_data,write_addre
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -4189,12 +4274,25 @@ module processing_element$cache$lane_by(clock,read_address,read_data,write_addre
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -4904,7 +5002,6 @@ module processing_element$cache$ret(clock,push,pop,tail_address,head_address,nex
     // Local signals
     reg  [1:0] rd_inc;
     reg  [1:0] rd_inc2;
-    reg  [2:0] left;
     
     // Sub module instances
     processing_element$cache$ret$tail_ptr tail_ptr(
@@ -4953,13 +5050,11 @@ module processing_element$cache$ret(clock,push,pop,tail_address,head_address,nex
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -5866,12 +5961,25 @@ module processing_element$cache$tag(clock,read_address,read_data,write_address,w
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:4095];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 4096;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 4095; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -6151,7 +6259,6 @@ module processing_element$job_banks$control(clock,push,pop,tail_address,head_add
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     processing_element$job_banks$control$tail_ptr tail_ptr(
@@ -6200,13 +6307,11 @@ module processing_element$job_banks$control(clock,push,pop,tail_address,head_add
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -6502,6 +6607,7 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     
     // Constant declarations
     localparam  depth5 = 5'b10000;
+    localparam  almost5 = 5'b1111;
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
@@ -6513,6 +6619,9 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     reg  [4:0] reserved$d;
     wire  [4:0] reserved$q;
     reg  reserved$clock;
+    reg  full$d;
+    wire  full$q;
+    reg  full$clock;
     reg  req_valid$d;
     wire  req_valid$q;
     reg  req_valid$clock;
@@ -6590,6 +6699,11 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         .d(reserved$d),
         .q(reserved$q),
         .clock(reserved$clock)
+    );
+    processing_element$loader$full full(
+        .d(full$d),
+        .q(full$q),
+        .clock(full$clock)
     );
     processing_element$loader$req_valid req_valid(
         .d(req_valid$d),
@@ -6671,11 +6785,13 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     always @(*) begin
         req_ptr$clock = clock;
         reserved$clock = clock;
+        full$clock = clock;
         req_valid$clock = clock;
         req_addr$clock = clock;
         load_count$clock = clock;
         req_ptr$d = req_ptr$q;
         reserved$d = reserved$q;
+        full$d = full$q;
         req_valid$d = req_valid$q;
         req_addr$d = req_addr$q;
         load_count$d = load_count$q;
@@ -6685,7 +6801,7 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         lane_ay$clock = clock;
         lane_bx$clock = clock;
         lane_by$clock = clock;
-        room = reserved$q != depth5;
+        room = ~full$q;
         id_ready = room;
         accept = id_valid & room;
         pop = fifo$valid & out_ready;
@@ -6748,6 +6864,7 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         if (~accept & pop) begin
             reserved$d = reserved_dec;
         end
+        full$d = ((reserved$q == depth5) & ~pop) | ((reserved$q == almost5) & accept & ~pop);
     end
     
 endmodule // processing_element$loader
@@ -6790,7 +6907,6 @@ module processing_element$loader$fifo(clock,push,pop,tail_address,head_address,n
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     processing_element$loader$fifo$tail_ptr tail_ptr(
@@ -6839,13 +6955,11 @@ module processing_element$loader$fifo(clock,push,pop,tail_address,head_address,n
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -6952,6 +7066,25 @@ module processing_element$loader$fifo$words(d,q,clock);
     end
           
 endmodule // processing_element$loader$fifo$words
+
+
+module processing_element$loader$full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$loader$full
 
 
 module processing_element$loader$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -7418,6 +7551,8 @@ module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,
     
     // Constant declarations
     localparam  retire_bit = 28'h200000;
+    localparam  one5 = 5'b1;
+    localparam  almost_full = 5'b1111;
     localparam  full = 5'b10000;
     localparam  empty = 5'b0;
     
@@ -7494,8 +7629,42 @@ module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,
     reg  [3:0] lane_job$next_address;
     reg  lane_job$pop;
     wire  [27:0] lane_job$read_data;
+    reg  p_valid$d;
+    wire  p_valid$q;
+    reg  p_valid$clock;
+    reg  [15:0] p_id$d;
+    wire  [15:0] p_id$q;
+    reg  p_id$clock;
+    reg  [17:0] p_ax$d;
+    wire  [17:0] p_ax$q;
+    reg  p_ax$clock;
+    reg  [17:0] p_ay$d;
+    wire  [17:0] p_ay$q;
+    reg  p_ay$clock;
+    reg  [17:0] p_bx$d;
+    wire  [17:0] p_bx$q;
+    reg  p_bx$clock;
+    reg  [17:0] p_by$d;
+    wire  [17:0] p_by$q;
+    reg  p_by$clock;
+    reg  [17:0] p_wx$d;
+    wire  [17:0] p_wx$q;
+    reg  p_wx$clock;
+    reg  [17:0] p_wy$d;
+    wire  [17:0] p_wy$q;
+    reg  p_wy$clock;
+    reg  [27:0] p_job$d;
+    wire  [27:0] p_job$q;
+    reg  p_job$clock;
+    reg  [4:0] held$d;
+    wire  [4:0] held$q;
+    reg  held$clock;
+    reg  held_full$d;
+    wire  held_full$q;
+    reg  held_full$clock;
     
     // Local signals
+    reg  take;
     reg  push;
     reg  pop;
     reg  [27:0] sh28;
@@ -7595,9 +7764,86 @@ module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,
         .pop(lane_job$pop),
         .read_data(lane_job$read_data)
     );
+    processing_element$queue$p_valid p_valid(
+        .d(p_valid$d),
+        .q(p_valid$q),
+        .clock(p_valid$clock)
+    );
+    processing_element$queue$p_id p_id(
+        .d(p_id$d),
+        .q(p_id$q),
+        .clock(p_id$clock)
+    );
+    processing_element$queue$p_ax p_ax(
+        .d(p_ax$d),
+        .q(p_ax$q),
+        .clock(p_ax$clock)
+    );
+    processing_element$queue$p_ay p_ay(
+        .d(p_ay$d),
+        .q(p_ay$q),
+        .clock(p_ay$clock)
+    );
+    processing_element$queue$p_bx p_bx(
+        .d(p_bx$d),
+        .q(p_bx$q),
+        .clock(p_bx$clock)
+    );
+    processing_element$queue$p_by p_by(
+        .d(p_by$d),
+        .q(p_by$q),
+        .clock(p_by$clock)
+    );
+    processing_element$queue$p_wx p_wx(
+        .d(p_wx$d),
+        .q(p_wx$q),
+        .clock(p_wx$clock)
+    );
+    processing_element$queue$p_wy p_wy(
+        .d(p_wy$d),
+        .q(p_wy$q),
+        .clock(p_wy$clock)
+    );
+    processing_element$queue$p_job p_job(
+        .d(p_job$d),
+        .q(p_job$q),
+        .clock(p_job$clock)
+    );
+    processing_element$queue$held held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+    processing_element$queue$held_full held_full(
+        .d(held_full$d),
+        .q(held_full$q),
+        .clock(held_full$clock)
+    );
     
     // Update code
     always @(*) begin
+        p_valid$clock = clock;
+        p_id$clock = clock;
+        p_ax$clock = clock;
+        p_ay$clock = clock;
+        p_bx$clock = clock;
+        p_by$clock = clock;
+        p_wx$clock = clock;
+        p_wy$clock = clock;
+        p_job$clock = clock;
+        held$clock = clock;
+        held_full$clock = clock;
+        p_valid$d = p_valid$q;
+        p_id$d = p_id$q;
+        p_ax$d = p_ax$q;
+        p_ay$d = p_ay$q;
+        p_bx$d = p_bx$q;
+        p_by$d = p_by$q;
+        p_wx$d = p_wx$q;
+        p_wy$d = p_wy$q;
+        p_job$d = p_job$q;
+        held$d = held$q;
+        held_full$d = held_full$q;
         control$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
@@ -7607,8 +7853,9 @@ module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,
         lane_wx$clock = clock;
         lane_wy$clock = clock;
         lane_job$clock = clock;
-        in_ready = control$count != full;
-        push = in_valid & (control$count != full);
+        in_ready = ~held_full$q;
+        take = in_valid & ~held_full$q;
+        push = p_valid$q;
         control$push = push;
         sh28 = ((in_sh) & 28'hfffffff);
         first28 = ((in_first) & 28'hfffffff);
@@ -7617,18 +7864,34 @@ module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,
         if (in_retire) begin
             job_in = job_in | retire_bit;
         end
-        lane_id$write_data = in_id;
-        lane_ax$write_data = in_ax;
-        lane_ay$write_data = in_ay;
-        lane_bx$write_data = in_bx;
-        lane_by$write_data = in_by;
-        lane_wx$write_data = in_wx;
-        lane_wy$write_data = in_wy;
-        lane_job$write_data = job_in;
+        p_valid$d = take;
+        p_id$d = in_id;
+        p_ax$d = in_ax;
+        p_ay$d = in_ay;
+        p_bx$d = in_bx;
+        p_by$d = in_by;
+        p_wx$d = in_wx;
+        p_wy$d = in_wy;
+        p_job$d = job_in;
+        lane_id$write_data = p_id$q;
+        lane_ax$write_data = p_ax$q;
+        lane_ay$write_data = p_ay$q;
+        lane_bx$write_data = p_bx$q;
+        lane_by$write_data = p_by$q;
+        lane_wx$write_data = p_wx$q;
+        lane_wy$write_data = p_wy$q;
+        lane_job$write_data = p_job$q;
         pop = control$valid & out_ready;
         control$pop = pop;
         out_valid = control$valid;
-        occupied = control$count != empty;
+        occupied = held$q != empty;
+        if (take & ~pop) begin
+            held$d = held$q + one5;
+        end
+        if (~take & pop) begin
+            held$d = held$q - one5;
+        end
+        held_full$d = ((held$q == full) & ~pop) | ((held$q == almost_full) & take & ~pop);
         out_id = lane_id$read_data;
         out_ax = lane_ax$read_data;
         out_ay = lane_ay$read_data;
@@ -7723,7 +7986,6 @@ module processing_element$queue$control(clock,push,pop,tail_address,head_address
     // Local signals
     reg  [3:0] rd_inc;
     reg  [3:0] rd_inc2;
-    reg  [4:0] left;
     
     // Sub module instances
     processing_element$queue$control$tail_ptr tail_ptr(
@@ -7772,13 +8034,11 @@ module processing_element$queue$control(clock,push,pop,tail_address,head_address
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -7885,6 +8145,44 @@ module processing_element$queue$control$words(d,q,clock);
     end
           
 endmodule // processing_element$queue$control$words
+
+
+module processing_element$queue$held(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$held
+
+
+module processing_element$queue$held_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$held_full
 
 
 module processing_element$queue$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -8269,6 +8567,177 @@ module processing_element$queue$lane_wy(clock,write_address,write_data,write_ena
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$queue$lane_wy
+
+
+module processing_element$queue$p_ax(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_ax
+
+
+module processing_element$queue$p_ay(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_ay
+
+
+module processing_element$queue$p_bx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_bx
+
+
+module processing_element$queue$p_by(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_by
+
+
+module processing_element$queue$p_id(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_id
+
+
+module processing_element$queue$p_job(d,q,clock);
+    
+    // Module arguments
+    input wire  [27:0] d;
+    output reg  [27:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 28'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_job
+
+
+module processing_element$queue$p_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_valid
+
+
+module processing_element$queue$p_wx(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_wx
+
+
+module processing_element$queue$p_wy(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$queue$p_wy
 
 
 module processing_element$sc_slice(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_pass,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,out_first,out_count,out_retire,occupied);
@@ -12778,7 +13247,6 @@ module processing_element$screener$fifo(clock,push,pop,tail_address,head_address
     // Local signals
     reg  [4:0] rd_inc;
     reg  [4:0] rd_inc2;
-    reg  [5:0] left;
     
     // Sub module instances
     processing_element$screener$fifo$tail_ptr tail_ptr(
@@ -12827,13 +13295,11 @@ module processing_element$screener$fifo(clock,push,pop,tail_address,head_address
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -15607,7 +16073,6 @@ module processing_element$tags$control(clock,push,pop,tail_address,head_address,
     // Local signals
     reg  [5:0] rd_inc;
     reg  [5:0] rd_inc2;
-    reg  [6:0] left;
     
     // Sub module instances
     processing_element$tags$control$tail_ptr tail_ptr(
@@ -15656,13 +16121,11 @@ module processing_element$tags$control(clock,push,pop,tail_address,head_address,
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;
@@ -15817,6 +16280,25 @@ module processing_element$tags$lane(clock,write_address,write_data,write_enable,
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$tags$lane
+
+
+module processing_element$tags_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tags_full
 
 
 module processing_element$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
@@ -16245,12 +16727,25 @@ module processing_element$unit$alive_mem(clock,read_address,read_data,write_addr
     );
     always @(*) read_data = bo_rd[0:0];
     `else
-    reg [0:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [0:0] mem [0:WORDS-1];
     reg [0:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 1'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 1'd0;
        r1 = 1'd0;
        collided = 1'b0;
        read_data = 1'd0;
@@ -16341,12 +16836,25 @@ module processing_element$unit$dir_mem_x(clock,read_address,read_data,write_addr
     );
     always @(*) read_data = bo_rd[17:0];
     `else
-    reg [17:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
        collided = 1'b0;
        read_data = 18'd0;
@@ -16437,12 +16945,25 @@ module processing_element$unit$dir_mem_y(clock,read_address,read_data,write_addr
     );
     always @(*) read_data = bo_rd[17:0];
     `else
-    reg [17:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 18'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 18'd0;
        r1 = 18'd0;
        collided = 1'b0;
        read_data = 18'd0;
@@ -16640,12 +17161,25 @@ module processing_element$unit$mem_key(clock,read_address,read_data,write_addres
     );
     always @(*) read_data = bo_rd[31:0];
     `else
-    reg [31:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [31:0] mem [0:WORDS-1];
     reg [31:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 32'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 32'd0;
        r1 = 32'd0;
        collided = 1'b0;
        read_data = 32'd0;
@@ -16736,12 +17270,25 @@ module processing_element$unit$mem_meta(clock,read_address,read_data,write_addre
     );
     always @(*) read_data = bo_rd[16:0];
     `else
-    reg [16:0] mem [0:1023];
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
     reg collided;
     integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
     initial begin
-       for (i = 0; i <= 1023; i = i + 1) mem[i] = 17'd0;
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
        r1 = 17'd0;
        collided = 1'b0;
        read_data = 17'd0;
@@ -16783,7 +17330,7 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
     // Update code (custom)
     wire [9:0] ray8 = tag8[25:16];
     wire [15:0] id8 = tag8[15:0];
-    reg cm_hit, cm_gt, cm_eq, cm_lt;
+    reg cm_hit, cm_gt_hi, cm_eq_hi, cm_lo;
     reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
     reg m1, m2, m3;
     reg v9;
@@ -16804,9 +17351,9 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
     reg better;
     initial begin
        cm_hit = 1'b0;
-       cm_gt = 1'b0;
-       cm_eq = 1'b0;
-       cm_lt = 1'b0;
+       cm_gt_hi = 1'b0;
+       cm_eq_hi = 1'b0;
+       cm_lo = 1'b0;
        m1 = 1'b0;
        m2 = 1'b0;
        m3 = 1'b0;
@@ -16841,7 +17388,7 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
        if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
        else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
        else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-       else better = v9 && (!cm_hit || cm_gt || (cm_eq && cm_lt));
+       else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && cm_lo));
        if (rd_valid) begin
           write_address = rd_addr;
           write_key = 32'd0;
@@ -16857,9 +17404,9 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
     end
     always @(posedge clock) begin
        cm_hit <= mem_meta[16];
-       cm_gt <= key > mem_key;
-       cm_eq <= key == mem_key;
-       cm_lt <= id8 < mem_meta[15:0];
+       cm_gt_hi <= key[31:16] > mem_key[31:16];
+       cm_eq_hi <= key[31:16] == mem_key[31:16];
+       cm_lo <= key[15:0] > mem_key[15:0] || (key[15:0] == mem_key[15:0] && id8 < mem_meta[15:0]);
        c1_gt <= key > key9;
        c1_eq <= key == key9;
        c1_lt <= id8 < id9;
@@ -17532,3 +18079,41 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        end
     end
 endmodule // processing_element$unit$seq
+
+
+module processing_element$used0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$used0
+
+
+module processing_element$used1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$used1

@@ -3639,7 +3639,6 @@ module screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid
     // Local signals
     reg  [4:0] rd_inc;
     reg  [4:0] rd_inc2;
-    reg  [5:0] left;
     
     // Sub module instances
     screener$fifo$tail_ptr tail_ptr(
@@ -3688,13 +3687,11 @@ module screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid
         rd_inc2 = rd_inc + one_a;
         head_address = rd_ptr$q;
         next_address = rd_inc;
-        left = words$q;
         if (pop) begin
             rd_ptr$d = rd_inc;
             rd_inc_x$d = rd_inc2 ^ one_a;
-            left = words$q - one_c;
         end
-        head_valid$d = left != zero_c;
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
         valid = head_valid$q;
         if (push & ~pop) begin
             words$d = words$q + one_c;

@@ -102,7 +102,6 @@ pub struct FifoControl<const A: usize, const C: usize> {
     head_valid: DFF<bool>,
     rd_inc: Signal<Local, Bits<A>>,
     rd_inc2: Signal<Local, Bits<A>>,
-    left: Signal<Local, Bits<C>>,
     one_a: Constant<Bits<A>>,
     one_c: Constant<Bits<C>>,
     zero_c: Constant<Bits<C>>,
@@ -128,7 +127,6 @@ impl<const A: usize, const C: usize> Default for FifoControl<A, C> {
             head_valid: Default::default(),
             rd_inc: Default::default(),
             rd_inc2: Default::default(),
-            left: Default::default(),
             one_a: Constant::new(1u64.into()),
             one_c: Constant::new(1u64.into()),
             zero_c: Constant::new(0u64.into()),
@@ -150,14 +148,15 @@ impl<const A: usize, const C: usize> Logic for FifoControl<A, C> {
         self.rd_inc2.next = self.rd_inc.val() + self.one_a.val();
         self.head_address.next = self.rd_ptr.q.val();
         self.next_address.next = self.rd_inc.val();
-        self.left.next = self.words.q.val();
         if self.pop.val() {
             self.rd_ptr.d.next = self.rd_inc.val();
             self.rd_inc_x.d.next = self.rd_inc2.val() ^ self.one_a.val();
-            self.left.next = self.words.q.val() - self.one_c.val();
         }
-        // Valid next clock when a word written before this edge remains (read before write).
-        self.head_valid.d.next = self.left.val() != self.zero_c.val();
+        // Valid next clock when a word written before this edge remains (read before write):
+        // `words − pop ≠ 0`, written as two compares of the register, no subtraction before
+        // the flag.
+        self.head_valid.d.next = (self.words.q.val() != self.zero_c.val())
+            & !(self.pop.val() & (self.words.q.val() == self.one_c.val()));
         self.valid.next = self.head_valid.q.val();
         if self.push.val() & !self.pop.val() {
             self.words.d.next = self.words.q.val() + self.one_c.val();

@@ -212,6 +212,12 @@ always @(*) read_data = popped ? next_r : head_r;
 /// for `A = 12`. Without the define (simulators, iCE40, the gate-level netlists of rung 5) the
 /// body is the behavioural two-register read that the Rust `update` models bit for bit.
 ///
+/// For formal harnesses only, the define `SHELLING_FORMAL_BRAM_WORDS` (a number `n`) keeps the
+/// behavioural body's first `n` words and, in a `FORMAL` build, asserts that every read address
+/// and every written address is below `n`: a harness whose design can only address `n` words
+/// (the patch cache with `cfg_mask < n`, `cache.sby`) proves the same logic on arrays the
+/// solver can handle, and the assertion proves it addressed nothing else.
+///
 /// **A read and a write of the same address in the same clock**: the block RAM's cross-port
 /// result is undefined, so the model and the behavioural Verilog both return a poison word, the
 /// bitwise NOT of the word before the write: a design relying on that read fails its tests. A
@@ -348,12 +354,25 @@ impl<const D: usize, const A: usize> Logic for BramOut<D, A> {
             "\
 `ifdef SHELLING_ECP5
 {ecp5}`else
-reg [{dm}:0] mem [0:{words}];
+// `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+// first ones, and a FORMAL build asserts that no address beyond them is used.
+`ifdef SHELLING_FORMAL_BRAM_WORDS
+localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+`else
+localparam WORDS = {words1};
+`endif
+reg [{dm}:0] mem [0:WORDS-1];
 reg [{dm}:0] r1;
 reg collided;
 integer i;
+`ifdef FORMAL
+always @(*) begin
+   a_bram_read_address: assert(read_address < WORDS);
+   if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+end
+`endif
 initial begin
-   for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
+   for (i = 0; i < WORDS; i = i + 1) mem[i] = {d}'d0;
    r1 = {d}'d0;
    collided = 1'b0;
    read_data = {d}'d0;
@@ -374,7 +393,7 @@ end
             ecp5 = Self::ecp5_body(),
             dm = D - 1,
             d = D,
-            words = (1usize << A) - 1
+            words1 = 1usize << A
         ))
     }
 
