@@ -446,6 +446,11 @@ pub struct PatchCache {
     t_v1: DFF<bool>,
     t_v2: DFF<bool>,
     t_v3: DFF<bool>,
+    /// Misses in the table (`0..=MISSES`), and "the table is full" as a register of its own
+    /// (from the count's next value), so that the accept and the rewind are one gate of
+    /// registers.
+    t_n: DFF<Bits<3>>,
+    t_full: DFF<bool>,
     t_wp: DFF<Bits<2>>,
     t_rp: DFF<Bits<2>>,
     /// The id and line filled in the last cycle (out of the table, maybe not yet seen by a read).
@@ -553,6 +558,9 @@ pub struct PatchCache {
     one5: Constant<Bits<5>>,
     one32: Constant<Bits<32>>,
     one12: Constant<Bits<12>>,
+    one3: Constant<Bits<3>>,
+    misses3: Constant<Bits<3>>,
+    almost3: Constant<Bits<3>>,
     one2: Constant<Bits<2>>,
     slot0: Constant<Bits<2>>,
     slot1: Constant<Bits<2>>,
@@ -631,6 +639,8 @@ impl Default for PatchCache {
             t_v1: Default::default(),
             t_v2: Default::default(),
             t_v3: Default::default(),
+            t_n: Default::default(),
+            t_full: Default::default(),
             t_wp: Default::default(),
             t_rp: Default::default(),
             f_id1: Default::default(),
@@ -724,6 +734,9 @@ impl Default for PatchCache {
             one5: Constant::new(1.into()),
             one32: Constant::new(1.into()),
             one12: Constant::new(1.into()),
+            one3: Constant::new(1.into()),
+            misses3: Constant::new((MISSES as u64).into()),
+            almost3: Constant::new((MISSES as u64 - 1).into()),
             one2: Constant::new(1.into()),
             slot0: Constant::new(0.into()),
             slot1: Constant::new(1.into()),
@@ -758,9 +771,9 @@ impl Logic for PatchCache {
             self, clock, wr_ptr, rd_ptr, sp, rd_inc_x, sp_inc_x, q_valid, v1, id1, key1, line1, v2, id2,
             key2, line2, v3, id3, line3, match3_0, match3_1, match3_2, match3_3, match3_4, lconf3, iconf3,
             ax3, ay3, bx3, by3, t_id0, t_id1, t_id2, t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1,
-            t_v2, t_v3, t_wp, t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2,
-            ml3, mlf, mls3, mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count,
-            hit_r
+            t_v2, t_v3, t_n, t_full, t_wp, t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2,
+            ml0, ml1, ml2, ml3, mlf, mls3, mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby,
+            hit_count, miss_count, hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -797,7 +810,7 @@ impl Logic for PatchCache {
         // from the queue). Neither condition depends on the tag compare, so the compare reaches
         // no pointer. A request whose line is on its way to another id (`lconf3` only) is a
         // miss whatever the stale tag says.
-        self.table_full.next = self.t_v0.q.val() & self.t_v1.q.val() & self.t_v2.q.val() & self.t_v3.q.val();
+        self.table_full.next = self.t_full.q.val();
         self.waiting_any.next = self.t_v0.q.val() | self.t_v1.q.val() | self.t_v2.q.val() | self.t_v3.q.val();
         self.rewind.next = self.v3.q.val() & (self.iconf3.q.val() | self.table_full.val());
         self.accept.next = self.v3.q.val() & !self.iconf3.q.val() & !self.table_full.val();
@@ -1009,6 +1022,16 @@ impl Logic for PatchCache {
             self.rbx.d.next = self.ret_bx.read_data.val();
             self.rby.d.next = self.ret_by.read_data.val();
         }
+        // The table's count: a miss enters, a fill leaves. Full after this edge: full with no
+        // fill (no miss enters a full table), or one short with a miss and no fill.
+        if self.miss.val() & !self.fill.val() {
+            self.t_n.d.next = self.t_n.q.val() + self.one3.val();
+        }
+        if self.fill.val() & !self.miss.val() {
+            self.t_n.d.next = self.t_n.q.val() - self.one3.val();
+        }
+        self.t_full.d.next = ((self.t_n.q.val() == self.misses3.val()) & !self.fill.val())
+            | ((self.t_n.q.val() == self.almost3.val()) & self.miss.val() & !self.fill.val());
         // The fill leaves the table (the oldest miss) and is remembered for two cycles.
         if self.fill.val() {
             self.t_rp.d.next = self.t_rp_inc.val();

@@ -34,18 +34,22 @@
 //! # Structure
 //!
 //! A [`DEPTH`]-slot FIFO of five [`FifoRam`] lanes (id: 16 bits, four coordinates: 17 bits each,
-//! 84 bits in all) sharing one set of pointers. A slot is *reserved* when its id is accepted: the
-//! id is written into the id lane at once and the request is issued; the coordinate lanes of the
+//! 84 bits in all) sharing one set of pointers. A slot is *held* from its id's acceptance: the id
+//! goes into the request registers (`req_valid`, `req_addr`, the memory request of the next
+//! clock) and from them into the id lane at the next edge, which *reserves* the slot; the
+//! coordinate lanes of the
 //! slot are written when the response arrives (responses come in order, so a second pointer
-//! suffices). An id is accepted only while fewer than [`DEPTH`] slots are reserved, so every
+//! suffices). An id is accepted only while fewer than [`DEPTH`] slots are held, so every
 //! response in flight has a slot waiting for it: nothing can be dropped, and backpressure on the
 //! output stops the id stream (`id_ready` low) instead.
 //!
 //! The FIFO's response pointer, read side and count of filled slots are a [`FifoControl`] (the
 //! one first-word-fall-through FIFO block of the PE: a response is its push, a patch leaving its
-//! pop). Counters (5 bits, `0..=16`): `reserved` (ids accepted, not yet sent out; the loader's
-//! own) and the control's `count` (responses written, not yet sent out), `count ≤ reserved ≤
-//! DEPTH`. Every cycle the lanes read the head slot and the one after it into their read registers and show the second after a pop,
+//! pop). Counters (5 bits, `0..=16`): `reserved` (ids written into their slot, not yet sent
+//! out; the loader's own) and the control's `count` (responses written, not yet sent out),
+//! `count ≤ reserved ≤ reserved + req_valid ≤ DEPTH`; `full` (a register: `reserved +
+//! req_valid = DEPTH` after the edge) is `id_ready`'s complement, so the accept reaches no
+//! counter's clock enable. Every cycle the lanes read the head slot and the one after it into their read registers and show the second after a pop,
 //! so `out_ready` reaches no RAM address (it did, through the address multiplexer, on the
 //! processing element's critical path at 144 MHz); `out_valid` is set for the
 //! next cycle when a filled slot remains after this cycle's pop *excluding* this cycle's write
@@ -169,8 +173,8 @@ pub struct PatchLoader {
     // Pointers and counters.
     req_ptr: DFF<Bits<4>>,
     reserved: DFF<Bits<5>>,
-    /// `reserved` is [`DEPTH`]: a register of its own (set from the counter's next value), so
-    /// that `id_ready` is a register and reaches the producer's write enables directly.
+    /// `reserved + req_valid` is [`DEPTH`]: a register of its own (set from the counters' next
+    /// values), so that `id_ready` is a register.
     full: DFF<bool>,
     req_valid: DFF<bool>,
     req_addr: DFF<Bits<16>>,
@@ -195,6 +199,9 @@ pub struct PatchLoader {
     // Constants.
     depth5: Constant<Bits<5>>,
     almost5: Constant<Bits<5>>,
+    almost4: Constant<Bits<5>>,
+    held_all: Signal<Local, bool>,
+    held_almost: Signal<Local, bool>,
     one5: Constant<Bits<5>>,
     one4: Constant<Bits<4>>,
     one32: Constant<Bits<32>>,
@@ -244,6 +251,9 @@ impl Default for PatchLoader {
             load_inc: Default::default(),
             depth5: Constant::new((DEPTH as u64).into()),
             almost5: Constant::new((DEPTH as u64 - 1).into()),
+            almost4: Constant::new((DEPTH as u64 - 2).into()),
+            held_all: Default::default(),
+            held_almost: Default::default(),
             one5: Constant::new(1.into()),
             one4: Constant::new(1.into()),
             one32: Constant::new(1.into()),
@@ -254,7 +264,7 @@ impl Default for PatchLoader {
 impl PatchLoader {
     /// Slots reserved (ids accepted whose patch has not left yet), `0..=DEPTH`: for testbenches.
     pub fn reserved(&self) -> usize {
-        self.reserved.q.val().index()
+        self.reserved.q.val().index() + self.req_valid.q.val() as usize
     }
 
     /// Slots holding a fetched patch that has not left yet, `0..=reserved()`: for testbenches.
@@ -288,13 +298,17 @@ impl Logic for PatchLoader {
         self.load_inc.next = self.load_count.q.val() + self.one32.val();
 
         // Id accepted: reserve the next slot, write its id, issue the request (next cycle).
+        // The id goes into the request registers (`req_addr` loaded in every clock, so that
+        // the accept drives no clock enable) and from them into its slot at the next edge, as
+        // the request leaves: the slot's reservation (`req_ptr`, `reserved`) follows the
+        // registered request, not the accept.
         self.lane_id.write_address.next = self.req_ptr.q.val();
-        self.lane_id.write_data.next = self.id.val();
-        self.lane_id.write_enable.next = self.accept.val();
+        self.lane_id.write_data.next = self.req_addr.q.val();
+        self.lane_id.write_enable.next = self.req_valid.q.val();
         self.req_valid.d.next = self.accept.val();
-        if self.accept.val() {
+        self.req_addr.d.next = self.id.val();
+        if self.req_valid.q.val() {
             self.req_ptr.d.next = self.req_inc.val();
-            self.req_addr.d.next = self.id.val();
         }
         self.mem_req.next = self.req_valid.q.val();
         self.mem_addr.next = self.req_addr.q.val();
@@ -342,15 +356,20 @@ impl Logic for PatchLoader {
         self.out_by.next = self.lane_by.read_data.val();
 
         // Counters.
-        if self.accept.val() & !self.pop.val() {
+        if self.req_valid.q.val() & !self.pop.val() {
             self.reserved.d.next = self.reserved_inc.val();
         }
-        if !self.accept.val() & self.pop.val() {
+        if !self.req_valid.q.val() & self.pop.val() {
             self.reserved.d.next = self.reserved_dec.val();
         }
-        // Full after this edge: full with no pop, or one short with an id and no pop.
-        self.full.d.next = ((self.reserved.q.val() == self.depth5.val()) & !self.pop.val())
-            | ((self.reserved.q.val() == self.almost5.val()) & self.accept.val() & !self.pop.val());
+        // Ids held (accepted, not sent out): `reserved` and the one in the request registers.
+        // Full after this edge: all DEPTH held with no pop, or one short with an id and no pop.
+        self.held_all.next = (self.reserved.q.val() == self.depth5.val())
+            | ((self.reserved.q.val() == self.almost5.val()) & self.req_valid.q.val());
+        self.held_almost.next = ((self.reserved.q.val() == self.almost5.val()) & !self.req_valid.q.val())
+            | ((self.reserved.q.val() == self.almost4.val()) & self.req_valid.q.val());
+        self.full.d.next = (self.held_all.val() & !self.pop.val())
+            | (self.held_almost.val() & self.accept.val() & !self.pop.val());
     }
 }
 

@@ -189,7 +189,9 @@ module loader_formal (
     wire [3:0] f_slot = rd_ptr + f_ahead[3:0];  // the followed patch's slot
     always @(*) begin
         // The counters are the harness's counts.
-        i_reserved: assert(reserved == f_held[4:0]);
+        // The id accepted at the last edge is in the request registers (`mem_req`,
+        // `mem_addr`), its slot reserved at the next edge.
+        i_reserved: assert(reserved + mem_req == f_held[4:0] && (!mem_req || f_held != 6'd0));
         i_done: assert(done == f_filled[4:0] && f_unresp <= f_held);
         // The pointers: slots rd_ptr .. rd_ptr + done - 1 are filled, up to rd_ptr + reserved - 1
         // reserved (their id written).
@@ -206,7 +208,8 @@ module loader_formal (
         // are all ahead of it until its own response has come.
         if (f_trk) begin
             i_trk_held: assert(f_ahead < f_held);
-            i_trk_id: assert(lane_id[f_slot] == f_id);
+            if (mem_req && f_ahead == f_held - 6'd1) i_trk_req: assert(mem_addr == f_id);
+            else i_trk_id: assert(lane_id[f_slot] == f_id);
             if (f_resp) begin
                 i_trk_filled: assert(f_ahead < f_filled);
                 i_trk_data: assert(lane_ax[f_slot] == f_ax && lane_ay[f_slot] == f_ay

@@ -620,7 +620,10 @@ impl Logic for ProcessingElement {
         // The tag FIFO full after this edge: full and no pop, or one short of full with a push
         // and no pop (no push while full: `cmd_ready` is low).
         self.tags_full.d.next = ((self.tags.count.val() == self.full.val()) & !self.pop.val())
-            | ((self.tags.count.val() == self.almost_full.val()) & self.accept.val() & !self.cmd_sector.val() & !self.pop.val());
+            | ((self.tags.count.val() == self.almost_full.val())
+                & self.accept.val()
+                & !self.cmd_sector.val()
+                & !self.pop.val());
 
         // Status and counters.
         self.busy.next = (self.tags.count.val() != self.zero7.val())

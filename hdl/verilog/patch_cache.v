@@ -32,6 +32,9 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
     localparam  one12 = 12'h1;
+    localparam  one3 = 3'b1;
+    localparam  misses3 = 3'b100;
+    localparam  almost3 = 3'b11;
     localparam  one2 = 2'b1;
     localparam  slot0 = 2'b0;
     localparam  slot1 = 2'b1;
@@ -168,6 +171,12 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  t_v3$d;
     wire  t_v3$q;
     reg  t_v3$clock;
+    reg  [2:0] t_n$d;
+    wire  [2:0] t_n$q;
+    reg  t_n$clock;
+    reg  t_full$d;
+    wire  t_full$q;
+    reg  t_full$clock;
     reg  [1:0] t_wp$d;
     wire  [1:0] t_wp$q;
     reg  t_wp$clock;
@@ -632,6 +641,16 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .q(t_v3$q),
         .clock(t_v3$clock)
     );
+    patch_cache$t_n t_n(
+        .d(t_n$d),
+        .q(t_n$q),
+        .clock(t_n$clock)
+    );
+    patch_cache$t_full t_full(
+        .d(t_full$d),
+        .q(t_full$q),
+        .clock(t_full$clock)
+    );
     patch_cache$t_wp t_wp(
         .d(t_wp$d),
         .q(t_wp$q),
@@ -980,6 +999,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         t_v1$clock = clock;
         t_v2$clock = clock;
         t_v3$clock = clock;
+        t_n$clock = clock;
+        t_full$clock = clock;
         t_wp$clock = clock;
         t_rp$clock = clock;
         f_id1$clock = clock;
@@ -1051,6 +1072,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         t_v1$d = t_v1$q;
         t_v2$d = t_v2$q;
         t_v3$d = t_v3$q;
+        t_n$d = t_n$q;
+        t_full$d = t_full$q;
         t_wp$d = t_wp$q;
         t_rp$d = t_rp$q;
         f_id1$d = f_id1$q;
@@ -1108,7 +1131,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         miss_inc = miss_count$q + one32;
         t_wp_inc = t_wp$q + one2;
         t_rp_inc = t_rp$q + one2;
-        table_full = t_v0$q & t_v1$q & t_v2$q & t_v3$q;
+        table_full = t_full$q;
         waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
@@ -1263,6 +1286,13 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
             rbx$d = ret_bx$read_data;
             rby$d = ret_by$read_data;
         end
+        if (miss & ~fill) begin
+            t_n$d = t_n$q + one3;
+        end
+        if (fill & ~miss) begin
+            t_n$d = t_n$q - one3;
+        end
+        t_full$d = ((t_n$q == misses3) & ~fill) | ((t_n$q == almost3) & miss & ~fill);
         if (fill) begin
             t_rp$d = t_rp_inc;
         end
@@ -4534,6 +4564,25 @@ module patch_cache$sp_inc_x(d,q,clock);
 endmodule // patch_cache$sp_inc_x
 
 
+module patch_cache$t_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$t_full
+
+
 module patch_cache$t_id0(d,q,clock);
     
     // Module arguments
@@ -4684,6 +4733,25 @@ module patch_cache$t_line3(d,q,clock);
     end
           
 endmodule // patch_cache$t_line3
+
+
+module patch_cache$t_n(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$t_n
 
 
 module patch_cache$t_rp(d,q,clock);

@@ -27,6 +27,7 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     // Constant declarations
     localparam  depth5 = 5'b10000;
     localparam  almost5 = 5'b1111;
+    localparam  almost4 = 5'b1110;
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
@@ -107,6 +108,8 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     reg  [4:0] reserved_inc;
     reg  [4:0] reserved_dec;
     reg  [31:0] load_inc;
+    reg  held_all;
+    reg  held_almost;
     
     // Sub module instances
     patch_loader$req_ptr req_ptr(
@@ -230,12 +233,12 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         reserved_dec = reserved$q - one5;
         load_inc = load_count$q + one32;
         lane_id$write_address = req_ptr$q;
-        lane_id$write_data = id;
-        lane_id$write_enable = accept;
+        lane_id$write_data = req_addr$q;
+        lane_id$write_enable = req_valid$q;
         req_valid$d = accept;
-        if (accept) begin
+        req_addr$d = id;
+        if (req_valid$q) begin
             req_ptr$d = req_inc;
-            req_addr$d = id;
         end
         mem_req = req_valid$q;
         mem_addr = req_addr$q;
@@ -277,13 +280,15 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         out_ay = lane_ay$read_data;
         out_bx = lane_bx$read_data;
         out_by = lane_by$read_data;
-        if (accept & ~pop) begin
+        if (req_valid$q & ~pop) begin
             reserved$d = reserved_inc;
         end
-        if (~accept & pop) begin
+        if (~req_valid$q & pop) begin
             reserved$d = reserved_dec;
         end
-        full$d = ((reserved$q == depth5) & ~pop) | ((reserved$q == almost5) & accept & ~pop);
+        held_all = (reserved$q == depth5) | ((reserved$q == almost5) & req_valid$q);
+        held_almost = ((reserved$q == almost5) & ~req_valid$q) | ((reserved$q == almost4) & req_valid$q);
+        full$d = (held_all & ~pop) | (held_almost & accept & ~pop);
     end
     
 endmodule // patch_loader

@@ -910,6 +910,9 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
     localparam  one12 = 12'h1;
+    localparam  one3 = 3'b1;
+    localparam  misses3 = 3'b100;
+    localparam  almost3 = 3'b11;
     localparam  one2 = 2'b1;
     localparam  slot0 = 2'b0;
     localparam  slot1 = 2'b1;
@@ -1046,6 +1049,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  t_v3$d;
     wire  t_v3$q;
     reg  t_v3$clock;
+    reg  [2:0] t_n$d;
+    wire  [2:0] t_n$q;
+    reg  t_n$clock;
+    reg  t_full$d;
+    wire  t_full$q;
+    reg  t_full$clock;
     reg  [1:0] t_wp$d;
     wire  [1:0] t_wp$q;
     reg  t_wp$clock;
@@ -1510,6 +1519,16 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(t_v3$q),
         .clock(t_v3$clock)
     );
+    processing_element$cache$t_n t_n(
+        .d(t_n$d),
+        .q(t_n$q),
+        .clock(t_n$clock)
+    );
+    processing_element$cache$t_full t_full(
+        .d(t_full$d),
+        .q(t_full$q),
+        .clock(t_full$clock)
+    );
     processing_element$cache$t_wp t_wp(
         .d(t_wp$d),
         .q(t_wp$q),
@@ -1858,6 +1877,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         t_v1$clock = clock;
         t_v2$clock = clock;
         t_v3$clock = clock;
+        t_n$clock = clock;
+        t_full$clock = clock;
         t_wp$clock = clock;
         t_rp$clock = clock;
         f_id1$clock = clock;
@@ -1929,6 +1950,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         t_v1$d = t_v1$q;
         t_v2$d = t_v2$q;
         t_v3$d = t_v3$q;
+        t_n$d = t_n$q;
+        t_full$d = t_full$q;
         t_wp$d = t_wp$q;
         t_rp$d = t_rp$q;
         f_id1$d = f_id1$q;
@@ -1986,7 +2009,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         miss_inc = miss_count$q + one32;
         t_wp_inc = t_wp$q + one2;
         t_rp_inc = t_rp$q + one2;
-        table_full = t_v0$q & t_v1$q & t_v2$q & t_v3$q;
+        table_full = t_full$q;
         waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
@@ -2141,6 +2164,13 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
             rbx$d = ret_bx$read_data;
             rby$d = ret_by$read_data;
         end
+        if (miss & ~fill) begin
+            t_n$d = t_n$q + one3;
+        end
+        if (fill & ~miss) begin
+            t_n$d = t_n$q - one3;
+        end
+        t_full$d = ((t_n$q == misses3) & ~fill) | ((t_n$q == almost3) & miss & ~fill);
         if (fill) begin
             t_rp$d = t_rp_inc;
         end
@@ -5412,6 +5442,25 @@ module processing_element$cache$sp_inc_x(d,q,clock);
 endmodule // processing_element$cache$sp_inc_x
 
 
+module processing_element$cache$t_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_full
+
+
 module processing_element$cache$t_id0(d,q,clock);
     
     // Module arguments
@@ -5562,6 +5611,25 @@ module processing_element$cache$t_line3(d,q,clock);
     end
           
 endmodule // processing_element$cache$t_line3
+
+
+module processing_element$cache$t_n(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$t_n
 
 
 module processing_element$cache$t_rp(d,q,clock);
@@ -6608,6 +6676,7 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     // Constant declarations
     localparam  depth5 = 5'b10000;
     localparam  almost5 = 5'b1111;
+    localparam  almost4 = 5'b1110;
     localparam  one5 = 5'b1;
     localparam  one4 = 4'h1;
     localparam  one32 = 32'h1;
@@ -6688,6 +6757,8 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     reg  [4:0] reserved_inc;
     reg  [4:0] reserved_dec;
     reg  [31:0] load_inc;
+    reg  held_all;
+    reg  held_almost;
     
     // Sub module instances
     processing_element$loader$req_ptr req_ptr(
@@ -6811,12 +6882,12 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         reserved_dec = reserved$q - one5;
         load_inc = load_count$q + one32;
         lane_id$write_address = req_ptr$q;
-        lane_id$write_data = id;
-        lane_id$write_enable = accept;
+        lane_id$write_data = req_addr$q;
+        lane_id$write_enable = req_valid$q;
         req_valid$d = accept;
-        if (accept) begin
+        req_addr$d = id;
+        if (req_valid$q) begin
             req_ptr$d = req_inc;
-            req_addr$d = id;
         end
         mem_req = req_valid$q;
         mem_addr = req_addr$q;
@@ -6858,13 +6929,15 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         out_ay = lane_ay$read_data;
         out_bx = lane_bx$read_data;
         out_by = lane_by$read_data;
-        if (accept & ~pop) begin
+        if (req_valid$q & ~pop) begin
             reserved$d = reserved_inc;
         end
-        if (~accept & pop) begin
+        if (~req_valid$q & pop) begin
             reserved$d = reserved_dec;
         end
-        full$d = ((reserved$q == depth5) & ~pop) | ((reserved$q == almost5) & accept & ~pop);
+        held_all = (reserved$q == depth5) | ((reserved$q == almost5) & req_valid$q);
+        held_almost = ((reserved$q == almost5) & ~req_valid$q) | ((reserved$q == almost4) & req_valid$q);
+        full$d = (held_all & ~pop) | (held_almost & accept & ~pop);
     end
     
 endmodule // processing_element$loader
