@@ -79,12 +79,14 @@
 //!
 //! `cmd_ready` is high while the tag FIFO has room, the loader can take an id and no sector
 //! waits (for every kind of command: the condition must not depend on `cmd_retire` or
-//! `cmd_sector`); it depends on registers only.
+//! `cmd_sector`); it is an AND of three registers (`tags_full`, the loader's `full`, `pend`),
+//! so that the command handshake reaches the tag FIFO's write enables through one gate.
 //!
 //! # Latency and throughput
 //!
 //! A job reaches the intersection unit the loader's latency (`T_c + 3` without a cache) plus the
-//! screener's plus the slice's (one clock) and the queue's (two) after it is accepted; the unit then issues
+//! screener's plus the slice's (one clock) and the queue's (three: its input register, then
+//! two) after it is accepted; the unit then issues
 //! one ray per clock. Commands are taken one per clock and jobs stream back to back at one per
 //! clock through the loader, the screener, the slice and the queue, so in steady state the PE
 //! is bound by the slowest of the command stream (one command per clock: sectors, jobs and
