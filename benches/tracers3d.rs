@@ -2,7 +2,7 @@
 //! (`Method3::ALL`) against parry3d's BVH ray casts on the same scene, single thread.
 //!
 //! Workloads: the 3D workload (`scene gen --dim 3`: 1000 squares of side 32 in [0, 1024)³,
-//! seed 7) and the Cornell box (`scenes/cornell_box.obj`, 17 polygons). From each of 16
+//! seed 7) and the Cornell box (`scenes/cornell_box.obj`, 26 polygons). From each of 16
 //! source polygons (spread over the indices), the cosine-weighted hemisphere set of R = 1024
 //! rays (64 × 16) from its vertex centroid. Every method traces every bundle once per round;
 //! rounds are interleaved so drift of the machine hits all methods alike, and the median round
@@ -112,7 +112,7 @@ fn main() {
             "3D workload (1000 squares of side 32, seed 7)",
             gen::generate(1000, 32.0, 7).expect("valid"),
         ),
-        Workload::new("Cornell box (17 polygons)", cornell),
+        Workload::new("Cornell box (26 polygons)", cornell),
     ];
     println!("3D tracer speed: R = 1024 cosine rays (64 × 16) from 16 sources, {rounds} rounds, 1 thread");
     for w in &workloads {

@@ -22,7 +22,7 @@ fn trace_an_obj_scene_from_a_polygon_every_technique_the_same_hits() {
             "--scene",
             CORNELL,
             "--source",
-            "1",
+            "7",
             "--rays",
             "256",
             "--method",
@@ -31,14 +31,14 @@ fn trace_an_obj_scene_from_a_polygon_every_technique_the_same_hits() {
         ]);
         assert_eq!(v["method"], m.name());
         let source = &v["source"];
-        // The ceiling's vertex centroid and front normal (SCENES3D.md).
-        assert_eq!(source["patch"], 1);
+        // The front ceiling piece's vertex centroid and front normal (SCENES3D.md).
+        assert_eq!(source["patch"], 7);
         assert_eq!(source["normal"], serde_json::json!([0.0, -1.0, 0.0]));
         assert_eq!(source["origin"].as_array().unwrap().len(), 3);
         let rays = v["rays"].as_array().unwrap();
         assert_eq!(rays.len(), 256);
         assert!(rays.iter().all(|r| r["direction"].as_array().unwrap().len() == 3));
-        assert!(rays.iter().all(|r| r["hit"] != 1), "the source polygon is never hit");
+        assert!(rays.iter().all(|r| r["hit"] != 7), "the source polygon is never hit");
         let hits = rays.iter().filter(|r| !r["hit"].is_null()).count() as u64;
         assert_eq!(v["counters"]["actual_intersections"], hits);
         // The open front lets some rays out, the rest hit.
@@ -114,9 +114,10 @@ fn form_factors_of_an_obj_polygon_and_of_a_free_point() {
     let light = v["form_factors"].as_array().unwrap().iter().find(|e| e["patch"] == 13).unwrap();
     let f = light["ff"].as_f64().unwrap();
     assert!((f - 0.03411).abs() < 1e-3, "F to the light {f}");
-    let text = ok(&["form-factors", "--scene", CORNELL, "--source", "6", "--rays", "1024", "--origins", "4"]);
+    let text =
+        ok(&["form-factors", "--scene", CORNELL, "--source", "15", "--rays", "1024", "--origins", "4"]);
     assert!(
-        text.starts_with("form factors from polygon 6 (4 origins × 1024 sine rays, conventional)"),
+        text.starts_with("form factors from polygon 15 (4 origins × 1024 sine rays, conventional)"),
         "{text}"
     );
 }
@@ -128,7 +129,7 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
         args.extend_from_slice(extra);
         fails(&args, expect);
     };
-    t(&["--source", "17"], &["--source", "between 0 and 16", "17 polygons", "got 17"]);
+    t(&["--source", "26"], &["--source", "between 0 and 25", "26 polygons", "got 26"]);
     t(&["--origin", "1,2,3", "--normal", "0,0,0"], &["--normal", "non-zero", "0,0,0"]);
     t(&["--origin", "1,2,3", "--normal", "0,inf,0"], &["--normal", "finite"]);
     t(&["--origin", "1,2", "--normal", "0,1"], &["--origin", "two coordinates", "3D"]);
@@ -148,7 +149,7 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
         args.extend_from_slice(extra);
         fails(&args, expect);
     };
-    f(&["--source", "99"], &["--source", "between 0 and 16"]);
+    f(&["--source", "99"], &["--source", "between 0 and 25"]);
     f(&["--source", "1", "--origins", "0"], &["--origins", "between 1 and 4096", "got 0"]);
     f(&["--origin", "1,2,3", "--normal", "0,1,0", "--origins", "4"], &["--origins", "--source"]);
     f(&["--source", "1", "--arith", "fixed"], &["--arith fixed", "2D"]);

@@ -88,23 +88,21 @@ fn coaxial_discs_as_regular_polygons() {
     }
 }
 
-/// The Cornell box's polygons whose area is partly hidden: the floor (0), under the blocks'
-/// footprints, and the ceiling (1), above the light 0.1 mm below it.
-const PARTLY_HIDDEN: [usize; 2] = [0, 1];
-
 #[test]
 fn reciprocity_on_the_cornell_box() {
     // A_i F_ij = A_j F_ji for every pair, within the two estimates' documented errors (1 % of
-    // each plus 2/R for a pair seen at grazing angles, where a few horizon cells decide it).
+    // each plus 2/R for a pair seen at grazing angles, where a few horizon cells decide it). The
+    // floor and the ceiling are cut around the blocks and the light (SCENES3D.md), so every
+    // pair is checked, the floor's and the ceiling's pieces too.
     let scene = closed3d::cornell();
     let n = scene.polygons.len();
-    // Brute force is the fastest tracer on 17 polygons (PERFORMANCE.md); every tracer gives the
-    // same rows (the last test).
+    // Brute force is the fastest tracer on the Cornell box's 26 polygons (PERFORMANCE.md);
+    // every tracer gives the same rows (the last test).
     let p = Ff3Params { method: Method3::Brute, ..Ff3Params::default() };
     let rows = form_factors::rows(&scene, &grid(&scene), 0..n, &p, || {}).unwrap();
     let (cells, mut worst, mut pairs) = (2.0 / p.rays as f64, (0.0, 0, 0), 0);
-    for i in (0..n).filter(|i| !PARTLY_HIDDEN.contains(i)) {
-        for j in (i + 1..n).filter(|j| !PARTLY_HIDDEN.contains(j)) {
+    for i in 0..n {
+        for j in i + 1..n {
             let (ai, aj) = (scene.polygons[i].area, scene.polygons[j].area);
             let (gij, gji) = (ai * rows[i].get(j), aj * rows[j].get(i));
             let bound = TOLERANCE * (gij + gji) + cells * (ai + aj);
@@ -114,27 +112,25 @@ fn reciprocity_on_the_cornell_box() {
             }
         }
     }
-    assert!(pairs > 40 && worst.0 > 0.0, "{pairs} pairs see each other: the test checks too little");
+    println!(
+        "Cornell box at the defaults: {pairs} pairs, worst {:.3} of the bound, pair {:?}",
+        worst.0,
+        (worst.1, worst.2)
+    );
+    assert!(pairs > 150 && worst.0 > 0.0, "{pairs} pairs see each other: the test checks too little");
     assert!(
         worst.0 <= 1.0,
         "pair {:?}: |A_i F_ij − A_j F_ji| is {:.2} times the bound",
         (worst.1, worst.2),
         worst.0
     );
-    // The floor and the ceiling break reciprocity, and by the hidden share of their area: an
-    // origin under a block, or above the light, sees the back of the block's sides or the
-    // light, which the screener drops (a back-facing polygon is never hit), so its rays go on
-    // to the ceiling and the floor. Today's behaviour, asserted so that a change shows.
-    let (floor, ceiling) = (&scene.polygons[0], &scene.polygons[1]);
-    let (up, down) = (floor.area * rows[0].get(1), ceiling.area * rows[1].get(0));
-    assert!(up > 1.15 * down, "floor to ceiling {up}, ceiling to floor {down}");
 }
 
 #[test]
 fn every_tracer_gives_the_same_rows() {
     let scene = closed3d::cornell();
     let grid = grid(&scene);
-    for k in [0, 7, scene.polygons.len() - 1] {
+    for k in [0, 7, 15, 16, scene.polygons.len() - 1] {
         let rows: Vec<(Method3, Row)> = Method3::ALL
             .iter()
             .map(|&method| {

@@ -122,8 +122,8 @@ fn conventional_matches_brute_on_the_cornell_box() {
             let bundle = bundle_on(&scene, k, &mut rng, 16, 8);
             let b = agree(&what, &scene, &grid, &bundle);
             // Where the oracle without screening meets a front side first, screening changes
-            // nothing. (A source on the floor under a block, which has no bottom, meets the
-            // block's sides from behind: screened out, those rays go on to the ceiling.)
+            // nothing. (A ray that meets a polygon from behind first, such as one from the
+            // ceiling grazing the back of the light 0.1 mm below it, goes on: screened out.)
             for (i, d) in bundle.directions.iter().enumerate() {
                 let o = brute::nearest(&scene, bundle.source.origin, *d, Some(k));
                 if o.is_some_and(|h| h.front) {

@@ -101,7 +101,7 @@ fn box_room() -> &'static Traced {
     T.get_or_init(|| Traced::new("box_room.obj", shipped("box_room.obj"), Ff3Params::default()))
 }
 
-/// The Cornell box at the defaults (brute force: the fastest tracer on 17 polygons).
+/// The Cornell box at the defaults (brute force: the fastest tracer on its 26 polygons).
 fn cornell() -> &'static Traced {
     static T: OnceLock<Traced> = OnceLock::new();
     T.get_or_init(|| {
@@ -180,17 +180,16 @@ fn every_row_of_the_closed_box_room_sums_to_1() {
     println!("box room: largest |Σ_j F_ij − 1| {worst:.2e} (bound {:.2e})", t.row_rounding());
 }
 
-/// Checks `A_i F_ij = A_j F_ji` for every pair of `t` but those with a polygon of `skip`,
-/// within the estimate's documented error at the defaults (SCENES3D.md): 1 % of each side plus
-/// two ray weights, `2/R`, of each area (a pair seen at grazing angles is decided by a few
-/// horizon cells). Returns the pairs checked, the worst ratio to the bound and the total
+/// Checks `A_i F_ij = A_j F_ji` for every pair of `t`, within the estimate's documented error at
+/// the defaults (SCENES3D.md): 1 % of each side plus two ray weights, `2/R`, of each area (a
+/// pair seen at grazing angles is decided by a few horizon cells). Returns the pairs checked, the worst ratio to the bound and the total
 /// `Σ |A_i F_ij − A_j F_ji|` over `Σ A_i F_ij`.
-fn reciprocity(t: &Traced, skip: &[usize]) -> (usize, f64, f64) {
+fn reciprocity(t: &Traced) -> (usize, f64, f64) {
     let n = t.scene.polygons.len();
     let cell = 2.0 / t.params.rays as f64;
     let (mut pairs, mut worst, mut worst_pair, mut diff, mut total) = (0, 0.0f64, (0, 0), 0.0, 0.0);
-    for i in (0..n).filter(|i| !skip.contains(i)) {
-        for j in (i + 1..n).filter(|j| !skip.contains(j)) {
+    for i in 0..n {
+        for j in i + 1..n {
             let (gij, gji) = (t.area(i) * t.rows[i].get(j), t.area(j) * t.rows[j].get(i));
             if gij + gji == 0.0 {
                 continue;
@@ -210,15 +209,14 @@ fn reciprocity(t: &Traced, skip: &[usize]) -> (usize, f64, f64) {
 
 #[test]
 fn reciprocity_on_the_box_room_and_the_cornell_box() {
-    let (pairs, worst, mean) = reciprocity(box_room(), &[]);
+    let (pairs, worst, mean) = reciprocity(box_room());
     println!("box room: {pairs} pairs, worst {worst:.3} of the bound, Σ|ΔAF| / ΣAF = {mean:.2e}");
     assert_eq!(pairs, 54 * 45 / 2);
-    // The Cornell box's floor and ceiling are partly hidden (under the blocks, above the light)
-    // and break reciprocity by design of the screener (SCENES3D.md; tests/ff3d.rs asserts the
-    // excess): every other pair.
-    let (pairs, worst, mean) = reciprocity(cornell(), &[0, 1]);
+    // The Cornell box's floor and ceiling are cut around the blocks and the light, so every
+    // point of them sees only front faces (SCENES3D.md): every pair, theirs too.
+    let (pairs, worst, mean) = reciprocity(cornell());
     println!("Cornell box: {pairs} pairs, worst {worst:.3} of the bound, Σ|ΔAF| / ΣAF = {mean:.2e}");
-    assert!(pairs > 40, "{pairs} pairs see each other: the test checks too little");
+    assert!(pairs > 150, "{pairs} pairs see each other: the test checks too little");
 }
 
 /// Checks the energy balance of each channel of `s`, solved by progressive refinement (`full`
@@ -293,28 +291,32 @@ fn energy_balances_in_every_channel_closed_and_open() {
         }
         assert!(figures[0].2 / figures[0].0 != figures[2].2 / figures[2].0, "the channels are the same");
     }
-    // The Cornell box is open too (its front); its rows are not reciprocal along the floor and
-    // the ceiling, which progressive refinement's balance does not depend on.
+    // The Cornell box is open too (its front). Its floor and ceiling are cut around the blocks
+    // and the light (SCENES3D.md), so its rows are reciprocal to their estimate's error and the
+    // full solve balances power like the rooms' do: emitted − absorbed − escaped measured
+    // +7.9e-4, −1.2e-4, −1.7e-4 of emitted (r, g, b; uncut it was −4.6 %), progressive's the
+    // unshot 9.3e-4 to 9.9e-4. Held to 2e-3 of emitted.
     let t = cornell();
-    for (c, (e, a, x, _)) in balance(t, &t.progressive(), false).into_iter().enumerate() {
-        println!("Cornell box, progressive, channel {c}: emitted {e:.1}, absorbed {a:.1}, escaped {x:.1}");
-    }
-    // The full solve gathers, and the floor and the ceiling gather through the blocks and the
-    // light they run under: it makes power. Today's figure, asserted so that a change shows.
-    for (c, (e, a, x, imbalance)) in balance(t, &t.full(), true).into_iter().enumerate() {
-        println!(
-            "Cornell box, full, channel {c}: emitted {e:.1}, absorbed {a:.1}, escaped {x:.1}, \
-             emitted − absorbed − escaped {:.3e} of emitted",
-            imbalance / e
-        );
-        assert!(imbalance < -0.02 * e, "channel {c}: the Cornell box's full solve balances ({imbalance})");
+    for (solver, s, full) in [("progressive", t.progressive(), false), ("full", t.full(), true)] {
+        for (c, (e, a, x, imbalance)) in balance(t, &s, full).into_iter().enumerate() {
+            assert!(x > 0.1 * e, "{solver}: only {x} of {e} escapes through the open front");
+            println!(
+                "Cornell box, {solver}, channel {c}: emitted {e:.1}, absorbed {a:.1}, escaped {x:.1}, \
+                 emitted − absorbed − escaped {:.3e} of emitted",
+                imbalance / e
+            );
+            assert!(
+                imbalance.abs() <= 2e-3 * e,
+                "{solver} channel {c}: the Cornell box's solve is off balance by {imbalance} of {e}"
+            );
+        }
     }
 }
 
 /// The residuals and the agreement of the two solvers on `t`; returns, per channel, the full
 /// solver's relative residual, progressive's against the shooting matrix, and the relative
 /// difference of the two solutions in power.
-fn residuals_and_agreement(t: &Traced, agree: Option<f64>) -> Vec<(f64, f64, f64)> {
+fn residuals_and_agreement(t: &Traced, agree: f64) -> Vec<(f64, f64, f64)> {
     let (full, progressive) = (t.full(), t.progressive());
     (0..3)
         .map(|c| {
@@ -349,14 +351,7 @@ fn residuals_and_agreement(t: &Traced, agree: Option<f64>) -> Vec<(f64, f64, f64
                 t.name
             );
             let difference = power(t, &d) / power(t, bf);
-            // The Cornell box's differ by its floor's reciprocity error (asserted elsewhere).
-            if let Some(agree) = agree {
-                assert!(
-                    difference <= agree,
-                    "{} channel {c}: the solvers differ by {difference:.3e}",
-                    t.name
-                );
-            }
+            assert!(difference <= agree, "{} channel {c}: the solvers differ by {difference:.3e}", t.name);
             (full_residual, shot, difference)
         })
         .collect()
@@ -366,9 +361,9 @@ fn residuals_and_agreement(t: &Traced, agree: Option<f64>) -> Vec<(f64, f64, f64
 fn both_solvers_solve_the_equation_and_agree() {
     // They differ by the tolerances and the rows' reciprocity error (Σ|ΔAF| / ΣAF, printed by
     // the reciprocity test): within 2e-3 of the power on the box room, 1e-2 on the open room's
-    // 1024 rays from 64 origins. The Cornell box's polygons have areas far apart (the
-    // residuals weigh by them); its solutions differ by its floor's reciprocity error.
-    for (t, agree) in [(box_room(), Some(2e-3)), (open_room(), Some(1e-2)), (cornell(), None)] {
+    // 1024 rays from 64 origins, 5e-3 on the Cornell box (measured 1.8e-3 to 2.1e-3; uncut,
+    // 3.8e-2).
+    for (t, agree) in [(box_room(), 2e-3), (open_room(), 1e-2), (cornell(), 5e-3)] {
         for (c, (full, shot, difference)) in residuals_and_agreement(t, agree).into_iter().enumerate() {
             println!(
                 "{}, channel {c}: full residual {full:.2e}, progressive (shooting) residual \
@@ -376,6 +371,30 @@ fn both_solvers_solve_the_equation_and_agree() {
                 t.name
             );
         }
+    }
+    // Polygon by polygon on the Cornell box, relative to the full solve's B. Measured: the
+    // floor's power (its 7 pieces) within 2.1e-3 to 4.0e-3 (uncut, 26 %), the median polygon
+    // 3.4e-3 to 4.0e-3, the worst 3.2e-2 to 4.9e-2 on the short block's side facing the back
+    // wall (polygon 20; uncut, 23 %), which sees the light only at grazing angles: there the two
+    // rows' estimates, A_light F_light,20 and A_20 F_20,light, differ by a factor of 2 within
+    // the `2/R` bound of the reciprocity test, and its direct light is all from the light. Held
+    // to 1e-2 (floor and median) and 0.1 (worst).
+    let t = cornell();
+    let (full, progressive) = (t.full(), t.progressive());
+    for c in 0..3 {
+        let (bf, bp) = (&full.channels[c].radiosity, &progressive.channels[c].radiosity);
+        let mut d: Vec<(f64, usize)> = (0..bf.len()).map(|j| ((bf[j] - bp[j]).abs() / bf[j], j)).collect();
+        d.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let (worst, j) = d[d.len() - 1];
+        let median = d[d.len() / 2].0;
+        let floor = |b: &[f64]| (0..7).map(|j| t.area(j) * b[j]).sum::<f64>();
+        let on_floor = (floor(bf) - floor(bp)).abs() / floor(bf);
+        println!(
+            "Cornell box, channel {c}: |B_full − B_progressive| / B_full worst {worst:.2e} (polygon {j}), \
+             median {median:.2e}, the floor's power {on_floor:.2e}"
+        );
+        assert!(worst <= 0.1, "channel {c}: polygon {j}'s solutions differ by {worst:.3e}");
+        assert!(median <= 1e-2 && on_floor <= 1e-2, "channel {c}: median {median:.3e}, floor {on_floor:.3e}");
     }
 }
 
@@ -525,7 +544,7 @@ fn the_command_on_obj_scenes() {
                 "radiosity",
             );
             assert!(all_finite(&v), "{v}");
-            let n = if scene == room { 54 } else { 17 };
+            let n = if scene == room { 54 } else { 26 };
             let patches = v["patches"].as_array().unwrap();
             assert_eq!(patches.len(), n);
             for p in patches {
@@ -545,8 +564,11 @@ fn the_command_on_obj_scenes() {
                 let left = if solver == "progressive" { f(c, "unshot") * f(c, "emitted") } else { 0.0 };
                 let imbalance = f(c, "emitted") - f(c, "absorbed") - f(c, "escaped") - left;
                 // Exact (progressive), or up to the rows' reciprocity error, large from 4
-                // origins and larger on the Cornell box's floor and ceiling
-                // (energy_balances_in_every_channel_closed_and_open).
+                // origins: the room's full solve is off by −3.1 % of emitted, the Cornell box's by
+                // −24 % (its small light seen from 4 points of each polygon, and each polygon
+                // from 4 points of the light; measured at 256 rays −5.9 to −6.5 % from 16
+                // origins, −1.0 to −1.2 % from 64, and 10⁻³ at the defaults,
+                // energy_balances_in_every_channel_closed_and_open).
                 if solver == "progressive" {
                     assert!(imbalance.abs() <= ROUNDING * f(c, "emitted"), "{scene} {solver}: {c}");
                 } else if scene == room {

@@ -270,28 +270,46 @@ fn has_edge(edges: &[(DVec3, DVec3)], a: DVec3, b: DVec3) -> bool {
     edges.iter().any(|&(p, q)| (p, q) == (a, b) || (p, q) == (b, a))
 }
 
+/// The Cornell box's faces by index: 7 floor pieces, 4 ceiling pieces, the back wall, the right
+/// wall, the left wall's 2 triangles, the light, then each block's top and 4 sides.
+const FLOOR: std::ops::Range<usize> = 0..7;
+const CEILING: std::ops::Range<usize> = 7..11;
+const LIGHT: usize = 15;
+const BLOCKS: [std::ops::Range<usize>; 2] = [16..21, 21..26];
+
 #[test]
 fn the_cornell_box_loads_with_its_faces_materials_and_orientation() {
     let s = obj::load(&scenes().join("cornell_box.obj")).unwrap();
-    assert_eq!(s.polygons.len(), 17, "floor, ceiling, back, right, left (2), light, 5 + 5 block faces");
+    assert_eq!(
+        s.polygons.len(),
+        26,
+        "floor (7 pieces), ceiling (4 pieces), back, right, left (2), light, 5 + 5 block faces"
+    );
     let names: Vec<&str> = s.polygons.iter().map(|p| s.materials[p.material].name.as_str()).collect();
-    let mut expected = vec!["white", "white", "white", "green", "red", "red", "light"];
+    let mut expected = vec!["white"; 12];
+    expected.extend(["green", "red", "red", "light"]);
     expected.extend(["white"; 10]);
     assert_eq!(names, expected);
-    let light = &s.polygons[6];
+    let light = &s.polygons[LIGHT];
     assert_eq!(light.emission, 11.0);
     assert!((light.area - 130.0 * 105.0).abs() < 1e-6);
     assert_eq!(light.normal, DVec3::NEG_Y, "the light faces down");
     assert!(s.polygons.iter().filter(|p| p.emission > 0.0).count() == 1);
     assert!((s.polygons[0].reflectance - 0.705).abs() < 1e-12);
-    assert!((s.polygons[3].reflectance - 0.227).abs() < 1e-12);
-    assert!((s.polygons[4].reflectance - 0.2483333333333333).abs() < 1e-12);
+    assert!((s.polygons[12].reflectance - 0.227).abs() < 1e-12);
+    assert!((s.polygons[13].reflectance - 0.2483333333333333).abs() < 1e-12);
+    for k in FLOOR {
+        assert_eq!(s.polygons[k].normal, DVec3::Y, "floor piece {k} faces up");
+    }
+    for k in CEILING {
+        assert_eq!(s.polygons[k].normal, DVec3::NEG_Y, "ceiling piece {k} faces down");
+    }
     // The room's faces face in, the blocks' faces face out.
     let room_centre = DVec3::new(278.0, 274.4, 279.6);
-    for (k, p) in s.polygons.iter().enumerate().take(7) {
+    for (k, p) in s.polygons.iter().enumerate().take(LIGHT + 1) {
         assert!((room_centre - p.centre).dot(p.normal) > 0.0, "room face {k} faces out");
     }
-    for block in [7..12, 12..17] {
+    for block in BLOCKS {
         let faces = &s.polygons[block.clone()];
         let centre = faces.iter().map(|p| p.centre).sum::<DVec3>() / faces.len() as f64;
         for (k, p) in block.zip(faces) {
@@ -300,31 +318,98 @@ fn the_cornell_box_loads_with_its_faces_materials_and_orientation() {
     }
 }
 
+/// The area of the polygon `(x, z)` seen from above (`y` up), positive counter-clockwise in
+/// `(x, z)`.
+fn xz_area(v: &[(f64, f64)]) -> f64 {
+    (0..v.len()).map(|i| v[i].0 * v[(i + 1) % v.len()].1 - v[(i + 1) % v.len()].0 * v[i].1).sum::<f64>() / 2.0
+}
+
 #[test]
-fn the_cornell_box_is_closed_but_for_its_open_front_the_light_and_the_blocks_bottoms() {
+fn the_cornell_box_floor_and_ceiling_pieces_tile_them_minus_the_footprints_and_the_light() {
     let s = obj::load(&scenes().join("cornell_box.obj")).unwrap();
-    // The shell of six walls: open only along the four edges of the front, z = 0.
-    let shell = Scene3 { polygons: s.polygons[..6].to_vec(), materials: s.materials.clone() };
+    // The published floor, the blocks' footprints (their sides' bottom vertices), the published
+    // ceiling and the light's outline.
+    let floor = [(0.0, 0.0), (552.8, 0.0), (549.6, 559.2), (0.0, 559.2)];
+    let short = [(130.0, 65.0), (82.0, 225.0), (240.0, 272.0), (290.0, 114.0)];
+    let tall = [(423.0, 247.0), (265.0, 296.0), (314.0, 456.0), (472.0, 406.0)];
+    let ceiling = [(556.0, 0.0), (556.0, 559.2), (0.0, 559.2), (0.0, 0.0)];
+    let light = [(343.0, 227.0), (343.0, 332.0), (213.0, 332.0), (213.0, 227.0)];
+    for (block, footprint) in BLOCKS.into_iter().zip([short, tall]) {
+        let mut bottom: Vec<(f64, f64)> = s.polygons[block]
+            .iter()
+            .flat_map(|p| p.vertices.iter().filter(|v| v.y == 0.0).map(|v| (v.x, v.z)))
+            .collect();
+        bottom.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        bottom.dedup();
+        let mut expected = footprint.to_vec();
+        expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert_eq!(bottom, expected, "the footprint is the block's bottom vertices");
+    }
+    let area = |range: std::ops::Range<usize>| s.polygons[range].iter().map(|p| p.area).sum::<f64>();
+    let cases = [
+        ("floor", FLOOR, 0.0, xz_area(&floor).abs() - xz_area(&short).abs() - xz_area(&tall).abs()),
+        ("ceiling", CEILING, 548.8, xz_area(&ceiling).abs() - xz_area(&light).abs()),
+    ];
+    for (name, range, y, exact) in cases {
+        assert!(s.polygons[range.clone()].iter().all(|p| p.vertices.iter().all(|v| v.y == y)), "{name}");
+        let sum = area(range.clone());
+        assert!((sum - exact).abs() <= 1e-6 * exact, "{name}: the pieces' areas {sum}, expected {exact}");
+        // No overlap and no gap: the pieces face the same way and their edges pair up (each
+        // inner edge runs once each way) but for the region's outline and its holes', so every
+        // point of the region is covered once (the pieces' winding numbers sum to the region's)
+        // and the areas above agree.
+        let normal = s.polygons[range.start].normal;
+        assert!(s.polygons[range.clone()].iter().all(|p| p.normal == normal), "{name}");
+        let pieces = Scene3 { polygons: s.polygons[range].to_vec(), materials: s.materials.clone() };
+        let mut open: Vec<((f64, f64), (f64, f64))> =
+            pieces.open_edges().iter().map(|(a, b)| ((a.x, a.z), (b.x, b.z))).collect();
+        let mut outline: Vec<((f64, f64), (f64, f64))> = Vec::new();
+        let holes: &[&[(f64, f64)]] = if name == "floor" { &[&short, &tall] } else { &[&light] };
+        let outer: &[(f64, f64)] = if name == "floor" { &floor } else { &ceiling };
+        for ring in std::iter::once(outer).chain(holes.iter().copied()) {
+            for i in 0..ring.len() {
+                outline.push((ring[i], ring[(i + 1) % ring.len()]));
+            }
+        }
+        let undirected = |e: &((f64, f64), (f64, f64))| if e.0 < e.1 { *e } else { (e.1, e.0) };
+        let mut open_u: Vec<_> = open.drain(..).map(|e| undirected(&e)).collect();
+        let mut outline_u: Vec<_> = outline.iter().map(undirected).collect();
+        open_u.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        outline_u.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert_eq!(open_u, outline_u, "{name}: the pieces' open edges are not the outline and the holes'");
+    }
+}
+
+#[test]
+fn the_cornell_box_is_closed_but_for_its_open_front_and_the_light() {
+    let s = obj::load(&scenes().join("cornell_box.obj")).unwrap();
+    // The shell of six walls (the floor and the ceiling in pieces): open along the four edges of
+    // the front, z = 0, the blocks' footprints and the light's outline cut in the ceiling.
+    let shell = Scene3 { polygons: s.polygons[..LIGHT].to_vec(), materials: s.materials.clone() };
     let open = shell.open_edges();
-    assert_eq!(open.len(), 4, "{open:?}");
-    assert!(open.iter().all(|(a, b)| a.z == 0.0 && b.z == 0.0), "{open:?}");
+    assert_eq!(open.len(), 4 + 8 + 4, "{open:?}");
+    let front: Vec<_> = open.iter().filter(|(a, b)| a.z == 0.0 && b.z == 0.0).copied().collect();
+    assert_eq!(front.len(), 4, "{open:?}");
     for (a, b) in [
         ((552.8, 0.0), (0.0, 0.0)),
         ((0.0, 0.0), (0.0, 548.8)),
         ((0.0, 548.8), (556.0, 548.8)),
         ((556.0, 548.8), (552.8, 0.0)),
     ] {
-        assert!(has_edge(&open, DVec3::new(a.0, a.1, 0.0), DVec3::new(b.0, b.1, 0.0)), "{a:?}–{b:?}");
+        assert!(has_edge(&front, DVec3::new(a.0, a.1, 0.0), DVec3::new(b.0, b.1, 0.0)), "{a:?}–{b:?}");
     }
     // Each block: open only along its four bottom edges, on the floor.
-    for block in [7..12, 12..17] {
+    for block in BLOCKS {
         let b = Scene3 { polygons: s.polygons[block].to_vec(), materials: s.materials.clone() };
         let open = b.open_edges();
         assert_eq!(open.len(), 4);
         assert!(open.iter().all(|(a, b)| a.y == 0.0 && b.y == 0.0));
     }
-    // The whole scene: those 4 + 4 + 4 and the light's 4.
-    assert_eq!(s.open_edges().len(), 16);
+    // The whole scene: the blocks close the floor's holes; open are the front's 4 edges, the
+    // ceiling's hole (4) and the light's outline 0.1 mm below it (4).
+    let open = s.open_edges();
+    assert_eq!(open.len(), 12, "{open:?}");
+    assert_eq!(open.iter().filter(|(a, b)| a.y == 548.7 && b.y == 548.7).count(), 4, "{open:?}");
 }
 
 #[test]
