@@ -241,9 +241,16 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     }
     let written = shelling_testbench::export::write(&out.join("verilog"))
         .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
-    let verilog_hash = shelling_testbench::export::verilog()
-        .map(|files| shelling_testbench::export::hash(&files))
-        .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
+    let files = shelling_testbench::export::verilog().map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
+    let verilog_hash = shelling_testbench::export::hash(&files);
+    // Each block's own file, hashed alone: what its results are checked against.
+    let block_hashes: BTreeMap<String, String> = files
+        .iter()
+        .filter_map(|(name, text)| {
+            let block = name.strip_suffix(".v")?;
+            Some((block.to_string(), shelling_testbench::export::hash(&[(name.clone(), text.clone())])))
+        })
+        .collect();
     eprintln!("exported {} files into {}", written.len(), out.join("verilog").display());
 
     let mut seeds = args.seeds.clone();
@@ -259,7 +266,7 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     let mut order: Vec<usize> = (0..jobs.len()).collect();
     order.sort_by_key(|&i| jobs[i].0 != "processing_element");
     let rows: Vec<Row> = run_all(&ctx, &jobs, &order, args.jobs as usize).into_iter().flatten().collect();
-    let spreads = spreads(&rows);
+    let spreads = spreads(&rows, &block_hashes);
 
     let json = serde_json::to_string_pretty(&rows)? + "\n";
     std::fs::write(out.join("fpga.json"), json)
@@ -584,6 +591,10 @@ fn tool_run(dir: &Path, tool: &Tool, args: &[String], log: &Path) -> Result<Stat
 pub struct Spread {
     pub block: String,
     pub family: Family,
+    /// The hash of the block's own exported Verilog file (`BLOCK.v`, which holds every module
+    /// it instantiates; `shelling_testbench::export::hash` of that one file), so that a change
+    /// to another block leaves this block's results current.
+    pub verilog_hash: String,
     pub target_mhz: f64,
     /// The seeds run.
     pub seeds: Vec<u64>,
@@ -596,7 +607,8 @@ pub struct Spread {
     pub max_mhz: Option<f64>,
 }
 
-/// `fpga-seeds.json`: the hash of the Verilog measured and every block's spread.
+/// `fpga-seeds.json`: the hash of the whole export measured and every block's spread with the
+/// hash of its own Verilog file.
 #[derive(Serialize, Debug)]
 pub struct SeedsFile {
     pub verilog_hash: String,
@@ -604,7 +616,7 @@ pub struct SeedsFile {
 }
 
 /// The spread of every (block, family) over its rows' seeds, in the rows' order.
-fn spreads(rows: &[Row]) -> Vec<Spread> {
+fn spreads(rows: &[Row], block_hashes: &BTreeMap<String, String>) -> Vec<Spread> {
     let mut out: Vec<Spread> = Vec::new();
     for r in rows {
         let i = match out.iter().position(|s| s.block == r.block && s.family == r.family) {
@@ -613,6 +625,7 @@ fn spreads(rows: &[Row]) -> Vec<Spread> {
                 out.push(Spread {
                     block: r.block.clone(),
                     family: r.family,
+                    verilog_hash: block_hashes.get(&r.block).cloned().unwrap_or_default(),
                     target_mhz: r.target_mhz,
                     seeds: Vec::new(),
                     fmax_mhz: Vec::new(),
@@ -645,27 +658,30 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
     let mut md = String::new();
     let _ = writeln!(
         md,
-        "Measured on the exported Verilog of hash `{verilog_hash}` (`shelling_testbench::export::hash`).\n"
+        "Measured on the exported Verilog of hash `{verilog_hash}` (`shelling_testbench::export::hash`, \
+         the whole export); a block's figures are of its own file, whose hash is in the last column of \
+         the first table (`tests/hardware.rs` checks it against the committed `hdl/verilog/BLOCK.v`).\n"
     );
     let mhz = |v: Option<f64>| v.map(|v| format!("{v:.1}")).unwrap_or_else(|| "–".into());
     let seeds = ctx.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
         md,
         "Post-route fmax over the placement seeds {seeds} (median: the lower middle value of the seeds that routed):\n\n\
-         | block | family | seeds | min (MHz) | median (MHz) | max (MHz) | target (MHz) |\n\
-         |---|---|--:|--:|--:|--:|--:|"
+         | block | family | seeds | min (MHz) | median (MHz) | max (MHz) | target (MHz) | Verilog hash |\n\
+         |---|---|--:|--:|--:|--:|--:|---|"
     );
     for s in spreads {
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {} | **{}** | {} | {} |",
+            "| {} | {} | {} | {} | **{}** | {} | {} | `{}` |",
             s.block,
             s.family.name(),
             s.seeds.len(),
             mhz(s.min_mhz),
             mhz(s.median_mhz),
             mhz(s.max_mhz),
-            s.target_mhz
+            s.target_mhz,
+            s.verilog_hash
         );
     }
     let _ = writeln!(md, "\nEvery run:\n");
