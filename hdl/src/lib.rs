@@ -4,6 +4,7 @@
 //!
 //! This crate knows nothing of scenes: its inputs are integers in the formats of [`formats`].
 
+pub mod arbiter;
 pub mod cache;
 pub mod formats;
 pub mod intersection;

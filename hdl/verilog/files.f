@@ -5,3 +5,4 @@ intersection_unit.v
 processing_element.v
 fwft_fifo.v
 job_queue.v
+memory_arbiter.v

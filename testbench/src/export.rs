@@ -5,6 +5,7 @@
 use crate::replay::export_verilog;
 use crate::{Error, Result};
 use rust_hdl::core::prelude::Block;
+use shelling_hdl::arbiter::MemoryArbiter;
 use shelling_hdl::cache::PatchCache;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
@@ -20,6 +21,10 @@ pub const FILE_LIST: &str = "files.f";
 /// The FIFO block exported on its own, for its cross-simulation and its formal task
 /// (`hdl/src/fifo.sby`): 16 words of 8 bits.
 pub type FwftFifo = Fifo<8, 4, 5>;
+
+/// The memory arbiter exported on its own, for its cross-simulation, its formal task
+/// (`hdl/src/arbiter.sby`) and its resources: four PEs.
+pub type MemoryArbiter4 = MemoryArbiter<4>;
 
 /// The blocks exported, by module name, each freshly built and connected.
 pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
@@ -37,6 +42,8 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     fifo.connect_all();
     let mut queue = JobQueue::default();
     queue.connect_all();
+    let mut arbiter = MemoryArbiter4::default();
+    arbiter.connect_all();
     vec![
         ("patch_loader", Box::new(loader)),
         ("patch_cache", Box::new(cache)),
@@ -45,6 +52,7 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
         ("processing_element", Box::new(pe)),
         ("fwft_fifo", Box::new(fifo)),
         ("job_queue", Box::new(queue)),
+        ("memory_arbiter", Box::new(arbiter)),
     ]
 }
 
