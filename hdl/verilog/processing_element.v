@@ -17403,7 +17403,7 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
     // Update code (custom)
     wire [9:0] ray8 = tag8[25:16];
     wire [15:0] id8 = tag8[15:0];
-    reg cm_hit, cm_gt_hi, cm_eq_hi, cm_lo;
+    reg cm_hit, cm_gt_hi, cm_eq_hi, cm_gt_lo, cm_eq_lo, cm_lt;
     reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
     reg m1, m2, m3;
     reg v9;
@@ -17426,7 +17426,9 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
        cm_hit = 1'b0;
        cm_gt_hi = 1'b0;
        cm_eq_hi = 1'b0;
-       cm_lo = 1'b0;
+       cm_gt_lo = 1'b0;
+       cm_eq_lo = 1'b0;
+       cm_lt = 1'b0;
        m1 = 1'b0;
        m2 = 1'b0;
        m3 = 1'b0;
@@ -17461,7 +17463,7 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
        if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
        else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
        else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-       else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && cm_lo));
+       else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && (cm_gt_lo || (cm_eq_lo && cm_lt))));
        if (rd_valid) begin
           write_address = rd_addr;
           write_key = 32'd0;
@@ -17479,7 +17481,9 @@ module processing_element$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,r
        cm_hit <= mem_meta[16];
        cm_gt_hi <= key[31:16] > mem_key[31:16];
        cm_eq_hi <= key[31:16] == mem_key[31:16];
-       cm_lo <= key[15:0] > mem_key[15:0] || (key[15:0] == mem_key[15:0] && id8 < mem_meta[15:0]);
+       cm_gt_lo <= key[15:0] > mem_key[15:0];
+       cm_eq_lo <= key[15:0] == mem_key[15:0];
+       cm_lt <= id8 < mem_meta[15:0];
        c1_gt <= key > key9;
        c1_eq <= key == key9;
        c1_lt <= id8 < id9;

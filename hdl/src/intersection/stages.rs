@@ -687,11 +687,12 @@ impl MergeRegs {
 /// before).
 ///
 /// Stage 8 (registered at its end): the new key and id against the memory's word (`cm_*`: hit
-/// flag; in the Verilog the key compare split in halves, `cm_gt_hi` and `cm_eq_hi` for the
-/// upper 16 bits and `cm_lo` for "larger lower half, or equal lower half and lower id", so
-/// that no 32-bit compare follows the block RAM's output: on ECP5 that path, its routing out of
-/// the block RAM included, was the slowest of the processing element; the model keeps the
-/// whole-word compares, the same verdict), against stage 9's (`c1_*`), the last write's
+/// flag; in the Verilog the key compare split in halves, `cm_gt_hi`, `cm_eq_hi`, `cm_gt_lo`,
+/// `cm_eq_lo` and the id's `cm_lt`, five independent 16-bit compares combined only after their
+/// registers, so that no compare longer than 16 bits, and nothing after one, follows the block
+/// RAM's output: on ECP5 that path, its routing out of the block RAM included, was the slowest
+/// of the intersection unit (a median of 137.6 MHz with the lower half and the id combined
+/// before the register); the model keeps the whole-word compares, the same verdict), against stage 9's (`c1_*`), the last write's
 /// (`c2_*`, `fw_*`) and the one before (`c3_*`, `fw2_*`); `m1` … `m3`: the ray is theirs.
 /// Stage 9 (combinational, from registers only): the newest write to the ray among the last
 /// three (`fw_valid`, `fw2_valid`, `fw3_valid`: the verdicts of the last three clocks)
@@ -778,7 +779,7 @@ impl Logic for NearestMerge {
             "\
 wire [9:0] ray8 = tag8[25:16];
 wire [15:0] id8 = tag8[15:0];
-reg cm_hit, cm_gt_hi, cm_eq_hi, cm_lo;
+reg cm_hit, cm_gt_hi, cm_eq_hi, cm_gt_lo, cm_eq_lo, cm_lt;
 reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
 reg m1, m2, m3;
 reg v9;
@@ -804,7 +805,9 @@ initial begin
             "cm_hit",
             "cm_gt_hi",
             "cm_eq_hi",
-            "cm_lo",
+            "cm_gt_lo",
+            "cm_eq_lo",
+            "cm_lt",
             "m1",
             "m2",
             "m3",
@@ -833,7 +836,7 @@ always @(*) begin
    if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
    else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
    else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-   else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && cm_lo));
+   else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && (cm_gt_lo || (cm_eq_lo && cm_lt))));
    if (rd_valid) begin
       write_address = rd_addr;
       write_key = 32'd0;
@@ -851,7 +854,9 @@ always @(posedge clock) begin
    cm_hit <= mem_meta[16];
    cm_gt_hi <= key[31:16] > mem_key[31:16];
    cm_eq_hi <= key[31:16] == mem_key[31:16];
-   cm_lo <= key[15:0] > mem_key[15:0] || (key[15:0] == mem_key[15:0] && id8 < mem_meta[15:0]);
+   cm_gt_lo <= key[15:0] > mem_key[15:0];
+   cm_eq_lo <= key[15:0] == mem_key[15:0];
+   cm_lt <= id8 < mem_meta[15:0];
 ";
         for (c, (k, id)) in
             [("c1", ("key9", "id9")), ("c2", ("fw_key", "fw_id")), ("c3", ("fw2_key", "fw2_id"))]
