@@ -128,6 +128,21 @@
 //! ids in request order. [`model::schedule`] steps the RTL's control on plain values and gives
 //! the exact lookup, host request and response cycles from the request cycles and ids, the
 //! hit/miss sequence and `T_c`.
+//!
+//! # Verification
+//!
+//! The simulation tests (`testbench/tests/cache.rs`) check the model's claims above on random
+//! streams: every response's data, order and cycle, the hit/miss sequence and the host
+//! requests, for 1 to 4096 lines, disabled and across mask changes (the flush: the processing
+//! element's tests, `testbench/tests/pe.rs`). `cache.sby` proves on the exported Verilog, for
+//! every input sequence (k-induction; `hdl/FORMAL.md`), that every request is answered exactly
+//! once, in request order, with the host memory's patch of its id (no answer lost, duplicated,
+//! reordered or carrying another patch), given a client within [`QUEUE_DEPTH`] and a host that
+//! answers its requests in order with the right patch; and that at most [`MISSES`] host
+//! requests are outstanding, each for an id that a request still outstanding asked for and none
+//! for an id already outstanding at the host (a request for a miss's id waits for its fill).
+//! The proof is of the enabled cache with one to four lines (`cfg_mask` ≤ 3: the harness cuts
+//! the line memories to four words) and without a flush (which walks all [`LINES`] lines).
 
 use crate::prim::{bram_out_tile_width, Bram, BramOut, FifoControl, FifoRam};
 use rust_hdl::prelude::*;
