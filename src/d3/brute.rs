@@ -30,6 +30,7 @@
 //! [`Facets::hit`]), and only the rest divide. A bound on `t` lets a tracer skip the inside test
 //! of a polygon whose plane lies beyond its nearest hit so far: such a hit could not be taken.
 
+use super::grid::RegistrationPolygon;
 use super::scene::{Polygon, Scene3};
 use super::trace::offer;
 use glam::DVec3;
@@ -94,6 +95,10 @@ pub struct Facet {
     pub centre: DVec3,
     /// `−EDGE_MARGIN × size`, as [`intersect`] computes it.
     margin: f64,
+    /// The largest distance of a vertex of the registration polygon
+    /// ([`super::grid::RegistrationPolygon`], which holds every point the hit rule accepts) from
+    /// the centre.
+    radius: f64,
     /// Its edges in [`Facets`]' edge list.
     first: u32,
     count: u32,
@@ -130,10 +135,16 @@ impl Facets {
                 };
                 out.edges.push(Edge { a, e, len, reject, accept });
             }
+            let radius = RegistrationPolygon::new(polygon)
+                .vertices
+                .iter()
+                .map(|v| (*v - polygon.centre).length())
+                .fold(0.0, f64::max);
             out.facets.push(Facet {
                 normal: polygon.normal,
                 centre: polygon.centre,
                 margin,
+                radius,
                 first,
                 count: v.len() as u32,
             });
@@ -174,9 +185,21 @@ impl Facets {
         self.inside(k, origin, direction, t).then_some(t)
     }
 
+    /// Polygon `k`'s bounding cone seen from `origin` (see [`Cone`]).
+    pub fn cone(&self, k: usize, origin: DVec3) -> Cone {
+        let f = &self.facets[k];
+        let v = f.centre - origin;
+        let d2 = v.dot(v);
+        let dist = d2.sqrt();
+        let scale = origin.abs().max_element() + f.centre.abs().max_element() + dist + f.radius;
+        let r = f.radius * (1.0 + 1e-9) + 1e-12 * scale;
+        let q = d2 - r * r - 64.0 * f64::EPSILON * d2;
+        Cone { v, q: if q > 0.0 { q } else { f64::NEG_INFINITY } }
+    }
+
     /// The last stage of [`Facets::hit`]: whether `origin + t·direction`, `t` the plane's
     /// distance as `hit` computes it, passes every edge test of polygon `k`.
-    #[inline]
+    #[inline(always)]
     pub fn inside(&self, k: usize, origin: DVec3, direction: DVec3, t: f64) -> bool {
         let f = &self.facets[k];
         let n = f.normal;
@@ -192,6 +215,79 @@ impl Facets {
         }
         true
     }
+
+    /// [`Facets::inside`]'s test of edge `i` of polygon `k` alone: whether it passes.
+    #[inline(never)]
+    fn edge_passes(&self, k: usize, i: usize, origin: DVec3, direction: DVec3, t: f64) -> bool {
+        let f = &self.facets[k];
+        let edge = &self.edges[f.first as usize + i];
+        let x = edge.e.cross(origin + direction * t - edge.a).dot(f.normal);
+        !(x < 0.0 && x < edge.accept && (x < edge.reject || x / edge.len < f.margin))
+    }
+
+    /// The edges' parts of [`Facets::inside`] that depend on the source `origin` alone, for
+    /// [`SourceEdge`]'s filter.
+    fn source_edges(&self, k: usize, origin: DVec3, out: &mut Vec<SourceEdge>) {
+        let f = &self.facets[k];
+        for edge in &self.edges[f.first as usize..(f.first + f.count) as usize] {
+            out.push(SourceEdge {
+                alpha: edge.e.cross(origin - edge.a).dot(f.normal),
+                w: f.normal.cross(edge.e),
+                s: origin.abs().max_element() + edge.a.abs().max_element(),
+                scale: 128.0 * f64::EPSILON * edge.e.abs().max_element(),
+                reject: edge.reject,
+                accept: edge.accept,
+            });
+        }
+    }
+}
+
+/// One edge of a polygon for one source `O`: the edge test's numerator `x = e × (p − a) · n` at
+/// `p = O + t·d` is `α + t·(d · w)` with `α = e × (O − a) · n` and `w = n × e`, up to rounding.
+/// Computed that way (two products less than the hit rule's), it decides the edge when it lies
+/// farther than a bound `B` on the two computations' difference from the thresholds of
+/// [`Facets::hit`] (`x ≥ accept`: passes; `x < reject`: fails); otherwise the hit rule's own
+/// operations decide. `B = 128·ε·|e|∞·(|O|∞ + |a|∞ + |t|·|d|₁)` (`ε` = 2⁻⁵², twice the unit
+/// roundoff): the rounding of `x` as the hit rule computes it (the point, its difference with
+/// `a`, the cross and dot products) is at most `29u·|e|∞·(|O|∞ + |a|∞ + |t|·|d|∞)` and that of
+/// `α + t·(d · w)` at most `29u·|e|∞·(|O|∞ + |a|∞) + 13u·|t|·|e|∞·|d|₁` (`u = ε/2`), so `B` is
+/// twice their sum.
+#[derive(Clone, Copy, Debug)]
+struct SourceEdge {
+    alpha: f64,
+    w: DVec3,
+    /// `|O|∞ + |a|∞`.
+    s: f64,
+    /// `128·ε·|e|∞`.
+    scale: f64,
+    reject: f64,
+    accept: f64,
+}
+
+/// A polygon's bounding cone from a ray origin `O`: a conservative test that rules out the rays
+/// that pass far from it, made before the hit rule.
+///
+/// Every point the hit rule accepts lies in the registration polygon (`RegistrationPolygon`, up
+/// to the rounding of the point), so within the polygon's `radius` of its centre `c`. With
+/// `v = c − O`, `D = |v|` and `r = radius·(1 + 10⁻⁹) + 10⁻¹²·(|O|∞ + |c|∞ + D + radius)` (far
+/// above the rounding of the hit point, of `v` and of these products), a ray `O + t·d` misses
+/// when `O` lies outside the sphere of radius `r` and the ray's line passes outside it or the
+/// ray points away from it: `(d·v)·|d·v| < |d|²·q`, `q = D² − r² − 64u·D²` (`u = 2⁻⁵³`; the last
+/// term covers the rounding of `D²`, `d·v` and the products). When `q ≤ 0` (`O` inside or near
+/// the sphere) nothing is ruled out (`q = −∞`).
+#[derive(Clone, Copy, Debug)]
+pub struct Cone {
+    v: DVec3,
+    q: f64,
+}
+
+impl Cone {
+    /// Whether the ray along `d` (`dd = d·d`) certainly misses the polygon.
+    #[inline]
+    pub fn misses(&self, d: DVec3, dd: f64) -> bool {
+        let dv = d.dot(self.v);
+        dv * dv.abs() < dd * self.q
+    }
 }
 
 /// Polygons of a scene prepared for one source's rays, four to a group: each polygon's normal and
@@ -202,6 +298,10 @@ impl Facets {
 #[derive(Clone, Debug, Default)]
 pub struct FacetQuads {
     quads: Vec<Quad>,
+    /// The polygons' edges for the source, in the order of the quads' lanes (`Quad::e`).
+    edges: Vec<SourceEdge>,
+    /// Whether the CPU has AVX (detected once).
+    avx: bool,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -211,44 +311,94 @@ struct Quad {
     ny: [f64; 4],
     nz: [f64; 4],
     num: [f64; 4],
+    /// The lane's [`Cone`]: `v` and `q`.
+    vx: [f64; 4],
+    vy: [f64; 4],
+    vz: [f64; 4],
+    q: [f64; 4],
     /// The polygon of each lane; a lane without one has a zero normal, so it never passes.
     k: [u32; 4],
+    /// The first of each lane's edges in `FacetQuads::edges`, and their number.
+    e: [u32; 4],
+    count: [u32; 4],
 }
 
 impl FacetQuads {
-    /// Polygons `ks` of `facets`, for rays from `origin`.
+    /// Polygons `ks` of `facets`, for rays from `origin`, nearest first (by the distance of
+    /// their bounding spheres: the nearer polygons' hits then bound the farther ones' tests;
+    /// the order cannot change a ray's nearest hit, which the tie rule decides).
     pub fn new(facets: &Facets, origin: DVec3, ks: &[usize]) -> FacetQuads {
+        let mut ks: Vec<(f64, usize)> = ks
+            .iter()
+            .map(|&k| {
+                let f = facets.facet(k);
+                ((f.centre - origin).length() - f.radius, k)
+            })
+            .collect();
+        ks.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let ks: Vec<usize> = ks.into_iter().map(|(_, k)| k).collect();
+        let mut edges = Vec::new();
         let quads = ks
             .chunks(4)
             .map(|c| {
-                let mut q = Quad { nx: [0.0; 4], ny: [0.0; 4], nz: [0.0; 4], num: [0.0; 4], k: [0; 4] };
+                let z = [0.0; 4];
+                let mut q =
+                    Quad { nx: z, ny: z, nz: z, num: z, vx: z, vy: z, vz: z, q: z, k: [0; 4], e: [0; 4], count: [0; 4] };
                 for (lane, &k) in c.iter().enumerate() {
+                    q.e[lane] = edges.len() as u32;
+                    facets.source_edges(k, origin, &mut edges);
+                    q.count[lane] = edges.len() as u32 - q.e[lane];
                     let f = facets.facet(k);
                     (q.nx[lane], q.ny[lane], q.nz[lane]) = (f.normal.x, f.normal.y, f.normal.z);
                     q.num[lane] = (f.centre - origin).dot(f.normal);
+                    let cone = facets.cone(k, origin);
+                    (q.vx[lane], q.vy[lane], q.vz[lane], q.q[lane]) = (cone.v.x, cone.v.y, cone.v.z, cone.q);
                     q.k[lane] = k as u32;
                 }
                 q
             })
             .collect();
-        FacetQuads { quads }
+        #[cfg(target_arch = "x86_64")]
+        let avx = std::is_x86_feature_detected!("avx");
+        #[cfg(not(target_arch = "x86_64"))]
+        let avx = false;
+        FacetQuads { quads, edges, avx }
     }
 
     /// Offers every hit of the ray `origin + t·direction` (`origin` the one given to
     /// [`FacetQuads::new`]) to `best` by the tie rule (nearer wins, of equal `t` the lower
     /// index): [`Facets::hit`] of each polygon, in the polygons' order, bounded by the nearest
     /// hit so far, since a hit beyond it could not be taken.
-    #[inline]
+    #[inline(always)]
     pub fn offer_hits(&self, facets: &Facets, origin: DVec3, direction: DVec3, best: &mut Option<Hit>) {
         let bound = |best: &Option<Hit>| best.map_or(f64::INFINITY, |b| b.t);
+        let dd = direction.dot(direction);
+        let d1 = direction.abs().element_sum();
         for q in &self.quads {
-            let (mut lanes, denom, t) = q.plane(direction, bound(best));
+            let (mut lanes, denom, t) = q.plane(self.avx, direction, dd, bound(best));
             while lanes != 0 {
                 let lane = lanes.trailing_zeros() as usize;
                 lanes &= lanes - 1;
-                let k = q.k[lane] as usize;
-                if t[lane] <= bound(best) && facets.inside(k, origin, direction, t[lane]) {
-                    offer(best, k, t[lane], denom[lane] < 0.0);
+                let (k, t) = (q.k[lane] as usize, t[lane]);
+                if t > bound(best) {
+                    continue;
+                }
+                // `Facets::inside`, edge by edge through `SourceEdge`'s filter.
+                let first = q.e[lane] as usize;
+                let edges = &self.edges[first..first + q.count[lane] as usize];
+                let inside = edges.iter().enumerate().all(|(i, e)| {
+                    let x = e.alpha + t * direction.dot(e.w);
+                    let b = e.scale * (e.s + t * d1);
+                    if x - b >= e.accept {
+                        true
+                    } else if x + b < e.reject {
+                        false
+                    } else {
+                        facets.edge_passes(k, i, origin, direction, t)
+                    }
+                });
+                if inside {
+                    offer(best, k, t, denom[lane] < 0.0);
                 }
             }
         }
@@ -256,14 +406,14 @@ impl FacetQuads {
 }
 
 impl Quad {
-    /// Bit `lane` set when the lane's plane passes [`Facets::hit`]'s first stage for `direction`
-    /// with `bound`; each lane's `d · n` and `t`.
-    #[inline]
-    fn plane(&self, d: DVec3, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
+    /// (`avx`: the CPU has AVX.) Bit `lane` set when the lane's cone does not rule the ray along `d` (`dd = d·d`) out and
+    /// its plane passes [`Facets::hit`]'s first stage with `bound`; each lane's `d · n` and `t`.
+    #[inline(always)]
+    fn plane(&self, avx: bool, d: DVec3, dd: f64, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
         #[cfg(target_arch = "x86_64")]
-        if std::is_x86_feature_detected!("avx") {
-            // SAFETY: the CPU has AVX (checked just above).
-            return unsafe { self.plane_avx(d, bound) };
+        if avx {
+            // SAFETY: the CPU has AVX (`FacetQuads::new` checked).
+            return unsafe { self.plane_avx(d, dd, bound) };
         }
         let mut bits = 0;
         let (mut denom, mut t) = ([0.0; 4], [0.0; 4]);
@@ -275,7 +425,8 @@ impl Quad {
                 && t[lane] > 0.0
                 && t[lane].is_finite()
                 && t[lane] <= bound;
-            bits |= (pass as u32) << lane;
+            let cone = Cone { v: DVec3::new(self.vx[lane], self.vy[lane], self.vz[lane]), q: self.q[lane] };
+            bits |= ((pass && !cone.misses(d, dd)) as u32) << lane;
         }
         (bits, denom, t)
     }
@@ -283,40 +434,48 @@ impl Quad {
     /// [`Quad::plane`] in AVX lanes: `d · n` as glam computes it, `(x·x + y·y) + z·z`.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    fn plane_avx(&self, d: DVec3, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
+    fn plane_avx(&self, d: DVec3, dd: f64, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
         use std::arch::x86_64::*;
         // SAFETY: the arrays are 4 f64 each, aligned to 32 bytes by the struct's layout.
-        let (nx, ny, nz, num) = unsafe {
-            (
-                _mm256_load_pd(self.nx.as_ptr()),
-                _mm256_load_pd(self.ny.as_ptr()),
-                _mm256_load_pd(self.nz.as_ptr()),
-                _mm256_load_pd(self.num.as_ptr()),
-            )
+        let load = |a: &[f64; 4]| unsafe { _mm256_load_pd(a.as_ptr()) };
+        let (dx, dy, dz) = (_mm256_set1_pd(d.x), _mm256_set1_pd(d.y), _mm256_set1_pd(d.z));
+        let dot = |x: __m256d, y: __m256d, z: __m256d| {
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, x), _mm256_mul_pd(dy, y)), _mm256_mul_pd(dz, z))
         };
-        let denom = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(d.x), nx), _mm256_mul_pd(_mm256_set1_pd(d.y), ny)),
-            _mm256_mul_pd(_mm256_set1_pd(d.z), nz),
-        );
-        let t = _mm256_div_pd(num, denom);
         let abs = |v: __m256d| _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
+        let dv = dot(load(&self.vx), load(&self.vy), load(&self.vz));
+        let misses = _mm256_cmp_pd::<_CMP_LT_OQ>(
+            _mm256_mul_pd(dv, abs(dv)),
+            _mm256_mul_pd(_mm256_set1_pd(dd), load(&self.q)),
+        );
+        if _mm256_movemask_pd(misses) == 0b1111 {
+            // Every lane's cone rules the ray out (the usual case in a large scene).
+            return (0, [0.0; 4], [0.0; 4]);
+        }
+        let denom = dot(load(&self.nx), load(&self.ny), load(&self.nz));
+        let num = load(&self.num);
+        let t = _mm256_div_pd(num, denom);
         let inf = _mm256_set1_pd(f64::INFINITY);
         let zero = _mm256_setzero_pd();
         // Ordered compares: a NaN fails each, as it fails `hit`'s.
         let pass = _mm256_and_pd(
-            _mm256_and_pd(_mm256_cmp_pd::<_CMP_NEQ_OQ>(denom, zero), _mm256_cmp_pd::<_CMP_LT_OQ>(abs(denom), inf)),
+            _mm256_andnot_pd(misses, _mm256_cmp_pd::<_CMP_NEQ_OQ>(denom, zero)),
+            _mm256_cmp_pd::<_CMP_LT_OQ>(abs(denom), inf),
+        );
+        let pass = _mm256_and_pd(
+            pass,
             _mm256_and_pd(
                 _mm256_and_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(t, zero), _mm256_cmp_pd::<_CMP_LT_OQ>(abs(t), inf)),
                 _mm256_cmp_pd::<_CMP_LE_OQ>(t, _mm256_set1_pd(bound)),
             ),
         );
-        let (mut dv, mut tv) = ([0.0; 4], [0.0; 4]);
+        let (mut dn, mut tv) = ([0.0; 4], [0.0; 4]);
         // SAFETY: each array holds 4 f64 (unaligned stores).
         unsafe {
-            _mm256_storeu_pd(dv.as_mut_ptr(), denom);
+            _mm256_storeu_pd(dn.as_mut_ptr(), denom);
             _mm256_storeu_pd(tv.as_mut_ptr(), t);
         }
-        (_mm256_movemask_pd(pass) as u32, dv, tv)
+        (_mm256_movemask_pd(pass) as u32, dn, tv)
     }
 }
 
@@ -385,5 +544,50 @@ mod tests {
             }
         }
         assert!(decided[0] > 1000 && decided[1] > 1000, "seed {seed}: hits and misses both occur: {decided:?}");
+    }
+
+    /// The quads' nearest hit (cones, planes in lanes, the edges through the source's filter) is
+    /// the nearest hit by `intersect` and the tie rule, on rays aimed at vertices, edges (a hair
+    /// in or out) and inner points, from origins inside and outside the scenes, near and far.
+    #[test]
+    fn the_quads_nearest_hit_is_the_hit_rules() {
+        let seed = 182u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let cornell =
+            obj::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.obj")).unwrap();
+        let mut hits = 0;
+        for scene in [generate(200, 60.0, 4).unwrap(), cornell] {
+            let facets = Facets::new(&scene);
+            let (lo, hi) = scene.bounds();
+            let all: Vec<usize> = (0..scene.polygons.len()).collect();
+            for source in 0..60 {
+                let far = if source % 3 == 0 { 1e4 } else { 1.0 };
+                let o = (lo + (hi - lo) * DVec3::new(rng.random(), rng.random(), rng.random())) * far;
+                let quads = FacetQuads::new(&facets, o, &all);
+                for _ in 0..300 {
+                    let p = &scene.polygons[rng.random_range(0..scene.polygons.len())];
+                    let i = rng.random_range(0..p.vertices.len());
+                    let (a, b) = (p.vertices[i], p.vertices[(i + 1) % p.vertices.len()]);
+                    let out = (b - a).cross(p.normal).normalize();
+                    let target = match rng.random_range(0..3) {
+                        0 => a,
+                        1 => a + (b - a) * rng.random::<f64>() + out * (p.size * 1e-9 * rng.random_range(-3.0..3.0)),
+                        _ => p.centre + (a - p.centre) * rng.random::<f64>(),
+                    };
+                    let d = (target - o) * rng.random_range(0.5..2.0);
+                    let mut expect = None;
+                    for (k, q) in scene.polygons.iter().enumerate() {
+                        if let Some(t) = intersect(o, d, q) {
+                            offer(&mut expect, k, t, d.dot(q.normal) < 0.0);
+                        }
+                    }
+                    let mut got = None;
+                    quads.offer_hits(&facets, o, d, &mut got);
+                    assert_eq!(got, expect, "seed {seed}: from {o} along {d}");
+                    hits += expect.is_some() as usize;
+                }
+            }
+        }
+        assert!(hits > 10_000, "seed {seed}: the rays must hit ({hits})");
     }
 }

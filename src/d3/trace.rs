@@ -279,6 +279,23 @@ pub fn brute(scene: &Scene3, bundle: &Bundle3) -> Trace3 {
 
 /// [`brute`] with the scene's polygons already prepared.
 fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
+    #[cfg(target_arch = "x86_64")]
+    if crate::trace::shelling::x86_64_v3() {
+        // SAFETY: the CPU has the features `brute_v3` is compiled for (just checked).
+        return unsafe { brute_v3(scene, facets, bundle) };
+    }
+    brute_body(scene, facets, bundle)
+}
+
+/// [`brute_body`] compiled for x86-64-v3 without FMA, as [`conventional_v3`].
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
+fn brute_v3(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
+    brute_body(scene, facets, bundle)
+}
+
+#[inline(always)]
+fn brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
     let passing: Vec<usize> = (0..scene.polygons.len())
         .filter(|&k| screen(&bundle.source, k, &scene.polygons[k]) == Screen3::Pass)
         .collect();
@@ -291,15 +308,12 @@ fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
     c.intersection_computations = c.patches_read_after_screening;
     let o = bundle.source.origin;
     let quads = FacetQuads::new(facets, o, &passing);
-    let hits = bundle
-        .directions
-        .iter()
-        .map(|&d| {
-            let mut best = None;
-            quads.offer_hits(facets, o, d, &mut best);
-            best
-        })
-        .collect();
+    let mut hits = Vec::with_capacity(bundle.len());
+    for &d in &bundle.directions {
+        let mut best = None;
+        quads.offer_hits(facets, o, d, &mut best);
+        hits.push(best);
+    }
     finish(hits, c, None)
 }
 
