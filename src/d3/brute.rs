@@ -282,6 +282,9 @@ pub struct Cone {
 }
 
 impl Cone {
+    /// The cone that rules nothing out.
+    pub const NONE: Cone = Cone { v: DVec3::ZERO, q: f64::NEG_INFINITY };
+
     /// Whether the ray along `d` (`dd = d·d`) certainly misses the polygon.
     #[inline]
     pub fn misses(&self, d: DVec3, dd: f64) -> bool {

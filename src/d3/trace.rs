@@ -49,7 +49,7 @@
 //! could be nearer than or tie with the best so far lies in a cell already visited, and exact
 //! ties across a cell boundary are still resolved by index.
 
-use super::brute::{FacetQuads, Facets, Hit};
+use super::brute::{Cone, FacetQuads, Facets, Hit};
 use super::grid::Grid3;
 use super::hemisphere::HemisphereRays;
 use super::scene::{Polygon, Scene3};
@@ -318,12 +318,14 @@ fn brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
 }
 
 /// What the conventional tracer knows of a polygon for the current source: the ray that last
-/// loaded it, plus one (the per-ray mailbox), and its screening verdict once known.
-#[derive(Clone, Copy, Default)]
+/// loaded it, plus one (the per-ray mailbox), its screening verdict and, once it passed, its
+/// bounding cone from the source ([`Cone`]), which rules out most rays before the hit rule.
+#[derive(Clone, Copy)]
 struct Slot {
     stamp: u32,
     /// 0 not yet screened, 1 passes, 2 screened out.
     verdict: u8,
+    cone: Cone,
 }
 
 /// Ray by ray through `grid` (built over `scene`), see the module docs.
@@ -348,15 +350,17 @@ fn conventional_v3(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
 #[inline(always)]
 fn conventional_body(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
     let facets = grid.facets();
-    let mut slots = vec![Slot::default(); scene.polygons.len()];
+    let mut slots = vec![Slot { stamp: 0, verdict: 0, cone: Cone::NONE }; scene.polygons.len()];
     let mut c = Counters::default();
     let o = bundle.source.origin;
     let mut hits = Vec::with_capacity(bundle.len());
     for (r, &d) in bundle.directions.iter().enumerate() {
         let stamp = r as u32 + 1;
         let margin = grid.stop_margin() / d.length();
+        let dd = d.dot(d);
         let mut best: Option<Hit> = None;
-        grid.walk(o, d, |step| {
+        let mut walk = grid.walker(o, d);
+        while let Some(step) = walk.next(grid) {
             c.cells_traversed += 1;
             if step.region.is_none() {
                 for &k in grid.cell_items(step.cell) {
@@ -370,20 +374,28 @@ fn conventional_body(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
                     if slot.verdict == 0 {
                         let pass = screen(&bundle.source, k, &scene.polygons[k]) == Screen3::Pass;
                         slot.verdict = if pass { 1 } else { 2 };
+                        if pass {
+                            slot.cone = facets.cone(k, o);
+                        }
                     }
                     if slot.verdict != 1 {
                         continue;
                     }
                     c.patches_read_after_screening += 1;
                     c.intersection_computations += 1;
+                    if slot.cone.misses(d, dd) {
+                        continue;
+                    }
                     if let Some(t) = facets.hit(k, o, d, bound(&best)) {
                         offer(&mut best, k, t, d.dot(facets.facet(k).normal) < 0.0);
                     }
                 }
             }
-            // Continue while a polygon beyond this cell could still be nearer (or tie).
-            !matches!(best, Some(b) if b.t < step.t_exit - margin)
-        });
+            // Go on while a polygon beyond this cell could still be nearer (or tie).
+            if matches!(best, Some(b) if b.t < step.t_exit - margin) {
+                break;
+            }
+        }
         hits.push(best);
     }
     finish(hits, c, None)
