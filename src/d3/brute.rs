@@ -29,6 +29,12 @@
 //! rounding of the division cannot (thresholds 8 units in the last place away, see
 //! [`Facets::hit`]), and only the rest divide. A bound on `t` lets a tracer skip the inside test
 //! of a polygon whose plane lies beyond its nearest hit so far: such a hit could not be taken.
+//!
+//! Two conservative filters run before it, each deciding a pair only where rounding cannot change
+//! the answer: a polygon's bounding [`Cone`] from the source rules out the rays that pass far
+//! from it, and [`FacetQuads`] (one source's polygons, four to a group in AVX lanes) decides an
+//! edge from two products per ray (`SourceEdge`'s filter) unless it lies within a rounding
+//! bound of its threshold, where the hit rule's own operations decide.
 
 use super::grid::RegistrationPolygon;
 use super::scene::{Polygon, Scene3};
@@ -507,6 +513,25 @@ mod tests {
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
+    fn cornell() -> Scene3 {
+        obj::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.obj")).unwrap()
+    }
+
+    /// A point of `p` to aim a ray at: an inner point, a vertex, or a point of an edge pushed out
+    /// or in by a hair (about the margin, where it decides).
+    fn aim(p: &Polygon, rng: &mut ChaCha8Rng) -> DVec3 {
+        let i = rng.random_range(0..p.vertices.len());
+        let (a, b) = (p.vertices[i], p.vertices[(i + 1) % p.vertices.len()]);
+        match rng.random_range(0..4) {
+            0 => p.centre + (a - p.centre) * rng.random::<f64>(),
+            1 => a,
+            _ => {
+                let out = (b - a).cross(p.normal).normalize();
+                a + (b - a) * rng.random::<f64>() + out * (p.size * 1e-9 * rng.random_range(-3.0..3.0))
+            }
+        }
+    }
+
     /// The prepared test gives `intersect`'s bits on rays aimed at random points of random
     /// polygons, at their vertices and at points a few units in the last place around their edges
     /// (where the margin decides), from random origins; with a bound, the same or `None` beyond it.
@@ -514,29 +539,15 @@ mod tests {
     fn the_prepared_test_is_intersect_bit_for_bit() {
         let seed = 181u64;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let cornell =
-            obj::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.obj")).unwrap();
         let mut decided = [0usize; 2];
-        for scene in [generate(300, 40.0, 3).unwrap(), cornell] {
+        for scene in [generate(300, 40.0, 3).unwrap(), cornell()] {
             let facets = Facets::new(&scene);
             let (lo, hi) = scene.bounds();
             for _ in 0..20_000 {
                 let k = rng.random_range(0..scene.polygons.len());
                 let p = &scene.polygons[k];
                 let o = lo + (hi - lo) * DVec3::new(rng.random(), rng.random(), rng.random());
-                let i = rng.random_range(0..p.vertices.len());
-                let (a, b) = (p.vertices[i], p.vertices[(i + 1) % p.vertices.len()]);
-                let target = match rng.random_range(0..4) {
-                    0 => p.centre + (a - p.centre) * rng.random::<f64>(),
-                    1 => a,
-                    // Along an edge, pushed out or in by a hair (about the margin).
-                    _ => {
-                        let s: f64 = rng.random();
-                        let out = (b - a).cross(p.normal).normalize();
-                        a + (b - a) * s + out * (p.size * 1e-9 * rng.random_range(-3.0..3.0))
-                    }
-                };
-                let d = target - o;
+                let d = aim(p, &mut rng) - o;
                 let exact = intersect(o, d, p);
                 decided[exact.is_some() as usize] += 1;
                 let fast = facets.hit(k, o, d, f64::INFINITY);
@@ -556,10 +567,8 @@ mod tests {
     fn the_quads_nearest_hit_is_the_hit_rules() {
         let seed = 182u64;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let cornell =
-            obj::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.obj")).unwrap();
         let mut hits = 0;
-        for scene in [generate(200, 60.0, 4).unwrap(), cornell] {
+        for scene in [generate(200, 60.0, 4).unwrap(), cornell()] {
             let facets = Facets::new(&scene);
             let (lo, hi) = scene.bounds();
             let all: Vec<usize> = (0..scene.polygons.len()).collect();
@@ -569,15 +578,7 @@ mod tests {
                 let quads = FacetQuads::new(&facets, o, &all);
                 for _ in 0..300 {
                     let p = &scene.polygons[rng.random_range(0..scene.polygons.len())];
-                    let i = rng.random_range(0..p.vertices.len());
-                    let (a, b) = (p.vertices[i], p.vertices[(i + 1) % p.vertices.len()]);
-                    let out = (b - a).cross(p.normal).normalize();
-                    let target = match rng.random_range(0..3) {
-                        0 => a,
-                        1 => a + (b - a) * rng.random::<f64>() + out * (p.size * 1e-9 * rng.random_range(-3.0..3.0)),
-                        _ => p.centre + (a - p.centre) * rng.random::<f64>(),
-                    };
-                    let d = (target - o) * rng.random_range(0.5..2.0);
+                    let d = (aim(p, &mut rng) - o) * rng.random_range(0.5..2.0);
                     let mut expect = None;
                     for (k, q) in scene.polygons.iter().enumerate() {
                         if let Some(t) = intersect(o, d, q) {

@@ -28,6 +28,17 @@
 //! tracers screen by the same function and test by the same function, so they agree ray for ray
 //! (rung 1).
 //!
+//! **How a pair is decided, fast.** Both tracers test through the scene's polygons prepared once
+//! per grid ([`Facets`], [`Grid3::facets`]): [`Facets::hit`] does
+//! [`super::brute::intersect`]'s operations on the same operands, so it gives the same bits.
+//! Before it, a polygon's bounding cone from the source ([`Cone`]) rules out the rays that pass
+//! far from it, conservatively (the rounding bounded), and a plane beyond the ray's nearest hit so
+//! far is not tested inside (its hit could not be taken). Brute force runs the cones and the
+//! planes four polygons at a time in AVX lanes, nearest polygons first, and its edge tests
+//! through a per-source filter that falls back on the hit rule's own operations near the
+//! thresholds ([`FacetQuads`]). A pair ruled out by a cone or a bound is still a test: it is
+//! decided, and the counters count it as before.
+//!
 //! # Counters
 //!
 //! * `patches_read_before_screening`: brute `R·N`; conventional, the distinct polygons of the
@@ -277,21 +288,28 @@ pub fn brute(scene: &Scene3, bundle: &Bundle3) -> Trace3 {
     brute_with(scene, &Facets::new(scene), bundle)
 }
 
-/// [`brute`] with the scene's polygons already prepared.
-fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
-    #[cfg(target_arch = "x86_64")]
-    if crate::trace::shelling::x86_64_v3() {
-        // SAFETY: the CPU has the features `brute_v3` is compiled for (just checked).
-        return unsafe { brute_v3(scene, facets, bundle) };
-    }
-    brute_body(scene, facets, bundle)
+/// Runs `$body(args)` through a copy of it compiled for x86-64-v3 without FMA where the CPU has
+/// those features: the same operations in the same order, encoded with more instructions to
+/// choose from (as the 2D shelling tracers' copy, `trace_bundle_v3`), so the same bits.
+macro_rules! on_v3 {
+    ($body:ident($($arg:ident: $ty:ty),*) -> $ret:ty) => {{
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
+        fn v3($($arg: $ty),*) -> $ret {
+            $body($($arg),*)
+        }
+        #[cfg(target_arch = "x86_64")]
+        if crate::trace::shelling::x86_64_v3() {
+            // SAFETY: the CPU has the features `v3` is compiled for (just checked).
+            return unsafe { v3($($arg),*) };
+        }
+        $body($($arg),*)
+    }};
 }
 
-/// [`brute_body`] compiled for x86-64-v3 without FMA, as [`conventional_v3`].
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
-fn brute_v3(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
-    brute_body(scene, facets, bundle)
+/// [`brute`] with the scene's polygons already prepared.
+fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
+    on_v3!(brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3)
 }
 
 #[inline(always)]
@@ -331,20 +349,7 @@ struct Slot {
 /// Ray by ray through `grid` (built over `scene`), see the module docs.
 pub fn conventional(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
     debug_assert_eq!(grid.facets().len(), scene.polygons.len(), "the grid is built over the scene");
-    #[cfg(target_arch = "x86_64")]
-    if crate::trace::shelling::x86_64_v3() {
-        // SAFETY: the CPU has the features `conventional_v3` is compiled for (just checked).
-        return unsafe { conventional_v3(scene, grid, bundle) };
-    }
-    conventional_body(scene, grid, bundle)
-}
-
-/// [`conventional_body`] compiled for x86-64-v3 without FMA: the same operations in the same
-/// order (as the 2D shelling tracers' copy), so the same bits.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
-fn conventional_v3(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
-    conventional_body(scene, grid, bundle)
+    on_v3!(conventional_body(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3)
 }
 
 #[inline(always)]

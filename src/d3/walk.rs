@@ -8,6 +8,11 @@
 //! box on at least one axis, monotonically, and a walk takes at most `nx + ny + nz` steps.
 //! Distances `t` are in units of the direction's length, as in the hit rule of
 //! [`super::brute`]. Counters: the tracers count one `cells_traversed` per [`Step3`].
+//!
+//! [`Grid3::walker`] gives the same steps one by one ([`Walker::next`]), for a tracer that steps
+//! the walk in its own loop; [`Grid3::walk`] calls a closure per step. A single cell's exit
+//! distances along the axes the walk did not leave it by are kept from the cell before (the same
+//! expression of the same values), so a step from a single cell divides once per axis it leaves by.
 
 use super::grid::{Grid3, NO_REGION};
 use glam::DVec3;
