@@ -109,7 +109,10 @@ fn main() {
         .unwrap_or(7usize);
     // `--methods brute,polar` times only those tracers (for profiling; parry3d always runs).
     let list = |option: &str| -> Option<Vec<String>> {
-        std::env::args().skip_while(|a| a != option).nth(1).map(|v| v.split(',').map(str::to_string).collect())
+        std::env::args()
+            .skip_while(|a| a != option)
+            .nth(1)
+            .map(|v| v.split(',').map(str::to_string).collect())
     };
     let only = list("--methods");
     // `--scene workload` or `--scene cornell`: that scene alone (for profiling).

@@ -307,6 +307,8 @@ impl Cone {
 #[derive(Clone, Debug, Default)]
 pub struct FacetQuads {
     quads: Vec<Quad>,
+    /// The quads' cones, by quad.
+    cones: Vec<ConeQuad>,
     /// The polygons' edges for the source, in the order of the quads' lanes (`Quad::e`).
     edges: Vec<SourceEdge>,
     /// Whether the CPU has AVX (detected once).
@@ -320,16 +322,22 @@ struct Quad {
     ny: [f64; 4],
     nz: [f64; 4],
     num: [f64; 4],
-    /// The lane's [`Cone`]: `v` and `q`.
-    vx: [f64; 4],
-    vy: [f64; 4],
-    vz: [f64; 4],
-    q: [f64; 4],
     /// The polygon of each lane; a lane without one has a zero normal, so it never passes.
     k: [u32; 4],
     /// The first of each lane's edges in `FacetQuads::edges`, and their number.
     e: [u32; 4],
     count: [u32; 4],
+}
+
+/// The [`Cone`]s of a [`Quad`]'s lanes (`v` and `q`), apart so that the first pass over a
+/// source's polygons reads them alone; a lane without a polygon rules every ray out.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(32))]
+struct ConeQuad {
+    vx: [f64; 4],
+    vy: [f64; 4],
+    vz: [f64; 4],
+    q: [f64; 4],
 }
 
 impl FacetQuads {
@@ -347,12 +355,13 @@ impl FacetQuads {
         ks.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let ks: Vec<usize> = ks.into_iter().map(|(_, k)| k).collect();
         let mut edges = Vec::new();
+        let mut cones = Vec::with_capacity(ks.len().div_ceil(4));
         let quads = ks
             .chunks(4)
             .map(|c| {
                 let z = [0.0; 4];
-                let mut q =
-                    Quad { nx: z, ny: z, nz: z, num: z, vx: z, vy: z, vz: z, q: z, k: [0; 4], e: [0; 4], count: [0; 4] };
+                let mut q = Quad { nx: z, ny: z, nz: z, num: z, k: [0; 4], e: [0; 4], count: [0; 4] };
+                let mut cq = ConeQuad { vx: z, vy: z, vz: z, q: [f64::INFINITY; 4] };
                 for (lane, &k) in c.iter().enumerate() {
                     q.e[lane] = edges.len() as u32;
                     facets.source_edges(k, origin, &mut edges);
@@ -361,9 +370,11 @@ impl FacetQuads {
                     (q.nx[lane], q.ny[lane], q.nz[lane]) = (f.normal.x, f.normal.y, f.normal.z);
                     q.num[lane] = (f.centre - origin).dot(f.normal);
                     let cone = facets.cone(k, origin);
-                    (q.vx[lane], q.vy[lane], q.vz[lane], q.q[lane]) = (cone.v.x, cone.v.y, cone.v.z, cone.q);
+                    (cq.vx[lane], cq.vy[lane], cq.vz[lane], cq.q[lane]) =
+                        (cone.v.x, cone.v.y, cone.v.z, cone.q);
                     q.k[lane] = k as u32;
                 }
+                cones.push(cq);
                 q
             })
             .collect();
@@ -371,7 +382,7 @@ impl FacetQuads {
         let avx = std::is_x86_feature_detected!("avx");
         #[cfg(not(target_arch = "x86_64"))]
         let avx = false;
-        FacetQuads { quads, edges, avx }
+        FacetQuads { quads, cones, edges, avx }
     }
 
     /// Offers every hit of the ray `origin + t·direction` (`origin` the one given to
@@ -383,8 +394,29 @@ impl FacetQuads {
         let bound = |best: &Option<Hit>| best.map_or(f64::INFINITY, |b| b.t);
         let dd = direction.dot(direction);
         let d1 = direction.abs().element_sum();
-        for q in &self.quads {
-            let (mut lanes, denom, t) = q.plane(self.avx, direction, dd, bound(best));
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY (every `unsafe` of this loop): `self.avx` says the CPU has AVX (`FacetQuads::new`).
+        let ray = self.avx.then(|| unsafe { AvxRay::new(direction, dd) });
+        for (q, c) in self.quads.iter().zip(&self.cones) {
+            #[cfg(target_arch = "x86_64")]
+            let misses = match &ray {
+                Some(ray) => unsafe { c.misses_avx(ray) },
+                None => c.misses(direction, dd),
+            };
+            #[cfg(not(target_arch = "x86_64"))]
+            let misses = c.misses(direction, dd);
+            if misses == 0b1111 {
+                // Every lane's cone rules the ray out (the usual case in a large scene).
+                continue;
+            }
+            #[cfg(target_arch = "x86_64")]
+            let (lanes, denom, t) = match &ray {
+                Some(ray) => unsafe { q.plane_avx(ray, bound(best)) },
+                None => q.plane(direction, bound(best)),
+            };
+            #[cfg(not(target_arch = "x86_64"))]
+            let (lanes, denom, t) = q.plane(direction, bound(best));
+            let mut lanes = lanes & !misses;
             while lanes != 0 {
                 let lane = lanes.trailing_zeros() as usize;
                 lanes &= lanes - 1;
@@ -414,16 +446,79 @@ impl FacetQuads {
     }
 }
 
-impl Quad {
-    /// (`avx`: the CPU has AVX.) Bit `lane` set when the lane's cone does not rule the ray along `d` (`dd = d·d`) out and
-    /// its plane passes [`Facets::hit`]'s first stage with `bound`; each lane's `d · n` and `t`.
+impl ConeQuad {
+    /// Bit `lane` set when the lane's cone rules the ray along `d` (`dd = d·d`) out
+    /// ([`Cone::misses`]; [`ConeQuad::misses_avx`] in AVX lanes).
     #[inline(always)]
-    fn plane(&self, avx: bool, d: DVec3, dd: f64, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
-        #[cfg(target_arch = "x86_64")]
-        if avx {
-            // SAFETY: the CPU has AVX (`FacetQuads::new` checked).
-            return unsafe { self.plane_avx(d, dd, bound) };
+    fn misses(&self, d: DVec3, dd: f64) -> u32 {
+        (0..4).fold(0, |bits, lane| {
+            let cone = Cone { v: DVec3::new(self.vx[lane], self.vy[lane], self.vz[lane]), q: self.q[lane] };
+            bits | (cone.misses(d, dd) as u32) << lane
+        })
+    }
+
+    /// [`ConeQuad::misses`] in AVX lanes.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn misses_avx(&self, ray: &AvxRay) -> u32 {
+        use std::arch::x86_64::*;
+        // SAFETY: the arrays are 4 f64 each, aligned to 32 bytes by the struct's layout.
+        let load = |a: &[f64; 4]| unsafe { _mm256_load_pd(a.as_ptr()) };
+        let dv = ray.dot(load(&self.vx), load(&self.vy), load(&self.vz));
+        let abs = _mm256_andnot_pd(ray.sign, dv);
+        let misses =
+            _mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_mul_pd(dv, abs), _mm256_mul_pd(ray.dd, load(&self.q)));
+        _mm256_movemask_pd(misses) as u32
+    }
+}
+
+/// A ray's direction broadcast to AVX lanes, made once per ray.
+#[cfg(target_arch = "x86_64")]
+struct AvxRay {
+    dx: std::arch::x86_64::__m256d,
+    dy: std::arch::x86_64::__m256d,
+    dz: std::arch::x86_64::__m256d,
+    /// `d·d`.
+    dd: std::arch::x86_64::__m256d,
+    /// `−0.0`, the sign bit.
+    sign: std::arch::x86_64::__m256d,
+}
+
+#[cfg(target_arch = "x86_64")]
+impl AvxRay {
+    #[target_feature(enable = "avx")]
+    fn new(d: DVec3, dd: f64) -> AvxRay {
+        use std::arch::x86_64::*;
+        AvxRay {
+            dx: _mm256_set1_pd(d.x),
+            dy: _mm256_set1_pd(d.y),
+            dz: _mm256_set1_pd(d.z),
+            dd: _mm256_set1_pd(dd),
+            sign: _mm256_set1_pd(-0.0),
         }
+    }
+
+    /// `d · (x, y, z)` lane by lane as glam computes a dot product, `(x·x + y·y) + z·z`.
+    #[target_feature(enable = "avx")]
+    fn dot(
+        &self,
+        x: std::arch::x86_64::__m256d,
+        y: std::arch::x86_64::__m256d,
+        z: std::arch::x86_64::__m256d,
+    ) -> std::arch::x86_64::__m256d {
+        use std::arch::x86_64::*;
+        _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(self.dx, x), _mm256_mul_pd(self.dy, y)),
+            _mm256_mul_pd(self.dz, z),
+        )
+    }
+}
+
+impl Quad {
+    /// Bit `lane` set when the lane's plane passes [`Facets::hit`]'s first stage for `d` with
+    /// `bound`; each lane's `d · n` and `t` ([`Quad::plane_avx`] in AVX lanes).
+    #[inline(always)]
+    fn plane(&self, d: DVec3, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
         let mut bits = 0;
         let (mut denom, mut t) = ([0.0; 4], [0.0; 4]);
         for lane in 0..4 {
@@ -434,45 +529,29 @@ impl Quad {
                 && t[lane] > 0.0
                 && t[lane].is_finite()
                 && t[lane] <= bound;
-            let cone = Cone { v: DVec3::new(self.vx[lane], self.vy[lane], self.vz[lane]), q: self.q[lane] };
-            bits |= ((pass && !cone.misses(d, dd)) as u32) << lane;
+            bits |= (pass as u32) << lane;
         }
         (bits, denom, t)
     }
 
-    /// [`Quad::plane`] in AVX lanes: `d · n` as glam computes it, `(x·x + y·y) + z·z`.
+    /// [`Quad::plane`] in AVX lanes, the same operations lane by lane.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx")]
-    fn plane_avx(&self, d: DVec3, dd: f64, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
+    fn plane_avx(&self, ray: &AvxRay, bound: f64) -> (u32, [f64; 4], [f64; 4]) {
         use std::arch::x86_64::*;
         // SAFETY: the arrays are 4 f64 each, aligned to 32 bytes by the struct's layout.
         let load = |a: &[f64; 4]| unsafe { _mm256_load_pd(a.as_ptr()) };
-        let (dx, dy, dz) = (_mm256_set1_pd(d.x), _mm256_set1_pd(d.y), _mm256_set1_pd(d.z));
-        let dot = |x: __m256d, y: __m256d, z: __m256d| {
-            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, x), _mm256_mul_pd(dy, y)), _mm256_mul_pd(dz, z))
-        };
-        let abs = |v: __m256d| _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
-        let dv = dot(load(&self.vx), load(&self.vy), load(&self.vz));
-        let misses = _mm256_cmp_pd::<_CMP_LT_OQ>(
-            _mm256_mul_pd(dv, abs(dv)),
-            _mm256_mul_pd(_mm256_set1_pd(dd), load(&self.q)),
-        );
-        if _mm256_movemask_pd(misses) == 0b1111 {
-            // Every lane's cone rules the ray out (the usual case in a large scene).
-            return (0, [0.0; 4], [0.0; 4]);
-        }
-        let denom = dot(load(&self.nx), load(&self.ny), load(&self.nz));
-        let num = load(&self.num);
-        let t = _mm256_div_pd(num, denom);
+        let denom = ray.dot(load(&self.nx), load(&self.ny), load(&self.nz));
+        let t = _mm256_div_pd(load(&self.num), denom);
+        let abs = |v: __m256d| _mm256_andnot_pd(ray.sign, v);
         let inf = _mm256_set1_pd(f64::INFINITY);
         let zero = _mm256_setzero_pd();
         // Ordered compares: a NaN fails each, as it fails `hit`'s.
         let pass = _mm256_and_pd(
-            _mm256_andnot_pd(misses, _mm256_cmp_pd::<_CMP_NEQ_OQ>(denom, zero)),
-            _mm256_cmp_pd::<_CMP_LT_OQ>(abs(denom), inf),
-        );
-        let pass = _mm256_and_pd(
-            pass,
+            _mm256_and_pd(
+                _mm256_cmp_pd::<_CMP_NEQ_OQ>(denom, zero),
+                _mm256_cmp_pd::<_CMP_LT_OQ>(abs(denom), inf),
+            ),
             _mm256_and_pd(
                 _mm256_and_pd(_mm256_cmp_pd::<_CMP_GT_OQ>(t, zero), _mm256_cmp_pd::<_CMP_LT_OQ>(abs(t), inf)),
                 _mm256_cmp_pd::<_CMP_LE_OQ>(t, _mm256_set1_pd(bound)),
@@ -486,23 +565,6 @@ impl Quad {
         }
         (_mm256_movemask_pd(pass) as u32, dn, tv)
     }
-}
-
-/// The nearest hit of `origin + t·direction` in `scene`, skipping polygon `skip`, by brute force
-/// over every polygon.
-pub fn nearest(scene: &Scene3, origin: DVec3, direction: DVec3, skip: Option<usize>) -> Option<Hit> {
-    let mut best: Option<Hit> = None;
-    for (k, polygon) in scene.polygons.iter().enumerate() {
-        if Some(k) == skip {
-            continue;
-        }
-        if let Some(t) = intersect(origin, direction, polygon) {
-            if best.is_none_or(|b| t < b.t) {
-                best = Some(Hit { polygon: k, t, front: direction.dot(polygon.normal) < 0.0 });
-            }
-        }
-    }
-    best
 }
 
 #[cfg(test)]
@@ -551,13 +613,20 @@ mod tests {
                 let exact = intersect(o, d, p);
                 decided[exact.is_some() as usize] += 1;
                 let fast = facets.hit(k, o, d, f64::INFINITY);
-                assert_eq!(exact.map(f64::to_bits), fast.map(f64::to_bits), "seed {seed}: polygon {k} from {o} along {d}");
+                assert_eq!(
+                    exact.map(f64::to_bits),
+                    fast.map(f64::to_bits),
+                    "seed {seed}: polygon {k} from {o} along {d}"
+                );
                 let bound = rng.random_range(0.0..2.0);
                 let culled = facets.hit(k, o, d, bound);
                 assert_eq!(culled, exact.filter(|&t| t <= bound), "seed {seed}: polygon {k}, bound {bound}");
             }
         }
-        assert!(decided[0] > 1000 && decided[1] > 1000, "seed {seed}: hits and misses both occur: {decided:?}");
+        assert!(
+            decided[0] > 1000 && decided[1] > 1000,
+            "seed {seed}: hits and misses both occur: {decided:?}"
+        );
     }
 
     /// The quads' nearest hit (cones, planes in lanes, the edges through the source's filter) is

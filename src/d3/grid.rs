@@ -823,9 +823,14 @@ mod tests {
     #[test]
     fn floor_i64_is_floor() {
         let mut rng = ChaCha8Rng::seed_from_u64(12);
-        let special = [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, -1.5, 2.0f64.powi(62), -(2.0f64.powi(63)), 1e19, -1e19];
+        let special =
+            [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, -1.5, 2.0f64.powi(62), -(2.0f64.powi(63)), 1e19, -1e19];
         let random = (0..10_000).map(|_| rng.random_range(-1e6..1e6) * 10f64.powi(rng.random_range(-8..8)));
-        for x in special.into_iter().chain([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, f64::MIN_POSITIVE]).chain(random) {
+        for x in special
+            .into_iter()
+            .chain([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, f64::MIN_POSITIVE])
+            .chain(random)
+        {
             assert_eq!(floor_i64(x), x.floor() as i64, "{x}");
         }
     }
