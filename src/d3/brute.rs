@@ -421,7 +421,9 @@ impl FacetQuads {
                 let lane = lanes.trailing_zeros() as usize;
                 lanes &= lanes - 1;
                 let (k, t) = (q.k[lane] as usize, t[lane]);
-                if t > bound(best) {
+                // A hit beyond the nearest so far, or at its distance from a polygon of higher
+                // index, could not be taken (the tie rule).
+                if best.is_some_and(|b| t > b.t || (t == b.t && k > b.polygon)) {
                     continue;
                 }
                 // `Facets::inside`, edge by edge through `SourceEdge`'s filter.
