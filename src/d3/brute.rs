@@ -569,6 +569,23 @@ impl Quad {
     }
 }
 
+/// The nearest hit of `origin + t·direction` in `scene`, skipping polygon `skip`, by brute force
+/// over every polygon.
+pub fn nearest(scene: &Scene3, origin: DVec3, direction: DVec3, skip: Option<usize>) -> Option<Hit> {
+    let mut best: Option<Hit> = None;
+    for (k, polygon) in scene.polygons.iter().enumerate() {
+        if Some(k) == skip {
+            continue;
+        }
+        if let Some(t) = intersect(origin, direction, polygon) {
+            if best.is_none_or(|b| t < b.t) {
+                best = Some(Hit { polygon: k, t, front: direction.dot(polygon.normal) < 0.0 });
+            }
+        }
+    }
+    best
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
