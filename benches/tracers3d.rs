@@ -9,7 +9,9 @@
 //! is reported. The grids are built once, before timing; the per-bundle work (screening) is
 //! timed. The hemisphere sets are made once.
 //!
-//! Run: `cargo bench --bench tracers3d` (`-- --rounds N` for more rounds).
+//! Run: `cargo bench --bench tracers3d` (`-- --rounds N` for more rounds; for profiling,
+//! `-- --methods conventional,polar` times only those tracers beside parry3d and `-- --scene
+//! workload` or `cornell` runs that scene alone).
 //!
 //! parry3d casts against the polygons' fan triangles in f32 with back-face culling
 //! (`RayCullingMode::IgnoreBackfaces`), which is the tracers' screening: it is a speed
@@ -105,22 +107,45 @@ fn main() {
         .nth(1)
         .and_then(|v| v.parse().ok())
         .unwrap_or(7usize);
+    // `--methods brute,polar` times only those tracers (for profiling; parry3d always runs).
+    let list = |option: &str| -> Option<Vec<String>> {
+        std::env::args()
+            .skip_while(|a| a != option)
+            .nth(1)
+            .map(|v| v.split(',').map(str::to_string).collect())
+    };
+    let only = list("--methods");
+    // `--scene workload` or `--scene cornell`: that scene alone (for profiling).
+    let scene = list("--scene");
+    let wanted = |key: &str| scene.as_ref().is_none_or(|s| s.iter().any(|n| n == key));
     let cornell = obj::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.obj"))
         .expect("the Cornell box loads");
-    let workloads = [
-        Workload::new(
+    let mut workloads = Vec::new();
+    if wanted("workload") {
+        workloads.push(Workload::new(
             "3D workload (1000 squares of side 32, seed 7)",
             gen::generate(1000, 32.0, 7).expect("valid"),
-        ),
-        Workload::new("Cornell box (26 polygons)", cornell),
-    ];
+        ));
+    }
+    if wanted("cornell") {
+        workloads.push(Workload::new("Cornell box (26 polygons)", cornell));
+    }
     println!("3D tracer speed: R = 1024 cosine rays (64 × 16) from 16 sources, {rounds} rounds, 1 thread");
     for w in &workloads {
-        let methods = Method3::ALL;
+        let methods: Vec<Method3> = Method3::ALL
+            .into_iter()
+            .filter(|m| only.as_ref().is_none_or(|o| o.iter().any(|n| n == m.name())))
+            .collect();
         // Warm up (and compare the hits), then interleaved timed rounds.
         let base_hits = w.parry();
-        let oracle = w.run(Method3::Brute);
-        let differ = base_hits.iter().zip(&oracle).filter(|(a, b)| a != b).count();
+        // Under `--methods` (profiling) brute force runs only if named.
+        let differ = match only.is_none() || methods.contains(&Method3::Brute) {
+            true => {
+                let oracle = w.run(Method3::Brute);
+                base_hits.iter().zip(&oracle).filter(|(a, b)| a != b).count().to_string()
+            }
+            false => "(not compared)".to_string(),
+        };
         for &m in &methods {
             black_box(w.run(m));
         }

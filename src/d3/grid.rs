@@ -46,7 +46,7 @@
 //! [`Grid3::walk`], in [`super::walk`] (build and traversal live in separate files): 3D-DDA
 //! (Amanatides–Woo) that crosses an empty cell's whole macro-region in one step.
 
-use super::brute::EDGE_MARGIN;
+use super::brute::{Facets, EDGE_MARGIN};
 use super::scene::{Polygon, Scene3};
 use glam::DVec3;
 
@@ -68,7 +68,7 @@ pub const MAX_REGISTRATIONS: usize = 1 << 26;
 pub use crate::grid::STOP_MARGIN_EPS;
 
 /// Marks a non-empty cell in the per-cell region table.
-const NO_REGION: u32 = u32::MAX;
+pub(crate) const NO_REGION: u32 = u32::MAX;
 
 /// Parameters of the resolution rule.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -131,8 +131,10 @@ pub struct Grid3 {
     offsets: Vec<u32>,
     items: Vec<u32>,
     /// The macro-region of each empty cell, `NO_REGION` for a non-empty one.
-    cell_region: Vec<u32>,
+    pub(crate) cell_region: Vec<u32>,
     regions: Vec<CellBox>,
+    /// The scene's polygons prepared for the hit rule.
+    facets: Facets,
 }
 
 impl Grid3 {
@@ -159,6 +161,7 @@ impl Grid3 {
             items: Vec::new(),
             cell_region: Vec::new(),
             regions: Vec::new(),
+            facets: Facets::new(scene),
         };
         grid.register(&scene.polygons)?;
         grid.build_macro_regions();
@@ -240,7 +243,7 @@ impl Grid3 {
     /// The cell coordinate (possibly outside the grid) of world coordinate `v` along `axis`.
     #[inline]
     pub fn coord(&self, v: f64, axis: usize) -> i64 {
-        ((v - self.origin[axis]) / self.cell_size).floor() as i64
+        floor_i64((v - self.origin[axis]) / self.cell_size)
     }
 
     /// The cell containing point `p`, or `None` outside the grid.
@@ -277,6 +280,11 @@ impl Grid3 {
     /// The number of macro-regions.
     pub fn region_count(&self) -> usize {
         self.regions.len()
+    }
+
+    /// The polygons of the scene the grid was built over, prepared for the hit rule.
+    pub fn facets(&self) -> &Facets {
+        &self.facets
     }
 
     /// The number of registrations (cell, polygon pairs).
@@ -461,6 +469,19 @@ impl Grid3 {
                 }
             }
         }
+    }
+}
+
+/// `x.floor() as i64`, without the call to the C library's `floor` that x86-64 makes (it has no
+/// rounding instruction before SSE4.1): the truncation, less one where it rounded a negative
+/// value up. Equal for every `x`, NaN (0) and the infinities included.
+#[inline]
+pub(crate) fn floor_i64(x: f64) -> i64 {
+    let t = x as i64;
+    if (t as f64) > x {
+        t.saturating_sub(1)
+    } else {
+        t
     }
 }
 
@@ -797,6 +818,21 @@ mod tests {
         let scene = generate(20_000, 590.0, 3).unwrap();
         let e = Grid3::build(&scene, Grid3Params { cells_per_polygon: 1e9, cells_per_axis: None });
         assert!(matches!(e, Err(Grid3Error::TooMuchWork { .. })), "{:?}", e.map(|g| g.n));
+    }
+
+    #[test]
+    fn floor_i64_is_floor() {
+        let mut rng = ChaCha8Rng::seed_from_u64(12);
+        let special =
+            [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, -1.5, 2.0f64.powi(62), -(2.0f64.powi(63)), 1e19, -1e19];
+        let random = (0..10_000).map(|_| rng.random_range(-1e6..1e6) * 10f64.powi(rng.random_range(-8..8)));
+        for x in special
+            .into_iter()
+            .chain([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, f64::MIN_POSITIVE])
+            .chain(random)
+        {
+            assert_eq!(floor_i64(x), x.floor() as i64, "{x}");
+        }
     }
 
     #[test]

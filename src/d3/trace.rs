@@ -28,6 +28,17 @@
 //! tracers screen by the same function and test by the same function, so they agree ray for ray
 //! (rung 1).
 //!
+//! **How a pair is decided, fast.** Both tracers test through the scene's polygons prepared once
+//! per grid ([`Facets`], [`Grid3::facets`]): [`Facets::hit`] does
+//! [`super::brute::intersect`]'s operations on the same operands, so it gives the same bits.
+//! Before it, a polygon's bounding cone from the source ([`Cone`]) rules out the rays that pass
+//! far from it, conservatively (the rounding bounded), and a plane beyond the ray's nearest hit so
+//! far is not tested inside (its hit could not be taken). Brute force runs the cones and the
+//! planes four polygons at a time in AVX lanes, nearest polygons first, and its edge tests
+//! through a per-source filter that falls back on the hit rule's own operations near the
+//! thresholds ([`FacetQuads`]). A pair ruled out by a cone or a bound is still a test: it is
+//! decided, and the counters count it as before.
+//!
 //! # Counters
 //!
 //! * `patches_read_before_screening`: brute `R·N`; conventional, the distinct polygons of the
@@ -49,7 +60,7 @@
 //! could be nearer than or tie with the best so far lies in a cell already visited, and exact
 //! ties across a cell boundary are still resolved by index.
 
-use super::brute::{intersect, Hit};
+use super::brute::{Cone, FacetQuads, Facets, Hit};
 use super::grid::Grid3;
 use super::hemisphere::HemisphereRays;
 use super::scene::{Polygon, Scene3};
@@ -265,8 +276,44 @@ pub(crate) fn finish(hits: Vec<Option<Hit>>, mut counters: Counters, estimate: O
     Trace3 { hits, counters }
 }
 
+/// The bound to pass [`Facets::hit`] for a ray whose nearest hit so far is `best`: a hit beyond
+/// it could not be taken.
+#[inline]
+fn bound(best: &Option<Hit>) -> f64 {
+    best.map_or(f64::INFINITY, |b| b.t)
+}
+
 /// Every ray against every polygon that passes the screener: the oracle.
 pub fn brute(scene: &Scene3, bundle: &Bundle3) -> Trace3 {
+    brute_with(scene, &Facets::new(scene), bundle)
+}
+
+/// Runs `$body(args)` through a copy of it compiled for x86-64-v3 without FMA where the CPU has
+/// those features: the same operations in the same order, encoded with more instructions to
+/// choose from (as the 2D shelling tracers' copy, `trace_bundle_v3`), so the same bits.
+macro_rules! on_v3 {
+    ($body:ident($($arg:ident: $ty:ty),*) -> $ret:ty) => {{
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx,avx2,bmi1,bmi2,lzcnt,popcnt")]
+        fn v3($($arg: $ty),*) -> $ret {
+            $body($($arg),*)
+        }
+        #[cfg(target_arch = "x86_64")]
+        if crate::trace::shelling::x86_64_v3() {
+            // SAFETY: the CPU has the features `v3` is compiled for (just checked).
+            return unsafe { v3($($arg),*) };
+        }
+        $body($($arg),*)
+    }};
+}
+
+/// [`brute`] with the scene's polygons already prepared.
+fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
+    on_v3!(brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3)
+}
+
+#[inline(always)]
+fn brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
     let passing: Vec<usize> = (0..scene.polygons.len())
         .filter(|&k| screen(&bundle.source, k, &scene.polygons[k]) == Screen3::Pass)
         .collect();
@@ -278,61 +325,82 @@ pub fn brute(scene: &Scene3, bundle: &Bundle3) -> Trace3 {
     };
     c.intersection_computations = c.patches_read_after_screening;
     let o = bundle.source.origin;
-    let hits = bundle
-        .directions
-        .iter()
-        .map(|&d| {
-            let mut best = None;
-            for &k in &passing {
-                let p = &scene.polygons[k];
-                if let Some(t) = intersect(o, d, p) {
-                    offer(&mut best, k, t, d.dot(p.normal) < 0.0);
-                }
-            }
-            best
-        })
-        .collect();
+    let quads = FacetQuads::new(facets, o, &passing);
+    let mut hits = Vec::with_capacity(bundle.len());
+    for &d in &bundle.directions {
+        let mut best = None;
+        quads.offer_hits(facets, o, d, &mut best);
+        hits.push(best);
+    }
     finish(hits, c, None)
+}
+
+/// What the conventional tracer knows of a polygon for the current source: the ray that last
+/// loaded it, plus one (the per-ray mailbox), its screening verdict and, once it passed, its
+/// bounding cone from the source ([`Cone`]), which rules out most rays before the hit rule.
+#[derive(Clone, Copy)]
+struct Slot {
+    stamp: u32,
+    /// 0 not yet screened, 1 passes, 2 screened out.
+    verdict: u8,
+    cone: Cone,
 }
 
 /// Ray by ray through `grid` (built over `scene`), see the module docs.
 pub fn conventional(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
-    let n = scene.polygons.len();
-    // Screening verdicts, computed on a polygon's first load for this source.
-    let mut verdict: Vec<Option<Screen3>> = vec![None; n];
-    // The per-ray mailbox: the ray that last loaded each polygon, plus one.
-    let mut stamp = vec![0usize; n];
+    debug_assert_eq!(grid.facets().len(), scene.polygons.len(), "the grid is built over the scene");
+    on_v3!(conventional_body(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3)
+}
+
+#[inline(always)]
+fn conventional_body(scene: &Scene3, grid: &Grid3, bundle: &Bundle3) -> Trace3 {
+    let facets = grid.facets();
+    let mut slots = vec![Slot { stamp: 0, verdict: 0, cone: Cone::NONE }; scene.polygons.len()];
     let mut c = Counters::default();
     let o = bundle.source.origin;
     let mut hits = Vec::with_capacity(bundle.len());
     for (r, &d) in bundle.directions.iter().enumerate() {
+        let stamp = r as u32 + 1;
         let margin = grid.stop_margin() / d.length();
+        let dd = d.dot(d);
         let mut best: Option<Hit> = None;
-        grid.walk(o, d, |step| {
+        let mut walk = grid.walker(o, d);
+        while let Some(step) = walk.next(grid) {
             c.cells_traversed += 1;
             if step.region.is_none() {
                 for &k in grid.cell_items(step.cell) {
                     let k = k as usize;
-                    if stamp[k] == r + 1 {
+                    let slot = &mut slots[k];
+                    if slot.stamp == stamp {
                         continue;
                     }
-                    stamp[k] = r + 1;
+                    slot.stamp = stamp;
                     c.patches_read_before_screening += 1;
-                    let p = &scene.polygons[k];
-                    let v = *verdict[k].get_or_insert_with(|| screen(&bundle.source, k, p));
-                    if v != Screen3::Pass {
+                    if slot.verdict == 0 {
+                        let pass = screen(&bundle.source, k, &scene.polygons[k]) == Screen3::Pass;
+                        slot.verdict = if pass { 1 } else { 2 };
+                        if pass {
+                            slot.cone = facets.cone(k, o);
+                        }
+                    }
+                    if slot.verdict != 1 {
                         continue;
                     }
                     c.patches_read_after_screening += 1;
                     c.intersection_computations += 1;
-                    if let Some(t) = intersect(o, d, p) {
-                        offer(&mut best, k, t, d.dot(p.normal) < 0.0);
+                    if slot.cone.misses(d, dd) {
+                        continue;
+                    }
+                    if let Some(t) = facets.hit(k, o, d, bound(&best)) {
+                        offer(&mut best, k, t, d.dot(facets.facet(k).normal) < 0.0);
                     }
                 }
             }
-            // Continue while a polygon beyond this cell could still be nearer (or tie).
-            !matches!(best, Some(b) if b.t < step.t_exit - margin)
-        });
+            // Go on while a polygon beyond this cell could still be nearer (or tie).
+            if matches!(best, Some(b) if b.t < step.t_exit - margin) {
+                break;
+            }
+        }
         hits.push(best);
     }
     finish(hits, c, None)
@@ -349,7 +417,7 @@ pub fn trace(
 ) -> Result<Trace3, Trace3Error> {
     params.validate().map_err(Trace3Error::InvalidParams)?;
     Ok(match method {
-        Method3::Brute => brute(scene, bundle),
+        Method3::Brute => brute_with(scene, grid.facets(), bundle),
         Method3::Conventional => conventional(scene, grid, bundle),
         Method3::Polar => super::polar::trace(scene, grid, bundle, params)?,
         Method3::Sweep => super::sweep::trace(scene, bundle, params)?,

@@ -10,7 +10,7 @@
 
 mod brute;
 mod conventional;
-mod shelling;
+pub(crate) mod shelling;
 
 pub use shelling::{ShellParams, ShellStats};
 

@@ -269,9 +269,9 @@ pub(super) fn trace<H: HitTest>(
     })
 }
 
-/// Whether the CPU has the features of [`trace_bundle_v3`].
+/// Whether the CPU has the features of [`trace_bundle_v3`] (and of the 3D tracers' copies).
 #[cfg(target_arch = "x86_64")]
-fn x86_64_v3() -> bool {
+pub(crate) fn x86_64_v3() -> bool {
     std::is_x86_feature_detected!("avx")
         && std::is_x86_feature_detected!("avx2")
         && std::is_x86_feature_detected!("bmi1")
