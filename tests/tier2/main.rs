@@ -1,6 +1,8 @@
 //! Tier 2 of the tests (`cargo test --workspace --features tier2 --test tier2`): the long
 //! equivalence checks, which tier 1 (`tests/tests.rs`) represents with short vectors.
 
+// Each tier uses its own part of the shared helpers.
+#[allow(dead_code)]
 #[path = "../support/mod.rs"]
 mod support;
 

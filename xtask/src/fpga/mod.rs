@@ -801,12 +801,14 @@ mod tests {
             row("a", 4, Some(150.0)),
             row("a", 5, Some(149.0)),
         ];
-        let s = spreads(&rows);
+        let hashes = BTreeMap::from([("a".to_string(), "0123456789abcdef".to_string())]);
+        let s = spreads(&rows, &hashes);
         assert_eq!(s.len(), 2);
+        assert_eq!((s[0].verilog_hash.as_str(), s[1].verilog_hash.as_str()), ("0123456789abcdef", ""));
         assert_eq!(s[0].seeds, vec![1, 2, 3, 4, 5]);
         assert_eq!((s[0].min_mhz, s[0].median_mhz, s[0].max_mhz), (Some(140.0), Some(149.0), Some(155.0)));
         assert_eq!((s[1].min_mhz, s[1].median_mhz, s[1].max_mhz), (Some(200.0), Some(200.0), Some(200.0)));
-        let none = spreads(&[row("c", 1, None)]);
+        let none = spreads(&[row("c", 1, None)], &hashes);
         assert_eq!(none[0].median_mhz, None);
     }
 }
