@@ -96,12 +96,12 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 4096-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 10198 LUT4s, 7282 flip-flops, 16 `MULT18X18D`,
-//! 31 `DP16KD`, 424 LUT RAMs at placement seed 1 (with the non-blocking cache); on LFE5U-85F-6 a
-//! median of 139.1 MHz over placement seeds 1–5 (121.0–146.5; 140.9 before the non-blocking
-//! cache, 71.8 at seed 1 before the 150 MHz work), its critical paths in the command glue (the
-//! tag FIFO's count into the bank counters, the loader's reservations and `pend` into the tag
-//! FIFO's write enable) and the screener's input FIFO (`hdl/fpga/ecp5.md`, checked
+//! flow's register wrapper, wrapper excluded): 10154 LUT4s, 7451 flip-flops, 16 `MULT18X18D`,
+//! 31 `DP16KD`, 424 LUT RAMs at placement seed 1; on LFE5U-85F-6 a median of 148.3 MHz over
+//! placement seeds 1–5 (132.5–156.7; 139.1 before the registered ready flags and the unit's
+//! split merge compare, 71.8 at seed 1 before the 150 MHz work), its critical paths `pend` into
+//! the tag FIFO's write enable (seeds 1, 4), the cache's answer queue into the tag block RAM's
+//! write enable (3) and the screener's credit count and normaliser (2, 5) (`hdl/fpga/ecp5.md`, checked
 //! against the committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
 //!
 //! # Models

@@ -98,11 +98,11 @@
 //! Resources (`cargo xtask fpga --blocks intersection_unit --families ecp5`: Yosys `synth_ecp5`
 //! with `SHELLING_ECP5`, nextpnr-ecp5 on the LFE5U-85F-6, seed 1): 6 `MULT18X18D` (with their
 //! input and output registers), 6 `DP16KD` (directions 2, live bits 1, keys 2, valid + id 1,
-//! all with the output register), 1183 LUT4s and 1018 flip-flops; 157.4 MHz (critical path
-//! 6.35 ns from the `mem_meta` block RAM's output register to the merge's id comparison
-//! `cm_lt`). Placement moves it by about ±10 MHz from one change to the next: 168.4 MHz before
-//! `patch_ready` became a register (then the sequencer's `remaining` into its own clock enable
-//! was the slowest path), 157.4 MHz also before the registers moved into leaves.
+//! all with the output register), 1170 LUT4s and 1020 flip-flops; over placement seeds 1–5 a
+//! median of 163.5 MHz (156.3–172.9; `hdl/fpga/ecp5.md`), the critical paths from the key
+//! scaling's registers into the merge's compares with the last writes (`c3_eq`) and from the
+//! `mem_meta` block RAM's output register into the id compare `cm_lt`. With the key's lower
+//! half and the id combined before their register the median was 137.6 MHz (123.7–157.5).
 //!
 //! # Models
 //!
