@@ -22,7 +22,12 @@
 //!   is answered exactly once, in request order, with its id's patch, and that at most four
 //!   host requests are outstanding, each for an id an outstanding request asked for and none
 //!   for one already at the host (one to four lines, no flush); its covers reached; two broken
-//!   variants (a staleness check that never rewinds, a return queue that never pops) caught.
+//!   variants (a staleness check that never rewinds, a return queue that never pops) caught;
+//! * the memory arbiter (four PEs): to depth 12, every request reaches the host once in its
+//!   PE's order, every answer goes to the PE that asked, in its order, with its patch, and no
+//!   PE's waiting request goes more than five cycles without one of its requests at the host;
+//!   its covers reached (the wait bound among them, so it is tight); two broken variants
+//!   (every answer routed to PE 0, PE 0 never granted) caught.
 //!
 //! SymbiYosys, the Yosys it drives and the yices solver: the test uses, in this order, a native
 //! `sby` (with `yosys`, `yosys-smtbmc` beside it) on the PATH, `yowasp-sby` (with
@@ -257,5 +262,18 @@ fn the_patch_caches_covers_are_reachable() {
 fn the_cache_proof_catches_broken_caches() {
     for mutant in ["mutant_stale", "mutant_order"] {
         expect("cache", mutant, "FAIL");
+    }
+}
+
+#[test]
+fn the_memory_arbiter_routes_every_answer_to_its_pe_to_depth_12() {
+    expect("arbiter", "bmc", "PASS");
+    expect("arbiter", "cover", "PASS");
+}
+
+#[test]
+fn the_arbiter_check_catches_broken_arbiters() {
+    for mutant in ["mutant_route", "mutant_starve"] {
+        expect("arbiter", mutant, "FAIL");
     }
 }
