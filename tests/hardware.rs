@@ -106,7 +106,8 @@ fn committed_fpga_results_are_of_the_committed_verilog() {
     for b in blocks {
         let block = b["block"].as_str().expect("a block is named");
         let name = format!("{block}.v");
-        let committed = std::fs::read_to_string(verilog_dir().join(&name)).expect("the block's Verilog is committed");
+        let committed =
+            std::fs::read_to_string(verilog_dir().join(&name)).expect("the block's Verilog is committed");
         assert_eq!(
             b["verilog_hash"].as_str().expect("a block's results name its Verilog's hash"),
             shelling_testbench::export::hash(&[(name, committed)]),
@@ -200,7 +201,8 @@ fn multipliers_use_their_own_registers() {
 /// request and route queues (`memory_arbiter`).
 #[test]
 fn patch_loader_screener_and_fifos_synthesize_without_latches() {
-    let blocks = [("patch_loader", 0), ("screener", 10), ("fwft_fifo", 0), ("job_queue", 0), ("memory_arbiter", 0)];
+    let blocks =
+        [("patch_loader", 0), ("screener", 10), ("fwft_fifo", 0), ("job_queue", 0), ("memory_arbiter", 0)];
     for (block, dsps) in blocks {
         let stat = synth_ecp5(block);
         for latch in ["$_DLATCH", "$dlatch", "LATCH"] {

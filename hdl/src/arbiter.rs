@@ -180,7 +180,11 @@ pub mod model {
         /// One rising edge: `requests[i]` is PE `i`'s request in this cycle, `answer` the host's.
         /// Returns the PE granted at this edge. Fails (naming it) on what the block cannot take:
         /// a request to a full queue, an answer with no request at the host.
-        pub fn step(&mut self, requests: &[Option<u16>], answer: Option<[u32; 4]>) -> Result<Option<usize>, String> {
+        pub fn step(
+            &mut self,
+            requests: &[Option<u16>],
+            answer: Option<[u32; 4]>,
+        ) -> Result<Option<usize>, String> {
             let valid: Vec<bool> = self.queues.iter().map(|q| q.control.valid).collect();
             let grant = self.rr.step(&valid);
             if answer.is_some() && self.route.head().is_none() {

@@ -8,7 +8,7 @@
 
 use crate::intersection::{load_directions, read_hits};
 use crate::memory::HostMemory;
-use crate::pe_sim::{PeOutputs, PeRays, PeSim};
+use crate::pe_sim::{PeInputs, PeOutputs, PeRays, PeSim};
 use crate::{impl_clocked, Error, Result};
 use shelling_hdl::cache::LINES;
 use shelling_hdl::formats::Nearest;
@@ -47,7 +47,9 @@ impl PeSetup {
         BundleSetup { origin: self.origin, normal: self.normal, first, last }
     }
 
-    fn check(&self, commands: &[Command], patches: usize) -> Result<()> {
+    /// Checks the commands against the bundle and a memory of `patches` patches; the error names
+    /// the first bad command.
+    pub fn check(&self, commands: &[Command], patches: usize) -> Result<()> {
         let n = self.dirs.len();
         if n == 0 || n > PE_RAY_MEMORY {
             return Err(Error::new(format!("a PE traces 1 to {PE_RAY_MEMORY} rays, got {n}")));
@@ -206,6 +208,182 @@ pub fn rust_hdl_pe() -> Result<RustHdlPe> {
     crate::Driver::new(ProcessingElement::default())
 }
 
+/// The host's side of one PE's command phase, one cycle at a time: the command stream (the
+/// whole bundle as the first sector, then `commands`), what the PE took of it, and the counts
+/// of [`PeCounters`] the loop makes. [`run`] steps one with the host memory wired to the PE;
+/// a machine of several PEs (`crate::machine`) steps one per PE beside its memory arbiter.
+pub struct CommandHost {
+    stream: Vec<Command>,
+    next: usize,
+    // The last command taken was a sector.
+    after_sector: bool,
+    // The PE's counters at the start (they wrap and run from power-up: a run counts what they
+    // add).
+    base: [u32; 8],
+    tests_before: u32,
+    start: u64,
+    idle_since: u64,
+    last_progress: u64,
+    // This cycle's flags, from before the edge.
+    busy: bool,
+    waiting: bool,
+    intersection_busy_cycles: u64,
+    stall_cycles: u64,
+    drain_cycles: u64,
+}
+
+fn counters(o: &PeOutputs) -> [u32; 8] {
+    [o.loads, o.tests, o.cache_hits, o.passed, o.backward, o.back_facing, o.outside, o.near]
+}
+
+impl CommandHost {
+    /// The command phase of a source starting with the PE's outputs `out` at cycle `now`.
+    pub fn new(setup: &PeSetup, commands: &[Command], out: PeOutputs, now: u64) -> Self {
+        let n = setup.dirs.len();
+        let whole = Command::Sector { first: setup.dirs[0], last: setup.dirs[n - 1] };
+        let base = counters(&out);
+        Self {
+            stream: std::iter::once(whole).chain(commands.iter().copied()).collect(),
+            next: 0,
+            after_sector: false,
+            base,
+            tests_before: base[1],
+            start: now,
+            idle_since: now,
+            last_progress: 0,
+            busy: false,
+            waiting: false,
+            intersection_busy_cycles: 0,
+            stall_cycles: 0,
+            drain_cycles: 0,
+        }
+    }
+
+    /// The command offered in this cycle, if any is left.
+    pub fn command(&self) -> Option<Command> {
+        self.stream.get(self.next).copied()
+    }
+
+    /// Sets the command ports of `i` to offer `cmd` (or nothing).
+    pub fn set_inputs(i: &mut PeInputs, cmd: Option<Command>) {
+        i.cmd_valid = cmd.is_some();
+        i.cmd_retire = matches!(cmd, Some(Command::Retire { .. }));
+        i.cmd_sector = matches!(cmd, Some(Command::Sector { .. }));
+        match cmd {
+            Some(Command::Sector { first, last }) => {
+                [i.first_x, i.first_y] = first;
+                [i.last_x, i.last_y] = last;
+            }
+            Some(Command::Job { id, first, count }) => {
+                i.cmd_id = id;
+                i.cmd_first = first;
+                i.cmd_count = count;
+            }
+            Some(Command::Retire { first, count }) => {
+                i.cmd_first = first;
+                i.cmd_count = count;
+            }
+            None => {}
+        }
+    }
+
+    /// Before the edge, with the PE's outputs under this cycle's inputs: the command taken, if
+    /// `cmd_ready`.
+    pub fn before_tick(&mut self, out: &PeOutputs) {
+        self.busy = out.busy;
+        self.waiting = self.after_sector && !out.cmd_ready;
+        let cmd = self.command();
+        if cmd.is_some() && out.cmd_ready {
+            self.after_sector = matches!(cmd, Some(Command::Sector { .. }));
+            self.next += 1;
+        }
+    }
+
+    /// After the edge (cycle `now`): the counts; `progress(done, total)` every 256 commands.
+    pub fn after_tick(&mut self, out: &PeOutputs, now: u64, progress: &mut impl FnMut(usize, usize)) {
+        let tested = out.tests != self.tests_before;
+        self.tests_before = out.tests;
+        self.intersection_busy_cycles += tested as u64;
+        if !tested && (self.busy || self.next < self.stream.len()) {
+            self.stall_cycles += 1;
+            self.drain_cycles += self.waiting as u64;
+        }
+        if tested || self.next as u64 != self.last_progress {
+            self.idle_since = now;
+        }
+        if self.next as u64 != self.last_progress {
+            self.last_progress = self.next as u64;
+            if self.next.is_multiple_of(256) {
+                progress(self.next - 1, self.stream.len() - 1);
+            }
+        }
+    }
+
+    /// Every command taken and the PE idle (its memory requests answered is the caller's to
+    /// check).
+    pub fn finished(&self, out: &PeOutputs) -> bool {
+        self.next == self.stream.len() && !out.busy
+    }
+
+    /// Fails, naming where, once the PE has neither tested nor taken a command for more than
+    /// `limit` cycles.
+    pub fn check_progress(&self, now: u64, limit: u64) -> Result<()> {
+        if now - self.idle_since > limit {
+            return Err(Error::new(format!(
+                "no progress for {} cycles at command {} of {} ({:?})",
+                now - self.idle_since,
+                self.next as i64 - 1,
+                self.stream.len() - 1,
+                self.stream.get(self.next)
+            )));
+        }
+        Ok(())
+    }
+
+    /// `k` with the command phase's counts, the PE's outputs `out` at its end, cycle `now`.
+    pub fn counters(&self, out: &PeOutputs, now: u64, mut k: PeCounters) -> PeCounters {
+        k.cycles = now - self.start;
+        k.intersection_busy_cycles = self.intersection_busy_cycles;
+        k.stall_cycles = self.stall_cycles;
+        k.drain_cycles = self.drain_cycles;
+        k.pipeline_efficiency =
+            if k.cycles > 0 { k.intersection_busy_cycles as f64 / k.cycles as f64 } else { 0.0 };
+        let delta: Vec<u64> =
+            counters(out).iter().zip(self.base).map(|(c, b)| c.wrapping_sub(b) as u64).collect();
+        k.patch_loads = delta[0];
+        k.cache_hits = delta[2];
+        k.tests = delta[1];
+        k.passed = delta[3];
+        k.backward = delta[4];
+        k.back_facing = delta[5];
+        k.outside = delta[6];
+        k.near = delta[7];
+        k
+    }
+}
+
+/// The source's setup on the PE: origin, normal, the cache's setting and the ray directions.
+/// Returns the cycles it took.
+pub fn load_source<S: PeSim>(sim: &mut S, setup: &PeSetup, cache: CacheConfig) -> Result<u64> {
+    let start = sim.cycles();
+    let (o, nm) = (setup.origin, setup.normal);
+    sim.drive(|i| {
+        [i.origin_x, i.origin_y] = o;
+        [i.normal_x, i.normal_y] = nm;
+        i.cfg_cache_enable = cache.lines.is_some();
+        i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
+    })?;
+    load_directions(&mut PeRays(sim), &setup.dirs)?;
+    Ok(sim.cycles() - start)
+}
+
+/// The readout of `rays` rays' hits (read and clear). Returns them and the cycles it took.
+pub fn read_out<S: PeSim>(sim: &mut S, rays: usize) -> Result<(Vec<Option<Nearest>>, u64)> {
+    let start = sim.cycles();
+    let hits = read_hits(&mut PeRays(sim), rays)?;
+    Ok((hits, sim.cycles() - start))
+}
+
 /// Runs a whole source on a PE fresh from power-up (or after a previous run's readout):
 /// directions, commands, readout. `progress(done, total)` is called now and then with the
 /// commands sent so far. A run that stops making progress is an error naming where it stopped.
@@ -224,122 +402,39 @@ pub fn run<S: PeSim>(
     let mut k = PeCounters::default();
     let n = setup.dirs.len();
 
-    // Directions and source.
-    let start = sim.cycles();
-    let (o, nm) = (setup.origin, setup.normal);
-    sim.drive(|i| {
-        [i.origin_x, i.origin_y] = o;
-        [i.normal_x, i.normal_y] = nm;
-        i.cfg_cache_enable = cache.lines.is_some();
-        i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
-    })?;
-    load_directions(&mut PeRays(sim), &setup.dirs)?;
-    k.setup_cycles = sim.cycles() - start;
+    k.setup_cycles = load_source(sim, setup, cache)?;
 
     // Commands, after the whole bundle as the first sector. The memory's answer to a request
     // is presented from the next cycle on.
-    let whole = Command::Sector { first: setup.dirs[0], last: setup.dirs[n - 1] };
-    let stream: Vec<Command> = std::iter::once(whole).chain(commands.iter().copied()).collect();
-    let start = sim.cycles();
-    // The PE's counters wrap and run from power-up: a run counts what they add.
-    let counters = |o: PeOutputs| {
-        [o.loads, o.tests, o.cache_hits, o.passed, o.backward, o.back_facing, o.outside, o.near]
-    };
-    let base = counters(sim.outputs());
+    let mut host = CommandHost::new(setup, commands, sim.outputs(), sim.cycles());
     let mut response: Option<[i32; 4]> = None;
-    let mut next = 0usize;
-    let mut last_progress = 0u64;
-    let mut idle_since = sim.cycles();
-    let mut tests_before = base[1];
-    // The last command taken was a sector.
-    let mut after_sector = false;
     loop {
-        let cmd = stream.get(next).copied();
+        let cmd = host.command();
         sim.drive(|i| {
             i.mem_valid = response.is_some();
             if let Some(m) = response {
                 [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = m;
             }
-            i.cmd_valid = cmd.is_some();
-            i.cmd_retire = matches!(cmd, Some(Command::Retire { .. }));
-            i.cmd_sector = matches!(cmd, Some(Command::Sector { .. }));
-            match cmd {
-                Some(Command::Sector { first, last }) => {
-                    [i.first_x, i.first_y] = first;
-                    [i.last_x, i.last_y] = last;
-                }
-                Some(Command::Job { id, first, count }) => {
-                    i.cmd_id = id;
-                    i.cmd_first = first;
-                    i.cmd_count = count;
-                }
-                Some(Command::Retire { first, count }) => {
-                    i.cmd_first = first;
-                    i.cmd_count = count;
-                }
-                None => {}
-            }
+            CommandHost::set_inputs(i, cmd);
         })?;
         let out = sim.outputs();
-        let busy = out.busy;
-        let waiting = after_sector && !out.cmd_ready;
-        if cmd.is_some() && out.cmd_ready {
-            after_sector = matches!(cmd, Some(Command::Sector { .. }));
-            next += 1;
-        }
+        host.before_tick(&out);
         let request = out.mem_req.then_some(out.mem_addr);
         response = memory.cycle(request)?;
         sim.tick()?;
         let out = sim.outputs();
-        let tested = out.tests != tests_before;
-        tests_before = out.tests;
-        k.intersection_busy_cycles += tested as u64;
-        if !tested && (busy || next < stream.len()) {
-            k.stall_cycles += 1;
-            k.drain_cycles += waiting as u64;
-        }
-        if tested || next as u64 != last_progress {
-            idle_since = sim.cycles();
-        }
-        if next as u64 != last_progress {
-            last_progress = next as u64;
-            if next.is_multiple_of(256) {
-                progress(next - 1, commands.len());
-            }
-        }
-        if next == stream.len() && !out.busy && response.is_none() && memory.pending() == 0 {
+        host.after_tick(&out, sim.cycles(), &mut progress);
+        if host.finished(&out) && response.is_none() && memory.pending() == 0 {
             break;
         }
-        if sim.cycles() - idle_since > 64 * (memory.tc() as u64 + 64) {
-            return Err(Error::new(format!(
-                "no progress for {} cycles at command {} of {} ({:?})",
-                sim.cycles() - idle_since,
-                next as i64 - 1,
-                commands.len(),
-                stream.get(next)
-            )));
-        }
+        host.check_progress(sim.cycles(), 64 * (memory.tc() as u64 + 64))?;
     }
     progress(commands.len(), commands.len());
-    k.cycles = sim.cycles() - start;
-    k.pipeline_efficiency =
-        if k.cycles > 0 { k.intersection_busy_cycles as f64 / k.cycles as f64 } else { 0.0 };
-    let delta =
-        counters(sim.outputs()).iter().zip(base).map(|(c, b)| c.wrapping_sub(b) as u64).collect::<Vec<_>>();
-    k.patch_loads = delta[0];
+    k = host.counters(&sim.outputs(), sim.cycles(), k);
     k.memory_loads = memory.loads();
-    k.cache_hits = delta[2];
-    k.tests = delta[1];
-    k.passed = delta[3];
-    k.backward = delta[4];
-    k.back_facing = delta[5];
-    k.outside = delta[6];
-    k.near = delta[7];
 
-    // Readout (read and clear).
-    let start = sim.cycles();
-    let hits = read_hits(&mut PeRays(sim), n)?;
-    k.readout_cycles = sim.cycles() - start;
+    let (hits, cycles) = read_out(sim, n)?;
+    k.readout_cycles = cycles;
     Ok((hits, k))
 }
 

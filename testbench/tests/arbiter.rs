@@ -79,7 +79,8 @@ fn run<const N: usize>(
             return Err(fail(c, format!("RTL {got:?} ({valid_count} valid), model {:?}", model.outputs())));
         }
         if let Some(pe) = got.answer {
-            let id = outstanding[pe].pop_front().ok_or_else(|| fail(c, format!("PE {pe} answered unasked")))?;
+            let id =
+                outstanding[pe].pop_front().ok_or_else(|| fail(c, format!("PE {pe} answered unasked")))?;
             if got.patch != patch(id).map(|v| v as u32) {
                 return Err(fail(c, format!("PE {pe} got {:?} for patch {id}", got.patch)));
             }
@@ -138,7 +139,8 @@ fn recorded_run_replays_bit_exactly_under_icarus_and_verilator() -> Result<()> {
     run(&mut drv, seed, 3, [100, 60, 30, 100], QUEUE_DEPTH, 600)?;
     let rec = drv.take_recording().ok_or("recording was on")?;
     for sim in [Simulator::Icarus, Simulator::Verilator] {
-        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(format!("memory_arbiter_{sim:?}"));
+        let dir =
+            PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(format!("memory_arbiter_{sim:?}"));
         let report = rec.replay(drv.uut(), &dir, sim)?;
         println!("{report}");
         assert_eq!(report.cycles, rec.cycles());

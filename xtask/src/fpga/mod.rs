@@ -241,7 +241,8 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     }
     let written = shelling_testbench::export::write(&out.join("verilog"))
         .map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
-    let files = shelling_testbench::export::verilog().map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
+    let files =
+        shelling_testbench::export::verilog().map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
     let verilog_hash = shelling_testbench::export::hash(&files);
     // Each block's own file, hashed alone: what its results are checked against.
     let block_hashes: BTreeMap<String, String> = files

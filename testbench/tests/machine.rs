@@ -1,0 +1,202 @@
+//! A machine of several processing elements on one host memory through the memory arbiter
+//! (`shelling_testbench::machine`): each PE's hits and counts are its source's, whatever the
+//! others do; the PEs work in parallel (a round of N sources takes far less than N single
+//! runs when the memory keeps up) and the host memory bounds them when it does not; rust-hdl's
+//! PEs and the compiled ones give the same cycles. Every failure names its seed.
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use shelling_hdl::arbiter::model::Arbiter;
+use shelling_hdl::pe::ProcessingElement;
+use shelling_testbench::machine::{run_round, RoundCounters, Work};
+use shelling_testbench::memory::HostMemory;
+use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
+use shelling_testbench::verilated::VerilatedPe;
+use shelling_testbench::{Driver, PeSim, Result};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+/// `n` sources of `rays` rays at random points of one scene: each source with `patches`
+/// random patches in front of it, most facing it (the scene is every source's patches), and a
+/// random command stream of sectors and jobs, three jobs in four for its own patches.
+fn sources(
+    seed: u64,
+    n: usize,
+    rays: usize,
+    patches: usize,
+) -> (Vec<[i32; 4]>, Vec<(PeSetup, Vec<Command>)>) {
+    use shelling_hdl::formats::{direction, Quantizer};
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let q = Quantizer { offset: [0.0, 0.0] };
+    let point = |p: [f64; 2]| q.point(|| "point".into(), p).expect("in range");
+    let mut mem: Vec<[i32; 4]> = Vec::new();
+    let mut setups = Vec::new();
+    for _ in 0..n {
+        let o = [rng.random_range(300.0..1700.0), rng.random_range(300.0..1700.0)];
+        let phi: f64 = rng.random_range(0.0..TAU);
+        let dirs: Vec<[i32; 2]> = (0..rays)
+            .map(|i| {
+                let a = phi - FRAC_PI_2 + (i as f64 + 0.5) * PI / rays as f64;
+                direction(|| "ray".into(), [a.cos(), a.sin()]).expect("unit vector")
+            })
+            .collect();
+        setups.push(PeSetup {
+            origin: point(o),
+            normal: direction(|| "normal".into(), [phi.cos(), phi.sin()]).expect("unit"),
+            dirs,
+        });
+        for k in 0..patches {
+            let (r, th): (f64, f64) = (rng.random_range(2.0..250.0), rng.random_range(-1.5..1.5));
+            let c = [o[0] + r * (phi + th).cos(), o[1] + r * (phi + th).sin()];
+            let (len, t): (f64, f64) = (rng.random_range(0.5..80.0), rng.random_range(0.0..TAU));
+            let a = point([c[0] - len * t.cos(), c[1] - len * t.sin()]);
+            let b = point([c[0] + len * t.cos(), c[1] + len * t.sin()]);
+            let oq = point(o);
+            let (ra, rb) = ([a[0] - oq[0], a[1] - oq[1]], [b[0] - oq[0], b[1] - oq[1]]);
+            let facing = (ra[0] as i64 * rb[1] as i64 - ra[1] as i64 * rb[0] as i64) > 0;
+            mem.push(if facing || k % 7 == 0 { [a[0], a[1], b[0], b[1]] } else { [b[0], b[1], a[0], a[1]] });
+        }
+    }
+    let work = setups
+        .into_iter()
+        .enumerate()
+        .map(|(p, setup)| {
+            let mut cmds = Vec::new();
+            let mut s = 0;
+            while s < rays {
+                let e = (s + rng.random_range(16..=96)).min(rays);
+                cmds.push(Command::Sector { first: setup.dirs[s], last: setup.dirs[e - 1] });
+                for _ in 0..48 {
+                    let first = rng.random_range(s..e);
+                    let count = rng.random_range(1..=e - first);
+                    let id = if rng.random_range(0..4) == 0 {
+                        rng.random_range(0..mem.len())
+                    } else {
+                        p * patches + rng.random_range(0..patches)
+                    };
+                    cmds.push(Command::Job { id: id as u16, first: first as u16, count: count as u16 });
+                }
+                s = e;
+            }
+            (setup, cmds)
+        })
+        .collect();
+    (mem, work)
+}
+
+/// One round on `sims` against the model, PE by PE; returns the round's counters.
+fn round<S: PeSim>(
+    sims: &mut [S],
+    seed: u64,
+    mem: &[[i32; 4]],
+    work: &[(PeSetup, Vec<Command>)],
+    tc: u32,
+    cache: CacheConfig,
+) -> Result<RoundCounters> {
+    let mut memory = HostMemory::new(mem.to_vec(), tc)?;
+    let mut arbiter = Arbiter::new(sims.len());
+    let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
+    let (hits, k) = run_round(sims, &mut arbiter, &mut memory, cache, &jobs)?;
+    for (p, (setup, cmds)) in work.iter().enumerate() {
+        let (want, counts) = model(setup, mem, cmds);
+        assert_eq!(hits[p], want, "seed {seed:#x}, T_c {tc}, {cache:?}: PE {p}'s hits against the model");
+        let pe = &k.pes[p];
+        assert_eq!(
+            (pe.patch_loads, pe.passed, pe.tests),
+            (counts.loads, counts.passed, counts.tests),
+            "seed {seed:#x}, T_c {tc}: PE {p}'s loads, passed and tests against the model"
+        );
+        assert!(counts.tests > counts.loads, "seed {seed:#x}: PE {p}'s stream is degenerate: {counts:?}");
+    }
+    let answered: u64 = k.pes.iter().map(|p| p.memory_loads).sum();
+    assert_eq!(answered, k.memory_loads, "seed {seed:#x}: every host answer reached one PE");
+    Ok(k)
+}
+
+#[test]
+fn each_pe_of_a_machine_traces_its_own_source() -> Result<()> {
+    for (seed, n, tc, lines) in
+        [(0x3ac1_00u64, 3usize, 1u32, None), (0x3ac1_01, 2, 4, Some(64)), (0x3ac1_02, 4, 2, None)]
+    {
+        let (mem, work) = sources(seed, n, 96, 120);
+        let mut sims: Vec<Driver<ProcessingElement>> =
+            (0..n).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<_>>()?;
+        let k = round(&mut sims, seed, &mem, &work, tc, CacheConfig { lines })?;
+        println!("seed {seed:#x}: {n} PEs, T_c {tc}: {k:?}");
+    }
+    Ok(())
+}
+
+/// The compiled PEs (Verilator) run the machine cycle for cycle as rust-hdl's.
+#[test]
+fn the_compiled_machine_agrees_with_rust_hdl() -> Result<()> {
+    let seed = 0x3ac1_10;
+    let (mem, work) = sources(seed, 3, 64, 80);
+    let mut rtl: Vec<Driver<ProcessingElement>> =
+        (0..3).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<_>>()?;
+    let mut fast: Vec<VerilatedPe> = (0..3).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let a = round(&mut rtl, seed, &mem, &work, 2, CacheConfig::default())?;
+    let b = round(&mut fast, seed, &mem, &work, 2, CacheConfig::default())?;
+    assert_eq!(a, b, "seed {seed:#x}: rust-hdl's machine, then the compiled one");
+    Ok(())
+}
+
+/// With a fast memory the PEs overlap: a round of N sources takes much less than the N
+/// sources one after another on one PE. With a slow one (T_c 16, no cache) the host memory is
+/// the bound: the round's commands take at least T_c cycles a load.
+#[test]
+fn pes_work_in_parallel_until_the_host_memory_bounds_them() -> Result<()> {
+    let seed = 0x3ac1_20;
+    let n = 4;
+    let (mem, work) = sources(seed, n, 128, 150);
+    for (tc, parallel) in [(1u32, true), (16, false)] {
+        let mut fast: Vec<VerilatedPe> = (0..n).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+        let k = round(&mut fast, seed, &mem, &work, tc, CacheConfig::default())?;
+        let mut alone = 0;
+        for (setup, cmds) in &work {
+            let mut pe = VerilatedPe::new()?;
+            flush_cache(&mut pe)?;
+            let (_, c) = run(
+                &mut pe,
+                &mut HostMemory::new(mem.clone(), tc)?,
+                setup,
+                CacheConfig::default(),
+                cmds,
+                |_, _| {},
+            )?;
+            alone += c.cycles;
+        }
+        println!("T_c {tc}: {n} PEs {} command cycles, one PE after another {alone}", k.command_cycles);
+        if parallel {
+            assert!(
+                k.command_cycles * 2 < alone,
+                "seed {seed:#x}, T_c {tc}: {n} PEs took {} cycles, one PE {alone} for the same sources",
+                k.command_cycles
+            );
+        } else {
+            assert!(
+                k.command_cycles >= k.memory_loads * tc as u64,
+                "seed {seed:#x}, T_c {tc}: {} loads in {} cycles",
+                k.memory_loads,
+                k.command_cycles
+            );
+            assert!(
+                k.command_cycles * 10 < alone * 11,
+                "T_c {tc}: the memory-bound machine no slower than one PE"
+            );
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn a_machine_refuses_more_pes_than_the_arbiter_serves() -> Result<()> {
+    let (mem, work) = sources(7, 1, 8, 4);
+    assert!(!work[0].1.is_empty());
+    let mut sims: Vec<VerilatedPe> = (0..9).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let mut memory = HostMemory::new(mem, 1)?;
+    let jobs = [Work { setup: &work[0].0, commands: &work[0].1 }];
+    let err =
+        run_round(&mut sims, &mut Arbiter::new(8), &mut memory, CacheConfig::default(), &jobs).unwrap_err();
+    assert!(err.message().contains("1 to 8 PEs"), "{}", err.message());
+    Ok(())
+}
