@@ -185,6 +185,37 @@ pub fn run_on(
     Ok(result)
 }
 
+/// Checks a PE's hits and counters after a source against the bit-true model's (`want`,
+/// `model`): every ray's hit, and the loads (from the host or the cache), passed patches and
+/// tests. The error names the first ray or count that differs.
+pub(crate) fn check_against_model(
+    hits: &[Option<Nearest>],
+    hardware: &PeCounters,
+    want: &[Option<Nearest>],
+    model: &ModelCounts,
+) -> Result<(), CosimError> {
+    if let Some(r) = (0..hits.len()).find(|&r| hits[r] != want[r]) {
+        return Err(CosimError::Mismatch(format!(
+            "ray {r}: PE {:?}, model {:?} ({} rays differ)",
+            hits[r],
+            want[r],
+            (0..hits.len()).filter(|&r| hits[r] != want[r]).count()
+        )));
+    }
+    let pairs = [
+        ("patch loads", hardware.patch_loads, model.loads),
+        ("memory loads", hardware.memory_loads + hardware.cache_hits, model.loads),
+        ("patches passed", hardware.passed, model.passed),
+        ("tests", hardware.tests, model.tests),
+    ];
+    for (what, hw, m) in pairs {
+        if hw != m {
+            return Err(CosimError::Mismatch(format!("{what}: PE {hw}, model {m}")));
+        }
+    }
+    Ok(())
+}
+
 /// Checks a VCD window `from..to` of the command line (cycles from power-up): non-empty and at
 /// most [`MAX_VCD_WINDOW`] cycles long. ([`run_on`] takes any non-empty window, `to` =
 /// `u64::MAX` for the whole run; whether it meets the run is known only after it.)
@@ -215,24 +246,6 @@ pub fn run_sim<S: PeSim>(
     let cache = CacheConfig { lines: config.cache };
     cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
     let (hits, hardware) = pe::run(sim_pe, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
-    if let Some(r) = (0..hits.len()).find(|&r| hits[r] != want[r]) {
-        return Err(CosimError::Mismatch(format!(
-            "ray {r}: PE {:?}, model {:?} ({} rays differ)",
-            hits[r],
-            want[r],
-            (0..hits.len()).filter(|&r| hits[r] != want[r]).count()
-        )));
-    }
-    let pairs = [
-        ("patch loads", hardware.patch_loads, model.loads),
-        ("memory loads", hardware.memory_loads + hardware.cache_hits, model.loads),
-        ("patches passed", hardware.passed, model.passed),
-        ("tests", hardware.tests, model.tests),
-    ];
-    for (what, hw, m) in pairs {
-        if hw != m {
-            return Err(CosimError::Mismatch(format!("{what}: PE {hw}, model {m}")));
-        }
-    }
+    check_against_model(&hits, &hardware, &want, &model)?;
     Ok(Cosim { hits, hardware, model })
 }

@@ -20,6 +20,7 @@ pub mod figures;
 pub mod geom;
 pub mod grid;
 pub mod limits;
+pub mod machine;
 pub mod model;
 pub mod radiosity;
 pub mod rays;

@@ -10,6 +10,7 @@ use shelling::figures::{self, FigureOptions};
 use shelling::geom::Vec2;
 use shelling::grid::GridParams;
 use shelling::limits::{self, check_range, check_range_for};
+use shelling::machine;
 use shelling::rays::{Bundle, RaySet, Source};
 use shelling::run::{GriddedScene, TraceJson};
 use shelling::scene::{self, RoomSpec, Scene};
@@ -58,6 +59,10 @@ enum Command {
     /// scheduler, every hit checked against the bit-true model and the f64 golden model, with
     /// hardware cycle counts.
     Cosim(CosimArgs),
+    /// Co-simulate the parallel machine: a scene's sources dealt to N processing elements that
+    /// share one host memory through the memory arbiter, cycle-accurate, every PE's hits
+    /// checked against the bit-true model of its source.
+    Machine(MachineArgs),
     /// Form factors F_ij of a scene's patches from the tracers' bundles: one row (--source), a
     /// slice of the matrix into a file (--rows), or the merge of slices (--merge).
     FormFactors(radiosity_cli::FormFactorsArgs),
@@ -382,6 +387,48 @@ struct CosimArgs {
     /// where it is installed and no VCD is asked for. All give the same cycles.
     #[arg(long, value_enum, default_value_t = Engine::Auto)]
     engine: Engine,
+    #[command(flatten)]
+    tune: TuneArgs,
+}
+
+#[derive(Args)]
+struct MachineArgs {
+    /// Scene file: JSON segments (SCENES.md).
+    #[arg(long)]
+    scene: PathBuf,
+    /// Processing elements, 1 to 8 (the memory arbiter's).
+    #[arg(long, default_value_t = 4, allow_negative_numbers = true)]
+    pes: usize,
+    /// First source patch.
+    #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
+    first: usize,
+    /// Source patches from --first on (default: every one to the scene's last).
+    #[arg(long, allow_negative_numbers = true)]
+    count: Option<usize>,
+    /// How the sources, in Z-order of their midpoints, are dealt to the PEs.
+    #[arg(long, value_enum, default_value_t = machine::Deal::Blocks)]
+    deal: machine::Deal,
+    /// Technique: conventional, stochastic or deterministic.
+    #[arg(long, value_enum, default_value_t = Method::Stochastic)]
+    method: Method,
+    /// Cycles the shared host memory takes to deliver one patch (T_c), 1 to 1024.
+    #[arg(long, default_value_t = 16)]
+    tc: u32,
+    /// Give each PE a patch cache of this many patches (a power of two up to 4096).
+    #[arg(long, value_name = "PATCHES")]
+    cache: Option<u32>,
+    /// Rays per source over its half-circle: 1 to 1024 (the processing element's ray memory).
+    #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
+    rays: usize,
+    /// Ray set.
+    #[arg(long, value_enum, default_value_t = RaySet::Angle)]
+    ray_set: RaySet,
+    /// The PEs' simulator (auto: Verilator where installed).
+    #[arg(long, value_enum, default_value_t = Engine::Auto)]
+    engine: Engine,
+    /// Print the run's counts as JSON.
+    #[arg(long)]
+    json: bool,
     #[command(flatten)]
     tune: TuneArgs,
 }
@@ -834,6 +881,7 @@ fn run(cli: Cli, figures_given: &[&'static str]) -> Result<()> {
         Command::Scene { command: SceneCommand::Gen(a) } => scene_gen(a),
         Command::Trace(a) => trace_cmd(a),
         Command::Cosim(a) => cosim_cmd(a),
+        Command::Machine(a) => machine_cmd(a),
         Command::FormFactors(a) => radiosity_cli::form_factors_cmd(a),
         Command::Radiosity(a) => radiosity_cli::radiosity_cmd(a),
         Command::ExportVerilog(a) => {
@@ -969,6 +1017,102 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
         h.passed,
         h.backward + h.back_facing + h.outside + h.near,
         h.tests
+    );
+    out.flush()
+}
+
+fn machine_cmd(a: MachineArgs) -> Result<()> {
+    let m = anyhow::Error::msg;
+    if a.method == Method::Brute {
+        bail!("--method brute has no hardware mapping: use conventional, stochastic or deterministic");
+    }
+    check_range_for("--pes", a.pes, 1, shelling_hdl::arbiter::MAX_PES, "(the memory arbiter's ports)")
+        .map_err(m)?;
+    check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(m)?;
+    if let Some(c) = a.cache {
+        limits::check_cache("--cache", c).map_err(m)?;
+    }
+    check_range_for("--rays", a.rays, 1, limits::PE_RAY_MEMORY, "(the processing element's ray memory)")
+        .map_err(m)?;
+    if d3_cli::is_3d(&a.scene)? {
+        bail!("--scene {}: an OBJ scene is 3D, and the processing element is 2D", a.scene.display());
+    }
+    let params = a.tune.shells_2d()?;
+    let scene = Scene::load(&a.scene)?;
+    let n = scene.segments.len();
+    check_range_for("--first", a.first, 0, n - 1, &format!("(the scene has {n} segments)")).map_err(m)?;
+    let count = a.count.unwrap_or(n - a.first);
+    check_range_for("--count", count, 1, n - a.first, &format!("(--first {} of {n} segments)", a.first))
+        .map_err(m)?;
+    let grid = a.tune.grid(n)?;
+    let prepared = GriddedScene::new(scene, grid);
+    let ids: Vec<usize> = (a.first..a.first + count).collect();
+    let order = machine::spatial_order(&prepared.scene.segments, &ids);
+    let schedules = order
+        .iter()
+        .map(|&k| {
+            let bundle = prepared.patch_bundle(k, a.ray_set, a.rays)?;
+            let (lo, hi) = prepared.grid.extent();
+            let far = [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
+                .iter()
+                .fold(0.0f64, |m, c| m.max((*c - bundle.source.origin).length()));
+            a.tune.check_depth((hi - lo).max_element(), far)?;
+            prepared.schedule(a.method, &bundle, &params).with_context(|| format!("source patch {k}"))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let config = machine::MachineConfig {
+        pes: a.pes,
+        tc: a.tc,
+        cache: a.cache,
+        deal: a.deal,
+        engine: a.engine.resolve(false),
+    };
+    let rounds = count.div_ceil(a.pes) as u64;
+    let bar = progress_bar(rounds, "{bar:40} {pos}/{len} rounds {elapsed}");
+    let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));
+    bar.finish_and_clear();
+    let run = run?;
+    let mut out = Out::new();
+    if a.json {
+        say!(out, "{}", serde_json::to_string_pretty(&run).context("serialising the machine run")?);
+        return out.flush();
+    }
+    say!(
+        out,
+        "{} sources of {} rays, {} on {} PEs ({} simulation), T_c = {}, caches {}, dealt in {} rounds ({}): every hit equals the bit-true model's",
+        run.sources,
+        a.rays,
+        a.method,
+        a.pes,
+        config.engine.name(),
+        a.tc,
+        a.cache.map_or("off".to_string(), |c| format!("of {c} patches")),
+        run.rounds,
+        match a.deal {
+            machine::Deal::Blocks => "blocks",
+            machine::Deal::Interleaved => "interleaved",
+        }
+    );
+    say!(
+        out,
+        "cycles {}  (setup {}, commands {}, readout {})  per source {:.0}  rays per cycle {:.3}",
+        run.cycles,
+        run.setup_cycles,
+        run.command_cycles,
+        run.readout_cycles,
+        run.cycles as f64 / run.sources as f64,
+        run.rays as f64 / run.cycles as f64
+    );
+    say!(
+        out,
+        "host memory: {} loads, busy {} of {} command cycles ({:.1}%)  cache hits {} of {} patch loads  tests {}",
+        run.memory_loads,
+        run.memory_busy_cycles,
+        run.command_cycles,
+        100.0 * run.memory_utilisation,
+        run.cache_hits,
+        run.patch_loads,
+        run.tests
     );
     out.flush()
 }

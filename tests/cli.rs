@@ -453,7 +453,7 @@ fn cli_help_mentions_every_option() {
         }
     }
     let top = ok(&["--help"]);
-    for c in ["demo", "scene", "trace", "figures", "cosim", "agreement", "export-verilog"] {
+    for c in ["demo", "scene", "trace", "figures", "cosim", "machine", "agreement", "export-verilog"] {
         assert!(top.contains(c), "--help does not list {c}:\n{top}");
     }
 }
@@ -680,6 +680,73 @@ fn cli_cosim_rejects_bad_options() {
     );
     fails(&with(&["--engine", "verilator", "--vcd", "x.vcd"]), &["--vcd", "--engine rust-hdl"]);
     fails(&with(&["--engine", "icarus"]), &["icarus", "rust-hdl", "verilator"]);
+}
+
+// ----- machine -----
+
+/// The machine's JSON: sources, rounds and counts consistent with the options; more PEs take
+/// fewer cycles for the same sources and the same tests; rust-hdl's PEs and the compiled ones
+/// the same cycles.
+#[test]
+fn cli_machine_runs_sources_on_several_pes() {
+    let dir = TempDir::new("machine");
+    let scene = gen_scene(&dir, "s.json", 200, 32.0, 6);
+    let run = |pes: &str, engine: &str, deal: &str| {
+        let args = [
+            "machine",
+            "--scene",
+            path_arg(&scene),
+            "--pes",
+            pes,
+            "--first",
+            "10",
+            "--count",
+            "6",
+            "--rays",
+            "64",
+            "--tc",
+            "2",
+            "--cache",
+            "64",
+            "--deal",
+            deal,
+            "--engine",
+            engine,
+            "--json",
+        ];
+        parse_json(&ok(&args), "machine")
+    };
+    let one = run("1", "verilator", "blocks");
+    let three = run("3", "verilator", "blocks");
+    assert_eq!((one["sources"].as_u64(), one["rounds"].as_u64()), (Some(6), Some(6)));
+    assert_eq!((three["sources"].as_u64(), three["rounds"].as_u64()), (Some(6), Some(2)));
+    assert_eq!(one["rays"].as_u64(), Some(6 * 64));
+    assert_eq!(one["tests"], three["tests"], "the same sources, the same ray-patch tests");
+    assert!(one["tests"].as_u64().unwrap() > 0);
+    let cycles = |v: &Value| v["cycles"].as_u64().unwrap();
+    assert!(cycles(&three) * 3 < cycles(&one) * 2, "3 PEs {} cycles, 1 PE {}", cycles(&three), cycles(&one));
+    assert_eq!(run("3", "rust-hdl", "blocks"), three, "rust-hdl's PEs, then the compiled ones");
+    let text = ok(&["machine", "--scene", path_arg(&scene), "--pes", "2", "--count", "3", "--rays", "32"]);
+    assert!(text.contains("every hit equals the bit-true model's") && text.contains("host memory"), "{text}");
+}
+
+#[test]
+fn cli_machine_rejects_bad_options() {
+    let dir = TempDir::new("machine-bad");
+    let scene = gen_scene(&dir, "s.json", 100, 16.0, 5);
+    let base = ["machine", "--scene", path_arg(&scene)];
+    let with =
+        |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
+    fails(&with(&["--pes", "9"]), &["--pes", "1 and 8", "9"]);
+    fails(&with(&["--pes", "0"]), &["--pes", "0"]);
+    fails(&with(&["--count", "0"]), &["--count", "0"]);
+    fails(&with(&["--first", "99", "--count", "2"]), &["--count", "between 1 and 1", "2"]);
+    fails(&with(&["--first", "100"]), &["--first", "100", "100 segments"]);
+    fails(&with(&["--method", "brute"]), &["brute", "no hardware mapping"]);
+    fails(&with(&["--cache", "1000"]), &["power of two", "1000"]);
+    fails(&with(&["--tc", "0"]), &["--tc", "0"]);
+    fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
+    fails(&with(&["--deal", "random"]), &["random", "blocks", "interleaved"]);
 }
 
 // ----- fixed point, agreement, Verilog export -----
