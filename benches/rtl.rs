@@ -4,14 +4,17 @@
 //! then the whole processing element co-simulating one source of the paper's workload (1000
 //! segments of length 32, R = 1024, stochastic shelling, T_c = 16) on rust-hdl's simulation and
 //! on the compiled one (its exported Verilog built by Verilator), beside the bit-true execution
-//! of the same work stream.
+//! of the same work stream; then the parallel machine of eight compiled PEs on one host memory
+//! (`shelling::machine`, 16 sources of the same scene, `T_c` = 16, 256-patch caches): machine
+//! cycles per second, beside one compiled PE's cycles per second on the same sources in the
+//! same run.
 //!
 //! Workload: bundles of 64 rays, 400 patches each with arbitrary 18-bit fields, each tested
 //! against all 64 rays (25 600 tests per bundle, one per clock). Median of interleaved rounds.
 //!
 //! Run: `cargo bench --bench rtl` (`-- --rounds N` for more rounds, `-- --plain` for the
-//! intersection unit's no-VCD simulation alone and `-- --pe` for the processing element alone,
-//! e.g. under a profiler).
+//! intersection unit's no-VCD simulation alone, `-- --pe` for the processing element alone and
+//! `-- --machine` for the machine alone, e.g. under a profiler).
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -38,6 +41,11 @@ fn main() {
     // `--pe`: only the processing element (for profiling it alone).
     if std::env::args().any(|a| a == "--pe") {
         processing_element(rounds);
+        return;
+    }
+    // `--machine`: only the parallel machine.
+    if std::env::args().any(|a| a == "--machine") {
+        machine(rounds);
         return;
     }
     let mut rng = ChaCha8Rng::seed_from_u64(1);
@@ -97,6 +105,52 @@ fn main() {
     println!("  {:<32} {:>12.0} tests/s   (RTL is {:.4}x of it)", "bit-true model (baseline)", m, p / m);
     println!("  goal: >= 500000 cycles/s without VCD: {}", if p >= 5e5 { "met" } else { "NOT met" });
     processing_element(rounds);
+    machine(rounds);
+}
+
+/// The machine of eight compiled PEs on 16 sources of the paper's workload: machine cycles per
+/// second, and one compiled PE's on the same 16 sources (the machine's baseline, same run).
+fn machine(rounds: usize) {
+    use shelling::cosim::Engine;
+    use shelling::grid::GridParams;
+    use shelling::machine::{self, Deal, MachineConfig};
+    use shelling::rays::RaySet;
+    use shelling::run::GriddedScene;
+    use shelling::scene::{self, PAPER_WORLD};
+    use shelling::trace::{Method, ShellParams};
+    let scene = scene::generate(1000, 32.0, 7, PAPER_WORLD).expect("scene");
+    let prepared = GriddedScene::new(scene, GridParams::default());
+    let ids: Vec<usize> = (0..16).map(|k| k * 61).collect();
+    let schedules: Vec<_> = machine::spatial_order(&prepared.scene.segments, &ids)
+        .into_iter()
+        .map(|k| {
+            let bundle = prepared.patch_bundle(k, RaySet::Angle, 1024).expect("source");
+            prepared.schedule(Method::Stochastic, &bundle, &ShellParams::default()).expect("fits")
+        })
+        .collect();
+    let config =
+        |pes| MachineConfig { pes, tc: 16, cache: Some(256), deal: Deal::Blocks, engine: Engine::Verilator };
+    let (mut rate8, mut rate1, mut cycles) = (vec![], vec![], (0, 0));
+    for _ in 0..rounds {
+        let t = Instant::now();
+        let run8 = machine::run(&schedules, &config(8), |_, _| {}).expect("the machine co-simulates");
+        rate8.push(run8.cycles as f64 / t.elapsed().as_secs_f64());
+        let t = Instant::now();
+        let run1 = machine::run(&schedules, &config(1), |_, _| {}).expect("one PE co-simulates");
+        rate1.push(run1.cycles as f64 / t.elapsed().as_secs_f64());
+        cycles = (run8.cycles, run1.cycles);
+    }
+    let (r8, r1) = (median(rate8), median(rate1));
+    println!("machine, 16 sources (L = 32, R = 1024, stochastic, T_c = 16, 256-patch caches), {rounds} rounds, median:");
+    println!("  {:<32} {:>12.0} machine cycles/s ({} cycles)", "8 compiled PEs", r8, cycles.0);
+    println!(
+        "  {:<32} {:>12.0} cycles/s ({} cycles; the machine {:.2}x of it)",
+        "1 compiled PE (baseline)",
+        r1,
+        cycles.1,
+        r8 / r1
+    );
+    println!("  goal: >= 150000 machine cycles/s at 8 PEs: {}", if r8 >= 1.5e5 { "met" } else { "NOT met" });
 }
 
 /// The PE on one source of the paper's workload: simulated cycles per second and wall time, on

@@ -185,8 +185,11 @@ pub mod model {
             requests: &[Option<u16>],
             answer: Option<[u32; 4]>,
         ) -> Result<Option<usize>, String> {
-            let valid: Vec<bool> = self.queues.iter().map(|q| q.control.valid).collect();
-            let grant = self.rr.step(&valid);
+            let mut valid = [false; super::MAX_PES];
+            for (v, q) in valid.iter_mut().zip(&self.queues) {
+                *v = q.control.valid;
+            }
+            let grant = self.rr.step(&valid[..self.queues.len()]);
             if answer.is_some() && self.route.head().is_none() {
                 return Err("a host answer with no request at the host".into());
             }

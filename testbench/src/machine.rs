@@ -92,9 +92,9 @@ pub fn run_round<S: PeSim>(
     let mut answered = vec![0u64; n];
     let mut now = 0u64;
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
+    let mut requests = vec![None; n];
     loop {
         let a = arbiter.outputs();
-        let mut requests = vec![None; n];
         for (p, sim) in sims.iter_mut().enumerate() {
             let cmd = hosts.get(p).and_then(|h| h.command());
             sim.drive(|i| {
