@@ -44,7 +44,7 @@ pub struct RoundCounters {
     /// From the first command to every PE idle with every request answered.
     pub command_cycles: u64,
     pub readout_cycles: u64,
-    /// Patches the host memory delivered.
+    /// Patches the host memory delivered in the round.
     pub memory_loads: u64,
     /// Each PE's counters (its `cycles` from the round's first command to its own last
     /// command done; `memory_loads` its share of the host's answers).
@@ -92,6 +92,7 @@ pub fn run_round<S: PeSim>(
     let mut answered = vec![0u64; n];
     let mut now = 0u64;
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
+    let loads_before = memory.loads();
     let mut requests = vec![None; n];
     loop {
         let a = arbiter.outputs();
@@ -127,7 +128,10 @@ pub fn run_round<S: PeSim>(
                 done[p] = Some(now);
             }
             all &= done[p].is_some();
-            h.check_progress(now, limit).map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
+            // A PE done waits for the others without progress of its own.
+            if done[p].is_none() {
+                h.check_progress(now, limit).map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
+            }
         }
         if all
             && answer.is_none()
@@ -139,7 +143,7 @@ pub fn run_round<S: PeSim>(
         }
     }
     k.command_cycles = now;
-    k.memory_loads = memory.loads();
+    k.memory_loads = memory.loads() - loads_before;
     for (p, h) in hosts.iter().enumerate() {
         let end = done[p].unwrap_or(now);
         k.pes[p] = h.counters(&sims[p].outputs(), end, k.pes[p].clone());

@@ -200,3 +200,32 @@ fn a_machine_refuses_more_pes_than_the_arbiter_serves() -> Result<()> {
     assert!(err.message().contains("1 to 8 PEs"), "{}", err.message());
     Ok(())
 }
+
+/// A PE whose source ends early waits for the round's longest without being taken for stuck,
+/// and a second round on the same memory counts only its own loads.
+#[test]
+fn a_round_waits_for_its_longest_source() -> Result<()> {
+    let seed = 0x3ac1_30;
+    let (mem, mut work) = sources(seed, 2, 400, 200);
+    work[0].1.truncate(2);
+    let tc = 64;
+    let mut sims: Vec<VerilatedPe> = (0..2).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let mut memory = HostMemory::new(mem.clone(), tc)?;
+    let mut arbiter = Arbiter::new(2);
+    for round in 0..2 {
+        let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
+        let (hits, k) = run_round(&mut sims, &mut arbiter, &mut memory, CacheConfig::default(), &jobs)?;
+        for (p, (setup, cmds)) in work.iter().enumerate() {
+            assert_eq!(hits[p], model(setup, &mem, cmds).0, "seed {seed:#x}, round {round}: PE {p}'s hits");
+        }
+        let answered: u64 = k.pes.iter().map(|p| p.memory_loads).sum();
+        assert_eq!(answered, k.memory_loads, "seed {seed:#x}, round {round}: the round's loads");
+        assert!(
+            k.command_cycles > 64 * (tc as u64 * 2 + 64) + k.pes[0].cycles,
+            "seed {seed:#x}: PE 0 waited only {} cycles after its {}",
+            k.command_cycles - k.pes[0].cycles,
+            k.pes[0].cycles
+        );
+    }
+    Ok(())
+}
