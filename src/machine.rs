@@ -16,13 +16,11 @@ use crate::limits::{check_range, MAX_TC};
 use crate::run::Scheduled;
 use crate::workstream::commands;
 use serde::Serialize;
-use shelling_hdl::arbiter::model::Arbiter;
 use shelling_hdl::arbiter::MAX_PES;
-use shelling_testbench::machine::{run_round, Work};
+use shelling_testbench::machine::{run_round, Composed, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, rust_hdl_pe, CacheConfig, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
-use shelling_testbench::PeSim;
 
 /// How the sources, in their order, are dealt to the PEs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
@@ -127,16 +125,15 @@ pub fn run(
     check_range("--tc", config.tc, 1, MAX_TC).map_err(CosimError::Config)?;
     match config.engine {
         Engine::Verilator => {
-            let mut sims =
+            let sims =
                 (0..config.pes).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>, _>>().map_err(|e| {
                     CosimError::Sim(format!("{}; the rust-hdl engine needs no Verilator", e.message()))
                 })?;
-            run_on(&mut sims, schedules, config, progress)
+            run_on(&mut Composed::new(sims).map_err(sim)?, schedules, config, progress)
         }
         _ => {
-            let mut sims =
-                (0..config.pes).map(|_| rust_hdl_pe()).collect::<Result<Vec<_>, _>>().map_err(sim)?;
-            run_on(&mut sims, schedules, config, progress)
+            let sims = (0..config.pes).map(|_| rust_hdl_pe()).collect::<Result<Vec<_>, _>>().map_err(sim)?;
+            run_on(&mut Composed::new(sims).map_err(sim)?, schedules, config, progress)
         }
     }
 }
@@ -145,8 +142,8 @@ fn sim(e: shelling_testbench::Error) -> CosimError {
     CosimError::Sim(e.message().to_string())
 }
 
-fn run_on<S: PeSim>(
-    sims: &mut [S],
+fn run_on<M: MachineSim>(
+    machine: &mut M,
     schedules: &[Scheduled],
     config: &MachineConfig,
     mut progress: impl FnMut(usize, usize),
@@ -168,7 +165,6 @@ fn run_on<S: PeSim>(
         sources.push((setup, cmds));
     }
     let mut memory = HostMemory::new(patches.clone(), config.tc).map_err(sim)?;
-    let mut arbiter = Arbiter::new(config.pes);
     let rounds = deal(sources.len(), config.pes, config.deal);
     let mut m = MachineRun {
         pes: config.pes,
@@ -181,7 +177,7 @@ fn run_on<S: PeSim>(
         let given: Vec<usize> = round.iter().flatten().copied().collect();
         let work: Vec<Work> =
             given.iter().map(|&i| Work { setup: &sources[i].0, commands: &sources[i].1 }).collect();
-        let (hits, k) = run_round(&mut sims[..], &mut arbiter, &mut memory, cache, &work).map_err(sim)?;
+        let (hits, k) = run_round(machine, &mut memory, cache, &work).map_err(sim)?;
         for (p, &i) in given.iter().enumerate() {
             let (setup, cmds) = &sources[i];
             let (want, model) = pe::model(setup, &patches, cmds);

@@ -9,6 +9,7 @@ pub mod cache;
 pub mod formats;
 pub mod intersection;
 pub mod loader;
+pub mod machine;
 pub mod pe;
 pub mod prim;
 pub mod queue;
@@ -41,7 +42,7 @@ mod tests {
         match module {
             "formats" => false,
             "prim" => used == "formats",
-            "pe" => true,
+            "pe" | "machine" => true,
             block => used == "formats" || used == "prim" || used == block,
         }
     }

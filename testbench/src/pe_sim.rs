@@ -19,6 +19,7 @@ use crate::{Driver, Error, Result};
 use rust_hdl::prelude::*;
 use shelling_hdl::formats::Nearest;
 use shelling_hdl::formats::{from_bits, to_bits};
+use shelling_hdl::machine::Machine;
 use shelling_hdl::pe::ProcessingElement;
 
 /// A port's value as a Rust value: `bool`, an unsigned id or address, or a two's-complement
@@ -99,8 +100,8 @@ impl<const N: usize> Wire for Bits<N> {
 /// Defines [`PeInputs`], [`PeOutputs`] and the port table from one list.
 macro_rules! pe_ports {
     (
-        inputs { $($i:ident: $it:ty = $iw:literal),+ $(,)? }
-        outputs { $($o:ident: $ot:ty = $ow:literal),+ $(,)? }
+        inputs { $($i:ident: $it:ty = $iw:literal @ $ik:ident),+ $(,)? }
+        outputs { $($o:ident: $ot:ty = $ow:literal @ $ok:ident),+ $(,)? }
     ) => {
         /// The processing element's inputs (the clock aside), as the host drives them. They
         /// hold from one cycle to the next until changed.
@@ -133,6 +134,17 @@ macro_rules! pe_ports {
             fn write(&self, u: &mut ProcessingElement) {
                 $(u.$i.next = Wire::set_raw(self.$i.to_raw($iw));)+
             }
+
+            /// PE `p`'s inputs as the machine's ports hold them (the memory port's, inside the
+            /// machine, at their defaults).
+            pub(crate) fn read_machine<const N: usize>(m: &Machine<N>, p: usize) -> Self {
+                Self { $($i: machine_port!(read $ik, m, p, $i, $iw),)+ }
+            }
+
+            /// Sets the machine's ports of PE `p` (and the shared ones) to these inputs.
+            pub(crate) fn write_machine<const N: usize>(&self, m: &mut Machine<N>, p: usize) {
+                $(machine_port!(write $ik, m, p, $i, self.$i.to_raw($iw));)+
+            }
         }
 
         impl PeOutputs {
@@ -145,58 +157,87 @@ macro_rules! pe_ports {
             fn read(u: &ProcessingElement) -> Self {
                 Self { $($o: PortValue::from_raw(u.$o.val().raw(), $ow),)+ }
             }
+
+            /// PE `p`'s outputs at the machine's ports (its memory port's, inside the machine,
+            /// at their defaults).
+            pub(crate) fn read_machine<const N: usize>(m: &Machine<N>, p: usize) -> Self {
+                Self { $($o: machine_port!(read $ok, m, p, $o, $ow),)+ }
+            }
         }
+    };
+}
+
+/// A PE port at the machine's ports ([`Machine`]): `pe`, PE `p`'s own array entry; `shared`,
+/// one port of every PE; `memory`, inside the machine (to the arbiter).
+macro_rules! machine_port {
+    (read pe, $m:ident, $p:ident, $n:ident, $w:literal) => {
+        PortValue::from_raw($m.$n[$p].val().raw(), $w)
+    };
+    (read shared, $m:ident, $p:ident, $n:ident, $w:literal) => {
+        PortValue::from_raw($m.$n.val().raw(), $w)
+    };
+    (read memory, $m:ident, $p:ident, $n:ident, $w:literal) => {
+        Default::default()
+    };
+    (write pe, $m:ident, $p:ident, $n:ident, $raw:expr) => {
+        $m.$n[$p].next = Wire::set_raw($raw)
+    };
+    (write shared, $m:ident, $p:ident, $n:ident, $raw:expr) => {
+        $m.$n.next = Wire::set_raw($raw)
+    };
+    (write memory, $m:ident, $p:ident, $n:ident, $raw:expr) => {
+        ()
     };
 }
 
 pe_ports! {
     inputs {
-        dir_we: bool = 1,
-        dir_addr: u16 = 10,
-        dir_x: i32 = 18,
-        dir_y: i32 = 18,
-        origin_x: i32 = 17,
-        origin_y: i32 = 17,
-        normal_x: i32 = 18,
-        normal_y: i32 = 18,
-        first_x: i32 = 18,
-        first_y: i32 = 18,
-        last_x: i32 = 18,
-        last_y: i32 = 18,
-        cmd_valid: bool = 1,
-        cmd_retire: bool = 1,
-        cmd_sector: bool = 1,
-        cmd_id: u16 = 16,
-        cmd_first: u16 = 10,
-        cmd_count: u16 = 11,
-        cfg_cache_enable: bool = 1,
-        cfg_cache_mask: u16 = 12,
-        cfg_cache_flush: bool = 1,
-        mem_valid: bool = 1,
-        mem_ax: i32 = 17,
-        mem_ay: i32 = 17,
-        mem_bx: i32 = 17,
-        mem_by: i32 = 17,
-        res_re: bool = 1,
-        res_addr: u16 = 10,
+        dir_we: bool = 1 @ pe,
+        dir_addr: u16 = 10 @ pe,
+        dir_x: i32 = 18 @ pe,
+        dir_y: i32 = 18 @ pe,
+        origin_x: i32 = 17 @ pe,
+        origin_y: i32 = 17 @ pe,
+        normal_x: i32 = 18 @ pe,
+        normal_y: i32 = 18 @ pe,
+        first_x: i32 = 18 @ pe,
+        first_y: i32 = 18 @ pe,
+        last_x: i32 = 18 @ pe,
+        last_y: i32 = 18 @ pe,
+        cmd_valid: bool = 1 @ pe,
+        cmd_retire: bool = 1 @ pe,
+        cmd_sector: bool = 1 @ pe,
+        cmd_id: u16 = 16 @ pe,
+        cmd_first: u16 = 10 @ pe,
+        cmd_count: u16 = 11 @ pe,
+        cfg_cache_enable: bool = 1 @ shared,
+        cfg_cache_mask: u16 = 12 @ shared,
+        cfg_cache_flush: bool = 1 @ shared,
+        mem_valid: bool = 1 @ memory,
+        mem_ax: i32 = 17 @ memory,
+        mem_ay: i32 = 17 @ memory,
+        mem_bx: i32 = 17 @ memory,
+        mem_by: i32 = 17 @ memory,
+        res_re: bool = 1 @ pe,
+        res_addr: u16 = 10 @ pe,
     }
     outputs {
-        cmd_ready: bool = 1,
-        mem_req: bool = 1,
-        mem_addr: u16 = 16,
-        res_hit: bool = 1,
-        res_id: u16 = 16,
-        res_key: u32 = 32,
-        busy: bool = 1,
-        loads: u32 = 32,
-        cache_hits: u32 = 32,
-        cache_misses: u32 = 32,
-        passed: u32 = 32,
-        backward: u32 = 32,
-        back_facing: u32 = 32,
-        outside: u32 = 32,
-        near: u32 = 32,
-        tests: u32 = 32,
+        cmd_ready: bool = 1 @ pe,
+        mem_req: bool = 1 @ memory,
+        mem_addr: u16 = 16 @ memory,
+        res_hit: bool = 1 @ pe,
+        res_id: u16 = 16 @ pe,
+        res_key: u32 = 32 @ pe,
+        busy: bool = 1 @ pe,
+        loads: u32 = 32 @ pe,
+        cache_hits: u32 = 32 @ pe,
+        cache_misses: u32 = 32 @ pe,
+        passed: u32 = 32 @ pe,
+        backward: u32 = 32 @ pe,
+        back_facing: u32 = 32 @ pe,
+        outside: u32 = 32 @ pe,
+        near: u32 = 32 @ pe,
+        tests: u32 = 32 @ pe,
     }
 }
 

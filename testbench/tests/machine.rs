@@ -6,13 +6,13 @@
 
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use shelling_hdl::arbiter::model::Arbiter;
+use shelling_hdl::machine::Machine;
 use shelling_hdl::pe::ProcessingElement;
-use shelling_testbench::machine::{run_round, RoundCounters, Work};
+use shelling_testbench::machine::{run_round, Composed, MachineSim, RoundCounters, Work};
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
-use shelling_testbench::{Driver, PeSim, Result};
+use shelling_testbench::{Driver, Result};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// `n` sources of `rays` rays at random points of one scene: each source with `patches`
@@ -84,8 +84,8 @@ fn sources(
 }
 
 /// One round on `sims` against the model, PE by PE; returns the round's counters.
-fn round<S: PeSim>(
-    sims: &mut [S],
+fn round<M: MachineSim>(
+    machine: &mut M,
     seed: u64,
     mem: &[[i32; 4]],
     work: &[(PeSetup, Vec<Command>)],
@@ -93,9 +93,8 @@ fn round<S: PeSim>(
     cache: CacheConfig,
 ) -> Result<RoundCounters> {
     let mut memory = HostMemory::new(mem.to_vec(), tc)?;
-    let mut arbiter = Arbiter::new(sims.len());
     let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
-    let (hits, k) = run_round(sims, &mut arbiter, &mut memory, cache, &jobs)?;
+    let (hits, k) = run_round(machine, &mut memory, cache, &jobs)?;
     for (p, (setup, cmds)) in work.iter().enumerate() {
         let (want, counts) = model(setup, mem, cmds);
         assert_eq!(hits[p], want, "seed {seed:#x}, T_c {tc}, {cache:?}: PE {p}'s hits against the model");
@@ -118,25 +117,40 @@ fn each_pe_of_a_machine_traces_its_own_source() -> Result<()> {
         [(0x3ac1_00u64, 3usize, 1u32, None), (0x3ac1_01, 2, 4, Some(64)), (0x3ac1_02, 4, 2, None)]
     {
         let (mem, work) = sources(seed, n, 96, 120);
-        let mut sims: Vec<Driver<ProcessingElement>> =
+        let sims: Vec<Driver<ProcessingElement>> =
             (0..n).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<_>>()?;
-        let k = round(&mut sims, seed, &mem, &work, tc, CacheConfig { lines })?;
+        let k = round(&mut Composed::new(sims)?, seed, &mem, &work, tc, CacheConfig { lines })?;
         println!("seed {seed:#x}: {n} PEs, T_c {tc}: {k:?}");
     }
     Ok(())
 }
 
-/// The compiled PEs (Verilator) run the machine cycle for cycle as rust-hdl's.
+/// The machine's own RTL (`Machine<3>`, rust-hdl), the composition of rust-hdl's PEs and the
+/// arbiter's model, and that of the compiled PEs: the same hits and the same counters, cycle
+/// counts included, round after round (the caches kept between them).
 #[test]
-fn the_compiled_machine_agrees_with_rust_hdl() -> Result<()> {
+fn the_machine_rtl_and_its_compositions_agree() -> Result<()> {
     let seed = 0x3ac1_10;
     let (mem, work) = sources(seed, 3, 64, 80);
-    let mut rtl: Vec<Driver<ProcessingElement>> =
+    let rtl_pes: Vec<Driver<ProcessingElement>> =
         (0..3).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<_>>()?;
-    let mut fast: Vec<VerilatedPe> = (0..3).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
-    let a = round(&mut rtl, seed, &mem, &work, 2, CacheConfig::default())?;
-    let b = round(&mut fast, seed, &mem, &work, 2, CacheConfig::default())?;
-    assert_eq!(a, b, "seed {seed:#x}: rust-hdl's machine, then the compiled one");
+    let fast_pes: Vec<VerilatedPe> = (0..3).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let mut machine = Driver::new(Machine::<3>::default())?;
+    let (mut rtl, mut fast) = (Composed::new(rtl_pes)?, Composed::new(fast_pes)?);
+    for (tc, lines) in [(2, None), (3, Some(16)), (1, Some(16))] {
+        let cache = CacheConfig { lines };
+        let a = round(&mut machine, seed, &mem, &work, tc, cache)?;
+        let b = round(&mut rtl, seed, &mem, &work, tc, cache)?;
+        let c = round(&mut fast, seed, &mem, &work, tc, cache)?;
+        assert_eq!(
+            a, b,
+            "seed {seed:#x}, T_c {tc}, {cache:?}: the machine's RTL, then rust-hdl's PEs composed"
+        );
+        assert_eq!(
+            b, c,
+            "seed {seed:#x}, T_c {tc}, {cache:?}: rust-hdl's PEs composed, then the compiled ones"
+        );
+    }
     Ok(())
 }
 
@@ -149,8 +163,8 @@ fn pes_work_in_parallel_until_the_host_memory_bounds_them() -> Result<()> {
     let n = 4;
     let (mem, work) = sources(seed, n, 128, 150);
     for (tc, parallel) in [(1u32, true), (16, false)] {
-        let mut fast: Vec<VerilatedPe> = (0..n).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
-        let k = round(&mut fast, seed, &mem, &work, tc, CacheConfig::default())?;
+        let fast: Vec<VerilatedPe> = (0..n).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+        let k = round(&mut Composed::new(fast)?, seed, &mem, &work, tc, CacheConfig::default())?;
         let mut alone = 0;
         for (setup, cmds) in &work {
             let mut pe = VerilatedPe::new()?;
@@ -190,14 +204,14 @@ fn pes_work_in_parallel_until_the_host_memory_bounds_them() -> Result<()> {
 
 #[test]
 fn a_machine_refuses_more_pes_than_the_arbiter_serves() -> Result<()> {
-    let (mem, work) = sources(7, 1, 8, 4);
-    assert!(!work[0].1.is_empty());
-    let mut sims: Vec<VerilatedPe> = (0..9).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
-    let mut memory = HostMemory::new(mem, 1)?;
-    let jobs = [Work { setup: &work[0].0, commands: &work[0].1 }];
-    let err =
-        run_round(&mut sims, &mut Arbiter::new(8), &mut memory, CacheConfig::default(), &jobs).unwrap_err();
+    let sims: Vec<VerilatedPe> = (0..9).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let err = Composed::new(sims).err().expect("nine PEs refused");
     assert!(err.message().contains("1 to 8 PEs"), "{}", err.message());
+    let (mem, work) = sources(7, 3, 8, 4);
+    let mut two = Composed::new((0..2).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>>>()?)?;
+    let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
+    let err = run_round(&mut two, &mut HostMemory::new(mem, 1)?, CacheConfig::default(), &jobs).unwrap_err();
+    assert!(err.message().contains("2 PEs, 3 sources"), "{}", err.message());
     Ok(())
 }
 
@@ -209,12 +223,11 @@ fn a_round_waits_for_its_longest_source() -> Result<()> {
     let (mem, mut work) = sources(seed, 2, 400, 200);
     work[0].1.truncate(2);
     let tc = 64;
-    let mut sims: Vec<VerilatedPe> = (0..2).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let mut machine = Composed::new((0..2).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>>>()?)?;
     let mut memory = HostMemory::new(mem.clone(), tc)?;
-    let mut arbiter = Arbiter::new(2);
     for round in 0..2 {
         let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
-        let (hits, k) = run_round(&mut sims, &mut arbiter, &mut memory, CacheConfig::default(), &jobs)?;
+        let (hits, k) = run_round(&mut machine, &mut memory, CacheConfig::default(), &jobs)?;
         for (p, (setup, cmds)) in work.iter().enumerate() {
             assert_eq!(hits[p], model(setup, &mem, cmds).0, "seed {seed:#x}, round {round}: PE {p}'s hits");
         }

@@ -1,0 +1,169 @@
+//! The machine: `N` processing elements sharing one host memory port through the memory
+//! arbiter, the paper's shared-memory parallel architecture in one design.
+//!
+//! # Purpose
+//!
+//! Each PE ([`ProcessingElement`]) keeps its own command stream, ray memory, patch cache,
+//! screener and intersection unit; the host drives each through its own ports. Their host
+//! memory ports meet in one [`MemoryArbiter`], whose single port is the machine's.
+//!
+//! # Ports ([`Machine`])
+//!
+//! | port | dir | width | meaning |
+//! |---|---|---|---|
+//! | `clock` | in | 1 | rising-edge clock of every PE and the arbiter |
+//! | `dir_we$i` … `res_addr$i` | in | as the PE's | PE `i`'s host ports: directions, source, sectors, commands, readout (`pe.rs`) |
+//! | `cmd_ready$i` … `tests$i` | out | as the PE's | PE `i`'s outputs: command ready, readout, `busy` and its counters |
+//! | `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush` | in | 1, 12, 1 | every PE's cache setting (one scene, one size) |
+//! | `host_req`, `host_addr` | out | 1, 16 | the shared host memory's request: one per clock at most |
+//! | `host_valid`, `host_ax` … `host_by` | in | 1, 17 each | its answers, in request order |
+//! | `requests` | out | 32 | requests sent to the host since power-up (wrapping) |
+//!
+//! # Latency and throughput
+//!
+//! Each PE's as `pe.rs` documents, with every patch load [`crate::arbiter::LATENCY`] clocks
+//! longer (the arbiter's queue, grant and answer registers) and the host port shared: one
+//! request per clock to the host, answered one per `T_c`.
+//!
+//! # Formats
+//!
+//! The PEs' (`hdl/FORMATS.md`); ids and patch words pass through the arbiter unchanged.
+//!
+//! # Models
+//!
+//! No model of its own: the machine is its parts wired together, every output a register of a
+//! part, so stepping the PEs' simulations and [`crate::arbiter::model::Arbiter`] in lockstep
+//! (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks this
+//! block against that composition port by port.
+
+use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
+use crate::pe::ProcessingElement;
+use rust_hdl::prelude::*;
+
+// A PE never has more requests outstanding than its loader holds, so its queue in the arbiter
+// never overflows.
+const _: () = assert!(QUEUE_DEPTH >= crate::loader::DEPTH);
+
+/// Declares [`Machine`] from the list of the PE's host ports: each becomes an array of `N`
+/// ports of the machine, wired to PE `i`'s.
+macro_rules! machine {
+    (
+        inputs { $($i:ident: $it:ty),+ $(,)? }
+        outputs { $($o:ident: $ot:ty),+ $(,)? }
+    ) => {
+        /// `N` processing elements on one host memory port (see the [module documentation](self)).
+        #[derive(LogicBlock)]
+        pub struct Machine<const N: usize> {
+            pub clock: Signal<In, Clock>,
+            $(pub $i: [Signal<In, $it>; N],)+
+            $(pub $o: [Signal<Out, $ot>; N],)+
+            pub cfg_cache_enable: Signal<In, bool>,
+            pub cfg_cache_mask: Signal<In, Bits<12>>,
+            pub cfg_cache_flush: Signal<In, bool>,
+            pub host_req: Signal<Out, bool>,
+            pub host_addr: Signal<Out, Bits<16>>,
+            pub host_valid: Signal<In, bool>,
+            pub host_ax: Signal<In, Bits<17>>,
+            pub host_ay: Signal<In, Bits<17>>,
+            pub host_bx: Signal<In, Bits<17>>,
+            pub host_by: Signal<In, Bits<17>>,
+            pub requests: Signal<Out, Bits<32>>,
+            pes: [ProcessingElement; N],
+            arbiter: MemoryArbiter<N>,
+        }
+
+        impl<const N: usize> Default for Machine<N> {
+            fn default() -> Self {
+                Machine {
+                    clock: Default::default(),
+                    $($i: std::array::from_fn(|_| Default::default()),)+
+                    $($o: std::array::from_fn(|_| Default::default()),)+
+                    cfg_cache_enable: Default::default(),
+                    cfg_cache_mask: Default::default(),
+                    cfg_cache_flush: Default::default(),
+                    host_req: Default::default(),
+                    host_addr: Default::default(),
+                    host_valid: Default::default(),
+                    host_ax: Default::default(),
+                    host_ay: Default::default(),
+                    host_bx: Default::default(),
+                    host_by: Default::default(),
+                    requests: Default::default(),
+                    pes: std::array::from_fn(|_| Default::default()),
+                    arbiter: Default::default(),
+                }
+            }
+        }
+
+        impl<const N: usize> Logic for Machine<N> {
+            #[hdl_gen]
+            fn update(&mut self) {
+                self.arbiter.clock.next = self.clock.val();
+                for i in 0..N {
+                    self.pes[i].clock.next = self.clock.val();
+                    $(self.pes[i].$i.next = self.$i[i].val();)+
+                    $(self.$o[i].next = self.pes[i].$o.val();)+
+                    self.pes[i].cfg_cache_enable.next = self.cfg_cache_enable.val();
+                    self.pes[i].cfg_cache_mask.next = self.cfg_cache_mask.val();
+                    self.pes[i].cfg_cache_flush.next = self.cfg_cache_flush.val();
+                    self.arbiter.pe_req[i].next = self.pes[i].mem_req.val();
+                    self.arbiter.pe_addr[i].next = self.pes[i].mem_addr.val();
+                    self.pes[i].mem_valid.next = self.arbiter.pe_valid[i].val();
+                    self.pes[i].mem_ax.next = self.arbiter.pe_ax.val();
+                    self.pes[i].mem_ay.next = self.arbiter.pe_ay.val();
+                    self.pes[i].mem_bx.next = self.arbiter.pe_bx.val();
+                    self.pes[i].mem_by.next = self.arbiter.pe_by.val();
+                }
+                self.host_req.next = self.arbiter.host_req.val();
+                self.host_addr.next = self.arbiter.host_addr.val();
+                self.arbiter.host_valid.next = self.host_valid.val();
+                self.arbiter.host_ax.next = self.host_ax.val();
+                self.arbiter.host_ay.next = self.host_ay.val();
+                self.arbiter.host_bx.next = self.host_bx.val();
+                self.arbiter.host_by.next = self.host_by.val();
+                self.requests.next = self.arbiter.requests.val();
+            }
+        }
+    };
+}
+
+machine! {
+    inputs {
+        dir_we: bool,
+        dir_addr: Bits<10>,
+        dir_x: Bits<18>,
+        dir_y: Bits<18>,
+        origin_x: Bits<17>,
+        origin_y: Bits<17>,
+        normal_x: Bits<18>,
+        normal_y: Bits<18>,
+        first_x: Bits<18>,
+        first_y: Bits<18>,
+        last_x: Bits<18>,
+        last_y: Bits<18>,
+        cmd_valid: bool,
+        cmd_retire: bool,
+        cmd_sector: bool,
+        cmd_id: Bits<16>,
+        cmd_first: Bits<10>,
+        cmd_count: Bits<11>,
+        res_re: bool,
+        res_addr: Bits<10>,
+    }
+    outputs {
+        cmd_ready: bool,
+        res_hit: bool,
+        res_id: Bits<16>,
+        res_key: Bits<32>,
+        busy: bool,
+        loads: Bits<32>,
+        cache_hits: Bits<32>,
+        cache_misses: Bits<32>,
+        passed: Bits<32>,
+        backward: Bits<32>,
+        back_facing: Bits<32>,
+        outside: Bits<32>,
+        near: Bits<32>,
+        tests: Bits<32>,
+    }
+}
