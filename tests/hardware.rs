@@ -3,6 +3,7 @@
 //! committed Verilog being current, and the synthesizability test of every block: Yosys'
 //! `synth_ecp5` on its exported Verilog, no latches, products on DSP blocks.
 
+use crate::support::synth::{cells, synth_ecp5, synth_ecp5_script, verilog_dir};
 use shelling::agreement::{self, Workload};
 use shelling::arith::{Arith, FixedBundle};
 use shelling::geom::{Segment, Vec2};
@@ -12,7 +13,6 @@ use shelling::run::{GriddedScene, RunError};
 use shelling::scene::Scene;
 use shelling::trace::{Method, ShellParams};
 use std::path::PathBuf;
-use std::process::Command;
 
 #[test]
 fn rung2_fixed_point_agrees_with_float_within_the_bound() {
@@ -66,10 +66,6 @@ fn fixed_point_rejects_what_does_not_fit_and_names_it() {
     assert!(hits.hits.iter().flatten().all(|h| h.segment == 1) && hits.hits.iter().flatten().count() > 0);
 }
 
-fn verilog_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("hdl").join("verilog")
-}
-
 #[test]
 fn committed_verilog_is_current() {
     let fresh = shelling_testbench::export::verilog().expect("every block exports");
@@ -118,37 +114,6 @@ fn committed_fpga_results_are_of_the_committed_verilog() {
         );
         assert!(b["median_mhz"].is_f64(), "{block} has no median clock rate");
     }
-}
-
-/// Runs Yosys' ECP5 synthesis on one exported block, as the FPGA flow does (`SHELLING_ECP5`
-/// defined: the `BramOut` leaves are hand-instantiated `DP16KD`s); returns its statistics.
-fn synth_ecp5(name: &str) -> String {
-    synth_ecp5_script(name, "synth_ecp5", "tee -o /dev/stdout stat")
-}
-
-fn synth_ecp5_script(name: &str, synth: &str, then: &str) -> String {
-    let file = verilog_dir().join(format!("{name}.v"));
-    let out = Command::new("yosys")
-        .args([
-            "-q",
-            "-p",
-            &format!("read_verilog -DSHELLING_ECP5 {}; {synth} -top {name}; {then}", file.display()),
-        ])
-        .output()
-        .expect("yosys is not installed: `apt-get install yosys` (.ci/run installs it)");
-    let text = String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "yosys failed on {name}:\n{text}");
-    text
-}
-
-fn cells(stat: &str, cell: &str) -> usize {
-    stat.lines()
-        .filter_map(|l| {
-            let mut w = l.split_whitespace();
-            (w.next() == Some(cell)).then(|| w.next().and_then(|n| n.parse().ok())).flatten()
-        })
-        .last()
-        .unwrap_or(0)
 }
 
 #[test]

@@ -67,7 +67,7 @@ mod tests {
     }
 
     /// Inside the crate a module uses only the layers below it: `formats` nothing, `prim` only
-    /// `formats`, a block only `formats`, `prim` and itself, and only `pe` other blocks. So no
+    /// `formats`, a block only `formats`, `prim` and itself, and only `pe` and `machine` other blocks. So no
     /// import circle can form.
     #[test]
     fn modules_use_only_the_layers_below_them() {

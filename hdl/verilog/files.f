@@ -6,3 +6,4 @@ processing_element.v
 fwft_fifo.v
 job_queue.v
 memory_arbiter.v
+machine.v

@@ -9,6 +9,7 @@ use shelling_hdl::arbiter::MemoryArbiter;
 use shelling_hdl::cache::PatchCache;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
+use shelling_hdl::machine::Machine;
 use shelling_hdl::pe::ProcessingElement;
 use shelling_hdl::prim::Fifo;
 use shelling_hdl::queue::JobQueue;
@@ -25,6 +26,10 @@ pub type FwftFifo = Fifo<8, 4, 5>;
 /// The memory arbiter exported on its own, for its cross-simulation, its formal task
 /// (`hdl/src/arbiter.sby`) and its resources: four PEs.
 pub type MemoryArbiter4 = MemoryArbiter<4>;
+
+/// The machine exported for its cross-simulation and the FPGA flow: two PEs (each PE's Verilog
+/// is written once per instance, so every PE adds the processing element's whole text).
+pub type Machine2 = Machine<2>;
 
 /// The blocks exported, by module name, each freshly built and connected.
 pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
@@ -44,6 +49,8 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
     queue.connect_all();
     let mut arbiter = MemoryArbiter4::default();
     arbiter.connect_all();
+    let mut machine = Machine2::default();
+    machine.connect_all();
     vec![
         ("patch_loader", Box::new(loader)),
         ("patch_cache", Box::new(cache)),
@@ -53,6 +60,7 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
         ("fwft_fifo", Box::new(fifo)),
         ("job_queue", Box::new(queue)),
         ("memory_arbiter", Box::new(arbiter)),
+        ("machine", Box::new(machine)),
     ]
 }
 

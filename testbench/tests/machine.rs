@@ -12,7 +12,7 @@ use shelling_testbench::machine::{run_round, Composed, MachineSim, RoundCounters
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
-use shelling_testbench::{Driver, Result};
+use shelling_testbench::{Driver, Result, Simulator};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 /// `n` sources of `rays` rays at random points of one scene: each source with `patches`
@@ -240,5 +240,23 @@ fn a_round_waits_for_its_longest_source() -> Result<()> {
             k.pes[0].cycles
         );
     }
+    Ok(())
+}
+
+/// Rung 4: a recorded round of the machine's RTL (two PEs, caches on, `T_c` = 2) replayed
+/// through its exported Verilog under Verilator, every output before and after every edge.
+#[test]
+fn the_machine_replays_bit_exactly_under_verilator() -> Result<()> {
+    let seed = 0x3ac1_40;
+    let (mem, work) = sources(seed, 2, 32, 24);
+    let mut machine = Driver::new(Machine::<2>::default())?;
+    machine.record_ports()?;
+    round(&mut machine, seed, &mem, &work, 2, CacheConfig { lines: Some(16) })?;
+    let rec = machine.take_recording().ok_or("recording was on")?;
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("machine_verilator");
+    let report = rec.replay(machine.uut(), &dir, Simulator::Verilator)?;
+    println!("{report}");
+    assert_eq!(report.cycles, rec.cycles());
+    assert!(report.cycles > 200, "seed {seed:#x}: only {} cycles recorded", report.cycles);
     Ok(())
 }

@@ -3,4 +3,5 @@
 
 pub mod closed3d;
 pub mod replay;
+pub mod synth;
 pub mod tracers3d;

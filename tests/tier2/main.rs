@@ -8,6 +8,7 @@ mod support;
 
 mod ff3d;
 mod figures;
+mod hardware;
 mod radiosity;
 mod replay;
 mod tracers3d;
