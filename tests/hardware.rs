@@ -3,7 +3,7 @@
 //! committed Verilog being current, and the synthesizability test of every block: Yosys'
 //! `synth_ecp5` on its exported Verilog, no latches, products on DSP blocks.
 
-use crate::support::synth::{cells, synth_ecp5, synth_ecp5_script, verilog_dir};
+use crate::support::synth::{assert_no_latch, cells, synth_ecp5, synth_ecp5_script, verilog_dir};
 use shelling::agreement::{self, Workload};
 use shelling::arith::{Arith, FixedBundle};
 use shelling::geom::{Segment, Vec2};
@@ -119,9 +119,7 @@ fn committed_fpga_results_are_of_the_committed_verilog() {
 #[test]
 fn intersection_unit_synthesizes_to_dsps_without_latches() {
     let stat = synth_ecp5("intersection_unit");
-    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
-        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
-    }
+    assert_no_latch("intersection_unit", &stat);
     assert_eq!(cells(&stat, "MULT18X18D"), 6, "six 18x18 multipliers, one DSP each:\n{stat}");
     assert!(cells(&stat, "DP16KD") >= 4, "the ray and direction memories map to block RAM:\n{stat}");
     assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
@@ -170,9 +168,7 @@ fn patch_loader_screener_and_fifos_synthesize_without_latches() {
         [("patch_loader", 0), ("screener", 10), ("fwft_fifo", 0), ("job_queue", 0), ("memory_arbiter", 0)];
     for (block, dsps) in blocks {
         let stat = synth_ecp5(block);
-        for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
-            assert!(!stat.contains(latch), "{block}: a latch was inferred:\n{stat}");
-        }
+        assert_no_latch(block, &stat);
         assert!(cells(&stat, "TRELLIS_FF") > 0, "{block}: {stat}");
         assert_eq!(cells(&stat, "MULT18X18D"), dsps, "{block}: multipliers map to DSP blocks:\n{stat}");
         assert!(cells(&stat, "TRELLIS_DPR16X4") > 0, "{block}: the FIFO maps to LUT RAM:\n{stat}");
@@ -189,9 +185,7 @@ fn patch_cache_synthesizes_to_block_ram_without_latches() {
         "tee -o /dev/stdout stat; select -assert-count 25 t:DP16KD; \
          select -assert-count 25 t:DP16KD r:REGMODE_B=OUTREG %i",
     );
-    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
-        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
-    }
+    assert_no_latch("patch_cache", &stat);
     assert_eq!(cells(&stat, "DP16KD"), 25, "the 4096-line memories map to block RAM:\n{stat}");
     assert_eq!(cells(&stat, "MULT18X18D"), 0, "{stat}");
     assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
@@ -203,9 +197,7 @@ fn patch_cache_synthesizes_to_block_ram_without_latches() {
 #[test]
 fn processing_element_synthesizes_without_latches() {
     let stat = synth_ecp5("processing_element");
-    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
-        assert!(!stat.contains(latch), "a latch was inferred:\n{stat}");
-    }
+    assert_no_latch("processing_element", &stat);
     assert_eq!(cells(&stat, "MULT18X18D"), 16, "{stat}");
     assert!(cells(&stat, "DP16KD") >= 24, "{stat}");
     assert!(cells(&stat, "TRELLIS_DPR16X4") > 0, "{stat}");

@@ -41,3 +41,10 @@ pub fn cells(stat: &str, cell: &str) -> usize {
         .last()
         .unwrap_or(0)
 }
+
+/// Fails, naming `what`, if Yosys' output `stat` shows an inferred latch.
+pub fn assert_no_latch(what: &str, stat: &str) {
+    for latch in ["$_DLATCH", "$dlatch", "LATCH"] {
+        assert!(!stat.contains(latch), "{what}: a latch was inferred:\n{stat}");
+    }
+}
