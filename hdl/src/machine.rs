@@ -33,8 +33,10 @@
 //!
 //! No model of its own: the machine is its parts wired together, every output a register of a
 //! part, so stepping the PEs' simulations and [`crate::arbiter::model::Arbiter`] in lockstep
-//! (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks this
-//! block against that composition port by port.
+//! (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks that
+//! this block and that composition give every PE the same hits and counters, cycle counts
+//! included, round after round, and replays a recorded round through its exported Verilog under
+//! Verilator (rung 4).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;

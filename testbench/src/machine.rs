@@ -31,10 +31,6 @@ use shelling_hdl::formats::Nearest;
 use shelling_hdl::intersection::READOUT_LATENCY;
 use shelling_hdl::machine::Machine;
 
-// A PE never has more requests outstanding than its loader holds, so its queue in the arbiter
-// never overflows.
-const _: () = assert!(shelling_hdl::arbiter::QUEUE_DEPTH >= shelling_hdl::loader::DEPTH);
-
 /// A machine simulated one clock cycle at a time from power-up: `pes()` PEs and their memory
 /// arbiter; the host memory is outside, on [`MachineSim::host_request`] and
 /// [`MachineSim::tick`].
