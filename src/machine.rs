@@ -1,23 +1,36 @@
 //! The parallel machine in co-simulation: sources of one scene dealt to `N` processing
 //! elements that share one host memory through the memory arbiter
 //! ([`shelling_testbench::machine`]), every PE's hits and counts checked against the bit-true
-//! model of its source, as [`crate::cosim`] checks one PE's.
+//! model of its work, as [`crate::cosim`] checks one PE's.
 //!
-//! The host deals whole sources (the radiosity method shoots from every patch), one per PE a
-//! round ([`shelling_testbench::machine::run_round`]). The order matters to the PEs' caches: a
-//! PE that traces neighbouring sources one after the other finds the patches the last one
-//! loaded. [`spatial_order`] sorts the sources along a Z-order curve of their midpoints, and
-//! [`Deal`] hands that order out either in contiguous blocks (PE `p` traces the `p`-th block,
-//! round after round) or interleaved (round `r` gives PE `p` source `r·N + p`).
+//! The host deals whole sources (the radiosity method shoots from every patch) or sectors of
+//! every source (the paper: "when assigning sectors to processors, a ray is always processed by
+//! one processor"), and each PE runs its queue on its own
+//! ([`shelling_testbench::machine::run_queues`]): no PE waits for another's source to end.
+//!
+//! Whole sources: the order matters to the PEs' caches, a PE that traces neighbouring sources
+//! one after the other finding the patches the last one loaded. [`spatial_order`] sorts the
+//! sources along a Z-order curve of their midpoints, and [`Deal`] hands that order out in
+//! contiguous blocks (PE `p` traces the `p`-th block) or interleaved (PE `p` the sources `p`,
+//! `p + N`, ...).
+//!
+//! Sectors: each source's bundle is cut into `N` contiguous ray ranges ([`part_range`]), PE `p`
+//! taking the `p`-th range of every source. Stochastic shelling sizes each sector from the
+//! previous one; each part is scheduled as a bundle of its own ([`schedule_sources`]), so each
+//! PE's sectors follow one another within its own contiguous range and the rule holds unbroken.
+//! A part sees the patches of its own angular range, so each PE's cache holds a slice of the
+//! scene's directions rather than a region of it.
 
 use crate::cosim::{check_against_model, CosimError, Engine};
 use crate::geom::Segment;
 use crate::limits::{check_range, MAX_TC};
-use crate::run::Scheduled;
+use crate::rays::{Bundle, RaySet};
+use crate::run::{GriddedScene, Scheduled};
+use crate::trace::{Method, ShellParams};
 use crate::workstream::commands;
 use serde::Serialize;
 use shelling_hdl::arbiter::MAX_PES;
-use shelling_testbench::machine::{run_round, Composed, MachineSim, Work};
+use shelling_testbench::machine::{run_queues, Composed, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, rust_hdl_pe, CacheConfig, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
@@ -26,30 +39,90 @@ use shelling_testbench::verilated::VerilatedPe;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Deal {
-    /// PE `p` takes the `p`-th of `N` contiguous blocks of the order, one source a round.
+    /// PE `p` traces the `p`-th of `N` contiguous blocks of the order, source after source.
     #[default]
     Blocks,
-    /// Round `r` gives PE `p` the source `r·N + p` of the order.
+    /// PE `p` traces the sources `p`, `p + N`, `p + 2N`, ... of the order.
     Interleaved,
+    /// Every source's rays in `N` contiguous ranges, PE `p` tracing the `p`-th range of every
+    /// source in the order: a ray always on one PE (the paper's rule), each PE's shells its own.
+    Sectors,
 }
 
-/// The rounds of a deal of `sources` sources to `pes` PEs: `rounds[r][p]` is the position in
-/// the order of the source PE `p` traces in round `r`, if any.
-pub fn deal(sources: usize, pes: usize, how: Deal) -> Vec<Vec<Option<usize>>> {
-    let rounds = sources.div_ceil(pes);
-    (0..rounds)
-        .map(|r| {
-            (0..pes)
-                .map(|p| {
-                    let i = match how {
-                        Deal::Blocks => p * rounds + r,
-                        Deal::Interleaved => r * pes + p,
-                    };
-                    (i < sources).then_some(i)
-                })
-                .collect()
+impl Deal {
+    /// The parts a source is cut into on `pes` PEs.
+    pub fn parts(self, pes: usize) -> usize {
+        if self == Deal::Sectors {
+            pes
+        } else {
+            1
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Deal::Blocks => "blocks",
+            Deal::Interleaved => "interleaved",
+            Deal::Sectors => "sectors",
+        }
+    }
+}
+
+/// The deal of `sources` sources to `pes` PEs: `queues[p]` lists, in the order PE `p` traces
+/// them, the work items it is given, item `i·parts + j` being part `j` of the `i`-th source
+/// of the order (`parts` is [`Deal::parts`]).
+pub fn deal(sources: usize, pes: usize, how: Deal) -> Vec<Vec<usize>> {
+    let per = sources.div_ceil(pes);
+    (0..pes)
+        .map(|p| match how {
+            Deal::Blocks => (p * per..((p + 1) * per).min(sources)).collect(),
+            Deal::Interleaved => (p..sources).step_by(pes).collect(),
+            Deal::Sectors => (0..sources).map(|i| i * pes + p).collect(),
         })
         .collect()
+}
+
+/// The ray range of part `j` of `parts` of a bundle of `rays` rays: contiguous, as even as can
+/// be, in order.
+pub fn part_range(rays: usize, parts: usize, j: usize) -> std::ops::Range<usize> {
+    j * rays / parts..(j + 1) * rays / parts
+}
+
+/// The bundle's rays of `range` as a bundle of their own (the same source and ray set).
+pub fn sub_bundle(bundle: &Bundle, range: std::ops::Range<usize>) -> Bundle {
+    Bundle {
+        source: bundle.source,
+        set: bundle.set,
+        rays: bundle.rays[range.clone()].to_vec(),
+        angles: bundle.angles[range].to_vec(),
+    }
+}
+
+/// The work items of `order`'s sources as [`deal`] numbers them: each source's bundle of `rays`
+/// rays of `set`, cut into `parts` contiguous ranges, each scheduled by `method` on the bit-true
+/// backend. A source's parts together trace what its whole bundle traces.
+pub fn schedule_sources(
+    prepared: &GriddedScene,
+    order: &[usize],
+    method: Method,
+    set: RaySet,
+    rays: usize,
+    params: &ShellParams,
+    parts: usize,
+) -> anyhow::Result<Vec<Scheduled>> {
+    use anyhow::Context;
+    if parts == 0 || parts > rays {
+        anyhow::bail!("{rays} rays cannot be cut into {parts} parts: one ray at least a part");
+    }
+    let mut out = Vec::with_capacity(order.len() * parts);
+    for &k in order {
+        let bundle = prepared.patch_bundle(k, set, rays).with_context(|| format!("source patch {k}"))?;
+        for j in 0..parts {
+            let part = sub_bundle(&bundle, part_range(rays, parts, j));
+            out.push(prepared.schedule(method, &part, params).with_context(|| format!("source patch {k}"))?);
+        }
+    }
+    Ok(out)
 }
 
 /// The patches `ids` of `segments` in Z-order of their midpoints (on a 1024 × 1024 grid over
@@ -91,9 +164,12 @@ pub struct MachineConfig {
 pub struct MachineRun {
     pub pes: usize,
     pub sources: usize,
-    pub rounds: usize,
-    /// Every round's setup, commands and readout, each the round's longest PE's.
+    /// Parts each source was cut into ([`Deal::parts`]).
+    pub parts: usize,
+    /// From the first setup to the last readout.
     pub cycles: u64,
+    /// Summed over the PEs: cycles writing directions, running commands and reading hits (a
+    /// PE's share of `cycles` not in these it idled, done before the others).
     pub setup_cycles: u64,
     pub command_cycles: u64,
     pub readout_cycles: u64,
@@ -102,18 +178,30 @@ pub struct MachineRun {
     /// Patches the host memory delivered, and the cycles its port was busy.
     pub memory_loads: u64,
     pub memory_busy_cycles: u64,
-    /// `memory_busy_cycles / command_cycles`.
+    /// `memory_busy_cycles / cycles`.
     pub memory_utilisation: f64,
     pub patch_loads: u64,
     pub cache_hits: u64,
     pub tests: u64,
-    /// Cycles of each source (its PE's command phase), in the order given.
+    /// Each source's latency: from its first part's setup to its last part's readout, in the
+    /// order given.
     pub source_cycles: Vec<u64>,
 }
 
-/// Runs `schedules` (sources of one scene, in the order to deal them) on the machine of
-/// `config`; `progress(rounds done, rounds)` after each round. Every PE's hits and counters
-/// are checked against the bit-true model of its source.
+impl MachineRun {
+    pub fn cycles_per_source(&self) -> f64 {
+        self.cycles as f64 / self.sources as f64
+    }
+
+    pub fn rays_per_cycle(&self) -> f64 {
+        self.rays as f64 / self.cycles as f64
+    }
+}
+
+/// Runs `schedules` (work items of one scene, as [`schedule_sources`] makes them for
+/// `config.deal`: sources in the order to deal them, each in [`Deal::parts`] parts) on the
+/// machine of `config`; `progress(items done, items)` after each item's readout. Every item's
+/// hits and counters are checked against the bit-true model of its commands.
 pub fn run(
     schedules: &[Scheduled],
     config: &MachineConfig,
@@ -151,9 +239,16 @@ fn run_on<M: MachineSim>(
     let Some(first) = schedules.first() else {
         return Err(CosimError::Config("no source to run".into()));
     };
+    let parts = config.deal.parts(config.pes);
+    if !schedules.len().is_multiple_of(parts) {
+        return Err(CosimError::Config(format!(
+            "{} work items are not whole sources of {parts} parts",
+            schedules.len()
+        )));
+    }
     let cache = CacheConfig { lines: config.cache };
     cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
-    let mut sources: Vec<(PeSetup, Vec<Command>)> = Vec::with_capacity(schedules.len());
+    let mut items: Vec<(PeSetup, Vec<Command>)> = Vec::with_capacity(schedules.len());
     let (_, patches, _) = commands(&first.stream, &first.fixed)?;
     for s in schedules {
         let (setup, p, cmds) = commands(&s.stream, &s.fixed)?;
@@ -162,43 +257,49 @@ fn run_on<M: MachineSim>(
                 "the sources' scenes differ in fixed point: a machine's host memory holds one scene".into(),
             ));
         }
-        sources.push((setup, cmds));
+        items.push((setup, cmds));
     }
+    let sources = items.len() / parts;
     let mut memory = HostMemory::new(patches.clone(), config.tc).map_err(sim)?;
-    let rounds = deal(sources.len(), config.pes, config.deal);
+    let dealt = deal(sources, config.pes, config.deal);
+    let queues: Vec<Vec<Work>> = dealt
+        .iter()
+        .map(|q| q.iter().map(|&i| Work { setup: &items[i].0, commands: &items[i].1 }).collect())
+        .collect();
+    let k =
+        run_queues(machine, &mut memory, cache, &queues, |done| progress(done, items.len())).map_err(sim)?;
     let mut m = MachineRun {
         pes: config.pes,
-        sources: sources.len(),
-        rounds: rounds.len(),
-        source_cycles: vec![0; sources.len()],
+        sources,
+        parts,
+        cycles: k.cycles,
+        memory_loads: memory.loads(),
+        memory_busy_cycles: memory.busy_cycles(),
+        source_cycles: vec![0; sources],
         ..Default::default()
     };
-    for (r, round) in rounds.iter().enumerate() {
-        let given: Vec<usize> = round.iter().flatten().copied().collect();
-        let work: Vec<Work> =
-            given.iter().map(|&i| Work { setup: &sources[i].0, commands: &sources[i].1 }).collect();
-        let (hits, k) = run_round(machine, &mut memory, cache, &work).map_err(sim)?;
-        for (p, &i) in given.iter().enumerate() {
-            let (setup, cmds) = &sources[i];
+    let mut span = vec![(u64::MAX, 0u64); sources];
+    for (p, (q, traced)) in dealt.iter().zip(&k.pes).enumerate() {
+        for (&i, t) in q.iter().zip(traced) {
+            let (setup, cmds) = &items[i];
             let (want, model) = pe::model(setup, &patches, cmds);
-            check_against_model(&hits[p], &k.pes[p], &want, &model)
-                .map_err(|e| CosimError::Mismatch(format!("source {i} on PE {p} in round {r}: {e}")))?;
-            m.source_cycles[i] = k.pes[p].cycles;
+            let c = &t.counters;
+            check_against_model(&t.hits, c, &want, &model).map_err(|e| {
+                CosimError::Mismatch(format!("source {} part {} on PE {p}: {e}", i / parts, i % parts))
+            })?;
+            let s = &mut span[i / parts];
+            *s = (s.0.min(t.start), s.1.max(t.end));
             m.rays += setup.dirs.len() as u64;
-            m.patch_loads += k.pes[p].patch_loads;
-            m.cache_hits += k.pes[p].cache_hits;
-            m.tests += k.pes[p].tests;
+            m.patch_loads += c.patch_loads;
+            m.cache_hits += c.cache_hits;
+            m.tests += c.tests;
+            m.setup_cycles += c.setup_cycles;
+            m.command_cycles += c.cycles;
+            m.readout_cycles += c.readout_cycles;
         }
-        m.cycles += k.cycles;
-        m.setup_cycles += k.setup_cycles;
-        m.command_cycles += k.command_cycles;
-        m.readout_cycles += k.readout_cycles;
-        progress(r + 1, rounds.len());
     }
-    m.memory_loads = memory.loads();
-    m.memory_busy_cycles = memory.busy_cycles();
-    m.memory_utilisation =
-        if m.command_cycles > 0 { m.memory_busy_cycles as f64 / m.command_cycles as f64 } else { 0.0 };
+    m.source_cycles = span.iter().map(|&(a, b)| b - a).collect();
+    m.memory_utilisation = if m.cycles > 0 { m.memory_busy_cycles as f64 / m.cycles as f64 } else { 0.0 };
     Ok(m)
 }
 
@@ -207,23 +308,53 @@ mod tests {
     use super::*;
 
     #[test]
-    fn deals_cover_every_source_once() {
-        for how in [Deal::Blocks, Deal::Interleaved] {
+    fn deals_cover_every_item_once() {
+        for how in [Deal::Blocks, Deal::Interleaved, Deal::Sectors] {
             for (n, pes) in [(10, 3), (8, 8), (1, 4), (17, 4)] {
-                let rounds = deal(n, pes, how);
-                let mut seen: Vec<usize> = rounds.iter().flatten().flatten().copied().collect();
+                let queues = deal(n, pes, how);
+                assert_eq!(queues.len(), pes);
+                let mut seen: Vec<usize> = queues.iter().flatten().copied().collect();
                 seen.sort();
-                assert_eq!(seen, (0..n).collect::<Vec<_>>(), "{how:?} {n} on {pes}");
-                assert_eq!(rounds.len(), n.div_ceil(pes));
+                assert_eq!(seen, (0..n * how.parts(pes)).collect::<Vec<_>>(), "{how:?} {n} on {pes}");
             }
         }
-        assert_eq!(
-            deal(5, 2, Deal::Blocks),
-            vec![vec![Some(0), Some(3)], vec![Some(1), Some(4)], vec![Some(2), None]]
-        );
-        assert_eq!(
-            deal(5, 2, Deal::Interleaved),
-            vec![vec![Some(0), Some(1)], vec![Some(2), Some(3)], vec![Some(4), None]]
-        );
+        assert_eq!(deal(5, 2, Deal::Blocks), vec![vec![0, 1, 2], vec![3, 4]]);
+        assert_eq!(deal(5, 2, Deal::Interleaved), vec![vec![0, 2, 4], vec![1, 3]]);
+        assert_eq!(deal(2, 3, Deal::Sectors), vec![vec![0, 3], vec![1, 4], vec![2, 5]]);
+    }
+
+    /// A source's parts, each scheduled on its own, trace what its whole bundle traces: every
+    /// ray's hit, for every technique.
+    #[test]
+    fn a_sources_parts_trace_its_rays() {
+        let scene = crate::scene::generate(300, 32.0, 11, crate::scene::PAPER_WORLD).expect("scene");
+        let prepared = GriddedScene::new(scene, crate::grid::GridParams::default());
+        let params = ShellParams::default();
+        for method in [Method::Conventional, Method::Stochastic, Method::Deterministic] {
+            let whole =
+                schedule_sources(&prepared, &[5, 17], method, RaySet::Angle, 256, &params, 1).unwrap();
+            let parts =
+                schedule_sources(&prepared, &[5, 17], method, RaySet::Angle, 256, &params, 3).unwrap();
+            assert_eq!(parts.len(), 6);
+            for (w, p) in whole.iter().zip(parts.chunks(3)) {
+                let joined: Vec<_> = p.iter().flat_map(|s| s.trace.hits.iter().copied()).collect();
+                assert_eq!(joined, w.trace.hits, "{method}: the parts' hits, then the whole bundle's");
+                assert!(w.trace.hits.iter().flatten().count() > 0, "{method}: no hit at all");
+            }
+        }
+        assert!(schedule_sources(&prepared, &[5], Method::Stochastic, RaySet::Angle, 2, &params, 3).is_err());
+    }
+
+    #[test]
+    fn parts_cut_a_bundle_into_contiguous_ranges() {
+        for (rays, parts) in [(1024, 8), (1000, 3), (5, 5), (7, 1)] {
+            let ranges: Vec<_> = (0..parts).map(|j| part_range(rays, parts, j)).collect();
+            assert_eq!(ranges[0].start, 0);
+            assert_eq!(ranges[parts - 1].end, rays);
+            for w in ranges.windows(2) {
+                assert_eq!(w[0].end, w[1].start);
+            }
+            assert!(ranges.iter().all(|r| r.len() >= rays / parts && r.len() <= rays.div_ceil(parts)));
+        }
     }
 }

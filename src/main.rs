@@ -1048,18 +1048,20 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     let prepared = GriddedScene::new(scene, grid);
     let ids: Vec<usize> = (a.first..a.first + count).collect();
     let order = machine::spatial_order(&prepared.scene.segments, &ids);
-    let schedules = order
-        .iter()
-        .map(|&k| {
-            let bundle = prepared.patch_bundle(k, a.ray_set, a.rays)?;
-            let (lo, hi) = prepared.grid.extent();
-            let far = [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
-                .iter()
-                .fold(0.0f64, |m, c| m.max((*c - bundle.source.origin).length()));
-            a.tune.check_depth((hi - lo).max_element(), far)?;
-            prepared.schedule(a.method, &bundle, &params).with_context(|| format!("source patch {k}"))
-        })
-        .collect::<Result<Vec<_>>>()?;
+    let parts = a.deal.parts(a.pes);
+    if parts > a.rays {
+        bail!("--deal sectors on --pes {} needs at least one ray a PE: --rays {} is fewer", a.pes, a.rays);
+    }
+    let (lo, hi) = prepared.grid.extent();
+    for &k in &order {
+        let origin = prepared.patch_bundle(k, a.ray_set, a.rays)?.source.origin;
+        let far = [lo, hi, Vec2::new(lo.x, hi.y), Vec2::new(hi.x, lo.y)]
+            .iter()
+            .fold(0.0f64, |m, c| m.max((*c - origin).length()));
+        a.tune.check_depth((hi - lo).max_element(), far)?;
+    }
+    let schedules =
+        machine::schedule_sources(&prepared, &order, a.method, a.ray_set, a.rays, &params, parts)?;
     let config = machine::MachineConfig {
         pes: a.pes,
         tc: a.tc,
@@ -1067,8 +1069,7 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
         deal: a.deal,
         engine: a.engine.resolve(false),
     };
-    let rounds = count.div_ceil(a.pes) as u64;
-    let bar = progress_bar(rounds, "{bar:40} {pos}/{len} rounds {elapsed}");
+    let bar = progress_bar(schedules.len() as u64, "{bar:40} {pos}/{len} work items {elapsed}");
     let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();
     let run = run?;
@@ -1079,7 +1080,7 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     }
     say!(
         out,
-        "{} sources of {} rays, {} on {} PEs ({} simulation), T_c = {}, caches {}, dealt in {} rounds ({}): every hit equals the bit-true model's",
+        "{} sources of {} rays, {} on {} PEs ({} simulation), T_c = {}, caches {}, dealt as {}{}: every hit equals the bit-true model's",
         run.sources,
         a.rays,
         a.method,
@@ -1087,28 +1088,25 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
         config.engine.name(),
         a.tc,
         a.cache.map_or("off".to_string(), |c| format!("of {c} patches")),
-        run.rounds,
-        match a.deal {
-            machine::Deal::Blocks => "blocks",
-            machine::Deal::Interleaved => "interleaved",
-        }
+        a.deal.name(),
+        if parts > 1 { format!(" ({parts} per source)") } else { String::new() }
     );
     say!(
         out,
-        "cycles {}  (setup {}, commands {}, readout {})  per source {:.0}  rays per cycle {:.3}",
+        "cycles {}  per source {:.0}  rays per cycle {:.3}  (summed over the PEs: setup {}, commands {}, readout {})",
         run.cycles,
+        run.cycles_per_source(),
+        run.rays_per_cycle(),
         run.setup_cycles,
         run.command_cycles,
         run.readout_cycles,
-        run.cycles as f64 / run.sources as f64,
-        run.rays as f64 / run.cycles as f64
     );
     say!(
         out,
-        "host memory: {} loads, busy {} of {} command cycles ({:.1}%)  cache hits {} of {} patch loads  tests {}",
+        "host memory: {} loads, busy {} of {} cycles ({:.1}%)  cache hits {} of {} patch loads  tests {}",
         run.memory_loads,
         run.memory_busy_cycles,
-        run.command_cycles,
+        run.cycles,
         100.0 * run.memory_utilisation,
         run.cache_hits,
         run.patch_loads,

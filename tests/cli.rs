@@ -684,7 +684,7 @@ fn cli_cosim_rejects_bad_options() {
 
 // ----- machine -----
 
-/// The machine's JSON: sources, rounds and counts consistent with the options; more PEs take
+/// The machine's JSON: sources, parts and counts consistent with the options; more PEs take
 /// fewer cycles for the same sources and the same tests; rust-hdl's PEs and the compiled ones
 /// the same cycles.
 #[test]
@@ -718,8 +718,12 @@ fn cli_machine_runs_sources_on_several_pes() {
     };
     let one = run("1", "verilator", "blocks");
     let three = run("3", "verilator", "blocks");
-    assert_eq!((one["sources"].as_u64(), one["rounds"].as_u64()), (Some(6), Some(6)));
-    assert_eq!((three["sources"].as_u64(), three["rounds"].as_u64()), (Some(6), Some(2)));
+    assert_eq!((one["sources"].as_u64(), one["parts"].as_u64()), (Some(6), Some(1)));
+    assert_eq!((three["sources"].as_u64(), three["parts"].as_u64()), (Some(6), Some(1)));
+    let sectors = run("3", "verilator", "sectors");
+    assert_eq!((sectors["sources"].as_u64(), sectors["parts"].as_u64()), (Some(6), Some(3)));
+    assert_eq!(sectors["rays"], one["rays"], "the sectors of a source are its rays");
+    assert_eq!(sectors["source_cycles"].as_array().map(Vec::len), Some(6));
     assert_eq!(one["rays"].as_u64(), Some(6 * 64));
     assert_eq!(one["tests"], three["tests"], "the same sources, the same ray-patch tests");
     assert!(one["tests"].as_u64().unwrap() > 0);
@@ -746,7 +750,11 @@ fn cli_machine_rejects_bad_options() {
     fails(&with(&["--cache", "1000"]), &["power of two", "1000"]);
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
-    fails(&with(&["--deal", "random"]), &["random", "blocks", "interleaved"]);
+    fails(&with(&["--deal", "random"]), &["random", "blocks", "interleaved", "sectors"]);
+    fails(
+        &with(&["--deal", "sectors", "--pes", "4", "--rays", "3"]),
+        &["--rays 3", "--pes 4", "one ray a PE"],
+    );
 }
 
 // ----- fixed point, agreement, Verilog export -----

@@ -5,7 +5,7 @@
 use crate::replay::export_verilog;
 use crate::{Error, Result};
 use rust_hdl::core::prelude::Block;
-use shelling_hdl::arbiter::MemoryArbiter;
+use shelling_hdl::arbiter::{MemoryArbiter, MAX_PES};
 use shelling_hdl::cache::PatchCache;
 use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::loader::PatchLoader;
@@ -66,19 +66,47 @@ pub fn blocks() -> Vec<(&'static str, Box<dyn Block>)> {
 
 /// The exported text of every block: `(file name, Verilog)`, in a fixed order.
 pub fn verilog() -> Result<Vec<(String, String)>> {
-    blocks()
-        .into_iter()
-        .map(|(name, block)| {
-            let text = export_verilog(block.as_ref(), name).map_err(|e| e.context(name))?;
-            Ok((
-                format!("{name}.v"),
-                format!(
-                    "// {name}: exported from rust-hdl by `shelling export-verilog`; do not edit.\n{text}"
-                ),
-            ))
-        })
-        .collect()
+    blocks().into_iter().map(|(name, block)| file(name, block.as_ref())).collect()
 }
+
+/// One block's file: `(name.v, Verilog)`.
+fn file(name: &str, block: &dyn Block) -> Result<(String, String)> {
+    let text = export_verilog(block, name).map_err(|e| e.context(name))?;
+    Ok((
+        format!("{name}.v"),
+        format!("// {name}: exported from rust-hdl by `shelling export-verilog`; do not edit.\n{text}"),
+    ))
+}
+
+/// The name of the block [`machine_verilog`] exports for `pes` PEs.
+pub fn machine_block(pes: usize) -> String {
+    format!("machine_{pes}")
+}
+
+/// The PEs of a block named as [`machine_block`] names it (`machine_6`: 6), if it is one.
+pub fn machine_block_pes(block: &str) -> Option<usize> {
+    block.strip_prefix("machine_")?.parse().ok().filter(|n| (1..=MAX_PES).contains(n))
+}
+
+/// The machine of `pes` PEs (1 to [`MAX_PES`]) as the block `machine_{pes}`: `(file name,
+/// Verilog)`. For the FPGA flow's machine of more PEs than the committed two-PE `machine`; not
+/// committed (every PE adds the processing element's whole text, half a megabyte).
+pub fn machine_verilog(pes: usize) -> Result<(String, String)> {
+    macro_rules! export {
+        ($($n:literal)*) => {
+            match pes {
+                $($n => {
+                    let mut m = Machine::<$n>::default();
+                    m.connect_all();
+                    file(&machine_block(pes), &m)
+                })*
+                _ => Err(Error::new(format!("a machine has 1 to {MAX_PES} PEs, not {pes}"))),
+            }
+        };
+    }
+    export!(1 2 3 4 5 6 7 8)
+}
+const _: () = assert!(MAX_PES == 8, "machine_verilog lists the machines of 1 to 8 PEs");
 
 /// FNV-1a, 64 bits, of `bytes`: a hash stable across platforms and releases (unlike the
 /// standard library's hashers), for naming what a result was computed from.

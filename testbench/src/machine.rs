@@ -14,12 +14,11 @@
 //!
 //! The host memory is a [`HostMemory`] (one port, one patch per `T_c`) outside either.
 //!
-//! The host runs the machine in rounds ([`run_round`]): each PE is given one source (its setup,
-//! its command stream); the directions are written into every PE at once (each PE's ray ports
-//! are its own), the command phases run together, sharing the memory, until every PE is idle,
-//! and the hits are read out of every PE at once. A PE that ends its commands early idles until
-//! the round ends: the round is the machine's unit of work, as the paper's host hands out a
-//! source per processor.
+//! The host runs each PE through its own queue of sources ([`run_queues`]): a source's
+//! directions are written into the PE (its ray ports are its own), its command stream runs on
+//! the shared memory, its hits are read out, and the PE's next source follows at once, whatever
+//! the other PEs do: one PE's setup and readout overlap the others' commands, and no PE waits
+//! for another's source to end.
 
 use crate::memory::HostMemory;
 use crate::pe::{CacheConfig, Command, CommandHost, PeCounters, PeSetup};
@@ -159,150 +158,175 @@ impl<const N: usize> MachineSim for Driver<Machine<N>> {
     }
 }
 
-/// One PE's work in a round: a source.
+/// A source for a PE: its setup and its command stream.
 #[derive(Clone, Copy, Debug)]
 pub struct Work<'a> {
     pub setup: &'a PeSetup,
     pub commands: &'a [Command],
 }
 
-/// What a round took.
+/// One source as a PE traced it.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct RoundCounters {
-    /// Cycles of the round: setup, commands and readout, each the longest PE's.
-    pub cycles: u64,
-    pub setup_cycles: u64,
-    /// From the first command to every PE idle with every request answered.
-    pub command_cycles: u64,
-    pub readout_cycles: u64,
-    /// Patches the host memory delivered in the round.
-    pub memory_loads: u64,
-    /// Each PE's counters (its `cycles` from the round's first command to its own last
-    /// command done; `memory_loads` its share of the host's answers).
-    pub pes: Vec<PeCounters>,
+pub struct Traced {
+    pub hits: Vec<Option<Nearest>>,
+    /// Its counters (`cycles` its command phase's; `memory_loads` its share of the host's
+    /// answers; `setup_cycles` and `readout_cycles` its own).
+    pub counters: PeCounters,
+    /// The machine cycles at which its setup began and its readout ended.
+    pub start: u64,
+    pub end: u64,
 }
 
-/// Runs one round on the machine `m` (`work.len()` of its PEs given a source, the rest idle),
-/// sharing `memory`. Returns each worked PE's hits and the round's counters.
-pub fn run_round<M: MachineSim>(
+/// What a run of the machine took.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MachineCounters {
+    /// From the first setup to the last readout, the host memory idle.
+    pub cycles: u64,
+    /// Patches the host memory delivered in the run.
+    pub memory_loads: u64,
+    /// Each PE's sources, in the order given.
+    pub pes: Vec<Vec<Traced>>,
+}
+
+/// Where one PE is in its queue.
+enum Phase {
+    /// Writing the directions: the `c`-th clock of `rays + 1`.
+    Setup(usize),
+    Commands(Box<CommandHost>),
+    /// Reading the hits: the `c`-th clock of `rays + READOUT_LATENCY - 1`.
+    Readout(usize),
+    Done,
+}
+
+/// Runs each PE `p` through its queue `queues[p]` of sources, one after another, sharing
+/// `memory`: a PE sets up its next source as soon as it has read out the last one, whatever the
+/// others do, so one PE's setup and readout (on its own ray ports) overlap the others' commands
+/// on the shared memory. PEs without a queue idle. `done(sources done)` after each source's
+/// readout. Returns every source's hits and counters.
+pub fn run_queues<M: MachineSim>(
     m: &mut M,
     memory: &mut HostMemory,
     cache: CacheConfig,
-    work: &[Work],
-) -> Result<(Vec<Vec<Option<Nearest>>>, RoundCounters)> {
+    queues: &[Vec<Work>],
+    mut done: impl FnMut(usize),
+) -> Result<MachineCounters> {
     let n = m.pes();
     check_pes(n)?;
-    if work.len() > n {
-        return Err(Error::new(format!("one source per PE in a round: {n} PEs, {} sources", work.len())));
+    if queues.len() > n {
+        return Err(Error::new(format!("a queue per PE: {n} PEs, {} queues", queues.len())));
     }
     cache.check()?;
-    for w in work {
+    for w in queues.iter().flatten() {
         w.setup.check(w.commands, memory.len())?;
     }
-    let mut k = RoundCounters { pes: vec![PeCounters::default(); work.len()], ..Default::default() };
-    let rays: Vec<usize> = work.iter().map(|w| w.setup.dirs.len()).collect();
-    let longest = rays.iter().copied().max().unwrap_or(0);
-
-    // Setup, every PE at once: its source and cache setting, then a direction a clock (as
-    // `pe::load_source`), then a clock without.
-    for c in 0..=longest {
-        m.drive(|p, i| {
-            let Some(w) = work.get(p) else { return };
-            [i.origin_x, i.origin_y] = w.setup.origin;
-            [i.normal_x, i.normal_y] = w.setup.normal;
-            i.cfg_cache_enable = cache.lines.is_some();
-            i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
-            i.dir_we = c < rays[p];
-            if c < rays[p] {
-                i.dir_addr = c as u16;
-                [i.dir_x, i.dir_y] = w.setup.dirs[c];
-            }
-        })?;
-        m.tick(None)?;
-    }
-    k.setup_cycles = longest as u64 + 1;
-    for (p, &r) in rays.iter().enumerate() {
-        k.pes[p].setup_cycles = r as u64 + 1;
-    }
-
-    // Commands: every PE's stream, the arbiter and the memory, until every PE is idle and the
-    // memory has answered everything.
-    let mut hosts: Vec<CommandHost> = work
-        .iter()
-        .enumerate()
-        .map(|(p, w)| CommandHost::new(w.setup, w.commands, m.outputs(p), 0))
-        .collect();
-    let mut done: Vec<Option<u64>> = vec![None; work.len()];
-    let mut answer: Option<[i32; 4]> = None;
-    let mut now = 0u64;
+    let mut k = MachineCounters { pes: vec![Vec::new(); queues.len()], ..Default::default() };
+    let mut phase: Vec<Phase> =
+        queues.iter().map(|q| if q.is_empty() { Phase::Done } else { Phase::Setup(0) }).collect();
+    let mut current: Vec<Traced> = vec![Traced::default(); queues.len()];
+    let latency = READOUT_LATENCY as usize;
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
     let loads_before = memory.loads();
+    let mut answer: Option<[i32; 4]> = None;
+    let mut now = 0u64;
+    let mut finished = 0;
     loop {
-        m.drive(|p, i| CommandHost::set_inputs(i, hosts.get(p).and_then(|h| h.command())))?;
-        for (p, h) in hosts.iter_mut().enumerate() {
-            h.before_tick(&m.outputs(p));
+        // This cycle's inputs, PE by PE from its phase.
+        for (p, ph) in phase.iter().enumerate() {
+            if let Phase::Readout(c) = ph {
+                if *c < queues[p][k.pes[p].len()].setup.dirs.len() && m.outputs(p).busy {
+                    return Err(Error::new(format!("PE {p}: readout while the unit is busy")));
+                }
+            }
+        }
+        m.drive(|p, i| {
+            i.dir_we = false;
+            i.res_re = false;
+            let cmd = match phase.get(p) {
+                Some(Phase::Setup(c)) => {
+                    let setup = queues[p][k.pes[p].len()].setup;
+                    [i.origin_x, i.origin_y] = setup.origin;
+                    [i.normal_x, i.normal_y] = setup.normal;
+                    i.cfg_cache_enable = cache.lines.is_some();
+                    i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
+                    if let Some(&d) = setup.dirs.get(*c) {
+                        i.dir_we = true;
+                        i.dir_addr = *c as u16;
+                        [i.dir_x, i.dir_y] = d;
+                    }
+                    None
+                }
+                Some(Phase::Commands(h)) => h.command(),
+                Some(Phase::Readout(c)) => {
+                    i.res_re = *c < queues[p][k.pes[p].len()].setup.dirs.len();
+                    i.res_addr = *c as u16;
+                    None
+                }
+                _ => None,
+            };
+            CommandHost::set_inputs(i, cmd);
+        })?;
+        for (p, ph) in phase.iter_mut().enumerate() {
+            if let Phase::Commands(h) = ph {
+                h.before_tick(&m.outputs(p));
+            }
         }
         let request = m.host_request();
         m.tick(answer)?;
         answer = memory.cycle(request)?;
         now += 1;
         let mut all = true;
-        for (p, h) in hosts.iter_mut().enumerate() {
+        for (p, ph) in phase.iter_mut().enumerate() {
             let out = m.outputs(p);
-            h.after_tick(&out, now, &mut |_, _| {});
-            if done[p].is_none() && h.finished(&out) {
-                done[p] = Some(now);
+            let Some(work) = queues[p].get(k.pes[p].len()) else { continue };
+            let rays = work.setup.dirs.len();
+            let t = &mut current[p];
+            match ph {
+                Phase::Setup(c) => {
+                    if *c == 0 {
+                        t.start = now - 1;
+                    }
+                    *c += 1;
+                    if *c > rays {
+                        t.counters.setup_cycles = *c as u64;
+                        *ph =
+                            Phase::Commands(Box::new(CommandHost::new(work.setup, work.commands, out, now)));
+                    }
+                }
+                Phase::Commands(h) => {
+                    h.after_tick(&out, now, &mut |_, _| {});
+                    if h.finished(&out) {
+                        t.counters = h.counters(&out, now, t.counters);
+                        t.counters.memory_loads = t.counters.patch_loads - t.counters.cache_hits;
+                        *ph = Phase::Readout(0);
+                    } else {
+                        h.check_progress(now, limit)
+                            .map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
+                    }
+                }
+                Phase::Readout(c) => {
+                    if *c + 1 >= latency && *c + 1 - latency < rays {
+                        t.hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
+                    }
+                    *c += 1;
+                    if *c == rays + latency - 1 {
+                        t.counters.readout_cycles = *c as u64;
+                        t.end = now;
+                        k.pes[p].push(std::mem::take(t));
+                        finished += 1;
+                        done(finished);
+                        *ph = if k.pes[p].len() < queues[p].len() { Phase::Setup(0) } else { Phase::Done };
+                    }
+                }
+                Phase::Done => {}
             }
-            all &= done[p].is_some();
-            // A PE done waits for the others without progress of its own.
-            if done[p].is_none() {
-                h.check_progress(now, limit).map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
-            }
+            all &= matches!(ph, Phase::Done);
         }
-        // Idle PEs have no request outstanding: the host memory's being idle ends the round.
+        // Every PE done has no request outstanding: the host memory's being idle ends the run.
         if all && answer.is_none() && memory.pending() == 0 && request.is_none() {
             break;
         }
     }
-    k.command_cycles = now;
+    k.cycles = now;
     k.memory_loads = memory.loads() - loads_before;
-    for (p, h) in hosts.iter().enumerate() {
-        let end = done[p].unwrap_or(now);
-        k.pes[p] = h.counters(&m.outputs(p), end, k.pes[p].clone());
-        k.pes[p].memory_loads = k.pes[p].patch_loads - k.pes[p].cache_hits;
-    }
-
-    // Readout, every PE at once (as `pe::read_out`): a request a clock, each hit
-    // READOUT_LATENCY clocks later.
-    let latency = READOUT_LATENCY as usize;
-    let mut hits: Vec<Vec<Option<Nearest>>> = rays.iter().map(|&r| Vec::with_capacity(r)).collect();
-    for c in 0..longest + latency - 1 {
-        for (p, &r) in rays.iter().enumerate() {
-            if c < r && m.outputs(p).busy {
-                return Err(Error::new(format!("PE {p}: readout while the unit is busy")));
-            }
-        }
-        m.drive(|p, i| {
-            let r = rays.get(p).copied().unwrap_or(0);
-            i.res_re = c < r;
-            if c < r {
-                i.res_addr = c as u16;
-            }
-        })?;
-        m.tick(None)?;
-        if c + 1 >= latency {
-            for (p, h) in hits.iter_mut().enumerate() {
-                if c + 1 - latency < rays[p] {
-                    let o = m.outputs(p);
-                    h.push(o.res_hit.then_some(Nearest { key: o.res_key, id: o.res_id }));
-                }
-            }
-        }
-    }
-    k.readout_cycles = (longest + latency - 1) as u64;
-    for (p, &r) in rays.iter().enumerate() {
-        k.pes[p].readout_cycles = (r + latency - 1) as u64;
-    }
-    k.cycles = k.setup_cycles + k.command_cycles + k.readout_cycles;
-    Ok((hits, k))
+    Ok(k)
 }

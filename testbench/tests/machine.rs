@@ -8,7 +8,7 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use shelling_hdl::machine::Machine;
 use shelling_hdl::pe::ProcessingElement;
-use shelling_testbench::machine::{run_round, Composed, MachineSim, RoundCounters, Work};
+use shelling_testbench::machine::{run_queues, Composed, MachineCounters, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{flush_cache, model, run, CacheConfig, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
@@ -83,22 +83,38 @@ fn sources(
     (mem, work)
 }
 
-/// One round on `sims` against the model, PE by PE; returns the round's counters.
-fn round<M: MachineSim>(
+/// Queues of `work[i]` on PE `pe_of[i]` (one source per PE: `0, 1, 2, ...`).
+fn queues<'a>(work: &'a [(PeSetup, Vec<Command>)], pe_of: &[usize]) -> Vec<Vec<Work<'a>>> {
+    let mut q: Vec<Vec<Work>> = vec![Vec::new(); pe_of.iter().max().map_or(0, |m| m + 1)];
+    for ((setup, commands), &p) in work.iter().zip(pe_of) {
+        q[p].push(Work { setup, commands });
+    }
+    q
+}
+
+/// `work[i]` on PE `pe_of[i]`, each PE's sources one after another, against the model, source
+/// by source; returns the run's counters.
+fn run_on<M: MachineSim>(
     machine: &mut M,
     seed: u64,
     mem: &[[i32; 4]],
     work: &[(PeSetup, Vec<Command>)],
+    pe_of: &[usize],
     tc: u32,
     cache: CacheConfig,
-) -> Result<RoundCounters> {
+) -> Result<MachineCounters> {
     let mut memory = HostMemory::new(mem.to_vec(), tc)?;
-    let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
-    let (hits, k) = run_round(machine, &mut memory, cache, &jobs)?;
-    for (p, (setup, cmds)) in work.iter().enumerate() {
+    let k = run_queues(machine, &mut memory, cache, &queues(work, pe_of), |_| {})?;
+    let mut next = vec![0; k.pes.len()];
+    for (i, ((setup, cmds), &p)) in work.iter().zip(pe_of).enumerate() {
         let (want, counts) = model(setup, mem, cmds);
-        assert_eq!(hits[p], want, "seed {seed:#x}, T_c {tc}, {cache:?}: PE {p}'s hits against the model");
-        let pe = &k.pes[p];
+        let traced = &k.pes[p][next[p]];
+        next[p] += 1;
+        assert_eq!(
+            traced.hits, want,
+            "seed {seed:#x}, T_c {tc}, {cache:?}: source {i}'s hits on PE {p} against the model"
+        );
+        let pe = &traced.counters;
         assert_eq!(
             (pe.patch_loads, pe.passed, pe.tests),
             (counts.loads, counts.passed, counts.tests),
@@ -106,9 +122,22 @@ fn round<M: MachineSim>(
         );
         assert!(counts.tests > counts.loads, "seed {seed:#x}: PE {p}'s stream is degenerate: {counts:?}");
     }
-    let answered: u64 = k.pes.iter().map(|p| p.memory_loads).sum();
+    let answered: u64 = k.pes.iter().flatten().map(|t| t.counters.memory_loads).sum();
     assert_eq!(answered, k.memory_loads, "seed {seed:#x}: every host answer reached one PE");
     Ok(k)
+}
+
+/// One source per PE.
+fn round<M: MachineSim>(
+    machine: &mut M,
+    seed: u64,
+    mem: &[[i32; 4]],
+    work: &[(PeSetup, Vec<Command>)],
+    tc: u32,
+    cache: CacheConfig,
+) -> Result<MachineCounters> {
+    let pe_of: Vec<usize> = (0..work.len()).collect();
+    run_on(machine, seed, mem, work, &pe_of, tc, cache)
 }
 
 #[test]
@@ -177,26 +206,23 @@ fn pes_work_in_parallel_until_the_host_memory_bounds_them() -> Result<()> {
                 cmds,
                 |_, _| {},
             )?;
-            alone += c.cycles;
+            alone += c.setup_cycles + c.cycles + c.readout_cycles;
         }
-        println!("T_c {tc}: {n} PEs {} command cycles, one PE after another {alone}", k.command_cycles);
+        println!("T_c {tc}: {n} PEs {} cycles, one PE after another {alone}", k.cycles);
         if parallel {
             assert!(
-                k.command_cycles * 2 < alone,
+                k.cycles * 2 < alone,
                 "seed {seed:#x}, T_c {tc}: {n} PEs took {} cycles, one PE {alone} for the same sources",
-                k.command_cycles
+                k.cycles
             );
         } else {
             assert!(
-                k.command_cycles >= k.memory_loads * tc as u64,
+                k.cycles >= k.memory_loads * tc as u64,
                 "seed {seed:#x}, T_c {tc}: {} loads in {} cycles",
                 k.memory_loads,
-                k.command_cycles
+                k.cycles
             );
-            assert!(
-                k.command_cycles * 10 < alone * 11,
-                "T_c {tc}: the memory-bound machine no slower than one PE"
-            );
+            assert!(k.cycles * 10 < alone * 11, "T_c {tc}: the memory-bound machine no slower than one PE");
         }
     }
     Ok(())
@@ -209,16 +235,17 @@ fn a_machine_refuses_more_pes_than_the_arbiter_serves() -> Result<()> {
     assert!(err.message().contains("1 to 8 PEs"), "{}", err.message());
     let (mem, work) = sources(7, 3, 8, 4);
     let mut two = Composed::new((0..2).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>>>()?)?;
-    let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
-    let err = run_round(&mut two, &mut HostMemory::new(mem, 1)?, CacheConfig::default(), &jobs).unwrap_err();
-    assert!(err.message().contains("2 PEs, 3 sources"), "{}", err.message());
+    let q = queues(&work, &[0, 1, 2]);
+    let err =
+        run_queues(&mut two, &mut HostMemory::new(mem, 1)?, CacheConfig::default(), &q, |_| {}).unwrap_err();
+    assert!(err.message().contains("2 PEs, 3 queues"), "{}", err.message());
     Ok(())
 }
 
-/// A PE whose source ends early waits for the round's longest without being taken for stuck,
-/// and a second round on the same memory counts only its own loads.
+/// A PE whose source ends early waits for the run's longest without being taken for stuck,
+/// and a second run on the same memory counts only its own loads.
 #[test]
-fn a_round_waits_for_its_longest_source() -> Result<()> {
+fn a_pe_done_early_is_not_taken_for_stuck() -> Result<()> {
     let seed = 0x3ac1_30;
     let (mem, mut work) = sources(seed, 2, 400, 200);
     work[0].1.truncate(2);
@@ -226,20 +253,61 @@ fn a_round_waits_for_its_longest_source() -> Result<()> {
     let mut machine = Composed::new((0..2).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>>>()?)?;
     let mut memory = HostMemory::new(mem.clone(), tc)?;
     for round in 0..2 {
-        let jobs: Vec<Work> = work.iter().map(|(setup, commands)| Work { setup, commands }).collect();
-        let (hits, k) = run_round(&mut machine, &mut memory, CacheConfig::default(), &jobs)?;
+        let k =
+            run_queues(&mut machine, &mut memory, CacheConfig::default(), &queues(&work, &[0, 1]), |_| {})?;
         for (p, (setup, cmds)) in work.iter().enumerate() {
-            assert_eq!(hits[p], model(setup, &mem, cmds).0, "seed {seed:#x}, round {round}: PE {p}'s hits");
+            assert_eq!(
+                k.pes[p][0].hits,
+                model(setup, &mem, cmds).0,
+                "seed {seed:#x}, run {round}: PE {p}'s hits"
+            );
         }
-        let answered: u64 = k.pes.iter().map(|p| p.memory_loads).sum();
-        assert_eq!(answered, k.memory_loads, "seed {seed:#x}, round {round}: the round's loads");
+        let answered: u64 = k.pes.iter().flatten().map(|t| t.counters.memory_loads).sum();
+        assert_eq!(answered, k.memory_loads, "seed {seed:#x}, run {round}: the run's loads");
+        let first = &k.pes[0][0];
         assert!(
-            k.command_cycles > 64 * (tc as u64 * 2 + 64) + k.pes[0].cycles,
-            "seed {seed:#x}: PE 0 waited only {} cycles after its {}",
-            k.command_cycles - k.pes[0].cycles,
-            k.pes[0].cycles
+            k.cycles > 64 * (tc as u64 * 2 + 64) + first.end,
+            "seed {seed:#x}: PE 0 waited only {} cycles after its source's end at {}",
+            k.cycles - first.end,
+            first.end
         );
     }
+    Ok(())
+}
+
+/// Each PE runs its own queue without waiting for the others: a PE with short sources sets up
+/// and reads out its next one while the other PE is still in its long source's commands, every
+/// source's hits are its model's, and the run is shorter than the PEs' queues one after
+/// another. Rust-hdl's PEs and the compiled ones agree, cycles included.
+#[test]
+fn each_pe_runs_its_queue_without_waiting_for_the_others() -> Result<()> {
+    let seed = 0x3ac1_50;
+    let (mem, mut work) = sources(seed, 4, 128, 90);
+    for (_, cmds) in &mut work[1..] {
+        cmds.truncate(cmds.len() / 4);
+    }
+    // PE 0 the long source, PE 1 the three short ones, then the same on three PEs.
+    let pe_of = [0, 1, 1, 1];
+    let fast = |n| (0..n).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>>>();
+    let slow = |n| (0..n).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<Vec<_>>>();
+    let cache = CacheConfig { lines: Some(32) };
+    let k = run_on(&mut Composed::new(fast(2)?)?, seed, &mem, &work, &pe_of, 4, cache)?;
+    let rtl = run_on(&mut Composed::new(slow(2)?)?, seed, &mem, &work, &pe_of, 4, cache)?;
+    assert_eq!(k, rtl, "seed {seed:#x}: the compiled PEs and rust-hdl's");
+    let long = &k.pes[0][0];
+    let short = &k.pes[1];
+    assert!(
+        short[1].start < long.end - long.counters.readout_cycles && short[1].end < long.end,
+        "seed {seed:#x}: PE 1's second source ({}..{}) did not overlap PE 0's commands (to {})",
+        short[1].start,
+        short[1].end,
+        long.end - long.counters.readout_cycles
+    );
+    for w in short.windows(2) {
+        assert_eq!(w[1].start, w[0].end, "seed {seed:#x}: PE 1 set up its next source at once");
+    }
+    let serial: u64 = k.pes.iter().flatten().map(|t| t.end - t.start).sum();
+    assert!(k.cycles < serial, "seed {seed:#x}: {} cycles, {serial} one after another", k.cycles);
     Ok(())
 }
 

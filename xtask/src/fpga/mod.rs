@@ -25,6 +25,8 @@ use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use report::{PathSummary, Report, Use};
 use serde::Serialize;
+use shelling_hdl::arbiter::MAX_PES;
+use shelling_testbench::export::{machine_block_pes, machine_verilog};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::fs::File;
@@ -209,8 +211,11 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         known.iter().map(|s| s.to_string()).collect()
     } else {
         for b in &args.blocks {
-            if !known.contains(&b.as_str()) {
-                bail!("no block `{b}`; the blocks are {}", known.join(", "));
+            if !known.contains(&b.as_str()) && machine_block_pes(b).is_none() {
+                bail!(
+                    "no block `{b}`; the blocks are {}, and machine_N for the machine of N PEs (N 1 to {MAX_PES})",
+                    known.join(", ")
+                );
             }
         }
         args.blocks.clone()
@@ -245,8 +250,17 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         shelling_testbench::export::verilog().map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
     let verilog_hash = shelling_testbench::export::hash(&files);
     // Each block's own file, hashed alone: what its results are checked against.
+    // Machines of more PEs than the exported one's, each into its own file.
+    let mut machines = Vec::new();
+    for pes in blocks.iter().filter_map(|b| machine_block_pes(b)) {
+        let (name, text) = machine_verilog(pes).map_err(|e| anyhow::anyhow!("exporting the Verilog: {e}"))?;
+        let path = out.join("verilog").join(&name);
+        std::fs::write(&path, &text).with_context(|| format!("writing {}", path.display()))?;
+        machines.push((name, text));
+    }
     let block_hashes: BTreeMap<String, String> = files
         .iter()
+        .chain(&machines)
         .filter_map(|(name, text)| {
             let block = name.strip_suffix(".v")?;
             Some((block.to_string(), shelling_testbench::export::hash(&[(name.clone(), text.clone())])))
