@@ -41,6 +41,7 @@ use std::time::{Duration, Instant};
 
 pub mod cycles;
 pub mod d3;
+pub mod machine;
 mod plot;
 
 /// The techniques measured, in row order.

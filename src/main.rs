@@ -63,6 +63,9 @@ enum Command {
     /// share one host memory through the memory arbiter, cycle-accurate, every PE's hits
     /// checked against the bit-true model of its source.
     Machine(MachineArgs),
+    /// The machine's figures: the workload's sources on 1 to 8 PEs, every technique, T_c and
+    /// cache size, co-simulated (machine.csv, machine.md and SVG charts; FIGURES.md quotes them).
+    MachineFigures(MachineFiguresArgs),
     /// Form factors F_ij of a scene's patches from the tracers' bundles: one row (--source), a
     /// slice of the matrix into a file (--rows), or the merge of slices (--merge).
     FormFactors(radiosity_cli::FormFactorsArgs),
@@ -389,6 +392,65 @@ struct CosimArgs {
     engine: Engine,
     #[command(flatten)]
     tune: TuneArgs,
+}
+
+#[derive(Args)]
+struct MachineFiguresArgs {
+    /// Output directory (created).
+    #[arg(long, default_value = "figures")]
+    out: PathBuf,
+    /// Segment lengths, comma separated.
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16,32,64,128", allow_hyphen_values = true)]
+    lengths: Vec<f64>,
+    /// Sources per length: a spatially compact run of the scene's patches.
+    #[arg(long, default_value_t = 16, allow_negative_numbers = true)]
+    sources: usize,
+    /// PE counts, comma separated (1 among them: the speedups are over one PE).
+    #[arg(long, value_delimiter = ',', default_value = "1,2,4,8", allow_hyphen_values = true)]
+    pes: Vec<usize>,
+    /// Host memory load times T_c (cycles per patch), comma separated.
+    #[arg(long = "tc", value_delimiter = ',', default_value = "1,4,16,64", allow_hyphen_values = true)]
+    tcs: Vec<u32>,
+    /// Per-PE cache sizes, comma separated: `off` or a power of two up to 4096 patches.
+    #[arg(long, value_delimiter = ',', default_value = "off,128,1024")]
+    caches: Vec<String>,
+    /// The PEs' simulator (auto: Verilator where installed).
+    #[arg(long, value_enum, default_value_t = Engine::Auto)]
+    engine: Engine,
+}
+
+fn machine_figures_cmd(a: MachineFiguresArgs) -> Result<()> {
+    use shelling::figures::machine::{write, MachineFigureOptions};
+    let caches = a
+        .caches
+        .iter()
+        .map(|c| match c.as_str() {
+            "off" => Ok(None),
+            n => n.parse::<u32>().map(Some).map_err(|_| {
+                anyhow::anyhow!("--caches {c}: each `off` or a power of two up to 4096 patches")
+            }),
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let o = MachineFigureOptions {
+        out: a.out,
+        lengths: a.lengths,
+        sources: a.sources,
+        pes: a.pes,
+        tcs: a.tcs,
+        caches,
+        engine: a.engine,
+        progress: std::io::IsTerminal::is_terminal(&std::io::stderr()),
+        ..Default::default()
+    };
+    let t = std::time::Instant::now();
+    let rows = write(&o)?;
+    println!(
+        "{} machine runs in {:.0} s, every hit checked: {}/machine.csv, machine.md and the charts",
+        rows.len(),
+        t.elapsed().as_secs_f64(),
+        o.out.display()
+    );
+    Ok(())
 }
 
 #[derive(Args)]
@@ -882,6 +944,7 @@ fn run(cli: Cli, figures_given: &[&'static str]) -> Result<()> {
         Command::Trace(a) => trace_cmd(a),
         Command::Cosim(a) => cosim_cmd(a),
         Command::Machine(a) => machine_cmd(a),
+        Command::MachineFigures(a) => machine_figures_cmd(a),
         Command::FormFactors(a) => radiosity_cli::form_factors_cmd(a),
         Command::Radiosity(a) => radiosity_cli::radiosity_cmd(a),
         Command::ExportVerilog(a) => {

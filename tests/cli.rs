@@ -757,6 +757,52 @@ fn cli_machine_rejects_bad_options() {
     );
 }
 
+#[test]
+fn cli_machine_figures_sweep_and_reject_bad_options() {
+    let dir = TempDir::new("machine-figures");
+    let out = dir.join("mf");
+    let text = ok(&[
+        "machine-figures",
+        "--out",
+        path_arg(&out),
+        "--lengths",
+        "32",
+        "--sources",
+        "4",
+        "--pes",
+        "1,2",
+        "--tc",
+        "4",
+        "--caches",
+        "off,64",
+        "--engine",
+        "verilator",
+    ]);
+    assert!(text.contains("every hit checked"), "{text}");
+    let csv = std::fs::read_to_string(out.join("machine.csv")).expect("machine.csv written");
+    // 3 techniques × 2 caches × 2 PE counts in blocks, and 3 techniques × 2 other deals.
+    assert_eq!(csv.lines().count(), 1 + 12 + 6, "{csv}");
+    assert!(csv.lines().any(|l| l.starts_with("32,stochastic,4,64,2,blocks,4,")), "{csv}");
+    for f in [
+        "machine.md",
+        "machine_speedup_cache_off.svg",
+        "machine_speedup_cache_64.svg",
+        "machine_port_busy.svg",
+    ] {
+        assert!(out.join(f).exists(), "{f} written");
+    }
+    let base = ["machine-figures", "--out", path_arg(&out)];
+    let with =
+        |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
+    fails(&with(&["--caches", "100"]), &["--caches", "power of two", "100"]);
+    fails(&with(&["--caches", "big"]), &["--caches big"]);
+    fails(&with(&["--pes", "2,4"]), &["--pes", "include 1"]);
+    fails(&with(&["--pes", "1,9"]), &["--pes", "9"]);
+    fails(&with(&["--tc", "0"]), &["--tc", "0"]);
+    fails(&with(&["--sources", "0"]), &["--sources", "0"]);
+    fails(&with(&["--lengths", "2000"]), &["--lengths", "1024"]);
+}
+
 // ----- fixed point, agreement, Verilog export -----
 
 #[test]

@@ -662,7 +662,7 @@ pub(super) fn write_table(f: &mut fmt::Formatter<'_>, rows: &[CycleRow]) -> fmt:
 // ---------------------------------------------------------------------------------------------
 
 /// One colour per `T_c` (in the order of [`FigureOptions::tcs`], repeating after six).
-const TC_COLORS: [RGBColor; 6] = [
+pub(super) const TC_COLORS: [RGBColor; 6] = [
     RGBColor(0x1f, 0x77, 0xb4),
     RGBColor(0xff, 0x7f, 0x0e),
     RGBColor(0x2c, 0xa0, 0x2c),
@@ -671,7 +671,7 @@ const TC_COLORS: [RGBColor; 6] = [
     RGBColor(0x8c, 0x56, 0x4b),
 ];
 
-fn short(m: Method) -> &'static str {
+pub(super) fn short(m: Method) -> &'static str {
     match m {
         Method::Conventional => "conv.",
         Method::Stochastic => "S",

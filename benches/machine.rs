@@ -1,0 +1,137 @@
+//! The headline: rays per second of the machine against the best software tracer, measured in
+//! one run.
+//!
+//! Workload ([`shelling::figures::machine::headline_scene`]): the paper's scene (1000 segments
+//! of length 32 in [0, 1024)², seed 7), every one of its 1000 sources, R = 1024 rays (angle
+//! set).
+//!
+//! - Software: the stochastic and deterministic tracers, every source once per round, on one
+//!   thread and on every core (rayon, one source per task); the median round; the faster
+//!   technique is the baseline.
+//! - Machine: the same sources co-simulated cycle by cycle on N PEs (every hit checked against
+//!   the bit-true model), `T_c` = 16 shared by all PEs, 128-patch caches per PE (under a quarter
+//!   of the scene), dealt in blocks; rays per second = rays × clock / cycles, the clock the
+//!   median post-route rate of the machine of that N on ECP5 (`hdl/fpga/ecp5-machine-seeds.json`)
+//!   where it was measured, else the PE's alone (`hdl/fpga/ecp5-seeds.json`, said so).
+//!
+//! Run: `cargo bench --bench machine` (`-- --rounds N`; `-- --write FILE` writes the table as
+//! Markdown, as `figures/headline.md` is written).
+
+use rayon::prelude::*;
+use shelling::cosim::Engine;
+use shelling::figures::machine::{headline_run, headline_scene, HEADLINE_CACHE, HEADLINE_TC};
+use shelling::rays::{Bundle, RaySet};
+use shelling::trace::{Method, ShellParams};
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::path::Path;
+use std::time::Instant;
+
+/// The median post-route clock (MHz) of `block` in the results file `file`, if measured.
+fn median_mhz(file: &str, block: &str) -> Option<f64> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("hdl/fpga").join(file);
+    let json: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(path).ok()?).ok()?;
+    json["blocks"].as_array()?.iter().find(|b| b["block"] == block)?["median_mhz"].as_f64()
+}
+
+fn main() {
+    let arg = |name: &str| std::env::args().skip_while(|a| a != name).nth(1);
+    let rounds: usize = arg("--rounds").and_then(|v| v.parse().ok()).unwrap_or(7);
+    let (prepared, order) = headline_scene().expect("the headline scene");
+    let bundles: Vec<Bundle> =
+        order.iter().map(|&k| prepared.patch_bundle(k, RaySet::Angle, 1024).expect("valid source")).collect();
+    let rays: usize = bundles.iter().map(Bundle::len).sum();
+    let params = ShellParams::default();
+    let one = |m: Method, b: &Bundle| prepared.trace(m, b, &params).expect("valid").hits.len();
+    let threads = rayon::current_num_threads();
+
+    // Software: rounds interleaved over technique and threading; the median round.
+    let software = [Method::Stochastic, Method::Deterministic];
+    for &m in &software {
+        black_box(bundles.iter().map(|b| one(m, b)).sum::<usize>());
+    }
+    let mut times = vec![[Vec::new(), Vec::new()]; software.len()];
+    for _ in 0..rounds {
+        for (i, &m) in software.iter().enumerate() {
+            let t = Instant::now();
+            black_box(bundles.iter().map(|b| one(m, b)).sum::<usize>());
+            times[i][0].push(t.elapsed().as_secs_f64());
+            let t = Instant::now();
+            black_box(bundles.par_iter().map(|b| one(m, b)).sum::<usize>());
+            times[i][1].push(t.elapsed().as_secs_f64());
+        }
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let rates: Vec<[f64; 2]> =
+        times.iter_mut().map(|[a, b]| [rays as f64 / median(a), rays as f64 / median(b)]).collect();
+    let best = (0..software.len()).max_by(|&a, &b| rates[a][0].total_cmp(&rates[b][0])).expect("two tracers");
+    let [core, cores] = rates[best];
+
+    // The machine: the largest N measured on the FPGA, and 8.
+    let measured: Option<(usize, f64)> = (1..=8)
+        .rev()
+        .find_map(|n| median_mhz("ecp5-machine-seeds.json", &format!("machine_{n}")).map(|f| (n, f)));
+    let pe_mhz = median_mhz("ecp5-seeds.json", "processing_element").expect("the PE's results are committed");
+    let mut pes: Vec<usize> = vec![1];
+    pes.extend(measured.map(|m| m.0));
+    pes.push(8);
+    pes.dedup();
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "The paper's workload: 1000 segments of length 32, seed 7, every source, R = 1024 (`cargo bench --bench \
+         machine`). Machine: `T_c` = {HEADLINE_TC} cycles per patch on one host memory shared by all PEs, a \
+         {HEADLINE_CACHE}-patch cache per PE, every hit checked against the bit-true model; software: the \
+         {} tracer (the faster here), median of {rounds} rounds on this machine ({threads} cores).\n",
+        software[best]
+    );
+    let _ = writeln!(
+        md,
+        "| | technique | cycles | rays per cycle | clock (MHz) | rays/s | × one core | × all cores |"
+    );
+    let _ = writeln!(md, "|---|---|--:|--:|--:|--:|--:|--:|");
+    for (i, &m) in software.iter().enumerate() {
+        let _ = writeln!(
+            md,
+            "| software, 1 core | {m} | | | | {:.1} M | {:.2} | {:.2} |",
+            rates[i][0] / 1e6,
+            rates[i][0] / core,
+            rates[i][0] / cores
+        );
+        let _ = writeln!(
+            md,
+            "| software, {threads} cores | {m} | | | | {:.1} M | {:.2} | {:.2} |",
+            rates[i][1] / 1e6,
+            rates[i][1] / core,
+            rates[i][1] / cores
+        );
+    }
+    for &n in &pes {
+        for &m in &software {
+            let run = headline_run(m, n, Engine::Auto).expect("the machine co-simulates the headline");
+            let (mhz, whose) = match measured {
+                Some((mn, f)) if mn == n => (f, format!("machine_{n}")),
+                _ => (pe_mhz, "the PE's alone".to_string()),
+            };
+            let rate = run.rays as f64 * mhz * 1e6 / run.cycles as f64;
+            let _ = writeln!(
+                md,
+                "| machine, {n} PE{} | {m} | {} | {:.3} | {mhz:.1} ({whose}) | {:.1} M | **{:.2}** | {:.2} |",
+                if n == 1 { "" } else { "s" },
+                run.cycles,
+                run.rays_per_cycle(),
+                rate / 1e6,
+                rate / core,
+                rate / cores
+            );
+        }
+    }
+    print!("{md}");
+    if let Some(path) = arg("--write") {
+        std::fs::write(&path, &md).unwrap_or_else(|e| panic!("writing {path}: {e}"));
+        eprintln!("written to {path}");
+    }
+}
