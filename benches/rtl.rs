@@ -128,8 +128,14 @@ fn machine(rounds: usize) {
             prepared.schedule(Method::Stochastic, &bundle, &ShellParams::default()).expect("fits")
         })
         .collect();
-    let config =
-        |pes| MachineConfig { pes, tc: 16, cache: Some(256), deal: Deal::Blocks, engine: Engine::Verilator };
+    let config = |pes| MachineConfig {
+        pes,
+        tc: 16,
+        cache: Some(256),
+        deal: Deal::Blocks,
+        engine: Engine::Verilator,
+        vcd: None,
+    };
     let (mut rate8, mut rate1, mut cycles) = (vec![], vec![], (0, 0));
     for _ in 0..rounds {
         let t = Instant::now();

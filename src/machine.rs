@@ -21,19 +21,22 @@
 //! A part sees the patches of its own angular range, so each PE's cache holds a slice of the
 //! scene's directions rather than a region of it.
 
-use crate::cosim::{check_against_model, CosimError, Engine};
+use crate::cosim::{check_against_model, CosimError, Engine, VcdWindow};
 use crate::geom::Segment;
 use crate::limits::{check_range, MAX_TC};
 use crate::rays::{Bundle, RaySet};
 use crate::run::{GriddedScene, Scheduled};
+use crate::staged::Staged;
 use crate::trace::{Method, ShellParams};
 use crate::workstream::commands;
 use serde::Serialize;
 use shelling_hdl::arbiter::MAX_PES;
+use shelling_hdl::machine::Machine;
 use shelling_testbench::machine::{run_queues, Composed, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, rust_hdl_pe, CacheConfig, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
+use shelling_testbench::Driver;
 
 /// How the sources, in their order, are dealt to the PEs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
@@ -157,6 +160,9 @@ pub struct MachineConfig {
     pub deal: Deal,
     /// Verilator or rust-hdl (resolved: not `Auto`).
     pub engine: Engine,
+    /// A VCD of the machine's own RTL (`Machine<N>` on rust-hdl's simulation, whatever
+    /// `engine` says) over a window of cycles, written whole or not at all.
+    pub vcd: Option<VcdWindow>,
 }
 
 /// What a machine run took.
@@ -211,6 +217,18 @@ pub fn run(
         return Err(CosimError::Config(format!("--pes {}: the machine has 1 to {MAX_PES} PEs", config.pes)));
     }
     check_range("--tc", config.tc, 1, MAX_TC).map_err(CosimError::Config)?;
+    if let Some(v) = &config.vcd {
+        macro_rules! rtl {
+            ($($n:literal)*) => {
+                match config.pes {
+                    $($n => with_vcd(Driver::new(Machine::<$n>::default()).map_err(sim)?, v, schedules, config, progress),)*
+                    _ => unreachable!("checked above"),
+                }
+            };
+        }
+        const _: () = assert!(MAX_PES == 8, "the VCD's machines are listed for 1 to 8 PEs");
+        return rtl!(1 2 3 4 5 6 7 8);
+    }
     match config.engine {
         Engine::Verilator => {
             let sims =
@@ -224,6 +242,34 @@ pub fn run(
             run_on(&mut Composed::new(sims).map_err(sim)?, schedules, config, progress)
         }
     }
+}
+
+/// Runs on the machine's RTL `drv`, writing the VCD window `v` (renamed into place only when
+/// the run passed and met the window).
+fn with_vcd<const N: usize>(
+    mut drv: Driver<Machine<N>>,
+    v: &VcdWindow,
+    schedules: &[Scheduled],
+    config: &MachineConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<MachineRun, CosimError> {
+    if v.from >= v.to {
+        return Err(CosimError::Config(format!("the VCD window {}..{} holds no cycle", v.from, v.to)));
+    }
+    let staged = Staged::file(&v.path)
+        .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
+    drv.stream_vcd(staged.path(), v.from..v.to).map_err(sim)?;
+    let result = run_on(&mut drv, schedules, config, progress);
+    let finished = drv.finish_vcd().map_err(sim);
+    let result = result?;
+    finished?;
+    if v.from >= result.cycles {
+        return Err(CosimError::VcdOutsideRun { from: v.from, to: v.to, first: 0, last: result.cycles });
+    }
+    staged
+        .commit()
+        .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
+    Ok(result)
 }
 
 fn sim(e: shelling_testbench::Error) -> CosimError {

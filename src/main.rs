@@ -485,9 +485,21 @@ struct MachineArgs {
     /// Ray set.
     #[arg(long, value_enum, default_value_t = RaySet::Angle)]
     ray_set: RaySet,
-    /// The PEs' simulator (auto: Verilator where installed).
+    /// The PEs' simulator (auto: Verilator where installed and no VCD is asked for).
     #[arg(long, value_enum, default_value_t = Engine::Auto)]
     engine: Engine,
+    /// Write a VCD of the whole machine (its RTL on rust-hdl's simulation: the arbiter and every
+    /// PE) to FILE, cycles --vcd-from .. --vcd-to; written whole or not at all. Open it with
+    /// waveforms/machine.gtkw (two PEs' memory traffic and the arbiter).
+    #[arg(long, value_name = "FILE")]
+    vcd: Option<PathBuf>,
+    /// First cycle of the VCD window (from the machine's power-up).
+    #[arg(long, requires = "vcd", default_value_t = 0)]
+    vcd_from: u64,
+    /// End (exclusive) of the VCD window, 1 to 1000000 cycles after --vcd-from; default 2000
+    /// cycles after --vcd-from.
+    #[arg(long, requires = "vcd")]
+    vcd_to: Option<u64>,
     /// Print the run's counts as JSON.
     #[arg(long)]
     json: bool,
@@ -1125,12 +1137,24 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     }
     let schedules =
         machine::schedule_sources(&prepared, &order, a.method, a.ray_set, a.rays, &params, parts)?;
+    let vcd = a.vcd.clone().map(|path| VcdWindow {
+        path,
+        from: a.vcd_from,
+        to: a.vcd_to.unwrap_or(a.vcd_from.saturating_add(2000)),
+    });
+    if let Some(v) = &vcd {
+        cosim::check_vcd_window(v.from, v.to)?;
+    }
+    if a.engine == Engine::Verilator && vcd.is_some() {
+        bail!("--vcd needs --engine rust-hdl (or auto): the compiled PEs write no waveforms");
+    }
     let config = machine::MachineConfig {
         pes: a.pes,
         tc: a.tc,
         cache: a.cache,
         deal: a.deal,
-        engine: a.engine.resolve(false),
+        engine: a.engine.resolve(vcd.is_some()),
+        vcd,
     };
     let bar = progress_bar(schedules.len() as u64, "{bar:40} {pos}/{len} work items {elapsed}");
     let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));

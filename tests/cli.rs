@@ -757,6 +757,42 @@ fn cli_machine_rejects_bad_options() {
     );
 }
 
+/// `machine --vcd`: the machine's RTL writes the window, every signal of
+/// `waveforms/machine.gtkw` is in it, and the arbiter's traffic shows (both PEs request, the
+/// host port answers, each answer routed to one PE).
+#[test]
+fn cli_machine_writes_a_vcd_that_machine_gtkw_opens() {
+    use shelling_testbench::waves::{gtkw_signals, Waves};
+    let dir = TempDir::new("machine-vcd");
+    let scene = gen_scene(&dir, "s.json", 200, 32.0, 6);
+    let vcd = dir.join("m.vcd");
+    let base =
+        ["machine", "--scene", path_arg(&scene), "--pes", "2", "--count", "2", "--rays", "64", "--tc", "4"];
+    let v = path_arg(&vcd);
+    let text = ok(&[&base[..], &["--vcd", v, "--vcd-from", "60", "--vcd-to", "400"]].concat());
+    assert!(text.contains("rust-hdl simulation"), "{text}");
+    let gtkw = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("waveforms/machine.gtkw");
+    let signals = gtkw_signals(&gtkw).expect("waveforms/machine.gtkw is readable");
+    assert!(signals.len() >= 20, "{signals:?}");
+    let names: Vec<&str> = signals.iter().map(String::as_str).collect();
+    let waves = Waves::read(&vcd, &names).unwrap_or_else(|e| panic!("{}", e.message()));
+    assert_eq!(waves.cycles(), 340);
+    let high = |s: &str| waves.get(s).unwrap().iter().filter(|&&v| v != 0).count();
+    for s in ["uut.host_req", "uut.host_valid", "uut.arbiter.pe_req$0", "uut.arbiter.pe_req$1"] {
+        assert!(high(s) > 0, "{s} never high in the window");
+    }
+    // Each host answer goes to one PE a clock later (the arbiter's answer register).
+    let get = |s: &str| waves.get(s).unwrap().to_vec();
+    let (host, v0, v1) =
+        (get("uut.host_valid"), get("uut.arbiter.pe_valid$0"), get("uut.arbiter.pe_valid$1"));
+    for c in 0..host.len() - 1 {
+        assert!(v0[c + 1] + v1[c + 1] <= 1, "cycle {c}: an answer to both PEs");
+        assert_eq!(host[c], v0[c + 1] + v1[c + 1], "window cycle {c}: the host's answer, then the PEs'");
+    }
+    fails(&[&base[..], &["--vcd", v, "--engine", "verilator"]].concat(), &["--vcd", "rust-hdl"]);
+    fails(&[&base[..], &["--vcd", v, "--vcd-from", "100000000"]].concat(), &["--vcd-from", "100000000"]);
+}
+
 #[test]
 fn cli_machine_figures_sweep_and_reject_bad_options() {
     let dir = TempDir::new("machine-figures");

@@ -190,7 +190,7 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
         .map(|&(li, m, tc, cache, pes, deal)| {
             let (_, whole, parts) =
                 schedules[li].iter().find(|s| s.0 == m).expect("every technique scheduled");
-            let config = MachineConfig { pes, tc, cache, deal, engine };
+            let config = MachineConfig { pes, tc, cache, deal, engine, vcd: None };
             let work = if deal == Deal::Sectors { parts } else { whole };
             let r = machine::run(work, &config, |_, _| {}).with_context(|| {
                 format!(
@@ -475,6 +475,7 @@ pub fn headline_run(method: Method, pes: usize, engine: Engine) -> Result<Machin
         cache: Some(HEADLINE_CACHE),
         deal: Deal::Blocks,
         engine: engine.resolve(false),
+        vcd: None,
     };
     Ok(machine::run(&work, &config, |_, _| {})?)
 }

@@ -9,6 +9,7 @@ mod support;
 mod ff3d;
 mod figures;
 mod hardware;
+mod machine;
 mod radiosity;
 mod replay;
 mod tracers3d;

@@ -24,7 +24,7 @@ mod wrapper;
 use anyhow::{bail, Context, Result};
 use clap::{Args, ValueEnum};
 use report::{PathSummary, Report, Use};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_testbench::export::{machine_block_pes, machine_verilog};
 use std::collections::BTreeMap;
@@ -38,7 +38,7 @@ use std::time::Instant;
 use tools::{Tool, ToolKind};
 
 /// The FPGA families.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, ValueEnum, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, ValueEnum, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Family {
     /// Lattice ECP5, LFE5U-85F (CABGA381, speed grade 6 unless --ecp5-speed): nextpnr-ecp5.
@@ -98,6 +98,11 @@ pub struct FpgaArgs {
     /// Jobs (one block on one family: Yosys then nextpnr) run at once.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..))]
     pub jobs: u64,
+    /// Runs nothing: merges the rows of earlier runs' `fpga.json` in these directories
+    /// (comma-separated; e.g. one run per seed, run side by side) for the blocks and families
+    /// given, and writes the tables of them all into --out, against the Verilog exported now.
+    #[arg(long, value_delimiter = ',')]
+    pub merge: Vec<PathBuf>,
     /// Install the missing tools from PyPI (YoWASP) into the virtual environment
     /// $SHELLING_FPGA_VENV (default .venv-fpga at the repository root) first.
     #[arg(long)]
@@ -105,7 +110,7 @@ pub struct FpgaArgs {
 }
 
 /// One block on one family, as `fpga.json` records it.
-#[derive(Serialize, Debug, Clone)]
+#[derive(Serialize, Deserialize, Debug, Clone)]
 pub struct Row {
     pub block: String,
     pub family: Family,
@@ -274,13 +279,35 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     if seeds.len() > 16 {
         bail!("--seeds lists {} seeds: at most 16", seeds.len());
     }
-    let ctx = Flow { out: out.clone(), tools, seeds };
-    // Every (block, target), reported in this order; run longest first (the whole PE).
-    let jobs: Vec<(String, Target)> =
-        blocks.iter().flat_map(|b| targets.iter().map(move |t| (b.clone(), t.clone()))).collect();
-    let mut order: Vec<usize> = (0..jobs.len()).collect();
-    order.sort_by_key(|&i| jobs[i].0 != "processing_element");
-    let rows: Vec<Row> = run_all(&ctx, &jobs, &order, args.jobs as usize).into_iter().flatten().collect();
+    let (rows, ctx) = if args.merge.is_empty() {
+        let ctx = Flow { out: out.clone(), tools, seeds };
+        // Every (block, target), reported in this order; run longest first (the whole PE).
+        let jobs: Vec<(String, Target)> =
+            blocks.iter().flat_map(|b| targets.iter().map(move |t| (b.clone(), t.clone()))).collect();
+        let mut order: Vec<usize> = (0..jobs.len()).collect();
+        order.sort_by_key(|&i| jobs[i].0 != "processing_element");
+        (run_all(&ctx, &jobs, &order, args.jobs as usize).into_iter().flatten().collect::<Vec<Row>>(), ctx)
+    } else {
+        let mut rows: Vec<Row> = Vec::new();
+        for dir in &args.merge {
+            let path = dir.join("fpga.json");
+            let text = std::fs::read_to_string(&path)
+                .with_context(|| format!("--merge: reading {}", path.display()))?;
+            let read: Vec<Row> = serde_json::from_str(&text)
+                .with_context(|| format!("--merge: {} is not fpga.json", path.display()))?;
+            rows.extend(
+                read.into_iter().filter(|r| blocks.contains(&r.block) && families.contains(&r.family)),
+            );
+        }
+        rows.sort_by(|a, b| (&a.block, a.family, a.seed).cmp(&(&b.block, b.family, b.seed)));
+        if rows.is_empty() {
+            bail!("--merge: no rows of the blocks and families asked for");
+        }
+        let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
+        seeds.sort();
+        seeds.dedup();
+        (rows, Flow { out: out.clone(), tools, seeds })
+    };
     let spreads = spreads(&rows, &block_hashes);
 
     let json = serde_json::to_string_pretty(&rows)? + "\n";

@@ -57,7 +57,7 @@ pub struct Endpoint {
 }
 
 /// The worst register-to-register path of a clock, as `fpga.json` records it.
-#[derive(Serialize, Debug, Clone, PartialEq)]
+#[derive(Serialize, Deserialize, Debug, Clone, PartialEq)]
 pub struct PathSummary {
     /// Clock edges, as nextpnr names them (`posedge clock` ...).
     pub clock: String,

@@ -1,0 +1,68 @@
+//! Tier 2: the machine's committed figures against the current code. `figures/machine.csv`'s
+//! rows of one length recomputed with the command FIGURES.md quotes (cycle counts are exact, so
+//! any change to the RTL, the scheduler or the host shows), and the machine rows of the README's
+//! headline (`figures/headline.md`, from `cargo bench --bench machine`) co-simulated again.
+
+use shelling::cosim::Engine;
+use shelling::figures::machine::headline_run;
+use shelling::trace::Method;
+use std::path::Path;
+
+fn committed(name: &str) -> String {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("figures").join(name);
+    std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+#[test]
+fn the_committed_machine_figures_are_those_of_the_current_code() {
+    assert!(shelling_testbench::verilated::available(), "the machine figures need Verilator (see .ci/run)");
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("tier2-machine");
+    let _ = std::fs::remove_dir_all(&out);
+    let status = std::process::Command::new(env!("CARGO_BIN_EXE_shelling"))
+        .args(["machine-figures", "--lengths", "32", "--out"])
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .status()
+        .expect("runs the machine-figures command");
+    assert!(status.success(), "machine-figures --lengths 32 --out {}: {status}", out.display());
+    let fresh = std::fs::read_to_string(out.join("machine.csv")).expect("machine.csv written");
+    let old = committed("machine.csv");
+    let of_32 = |t: &str| t.lines().filter(|l| l.starts_with("32,")).map(String::from).collect::<Vec<_>>();
+    let (fresh, old) = (of_32(&fresh), of_32(&old));
+    assert!(fresh.len() > 100, "only {} fresh rows of length 32", fresh.len());
+    assert!(
+        fresh == old,
+        "figures/machine.csv is stale: run `cargo run --release -- machine-figures --out figures` and update \
+         FIGURES.md"
+    );
+}
+
+#[test]
+fn the_readmes_headline_cycles_are_those_of_the_current_code() {
+    assert!(shelling_testbench::verilated::available(), "the headline needs Verilator (see .ci/run)");
+    let table = committed("headline.md");
+    let mut checked = 0;
+    for line in table.lines().filter(|l| l.starts_with("| machine, ")) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        let pes: usize = cells[1]
+            .trim_start_matches("machine, ")
+            .split(' ')
+            .next()
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("no PE count in {line:?}"));
+        let method = match cells[2] {
+            "stochastic" => Method::Stochastic,
+            "deterministic" => Method::Deterministic,
+            m => panic!("technique {m:?} in {line:?}"),
+        };
+        let cycles: u64 = cells[3].parse().unwrap_or_else(|_| panic!("no cycles in {line:?}"));
+        let run = headline_run(method, pes, Engine::Verilator).unwrap_or_else(|e| panic!("{e:#}"));
+        assert_eq!(
+            run.cycles, cycles,
+            "figures/headline.md is stale ({pes} PEs, {method}): run `cargo bench --bench machine -- --write \
+             figures/headline.md` and update the README"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 4, "figures/headline.md has {checked} machine rows");
+}
