@@ -193,15 +193,18 @@ enum Phase {
     /// Writing the directions: the `c`-th clock of `rays + 1`.
     Setup(usize),
     Commands(Box<CommandHost>),
-    /// Reading the hits: the `c`-th clock of `rays + READOUT_LATENCY - 1`.
-    Readout(usize),
+    /// Reading the hits: the `c`-th clock of `rays + READOUT_LATENCY - 1`; and, when a source
+    /// follows, writing its directions at once (the `s`-th clock of its setup), the ray memory's
+    /// direction and hit words being separate memories.
+    Readout { c: usize, s: usize },
     Done,
 }
 
 /// Runs each PE `p` through its queue `queues[p]` of sources, one after another, sharing
-/// `memory`: a PE sets up its next source as soon as it has read out the last one, whatever the
-/// others do, so one PE's setup and readout (on its own ray ports) overlap the others' commands
-/// on the shared memory. PEs without a queue idle. `done(sources done)` after each source's
+/// `memory`: a PE writes its next source's directions while it reads the last one's hits out,
+/// and starts its commands when both are done, whatever the others do; so one PE's setup and
+/// readout (on its own ray ports) overlap each other and the others' commands on the shared
+/// memory. PEs without a queue idle. `done(sources done)` after each source's
 /// readout. Returns every source's hits and counters.
 pub fn run_queues<M: MachineSim>(
     m: &mut M,
@@ -223,6 +226,8 @@ pub fn run_queues<M: MachineSim>(
     let mut phase: Vec<Phase> =
         queues.iter().map(|q| if q.is_empty() { Phase::Done } else { Phase::Setup(0) }).collect();
     let mut current: Vec<Traced> = vec![Traced::default(); queues.len()];
+    // The next source's start while its setup overlaps the last one's readout.
+    let mut upcoming: Vec<u64> = vec![0; queues.len()];
     let latency = READOUT_LATENCY as usize;
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
     let loads_before = memory.loads();
@@ -232,7 +237,7 @@ pub fn run_queues<M: MachineSim>(
     loop {
         // This cycle's inputs, PE by PE from its phase.
         for (p, ph) in phase.iter().enumerate() {
-            if let Phase::Readout(c) = ph {
+            if let Phase::Readout { c, .. } = ph {
                 if *c < queues[p][k.pes[p].len()].setup.dirs.len() && m.outputs(p).busy {
                     return Err(Error::new(format!("PE {p}: readout while the unit is busy")));
                 }
@@ -241,24 +246,30 @@ pub fn run_queues<M: MachineSim>(
         m.drive(|p, i| {
             i.dir_we = false;
             i.res_re = false;
+            let at = k.pes.get(p).map_or(0, Vec::len);
+            let mut set_up = |setup: &PeSetup, c: usize| {
+                [i.origin_x, i.origin_y] = setup.origin;
+                [i.normal_x, i.normal_y] = setup.normal;
+                i.cfg_cache_enable = cache.lines.is_some();
+                i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
+                if let Some(&d) = setup.dirs.get(c) {
+                    i.dir_we = true;
+                    i.dir_addr = c as u16;
+                    [i.dir_x, i.dir_y] = d;
+                }
+            };
             let cmd = match phase.get(p) {
                 Some(Phase::Setup(c)) => {
-                    let setup = queues[p][k.pes[p].len()].setup;
-                    [i.origin_x, i.origin_y] = setup.origin;
-                    [i.normal_x, i.normal_y] = setup.normal;
-                    i.cfg_cache_enable = cache.lines.is_some();
-                    i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
-                    if let Some(&d) = setup.dirs.get(*c) {
-                        i.dir_we = true;
-                        i.dir_addr = *c as u16;
-                        [i.dir_x, i.dir_y] = d;
-                    }
+                    set_up(queues[p][at].setup, *c);
                     None
                 }
                 Some(Phase::Commands(h)) => h.command(),
-                Some(Phase::Readout(c)) => {
-                    i.res_re = *c < queues[p][k.pes[p].len()].setup.dirs.len();
-                    i.res_addr = *c as u16;
+                Some(&Phase::Readout { c, s }) => {
+                    if let Some(next) = queues[p].get(at + 1) {
+                        set_up(next.setup, s);
+                    }
+                    i.res_re = c < queues[p][at].setup.dirs.len();
+                    i.res_addr = c as u16;
                     None
                 }
                 _ => None,
@@ -297,13 +308,22 @@ pub fn run_queues<M: MachineSim>(
                     if h.finished(&out) {
                         t.counters = h.counters(&out, now, t.counters);
                         t.counters.memory_loads = t.counters.patch_loads - t.counters.cache_hits;
-                        *ph = Phase::Readout(0);
+                        *ph = Phase::Readout { c: 0, s: 0 };
                     } else {
                         h.check_progress(now, limit)
                             .map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
                     }
                 }
-                Phase::Readout(c) => {
+                Phase::Readout { c, s } => {
+                    let next = queues[p].get(k.pes[p].len() + 1);
+                    if let Some(nx) = next {
+                        if *s == 0 {
+                            upcoming[p] = now - 1;
+                        }
+                        if *s <= nx.setup.dirs.len() {
+                            *s += 1;
+                        }
+                    }
                     if *c + 1 >= latency && *c + 1 - latency < rays {
                         t.hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
                     }
@@ -314,7 +334,18 @@ pub fn run_queues<M: MachineSim>(
                         k.pes[p].push(std::mem::take(t));
                         finished += 1;
                         done(finished);
-                        *ph = if k.pes[p].len() < queues[p].len() { Phase::Setup(0) } else { Phase::Done };
+                        *ph = match next {
+                            None => Phase::Done,
+                            Some(nx) => {
+                                t.start = upcoming[p];
+                                if *s > nx.setup.dirs.len() {
+                                    t.counters.setup_cycles = *s as u64;
+                                    Phase::Commands(Box::new(CommandHost::new(nx.setup, nx.commands, out, now)))
+                                } else {
+                                    Phase::Setup(*s)
+                                }
+                            }
+                        };
                     }
                 }
                 Phase::Done => {}
