@@ -94,20 +94,16 @@ fn main() {
     );
     let _ = writeln!(md, "|---|---|--:|--:|--:|--:|--:|--:|");
     for (i, &m) in software.iter().enumerate() {
-        let _ = writeln!(
-            md,
-            "| software, 1 core | {m} | | | | {:.1} M | {:.2} | {:.2} |",
-            rates[i][0] / 1e6,
-            rates[i][0] / core,
-            rates[i][0] / cores
-        );
-        let _ = writeln!(
-            md,
-            "| software, {threads} cores | {m} | | | | {:.1} M | {:.2} | {:.2} |",
-            rates[i][1] / 1e6,
-            rates[i][1] / core,
-            rates[i][1] / cores
-        );
+        for (j, who) in ["1 core".to_string(), format!("{threads} cores")].iter().enumerate() {
+            let r = rates[i][j];
+            let _ = writeln!(
+                md,
+                "| software, {who} | {m} | | | | {:.1} M | {:.2} | {:.2} |",
+                r / 1e6,
+                r / core,
+                r / cores
+            );
+        }
     }
     for &n in &pes {
         for &m in &software {

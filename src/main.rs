@@ -371,17 +371,8 @@ struct CosimArgs {
     /// loaded before costs one clock instead of T_c. Without it every load goes to the host.
     #[arg(long, value_name = "PATCHES")]
     cache: Option<u32>,
-    /// Write a VCD of the whole PE to FILE (cycles --vcd-from .. --vcd-to); written whole or
-    /// not at all.
-    #[arg(long, value_name = "FILE")]
-    vcd: Option<PathBuf>,
-    /// First cycle (from power-up) written to the VCD: it must fall within the run.
-    #[arg(long, requires = "vcd", default_value_t = 0)]
-    vcd_from: u64,
-    /// End (exclusive) of the VCD window, 1 to 1000000 cycles after --vcd-from; default 2000
-    /// cycles after --vcd-from.
-    #[arg(long, requires = "vcd")]
-    vcd_to: Option<u64>,
+    #[command(flatten)]
+    vcd: VcdArgs,
     /// Print the trace JSON (the PE's hits) with the hardware counters.
     #[arg(long)]
     json: bool,
@@ -392,6 +383,43 @@ struct CosimArgs {
     engine: Engine,
     #[command(flatten)]
     tune: TuneArgs,
+}
+
+/// A VCD window of a co-simulation (`cosim`: the PE; `machine`: the machine's own RTL, the
+/// arbiter and every PE; `waveforms/machine.gtkw` views two PEs' memory traffic).
+#[derive(Args)]
+struct VcdArgs {
+    /// Write a VCD of the whole design to FILE (cycles --vcd-from .. --vcd-to); written whole
+    /// or not at all.
+    #[arg(long, value_name = "FILE")]
+    vcd: Option<PathBuf>,
+    /// First cycle (from power-up) written to the VCD: it must fall within the run.
+    #[arg(long, requires = "vcd", default_value_t = 0)]
+    vcd_from: u64,
+    /// End (exclusive) of the VCD window, 1 to 1000000 cycles after --vcd-from; default 2000
+    /// cycles after --vcd-from.
+    #[arg(long, requires = "vcd")]
+    vcd_to: Option<u64>,
+}
+
+impl VcdArgs {
+    /// The window asked for, checked, and the engine that writes it (`--engine verilator` and a
+    /// VCD refused).
+    fn window(&self, engine: Engine) -> Result<(Option<VcdWindow>, Engine)> {
+        let vcd = self.vcd.clone().map(|path| VcdWindow {
+            path,
+            from: self.vcd_from,
+            to: self.vcd_to.unwrap_or(self.vcd_from.saturating_add(2000)),
+        });
+        if let Some(v) = &vcd {
+            cosim::check_vcd_window(v.from, v.to)?;
+        }
+        if engine == Engine::Verilator && vcd.is_some() {
+            bail!("--vcd needs --engine rust-hdl (or auto): the compiled simulation writes no waveforms");
+        }
+        let engine = engine.resolve(vcd.is_some());
+        Ok((vcd, engine))
+    }
 }
 
 #[derive(Args)]
@@ -488,18 +516,8 @@ struct MachineArgs {
     /// The PEs' simulator (auto: Verilator where installed and no VCD is asked for).
     #[arg(long, value_enum, default_value_t = Engine::Auto)]
     engine: Engine,
-    /// Write a VCD of the whole machine (its RTL on rust-hdl's simulation: the arbiter and every
-    /// PE) to FILE, cycles --vcd-from .. --vcd-to; written whole or not at all. Open it with
-    /// waveforms/machine.gtkw (two PEs' memory traffic and the arbiter).
-    #[arg(long, value_name = "FILE")]
-    vcd: Option<PathBuf>,
-    /// First cycle of the VCD window (from the machine's power-up).
-    #[arg(long, requires = "vcd", default_value_t = 0)]
-    vcd_from: u64,
-    /// End (exclusive) of the VCD window, 1 to 1000000 cycles after --vcd-from; default 2000
-    /// cycles after --vcd-from.
-    #[arg(long, requires = "vcd")]
-    vcd_to: Option<u64>,
+    #[command(flatten)]
+    vcd: VcdArgs,
     /// Print the run's counts as JSON.
     #[arg(long)]
     json: bool,
@@ -1027,21 +1045,11 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     if let Some(c) = a.cache {
         limits::check_cache("--cache", c).map_err(m)?;
     }
-    let vcd = a.vcd.map(|path| VcdWindow {
-        path,
-        from: a.vcd_from,
-        to: a.vcd_to.unwrap_or(a.vcd_from.saturating_add(2000)),
-    });
-    if let Some(v) = &vcd {
-        cosim::check_vcd_window(v.from, v.to)?;
-    }
-    if a.engine == Engine::Verilator && vcd.is_some() {
-        bail!("--vcd needs --engine rust-hdl (or auto): the compiled PE writes no waveforms");
-    }
+    let (vcd, engine) = a.vcd.window(a.engine)?;
     let params = a.tune.shells_2d()?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
     let scheduled = prepared.schedule(a.method, &bundle, &params)?;
-    let config = CosimConfig { tc: a.tc, cache: a.cache, engine: a.engine.resolve(vcd.is_some()), vcd };
+    let config = CosimConfig { tc: a.tc, cache: a.cache, engine, vcd };
     let bar = progress_bar(scheduled.stream.items.len() as u64, "{bar:40} {pos}/{len} commands {elapsed}");
     let result = cosim::run(&scheduled, &config, |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();
@@ -1137,25 +1145,8 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     }
     let schedules =
         machine::schedule_sources(&prepared, &order, a.method, a.ray_set, a.rays, &params, parts)?;
-    let vcd = a.vcd.clone().map(|path| VcdWindow {
-        path,
-        from: a.vcd_from,
-        to: a.vcd_to.unwrap_or(a.vcd_from.saturating_add(2000)),
-    });
-    if let Some(v) = &vcd {
-        cosim::check_vcd_window(v.from, v.to)?;
-    }
-    if a.engine == Engine::Verilator && vcd.is_some() {
-        bail!("--vcd needs --engine rust-hdl (or auto): the compiled PEs write no waveforms");
-    }
-    let config = machine::MachineConfig {
-        pes: a.pes,
-        tc: a.tc,
-        cache: a.cache,
-        deal: a.deal,
-        engine: a.engine.resolve(vcd.is_some()),
-        vcd,
-    };
+    let (vcd, engine) = a.vcd.window(a.engine)?;
+    let config = machine::MachineConfig { pes: a.pes, tc: a.tc, cache: a.cache, deal: a.deal, engine, vcd };
     let bar = progress_bar(schedules.len() as u64, "{bar:40} {pos}/{len} work items {elapsed}");
     let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();

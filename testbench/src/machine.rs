@@ -196,7 +196,10 @@ enum Phase {
     /// Reading the hits: the `c`-th clock of `rays + READOUT_LATENCY - 1`; and, when a source
     /// follows, writing its directions at once (the `s`-th clock of its setup), the ray memory's
     /// direction and hit words being separate memories.
-    Readout { c: usize, s: usize },
+    Readout {
+        c: usize,
+        s: usize,
+    },
     Done,
 }
 
@@ -340,7 +343,12 @@ pub fn run_queues<M: MachineSim>(
                                 t.start = upcoming[p];
                                 if *s > nx.setup.dirs.len() {
                                     t.counters.setup_cycles = *s as u64;
-                                    Phase::Commands(Box::new(CommandHost::new(nx.setup, nx.commands, out, now)))
+                                    Phase::Commands(Box::new(CommandHost::new(
+                                        nx.setup,
+                                        nx.commands,
+                                        out,
+                                        now,
+                                    )))
                                 } else {
                                     Phase::Setup(*s)
                                 }
