@@ -26,6 +26,7 @@ use crate::geom::Segment;
 use crate::limits::{check_range, MAX_TC};
 use crate::rays::{Bundle, RaySet};
 use crate::run::{GriddedScene, Scheduled};
+use crate::scene::Scene;
 use crate::staged::Staged;
 use crate::trace::{Method, ShellParams};
 use crate::workstream::commands;
@@ -146,6 +147,52 @@ pub fn spatial_order(segments: &[Segment], ids: &[usize]) -> Vec<usize> {
     let mut out = ids.to_vec();
     out.sort_by_key(|&k| (morton(k), k));
     out
+}
+
+/// How the host memory lays the scene's patches out (the PEs address them by index).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "kebab-case")]
+pub enum Layout {
+    /// In Z-order of their midpoints ([`z_ordered`]): patches near one another in the scene
+    /// sit at consecutive addresses, so they fall in different lines of a PE's direct-mapped
+    /// cache instead of evicting one another.
+    #[default]
+    ZOrder,
+    /// In the scene file's order.
+    File,
+}
+
+impl Layout {
+    pub fn name(self) -> &'static str {
+        match self {
+            Layout::ZOrder => "z-order",
+            Layout::File => "file",
+        }
+    }
+}
+
+/// `scene` with its patches (and their materials) in Z-order of their midpoints, and for each
+/// new index the old one: `(scene', old_of_new)`, `scene'.segments[i] = scene.segments[old_of_new[i]]`.
+pub fn z_ordered(scene: &Scene) -> (Scene, Vec<usize>) {
+    let all: Vec<usize> = (0..scene.segments.len()).collect();
+    let old_of_new = spatial_order(&scene.segments, &all);
+    let out = Scene {
+        segments: old_of_new.iter().map(|&k| scene.segments[k]).collect(),
+        materials: old_of_new.iter().map(|&k| scene.material(k)).collect(),
+        world: scene.world,
+    };
+    (out, old_of_new)
+}
+
+/// `scene` laid out as `layout` says, and for each new index the old one.
+pub fn lay_out(scene: Scene, layout: Layout) -> (Scene, Vec<usize>) {
+    match layout {
+        Layout::ZOrder => z_ordered(&scene),
+        Layout::File => {
+            let n = scene.segments.len();
+            (scene, (0..n).collect())
+        }
+    }
 }
 
 /// How the machine is set up.
@@ -389,6 +436,26 @@ mod tests {
             }
         }
         assert!(schedule_sources(&prepared, &[5], Method::Stochastic, RaySet::Angle, 2, &params, 3).is_err());
+    }
+
+    #[test]
+    fn z_order_permutes_the_scene_and_keeps_each_patch_with_its_material() {
+        let mut scene = crate::scene::generate(200, 16.0, 3, crate::scene::PAPER_WORLD).expect("scene");
+        for (i, m) in scene.materials.iter_mut().enumerate() {
+            m.reflectance = Some(i as f64 / 1000.0);
+        }
+        let (z, old) = z_ordered(&scene);
+        let mut sorted = old.clone();
+        sorted.sort();
+        assert_eq!(sorted, (0..200).collect::<Vec<_>>(), "a permutation");
+        assert_ne!(old, sorted, "the generator's order is not Z-order");
+        for (new, &k) in old.iter().enumerate() {
+            assert_eq!(z.segments[new], scene.segments[k]);
+            assert_eq!(z.material(new), scene.material(k));
+        }
+        assert_eq!(spatial_order(&z.segments, &(0..200).collect::<Vec<_>>()), (0..200).collect::<Vec<_>>());
+        let (same, id) = lay_out(scene.clone(), Layout::File);
+        assert_eq!((same, id), (scene, (0..200).collect()));
     }
 
     #[test]

@@ -498,6 +498,10 @@ struct MachineArgs {
     /// How the sources, in Z-order of their midpoints, are dealt to the PEs.
     #[arg(long, value_enum, default_value_t = machine::Deal::Blocks)]
     deal: machine::Deal,
+    /// How the host memory lays the patches out: in Z-order of their midpoints (neighbours in
+    /// different cache lines) or in the file's order. --first and --count are the file's indices.
+    #[arg(long, value_enum, default_value_t = machine::Layout::ZOrder)]
+    layout: machine::Layout,
     /// Technique: conventional, stochastic or deterministic.
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
     method: Method,
@@ -1128,8 +1132,13 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     check_range_for("--count", count, 1, n - a.first, &format!("(--first {} of {n} segments)", a.first))
         .map_err(m)?;
     let grid = a.tune.grid(n)?;
+    let (scene, old_of_new) = machine::lay_out(scene, a.layout);
+    let mut new_of_old = vec![0; n];
+    for (new, &old) in old_of_new.iter().enumerate() {
+        new_of_old[old] = new;
+    }
     let prepared = GriddedScene::new(scene, grid);
-    let ids: Vec<usize> = (a.first..a.first + count).collect();
+    let ids: Vec<usize> = (a.first..a.first + count).map(|k| new_of_old[k]).collect();
     let order = machine::spatial_order(&prepared.scene.segments, &ids);
     let parts = a.deal.parts(a.pes);
     if parts > a.rays {
@@ -1158,7 +1167,7 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     }
     say!(
         out,
-        "{} sources of {} rays, {} on {} PEs ({} simulation), T_c = {}, caches {}, dealt as {}{}: every hit equals the bit-true model's",
+        "{} sources of {} rays, {} on {} PEs ({} simulation), T_c = {}, caches {}, patches in {} order, dealt as {}{}: every hit equals the bit-true model's",
         run.sources,
         a.rays,
         a.method,
@@ -1166,6 +1175,7 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
         config.engine.name(),
         a.tc,
         a.cache.map_or("off".to_string(), |c| format!("of {c} patches")),
+        if a.layout == machine::Layout::ZOrder { "Z" } else { "the file's" },
         a.deal.name(),
         if parts > 1 { format!(" ({parts} per source)") } else { String::new() }
     );

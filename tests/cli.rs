@@ -816,9 +816,11 @@ fn cli_machine_figures_sweep_and_reject_bad_options() {
     ]);
     assert!(text.contains("every hit checked"), "{text}");
     let csv = std::fs::read_to_string(out.join("machine.csv")).expect("machine.csv written");
-    // 3 techniques × 2 caches × 2 PE counts in blocks, and 3 techniques × 2 other deals.
-    assert_eq!(csv.lines().count(), 1 + 12 + 6, "{csv}");
-    assert!(csv.lines().any(|l| l.starts_with("32,stochastic,4,64,2,blocks,4,")), "{csv}");
+    // 3 techniques × 2 caches × 2 PE counts in blocks, and 3 techniques × (2 other deals and
+    // the file's layout).
+    assert_eq!(csv.lines().count(), 1 + 12 + 9, "{csv}");
+    assert!(csv.lines().any(|l| l.starts_with("32,stochastic,4,64,2,blocks,z-order,4,")), "{csv}");
+    assert!(csv.lines().any(|l| l.starts_with("32,deterministic,16,64,8,blocks,file,4,")), "{csv}");
     for f in [
         "machine.md",
         "machine_speedup_cache_off.svg",

@@ -26,7 +26,7 @@ use super::plot::{method_marker, render, Chart, Series, XAxis};
 use super::{csv_num, scene_seed, METHODS};
 use crate::cosim::Engine;
 use crate::grid::GridParams;
-use crate::machine::{self, Deal, MachineConfig, MachineRun};
+use crate::machine::{self, Deal, Layout, MachineConfig, MachineRun};
 use crate::rays::RaySet;
 use crate::run::{GriddedScene, Scheduled};
 use crate::scene;
@@ -86,6 +86,7 @@ pub struct MachineRow {
     pub cache: Option<u32>,
     pub pes: usize,
     pub deal: Deal,
+    pub layout: Layout,
     pub run: MachineRun,
     /// The same row's cycles on one PE over these (the deal rows: blocks on one PE).
     pub speedup: f64,
@@ -128,14 +129,21 @@ pub fn validate(o: &MachineFigureOptions) -> Result<()> {
 }
 
 /// One length's scene and its sources in Z-order (the run the sweep takes).
-fn sample(o: &MachineFigureOptions, li: usize) -> Result<(GriddedScene, Vec<usize>)> {
+/// One length's scene in both layouts, and the sources the sweep takes (the same patches) in
+/// each: `(Z-ordered scene, its sources, file-ordered scene, its sources)`.
+fn sample(
+    o: &MachineFigureOptions,
+    li: usize,
+) -> Result<(GriddedScene, Vec<usize>, GriddedScene, Vec<usize>)> {
     let sc = scene::generate(o.count, o.lengths[li], scene_seed(li, 0), scene::PAPER_WORLD)
         .context("generating the workload's scene")?;
-    let prepared = GriddedScene::new(sc, GridParams::default());
-    let all: Vec<usize> = (0..o.count).collect();
-    let order = machine::spatial_order(&prepared.scene.segments, &all);
+    let (z, old_of_new) = machine::z_ordered(&sc);
     let from = (o.count - o.sources) / 2;
-    Ok((prepared, order[from..from + o.sources].to_vec()))
+    let z_ids: Vec<usize> = (from..from + o.sources).collect();
+    let file_ids: Vec<usize> = z_ids.iter().map(|&k| old_of_new[k]).collect();
+    let file = GriddedScene::new(sc, GridParams::default());
+    let file_order = machine::spatial_order(&file.scene.segments, &file_ids);
+    Ok((GriddedScene::new(z, GridParams::default()), z_ids, file, file_order))
 }
 
 /// Runs the sweep: every (length, technique, `T_c`, cache, PE count) in blocks, then the deal
@@ -144,42 +152,40 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
     validate(o)?;
     let engine = o.engine.resolve(false);
     let params = ShellParams::default();
-    // Schedules per length and technique: whole sources, and in `deal_pes` sectors.
-    let mut jobs: Vec<(usize, Method, u32, Option<u32>, usize, Deal)> = Vec::new();
+    // Schedules per length and technique: whole sources, in `deal_pes` sectors, and whole on
+    // the scene in the file's layout.
+    let mut jobs: Vec<(usize, Method, u32, Option<u32>, usize, Deal, Layout)> = Vec::new();
     for li in 0..o.lengths.len() {
         for &m in &METHODS {
             for &tc in &o.tcs {
                 for &cache in &o.caches {
                     for &p in &o.pes {
-                        jobs.push((li, m, tc, cache, p, Deal::Blocks));
+                        jobs.push((li, m, tc, cache, p, Deal::Blocks, Layout::ZOrder));
                     }
                 }
             }
             let cache = o.caches.iter().flatten().min().copied();
-            for deal in [Deal::Interleaved, Deal::Sectors] {
-                jobs.push((li, m, o.deal_tc, cache, o.deal_pes, deal));
+            for (deal, layout) in [
+                (Deal::Interleaved, Layout::ZOrder),
+                (Deal::Sectors, Layout::ZOrder),
+                (Deal::Blocks, Layout::File),
+            ] {
+                jobs.push((li, m, o.deal_tc, cache, o.deal_pes, deal, layout));
             }
         }
     }
-    let schedules: Vec<Vec<(Method, Vec<Scheduled>, Vec<Scheduled>)>> = (0..o.lengths.len())
+    type Schedules = (Method, [Vec<Scheduled>; 3]);
+    let schedules: Vec<Vec<Schedules>> = (0..o.lengths.len())
         .into_par_iter()
         .map(|li| {
-            let (prepared, order) = sample(o, li)?;
+            let (z, z_order, file, file_order) = sample(o, li)?;
             METHODS
                 .iter()
                 .map(|&m| {
-                    let whole =
-                        machine::schedule_sources(&prepared, &order, m, RaySet::Angle, o.rays, &params, 1)?;
-                    let parts = machine::schedule_sources(
-                        &prepared,
-                        &order,
-                        m,
-                        RaySet::Angle,
-                        o.rays,
-                        &params,
-                        o.deal_pes,
-                    )?;
-                    Ok((m, whole, parts))
+                    let at = |g: &GriddedScene, order: &[usize], parts| {
+                        machine::schedule_sources(g, order, m, RaySet::Angle, o.rays, &params, parts)
+                    };
+                    Ok((m, [at(&z, &z_order, 1)?, at(&z, &z_order, o.deal_pes)?, at(&file, &file_order, 1)?]))
                 })
                 .collect::<Result<Vec<_>>>()
         })
@@ -187,16 +193,21 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
     let done = AtomicUsize::new(0);
     let runs: Vec<MachineRun> = jobs
         .par_iter()
-        .map(|&(li, m, tc, cache, pes, deal)| {
-            let (_, whole, parts) =
+        .map(|&(li, m, tc, cache, pes, deal, layout)| {
+            let (_, [whole, parts, file]) =
                 schedules[li].iter().find(|s| s.0 == m).expect("every technique scheduled");
             let config = MachineConfig { pes, tc, cache, deal, engine, vcd: None };
-            let work = if deal == Deal::Sectors { parts } else { whole };
+            let work = match (deal, layout) {
+                (_, Layout::File) => file,
+                (Deal::Sectors, _) => parts,
+                _ => whole,
+            };
             let r = machine::run(work, &config, |_, _| {}).with_context(|| {
                 format!(
-                    "length {} {m} T_c {tc} cache {cache:?} on {pes} PEs ({})",
+                    "length {} {m} T_c {tc} cache {cache:?} on {pes} PEs ({}, {})",
                     o.lengths[li],
-                    deal.name()
+                    deal.name(),
+                    layout.name()
                 )
             })?;
             let n = done.fetch_add(1, Ordering::Relaxed) + 1;
@@ -212,13 +223,14 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
     let rows: Vec<MachineRow> = jobs
         .iter()
         .zip(runs)
-        .map(|(&(li, method, tc, cache, pes, deal), run)| MachineRow {
+        .map(|(&(li, method, tc, cache, pes, deal, layout), run)| MachineRow {
             length: o.lengths[li],
             method,
             tc,
             cache,
             pes,
             deal,
+            layout,
             run,
             speedup: 0.0,
         })
@@ -227,7 +239,7 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
         rows.iter()
             .find(|b| {
                 b.pes == 1
-                    && b.deal == Deal::Blocks
+                    && (b.deal, b.layout) == (Deal::Blocks, Layout::ZOrder)
                     && (b.length, b.method, b.tc, b.cache) == (r.length, r.method, r.tc, r.cache)
             })
             .map(|b| b.run.cycles)
@@ -240,19 +252,20 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
 /// `machine.csv`.
 pub fn csv(rows: &[MachineRow]) -> String {
     let mut s = String::from(
-        "length,method,tc,cache_lines,pes,deal,sources,cycles,cycles_per_source,speedup,rays_per_cycle,\
+        "length,method,tc,cache_lines,pes,deal,layout,sources,cycles,cycles_per_source,speedup,rays_per_cycle,\
          memory_loads,memory_bound_cycles,memory_utilisation,patch_loads,cache_hits,tests\n",
     );
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             csv_num(r.length),
             r.method,
             r.tc,
             r.cache.unwrap_or(0),
             r.pes,
             r.deal.name(),
+            r.layout.name(),
             r.run.sources,
             r.run.cycles,
             csv_num(r.run.cycles_per_source()),
@@ -286,14 +299,15 @@ fn saturation(rows: &[&MachineRow]) -> String {
 /// `machine.md`: the summary tables FIGURES.md holds.
 pub fn markdown(o: &MachineFigureOptions, rows: &[MachineRow]) -> String {
     let mut s = String::new();
-    let blocks: Vec<&MachineRow> = rows.iter().filter(|r| r.deal == Deal::Blocks).collect();
+    let blocks: Vec<&MachineRow> =
+        rows.iter().filter(|r| (r.deal, r.layout) == (Deal::Blocks, Layout::ZOrder)).collect();
     let most = *o.pes.iter().max().unwrap_or(&1);
     let _ = writeln!(
         s,
         "Cycles per source on 1 to {most} PEs (sources dealt in blocks), the speedup at {most} PEs over one, \
          the shared port's busy share at {most} PEs, and the fewest PEs that keep the port at least 90 % busy \
          (`-`: none), per segment length L, technique, `T_c` and per-PE cache (patches; `off`: every load from \
-         the host memory). {} sources of {} rays per length.\n",
+         the host memory), the patches in Z-order in the host memory. {} sources of {} rays per length.\n",
         o.sources, o.rays
     );
     let pes_cols: String =
@@ -335,26 +349,32 @@ pub fn markdown(o: &MachineFigureOptions, rows: &[MachineRow]) -> String {
     }
     let _ = writeln!(
         s,
-        "\nThe deals at {} PEs, `T_c` = {}, the smallest cache: cycles per source, host loads, and the \
+        "\nThe deals and the host memory's layouts at {} PEs, `T_c` = {}, the smallest cache: cycles per source, host loads, and the \
          port's busy share.\n",
         o.deal_pes, o.deal_tc
     );
-    let _ = writeln!(s, "| L | technique | deal | per source | host loads | port busy |");
-    let _ = writeln!(s, "|--:|---|---|--:|--:|--:|");
+    let _ = writeln!(s, "| L | technique | deal | layout | per source | host loads | port busy |");
+    let _ = writeln!(s, "|--:|---|---|---|--:|--:|--:|");
     let small = o.caches.iter().flatten().min().copied();
     for &l in &o.lengths {
         for &m in &METHODS {
-            for deal in [Deal::Blocks, Deal::Interleaved, Deal::Sectors] {
+            for (deal, layout) in [
+                (Deal::Blocks, Layout::ZOrder),
+                (Deal::Blocks, Layout::File),
+                (Deal::Interleaved, Layout::ZOrder),
+                (Deal::Sectors, Layout::ZOrder),
+            ] {
                 if let Some(r) = rows.iter().find(|r| {
-                    (r.length, r.method, r.tc, r.cache, r.pes, r.deal)
-                        == (l, m, o.deal_tc, small, o.deal_pes, deal)
+                    (r.length, r.method, r.tc, r.cache, r.pes, r.deal, r.layout)
+                        == (l, m, o.deal_tc, small, o.deal_pes, deal, layout)
                 }) {
                     let _ = writeln!(
                         s,
-                        "| {} | {} | {} | {:.0} | {} | {:.0}% |",
+                        "| {} | {} | {} | {} | {:.0} | {} | {:.0}% |",
                         csv_num(l),
                         short(m),
                         deal.name(),
+                        layout.name(),
                         r.run.cycles_per_source(),
                         r.run.memory_loads,
                         100.0 * r.run.memory_utilisation
@@ -386,7 +406,8 @@ pub fn svgs(o: &MachineFigureOptions, rows: &[MachineRow], l: f64) -> Result<Vec
                 let mut pts: Vec<(f64, f64)> = rows
                     .iter()
                     .filter(|r| {
-                        r.deal == Deal::Blocks && (r.length, r.method, r.tc, r.cache) == (l, m, tc, cache)
+                        (r.deal, r.layout) == (Deal::Blocks, Layout::ZOrder)
+                            && (r.length, r.method, r.tc, r.cache) == (l, m, tc, cache)
                     })
                     .map(|r| (r.pes as f64, value(r)))
                     .collect();
@@ -448,13 +469,13 @@ pub fn write(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
 pub const HEADLINE_TC: u32 = 16;
 pub const HEADLINE_CACHE: u32 = 128;
 
-/// The headline's scene, prepared, and its sources in the order they are dealt.
+/// The headline's scene, prepared, its patches in Z-order in the host memory
+/// ([`Layout::ZOrder`]), and its sources in the order they are dealt (Z-order).
 pub fn headline_scene() -> Result<(GriddedScene, Vec<usize>)> {
     let sc = scene::generate(1000, 32.0, 7, scene::PAPER_WORLD).context("the headline scene")?;
-    let prepared = GriddedScene::new(sc, GridParams::default());
-    let all: Vec<usize> = (0..prepared.scene.segments.len()).collect();
-    let order = machine::spatial_order(&prepared.scene.segments, &all);
-    Ok((prepared, order))
+    let (z, _) = machine::z_ordered(&sc);
+    let n = z.segments.len();
+    Ok((GriddedScene::new(z, GridParams::default()), (0..n).collect()))
 }
 
 /// The headline's machine runs: `method` on `pes` PEs over every source of the headline scene.
