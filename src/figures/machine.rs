@@ -6,12 +6,13 @@
 //! # Sample
 //!
 //! For the `i`-th segment length, the scene of the first seed ([`scene_seed`]`(i, 0)`, the
-//! golden part's first scene) and a spatially compact run of `sources` of its patches: the
-//! patches in Z-order of their midpoints ([`crate::machine::spatial_order`]), the `sources`
-//! from the middle of that order on, so that the sources are neighbours and a PE's cache can
-//! carry patches from one source to the next, as it would over a whole scene. Sources are dealt
-//! in blocks ([`Deal::Blocks`]); each PE runs its queue on its own. A second set of rows
-//! compares the deals at [`MachineFigureOptions::deal_pes`] PEs, `T_c` =
+//! golden part's first scene), its patches in Z-order of their midpoints in the host memory
+//! ([`Layout::ZOrder`]), and a spatially compact run of `sources` of them: the `sources` from
+//! the middle of that order on, so that the sources are neighbours and a PE's cache can carry
+//! patches from one source to the next, as it would over a whole scene. Sources are dealt in
+//! blocks ([`Deal::Blocks`]); each PE runs its queue on its own. A second set of rows compares
+//! the other deals, and the same sources with the patches in the file's order
+//! ([`Layout::File`]), at [`MachineFigureOptions::deal_pes`] PEs, `T_c` =
 //! [`MachineFigureOptions::deal_tc`] and the smallest cache.
 //!
 //! # Columns of `machine.csv`
