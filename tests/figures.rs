@@ -250,17 +250,25 @@ fn figures_dim_3_writes_the_3d_table_and_csv() {
     fails(&["figures", "--dim", "4", "--out", o], &["--dim", "4"]);
 }
 
-#[test]
-fn figures_md_holds_the_committed_cycle_table() {
-    const BEGIN: &str = "<!-- cycles-table:begin (figures/cycles.md, written by the command above) -->\n";
-    const END: &str = "<!-- cycles-table:end -->";
+/// `doc` holds the committed `file` verbatim between the markers `<!-- NAME:begin ... -->` and
+/// `<!-- NAME:end -->`.
+fn holds_block(doc: &str, name: &str, file: &str) {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(root.join("FIGURES.md")).unwrap();
-    let table = std::fs::read_to_string(root.join("figures/cycles.md")).unwrap();
-    let (start, end) = match (text.find(BEGIN), text.find(END)) {
-        (Some(s), Some(e)) if s < e => (s + BEGIN.len(), e),
-        _ => panic!("FIGURES.md has no {BEGIN:?} … {END:?} block"),
+    let text = std::fs::read_to_string(root.join(doc)).unwrap();
+    let table = std::fs::read_to_string(root.join(file)).unwrap_or_else(|e| panic!("{file}: {e}"));
+    let begin = format!("<!-- {name}:begin");
+    let end = format!("<!-- {name}:end -->");
+    let start = text.find(&begin).and_then(|s| text[s..].find("-->\n").map(|e| s + e + 4));
+    let (start, end) = match (start, text.find(&end)) {
+        (Some(s), Some(e)) if s < e => (s, e),
+        _ => panic!("{doc} has no {begin:?} … {end:?} block"),
     };
-    assert!(table.lines().count() > 2, "figures/cycles.md holds no rows:\n{table}");
-    assert_eq!(&text[start..end], table, "FIGURES.md's cycle table is not figures/cycles.md: copy it over");
+    assert!(table.lines().count() > 2, "{file} holds no rows:\n{table}");
+    assert_eq!(&text[start..end], table, "{doc}'s {name} table is not {file}: copy it over");
+}
+
+#[test]
+fn the_documents_hold_the_committed_tables() {
+    holds_block("FIGURES.md", "cycles-table", "figures/cycles.md");
+    holds_block("README.md", "headline", "figures/headline.md");
 }
