@@ -116,34 +116,6 @@ fn committed_fpga_results_are_of_the_committed_verilog() {
     }
 }
 
-/// The machine's post-route results (`hdl/fpga/ecp5-machine*`, from `cargo xtask fpga --blocks
-/// machine_N`) name the hash of the machine's Verilog for N PEs, which is not committed (half a
-/// megabyte a PE): it must be that of a fresh export of the current RTL.
-#[test]
-fn committed_machine_fpga_results_are_of_the_current_rtl() {
-    let results = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("hdl/fpga/ecp5-machine-seeds.json");
-    let text = std::fs::read_to_string(&results).expect("hdl/fpga/ecp5-machine-seeds.json is committed");
-    let json: serde_json::Value = serde_json::from_str(&text).expect("the machine's results are JSON");
-    let blocks = json["blocks"].as_array().expect("the results list blocks");
-    assert!(!blocks.is_empty(), "no machine in hdl/fpga/ecp5-machine-seeds.json");
-    for b in blocks {
-        let block = b["block"].as_str().expect("a block is named");
-        let pes = shelling_testbench::export::machine_block_pes(block)
-            .unwrap_or_else(|| panic!("{block} is not a machine_N block"));
-        let fresh = shelling_testbench::export::machine_verilog(pes).expect("the machine exports");
-        assert_eq!(
-            b["verilog_hash"].as_str().expect("a block's results name its Verilog's hash"),
-            shelling_testbench::export::hash(&[fresh]),
-            "hdl/fpga/ecp5-machine* is stale: the machine of {pes} PEs changed since it was measured. Run \
-             `cargo xtask fpga --out out/fpga-machine --families ecp5 --blocks {block} --seeds 1,2,3` and copy \
-             fpga.md to hdl/fpga/ecp5-machine.md and fpga-seeds.json to hdl/fpga/ecp5-machine-seeds.json"
-        );
-        assert!(b["median_mhz"].is_f64(), "{block} has no median clock rate");
-        let routed = b["fmax_mhz"].as_array().map_or(0, |f| f.iter().filter(|f| f.is_f64()).count());
-        assert!(routed >= 3, "{block}: {routed} placement seeds routed, fewer than three");
-    }
-}
-
 #[test]
 fn intersection_unit_synthesizes_to_dsps_without_latches() {
     let stat = synth_ecp5("intersection_unit");
