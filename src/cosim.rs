@@ -20,7 +20,9 @@ use shelling_hdl::formats::Nearest;
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
 use shelling_testbench::pe::{rust_hdl_pe, RustHdlPe};
+use shelling_testbench::rust_hdl::core::prelude::Block;
 use shelling_testbench::verilated::VerilatedPe;
+use shelling_testbench::Driver;
 use shelling_testbench::PeSim;
 use std::path::PathBuf;
 
@@ -162,16 +164,25 @@ pub fn run_on(
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
     let Some(v) = &config.vcd else { return run_sim(drv, scheduled, config, progress) };
+    with_vcd(drv, v, |drv| run_sim(drv, scheduled, config, progress))
+}
+
+/// Runs `run` on `drv` (the PE's RTL or the machine's) with the VCD window `v` streaming. The
+/// VCD is written under a temporary name and renamed once the run has passed and covered the
+/// window: a failed run leaves no VCD.
+pub(crate) fn with_vcd<B: Block, T>(
+    drv: &mut Driver<B>,
+    v: &VcdWindow,
+    run: impl FnOnce(&mut Driver<B>) -> Result<T, CosimError>,
+) -> Result<T, CosimError> {
     if v.from >= v.to {
         return Err(CosimError::Config(format!("the VCD window {}..{} holds no cycle", v.from, v.to)));
     }
-    // Written under a temporary name and renamed once the run has passed and covered the
-    // window: a failed run leaves no VCD.
     let staged = Staged::file(&v.path)
         .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
     let first = drv.cycles();
     drv.stream_vcd(staged.path(), v.from..v.to).map_err(sim)?;
-    let result = run_sim(drv, scheduled, config, progress);
+    let result = run(drv);
     let finished = drv.finish_vcd().map_err(sim);
     let result = result?;
     finished?;

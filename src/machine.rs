@@ -21,13 +21,12 @@
 //! A part sees the patches of its own angular range, so each PE's cache holds a slice of the
 //! scene's directions rather than a region of it.
 
-use crate::cosim::{check_against_model, CosimError, Engine, VcdWindow};
+use crate::cosim::{check_against_model, with_vcd, CosimError, Engine, VcdWindow};
 use crate::geom::Segment;
 use crate::limits::{check_range, MAX_TC};
 use crate::rays::{Bundle, RaySet};
 use crate::run::{GriddedScene, Scheduled};
 use crate::scene::Scene;
-use crate::staged::Staged;
 use crate::trace::{Method, ShellParams};
 use crate::workstream::commands;
 use serde::Serialize;
@@ -268,7 +267,10 @@ pub fn run(
         macro_rules! rtl {
             ($($n:literal)*) => {
                 match config.pes {
-                    $($n => with_vcd(Driver::new(Machine::<$n>::default()).map_err(sim)?, v, schedules, config, progress),)*
+                    $($n => {
+                        let mut drv = Driver::new(Machine::<$n>::default()).map_err(sim)?;
+                        with_vcd(&mut drv, v, |drv| run_on(drv, schedules, config, progress))
+                    })*
                     _ => unreachable!("checked above"),
                 }
             };
@@ -289,34 +291,6 @@ pub fn run(
             run_on(&mut Composed::new(sims).map_err(sim)?, schedules, config, progress)
         }
     }
-}
-
-/// Runs on the machine's RTL `drv`, writing the VCD window `v` (renamed into place only when
-/// the run passed and met the window).
-fn with_vcd<const N: usize>(
-    mut drv: Driver<Machine<N>>,
-    v: &VcdWindow,
-    schedules: &[Scheduled],
-    config: &MachineConfig,
-    progress: impl FnMut(usize, usize),
-) -> Result<MachineRun, CosimError> {
-    if v.from >= v.to {
-        return Err(CosimError::Config(format!("the VCD window {}..{} holds no cycle", v.from, v.to)));
-    }
-    let staged = Staged::file(&v.path)
-        .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
-    drv.stream_vcd(staged.path(), v.from..v.to).map_err(sim)?;
-    let result = run_on(&mut drv, schedules, config, progress);
-    let finished = drv.finish_vcd().map_err(sim);
-    let result = result?;
-    finished?;
-    if v.from >= result.cycles {
-        return Err(CosimError::VcdOutsideRun { from: v.from, to: v.to, first: 0, last: result.cycles });
-    }
-    staged
-        .commit()
-        .map_err(|e| CosimError::Config(format!("cannot write the VCD {}: {e}", v.path.display())))?;
-    Ok(result)
 }
 
 fn sim(e: shelling_testbench::Error) -> CosimError {

@@ -35,8 +35,14 @@
 //! part, so stepping the PEs' simulations and [`crate::arbiter::model::Arbiter`] in lockstep
 //! (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks that
 //! this block and that composition give every PE the same hits and counters, cycle counts
-//! included, round after round, and replays a recorded round through its exported Verilog under
-//! Verilator (rung 4).
+//! included, run after run and with each PE on its own queue of sources, and replays a recorded
+//! run through its exported Verilog under Verilator (rung 4).
+//!
+//! # Resources
+//!
+//! N times the PE's (31 `DP16KD` each), plus the arbiter. On the LFE5U-85F-6 six PEs (the most
+//! whose block RAMs fit) placed at 60,441 LUT4s and 186 of 208 `DP16KD`s but did not route
+//! (`cargo xtask fpga --blocks machine_6`, PERFORMANCE.md): no clock rate yet.
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;

@@ -229,8 +229,6 @@ pub fn run_queues<M: MachineSim>(
     let mut phase: Vec<Phase> =
         queues.iter().map(|q| if q.is_empty() { Phase::Done } else { Phase::Setup(0) }).collect();
     let mut current: Vec<Traced> = vec![Traced::default(); queues.len()];
-    // The next source's start while its setup overlaps the last one's readout.
-    let mut upcoming: Vec<u64> = vec![0; queues.len()];
     let latency = READOUT_LATENCY as usize;
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
     let loads_before = memory.loads();
@@ -290,8 +288,8 @@ pub fn run_queues<M: MachineSim>(
         now += 1;
         let mut all = true;
         for (p, ph) in phase.iter_mut().enumerate() {
-            let out = m.outputs(p);
             let Some(work) = queues[p].get(k.pes[p].len()) else { continue };
+            let out = m.outputs(p);
             let rays = work.setup.dirs.len();
             let t = &mut current[p];
             match ph {
@@ -319,13 +317,8 @@ pub fn run_queues<M: MachineSim>(
                 }
                 Phase::Readout { c, s } => {
                     let next = queues[p].get(k.pes[p].len() + 1);
-                    if let Some(nx) = next {
-                        if *s == 0 {
-                            upcoming[p] = now - 1;
-                        }
-                        if *s <= nx.setup.dirs.len() {
-                            *s += 1;
-                        }
+                    if next.is_some_and(|nx| *s <= nx.setup.dirs.len()) {
+                        *s += 1;
                     }
                     if *c + 1 >= latency && *c + 1 - latency < rays {
                         t.hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
@@ -340,7 +333,8 @@ pub fn run_queues<M: MachineSim>(
                         *ph = match next {
                             None => Phase::Done,
                             Some(nx) => {
-                                t.start = upcoming[p];
+                                // Its setup began with this readout, `c` clocks ago.
+                                t.start = now - *c as u64;
                                 if *s > nx.setup.dirs.len() {
                                     t.counters.setup_cycles = *s as u64;
                                     Phase::Commands(Box::new(CommandHost::new(
