@@ -18,7 +18,7 @@ use crate::workstream::{commands, StreamError};
 use serde::Serialize;
 use shelling_hdl::formats::Nearest;
 use shelling_testbench::memory::HostMemory;
-use shelling_testbench::pe::{self, CacheConfig, ModelCounts, PeCounters};
+use shelling_testbench::pe::{self, MemoryMap, ModelCounts, PeCounters};
 use shelling_testbench::pe::{rust_hdl_pe, RustHdlPe};
 use shelling_testbench::rust_hdl::core::prelude::Block;
 use shelling_testbench::verilated::VerilatedPe;
@@ -68,7 +68,7 @@ impl Engine {
 pub struct CosimConfig {
     /// Cycles the host memory takes per patch (`1 ≤ T_c ≤` [`MAX_TC`]).
     pub tc: u32,
-    /// The PE's patch cache: `None` off, `Some(lines)` on (a power of two up to 4096).
+    /// The PE's patch cache: `None` off, `Some(lines)` on (1 to 4096).
     pub cache: Option<u32>,
     /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up): a
     /// non-empty window that must meet the run (the command line also bounds its length,
@@ -196,6 +196,20 @@ pub(crate) fn with_vcd<B: Block, T>(
     Ok(result)
 }
 
+/// The host memory's map for a cache of `lines` lines over `patches` patches (see
+/// [`MemoryMap`]): the PE runs the mapped commands on the mapped memory.
+pub(crate) fn memory_map(lines: Option<u32>, patches: usize) -> Result<MemoryMap, CosimError> {
+    MemoryMap::new(lines, patches).map_err(|e| CosimError::Config(e.message().to_string()))
+}
+
+/// Hits checked against the model of the mapped commands, with their addresses turned back into
+/// patch numbers (the model names only addresses that hold a patch).
+fn patch_numbers(map: &MemoryMap, hits: Vec<Option<Nearest>>) -> Vec<Option<Nearest>> {
+    hits.into_iter()
+        .map(|h| h.map(|n| Nearest { id: map.patch(n.id).expect("a checked hit names a patch"), ..n }))
+        .collect()
+}
+
 /// Checks a PE's hits and counters after a source against the bit-true model's (`want`,
 /// `model`): every ray's hit, and the loads (from the host or the cache), passed patches and
 /// tests. The error names the first ray or count that differs.
@@ -252,11 +266,11 @@ pub fn run_sim<S: PeSim>(
 ) -> Result<Cosim, CosimError> {
     check_range("--tc", config.tc, 1, MAX_TC).map_err(CosimError::Config)?;
     let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
+    let map = memory_map(config.cache, patches.len())?;
+    let (patches, cmds) = (map.memory(&patches), map.commands(&cmds));
     let (want, model) = pe::model(&setup, &patches, &cmds);
     let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;
-    let cache = CacheConfig { lines: config.cache };
-    cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
-    let (hits, hardware) = pe::run(sim_pe, &mut memory, &setup, cache, &cmds, progress).map_err(sim)?;
+    let (hits, hardware) = pe::run(sim_pe, &mut memory, &setup, map.cache(), &cmds, progress).map_err(sim)?;
     check_against_model(&hits, &hardware, &want, &model)?;
-    Ok(Cosim { hits, hardware, model })
+    Ok(Cosim { hits: patch_numbers(&map, hits), hardware, model })
 }

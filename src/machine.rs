@@ -21,7 +21,7 @@
 //! A part sees the patches of its own angular range, so each PE's cache holds a slice of the
 //! scene's directions rather than a region of it.
 
-use crate::cosim::{check_against_model, with_vcd, CosimError, Engine, VcdWindow};
+use crate::cosim::{check_against_model, memory_map, with_vcd, CosimError, Engine, VcdWindow};
 use crate::geom::Segment;
 use crate::limits::{check_range, MAX_TC};
 use crate::rays::{Bundle, RaySet};
@@ -34,7 +34,7 @@ use shelling_hdl::arbiter::MAX_PES;
 use shelling_hdl::machine::Machine;
 use shelling_testbench::machine::{run_queues, Composed, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
-use shelling_testbench::pe::{self, rust_hdl_pe, CacheConfig, Command, PeSetup};
+use shelling_testbench::pe::{self, rust_hdl_pe, Command, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
 use shelling_testbench::Driver;
 
@@ -313,10 +313,9 @@ fn run_on<M: MachineSim>(
             schedules.len()
         )));
     }
-    let cache = CacheConfig { lines: config.cache };
-    cache.check().map_err(|e| CosimError::Config(e.message().to_string()))?;
     let mut items: Vec<(PeSetup, Vec<Command>)> = Vec::with_capacity(schedules.len());
     let (_, patches, _) = commands(&first.stream, &first.fixed)?;
+    let map = memory_map(config.cache, patches.len())?;
     for s in schedules {
         let (setup, p, cmds) = commands(&s.stream, &s.fixed)?;
         if p != patches {
@@ -324,8 +323,9 @@ fn run_on<M: MachineSim>(
                 "the sources' scenes differ in fixed point: a machine's host memory holds one scene".into(),
             ));
         }
-        items.push((setup, cmds));
+        items.push((setup, map.commands(&cmds)));
     }
+    let patches = map.memory(&patches);
     let sources = items.len() / parts;
     let mut memory = HostMemory::new(patches.clone(), config.tc).map_err(sim)?;
     let dealt = deal(sources, config.pes, config.deal);
@@ -334,7 +334,7 @@ fn run_on<M: MachineSim>(
         .map(|q| q.iter().map(|&i| Work { setup: &items[i].0, commands: &items[i].1 }).collect())
         .collect();
     let k =
-        run_queues(machine, &mut memory, cache, &queues, |done| progress(done, items.len())).map_err(sim)?;
+        run_queues(machine, &mut memory, map.cache(), &queues, |done| progress(done, items.len())).map_err(sim)?;
     let mut m = MachineRun {
         pes: config.pes,
         sources,

@@ -367,7 +367,7 @@ struct CosimArgs {
     /// Cycles the host memory takes to deliver one patch (T_c), 1 to 1024.
     #[arg(long, default_value_t = 1)]
     tc: u32,
-    /// Give the PE a patch cache of this many patches (a power of two up to 4096): a patch
+    /// Give the PE a patch cache of this many patches (1 to 4096): a patch
     /// loaded before costs one clock instead of T_c. Without it every load goes to the host.
     #[arg(long, value_name = "PATCHES")]
     cache: Option<u32>,
@@ -439,12 +439,21 @@ struct MachineFiguresArgs {
     /// Host memory load times T_c (cycles per patch), comma separated.
     #[arg(long = "tc", value_delimiter = ',', default_value = "1,4,16,64", allow_hyphen_values = true)]
     tcs: Vec<u32>,
-    /// Per-PE cache sizes, comma separated: `off` or a power of two up to 4096 patches.
+    /// Per-PE cache sizes, comma separated: `off` or 1 to 4096 patches.
     #[arg(long, value_delimiter = ',', default_value = "off,128,1024")]
     caches: Vec<String>,
     /// The PEs' simulator (auto: Verilator where installed).
     #[arg(long, value_enum, default_value_t = Engine::Auto)]
     engine: Engine,
+}
+
+/// `--cache` against a scene of `patches` patches: a size not a power of two spreads the patches
+/// over the host memory's addresses, which must stay within the 16-bit ids.
+fn check_memory_map(cache: Option<u32>, patches: usize) -> Result<()> {
+    if let Some(c) = cache {
+        shelling_testbench::pe::MemoryMap::new(Some(c), patches).map_err(|e| anyhow::anyhow!("--cache {c}: {}", e.message()))?;
+    }
+    Ok(())
 }
 
 fn machine_figures_cmd(a: MachineFiguresArgs) -> Result<()> {
@@ -455,7 +464,7 @@ fn machine_figures_cmd(a: MachineFiguresArgs) -> Result<()> {
         .map(|c| match c.as_str() {
             "off" => Ok(None),
             n => n.parse::<u32>().map(Some).map_err(|_| {
-                anyhow::anyhow!("--caches {c}: each `off` or a power of two up to 4096 patches")
+                anyhow::anyhow!("--caches {c}: each `off` or 1 to 4096 patches")
             }),
         })
         .collect::<Result<Vec<_>>>()?;
@@ -508,7 +517,7 @@ struct MachineArgs {
     /// Cycles the shared host memory takes to deliver one patch (T_c), 1 to 1024.
     #[arg(long, default_value_t = 16)]
     tc: u32,
-    /// Give each PE a patch cache of this many patches (a power of two up to 4096).
+    /// Give each PE a patch cache of this many patches (1 to 4096).
     #[arg(long, value_name = "PATCHES")]
     cache: Option<u32>,
     /// Rays per source over its half-circle: 1 to 1024 (the processing element's ray memory).
@@ -624,7 +633,7 @@ struct FiguresArgs {
     /// distinct values, each 1 to 1024; each runs without and with the patch cache.
     #[arg(long = "tc", value_delimiter = ',', default_value = "1,4,16,64", allow_hyphen_values = true)]
     tcs: Vec<u32>,
-    /// Lines of the patch cache in the co-simulations with the cache (a power of two up to 4096).
+    /// Lines of the patch cache in the co-simulations with the cache (1 to 4096).
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     cache_lines: u32,
     /// The PE's simulator for the co-simulations: rust-hdl's, or the exported Verilog compiled
@@ -1052,6 +1061,7 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     let (vcd, engine) = a.vcd.window(a.engine)?;
     let params = a.tune.shells_2d()?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
+    check_memory_map(a.cache, prepared.scene.segments.len())?;
     let scheduled = prepared.schedule(a.method, &bundle, &params)?;
     let config = CosimConfig { tc: a.tc, cache: a.cache, engine, vcd };
     let bar = progress_bar(scheduled.stream.items.len() as u64, "{bar:40} {pos}/{len} commands {elapsed}");
@@ -1127,6 +1137,7 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     let params = a.tune.shells_2d()?;
     let scene = Scene::load(&a.scene)?;
     let n = scene.segments.len();
+    check_memory_map(a.cache, n)?;
     check_range_for("--first", a.first, 0, n - 1, &format!("(the scene has {n} segments)")).map_err(m)?;
     let count = a.count.unwrap_or(n - a.first);
     check_range_for("--count", count, 1, n - a.first, &format!("(--first {} of {n} segments)", a.first))

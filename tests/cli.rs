@@ -541,7 +541,7 @@ fn cli_figures_rejects_bad_values() {
     t(&["--tc", "1,0"], &["--tc must be between 1 and 1024", "0"]);
     t(&["--tc", "4,4"], &["--tc", "4 twice"]);
     t(&["--tc", "x"], &["--tc", "x"]);
-    t(&["--cache-lines", "1000"], &["cache", "1000"]);
+    t(&["--cache-lines", "5000"], &["--cache-lines", "between 1 and 4096", "5000"]);
     fails(&["figures", "--out", o, "--seeds", "1", "--rays", "2048", "--count", "100", "--quiet"], &["2048"]);
     fails(&["figures", "--quiet"], &["--out"]);
     // --out naming an existing file.
@@ -671,7 +671,7 @@ fn cli_cosim_rejects_bad_options() {
     let with =
         |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
     fails(&with(&["--method", "brute"]), &["brute", "no hardware mapping"]);
-    fails(&with(&["--cache", "1000"]), &["power of two", "1000"]);
+    fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 4096", "5000"]);
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
     fails(
@@ -747,7 +747,7 @@ fn cli_machine_rejects_bad_options() {
     fails(&with(&["--first", "99", "--count", "2"]), &["--count", "between 1 and 1", "2"]);
     fails(&with(&["--first", "100"]), &["--first", "100", "100 segments"]);
     fails(&with(&["--method", "brute"]), &["brute", "no hardware mapping"]);
-    fails(&with(&["--cache", "1000"]), &["power of two", "1000"]);
+    fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 4096", "5000"]);
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
     fails(&with(&["--deal", "random"]), &["random", "blocks", "interleaved", "sectors"]);
@@ -755,6 +755,12 @@ fn cli_machine_rejects_bad_options() {
         &with(&["--deal", "sectors", "--pes", "4", "--rays", "3"]),
         &["--rays 3", "--pes 4", "one ray a PE"],
     );
+    // A 3-line cache spreads 50000 patches over 4 addresses for every 3: beyond 16-bit ids.
+    let big = gen_scene(&dir, "big.json", 50_000, 1.0, 5);
+    for cmd in [&["machine"][..], &["cosim", "--source", "0"]] {
+        let args: Vec<&str> = cmd.iter().copied().chain(["--scene", path_arg(&big), "--cache", "3"]).collect();
+        fails(&args, &["--cache 3", "16-bit ids", "power of two"]);
+    }
 }
 
 /// `machine --vcd`: the machine's RTL writes the window, every signal of
@@ -832,7 +838,7 @@ fn cli_machine_figures_sweep_and_reject_bad_options() {
     let base = ["machine-figures", "--out", path_arg(&out)];
     let with =
         |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
-    fails(&with(&["--caches", "100"]), &["--caches", "power of two", "100"]);
+    fails(&with(&["--caches", "5000"]), &["--caches", "between 1 and 4096", "5000"]);
     fails(&with(&["--caches", "big"]), &["--caches big"]);
     fails(&with(&["--pes", "2,4"]), &["--pes", "include 1"]);
     fails(&with(&["--pes", "1,9"]), &["--pes", "9"]);

@@ -156,3 +156,31 @@ fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
     println!("{runs} runs, {tests} ray-patch tests on the compiled PE");
     assert!(runs == 72 && tests > 100_000, "{runs} runs, {tests} tests");
 }
+
+/// A cache of a size that is not a power of two (a quarter of the 1000-patch scene: 250 lines)
+/// is a direct-mapped cache of that many lines: patch `k` in line `k mod 250`, so its host loads
+/// are exactly the misses of that cache over the source's patch loads, and every hit is the
+/// bit-true tracer's (patch numbers, not the spread host memory's addresses).
+#[test]
+fn a_cache_of_any_size_is_direct_mapped_on_the_patch_number_modulo_its_lines() {
+    use shelling::workstream::commands;
+    use shelling_testbench::pe::Command;
+    let scene = scene::generate(1000, 32.0, 7, PAPER_WORLD).expect("scene");
+    let prepared = GriddedScene::new(scene, GridParams::default());
+    let bundle = prepared.patch_bundle(12, RaySet::Angle, 1024).expect("source");
+    for (m, lines) in [(Method::Stochastic, 250u32), (Method::Conventional, 37)] {
+        let scheduled = prepared.schedule(m, &bundle, &ShellParams::default()).expect("fits");
+        let (_, _, cmds) = commands(&scheduled.stream, &scheduled.fixed).expect("stream");
+        let mut cache = vec![None; lines as usize];
+        let misses = cmds
+            .iter()
+            .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
+            .filter(|&id| cache[id as usize % lines as usize].replace(id) != Some(id))
+            .count() as u64;
+        let config = CosimConfig { tc: 4, cache: Some(lines), engine: cosim::Engine::Verilator, ..CosimConfig::default() };
+        let run = cosim::run(&scheduled, &config, |_, _| {}).unwrap_or_else(|e| panic!("{m} {lines}: {e}"));
+        assert_eq!(tracer_hits(&run), scheduled.trace.hits, "{m} {lines}: the hits, by patch number");
+        assert_eq!(run.hardware.memory_loads, misses, "{m} {lines}: host loads = the {lines}-line cache's misses");
+        assert!(run.hardware.cache_hits > 0 && misses > 0, "{m} {lines}: {:?}", run.hardware);
+    }
+}

@@ -158,7 +158,7 @@ fn cycle_figures_can_be_skipped_and_reject_bad_options() {
         ("no T_c", FigureOptions { tcs: vec![], ..on.clone() }),
         ("T_c 0", FigureOptions { tcs: vec![0], ..on.clone() }),
         ("T_c twice", FigureOptions { tcs: vec![4, 4], ..on.clone() }),
-        ("cache not a power of two", FigureOptions { cache_lines: 1000, ..on.clone() }),
+        ("no cache line", FigureOptions { cache_lines: 0, ..on.clone() }),
         ("cache too large", FigureOptions { cache_lines: 8192, ..on.clone() }),
         ("too many rays for the PE", FigureOptions { rays: 2048, ..on.clone() }),
         ("more sources than patches", FigureOptions { cosim_sources: 101, ..on.clone() }),

@@ -34,7 +34,7 @@ use crate::trace::Method;
 use anyhow::{anyhow, bail, Result};
 use plotters::style::RGBColor;
 use rayon::prelude::*;
-use shelling_testbench::pe::{CacheConfig, ModelCounts, PeCounters, PE_RAY_MEMORY};
+use shelling_testbench::pe::{ModelCounts, PeCounters, PE_RAY_MEMORY};
 use std::fmt;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -70,9 +70,7 @@ pub(super) fn validate(o: &FigureOptions) -> Result<()> {
             bail!("T_c {tc} is listed twice");
         }
     }
-    CacheConfig { lines: Some(o.cache_lines) }
-        .check()
-        .map_err(|e| anyhow!("cache lines: {}", e.message()))?;
+    crate::limits::check_cache("cache lines", o.cache_lines).map_err(|e| anyhow!(e))?;
     Ok(())
 }
 

@@ -465,10 +465,11 @@ pub fn write(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
 /// The README's headline workload: the paper's scene (1000 segments of length 32 in
 /// [0, 1024)², seed 7, as the README's and the tracer benchmark's), every one of its sources in
 /// Z-order, R = 1024 rays (angle set), `T_c` = [`HEADLINE_TC`] shared by all PEs, a cache of
-/// [`HEADLINE_CACHE`] patches per PE (no more than a quarter of the scene), sources dealt in
-/// blocks.
+/// [`HEADLINE_CACHE`] patches per PE (a quarter of the scene: the cache's 256-line index with
+/// the host memory map that leaves lines 250 … 255 unused, `shelling_testbench::pe::MemoryMap`),
+/// sources dealt in blocks.
 pub const HEADLINE_TC: u32 = 16;
-pub const HEADLINE_CACHE: u32 = 128;
+pub const HEADLINE_CACHE: u32 = 250;
 
 /// The headline's scene, prepared, its patches in Z-order in the host memory
 /// ([`Layout::ZOrder`]), and its sources in the order they are dealt (Z-order).

@@ -199,6 +199,98 @@ impl CacheConfig {
     }
 }
 
+/// Where the host memory keeps each patch, so that a cache of any number of lines works on the
+/// cache's power-of-two line index (the address's low bits, `cfg_mask`).
+///
+/// With the cache off or holding a power of two of lines, patch `k` is at address `k`. A cache
+/// of `C` lines otherwise is the RTL's cache with the mask of `S = 2^⌈log₂ C⌉` lines and this
+/// memory map: patch `k` at address `S·⌊k / C⌋ + k mod C`. Patch `k` then goes to the cache's
+/// line `k mod C`, lines `C … S − 1` hold nothing, and the addresses between (`S − C` in every
+/// `S`) are holes of the host memory that no command names. The cache holds at most `C`
+/// patches: a per-PE cache of exactly a quarter of a 1000-patch scene is a cache of 250 lines.
+/// The PE is checked against the model of what it is given (mapped commands and memory);
+/// [`MemoryMap::patch`] turns its hits' addresses back into patch numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MemoryMap {
+    /// `(C, S)` for a spread map, `None` for the identity.
+    spread: Option<(u32, u32)>,
+    lines: Option<u32>,
+}
+
+impl MemoryMap {
+    /// The map for a cache of `lines` lines (`None`: off) over `patches` patches. Fails, naming
+    /// the size, on 0 or more than [`LINES`] lines and when an address would not fit the 16-bit
+    /// ids.
+    pub fn new(lines: Option<u32>, patches: usize) -> Result<Self> {
+        let spread = match lines {
+            Some(n) if n == 0 || n as usize > LINES => {
+                return Err(Error::new(format!("the patch cache holds 1 to {LINES} patches, got {n}")))
+            }
+            Some(n) if !n.is_power_of_two() => Some((n, n.next_power_of_two())),
+            _ => None,
+        };
+        let map = MemoryMap { spread, lines };
+        if let (Some(_), Some(last)) = (spread, patches.checked_sub(1)) {
+            let top = map.address_of(last);
+            if top >= 1 << 16 {
+                return Err(Error::new(format!(
+                    "a {}-line cache spreads {patches} patches over {} host memory addresses, beyond the \
+                     16-bit ids: use a power of two of lines",
+                    lines.unwrap_or(0),
+                    top + 1
+                )));
+            }
+        }
+        Ok(map)
+    }
+
+    fn address_of(&self, k: usize) -> usize {
+        match self.spread {
+            Some((c, s)) => s as usize * (k / c as usize) + k % c as usize,
+            None => k,
+        }
+    }
+
+    /// The cache's setting on the PE: its lines rounded up to a power of two.
+    pub fn cache(&self) -> CacheConfig {
+        CacheConfig { lines: self.spread.map_or(self.lines, |(_, s)| Some(s)) }
+    }
+
+    /// The host memory's contents: `patches` at their addresses, zero in the holes.
+    pub fn memory(&self, patches: &[[i32; 4]]) -> Vec<[i32; 4]> {
+        let len = patches.len().checked_sub(1).map_or(0, |l| self.address_of(l) + 1);
+        let mut out = vec![[0; 4]; len];
+        for (k, p) in patches.iter().enumerate() {
+            out[self.address_of(k)] = *p;
+        }
+        out
+    }
+
+    /// `commands` with their patch numbers turned into addresses.
+    pub fn commands(&self, commands: &[Command]) -> Vec<Command> {
+        commands
+            .iter()
+            .map(|c| match *c {
+                Command::Job { id, first, count } => {
+                    Command::Job { id: self.address_of(id as usize) as u16, first, count }
+                }
+                other => other,
+            })
+            .collect()
+    }
+
+    /// The patch at `address`, or `None` for a hole.
+    pub fn patch(&self, address: u16) -> Option<u16> {
+        match self.spread {
+            Some((c, s)) => {
+                let (block, line) = (address as u32 / s, address as u32 % s);
+                (line < c).then(|| (block * c + line) as u16)
+            }
+            None => Some(address),
+        }
+    }
+}
+
 /// The processing element on rust-hdl's simulator: the engine with VCD windows and port
 /// recording (the compiled one is [`crate::verilated::VerilatedPe`]).
 pub type RustHdlPe = crate::Driver<ProcessingElement>;
@@ -598,4 +690,51 @@ pub fn check_protocol(path: &std::path::Path) -> Result<ProtocolReport> {
         )));
     }
     Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_spread_map_fills_the_first_lines_of_every_block_and_inverts() {
+        let map = MemoryMap::new(Some(250), 1000).unwrap();
+        assert_eq!(map.cache(), CacheConfig { lines: Some(256) });
+        let patches: Vec<[i32; 4]> = (0..1000).map(|k| [k, k + 1, k + 2, k + 3]).collect();
+        let memory = map.memory(&patches);
+        assert_eq!(memory.len(), 3 * 256 + 250);
+        let mut lines = vec![0usize; 256];
+        for k in 0..1000u16 {
+            let [a] = map.commands(&[Command::Job { id: k, first: 1, count: 2 }])[..] else { unreachable!() };
+            let Command::Job { id, first: 1, count: 2 } = a else { panic!("{a:?}") };
+            assert_eq!(map.patch(id), Some(k));
+            assert_eq!(memory[id as usize], patches[k as usize]);
+            assert_eq!(id as usize & 255, k as usize % 250);
+            lines[id as usize & 255] += 1;
+        }
+        assert!(lines[..250].iter().all(|&n| n == 4) && lines[250..].iter().all(|&n| n == 0), "{lines:?}");
+        assert_eq!((250..256).filter_map(|a| map.patch(a)).count(), 0, "holes hold no patch");
+        let sector = Command::Sector { first: [1, 2], last: [3, 4] };
+        assert_eq!(map.commands(&[sector]), vec![sector]);
+    }
+
+    #[test]
+    fn powers_of_two_and_no_cache_keep_the_identity() {
+        for lines in [None, Some(1), Some(128), Some(4096)] {
+            let map = MemoryMap::new(lines, 70_000).unwrap();
+            assert_eq!(map.cache(), CacheConfig { lines });
+            assert_eq!((map.patch(777), map.memory(&[[1; 4]; 3]).len()), (Some(777), 3));
+        }
+    }
+
+    #[test]
+    fn bad_sizes_are_errors_that_name_them() {
+        for (lines, patches, what) in
+            [(0, 10, "got 0"), (4097, 10, "got 4097"), (3, 60_000, "3-line cache spreads 60000 patches")]
+        {
+            let e = MemoryMap::new(Some(lines), patches).unwrap_err();
+            assert!(e.message().contains(what), "{e}");
+        }
+        assert!(MemoryMap::new(Some(3), 49_152).is_ok(), "the last address is 65535");
+    }
 }
