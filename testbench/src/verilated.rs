@@ -233,21 +233,6 @@ fn build(cache: &Path) -> Result<PathBuf> {
     let verilog = export_verilog(&pe, PE)? + &wrapper();
     let glue = glue();
     let version = run_tool(cache_parent(cache)?, "verilator", &["--version"], INSTALL)?;
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    (&verilog, &glue, &version.stdout).hash(&mut h);
-    let key = format!("pe-{:016x}", h.finish());
-    let done = cache.join(&key);
-    let lib = done.join("obj").join(LIB);
-    if lib.is_file() {
-        return Ok(lib);
-    }
-    let scratch = cache.join(format!("{key}.building-{}", std::process::id()));
-    let io = |e: std::io::Error, p: &Path| Error::new(format!("{}: {e}", p.display()));
-    let _ = std::fs::remove_dir_all(&scratch);
-    std::fs::create_dir_all(&scratch).map_err(|e| io(e, &scratch))?;
-    for (name, text) in [("pe.v", verilog.as_str()), ("glue.cpp", glue.as_str())] {
-        std::fs::write(scratch.join(name), text).map_err(|e| io(e, &scratch.join(name)))?;
-    }
     let args = [
         "--cc",
         "--exe",
@@ -272,6 +257,21 @@ fn build(cache: &Path) -> Result<PathBuf> {
         "pe.v",
         "glue.cpp",
     ];
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    (&verilog, &glue, &version.stdout, &args).hash(&mut h);
+    let key = format!("pe-{:016x}", h.finish());
+    let done = cache.join(&key);
+    let lib = done.join("obj").join(LIB);
+    if lib.is_file() {
+        return Ok(lib);
+    }
+    let scratch = cache.join(format!("{key}.building-{}", std::process::id()));
+    let io = |e: std::io::Error, p: &Path| Error::new(format!("{}: {e}", p.display()));
+    let _ = std::fs::remove_dir_all(&scratch);
+    std::fs::create_dir_all(&scratch).map_err(|e| io(e, &scratch))?;
+    for (name, text) in [("pe.v", verilog.as_str()), ("glue.cpp", glue.as_str())] {
+        std::fs::write(scratch.join(name), text).map_err(|e| io(e, &scratch.join(name)))?;
+    }
     run_tool(&scratch, "verilator", &args, INSTALL).map_err(|e| e.context("building the compiled PE"))?;
     // Another process may have finished first: its library is as good as ours.
     if std::fs::rename(&scratch, &done).is_err() && lib.is_file() {
