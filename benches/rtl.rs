@@ -5,7 +5,8 @@
 //! segments of length 32, R = 1024, stochastic shelling, T_c = 16) on rust-hdl's simulation and
 //! on the compiled one (its exported Verilog built by Verilator), beside the bit-true execution
 //! of the same work stream; then the parallel machine of eight compiled PEs on one host memory
-//! (`shelling::machine`, 16 sources of the same scene, `T_c` = 16, 256-patch caches): machine
+//! (`shelling::machine`, 16 sources of the same scene, `T_c` = 16, 256-patch caches; the PEs
+//! stepped on two threads where there are two cores, as `shelling machine` steps them): machine
 //! cycles per second, beside one compiled PE's cycles per second on the same sources in the
 //! same run.
 //!

@@ -284,7 +284,7 @@ pub fn run(
                 (0..config.pes).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>, _>>().map_err(|e| {
                     CosimError::Sim(format!("{}; the rust-hdl engine needs no Verilator", e.message()))
                 })?;
-            run_on(&mut Composed::new(sims).map_err(sim)?, schedules, config, progress)
+            run_on(&mut Composed::threaded(sims).map_err(sim)?, schedules, config, progress)
         }
         _ => {
             let sims = (0..config.pes).map(|_| rust_hdl_pe()).collect::<Result<Vec<_>, _>>().map_err(sim)?;
@@ -333,8 +333,8 @@ fn run_on<M: MachineSim>(
         .iter()
         .map(|q| q.iter().map(|&i| Work { setup: &items[i].0, commands: &items[i].1 }).collect())
         .collect();
-    let k =
-        run_queues(machine, &mut memory, map.cache(), &queues, |done| progress(done, items.len())).map_err(sim)?;
+    let k = run_queues(machine, &mut memory, map.cache(), &queues, |done| progress(done, items.len()))
+        .map_err(sim)?;
     let mut m = MachineRun {
         pes: config.pes,
         sources,

@@ -451,7 +451,8 @@ struct MachineFiguresArgs {
 /// over the host memory's addresses, which must stay within the 16-bit ids.
 fn check_memory_map(cache: Option<u32>, patches: usize) -> Result<()> {
     if let Some(c) = cache {
-        shelling_testbench::pe::MemoryMap::new(Some(c), patches).map_err(|e| anyhow::anyhow!("--cache {c}: {}", e.message()))?;
+        shelling_testbench::pe::MemoryMap::new(Some(c), patches)
+            .map_err(|e| anyhow::anyhow!("--cache {c}: {}", e.message()))?;
     }
     Ok(())
 }
@@ -463,9 +464,10 @@ fn machine_figures_cmd(a: MachineFiguresArgs) -> Result<()> {
         .iter()
         .map(|c| match c.as_str() {
             "off" => Ok(None),
-            n => n.parse::<u32>().map(Some).map_err(|_| {
-                anyhow::anyhow!("--caches {c}: each `off` or 1 to 4096 patches")
-            }),
+            n => n
+                .parse::<u32>()
+                .map(Some)
+                .map_err(|_| anyhow::anyhow!("--caches {c}: each `off` or 1 to 4096 patches")),
         })
         .collect::<Result<Vec<_>>>()?;
     let o = MachineFigureOptions {

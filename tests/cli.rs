@@ -758,7 +758,8 @@ fn cli_machine_rejects_bad_options() {
     // A 3-line cache spreads 50000 patches over 4 addresses for every 3: beyond 16-bit ids.
     let big = gen_scene(&dir, "big.json", 50_000, 1.0, 5);
     for cmd in [&["machine"][..], &["cosim", "--source", "0"]] {
-        let args: Vec<&str> = cmd.iter().copied().chain(["--scene", path_arg(&big), "--cache", "3"]).collect();
+        let args: Vec<&str> =
+            cmd.iter().copied().chain(["--scene", path_arg(&big), "--cache", "3"]).collect();
         fails(&args, &["--cache 3", "16-bit ids", "power of two"]);
     }
 }

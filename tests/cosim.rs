@@ -177,10 +177,18 @@ fn a_cache_of_any_size_is_direct_mapped_on_the_patch_number_modulo_its_lines() {
             .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
             .filter(|&id| cache[id as usize % lines as usize].replace(id) != Some(id))
             .count() as u64;
-        let config = CosimConfig { tc: 4, cache: Some(lines), engine: cosim::Engine::Verilator, ..CosimConfig::default() };
+        let config = CosimConfig {
+            tc: 4,
+            cache: Some(lines),
+            engine: cosim::Engine::Verilator,
+            ..CosimConfig::default()
+        };
         let run = cosim::run(&scheduled, &config, |_, _| {}).unwrap_or_else(|e| panic!("{m} {lines}: {e}"));
         assert_eq!(tracer_hits(&run), scheduled.trace.hits, "{m} {lines}: the hits, by patch number");
-        assert_eq!(run.hardware.memory_loads, misses, "{m} {lines}: host loads = the {lines}-line cache's misses");
+        assert_eq!(
+            run.hardware.memory_loads, misses,
+            "{m} {lines}: host loads = the {lines}-line cache's misses"
+        );
         assert!(run.hardware.cache_hits > 0 && misses > 0, "{m} {lines}: {:?}", run.hardware);
     }
 }

@@ -122,7 +122,7 @@ pub fn hash(files: &[(String, String)]) -> String {
     format!("{:016x}", fnv1a64(bytes))
 }
 
-/// The files of an export in `dir` (as [`write`] leaves them), in the order of its file list.
+/// The files of an export in `dir` (as [`write`](fn@write) leaves them), in the order of its file list.
 pub fn read(dir: &Path) -> Result<Vec<(String, String)>> {
     let io = |e: std::io::Error, p: &Path| Error::new(format!("reading {}: {e}", p.display()));
     let list = dir.join(FILE_LIST);

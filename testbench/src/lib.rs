@@ -87,6 +87,7 @@ pub mod driver;
 pub mod error;
 pub mod export;
 pub mod intersection;
+pub mod lockstep;
 pub mod machine;
 pub mod memory;
 pub mod pe;

@@ -8,7 +8,8 @@
 //!   `testbench/tests/arbiter.rs`) stepped in lockstep: in each cycle every PE sees the
 //!   arbiter's registered answer (`mem_valid` if it is its own, the patch on the shared bus), the
 //!   arbiter sees every PE's registered request. All those outputs are registers, so this is
-//!   the cycle behaviour of the blocks wired together; it runs at the compiled PE's speed;
+//!   the cycle behaviour of the blocks wired together; it runs at the compiled PE's speed, and
+//!   [`Composed::threaded`] steps half the PEs on a second thread ([`Lockstep`]);
 //! - [`Driver<Machine<N>>`](crate::Driver): rust-hdl's simulation of the machine's own RTL
 //!   (`shelling_hdl::machine`), VCD and all.
 //!
@@ -20,6 +21,7 @@
 //! the other PEs do: one PE's setup and readout overlap the others' commands, and no PE waits
 //! for another's source to end.
 
+use crate::lockstep::Lockstep;
 use crate::memory::HostMemory;
 use crate::pe::{CacheConfig, Command, CommandHost, PeCounters, PeSetup};
 use crate::pe_sim::{PeInputs, PeOutputs, PeSim};
@@ -49,17 +51,49 @@ pub trait MachineSim {
 }
 
 /// `N` PE simulators and the arbiter's cycle model, in lockstep (see the module documentation).
+///
+/// Every output of the PE is a register, so [`MachineSim::drive`] only records each PE's
+/// inputs (the outputs it shows are those of the last edge, as a settled simulation's would
+/// be: `testbench/tests/machine.rs` checks this composition against the machine's own RTL
+/// cycle for cycle), and [`MachineSim::tick`] gives every PE its inputs and its edge at once:
+/// on two threads when made by [`Composed::threaded`].
 pub struct Composed<S: PeSim> {
-    pub sims: Vec<S>,
-    pub arbiter: Arbiter,
+    sims: Vec<S>,
+    arbiter: Arbiter,
+    inputs: Vec<PeInputs>,
+    lockstep: Option<Lockstep<S>>,
 }
 
 impl<S: PeSim> Composed<S> {
-    /// The machine of `sims` (1 to [`MAX_PES`] of them) at power-up.
+    /// The machine of `sims` (1 to [`MAX_PES`] of them, fresh or after earlier runs) with the
+    /// arbiter at power-up, stepped on the caller's thread.
     pub fn new(sims: Vec<S>) -> Result<Self> {
         check_pes(sims.len())?;
         let arbiter = Arbiter::new(sims.len());
-        Ok(Self { sims, arbiter })
+        let inputs = vec![PeInputs::default(); sims.len()];
+        Ok(Self { sims, arbiter, inputs, lockstep: None })
+    }
+
+    /// The PE simulators.
+    pub fn sims(&self) -> &[S] {
+        &self.sims
+    }
+}
+
+impl<S: PeSim + Send + 'static> Composed<S> {
+    /// As [`Composed::new`], the PEs stepped on two threads ([`Lockstep`]) where the system has
+    /// two cores and the machine two PEs; the same cycles and results either way.
+    pub fn threaded(sims: Vec<S>) -> Result<Self> {
+        let mut m = Self::new(sims)?;
+        if m.sims.len() >= 2 {
+            m.lockstep = Lockstep::start();
+        }
+        Ok(m)
+    }
+
+    /// Whether the PEs are stepped on two threads.
+    pub fn is_threaded(&self) -> bool {
+        self.lockstep.is_some()
     }
 }
 
@@ -77,12 +111,10 @@ impl<S: PeSim> MachineSim for Composed<S> {
 
     fn drive(&mut self, mut set: impl FnMut(usize, &mut PeInputs)) -> Result<()> {
         let a = self.arbiter.outputs();
-        for (p, sim) in self.sims.iter_mut().enumerate() {
-            sim.drive(|i| {
-                set(p, i);
-                i.mem_valid = a.answer == Some(p);
-                [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = a.patch.map(|w| w as i32);
-            })?;
+        for (p, i) in self.inputs.iter_mut().enumerate() {
+            set(p, i);
+            i.mem_valid = a.answer == Some(p);
+            [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = a.patch.map(|w| w as i32);
         }
         Ok(())
     }
@@ -104,10 +136,10 @@ impl<S: PeSim> MachineSim for Composed<S> {
         self.arbiter
             .step(&requests[..self.sims.len()], answer.map(|m| m.map(|c| c as u32)))
             .map_err(|e| Error::new(format!("arbiter: {e}")))?;
-        for sim in &mut self.sims {
-            sim.tick()?;
+        match &mut self.lockstep {
+            Some(l) => l.cycle(&mut self.sims, &self.inputs),
+            None => self.sims.iter_mut().zip(&self.inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i)),
         }
-        Ok(())
     }
 }
 

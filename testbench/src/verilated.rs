@@ -23,13 +23,15 @@
 //! [`VerilatedPe::new`] exports the PE's Verilog afresh, writes the C glue from
 //! [`INPUT_PORTS`] and [`OUTPUT_PORTS`] (after [`check_ports`]) and runs
 //! `verilator --cc --exe --build` (about 15 s on two cores). The library is cached under
-//! [`cache_dir`], keyed by a hash of the Verilog, the glue and Verilator's version, so later
+//! [`cache_dir`], keyed by a hash of the Verilog, the glue, Verilator's version and its
+//! arguments, so later
 //! runs and processes load it at once; a build is made in a scratch folder and renamed into
 //! place, so concurrent builders never see half a library. The library stays loaded for the
 //! life of the process.
 //!
-//! A model is used from the thread that made it (`VerilatedPe` is neither `Send` nor `Sync`);
-//! each thread makes its own.
+//! Each model has a `VerilatedContext` of its own, so models share no state: a `VerilatedPe` may
+//! move to another thread (`Send`; the machine's `Composed::threaded` steps half its PEs on a
+//! second one), but is used by one thread at a time (not `Sync`).
 
 use crate::pe_sim::{check_ports, PeInputs, PeOutputs, PeSim, INPUT_PORTS, OUTPUT_PORTS};
 use crate::replay::{export_verilog, run_tool};
@@ -121,6 +123,11 @@ impl Drop for VerilatedPe {
     }
 }
 
+// SAFETY: the model is a heap object that this value alone points to, with its own
+// `VerilatedContext` (the glue's `pe_new`): nothing of it is shared with another model or
+// bound to the thread that made it, and `&mut self` gives one thread at a time its use.
+unsafe impl Send for VerilatedPe {}
+
 impl PeSim for VerilatedPe {
     fn drive(&mut self, set: impl FnOnce(&mut PeInputs)) -> Result<()> {
         set(&mut self.inputs);
@@ -210,8 +217,8 @@ fn glue() -> String {
     s.push_str("}\n\nextern \"C\" {\n");
     let _ = write!(
         s,
-        "void* pe_new() {{\n    auto* t = new {class};\n    t->clock = 0;\n    t->eval();\n    return t;\n}}\n\n\
-         void pe_free(void* p) {{\n    auto* t = static_cast<{class}*>(p);\n    t->final();\n    delete t;\n}}\n\n\
+        "void* pe_new() {{\n    auto* t = new {class}{{new VerilatedContext}};\n    t->clock = 0;\n    t->eval();\n    return t;\n}}\n\n\
+         void pe_free(void* p) {{\n    auto* t = static_cast<{class}*>(p);\n    auto* c = t->contextp();\n    t->final();\n    delete t;\n    delete c;\n}}\n\n\
          void pe_drive(void* p, const uint64_t* in, uint64_t* out) {{\n    auto* t = static_cast<{class}*>(p);\n    t->clock = 0;\n"
     );
     for (k, (name, _)) in INPUT_PORTS.iter().enumerate() {

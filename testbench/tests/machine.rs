@@ -155,22 +155,26 @@ fn each_pe_of_a_machine_traces_its_own_source() -> Result<()> {
 }
 
 /// The machine's own RTL (`Machine<3>`, rust-hdl), the composition of rust-hdl's PEs and the
-/// arbiter's model, and that of the compiled PEs: the same hits and the same counters, cycle
-/// counts included, round after round (the caches kept between them).
+/// arbiter's model, and that of the compiled PEs, stepped on one thread and on two: the same
+/// hits and the same counters, cycle counts included, round after round (the caches kept
+/// between them).
 #[test]
 fn the_machine_rtl_and_its_compositions_agree() -> Result<()> {
     let seed = 0x3ac1_10;
     let (mem, work) = sources(seed, 3, 64, 80);
     let rtl_pes: Vec<Driver<ProcessingElement>> =
         (0..3).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<_>>()?;
-    let fast_pes: Vec<VerilatedPe> = (0..3).map(|_| VerilatedPe::new()).collect::<Result<_>>()?;
+    let fast_pes = || (0..3).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>>>();
     let mut machine = Driver::new(Machine::<3>::default())?;
-    let (mut rtl, mut fast) = (Composed::new(rtl_pes)?, Composed::new(fast_pes)?);
+    let (mut rtl, mut fast) = (Composed::new(rtl_pes)?, Composed::new(fast_pes()?)?);
+    let mut threaded = Composed::threaded(fast_pes()?)?;
+    assert!(threaded.is_threaded(), "two cores at least (`.ci/run` and this machine have them)");
     for (tc, lines) in [(2, None), (3, Some(16)), (1, Some(16))] {
         let cache = CacheConfig { lines };
         let a = round(&mut machine, seed, &mem, &work, tc, cache)?;
         let b = round(&mut rtl, seed, &mem, &work, tc, cache)?;
         let c = round(&mut fast, seed, &mem, &work, tc, cache)?;
+        let d = round(&mut threaded, seed, &mem, &work, tc, cache)?;
         assert_eq!(
             a, b,
             "seed {seed:#x}, T_c {tc}, {cache:?}: the machine's RTL, then rust-hdl's PEs composed"
@@ -179,6 +183,7 @@ fn the_machine_rtl_and_its_compositions_agree() -> Result<()> {
             b, c,
             "seed {seed:#x}, T_c {tc}, {cache:?}: rust-hdl's PEs composed, then the compiled ones"
         );
+        assert_eq!(c, d, "seed {seed:#x}, T_c {tc}, {cache:?}: the compiled PEs on one thread, then on two");
     }
     Ok(())
 }

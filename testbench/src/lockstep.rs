@@ -1,0 +1,153 @@
+//! Two threads stepping a machine's PE simulators in lockstep: each clock edge, the back half
+//! of the PEs on a worker thread, the front half on the caller's, and the edge is over when
+//! both are. The PEs of a machine share nothing within a cycle (the memory arbiter between them
+//! is stepped before, by the caller), so splitting them changes no result, only the wall time:
+//! a machine cycle of eight compiled PEs costs about half.
+//!
+//! An edge is a few microseconds of work, far less than waking a sleeping thread, so the worker
+//! spins on an atomic generation counter while edges come; when none has come for a while (the
+//! host between runs) it parks until the next, a millisecond at most.
+
+use crate::pe_sim::{PeInputs, PeSim};
+use crate::{Error, Result};
+use std::marker::PhantomData;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
+use std::thread::JoinHandle;
+use std::time::Duration;
+
+/// Spins on the counter before parking (the worker) or yielding (the caller).
+const SPINS: u32 = 1 << 14;
+
+/// What the caller hands the worker for one edge, and the worker's answer.
+#[derive(Default)]
+struct Shared {
+    /// The edge to take: raised by the caller once the job's pointers are set.
+    go: AtomicU64,
+    /// The last edge the worker has taken.
+    done: AtomicU64,
+    stop: AtomicBool,
+    /// The back half: its first simulator, its inputs, how many.
+    sims: AtomicUsize,
+    inputs: AtomicUsize,
+    count: AtomicUsize,
+    /// The first error (or panic) of the worker's half since the caller last looked.
+    error: Mutex<Option<Error>>,
+}
+
+/// The worker thread of a machine of `S` simulators (see the [module documentation](self)).
+pub struct Lockstep<S> {
+    shared: Arc<Shared>,
+    thread: Option<JoinHandle<()>>,
+    edge: u64,
+    _sims: PhantomData<fn(S)>,
+}
+
+impl<S: PeSim + Send + 'static> Lockstep<S> {
+    /// Starts the worker thread; `None` if the system has one core only or the thread cannot
+    /// be made (the caller then steps every PE itself).
+    pub fn start() -> Option<Self> {
+        if std::thread::available_parallelism().map_or(1, |n| n.get()) < 2 {
+            return None;
+        }
+        let shared = Arc::new(Shared::default());
+        let theirs = Arc::clone(&shared);
+        let thread =
+            std::thread::Builder::new().name("pe-lockstep".into()).spawn(move || work::<S>(&theirs)).ok()?;
+        Some(Self { shared, thread: Some(thread), edge: 0, _sims: PhantomData })
+    }
+}
+
+impl<S: PeSim> Lockstep<S> {
+    /// One clock edge of every simulator: `sims[p]` takes `inputs[p]` (its drive and its
+    /// edge, [`PeSim::cycle`]). The first error of either half is returned, after both are done.
+    pub fn cycle(&mut self, sims: &mut [S], inputs: &[PeInputs]) -> Result<()> {
+        assert_eq!(sims.len(), inputs.len(), "one set of inputs a PE");
+        let half = sims.len() / 2;
+        let (front, back) = sims.split_at_mut(half);
+        let s = &self.shared;
+        s.sims.store(back.as_mut_ptr() as usize, Ordering::Relaxed);
+        s.inputs.store(inputs[half..].as_ptr() as usize, Ordering::Relaxed);
+        s.count.store(back.len(), Ordering::Relaxed);
+        self.edge += 1;
+        s.go.store(self.edge, Ordering::Release);
+        if let Some(t) = &self.thread {
+            t.thread().unpark();
+        }
+        let mine = front.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i));
+        // The back half is borrowed until the worker has taken this edge.
+        let mut spins = 0u32;
+        while s.done.load(Ordering::Acquire) != self.edge {
+            if spins < SPINS {
+                spins += 1;
+                std::hint::spin_loop();
+            } else {
+                std::thread::yield_now();
+            }
+        }
+        let theirs = s.error.lock().map_or(None, |mut e| e.take());
+        mine?;
+        theirs.map_or(Ok(()), Err)
+    }
+}
+
+/// The worker: each edge raised, the back half's cycles; parks when edges stop coming.
+fn work<S: PeSim + Send>(s: &Shared) {
+    let mut taken = 0u64;
+    loop {
+        let mut spins = 0u32;
+        let edge = loop {
+            let g = s.go.load(Ordering::Acquire);
+            if g != taken {
+                break g;
+            }
+            if s.stop.load(Ordering::Relaxed) {
+                return;
+            }
+            if spins < SPINS {
+                spins += 1;
+                std::hint::spin_loop();
+            } else {
+                std::thread::park_timeout(Duration::from_millis(1));
+            }
+        };
+        let (sims, inputs, n) = (
+            s.sims.load(Ordering::Relaxed),
+            s.inputs.load(Ordering::Relaxed),
+            s.count.load(Ordering::Relaxed),
+        );
+        let stepped = catch_unwind(AssertUnwindSafe(|| {
+            // SAFETY: the caller published `n` simulators and `n` inputs from its `&mut [S]` and
+            // `&[PeInputs]` and waits, without touching them, until `done` shows this edge.
+            let (sims, inputs) = unsafe {
+                (
+                    std::slice::from_raw_parts_mut(sims as *mut S, n),
+                    std::slice::from_raw_parts(inputs as *const PeInputs, n),
+                )
+            };
+            sims.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i))
+        }));
+        let failed = match stepped {
+            Ok(r) => r.err(),
+            Err(_) => Some(Error::new("a PE simulator panicked on the lockstep thread")),
+        };
+        if let Some(e) = failed {
+            if let Ok(mut slot) = s.error.lock() {
+                slot.get_or_insert(e);
+            }
+        }
+        taken = edge;
+        s.done.store(edge, Ordering::Release);
+    }
+}
+
+impl<S> Drop for Lockstep<S> {
+    fn drop(&mut self) {
+        self.shared.stop.store(true, Ordering::Relaxed);
+        if let Some(t) = self.thread.take() {
+            t.thread().unpark();
+            let _ = t.join();
+        }
+    }
+}
