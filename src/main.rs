@@ -371,9 +371,15 @@ struct CosimArgs {
     /// loaded before costs one clock instead of T_c. Without it every load goes to the host.
     #[arg(long, value_name = "PATCHES")]
     cache: Option<u32>,
+    /// Co-simulate the source on the parallel machine of this many PEs (1 to 8) sharing the
+    /// host memory: its rays cut into as many contiguous sectors, one a PE (a ray always on
+    /// one PE), each PE with its own cache; prints the machine's report (`machine`'s).
+    #[arg(long, default_value_t = 1)]
+    pes: usize,
     #[command(flatten)]
     vcd: VcdArgs,
-    /// Print the trace JSON (the PE's hits) with the hardware counters.
+    /// Print the trace JSON (the PE's hits) with the hardware counters (with --pes above 1:
+    /// the machine's JSON, as `machine --json`).
     #[arg(long)]
     json: bool,
     /// The PE's simulator: rust-hdl's (VCD windows) or the exported Verilog compiled by
@@ -1062,8 +1068,13 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
     }
     let (vcd, engine) = a.vcd.window(a.engine)?;
     let params = a.tune.shells_2d()?;
+    check_range_for("--pes", a.pes, 1, shelling_hdl::arbiter::MAX_PES, "(the memory arbiter's ports)")
+        .map_err(m)?;
     let (prepared, bundle) = a.from.load(&a.tune)?;
     check_memory_map(a.cache, prepared.scene.segments.len())?;
+    if a.pes > 1 {
+        return cosim_machine(&a, &prepared, &bundle, &params, vcd, engine);
+    }
     let scheduled = prepared.schedule(a.method, &bundle, &params)?;
     let config = CosimConfig { tc: a.tc, cache: a.cache, engine, vcd };
     let bar = progress_bar(scheduled.stream.items.len() as u64, "{bar:40} {pos}/{len} commands {elapsed}");
@@ -1173,23 +1184,41 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();
     let run = run?;
+    let layout = if a.layout == machine::Layout::ZOrder { "Z" } else { "the file's" };
+    report_machine(&run, a.json, a.rays, a.method, a.tc, a.cache, config.engine.name(), layout, a.deal)
+}
+
+/// Prints a machine run (`machine`, `cosim --pes`): its JSON, or its summary.
+#[allow(clippy::too_many_arguments)]
+fn report_machine(
+    run: &machine::MachineRun,
+    json: bool,
+    rays: usize,
+    method: Method,
+    tc: u32,
+    cache: Option<u32>,
+    engine: &str,
+    layout: &str,
+    deal: machine::Deal,
+) -> Result<()> {
+    let parts = run.parts;
     let mut out = Out::new();
-    if a.json {
-        say!(out, "{}", serde_json::to_string_pretty(&run).context("serialising the machine run")?);
+    if json {
+        say!(out, "{}", serde_json::to_string_pretty(run).context("serialising the machine run")?);
         return out.flush();
     }
     say!(
         out,
         "{} sources of {} rays, {} on {} PEs ({} simulation), T_c = {}, caches {}, patches in {} order, dealt as {}{}: every hit equals the bit-true model's",
         run.sources,
-        a.rays,
-        a.method,
-        a.pes,
-        config.engine.name(),
-        a.tc,
-        a.cache.map_or("off".to_string(), |c| format!("of {c} patches")),
-        if a.layout == machine::Layout::ZOrder { "Z" } else { "the file's" },
-        a.deal.name(),
+        rays,
+        method,
+        run.pes,
+        engine,
+        tc,
+        cache.map_or("off".to_string(), |c| format!("of {c} patches")),
+        layout,
+        deal.name(),
         if parts > 1 { format!(" ({parts} per source)") } else { String::new() }
     );
     say!(
@@ -1214,6 +1243,46 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
         run.tests
     );
     out.flush()
+}
+
+/// `cosim --pes N`: the source's rays in `N` contiguous sectors, one a PE of the machine.
+fn cosim_machine(
+    a: &CosimArgs,
+    prepared: &GriddedScene,
+    bundle: &shelling::rays::Bundle,
+    params: &shelling::trace::ShellParams,
+    vcd: Option<shelling::cosim::VcdWindow>,
+    engine: Engine,
+) -> Result<()> {
+    if a.pes > bundle.len() {
+        bail!("--pes {} needs at least one ray a PE: the source has {} rays", a.pes, bundle.len());
+    }
+    let parts = (0..a.pes)
+        .map(|j| {
+            let part = machine::sub_bundle(bundle, machine::part_range(bundle.len(), a.pes, j));
+            prepared.schedule(a.method, &part, params)
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let config = machine::MachineConfig {
+        pes: a.pes,
+        tc: a.tc,
+        cache: a.cache,
+        deal: machine::Deal::Sectors,
+        engine,
+        vcd,
+    };
+    let run = machine::run(&parts, &config, |_, _| {})?;
+    report_machine(
+        &run,
+        a.json,
+        bundle.len(),
+        a.method,
+        a.tc,
+        a.cache,
+        config.engine.name(),
+        "the file's",
+        config.deal,
+    )
 }
 
 /// The `cosim` JSON output: the `trace` JSON of the PE's hits plus the hardware's counters.

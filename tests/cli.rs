@@ -663,6 +663,72 @@ fn cli_cosim_json_is_the_trace_json_plus_the_hardware() {
     );
 }
 
+/// `cosim --pes N`: the source's rays in N sectors on the machine of N PEs, every hit checked:
+/// the run `machine --deal sectors` makes of that one source.
+#[test]
+fn cli_cosim_runs_a_source_on_several_pes() {
+    let dir = TempDir::new("cosim-pes");
+    let scene = gen_scene(&dir, "s.json", 200, 32.0, 8);
+    let run = |pes: &'static str| {
+        let args = [
+            "cosim",
+            "--scene",
+            path_arg(&scene),
+            "--source",
+            "7",
+            "--rays",
+            "96",
+            "--method",
+            "conventional",
+            "--tc",
+            "4",
+            "--cache",
+            "50",
+            "--engine",
+            "verilator",
+            "--json",
+            "--pes",
+            pes,
+        ];
+        parse_json(&ok(&args), "cosim")
+    };
+    let one = run("1");
+    let three = run("3");
+    let n = |v: &Value, k: &str| v[k].as_u64();
+    assert_eq!((n(&three, "pes"), n(&three, "sources"), n(&three, "parts")), (Some(3), Some(1), Some(3)));
+    assert_eq!(n(&three, "rays"), Some(96));
+    assert!(n(&three, "tests") > Some(0) && n(&one["hardware"], "tests") > Some(0));
+    let machine = [
+        "machine",
+        "--scene",
+        path_arg(&scene),
+        "--first",
+        "7",
+        "--count",
+        "1",
+        "--rays",
+        "96",
+        "--method",
+        "conventional",
+        "--tc",
+        "4",
+        "--cache",
+        "50",
+        "--engine",
+        "verilator",
+        "--json",
+        "--pes",
+        "3",
+        "--deal",
+        "sectors",
+        "--layout",
+        "file",
+    ];
+    assert_eq!(parse_json(&ok(&machine), "machine"), three, "`machine --deal sectors` on the one source");
+    let text = ok(&["cosim", "--scene", path_arg(&scene), "--source", "7", "--rays", "32", "--pes", "2"]);
+    assert!(text.contains("on 2 PEs") && text.contains("every hit equals the bit-true model's"), "{text}");
+}
+
 #[test]
 fn cli_cosim_rejects_bad_options() {
     let dir = TempDir::new("cosim-bad");
@@ -674,6 +740,8 @@ fn cli_cosim_rejects_bad_options() {
     fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 4096", "5000"]);
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
+    fails(&with(&["--pes", "9"]), &["--pes", "1 and 8", "9"]);
+    fails(&with(&["--pes", "4", "--rays", "3"]), &["--pes 4", "one ray a PE", "3 rays"]);
     fails(
         &with(&["--vcd", "x.vcd", "--vcd-from", "10", "--vcd-to", "5"]),
         &["VCD window", "--vcd-from 10", "--vcd-to 5"],

@@ -116,6 +116,36 @@ fn committed_fpga_results_are_of_the_committed_verilog() {
     }
 }
 
+/// The committed post-route results of the machine (`hdl/fpga/ecp5-machine-seeds.json`, from
+/// `cargo xtask fpga --blocks machine_N`, which the headline's bench reads its clock from) are
+/// of the machine's current Verilog: its export for that many PEs is not committed (half a
+/// megabyte a PE), so it is exported again here and hashed. Each result is a median over three
+/// placement seeds at least.
+#[test]
+fn committed_machine_fpga_results_are_of_the_current_machine() {
+    use shelling_testbench::export::{hash, machine_block_pes, machine_verilog};
+    let results = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("hdl/fpga/ecp5-machine-seeds.json");
+    let text = std::fs::read_to_string(&results).expect("hdl/fpga/ecp5-machine-seeds.json is committed");
+    let json: serde_json::Value = serde_json::from_str(&text).expect("the machine's results are JSON");
+    let blocks = json["blocks"].as_array().expect("the results list blocks");
+    assert!(!blocks.is_empty(), "hdl/fpga/ecp5-machine-seeds.json lists no machine");
+    for b in blocks {
+        let block = b["block"].as_str().expect("a block is named");
+        let pes = machine_block_pes(block).unwrap_or_else(|| panic!("{block} is not a machine_N block"));
+        let file = machine_verilog(pes).expect("the machine exports");
+        assert_eq!(
+            b["verilog_hash"].as_str().expect("a block's results name its Verilog's hash"),
+            hash(&[file]),
+            "hdl/fpga/ecp5-machine-seeds.json is stale: {block}'s Verilog changed since it was measured. Run \
+             `cargo xtask fpga --out out/fpga-m --families ecp5 --blocks {block} --seeds 1,2,3` and copy its \
+             fpga-seeds.json to hdl/fpga/ecp5-machine-seeds.json and fpga.md to hdl/fpga/ecp5-machine.md"
+        );
+        let seeds = b["seeds"].as_array().map_or(0, Vec::len);
+        assert!(seeds >= 3, "{block}: a median of {seeds} seeds; three at least");
+        assert!(b["median_mhz"].is_f64(), "{block} has no median clock rate");
+    }
+}
+
 #[test]
 fn intersection_unit_synthesizes_to_dsps_without_latches() {
     let stat = synth_ecp5("intersection_unit");
