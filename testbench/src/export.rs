@@ -92,6 +92,17 @@ pub fn machine_block_pes(block: &str) -> Option<usize> {
 /// Verilog)`. For the FPGA flow's machine of more PEs than the committed two-PE `machine`; not
 /// committed (every PE adds the processing element's whole text, half a megabyte).
 pub fn machine_verilog(pes: usize) -> Result<(String, String)> {
+    // The machine's block is built on the stack (eight PEs are tens of megabytes of it): on a
+    // thread of its own, with room for it.
+    std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(move || machine_verilog_here(pes))
+        .map_err(|e| Error::new(format!("a thread to export the machine: {e}")))?
+        .join()
+        .map_err(|_| Error::new("exporting the machine panicked"))?
+}
+
+fn machine_verilog_here(pes: usize) -> Result<(String, String)> {
     macro_rules! export {
         ($($n:literal)*) => {
             match pes {

@@ -73,11 +73,6 @@ impl<S: PeSim> Composed<S> {
         let inputs = vec![PeInputs::default(); sims.len()];
         Ok(Self { sims, arbiter, inputs, lockstep: None })
     }
-
-    /// The PE simulators.
-    pub fn sims(&self) -> &[S] {
-        &self.sims
-    }
 }
 
 impl<S: PeSim + Send + 'static> Composed<S> {
