@@ -188,9 +188,11 @@ pub fn screen(source: &Source3, k: usize, polygon: &Polygon) -> Screen3 {
 /// Screen3::Pass`, the same comparisons (a NaN fails `≤` as there), the cheapest first.
 #[inline(always)]
 pub(crate) fn passes(source: &Source3, k: usize, polygon: &Polygon) -> bool {
+    // `x ≤ 0` fails: `x > 0` or `x` is a NaN.
+    let above = |x: f64| x > 0.0 || x.is_nan();
     source.patch != Some(k)
-        && !((source.origin - polygon.centre).dot(polygon.normal) <= 0.0)
-        && polygon.vertices.iter().any(|v| !((*v - source.origin).dot(source.normal) <= 0.0))
+        && above((source.origin - polygon.centre).dot(polygon.normal))
+        && polygon.vertices.iter().any(|v| above((*v - source.origin).dot(source.normal)))
 }
 
 /// A 3D tracing technique.
