@@ -34,7 +34,9 @@
 //! the answer: a polygon's bounding [`Cone`] from the source rules out the rays that pass far
 //! from it, and [`FacetQuads`] (one source's polygons, four to a group in AVX lanes) decides an
 //! edge from two products per ray (`SourceEdge`'s filter) unless it lies within a rounding
-//! bound of its threshold, where the hit rule's own operations decide.
+//! bound of its threshold, where the hit rule's own operations decide. For a source with many
+//! polygons, `DirBins` lists them by direction once, so that a ray visits only the polygons whose
+//! cones could let it through, each still through its cone and the hit rule's own inside test.
 
 use super::grid::RegistrationPolygon;
 use super::scene::{Polygon, Scene3};

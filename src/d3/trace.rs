@@ -36,8 +36,10 @@
 //! far is not tested inside (its hit could not be taken). Brute force runs the cones and the
 //! planes four polygons at a time in AVX lanes, nearest polygons first, and its edge tests
 //! through a per-source filter that falls back on the hit rule's own operations near the
-//! thresholds ([`FacetQuads`]). A pair ruled out by a cone or a bound is still a test: it is
-//! decided, and the counters count it as before.
+//! thresholds ([`FacetQuads`]); for a source with many polygons it lists them once by direction
+//! (a cube map of directions, each polygon in the cells its cone can let a ray through), and a ray
+//! visits only its own cell's polygons. A pair ruled out by a cone, a cell or a bound is still a
+//! test: it is decided, and the counters count it as before.
 //!
 //! # Counters
 //!
