@@ -34,7 +34,9 @@
 //! the answer: a polygon's bounding [`Cone`] from the source rules out the rays that pass far
 //! from it, and [`FacetQuads`] (one source's polygons, four to a group in AVX lanes) decides an
 //! edge from two products per ray (`SourceEdge`'s filter) unless it lies within a rounding
-//! bound of its threshold, where the hit rule's own operations decide.
+//! bound of its threshold, where the hit rule's own operations decide. For a source with many
+//! polygons, `DirBins` lists them by direction once, so that a ray visits only the polygons whose
+//! cones could let it through, each still through its cone and the hit rule's own inside test.
 
 use super::grid::RegistrationPolygon;
 use super::scene::{Polygon, Scene3};
@@ -309,10 +311,13 @@ pub struct FacetQuads {
     quads: Vec<Quad>,
     /// The quads' cones, by quad.
     cones: Vec<ConeQuad>,
-    /// The polygons' edges for the source, in the order of the quads' lanes (`Quad::e`).
+    /// The polygons' edges for the source, in the order of the quads' lanes (`Quad::e`); empty
+    /// for a source with bins.
     edges: Vec<SourceEdge>,
     /// Whether the CPU has AVX (detected once).
     avx: bool,
+    /// The polygons by direction, for a source with many polygons.
+    bins: Option<DirBins>,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -343,17 +348,26 @@ struct ConeQuad {
 impl FacetQuads {
     /// Polygons `ks` of `facets`, for rays from `origin`, nearest first (by the distance of
     /// their bounding spheres: the nearer polygons' hits then bound the farther ones' tests;
-    /// the order cannot change a ray's nearest hit, which the tie rule decides).
+    /// the order cannot change a ray's nearest hit, which the tie rule decides), except with
+    /// direction bins ([`DirBins`], many polygons), where they keep the order of `ks`.
     pub fn new(facets: &Facets, origin: DVec3, ks: &[usize]) -> FacetQuads {
-        let mut ks: Vec<(f64, usize)> = ks
-            .iter()
-            .map(|&k| {
-                let f = facets.facet(k);
-                ((f.centre - origin).length() - f.radius, k)
-            })
-            .collect();
-        ks.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let ks: Vec<usize> = ks.into_iter().map(|(_, k)| k).collect();
+        // A source with many polygons gets direction bins, and its rays' few inside tests are
+        // the hit rule's own (no per-source edge data to make). Its rays visit few polygons
+        // each, so they keep the given order.
+        let binned = ks.len().div_ceil(4) >= BIN_MIN_QUADS;
+        let ks: Vec<usize> = if binned {
+            ks.to_vec()
+        } else {
+            let mut ks: Vec<(f64, usize)> = ks
+                .iter()
+                .map(|&k| {
+                    let f = facets.facet(k);
+                    ((f.centre - origin).length() - f.radius, k)
+                })
+                .collect();
+            ks.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            ks.into_iter().map(|(_, k)| k).collect()
+        };
         let mut edges = Vec::new();
         let mut cones = Vec::with_capacity(ks.len().div_ceil(4));
         let quads = ks
@@ -363,9 +377,11 @@ impl FacetQuads {
                 let mut q = Quad { nx: z, ny: z, nz: z, num: z, k: [0; 4], e: [0; 4], count: [0; 4] };
                 let mut cq = ConeQuad { vx: z, vy: z, vz: z, q: [f64::INFINITY; 4] };
                 for (lane, &k) in c.iter().enumerate() {
-                    q.e[lane] = edges.len() as u32;
-                    facets.source_edges(k, origin, &mut edges);
-                    q.count[lane] = edges.len() as u32 - q.e[lane];
+                    if !binned {
+                        q.e[lane] = edges.len() as u32;
+                        facets.source_edges(k, origin, &mut edges);
+                        q.count[lane] = edges.len() as u32 - q.e[lane];
+                    }
                     let f = facets.facet(k);
                     (q.nx[lane], q.ny[lane], q.nz[lane]) = (f.normal.x, f.normal.y, f.normal.z);
                     q.num[lane] = (f.centre - origin).dot(f.normal);
@@ -382,21 +398,32 @@ impl FacetQuads {
         let avx = std::is_x86_feature_detected!("avx");
         #[cfg(not(target_arch = "x86_64"))]
         let avx = false;
-        FacetQuads { quads, cones, edges, avx }
+        let bins = binned.then(|| DirBins::new(&cones));
+        FacetQuads { quads, cones, edges, avx, bins }
     }
 
     /// Offers every hit of the ray `origin + t·direction` (`origin` the one given to
     /// [`FacetQuads::new`]) to `best` by the tie rule (nearer wins, of equal `t` the lower
     /// index): [`Facets::hit`] of each polygon, in the polygons' order, bounded by the nearest
-    /// hit so far, since a hit beyond it could not be taken.
+    /// hit so far, since a hit beyond it could not be taken. With direction bins (a source with
+    /// many polygons, [`DirBins`]), only the polygons listed in the ray's cell are visited, one
+    /// by one: every other polygon's cone rules the ray out.
     #[inline(always)]
     pub fn offer_hits(&self, facets: &Facets, origin: DVec3, direction: DVec3, best: &mut Option<Hit>) {
-        let bound = |best: &Option<Hit>| best.map_or(f64::INFINITY, |b| b.t);
         let dd = direction.dot(direction);
+        if let Some(bins) = &self.bins {
+            if let Some(c) = bins.cell(direction, dd) {
+                for &j in bins.everywhere.iter().chain(bins.polygons(c)) {
+                    self.offer_lane(j as usize, facets, origin, direction, dd, best);
+                }
+                return;
+            }
+        }
         let d1 = direction.abs().element_sum();
         #[cfg(target_arch = "x86_64")]
         // SAFETY (every `unsafe` of this loop): `self.avx` says the CPU has AVX (`FacetQuads::new`).
         let ray = self.avx.then(|| unsafe { AvxRay::new(direction, dd) });
+        let bound = |best: &Option<Hit>| best.map_or(f64::INFINITY, |b| b.t);
         for (q, c) in self.quads.iter().zip(&self.cones) {
             #[cfg(target_arch = "x86_64")]
             let misses = match &ray {
@@ -426,25 +453,230 @@ impl FacetQuads {
                 if best.is_some_and(|b| t > b.t || (t == b.t && k > b.polygon)) {
                     continue;
                 }
-                // `Facets::inside`, edge by edge through `SourceEdge`'s filter.
-                let first = q.e[lane] as usize;
-                let edges = &self.edges[first..first + q.count[lane] as usize];
-                let inside = edges.iter().enumerate().all(|(i, e)| {
-                    let x = e.alpha + t * direction.dot(e.w);
-                    let b = e.scale * (e.s + t * d1);
-                    if x - b >= e.accept {
-                        true
-                    } else if x + b < e.reject {
-                        false
-                    } else {
-                        facets.edge_passes(k, i, origin, direction, t)
-                    }
-                });
+                let inside = if self.edges.is_empty() {
+                    // A source with bins has no filter data: the hit rule's own test.
+                    facets.inside(k, origin, direction, t)
+                } else {
+                    // `Facets::inside`, edge by edge through `SourceEdge`'s filter.
+                    let first = q.e[lane] as usize;
+                    let edges = &self.edges[first..first + q.count[lane] as usize];
+                    edges.iter().enumerate().all(|(i, e)| {
+                        let x = e.alpha + t * direction.dot(e.w);
+                        let b = e.scale * (e.s + t * d1);
+                        if x - b >= e.accept {
+                            true
+                        } else if x + b < e.reject {
+                            false
+                        } else {
+                            facets.edge_passes(k, i, origin, direction, t)
+                        }
+                    })
+                };
                 if inside {
                     offer(best, k, t, denom[lane] < 0.0);
                 }
             }
         }
+    }
+
+    /// [`FacetQuads::offer_hits`] for the polygon in place `j` of the order (quad `j / 4`, lane
+    /// `j % 4`) alone: its cone ([`Cone::misses`]), its plane ([`Quad::plane`]'s operations),
+    /// then [`Facets::inside`].
+    #[inline(always)]
+    fn offer_lane(
+        &self,
+        j: usize,
+        facets: &Facets,
+        origin: DVec3,
+        direction: DVec3,
+        dd: f64,
+        best: &mut Option<Hit>,
+    ) {
+        let (qi, lane) = (j >> 2, j & 3);
+        let c = &self.cones[qi];
+        let cone = Cone { v: DVec3::new(c.vx[lane], c.vy[lane], c.vz[lane]), q: c.q[lane] };
+        if cone.misses(direction, dd) {
+            return;
+        }
+        let q = &self.quads[qi];
+        let denom = direction.dot(DVec3::new(q.nx[lane], q.ny[lane], q.nz[lane]));
+        let t = q.num[lane] / denom;
+        let pass = denom != 0.0
+            && denom.is_finite()
+            && t > 0.0
+            && t.is_finite()
+            // A hit beyond the nearest so far, or at its distance from a polygon of higher
+            // index, could not be taken (the tie rule).
+            && best.is_none_or(|b| t < b.t || (t == b.t && (q.k[lane] as usize) < b.polygon));
+        if pass && facets.inside(q.k[lane] as usize, origin, direction, t) {
+            offer(best, q.k[lane] as usize, t, denom < 0.0);
+        }
+    }
+}
+
+/// A source's polygons by direction, on a cube map (six faces of `BIN_SIDE²` cells): a polygon
+/// is listed in every cell that a direction its cone does not rule out can fall in, so a ray
+/// need visit only the polygons of its own cell (each still through its cone: the list is
+/// conservative, the cones decide).
+///
+/// A direction `d` falls in the face of its largest component `|d_f|` (ties to the lower axis,
+/// x before y before z), at `u = d_i / |d_f|`, `v = d_j / |d_f|` (`i < j` the other two axes),
+/// cell `⌊(u + 1)/2 · BIN_SIDE⌋` clamped to the face. A [`Cone`] (`v`, `q > 0`) rules out a
+/// direction at an angle `θ` from its axis `a = v/|v|` with `sin θ > √(1 − q/|v|²)` (up to the
+/// rounding of its test, 10⁻¹⁵ relative) or pointing away; over the directions it lets through,
+/// in the open half-space of face `f` (`a_f > s`, `s` that sine grown by 10⁻⁶), `u` lies between
+/// the roots of `(a_f² − s²)u² − 2a_i a_f u + a_i² − s² = 0` (the planes `d_i = u·d_f` tangent
+/// to the cone), and so does `v` with `a_j`; these intervals, grown by 10⁻⁶, bound the cells. A
+/// cone that is not that far inside a face's half-space is listed in the whole face if it could
+/// reach the face at all (its axis within `asin s + 54.8°` of the face's), and a cone that rules
+/// nothing out (`q ≤ 0`: the source inside or near its sphere) is visited by every ray.
+#[derive(Clone, Debug)]
+struct DirBins {
+    /// Cell `c`'s polygons (places in the quads' order) are `items[start[c]..start[c + 1]]`,
+    /// in increasing order.
+    start: Vec<u32>,
+    items: Vec<u32>,
+    /// The polygons every ray visits (their cones rule nothing out).
+    everywhere: Vec<u32>,
+}
+
+/// The cells along a side of a face of [`DirBins`].
+const BIN_SIDE: usize = 32;
+/// The fewest quads for which a source gets [`DirBins`] (below, the cells cost more than they
+/// save).
+const BIN_MIN_QUADS: usize = 8;
+
+impl DirBins {
+    fn new(cones: &[ConeQuad]) -> DirBins {
+        let m = BIN_SIDE;
+        let cells = 6 * m * m;
+        // (place, face, [u0, u1, v0, v1]), cells inclusive.
+        let mut rects: Vec<(u32, u8, [u8; 4])> = Vec::new();
+        let mut everywhere = Vec::new();
+        for (qi, cq) in cones.iter().enumerate() {
+            for lane in 0..4 {
+                if cq.q[lane] == f64::INFINITY {
+                    // No polygon in this lane.
+                    continue;
+                }
+                let j = (4 * qi + lane) as u32;
+                let v = DVec3::new(cq.vx[lane], cq.vy[lane], cq.vz[lane]);
+                if !Self::cone_cells(v, cq.q[lane], |face, r| rects.push((j, face as u8, r))) {
+                    everywhere.push(j);
+                }
+            }
+        }
+        // Count, sum, then fill from the back (a polygon has at most one entry per cell, so
+        // each cell's list comes out in increasing order).
+        let mut start = vec![0u32; cells + 1];
+        for &(_, face, r) in &rects {
+            for u in r[0]..=r[1] {
+                let row = (face as usize * m + u as usize) * m;
+                for c in &mut start[row + r[2] as usize..=row + r[3] as usize] {
+                    *c += 1;
+                }
+            }
+        }
+        let mut total = 0;
+        for c in &mut start[..cells] {
+            total += *c;
+            *c = total;
+        }
+        start[cells] = total;
+        let mut items = vec![0u32; total as usize];
+        for &(j, face, r) in rects.iter().rev() {
+            for u in r[0]..=r[1] {
+                let row = (face as usize * m + u as usize) * m;
+                for c in row + r[2] as usize..=row + r[3] as usize {
+                    start[c] -= 1;
+                    items[start[c] as usize] = j;
+                }
+            }
+        }
+        DirBins { start, items, everywhere }
+    }
+
+    /// Calls `push(face, [u0, u1, v0, v1])` with the cells (inclusive ranges) of each face that
+    /// the cone (`v`, `q`) can let a direction through in (the type's docs); false when the
+    /// cone rules nothing out (then nothing is pushed).
+    #[inline(always)]
+    fn cone_cells(v: DVec3, q: f64, mut push: impl FnMut(usize, [u8; 4])) -> bool {
+        let m = BIN_SIDE;
+        let d2 = v.dot(v);
+        let cos2 = q / d2;
+        if !(q > 0.0 && d2 > 0.0 && cos2.is_finite()) {
+            return false;
+        }
+        let s = (1.0 - cos2).max(0.0).sqrt() + 1e-6;
+        if s >= 0.99 {
+            return false;
+        }
+        let a = v / d2.sqrt();
+        // (Clamped to the face first: truncation is then the floor.)
+        let cell = |u: f64| ((u + 1.0) * 0.5 * m as f64).clamp(0.0, (m - 1) as f64) as u8;
+        let whole = [0, (m - 1) as u8, 0, (m - 1) as u8];
+        for face in 0..6 {
+            let (f, sign) = (face / 2, if face % 2 == 0 { 1.0 } else { -1.0 });
+            let (i, j) = match f {
+                0 => (1, 2),
+                1 => (0, 2),
+                _ => (0, 1),
+            };
+            let af = sign * a[f];
+            if af > s + 0.05 {
+                let inv = 1.0 / (af * af - s * s);
+                let range = |ai: f64| {
+                    let root = s * (ai * ai + af * af - s * s).max(0.0).sqrt();
+                    let (lo, hi) = ((ai * af - root) * inv, (ai * af + root) * inv);
+                    (lo - 1e-6 * (1.0 + lo.abs()), hi + 1e-6 * (1.0 + hi.abs()))
+                };
+                let (u0, u1) = range(a[i]);
+                let (v0, v1) = range(a[j]);
+                if u1 < -1.0 || u0 > 1.0 || v1 < -1.0 || v0 > 1.0 {
+                    continue;
+                }
+                push(face, [cell(u0), cell(u1), cell(v0), cell(v1)]);
+            } else if s >= 0.25 {
+                // A wide cone near the face's plane: the whole face if it could reach it. The
+                // face's corners lie acos(1/√3) = 54.7356° from its axis.
+                if af.clamp(-1.0, 1.0).acos() <= s.asin() + 0.9554 + 1e-3 {
+                    push(face, whole);
+                }
+            }
+            // Otherwise (a cone of half-angle below 14.5° whose axis lies 72.5° or more from
+            // the face's) it is 58° or more from the axis, beyond the face's corners.
+        }
+        true
+    }
+
+    /// The cell of direction `d` (`dd = d·d`), or `None` when `d` is not a direction the bins
+    /// can place (zero, not finite, or so short or long that its cone tests lose precision):
+    /// then every quad is visited.
+    #[inline(always)]
+    fn cell(&self, d: DVec3, dd: f64) -> Option<usize> {
+        if !(1e-200..=1e200).contains(&dd) {
+            return None;
+        }
+        let m = BIN_SIDE;
+        let (ax, ay, az) = (d.x.abs(), d.y.abs(), d.z.abs());
+        let (face, big, u, v) = if ax >= ay && ax >= az {
+            (usize::from(d.x < 0.0), ax, d.y, d.z)
+        } else if ay >= az {
+            (2 + usize::from(d.y < 0.0), ay, d.x, d.z)
+        } else {
+            (4 + usize::from(d.z < 0.0), az, d.x, d.y)
+        };
+        let half = 0.5 * m as f64;
+        let inv = half / big;
+        let cu = ((u * inv + half).floor() as isize).clamp(0, m as isize - 1) as usize;
+        let cv = ((v * inv + half).floor() as isize).clamp(0, m as isize - 1) as usize;
+        Some((face * m + cu) * m + cv)
+    }
+
+    /// The polygons listed in cell `c`.
+    #[inline(always)]
+    fn polygons(&self, c: usize) -> &[u32] {
+        &self.items[self.start[c] as usize..self.start[c + 1] as usize]
     }
 }
 
@@ -667,6 +899,136 @@ mod tests {
                 for _ in 0..300 {
                     let p = &scene.polygons[rng.random_range(0..scene.polygons.len())];
                     let d = (aim(p, &mut rng) - o) * rng.random_range(0.5..2.0);
+                    let mut expect = None;
+                    for (k, q) in scene.polygons.iter().enumerate() {
+                        if let Some(t) = intersect(o, d, q) {
+                            offer(&mut expect, k, t, d.dot(q.normal) < 0.0);
+                        }
+                    }
+                    let mut got = None;
+                    quads.offer_hits(&facets, o, d, &mut got);
+                    assert_eq!(got, expect, "seed {seed}: from {o} along {d}");
+                    hits += expect.is_some() as usize;
+                }
+            }
+        }
+        assert!(hits > 10_000, "seed {seed}: the rays must hit ({hits})");
+    }
+
+    /// A cone's cells hold every direction its test lets through: directions on the cone's
+    /// boundary (the hardest, each where the cone's test turns), inside it, and on the cube
+    /// map's seams, for cones narrow and wide, near and far, in every orientation.
+    #[test]
+    fn a_cones_cells_hold_every_direction_it_lets_through() {
+        let seed = 185u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut checked = 0;
+        for case in 0..400 {
+            let v = DVec3::new(
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+            ) * 10f64.powf(rng.random_range(-3.0..6.0));
+            // Half-angles from 10⁻⁶ rad to 80°.
+            let alpha = match case % 3 {
+                0 => 10f64.powf(rng.random_range(-6.0..-1.0)),
+                1 => rng.random_range(0.01..0.3),
+                _ => rng.random_range(0.3..1.4),
+            };
+            let d2 = v.dot(v);
+            let cone = Cone { v, q: d2 * alpha.cos().powi(2) };
+            let z = [0.0; 4];
+            let mut cq = ConeQuad { vx: z, vy: z, vz: z, q: [f64::INFINITY; 4] };
+            let lane = case % 4;
+            (cq.vx[lane], cq.vy[lane], cq.vz[lane], cq.q[lane]) = (v.x, v.y, v.z, cone.q);
+            let bins = DirBins::new(&[cq]);
+            let a = v.normalize();
+            let w0 = a.any_orthonormal_vector();
+            let w1 = a.cross(w0);
+            for i in 0..500 {
+                let phi = rng.random_range(0.0..std::f64::consts::TAU);
+                let w = w0 * phi.cos() + w1 * phi.sin();
+                let theta = match i % 4 {
+                    0 => alpha * (1.0 + rng.random_range(-1e-9..1e-9)),
+                    1 => alpha * rng.random::<f64>(),
+                    _ => alpha,
+                };
+                let mut d = (a * theta.cos() + w * theta.sin()) * rng.random_range(0.1..10.0);
+                if i % 4 == 3 {
+                    // Onto a seam of the cube map.
+                    let (p, q) = (rng.random_range(0..3), rng.random_range(0..3));
+                    if p != q {
+                        d[q] = d[p].abs() * d[q].signum();
+                    }
+                }
+                if cone.misses(d, d.dot(d)) {
+                    continue;
+                }
+                let c = bins.cell(d, d.dot(d)).expect("a direction of sane length has a cell");
+                let listed =
+                    bins.everywhere.contains(&(lane as u32)) || bins.polygons(c).contains(&(lane as u32));
+                assert!(listed, "seed {seed}: cone {v} of half-angle {alpha}, direction {d} (cell {c})");
+                checked += 1;
+            }
+        }
+        assert!(checked > 100_000 / 2, "seed {seed}: directions the cones let through ({checked})");
+    }
+
+    /// The direction bins (a source with many polygons) lose no hit: on scenes of many polygons,
+    /// from origins inside, outside and far, rays aimed at vertices, edges (a hair in or out) and
+    /// inner points, then put on the cube map's seams (two or three components of equal size,
+    /// a component zero), on the axes, and scaled to tiny and huge lengths (where the bins stand
+    /// aside); each ray's nearest hit is the hit rule's by `intersect`.
+    #[test]
+    fn the_direction_bins_lose_no_hit() {
+        let seed = 183u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut hits = 0;
+        for (n, side, scene_seed) in [(400, 40.0, 5), (120, 200.0, 6), (60, 8.0, 8)] {
+            let scene = generate(n, side, scene_seed).unwrap();
+            let facets = Facets::new(&scene);
+            let (lo, hi) = scene.bounds();
+            let all: Vec<usize> = (0..scene.polygons.len()).collect();
+            for source in 0..40 {
+                let far = match source % 4 {
+                    0 => 1e4,
+                    1 => 3.0,
+                    _ => 1.0,
+                };
+                let o = (lo + (hi - lo) * DVec3::new(rng.random(), rng.random(), rng.random())) * far;
+                let quads = FacetQuads::new(&facets, o, &all);
+                assert!(quads.bins.is_some(), "seed {seed}: {n} polygons have bins");
+                for _ in 0..400 {
+                    let p = &scene.polygons[rng.random_range(0..scene.polygons.len())];
+                    let mut d = aim(p, &mut rng) - o;
+                    let (i, j) = (rng.random_range(0..3), rng.random_range(0..3));
+                    match rng.random_range(0..8) {
+                        // On a seam between two faces, or at a cube corner.
+                        0 if i != j => d[j] = d[i].abs() * if rng.random() { 1.0 } else { -1.0 },
+                        1 => {
+                            let m = d.abs().max_element();
+                            d = DVec3::new(m * d.x.signum(), m * d.y.signum(), m * d.z.signum());
+                        }
+                        // On a face's centre line, or an axis.
+                        2 => d[i] = 0.0,
+                        3 => {
+                            let keep = d[i];
+                            d = DVec3::ZERO;
+                            d[i] = keep;
+                        }
+                        // Between two cells of a face, to the last bit.
+                        4 => {
+                            let f = d.abs().max_element();
+                            let cells = 32.0;
+                            let u = ((d[i] / f + 1.0) * 0.5 * cells).round() / cells * 2.0 - 1.0;
+                            if d[i].abs() < f {
+                                d[i] = u * f;
+                            }
+                        }
+                        5 => d *= 1e-120,
+                        6 => d *= 1e120,
+                        _ => {}
+                    }
                     let mut expect = None;
                     for (k, q) in scene.polygons.iter().enumerate() {
                         if let Some(t) = intersect(o, d, q) {

@@ -36,8 +36,10 @@
 //! far is not tested inside (its hit could not be taken). Brute force runs the cones and the
 //! planes four polygons at a time in AVX lanes, nearest polygons first, and its edge tests
 //! through a per-source filter that falls back on the hit rule's own operations near the
-//! thresholds ([`FacetQuads`]). A pair ruled out by a cone or a bound is still a test: it is
-//! decided, and the counters count it as before.
+//! thresholds ([`FacetQuads`]); for a source with many polygons it lists them once by direction
+//! (a cube map of directions, each polygon in the cells its cone can let a ray through), and a ray
+//! visits only its own cell's polygons. A pair ruled out by a cone, a cell or a bound is still a
+//! test: it is decided, and the counters count it as before.
 //!
 //! # Counters
 //!
@@ -184,6 +186,17 @@ pub fn screen(source: &Source3, k: usize, polygon: &Polygon) -> Screen3 {
     }
 }
 
+/// Whether polygon `k` passes the screener for `source`: `screen(source, k, polygon) ==
+/// Screen3::Pass`, the same comparisons (a NaN fails `≤` as there), the cheapest first.
+#[inline(always)]
+pub(crate) fn passes(source: &Source3, k: usize, polygon: &Polygon) -> bool {
+    // `x ≤ 0` fails: `x > 0` or `x` is a NaN.
+    let above = |x: f64| x > 0.0 || x.is_nan();
+    source.patch != Some(k)
+        && above((source.origin - polygon.centre).dot(polygon.normal))
+        && polygon.vertices.iter().any(|v| above((*v - source.origin).dot(source.normal)))
+}
+
 /// A 3D tracing technique.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Method3 {
@@ -314,9 +327,8 @@ fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
 
 #[inline(always)]
 fn brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
-    let passing: Vec<usize> = (0..scene.polygons.len())
-        .filter(|&k| screen(&bundle.source, k, &scene.polygons[k]) == Screen3::Pass)
-        .collect();
+    let passing: Vec<usize> =
+        (0..scene.polygons.len()).filter(|&k| passes(&bundle.source, k, &scene.polygons[k])).collect();
     let r = bundle.len() as u64;
     let mut c = Counters {
         patches_read_before_screening: r * scene.polygons.len() as u64,
@@ -473,5 +485,34 @@ mod tests {
         assert_eq!(screen(&s, 0, &sq(-1.0, false)), Screen3::Backward);
         assert_eq!(screen(&s, 0, &sq(0.0, true)), Screen3::Backward);
         assert_eq!(screen(&s, 7, &sq(1.0, true)), Screen3::Source);
+    }
+
+    /// `passes` is `screen(..) == Screen3::Pass` on every polygon of a random scene from random
+    /// sources, from polygons' centres (their own patch among them) and with random normals.
+    #[test]
+    fn passes_is_screen_pass() {
+        use rand::{RngExt, SeedableRng};
+        let seed = 184u64;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let scene = crate::d3::gen::generate(200, 80.0, 9).unwrap();
+        let (lo, hi) = scene.bounds();
+        let mut verdicts = [0usize; 2];
+        for i in 0..200 {
+            let k = rng.random_range(0..scene.polygons.len());
+            let source = if i % 2 == 0 {
+                let p = &scene.polygons[k];
+                Source3 { origin: p.centre, normal: p.normal, patch: Some(k) }
+            } else {
+                let u = DVec3::new(rng.random(), rng.random(), rng.random());
+                let n = DVec3::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0), rng.random());
+                Source3 { origin: lo + (hi - lo) * u, normal: n.normalize(), patch: None }
+            };
+            for (k, p) in scene.polygons.iter().enumerate() {
+                let pass = screen(&source, k, p) == Screen3::Pass;
+                assert_eq!(passes(&source, k, p), pass, "seed {seed}: polygon {k}, source {source:?}");
+                verdicts[pass as usize] += 1;
+            }
+        }
+        assert!(verdicts[0] > 1000 && verdicts[1] > 1000, "seed {seed}: {verdicts:?}");
     }
 }
