@@ -826,6 +826,28 @@ mod tests {
     use rand::{RngExt, SeedableRng};
     use rand_chacha::ChaCha8Rng;
 
+    /// Whether the ray `o + t·d` hits: the quads' nearest hit must be brute force's by
+    /// `intersect` and the tie rule (the assertion names the seed and the ray).
+    fn same_hit_as_brute_force(
+        scene: &Scene3,
+        facets: &Facets,
+        quads: &FacetQuads,
+        o: DVec3,
+        d: DVec3,
+        seed: u64,
+    ) -> bool {
+        let mut expect = None;
+        for (k, q) in scene.polygons.iter().enumerate() {
+            if let Some(t) = intersect(o, d, q) {
+                offer(&mut expect, k, t, d.dot(q.normal) < 0.0);
+            }
+        }
+        let mut got = None;
+        quads.offer_hits(facets, o, d, &mut got);
+        assert_eq!(got, expect, "seed {seed}: from {o} along {d}");
+        expect.is_some()
+    }
+
     fn cornell() -> Scene3 {
         obj::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell_box.obj")).unwrap()
     }
@@ -899,16 +921,7 @@ mod tests {
                 for _ in 0..300 {
                     let p = &scene.polygons[rng.random_range(0..scene.polygons.len())];
                     let d = (aim(p, &mut rng) - o) * rng.random_range(0.5..2.0);
-                    let mut expect = None;
-                    for (k, q) in scene.polygons.iter().enumerate() {
-                        if let Some(t) = intersect(o, d, q) {
-                            offer(&mut expect, k, t, d.dot(q.normal) < 0.0);
-                        }
-                    }
-                    let mut got = None;
-                    quads.offer_hits(&facets, o, d, &mut got);
-                    assert_eq!(got, expect, "seed {seed}: from {o} along {d}");
-                    hits += expect.is_some() as usize;
+                    hits += same_hit_as_brute_force(&scene, &facets, &quads, o, d, seed) as usize;
                 }
             }
         }
@@ -1029,16 +1042,7 @@ mod tests {
                         6 => d *= 1e120,
                         _ => {}
                     }
-                    let mut expect = None;
-                    for (k, q) in scene.polygons.iter().enumerate() {
-                        if let Some(t) = intersect(o, d, q) {
-                            offer(&mut expect, k, t, d.dot(q.normal) < 0.0);
-                        }
-                    }
-                    let mut got = None;
-                    quads.offer_hits(&facets, o, d, &mut got);
-                    assert_eq!(got, expect, "seed {seed}: from {o} along {d}");
-                    hits += expect.is_some() as usize;
+                    hits += same_hit_as_brute_force(&scene, &facets, &quads, o, d, seed) as usize;
                 }
             }
         }
