@@ -114,18 +114,33 @@ pub fn schedule_sources(
     parts: usize,
 ) -> anyhow::Result<Vec<Scheduled>> {
     use anyhow::Context;
-    if parts == 0 || parts > rays {
-        anyhow::bail!("{rays} rays cannot be cut into {parts} parts: one ray at least a part");
-    }
     let mut out = Vec::with_capacity(order.len() * parts);
     for &k in order {
         let bundle = prepared.patch_bundle(k, set, rays).with_context(|| format!("source patch {k}"))?;
-        for j in 0..parts {
-            let part = sub_bundle(&bundle, part_range(rays, parts, j));
-            out.push(prepared.schedule(method, &part, params).with_context(|| format!("source patch {k}"))?);
-        }
+        out.extend(
+            schedule_parts(prepared, &bundle, method, params, parts)
+                .with_context(|| format!("source patch {k}"))?,
+        );
     }
     Ok(out)
+}
+
+/// `bundle` cut into `parts` contiguous ranges of its rays, each scheduled by `method` on the
+/// bit-true backend (the work items of one source, as [`schedule_sources`] makes them).
+pub fn schedule_parts(
+    prepared: &GriddedScene,
+    bundle: &Bundle,
+    method: Method,
+    params: &ShellParams,
+    parts: usize,
+) -> anyhow::Result<Vec<Scheduled>> {
+    let rays = bundle.len();
+    if parts == 0 || parts > rays {
+        anyhow::bail!("{rays} rays cannot be cut into {parts} parts: one ray at least a part");
+    }
+    (0..parts)
+        .map(|j| Ok(prepared.schedule(method, &sub_bundle(bundle, part_range(rays, parts, j)), params)?))
+        .collect()
 }
 
 /// The patches `ids` of `segments` in Z-order of their midpoints (on a 1024 × 1024 grid over

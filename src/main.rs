@@ -1185,21 +1185,17 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     bar.finish_and_clear();
     let run = run?;
     let layout = if a.layout == machine::Layout::ZOrder { "Z" } else { "the file's" };
-    report_machine(&run, a.json, a.rays, a.method, a.tc, a.cache, config.engine.name(), layout, a.deal)
+    report_machine(&run, &config, a.json, a.rays, a.method, layout)
 }
 
-/// Prints a machine run (`machine`, `cosim --pes`): its JSON, or its summary.
-#[allow(clippy::too_many_arguments)]
+/// Prints a machine run of `config` (`machine`, `cosim --pes`): its JSON, or its summary.
 fn report_machine(
     run: &machine::MachineRun,
+    config: &machine::MachineConfig,
     json: bool,
     rays: usize,
     method: Method,
-    tc: u32,
-    cache: Option<u32>,
-    engine: &str,
     layout: &str,
-    deal: machine::Deal,
 ) -> Result<()> {
     let parts = run.parts;
     let mut out = Out::new();
@@ -1214,11 +1210,11 @@ fn report_machine(
         rays,
         method,
         run.pes,
-        engine,
-        tc,
-        cache.map_or("off".to_string(), |c| format!("of {c} patches")),
+        config.engine.name(),
+        config.tc,
+        config.cache.map_or("off".to_string(), |c| format!("of {c} patches")),
         layout,
-        deal.name(),
+        config.deal.name(),
         if parts > 1 { format!(" ({parts} per source)") } else { String::new() }
     );
     say!(
@@ -1257,12 +1253,7 @@ fn cosim_machine(
     if a.pes > bundle.len() {
         bail!("--pes {} needs at least one ray a PE: the source has {} rays", a.pes, bundle.len());
     }
-    let parts = (0..a.pes)
-        .map(|j| {
-            let part = machine::sub_bundle(bundle, machine::part_range(bundle.len(), a.pes, j));
-            prepared.schedule(a.method, &part, params)
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let parts = machine::schedule_parts(prepared, bundle, a.method, params, a.pes)?;
     let config = machine::MachineConfig {
         pes: a.pes,
         tc: a.tc,
@@ -1272,17 +1263,7 @@ fn cosim_machine(
         vcd,
     };
     let run = machine::run(&parts, &config, |_, _| {})?;
-    report_machine(
-        &run,
-        a.json,
-        bundle.len(),
-        a.method,
-        a.tc,
-        a.cache,
-        config.engine.name(),
-        "the file's",
-        config.deal,
-    )
+    report_machine(&run, &config, a.json, bundle.len(), a.method, "the file's")
 }
 
 /// The `cosim` JSON output: the `trace` JSON of the PE's hits plus the hardware's counters.

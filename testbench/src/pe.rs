@@ -212,8 +212,6 @@ impl CacheConfig {
 /// [`MemoryMap::patch`] turns its hits' addresses back into patch numbers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MemoryMap {
-    /// `(C, S)` for a spread map, `None` for the identity.
-    spread: Option<(u32, u32)>,
     lines: Option<u32>,
 }
 
@@ -222,15 +220,11 @@ impl MemoryMap {
     /// the size, on 0 or more than [`LINES`] lines and when an address would not fit the 16-bit
     /// ids.
     pub fn new(lines: Option<u32>, patches: usize) -> Result<Self> {
-        let spread = match lines {
-            Some(n) if n == 0 || n as usize > LINES => {
-                return Err(Error::new(format!("the patch cache holds 1 to {LINES} patches, got {n}")))
-            }
-            Some(n) if !n.is_power_of_two() => Some((n, n.next_power_of_two())),
-            _ => None,
-        };
-        let map = MemoryMap { spread, lines };
-        if let (Some(_), Some(last)) = (spread, patches.checked_sub(1)) {
+        if let Some(n) = lines.filter(|&n| n == 0 || n as usize > LINES) {
+            return Err(Error::new(format!("the patch cache holds 1 to {LINES} patches, got {n}")));
+        }
+        let map = MemoryMap { lines };
+        if let (Some(_), Some(last)) = (map.spread(), patches.checked_sub(1)) {
             let top = map.address_of(last);
             if top >= 1 << 16 {
                 return Err(Error::new(format!(
@@ -244,8 +238,13 @@ impl MemoryMap {
         Ok(map)
     }
 
+    /// `(C, S)` for a spread map, `None` for the identity.
+    fn spread(&self) -> Option<(u32, u32)> {
+        self.lines.filter(|n| !n.is_power_of_two()).map(|n| (n, n.next_power_of_two()))
+    }
+
     fn address_of(&self, k: usize) -> usize {
-        match self.spread {
+        match self.spread() {
             Some((c, s)) => s as usize * (k / c as usize) + k % c as usize,
             None => k,
         }
@@ -253,7 +252,7 @@ impl MemoryMap {
 
     /// The cache's setting on the PE: its lines rounded up to a power of two.
     pub fn cache(&self) -> CacheConfig {
-        CacheConfig { lines: self.spread.map_or(self.lines, |(_, s)| Some(s)) }
+        CacheConfig { lines: self.lines.map(u32::next_power_of_two) }
     }
 
     /// The host memory's contents: `patches` at their addresses, zero in the holes.
@@ -281,7 +280,7 @@ impl MemoryMap {
 
     /// The patch at `address`, or `None` for a hole.
     pub fn patch(&self, address: u16) -> Option<u16> {
-        match self.spread {
+        match self.spread() {
             Some((c, s)) => {
                 let (block, line) = (address as u32 / s, address as u32 % s);
                 (line < c).then(|| (block * c + line) as u16)
