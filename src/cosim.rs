@@ -68,7 +68,7 @@ impl Engine {
 pub struct CosimConfig {
     /// Cycles the host memory takes per patch (`1 ≤ T_c ≤` [`MAX_TC`]).
     pub tc: u32,
-    /// The PE's patch cache: `None` off, `Some(lines)` on (1 to 4096).
+    /// The PE's patch cache: `None` off, `Some(lines)` on (1 to 1024).
     pub cache: Option<u32>,
     /// VCD of the whole PE for cycles `from..to` of the simulation (counted from power-up): a
     /// non-empty window that must meet the run (the command line also bounds its length,

@@ -86,7 +86,7 @@ pub struct FigureOptions {
     pub cosim_sources: usize,
     /// Host memory load times `T_c` (cycles per patch) co-simulated.
     pub tcs: Vec<u32>,
-    /// Lines of the PE's patch cache in the runs with the cache (1 to 4096).
+    /// Lines of the PE's patch cache in the runs with the cache (1 to 1024).
     pub cache_lines: u32,
     /// The simulator of the co-simulations.
     pub engine: Engine,

@@ -29,7 +29,7 @@ pub const MAX_COUNT: usize = 1 << 20;
 /// Largest `--tc`, host memory cycles per patch.
 pub const MAX_TC: u32 = 1024;
 /// Largest patch cache (`--cache`, `--cache-lines`), in patches.
-pub const MAX_CACHE: u32 = 4096;
+pub const MAX_CACHE: u32 = shelling_hdl::cache::LINES as u32;
 /// Most cycles of a VCD window (`--vcd-to` − `--vcd-from`).
 pub const MAX_VCD_WINDOW: u64 = 1_000_000;
 /// Most segment lengths of `figures --lengths`.
@@ -187,8 +187,8 @@ mod tests {
         assert_eq!(check_range("--tc", 5u32, 1, MAX_TC), Ok(5));
         assert!(check_range("--x", f64::NAN, 0.0, 1.0).is_err());
         assert_eq!(check_cache("--cache", 250), Ok(250));
-        assert_eq!(check_cache("--cache", 4097), Err("--cache must be between 1 and 4096, got 4097".into()));
-        assert_eq!(check_cache("--cache", 4096), Ok(4096));
+        assert_eq!(check_cache("--cache", 1025), Err("--cache must be between 1 and 1024, got 1025".into()));
+        assert_eq!(check_cache("--cache", 1024), Ok(1024));
         assert!(check_cache("--cache", 0).is_err());
         assert!(check_product("a × b", &[u64::MAX, 2], 10).is_err());
         assert!(check_cells_per_segment("--cells-per-segment", 1024.0, 1 << 20).is_err());

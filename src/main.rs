@@ -367,7 +367,7 @@ struct CosimArgs {
     /// Cycles the host memory takes to deliver one patch (T_c), 1 to 1024.
     #[arg(long, default_value_t = 1)]
     tc: u32,
-    /// Give the PE a patch cache of this many patches (1 to 4096): a patch
+    /// Give the PE a patch cache of this many patches (1 to 1024): a patch
     /// loaded before costs one clock instead of T_c. Without it every load goes to the host.
     #[arg(long, value_name = "PATCHES")]
     cache: Option<u32>,
@@ -445,7 +445,7 @@ struct MachineFiguresArgs {
     /// Host memory load times T_c (cycles per patch), comma separated.
     #[arg(long = "tc", value_delimiter = ',', default_value = "1,4,16,64", allow_hyphen_values = true)]
     tcs: Vec<u32>,
-    /// Per-PE cache sizes, comma separated: `off` or 1 to 4096 patches.
+    /// Per-PE cache sizes, comma separated: `off` or 1 to 1024 patches.
     #[arg(long, value_delimiter = ',', default_value = "off,128,1024")]
     caches: Vec<String>,
     /// The PEs' simulator (auto: Verilator where installed).
@@ -473,7 +473,7 @@ fn machine_figures_cmd(a: MachineFiguresArgs) -> Result<()> {
             n => n
                 .parse::<u32>()
                 .map(Some)
-                .map_err(|_| anyhow::anyhow!("--caches {c}: each `off` or 1 to 4096 patches")),
+                .map_err(|_| anyhow::anyhow!("--caches {c}: each `off` or 1 to 1024 patches")),
         })
         .collect::<Result<Vec<_>>>()?;
     let o = MachineFigureOptions {
@@ -525,7 +525,7 @@ struct MachineArgs {
     /// Cycles the shared host memory takes to deliver one patch (T_c), 1 to 1024.
     #[arg(long, default_value_t = 16)]
     tc: u32,
-    /// Give each PE a patch cache of this many patches (1 to 4096).
+    /// Give each PE a patch cache of this many patches (1 to 1024).
     #[arg(long, value_name = "PATCHES")]
     cache: Option<u32>,
     /// Rays per source over its half-circle: 1 to 1024 (the processing element's ray memory).
@@ -641,7 +641,7 @@ struct FiguresArgs {
     /// distinct values, each 1 to 1024; each runs without and with the patch cache.
     #[arg(long = "tc", value_delimiter = ',', default_value = "1,4,16,64", allow_hyphen_values = true)]
     tcs: Vec<u32>,
-    /// Lines of the patch cache in the co-simulations with the cache (1 to 4096).
+    /// Lines of the patch cache in the co-simulations with the cache (1 to 1024).
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     cache_lines: u32,
     /// The PE's simulator for the co-simulations: rust-hdl's, or the exported Verilog compiled

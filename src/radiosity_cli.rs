@@ -318,7 +318,7 @@ pub struct RadiosityArgs {
     /// With --on-pe: host memory cycles per patch (T_c, 1 to 1024).
     #[arg(long, default_value_t = 1, requires = "on_pe")]
     tc: u32,
-    /// With --on-pe: the PE's patch cache, in patches (1 to 4096).
+    /// With --on-pe: the PE's patch cache, in patches (1 to 1024).
     #[arg(long, value_name = "PATCHES", requires = "on_pe")]
     cache: Option<u32>,
     /// With --on-pe: the PE's simulator (auto: Verilator where installed).

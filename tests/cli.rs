@@ -541,7 +541,7 @@ fn cli_figures_rejects_bad_values() {
     t(&["--tc", "1,0"], &["--tc must be between 1 and 1024", "0"]);
     t(&["--tc", "4,4"], &["--tc", "4 twice"]);
     t(&["--tc", "x"], &["--tc", "x"]);
-    t(&["--cache-lines", "5000"], &["--cache-lines", "between 1 and 4096", "5000"]);
+    t(&["--cache-lines", "5000"], &["--cache-lines", "between 1 and 1024", "5000"]);
     fails(&["figures", "--out", o, "--seeds", "1", "--rays", "2048", "--count", "100", "--quiet"], &["2048"]);
     fails(&["figures", "--quiet"], &["--out"]);
     // --out naming an existing file.
@@ -737,7 +737,7 @@ fn cli_cosim_rejects_bad_options() {
     let with =
         |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
     fails(&with(&["--method", "brute"]), &["brute", "no hardware mapping"]);
-    fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 4096", "5000"]);
+    fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 1024", "5000"]);
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
     fails(&with(&["--pes", "9"]), &["--pes", "1 and 8", "9"]);
@@ -815,7 +815,7 @@ fn cli_machine_rejects_bad_options() {
     fails(&with(&["--first", "99", "--count", "2"]), &["--count", "between 1 and 1", "2"]);
     fails(&with(&["--first", "100"]), &["--first", "100", "100 segments"]);
     fails(&with(&["--method", "brute"]), &["brute", "no hardware mapping"]);
-    fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 4096", "5000"]);
+    fails(&with(&["--cache", "5000"]), &["--cache", "between 1 and 1024", "5000"]);
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
     fails(&with(&["--deal", "random"]), &["random", "blocks", "interleaved", "sectors"]);
@@ -907,7 +907,7 @@ fn cli_machine_figures_sweep_and_reject_bad_options() {
     let base = ["machine-figures", "--out", path_arg(&out)];
     let with =
         |extra: &[&'static str]| -> Vec<&str> { base.iter().copied().chain(extra.iter().copied()).collect() };
-    fails(&with(&["--caches", "5000"]), &["--caches", "between 1 and 4096", "5000"]);
+    fails(&with(&["--caches", "5000"]), &["--caches", "between 1 and 1024", "5000"]);
     fails(&with(&["--caches", "big"]), &["--caches big"]);
     fails(&with(&["--pes", "2,4"]), &["--pes", "include 1"]);
     fails(&with(&["--pes", "1,9"]), &["--pes", "9"]);

@@ -129,7 +129,7 @@ fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
                 [Method::Conventional, Method::Stochastic, Method::Deterministic].into_iter().enumerate()
             {
                 let v = i + s + j;
-                let (tc, cache) = ([1, 3, 16][v % 3], [None, Some(16), Some(256), Some(4096)][v % 4]);
+                let (tc, cache) = ([1, 3, 16][v % 3], [None, Some(16), Some(256), Some(1024)][v % 4]);
                 let what = format!("length {length} seed {seed} source {k} {m} T_c {tc} cache {cache:?}");
                 let scheduled = prepared.schedule(m, &bundle, &params).expect("fits");
                 let config =

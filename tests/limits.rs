@@ -166,8 +166,8 @@ fn limits_costs_are_bounded() {
     cosim(&["--tc", "0"], &["--tc must be between 1 and 1024, got 0"]);
     cosim(&["--tc", "1025"], &["--tc must be between 1 and 1024, got 1025"]);
     cosim(&["--rays", "1025"], &["--rays must be between 1 and 1024", "1025"]);
-    cosim(&["--cache", "8192"], &["--cache must be between 1 and 4096, got 8192"]);
-    cosim(&["--cache", "0"], &["--cache must be between 1 and 4096, got 0"]);
+    cosim(&["--cache", "8192"], &["--cache must be between 1 and 1024, got 8192"]);
+    cosim(&["--cache", "0"], &["--cache must be between 1 and 1024, got 0"]);
     cosim(&["--vcd", v, "--vcd-from", "5", "--vcd-to", "5"], &["--vcd-to", "--vcd-from", "1000000"]);
     cosim(
         &["--vcd", v, "--vcd-from", "0", "--vcd-to", "1000001"],
@@ -202,7 +202,7 @@ fn limits_costs_are_bounded() {
     );
     figures(&["--tc", "1,2000"], &["--tc must be between 1 and 1024, got 2000"]);
     figures(&["--cosim-sources", "1000", "--tc", "1,2,3,4,5,6,7,8"], &["co-simulations", "4096"]);
-    figures(&["--cache-lines", "8192"], &["--cache-lines must be between 1 and 4096"]);
+    figures(&["--cache-lines", "8192"], &["--cache-lines must be between 1 and 1024"]);
     figures(&["--lengths", "8,2000"], &["--lengths", "less than 1024", "2000"]);
     figures(&["--cosim-sources", "2000"], &["--cosim-sources must be between 0 and 1000"]);
 }

@@ -9,7 +9,7 @@
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock |
 //! | `cfg_enable` | in | 1 | cache on; off: a combinational pass-through (see below) |
-//! | `cfg_mask` | in | 12 | lines − 1 (lines a power of two, 1 … [`LINES`]); line of id = `id & cfg_mask` |
+//! | `cfg_mask` | in | 10 | lines − 1 (lines a power of two, 1 … [`LINES`]); line of id = `id & cfg_mask` |
 //! | `flush`, `flushing` | in, out | 1, 1 | invalidate every line: `flush` high starts it, `flushing` (a register) is high for the [`LINES`] cycles it takes |
 //! | `req`, `addr` | in | 1, 16 | loader side: request, one clock pulse per patch, `addr` = patch id |
 //! | `resp_valid`, `resp_ax`, `resp_ay`, `resp_bx`, `resp_by` | out | 1, 4 × 17 | loader side: response |
@@ -55,16 +55,16 @@
 //!   16); a request leaves the queue when its lookup is accepted, and stays in the answer queue
 //!   until it is answered, so neither queue can overflow.
 //! * Five [`BramOut`] lanes of [`LINES`] words, two clocks from read address to data (on ECP5
-//!   block RAMs with their output register): the tag (bit 16: valid, bits 15…0: the whole id)
-//!   and the four 17-bit coordinates; zero (invalid) at power-up.
+//!   one block RAM tile each, 1024 × 18, with its output register): the tag (bit 16: valid,
+//!   bits 15…0: the whole id) and the four 17-bit coordinates; zero (invalid) at power-up.
 //! * A lookup pipeline, one request per clock, in request order:
 //!   - **Q** (issue): the id of the next request to look up is at the queue lane's read
 //!     register; its line is presented to the lanes and the request moves to S1, and the queue
 //!     lane reads the request after it.
 //!   - **S1**: the lanes' first read register.
 //!   - **S2**: the lanes' output registers hold the request's line; `tag == {1, id}` is
-//!     computed by 4-bit slices (on ECP5 one per block RAM tile of the tag lane), each
-//!     registered, with the line's words; and the staleness check (below), registered.
+//!     computed and registered, with the line's words; and the staleness check (below),
+//!     registered.
 //!   - **S3** (lookup): the request is accepted, a hit with its words or a miss, into the
 //!     answer queue; a miss also into the miss table, and its host request goes out in the
 //!     next cycle. Or it is not accepted (below) and the lookups are rewound to it.
@@ -88,10 +88,11 @@
 //! its patch is not in the line yet: S3 does not accept it and rewinds the lookups (the request
 //! and the two behind it are void, and Q reads it again), until that fill is in the line; so
 //! also when the table is full. The conditions of a rewind are registers (the staleness check's
-//! and the table's valid bits): the tag compare reaches no pointer. The tag compare feeds
-//! registers only, one per tile: no path runs from a block RAM through the compare into the
-//! pipeline's control, and each slice's compare can be placed next to its tile (the block RAMs
-//! sit far apart on the die; from the tag's tiles to one compare the routing alone took 3 ns).
+//! and the table's valid bits): the tag compare reaches no pointer. The tag compare feeds one
+//! register: no path runs from a block RAM through the compare into the pipeline's control,
+//! and the compare can be placed next to the tag's tile. (With 4096 lines, four tiles a lane
+//! far apart on the die, the compare was cut in four slices, one per tile; the lanes' 25 block
+//! RAMs were most of the PE's, and 1024 lines hold the paper's scenes.)
 //! The queue's pointers keep `+ 1` in registers and compare each candidate for the next read
 //! with the write pointer beside the choice, so no carry chain or compare follows the pointer
 //! multiplexer.
@@ -133,7 +134,7 @@
 //!
 //! The simulation tests (`testbench/tests/cache.rs`) check the model's claims above on random
 //! streams: every response's data, order and cycle, the hit/miss sequence and the host
-//! requests, for 1 to 4096 lines, disabled and across mask changes (the flush: the processing
+//! requests, for 1 to 1024 lines, disabled and across mask changes (the flush: the processing
 //! element's tests, `testbench/tests/pe.rs`). `cache.sby` proves on the exported Verilog, for
 //! every input sequence (k-induction; `hdl/FORMAL.md`), that every request is answered exactly
 //! once, in request order, with the host memory's patch of its id (no answer lost, duplicated,
@@ -148,13 +149,16 @@ use crate::prim::{bram_out_tile_width, Bram, BramOut, FifoControl, FifoRam};
 use rust_hdl::prelude::*;
 
 /// Address width of the cache lanes: at most `2^CACHE_BITS` lines.
-pub const CACHE_BITS: usize = 12;
-/// The largest number of lines (4096 patches).
+pub const CACHE_BITS: usize = 10;
+/// The largest number of lines (1024 patches): one `DP16KD` tile (1024 × 18) a lane on ECP5.
 pub const LINES: usize = 1 << CACHE_BITS;
 /// Request queue capacity: the most requests a client may keep outstanding.
 pub const QUEUE_DEPTH: usize = 16;
 /// Address width of the request queue: `2^QUEUE_BITS == QUEUE_DEPTH`.
 pub const QUEUE_BITS: usize = 4;
+/// The answer queue's meta word: `{miss, line, id}`.
+const META_WIDTH: usize = 16 + CACHE_BITS + 1;
+const _: () = assert!(META_WIDTH == 27, "the miss flag is bit 26 of the meta word");
 /// The most misses outstanding (accepted, not yet answered): the miss table's entries.
 pub const MISSES: usize = 4;
 /// Address width of the return queue: `2^MISS_BITS == MISSES`.
@@ -162,7 +166,7 @@ pub const MISS_BITS: usize = 2;
 
 /// The behavioural model of the patch cache: its state, and its exact timing.
 pub mod model {
-    use super::LINES;
+    use super::{CACHE_BITS, LINES};
 
     /// Cycles from a request (`req` high) to its lookup, in an idle block.
     pub const LOOKUP_DELAY: u64 = 5;
@@ -197,7 +201,7 @@ pub mod model {
         /// An empty cache (all lines invalid, as at power-up) with line mask `mask`.
         ///
         /// # Panics
-        /// If `mask` does not fit the 12-bit `cfg_mask` (`mask ≥ LINES`).
+        /// If `mask` does not fit the `CACHE_BITS`-bit `cfg_mask` (`mask ≥ LINES`).
         pub fn new(mask: u16) -> Self {
             let mut cache = Self { mask: 0, lines: vec![None; LINES] };
             cache.set_mask(mask);
@@ -214,7 +218,7 @@ pub mod model {
         /// # Panics
         /// If `mask ≥ LINES`.
         pub fn set_mask(&mut self, mask: u16) {
-            assert!((mask as usize) < LINES, "cache mask {mask:#x} does not fit 12 bits");
+            assert!((mask as usize) < LINES, "cache mask {mask:#x} does not fit {CACHE_BITS} bits");
             self.mask = mask;
         }
 
@@ -384,7 +388,7 @@ pub struct PatchCache {
     pub clock: Signal<In, Clock>,
     // Configuration.
     pub cfg_enable: Signal<In, bool>,
-    pub cfg_mask: Signal<In, Bits<12>>,
+    pub cfg_mask: Signal<In, Bits<CACHE_BITS>>,
     pub flush: Signal<In, bool>,
     pub flushing: Signal<Out, bool>,
     // Loader side.
@@ -423,22 +427,17 @@ pub struct PatchCache {
     v1: DFF<bool>,
     id1: DFF<Bits<16>>,
     key1: DFF<Bits<17>>,
-    line1: DFF<Bits<12>>,
+    line1: DFF<Bits<CACHE_BITS>>,
     v2: DFF<bool>,
     id2: DFF<Bits<16>>,
     key2: DFF<Bits<17>>,
-    line2: DFF<Bits<12>>,
+    line2: DFF<Bits<CACHE_BITS>>,
     // Stage S3 (lookup): S2's request, its tag compare and its line's words, registered.
     v3: DFF<bool>,
     id3: DFF<Bits<16>>,
-    line3: DFF<Bits<12>>,
-    /// The tag compare by 4-bit slices of the tag (on ECP5 one per `DP16KD` tile), each
-    /// registered: bits 0–3, 4–7, 8–11, 12–15 and 16.
-    match3_0: DFF<bool>,
-    match3_1: DFF<bool>,
-    match3_2: DFF<bool>,
-    match3_3: DFF<bool>,
-    match3_4: DFF<bool>,
+    line3: DFF<Bits<CACHE_BITS>>,
+    /// The tag compare, registered (on ECP5 beside the tag's one `DP16KD` tile).
+    match3: DFF<bool>,
     /// S3's line may be stale: a miss to it was outstanding when S3's request read the lanes
     /// (`lconf3`); one of those misses was S3's own id (`iconf3`).
     lconf3: DFF<bool>,
@@ -453,10 +452,10 @@ pub struct PatchCache {
     t_id1: DFF<Bits<16>>,
     t_id2: DFF<Bits<16>>,
     t_id3: DFF<Bits<16>>,
-    t_line0: DFF<Bits<12>>,
-    t_line1: DFF<Bits<12>>,
-    t_line2: DFF<Bits<12>>,
-    t_line3: DFF<Bits<12>>,
+    t_line0: DFF<Bits<CACHE_BITS>>,
+    t_line1: DFF<Bits<CACHE_BITS>>,
+    t_line2: DFF<Bits<CACHE_BITS>>,
+    t_line3: DFF<Bits<CACHE_BITS>>,
     t_v0: DFF<bool>,
     t_v1: DFF<bool>,
     t_v2: DFF<bool>,
@@ -470,7 +469,7 @@ pub struct PatchCache {
     t_rp: DFF<Bits<2>>,
     /// The id and line filled in the last cycle (out of the table, maybe not yet seen by a read).
     f_id1: DFF<Bits<16>>,
-    f_line1: DFF<Bits<12>>,
+    f_line1: DFF<Bits<CACHE_BITS>>,
     f_v1: DFF<bool>,
     /// The staleness check's compares, made in S1 and registered into S2, against each source
     /// of a fill S1's request may not have read: the table's four entries, the last fill,
@@ -497,7 +496,7 @@ pub struct PatchCache {
     ans_ay: FifoRam<17, QUEUE_BITS>,
     ans_bx: FifoRam<17, QUEUE_BITS>,
     ans_by: FifoRam<17, QUEUE_BITS>,
-    ans_meta: FifoRam<29, QUEUE_BITS>,
+    ans_meta: FifoRam<META_WIDTH, QUEUE_BITS>,
     // The host's answers to the misses, in order, until their turn comes.
     ret: FifoControl<MISS_BITS, 3>,
     ret_ax: FifoRam<17, MISS_BITS>,
@@ -506,7 +505,7 @@ pub struct PatchCache {
     ret_by: FifoRam<17, MISS_BITS>,
     // Flush: on, and the line being cleared.
     fl_on: DFF<bool>,
-    fl_line: DFF<Bits<12>>,
+    fl_line: DFF<Bits<CACHE_BITS>>,
     // Registered outputs.
     mreq: DFF<bool>,
     maddr: DFF<Bits<16>>,
@@ -543,9 +542,9 @@ pub struct PatchCache {
     head_miss: Signal<Local, bool>,
     answer: Signal<Local, bool>,
     fill: Signal<Local, bool>,
-    meta_in: Signal<Local, Bits<29>>,
+    meta_in: Signal<Local, Bits<META_WIDTH>>,
     head_key_fill: Signal<Local, Bits<17>>,
-    head_line_fill: Signal<Local, Bits<12>>,
+    head_line_fill: Signal<Local, Bits<CACHE_BITS>>,
     wr_inc: Signal<Local, Bits<5>>,
     rd_inc: Signal<Local, Bits<5>>,
     rd_next: Signal<Local, Bits<5>>,
@@ -559,20 +558,20 @@ pub struct PatchCache {
     ne_sp_inc: Signal<Local, bool>,
     ne_rd: Signal<Local, bool>,
     read_new: Signal<Local, bool>,
-    head_low: Signal<Local, Bits<12>>,
-    head_line: Signal<Local, Bits<12>>,
+    head_low: Signal<Local, Bits<CACHE_BITS>>,
+    head_line: Signal<Local, Bits<CACHE_BITS>>,
     head_key: Signal<Local, Bits<17>>,
     hit_inc: Signal<Local, Bits<32>>,
     miss_inc: Signal<Local, Bits<32>>,
-    fl_inc: Signal<Local, Bits<12>>,
+    fl_inc: Signal<Local, Bits<CACHE_BITS>>,
     t_wp_inc: Signal<Local, Bits<2>>,
     t_rp_inc: Signal<Local, Bits<2>>,
     // Constants.
     valid_flag: Constant<Bits<17>>,
-    miss_flag: Constant<Bits<29>>,
+    miss_flag: Constant<Bits<META_WIDTH>>,
     one5: Constant<Bits<5>>,
     one32: Constant<Bits<32>>,
-    one12: Constant<Bits<12>>,
+    one_line: Constant<Bits<CACHE_BITS>>,
     one3: Constant<Bits<3>>,
     misses3: Constant<Bits<3>>,
     almost3: Constant<Bits<3>>,
@@ -581,8 +580,8 @@ pub struct PatchCache {
     slot1: Constant<Bits<2>>,
     slot2: Constant<Bits<2>>,
     slot3: Constant<Bits<2>>,
-    last_line: Constant<Bits<12>>,
-    zero12: Constant<Bits<12>>,
+    last_line: Constant<Bits<CACHE_BITS>>,
+    zero_line: Constant<Bits<CACHE_BITS>>,
     zero17: Constant<Bits<17>>,
 }
 
@@ -590,7 +589,7 @@ impl Default for PatchCache {
     fn default() -> Self {
         assert_eq!(1 << QUEUE_BITS, QUEUE_DEPTH);
         assert_eq!(1 << MISS_BITS, MISSES);
-        assert_eq!(bram_out_tile_width(CACHE_BITS), 4, "the tag compare's slices are the tag's DP16KD tiles");
+        assert_eq!(bram_out_tile_width(CACHE_BITS), 18, "each cache lane is one DP16KD tile wide");
         PatchCache {
             clock: Default::default(),
             cfg_enable: Default::default(),
@@ -631,11 +630,7 @@ impl Default for PatchCache {
             v3: Default::default(),
             id3: Default::default(),
             line3: Default::default(),
-            match3_0: Default::default(),
-            match3_1: Default::default(),
-            match3_2: Default::default(),
-            match3_3: Default::default(),
-            match3_4: Default::default(),
+            match3: Default::default(),
             lconf3: Default::default(),
             iconf3: Default::default(),
             ax3: Default::default(),
@@ -745,10 +740,10 @@ impl Default for PatchCache {
             t_wp_inc: Default::default(),
             t_rp_inc: Default::default(),
             valid_flag: Constant::new(0x1_0000u64.into()),
-            miss_flag: Constant::new((1u64 << 28).into()),
+            miss_flag: Constant::new((1u64 << (META_WIDTH - 1)).into()),
             one5: Constant::new(1.into()),
             one32: Constant::new(1.into()),
-            one12: Constant::new(1.into()),
+            one_line: Constant::new(1.into()),
             one3: Constant::new(1.into()),
             misses3: Constant::new((MISSES as u64).into()),
             almost3: Constant::new((MISSES as u64 - 1).into()),
@@ -758,7 +753,7 @@ impl Default for PatchCache {
             slot2: Constant::new(2.into()),
             slot3: Constant::new(3.into()),
             last_line: Constant::new(((LINES - 1) as u64).into()),
-            zero12: Constant::new(0.into()),
+            zero_line: Constant::new(0.into()),
             zero17: Constant::new(0.into()),
         }
     }
@@ -784,11 +779,10 @@ impl Logic for PatchCache {
     fn update(&mut self) {
         dff_setup!(
             self, clock, wr_ptr, rd_ptr, sp, rd_inc_x, sp_inc_x, q_valid, v1, id1, key1, line1, v2, id2,
-            key2, line2, v3, id3, line3, match3_0, match3_1, match3_2, match3_3, match3_4, lconf3, iconf3,
-            ax3, ay3, bx3, by3, t_id0, t_id1, t_id2, t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1,
-            t_v2, t_v3, t_n, t_full, t_wp, t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2,
-            ml0, ml1, ml2, ml3, mlf, mls3, mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby,
-            hit_count, miss_count, hit_r
+            key2, line2, v3, id3, line3, match3, lconf3, iconf3, ax3, ay3, bx3, by3, t_id0, t_id1, t_id2,
+            t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1, t_v2, t_v3, t_n, t_full, t_wp, t_rp,
+            f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2, ml3, mlf, mls3, mls2,
+            fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -829,11 +823,7 @@ impl Logic for PatchCache {
         self.waiting_any.next = self.t_v0.q.val() | self.t_v1.q.val() | self.t_v2.q.val() | self.t_v3.q.val();
         self.rewind.next = self.v3.q.val() & (self.iconf3.q.val() | self.table_full.val());
         self.accept.next = self.v3.q.val() & !self.iconf3.q.val() & !self.table_full.val();
-        self.tag_hit.next = self.match3_0.q.val()
-            & self.match3_1.q.val()
-            & self.match3_2.q.val()
-            & self.match3_3.q.val()
-            & self.match3_4.q.val();
+        self.tag_hit.next = self.match3.q.val();
         self.miss3.next = self.lconf3.q.val() | !self.tag_hit.val();
         self.hit.next = self.accept.val() & !self.miss3.val();
         self.miss.next = self.accept.val() & self.miss3.val();
@@ -842,18 +832,9 @@ impl Logic for PatchCache {
         self.v3.d.next = self.v2.q.val() & !self.rewind.val();
         self.id3.d.next = self.id2.q.val();
         self.line3.d.next = self.line2.q.val();
-        // The tag compare by slices, each registered: on ECP5 a slice is one DP16KD tile's
-        // output, so each compare can sit next to its tile and only the registered bits
-        // travel (the tiles are far apart).
-        self.match3_0.d.next =
-            self.tag.read_data.val().get_bits::<4>(0) == self.key2.q.val().get_bits::<4>(0);
-        self.match3_1.d.next =
-            self.tag.read_data.val().get_bits::<4>(4) == self.key2.q.val().get_bits::<4>(4);
-        self.match3_2.d.next =
-            self.tag.read_data.val().get_bits::<4>(8) == self.key2.q.val().get_bits::<4>(8);
-        self.match3_3.d.next =
-            self.tag.read_data.val().get_bits::<4>(12) == self.key2.q.val().get_bits::<4>(12);
-        self.match3_4.d.next = self.tag.read_data.val().get_bit(16) == self.key2.q.val().get_bit(16);
+        // The tag compare, registered: it can sit next to the tag's tile, and only its bit
+        // travels to the pipeline's control.
+        self.match3.d.next = self.tag.read_data.val() == self.key2.q.val();
         self.ax3.d.next = self.lane_ax.read_data.val();
         self.ay3.d.next = self.lane_ay.read_data.val();
         self.bx3.d.next = self.lane_bx.read_data.val();
@@ -945,7 +926,7 @@ impl Logic for PatchCache {
         self.q_valid.d.next = self.read_new.val();
 
         // Q: read the request's line in every lane.
-        self.head_low.next = bit_cast::<12, 16>(self.q_lane.read_data.val());
+        self.head_low.next = bit_cast::<CACHE_BITS, 16>(self.q_lane.read_data.val());
         self.head_line.next = self.head_low.val() & self.cfg_mask.val();
         self.head_key.next = self.valid_flag.val() | bit_cast::<17, 16>(self.q_lane.read_data.val());
         self.tag.read_address.next = self.head_line.val();
@@ -963,8 +944,8 @@ impl Logic for PatchCache {
         self.line2.d.next = self.line1.q.val();
 
         // S3 accepts: into the answer queue, a hit with its words, a miss with its id and line.
-        self.meta_in.next =
-            (bit_cast::<29, 12>(self.line3.q.val()) << 16) | bit_cast::<29, 16>(self.id3.q.val());
+        self.meta_in.next = (bit_cast::<META_WIDTH, CACHE_BITS>(self.line3.q.val()) << 16)
+            | bit_cast::<META_WIDTH, 16>(self.id3.q.val());
         if self.miss3.val() {
             self.meta_in.next = self.meta_in.val() | self.miss_flag.val();
         }
@@ -1021,7 +1002,8 @@ impl Logic for PatchCache {
 
         // The answer: the head of the answer queue when it is a hit, or a miss whose patch has
         // come; a miss's patch is written into its line (tag and data) as it is answered.
-        self.head_miss.next = self.ans_meta.read_data.val().get_bit(28);
+        // Bit 26 is `META_WIDTH - 1` (a literal: the Verilog has no name for the constant).
+        self.head_miss.next = self.ans_meta.read_data.val().get_bit(26);
         self.answer.next = self.ans.valid.val() & (!self.head_miss.val() | self.ret.valid.val());
         self.fill.next = self.answer.val() & self.head_miss.val();
         self.ans.pop.next = self.answer.val();
@@ -1063,7 +1045,7 @@ impl Logic for PatchCache {
         if self.fill.val() & (self.t_rp.q.val() == self.slot3.val()) {
             self.t_v3.d.next = false;
         }
-        self.head_line_fill.next = self.ans_meta.read_data.val().get_bits::<12>(16);
+        self.head_line_fill.next = self.ans_meta.read_data.val().get_bits::<CACHE_BITS>(16);
         self.head_id_fill.next = self.ans_meta.read_data.val().get_bits::<16>(0);
         self.head_key_fill.next = self.valid_flag.val() | bit_cast::<17, 16>(self.head_id_fill.val());
         self.f_v1.d.next = self.fill.val();
@@ -1130,7 +1112,7 @@ impl Logic for PatchCache {
         self.lane_by.write_data.next = self.ret_by.read_data.val();
         self.tag.write_enable.next = self.fill.val();
         // The flush: clear one tag per cycle, line 0 to the last (no fill can be pending).
-        self.fl_inc.next = self.fl_line.q.val() + self.one12.val();
+        self.fl_inc.next = self.fl_line.q.val() + self.one_line.val();
         if self.fl_on.q.val() {
             self.tag.write_address.next = self.fl_line.q.val();
             self.tag.write_data.next = self.zero17.val();
@@ -1142,7 +1124,7 @@ impl Logic for PatchCache {
         }
         if self.flush.val() & !self.fl_on.q.val() {
             self.fl_on.d.next = true;
-            self.fl_line.d.next = self.zero12.val();
+            self.fl_line.d.next = self.zero_line.val();
         }
         self.flushing.next = self.fl_on.q.val();
         self.lane_ax.write_enable.next = self.fill.val();
@@ -1197,9 +1179,9 @@ mod tests {
         // Line 0 holds 0, line 1 holds 1, line 15 holds 0xFFFF. One line: only the last id.
         c.set_mask(0);
         assert_eq!(c.run(&[0, 0, 1]), [true, true, false]);
-        assert_eq!(mask_for(4096), Some(0xFFF));
+        assert_eq!(mask_for(1024), Some(0x3FF));
         assert_eq!(mask_for(1), Some(0));
-        assert_eq!(mask_for(8192), None);
+        assert_eq!(mask_for(2048), None);
         assert_eq!(mask_for(12), None);
     }
 

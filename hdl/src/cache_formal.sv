@@ -42,7 +42,7 @@
 //   `cfg_mask` is a free constant of at most 3 (one to four lines, any of 0, 1, 2, 3): the
 //   script cuts the five line memories to their first four words
 //   (`-DSHELLING_FORMAL_BRAM_WORDS=4`, `prim::BramOut`), and their own assertions that no
-//   address beyond them is used are part of the proof. A flush walks all 4096 lines, so it
+//   address beyond them is used are part of the proof. A flush walks all 1024 lines, so it
 //   cannot run on the cut memories; masks above 3 address lines the cut does not keep. The
 //   cache's logic does not depend on the number of lines (a line is an address and a compare),
 //   and four lines give the cases that matter: one line shared by every id, ids evicting each

@@ -7,6 +7,7 @@
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock |
 //! | `id_valid`, `id_ready`, `id` | in, out, in | 1, 1, 16 | id stream (valid/ready) |
+//! | `id_ready_next` | out | 1 | `id_ready` after the coming edge (combinational: for a client that keeps its own ready in a register) |
 //! | `mem_req`, `mem_addr` | out, out | 1, 16 | memory request: one clock pulse per patch, `mem_addr` = patch id |
 //! | `mem_valid`, `mem_ax`, `mem_ay`, `mem_bx`, `mem_by` | in | 1, 4 × 17 | memory response |
 //! | `out_valid`, `out_ready`, `out_id`, `out_ax` … `out_by` | out, in, out | 1, 1, 16, 4 × 17 | patch stream (valid/ready) |
@@ -152,6 +153,8 @@ pub struct PatchLoader {
     pub id_valid: Signal<In, bool>,
     pub id_ready: Signal<Out, bool>,
     pub id: Signal<In, Bits<16>>,
+    /// `id_ready` after the coming edge: the complement of `full`'s next value.
+    pub id_ready_next: Signal<Out, bool>,
     // Host memory port.
     pub mem_req: Signal<Out, bool>,
     pub mem_addr: Signal<Out, Bits<16>>,
@@ -190,6 +193,7 @@ pub struct PatchLoader {
     lane_by: FifoRam<17, 4>,
     // Combinational.
     room: Signal<Local, bool>,
+    full_next: Signal<Local, bool>,
     accept: Signal<Local, bool>,
     pop: Signal<Local, bool>,
     req_inc: Signal<Local, Bits<4>>,
@@ -214,6 +218,7 @@ impl Default for PatchLoader {
             clock: Default::default(),
             id_valid: Default::default(),
             id_ready: Default::default(),
+            id_ready_next: Default::default(),
             id: Default::default(),
             mem_req: Default::default(),
             mem_addr: Default::default(),
@@ -243,6 +248,7 @@ impl Default for PatchLoader {
             lane_bx: Default::default(),
             lane_by: Default::default(),
             room: Default::default(),
+            full_next: Default::default(),
             accept: Default::default(),
             pop: Default::default(),
             req_inc: Default::default(),
@@ -368,8 +374,10 @@ impl Logic for PatchLoader {
             | ((self.reserved.q.val() == self.almost5.val()) & self.req_valid.q.val());
         self.held_almost.next = ((self.reserved.q.val() == self.almost5.val()) & !self.req_valid.q.val())
             | ((self.reserved.q.val() == self.almost4.val()) & self.req_valid.q.val());
-        self.full.d.next = (self.held_all.val() & !self.pop.val())
+        self.full_next.next = (self.held_all.val() & !self.pop.val())
             | (self.held_almost.val() & self.accept.val() & !self.pop.val());
+        self.full.d.next = self.full_next.val();
+        self.id_ready_next.next = !self.full_next.val();
     }
 }
 

@@ -47,7 +47,7 @@ module loader_formal (
 );
     localparam DEPTH = 16;
 
-    wire        id_ready, mem_req, out_valid;
+    wire        id_ready, id_ready_next, mem_req, out_valid;
     wire [15:0] mem_addr, out_id;
     wire [16:0] out_ax, out_ay, out_bx, out_by;
     wire [31:0] loads;
@@ -64,7 +64,7 @@ module loader_formal (
 
     patch_loader dut (
         .clock(clock),
-        .id_valid(id_valid), .id_ready(id_ready), .id(id),
+        .id_valid(id_valid), .id_ready(id_ready), .id(id), .id_ready_next(id_ready_next),
         .mem_req(mem_req), .mem_addr(mem_addr), .mem_valid(mem_valid),
         .mem_ax(mem_ax), .mem_ay(mem_ay), .mem_bx(mem_bx), .mem_by(mem_by),
         .out_valid(out_valid), .out_ready(out_ready), .out_id(out_id),
@@ -174,6 +174,8 @@ module loader_formal (
         if (f_past) begin
             // One request per accepted id, in the next cycle, for that id.
             a_request_next: assert(mem_req == $past(accept));
+            // `id_ready_next` is `id_ready` one edge ahead (the PE keeps its ready in a register).
+            a_ready_next: assert(id_ready == $past(id_ready_next));
             if (mem_req) a_request_addr: assert(mem_addr == $past(id));
             // A presented patch stays, unchanged, until it is taken.
             if ($past(out_valid && !out_ready)) begin

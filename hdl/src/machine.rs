@@ -14,7 +14,7 @@
 //! | `clock` | in | 1 | rising-edge clock of every PE and the arbiter |
 //! | `dir_we$i` … `res_addr$i` | in | as the PE's | PE `i`'s host ports: directions, source, sectors, commands, readout (`pe.rs`) |
 //! | `cmd_ready$i` … `tests$i` | out | as the PE's | PE `i`'s outputs: command ready, readout, `busy` and its counters |
-//! | `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush` | in | 1, 12, 1 | every PE's cache setting (one scene, one size) |
+//! | `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush` | in | 1, 10, 1 | every PE's cache setting (one scene, one size) |
 //! | `host_req`, `host_addr` | out | 1, 16 | the shared host memory's request: one per clock at most |
 //! | `host_valid`, `host_ax` … `host_by` | in | 1, 17 each | its answers, in request order |
 //! | `requests` | out | 32 | requests sent to the host since power-up (wrapping) |
@@ -69,7 +69,7 @@ macro_rules! machine {
             $(pub $i: [Signal<In, $it>; N],)+
             $(pub $o: [Signal<Out, $ot>; N],)+
             pub cfg_cache_enable: Signal<In, bool>,
-            pub cfg_cache_mask: Signal<In, Bits<12>>,
+            pub cfg_cache_mask: Signal<In, Bits<{ crate::cache::CACHE_BITS }>>,
             pub cfg_cache_flush: Signal<In, bool>,
             pub host_req: Signal<Out, bool>,
             pub host_addr: Signal<Out, Bits<16>>,

@@ -31,8 +31,8 @@
 //! | `cmd_sector`, `cmd_retire` | in | 1, 1 | a sector, a retire, or (both low) a job |
 //! | `first_x/y`, `last_x/y` | in | 18 | a sector command's first and last ray (Q2.16) |
 //! | `cmd_id`, `cmd_first`, `cmd_count` | in | 16, 10, 11 | a job's patch id; a job's or a retire's ray range |
-//! | `cfg_cache_enable`, `cfg_cache_mask` | in | 1, 12 | the patch cache: on, and its lines − 1 (a power of two up to 4096), held during a run |
-//! | `cfg_cache_flush` | in | 1 | invalidate the cache (a new scene in the host memory): raise while not `busy`; `busy` stays high for the 4096 cycles it takes ([`PatchCache`]) |
+//! | `cfg_cache_enable`, `cfg_cache_mask` | in | 1, 10 | the patch cache: on, and its lines − 1 (a power of two up to 1024), held during a run |
+//! | `cfg_cache_flush` | in | 1 | invalidate the cache (a new scene in the host memory): raise while not `busy`; `busy` stays high for the 1024 cycles it takes ([`PatchCache`]) |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host memory request (one pulse per patch) |
 //! | `mem_valid`, `mem_ax` … `mem_by` | in | 1, 4 × 17 | host memory response, in request order (world coordinates, Q11.6) |
 //! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (two cycles after, [`crate::intersection::READOUT_LATENCY`]; only while not `busy`) |
@@ -79,8 +79,9 @@
 //!
 //! `cmd_ready` is high while the tag FIFO has room, the loader can take an id and no sector
 //! waits (for every kind of command: the condition must not depend on `cmd_retire` or
-//! `cmd_sector`); it is an AND of three registers (`tags_full`, the loader's `full`, `pend`),
-//! so that the command handshake reaches the tag FIFO's write enables through one gate.
+//! `cmd_sector`); it is one register (`stall`, its complement), set from the next values of
+//! `tags_full`, the loader's `full` and `pend`, so that the command handshake reaches the tag
+//! FIFO's write enables through one gate.
 //!
 //! # Latency and throughput
 //!
@@ -110,7 +111,7 @@
 //! screener's [`crate::screener::model::screen`] per job under the sector's setup and the
 //! intersection unit's [`crate::intersection::model`] per live ray.
 
-use crate::cache::PatchCache;
+use crate::cache::{PatchCache, CACHE_BITS};
 use crate::intersection::IntersectionUnit;
 use crate::loader::PatchLoader;
 use crate::prim::Fifo;
@@ -155,7 +156,7 @@ pub struct ProcessingElement {
     pub cmd_count: Signal<In, Bits<11>>,
     // The patch cache.
     pub cfg_cache_enable: Signal<In, bool>,
-    pub cfg_cache_mask: Signal<In, Bits<12>>,
+    pub cfg_cache_mask: Signal<In, Bits<CACHE_BITS>>,
     pub cfg_cache_flush: Signal<In, bool>,
     // Host memory.
     pub mem_req: Signal<Out, bool>,
@@ -232,8 +233,13 @@ pub struct ProcessingElement {
     used0: DFF<bool>,
     used1: DFF<bool>,
     /// The tag FIFO holds [`TAG_DEPTH`] tags: its count's compare, registered (from the count's
-    /// next value), so that `cmd_ready` is an AND of three registers.
+    /// next value), so that `stall` (below) is set from next values.
     tags_full: DFF<bool>,
+    tags_full_next: Signal<Local, bool>,
+    /// `cmd_ready`'s complement in one register of its own, set from the next values of
+    /// `tags_full`, the loader's `full` and `pend` (powers up low: ready), so that the command
+    /// handshake reaches the tag FIFO's write enables through one gate.
+    stall: DFF<bool>,
     /// The bank a pending sector overwrites (not `bank`) holds no job before its sector read.
     other_free: Signal<Local, bool>,
     in0: Signal<Local, bool>,
@@ -339,6 +345,8 @@ impl Default for ProcessingElement {
             used0: Default::default(),
             used1: Default::default(),
             tags_full: Default::default(),
+            tags_full_next: Default::default(),
+            stall: Default::default(),
             other_free: Default::default(),
             in0: Default::default(),
             sector_in: Default::default(),
@@ -385,7 +393,8 @@ impl Logic for ProcessingElement {
             jobs1,
             used0,
             used1,
-            tags_full
+            tags_full,
+            stall
         );
         self.job_banks.clock.next = self.clock.val();
         self.loader.clock.next = self.clock.val();
@@ -425,8 +434,8 @@ impl Logic for ProcessingElement {
         }
 
         // Commands: a tag for each job and retire, the id of a job to the loader with its
-        // bank beside it; a sector into the pending register. Ready depends on registers only.
-        self.room.next = !self.tags_full.q.val() & self.loader.id_ready.val() & !self.pend.q.val();
+        // bank beside it; a sector into the pending register. Ready is a register.
+        self.room.next = !self.stall.q.val();
         self.cmd_ready.next = self.room.val();
         self.accept.next = self.cmd_valid.val() & self.room.val();
         self.job.next = self.accept.val() & !self.cmd_retire.val() & !self.cmd_sector.val();
@@ -621,11 +630,15 @@ impl Logic for ProcessingElement {
         self.tags.pop.next = self.pop.val();
         // The tag FIFO full after this edge: full and no pop, or one short of full with a push
         // and no pop (no push while full: `cmd_ready` is low).
-        self.tags_full.d.next = ((self.tags.count.val() == self.full.val()) & !self.pop.val())
+        self.tags_full_next.next = ((self.tags.count.val() == self.full.val()) & !self.pop.val())
             | ((self.tags.count.val() == self.almost_full.val())
                 & self.accept.val()
                 & !self.cmd_sector.val()
                 & !self.pop.val());
+        self.tags_full.d.next = self.tags_full_next.val();
+        // Ready after this edge: the tag FIFO not full, the loader ready, no sector pending.
+        self.stall.d.next =
+            self.tags_full_next.val() | !self.loader.id_ready_next.val() | self.pend_next.val();
 
         // Status and counters.
         self.busy.next = (self.tags.count.val() != self.zero7.val())

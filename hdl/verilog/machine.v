@@ -74,7 +74,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     output reg  [31:0] tests$0;
     output reg  [31:0] tests$1;
     input wire  cfg_cache_enable;
-    input wire  [11:0] cfg_cache_mask;
+    input wire  [9:0] cfg_cache_mask;
     input wire  cfg_cache_flush;
     output reg  host_req;
     output reg  [15:0] host_addr;
@@ -107,7 +107,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  [9:0] pes$0$cmd_first;
     reg  [10:0] pes$0$cmd_count;
     reg  pes$0$cfg_cache_enable;
-    reg  [11:0] pes$0$cfg_cache_mask;
+    reg  [9:0] pes$0$cfg_cache_mask;
     reg  pes$0$cfg_cache_flush;
     wire  pes$0$mem_req;
     wire  [15:0] pes$0$mem_addr;
@@ -152,7 +152,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  [9:0] pes$1$cmd_first;
     reg  [10:0] pes$1$cmd_count;
     reg  pes$1$cfg_cache_enable;
-    reg  [11:0] pes$1$cfg_cache_mask;
+    reg  [9:0] pes$1$cfg_cache_mask;
     reg  pes$1$cfg_cache_flush;
     wire  pes$1$mem_req;
     wire  [15:0] pes$1$mem_addr;
@@ -1833,7 +1833,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     input wire  [9:0] cmd_first;
     input wire  [10:0] cmd_count;
     input wire  cfg_cache_enable;
-    input wire  [11:0] cfg_cache_mask;
+    input wire  [9:0] cfg_cache_mask;
     input wire  cfg_cache_flush;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
@@ -1872,6 +1872,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  loader$id_valid;
     wire  loader$id_ready;
     reg  [15:0] loader$id;
+    wire  loader$id_ready_next;
     wire  loader$mem_req;
     wire  [15:0] loader$mem_addr;
     reg  loader$mem_valid;
@@ -1889,7 +1890,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [31:0] loader$loads;
     reg  cache$clock;
     reg  cache$cfg_enable;
-    reg  [11:0] cache$cfg_mask;
+    reg  [9:0] cache$cfg_mask;
     reg  cache$flush;
     wire  cache$flushing;
     reg  cache$req;
@@ -2097,6 +2098,9 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  tags_full$d;
     wire  tags_full$q;
     reg  tags_full$clock;
+    reg  stall$d;
+    wire  stall$q;
+    reg  stall$clock;
     
     // Local signals
     reg  accept;
@@ -2108,6 +2112,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [21:0] new_tag;
     reg  room;
     reg  job;
+    reg  tags_full_next;
     reg  other_free;
     reg  in0;
     reg  sector_in;
@@ -2126,6 +2131,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .id_valid(loader$id_valid),
         .id_ready(loader$id_ready),
         .id(loader$id),
+        .id_ready_next(loader$id_ready_next),
         .mem_req(loader$mem_req),
         .mem_addr(loader$mem_addr),
         .mem_valid(loader$mem_valid),
@@ -2404,6 +2410,11 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .q(tags_full$q),
         .clock(tags_full$clock)
     );
+    machine$pes$0$stall stall(
+        .d(stall$d),
+        .q(stall$q),
+        .clock(stall$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2426,6 +2437,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         used0$clock = clock;
         used1$clock = clock;
         tags_full$clock = clock;
+        stall$clock = clock;
         bank$d = bank$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
@@ -2445,6 +2457,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         used0$d = used0$q;
         used1$d = used1$q;
         tags_full$d = tags_full$q;
+        stall$d = stall$q;
         job_banks$clock = clock;
         loader$clock = clock;
         cache$clock = clock;
@@ -2476,7 +2489,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             screener$last_x = last1_x$q;
             screener$last_y = last1_y$q;
         end
-        room = ~tags_full$q & loader$id_ready & ~pend$q;
+        room = ~stall$q;
         cmd_ready = room;
         accept = cmd_valid & room;
         job = accept & ~cmd_retire & ~cmd_sector;
@@ -2652,7 +2665,9 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
-        tags_full$d = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
+        tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
+        tags_full$d = tags_full_next;
+        stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
         busy = (tags$count != zero7) | pend$q | queue$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
@@ -2692,7 +2707,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     // Module arguments
     input wire  clock;
     input wire  cfg_enable;
-    input wire  [11:0] cfg_mask;
+    input wire  [9:0] cfg_mask;
     input wire  flush;
     output reg  flushing;
     input wire  req;
@@ -2714,10 +2729,10 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     
     // Constant declarations
     localparam  valid_flag = 17'b10000000000000000;
-    localparam  miss_flag = 29'h10000000;
+    localparam  miss_flag = 27'h4000000;
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
-    localparam  one12 = 12'h1;
+    localparam  one_line = 10'b1;
     localparam  one3 = 3'b1;
     localparam  misses3 = 3'b100;
     localparam  almost3 = 3'b11;
@@ -2726,8 +2741,8 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     localparam  slot1 = 2'b1;
     localparam  slot2 = 2'b10;
     localparam  slot3 = 2'b11;
-    localparam  last_line = 12'hfff;
-    localparam  zero12 = 12'h0;
+    localparam  last_line = 10'b1111111111;
+    localparam  zero_line = 10'b0;
     localparam  zero17 = 17'b0;
     
     // Stub signals
@@ -2764,8 +2779,8 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [16:0] key1$d;
     wire  [16:0] key1$q;
     reg  key1$clock;
-    reg  [11:0] line1$d;
-    wire  [11:0] line1$q;
+    reg  [9:0] line1$d;
+    wire  [9:0] line1$q;
     reg  line1$clock;
     reg  v2$d;
     wire  v2$q;
@@ -2776,8 +2791,8 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [16:0] key2$d;
     wire  [16:0] key2$q;
     reg  key2$clock;
-    reg  [11:0] line2$d;
-    wire  [11:0] line2$q;
+    reg  [9:0] line2$d;
+    wire  [9:0] line2$q;
     reg  line2$clock;
     reg  v3$d;
     wire  v3$q;
@@ -2785,24 +2800,12 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
-    reg  [11:0] line3$d;
-    wire  [11:0] line3$q;
+    reg  [9:0] line3$d;
+    wire  [9:0] line3$q;
     reg  line3$clock;
-    reg  match3_0$d;
-    wire  match3_0$q;
-    reg  match3_0$clock;
-    reg  match3_1$d;
-    wire  match3_1$q;
-    reg  match3_1$clock;
-    reg  match3_2$d;
-    wire  match3_2$q;
-    reg  match3_2$clock;
-    reg  match3_3$d;
-    wire  match3_3$q;
-    reg  match3_3$clock;
-    reg  match3_4$d;
-    wire  match3_4$q;
-    reg  match3_4$clock;
+    reg  match3$d;
+    wire  match3$q;
+    reg  match3$clock;
     reg  lconf3$d;
     wire  lconf3$q;
     reg  lconf3$clock;
@@ -2833,17 +2836,17 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [15:0] t_id3$d;
     wire  [15:0] t_id3$q;
     reg  t_id3$clock;
-    reg  [11:0] t_line0$d;
-    wire  [11:0] t_line0$q;
+    reg  [9:0] t_line0$d;
+    wire  [9:0] t_line0$q;
     reg  t_line0$clock;
-    reg  [11:0] t_line1$d;
-    wire  [11:0] t_line1$q;
+    reg  [9:0] t_line1$d;
+    wire  [9:0] t_line1$q;
     reg  t_line1$clock;
-    reg  [11:0] t_line2$d;
-    wire  [11:0] t_line2$q;
+    reg  [9:0] t_line2$d;
+    wire  [9:0] t_line2$q;
     reg  t_line2$clock;
-    reg  [11:0] t_line3$d;
-    wire  [11:0] t_line3$q;
+    reg  [9:0] t_line3$d;
+    wire  [9:0] t_line3$q;
     reg  t_line3$clock;
     reg  t_v0$d;
     wire  t_v0$q;
@@ -2872,8 +2875,8 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [15:0] f_id1$d;
     wire  [15:0] f_id1$q;
     reg  f_id1$clock;
-    reg  [11:0] f_line1$d;
-    wire  [11:0] f_line1$q;
+    reg  [9:0] f_line1$d;
+    wire  [9:0] f_line1$q;
     reg  f_line1$clock;
     reg  f_v1$d;
     wire  f_v1$q;
@@ -2962,12 +2965,12 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     wire  [16:0] ans_by$read_data;
     reg  ans_meta$clock;
     reg  [3:0] ans_meta$write_address;
-    reg  [28:0] ans_meta$write_data;
+    reg  [26:0] ans_meta$write_data;
     reg  ans_meta$write_enable;
     reg  [3:0] ans_meta$head_address;
     reg  [3:0] ans_meta$next_address;
     reg  ans_meta$pop;
-    wire  [28:0] ans_meta$read_data;
+    wire  [26:0] ans_meta$read_data;
     reg  ret$clock;
     reg  ret$push;
     reg  ret$pop;
@@ -3011,8 +3014,8 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  fl_on$d;
     wire  fl_on$q;
     reg  fl_on$clock;
-    reg  [11:0] fl_line$d;
-    wire  [11:0] fl_line$q;
+    reg  [9:0] fl_line$d;
+    wire  [9:0] fl_line$q;
     reg  fl_line$clock;
     reg  mreq$d;
     wire  mreq$q;
@@ -3045,33 +3048,33 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     wire  hit_r$q;
     reg  hit_r$clock;
     reg  tag$clock;
-    reg  [11:0] tag$read_address;
+    reg  [9:0] tag$read_address;
     wire  [16:0] tag$read_data;
-    reg  [11:0] tag$write_address;
+    reg  [9:0] tag$write_address;
     reg  [16:0] tag$write_data;
     reg  tag$write_enable;
     reg  lane_ax$clock;
-    reg  [11:0] lane_ax$read_address;
+    reg  [9:0] lane_ax$read_address;
     wire  [16:0] lane_ax$read_data;
-    reg  [11:0] lane_ax$write_address;
+    reg  [9:0] lane_ax$write_address;
     reg  [16:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
     reg  lane_ay$clock;
-    reg  [11:0] lane_ay$read_address;
+    reg  [9:0] lane_ay$read_address;
     wire  [16:0] lane_ay$read_data;
-    reg  [11:0] lane_ay$write_address;
+    reg  [9:0] lane_ay$write_address;
     reg  [16:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
     reg  lane_bx$clock;
-    reg  [11:0] lane_bx$read_address;
+    reg  [9:0] lane_bx$read_address;
     wire  [16:0] lane_bx$read_data;
-    reg  [11:0] lane_bx$write_address;
+    reg  [9:0] lane_bx$write_address;
     reg  [16:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
     reg  lane_by$clock;
-    reg  [11:0] lane_by$read_address;
+    reg  [9:0] lane_by$read_address;
     wire  [16:0] lane_by$read_data;
-    reg  [11:0] lane_by$write_address;
+    reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
     
@@ -3093,9 +3096,9 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  head_miss;
     reg  answer;
     reg  fill;
-    reg  [28:0] meta_in;
+    reg  [26:0] meta_in;
     reg  [16:0] head_key_fill;
-    reg  [11:0] head_line_fill;
+    reg  [9:0] head_line_fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
@@ -3109,12 +3112,12 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  ne_sp_inc;
     reg  ne_rd;
     reg  read_new;
-    reg  [11:0] head_low;
-    reg  [11:0] head_line;
+    reg  [9:0] head_low;
+    reg  [9:0] head_line;
     reg  [16:0] head_key;
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
-    reg  [11:0] fl_inc;
+    reg  [9:0] fl_inc;
     reg  [1:0] t_wp_inc;
     reg  [1:0] t_rp_inc;
     
@@ -3212,30 +3215,10 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         .q(line3$q),
         .clock(line3$clock)
     );
-    machine$pes$0$cache$match3_0 match3_0(
-        .d(match3_0$d),
-        .q(match3_0$q),
-        .clock(match3_0$clock)
-    );
-    machine$pes$0$cache$match3_1 match3_1(
-        .d(match3_1$d),
-        .q(match3_1$q),
-        .clock(match3_1$clock)
-    );
-    machine$pes$0$cache$match3_2 match3_2(
-        .d(match3_2$d),
-        .q(match3_2$q),
-        .clock(match3_2$clock)
-    );
-    machine$pes$0$cache$match3_3 match3_3(
-        .d(match3_3$d),
-        .q(match3_3$q),
-        .clock(match3_3$clock)
-    );
-    machine$pes$0$cache$match3_4 match3_4(
-        .d(match3_4$d),
-        .q(match3_4$q),
-        .clock(match3_4$clock)
+    machine$pes$0$cache$match3 match3(
+        .d(match3$d),
+        .q(match3$q),
+        .clock(match3$clock)
     );
     machine$pes$0$cache$lconf3 lconf3(
         .d(lconf3$d),
@@ -3662,11 +3645,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         v3$clock = clock;
         id3$clock = clock;
         line3$clock = clock;
-        match3_0$clock = clock;
-        match3_1$clock = clock;
-        match3_2$clock = clock;
-        match3_3$clock = clock;
-        match3_4$clock = clock;
+        match3$clock = clock;
         lconf3$clock = clock;
         iconf3$clock = clock;
         ax3$clock = clock;
@@ -3735,11 +3714,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         v3$d = v3$q;
         id3$d = id3$q;
         line3$d = line3$q;
-        match3_0$d = match3_0$q;
-        match3_1$d = match3_1$q;
-        match3_2$d = match3_2$q;
-        match3_3$d = match3_3$q;
-        match3_4$d = match3_4$q;
+        match3$d = match3$q;
         lconf3$d = lconf3$q;
         iconf3$d = iconf3$q;
         ax3$d = ax3$q;
@@ -3821,18 +3796,14 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
-        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        tag_hit = match3$q;
         miss3 = lconf3$q | ~tag_hit;
         hit = accept & ~miss3;
         miss = accept & miss3;
         v3$d = v2$q & ~rewind;
         id3$d = id2$q;
         line3$d = line2$q;
-        match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
-        match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
-        match3_2$d = tag$read_data[(32'h8)+:(4)] == key2$q[(32'h8)+:(4)];
-        match3_3$d = tag$read_data[(32'hc)+:(4)] == key2$q[(32'hc)+:(4)];
-        match3_4$d = tag$read_data[32'h10] == key2$q[32'h10];
+        match3$d = tag$read_data == key2$q;
         ax3$d = lane_ax$read_data;
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
@@ -3891,7 +3862,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         sp_inc_x$d = read_inc ^ one5;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
         q_valid$d = read_new;
-        head_low = ((q_lane$read_data) & 12'hfff);
+        head_low = ((q_lane$read_data) & 10'h3ff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
         tag$read_address = head_line;
@@ -3907,7 +3878,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         id2$d = id1$q;
         key2$d = key1$q;
         line2$d = line1$q;
-        meta_in = (((line3$q) & 29'h1fffffff) << 32'h10) | ((id3$q) & 29'h1fffffff);
+        meta_in = (((line3$q) & 27'h7ffffff) << 32'h10) | ((id3$q) & 27'h7ffffff);
         if (miss3) begin
             meta_in = meta_in | miss_flag;
         end
@@ -3956,7 +3927,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         ret_ay$write_data = mem_ay;
         ret_bx$write_data = mem_bx;
         ret_by$write_data = mem_by;
-        head_miss = ans_meta$read_data[32'h1c];
+        head_miss = ans_meta$read_data[32'h1a];
         answer = ans$valid & (~head_miss | ret$valid);
         fill = answer & head_miss;
         ans$pop = answer;
@@ -3994,7 +3965,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         if (fill & (t_rp$q == slot3)) begin
             t_v3$d = 1'b0;
         end
-        head_line_fill = ans_meta$read_data[(32'h10)+:(12)];
+        head_line_fill = ans_meta$read_data[(32'h10)+:(10)];
         head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
         head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
         f_v1$d = fill;
@@ -4056,7 +4027,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         lane_bx$write_data = ret_bx$read_data;
         lane_by$write_data = ret_by$read_data;
         tag$write_enable = fill;
-        fl_inc = fl_line$q + one12;
+        fl_inc = fl_line$q + one_line;
         if (fl_on$q) begin
             tag$write_address = fl_line$q;
             tag$write_data = zero17;
@@ -4068,7 +4039,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         end
         if (flush & ~fl_on$q) begin
             fl_on$d = 1'b1;
-            fl_line$d = zero12;
+            fl_line$d = zero_line;
         end
         flushing = fl_on$q;
         lane_ax$write_enable = fill;
@@ -4500,23 +4471,23 @@ module machine$pes$0$cache$ans_meta(clock,write_address,write_data,write_enable,
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [28:0] write_data;
+    input wire  [26:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [28:0] read_data;
+    output reg  [26:0] read_data;
     
     // Update code (custom)
-    reg [28:0] mem [0:15];
-    reg [28:0] head_r;
-    reg [28:0] next_r;
+    reg [26:0] mem [0:15];
+    reg [26:0] head_r;
+    reg [26:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [28:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
+    reg [26:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 27'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -4527,9 +4498,9 @@ module machine$pes$0$cache$ans_meta(clock,write_address,write_data,write_enable,
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
-       head_r = 29'd0;
-       next_r = 29'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 27'd0;
+       head_r = 27'd0;
+       next_r = 27'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -4641,13 +4612,13 @@ endmodule // machine$pes$0$cache$f_id1
 module machine$pes$0$cache$f_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4679,13 +4650,13 @@ endmodule // machine$pes$0$cache$f_v1
 module machine$pes$0$cache$fl_line(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4870,281 +4841,69 @@ module machine$pes$0$cache$lane_ax(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -5154,7 +4913,7 @@ module machine$pes$0$cache$lane_ax(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -5191,281 +4950,69 @@ module machine$pes$0$cache$lane_ay(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -5475,7 +5022,7 @@ module machine$pes$0$cache$lane_ay(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -5512,281 +5059,69 @@ module machine$pes$0$cache$lane_bx(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -5796,7 +5131,7 @@ module machine$pes$0$cache$lane_bx(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -5833,281 +5168,69 @@ module machine$pes$0$cache$lane_by(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -6117,7 +5240,7 @@ module machine$pes$0$cache$lane_by(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -6172,13 +5295,13 @@ endmodule // machine$pes$0$cache$lconf3
 module machine$pes$0$cache$line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -6191,13 +5314,13 @@ endmodule // machine$pes$0$cache$line1
 module machine$pes$0$cache$line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -6210,13 +5333,13 @@ endmodule // machine$pes$0$cache$line2
 module machine$pes$0$cache$line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -6245,7 +5368,7 @@ module machine$pes$0$cache$maddr(d,q,clock);
 endmodule // machine$pes$0$cache$maddr
 
 
-module machine$pes$0$cache$match3_0(d,q,clock);
+module machine$pes$0$cache$match3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -6261,83 +5384,7 @@ module machine$pes$0$cache$match3_0(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$cache$match3_0
-
-
-module machine$pes$0$cache$match3_1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$cache$match3_1
-
-
-module machine$pes$0$cache$match3_2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$cache$match3_2
-
-
-module machine$pes$0$cache$match3_3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$cache$match3_3
-
-
-module machine$pes$0$cache$match3_4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$cache$match3_4
+endmodule // machine$pes$0$cache$match3
 
 
 module machine$pes$0$cache$mi0(d,q,clock);
@@ -7348,13 +6395,13 @@ endmodule // machine$pes$0$cache$t_id3
 module machine$pes$0$cache$t_line0(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -7367,13 +6414,13 @@ endmodule // machine$pes$0$cache$t_line0
 module machine$pes$0$cache$t_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -7386,13 +6433,13 @@ endmodule // machine$pes$0$cache$t_line1
 module machine$pes$0$cache$t_line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -7405,13 +6452,13 @@ endmodule // machine$pes$0$cache$t_line2
 module machine$pes$0$cache$t_line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -7558,281 +6605,69 @@ module machine$pes$0$cache$tag(clock,read_address,read_data,write_address,write_
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -7842,7 +6677,7 @@ module machine$pes$0$cache$tag(clock,read_address,read_data,write_address,write_
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -8458,13 +7293,14 @@ module machine$pes$0$last1_y(d,q,clock);
 endmodule // machine$pes$0$last1_y
 
 
-module machine$pes$0$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
+module machine$pes$0$loader(clock,id_valid,id_ready,id,id_ready_next,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
     input wire  clock;
     input wire  id_valid;
     output reg  id_ready;
     input wire  [15:0] id;
+    output reg  id_ready_next;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
     input wire  mem_valid;
@@ -8559,6 +7395,7 @@ module machine$pes$0$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_vali
     
     // Local signals
     reg  room;
+    reg  full_next;
     reg  accept;
     reg  pop;
     reg  [3:0] req_inc;
@@ -8745,7 +7582,9 @@ module machine$pes$0$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_vali
         end
         held_all = (reserved$q == depth5) | ((reserved$q == almost5) & req_valid$q);
         held_almost = ((reserved$q == almost5) & ~req_valid$q) | ((reserved$q == almost4) & req_valid$q);
-        full$d = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full_next = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full$d = full_next;
+        id_ready_next = ~full_next;
     end
     
 endmodule // machine$pes$0$loader
@@ -12042,9 +10881,15 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] k8$d;
     wire  [31:0] k8$q;
     reg  k8$clock;
-    reg  [5:0] exp8$d;
-    wire  [5:0] exp8$q;
-    reg  exp8$clock;
+    reg  [5:0] s0_8$d;
+    wire  [5:0] s0_8$q;
+    reg  s0_8$clock;
+    reg  [5:0] s0_m1_8$d;
+    wire  [5:0] s0_m1_8$q;
+    reg  s0_m1_8$clock;
+    reg  below8$d;
+    wire  below8$q;
+    reg  below8$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -12163,7 +11008,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] side_l;
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
-    reg  [5:0] sh;
     reg  [17:0] n_hi;
     reg  [17:0] e_hi;
     reg  e_lo_nz;
@@ -12171,6 +11015,7 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
     reg  is_outside;
+    reg  [5:0] exp8;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -12937,10 +11782,20 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(k8$q),
         .clock(k8$clock)
     );
-    machine$pes$0$screener$exp8 exp8(
-        .d(exp8$d),
-        .q(exp8$q),
-        .clock(exp8$clock)
+    machine$pes$0$screener$s0_8 s0_8(
+        .d(s0_8$d),
+        .q(s0_8$q),
+        .clock(s0_8$clock)
+    );
+    machine$pes$0$screener$s0_m1_8 s0_m1_8(
+        .d(s0_m1_8$d),
+        .q(s0_m1_8$q),
+        .clock(s0_m1_8$clock)
+    );
+    machine$pes$0$screener$below8 below8(
+        .d(below8$d),
+        .q(below8$q),
+        .clock(below8$clock)
     );
     machine$pes$0$screener$backward8 backward8(
         .d(backward8$d),
@@ -13142,7 +11997,9 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negx8$clock = clock;
         negy8$clock = clock;
         k8$clock = clock;
-        exp8$clock = clock;
+        s0_8$clock = clock;
+        s0_m1_8$clock = clock;
+        below8$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -13276,7 +12133,9 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negx8$d = negx8$q;
         negy8$d = negy8$q;
         k8$d = k8$q;
-        exp8$d = exp8$q;
+        s0_8$d = s0_8$q;
+        s0_m1_8$d = s0_m1_8$q;
+        below8$d = below8$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -13555,10 +12414,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         e_hi = norm_e7$q[(32'he)+:(18)];
         e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
-        sh = s0_m1;
-        if (n_below_e) begin
-            sh = s0;
-        end
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
         is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
@@ -13576,9 +12431,15 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         outside8$d = is_outside;
-        exp8$d = sh;
-        sh5 = exp8$q[(32'h0)+:(5)];
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
+        s0_8$d = s0;
+        s0_m1_8$d = s0_m1;
+        below8$d = n_below_e;
+        exp8 = s0_m1_8$q;
+        if (below8$q) begin
+            exp8 = s0_8$q;
+        end
+        sh5 = exp8[(32'h0)+:(5)];
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8[32'h5] & (exp8 < sh_lo);
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
@@ -13614,19 +12475,19 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         divider$ry = absny32 << sh5;
         divider$fx = zero3;
         divider$fy = zero3;
-        if (exp8$q == sh_m1) begin
+        if (exp8 == sh_m1) begin
             divider$rx = absnx32 >> sh1;
             divider$ry = absny32 >> sh1;
             divider$fx = low_nx << sh2_3;
             divider$fy = low_ny << sh2_3;
         end
-        else if (exp8$q == sh_m2) begin
+        else if (exp8 == sh_m2) begin
             divider$rx = absnx32 >> sh2;
             divider$ry = absny32 >> sh2;
             divider$fx = low_nx << sh1_3;
             divider$fy = low_ny << sh1_3;
         end
-        else if (exp8$q == sh_lo) begin
+        else if (exp8 == sh_lo) begin
             divider$rx = absnx32 >> sh3;
             divider$ry = absny32 >> sh3;
             divider$fx = low_nx;
@@ -13657,9 +12518,9 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         lane_ay$write_data = ay8$q;
         lane_bx$write_data = bx8$q;
         lane_by$write_data = by8$q;
-        sh_pass = ((exp8$q) & 7'h7f);
+        sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
-            sh_pass = ((exp8$q) & 7'h7f) | pass_flag;
+            sh_pass = ((exp8) & 7'h7f) | pass_flag;
         end
         lane_sh$write_data = sh_pass;
         lane_id$write_enable = reserve;
@@ -14483,6 +13344,25 @@ module machine$pes$0$screener$bank3(d,q,clock);
 endmodule // machine$pes$0$screener$bank3
 
 
+module machine$pes$0$screener$below8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$below8
+
+
 module machine$pes$0$screener$bx1(d,q,clock);
     
     // Module arguments
@@ -15070,25 +13950,6 @@ module machine$pes$0$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        tag_out = tgp[3*N +: 3];
     end
 endmodule // machine$pes$0$screener$divider
-
-
-module machine$pes$0$screener$exp8(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$exp8
 
 
 module machine$pes$0$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -17637,6 +16498,44 @@ module machine$pes$0$screener$res_ptr(d,q,clock);
 endmodule // machine$pes$0$screener$res_ptr
 
 
+module machine$pes$0$screener$s0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$s0_8
+
+
+module machine$pes$0$screener$s0_m1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$s0_m1_8
+
+
 module machine$pes$0$screener$side_f7(d,q,clock);
     
     // Module arguments
@@ -17844,6 +16743,25 @@ module machine$pes$0$screener$v8(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$v8
+
+
+module machine$pes$0$stall(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$stall
 
 
 module machine$pes$0$tags(clock,push,data_in,pop,valid,data_out,count);
@@ -20028,7 +18946,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     input wire  [9:0] cmd_first;
     input wire  [10:0] cmd_count;
     input wire  cfg_cache_enable;
-    input wire  [11:0] cfg_cache_mask;
+    input wire  [9:0] cfg_cache_mask;
     input wire  cfg_cache_flush;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
@@ -20067,6 +18985,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  loader$id_valid;
     wire  loader$id_ready;
     reg  [15:0] loader$id;
+    wire  loader$id_ready_next;
     wire  loader$mem_req;
     wire  [15:0] loader$mem_addr;
     reg  loader$mem_valid;
@@ -20084,7 +19003,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [31:0] loader$loads;
     reg  cache$clock;
     reg  cache$cfg_enable;
-    reg  [11:0] cache$cfg_mask;
+    reg  [9:0] cache$cfg_mask;
     reg  cache$flush;
     wire  cache$flushing;
     reg  cache$req;
@@ -20292,6 +19211,9 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  tags_full$d;
     wire  tags_full$q;
     reg  tags_full$clock;
+    reg  stall$d;
+    wire  stall$q;
+    reg  stall$clock;
     
     // Local signals
     reg  accept;
@@ -20303,6 +19225,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [21:0] new_tag;
     reg  room;
     reg  job;
+    reg  tags_full_next;
     reg  other_free;
     reg  in0;
     reg  sector_in;
@@ -20321,6 +19244,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .id_valid(loader$id_valid),
         .id_ready(loader$id_ready),
         .id(loader$id),
+        .id_ready_next(loader$id_ready_next),
         .mem_req(loader$mem_req),
         .mem_addr(loader$mem_addr),
         .mem_valid(loader$mem_valid),
@@ -20599,6 +19523,11 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .q(tags_full$q),
         .clock(tags_full$clock)
     );
+    machine$pes$1$stall stall(
+        .d(stall$d),
+        .q(stall$q),
+        .clock(stall$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -20621,6 +19550,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         used0$clock = clock;
         used1$clock = clock;
         tags_full$clock = clock;
+        stall$clock = clock;
         bank$d = bank$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
@@ -20640,6 +19570,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         used0$d = used0$q;
         used1$d = used1$q;
         tags_full$d = tags_full$q;
+        stall$d = stall$q;
         job_banks$clock = clock;
         loader$clock = clock;
         cache$clock = clock;
@@ -20671,7 +19602,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             screener$last_x = last1_x$q;
             screener$last_y = last1_y$q;
         end
-        room = ~tags_full$q & loader$id_ready & ~pend$q;
+        room = ~stall$q;
         cmd_ready = room;
         accept = cmd_valid & room;
         job = accept & ~cmd_retire & ~cmd_sector;
@@ -20847,7 +19778,9 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
-        tags_full$d = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
+        tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
+        tags_full$d = tags_full_next;
+        stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
         busy = (tags$count != zero7) | pend$q | queue$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
@@ -20887,7 +19820,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     // Module arguments
     input wire  clock;
     input wire  cfg_enable;
-    input wire  [11:0] cfg_mask;
+    input wire  [9:0] cfg_mask;
     input wire  flush;
     output reg  flushing;
     input wire  req;
@@ -20909,10 +19842,10 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     
     // Constant declarations
     localparam  valid_flag = 17'b10000000000000000;
-    localparam  miss_flag = 29'h10000000;
+    localparam  miss_flag = 27'h4000000;
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
-    localparam  one12 = 12'h1;
+    localparam  one_line = 10'b1;
     localparam  one3 = 3'b1;
     localparam  misses3 = 3'b100;
     localparam  almost3 = 3'b11;
@@ -20921,8 +19854,8 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     localparam  slot1 = 2'b1;
     localparam  slot2 = 2'b10;
     localparam  slot3 = 2'b11;
-    localparam  last_line = 12'hfff;
-    localparam  zero12 = 12'h0;
+    localparam  last_line = 10'b1111111111;
+    localparam  zero_line = 10'b0;
     localparam  zero17 = 17'b0;
     
     // Stub signals
@@ -20959,8 +19892,8 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [16:0] key1$d;
     wire  [16:0] key1$q;
     reg  key1$clock;
-    reg  [11:0] line1$d;
-    wire  [11:0] line1$q;
+    reg  [9:0] line1$d;
+    wire  [9:0] line1$q;
     reg  line1$clock;
     reg  v2$d;
     wire  v2$q;
@@ -20971,8 +19904,8 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [16:0] key2$d;
     wire  [16:0] key2$q;
     reg  key2$clock;
-    reg  [11:0] line2$d;
-    wire  [11:0] line2$q;
+    reg  [9:0] line2$d;
+    wire  [9:0] line2$q;
     reg  line2$clock;
     reg  v3$d;
     wire  v3$q;
@@ -20980,24 +19913,12 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
-    reg  [11:0] line3$d;
-    wire  [11:0] line3$q;
+    reg  [9:0] line3$d;
+    wire  [9:0] line3$q;
     reg  line3$clock;
-    reg  match3_0$d;
-    wire  match3_0$q;
-    reg  match3_0$clock;
-    reg  match3_1$d;
-    wire  match3_1$q;
-    reg  match3_1$clock;
-    reg  match3_2$d;
-    wire  match3_2$q;
-    reg  match3_2$clock;
-    reg  match3_3$d;
-    wire  match3_3$q;
-    reg  match3_3$clock;
-    reg  match3_4$d;
-    wire  match3_4$q;
-    reg  match3_4$clock;
+    reg  match3$d;
+    wire  match3$q;
+    reg  match3$clock;
     reg  lconf3$d;
     wire  lconf3$q;
     reg  lconf3$clock;
@@ -21028,17 +19949,17 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [15:0] t_id3$d;
     wire  [15:0] t_id3$q;
     reg  t_id3$clock;
-    reg  [11:0] t_line0$d;
-    wire  [11:0] t_line0$q;
+    reg  [9:0] t_line0$d;
+    wire  [9:0] t_line0$q;
     reg  t_line0$clock;
-    reg  [11:0] t_line1$d;
-    wire  [11:0] t_line1$q;
+    reg  [9:0] t_line1$d;
+    wire  [9:0] t_line1$q;
     reg  t_line1$clock;
-    reg  [11:0] t_line2$d;
-    wire  [11:0] t_line2$q;
+    reg  [9:0] t_line2$d;
+    wire  [9:0] t_line2$q;
     reg  t_line2$clock;
-    reg  [11:0] t_line3$d;
-    wire  [11:0] t_line3$q;
+    reg  [9:0] t_line3$d;
+    wire  [9:0] t_line3$q;
     reg  t_line3$clock;
     reg  t_v0$d;
     wire  t_v0$q;
@@ -21067,8 +19988,8 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [15:0] f_id1$d;
     wire  [15:0] f_id1$q;
     reg  f_id1$clock;
-    reg  [11:0] f_line1$d;
-    wire  [11:0] f_line1$q;
+    reg  [9:0] f_line1$d;
+    wire  [9:0] f_line1$q;
     reg  f_line1$clock;
     reg  f_v1$d;
     wire  f_v1$q;
@@ -21157,12 +20078,12 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     wire  [16:0] ans_by$read_data;
     reg  ans_meta$clock;
     reg  [3:0] ans_meta$write_address;
-    reg  [28:0] ans_meta$write_data;
+    reg  [26:0] ans_meta$write_data;
     reg  ans_meta$write_enable;
     reg  [3:0] ans_meta$head_address;
     reg  [3:0] ans_meta$next_address;
     reg  ans_meta$pop;
-    wire  [28:0] ans_meta$read_data;
+    wire  [26:0] ans_meta$read_data;
     reg  ret$clock;
     reg  ret$push;
     reg  ret$pop;
@@ -21206,8 +20127,8 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  fl_on$d;
     wire  fl_on$q;
     reg  fl_on$clock;
-    reg  [11:0] fl_line$d;
-    wire  [11:0] fl_line$q;
+    reg  [9:0] fl_line$d;
+    wire  [9:0] fl_line$q;
     reg  fl_line$clock;
     reg  mreq$d;
     wire  mreq$q;
@@ -21240,33 +20161,33 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     wire  hit_r$q;
     reg  hit_r$clock;
     reg  tag$clock;
-    reg  [11:0] tag$read_address;
+    reg  [9:0] tag$read_address;
     wire  [16:0] tag$read_data;
-    reg  [11:0] tag$write_address;
+    reg  [9:0] tag$write_address;
     reg  [16:0] tag$write_data;
     reg  tag$write_enable;
     reg  lane_ax$clock;
-    reg  [11:0] lane_ax$read_address;
+    reg  [9:0] lane_ax$read_address;
     wire  [16:0] lane_ax$read_data;
-    reg  [11:0] lane_ax$write_address;
+    reg  [9:0] lane_ax$write_address;
     reg  [16:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
     reg  lane_ay$clock;
-    reg  [11:0] lane_ay$read_address;
+    reg  [9:0] lane_ay$read_address;
     wire  [16:0] lane_ay$read_data;
-    reg  [11:0] lane_ay$write_address;
+    reg  [9:0] lane_ay$write_address;
     reg  [16:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
     reg  lane_bx$clock;
-    reg  [11:0] lane_bx$read_address;
+    reg  [9:0] lane_bx$read_address;
     wire  [16:0] lane_bx$read_data;
-    reg  [11:0] lane_bx$write_address;
+    reg  [9:0] lane_bx$write_address;
     reg  [16:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
     reg  lane_by$clock;
-    reg  [11:0] lane_by$read_address;
+    reg  [9:0] lane_by$read_address;
     wire  [16:0] lane_by$read_data;
-    reg  [11:0] lane_by$write_address;
+    reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
     
@@ -21288,9 +20209,9 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  head_miss;
     reg  answer;
     reg  fill;
-    reg  [28:0] meta_in;
+    reg  [26:0] meta_in;
     reg  [16:0] head_key_fill;
-    reg  [11:0] head_line_fill;
+    reg  [9:0] head_line_fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
@@ -21304,12 +20225,12 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  ne_sp_inc;
     reg  ne_rd;
     reg  read_new;
-    reg  [11:0] head_low;
-    reg  [11:0] head_line;
+    reg  [9:0] head_low;
+    reg  [9:0] head_line;
     reg  [16:0] head_key;
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
-    reg  [11:0] fl_inc;
+    reg  [9:0] fl_inc;
     reg  [1:0] t_wp_inc;
     reg  [1:0] t_rp_inc;
     
@@ -21407,30 +20328,10 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         .q(line3$q),
         .clock(line3$clock)
     );
-    machine$pes$1$cache$match3_0 match3_0(
-        .d(match3_0$d),
-        .q(match3_0$q),
-        .clock(match3_0$clock)
-    );
-    machine$pes$1$cache$match3_1 match3_1(
-        .d(match3_1$d),
-        .q(match3_1$q),
-        .clock(match3_1$clock)
-    );
-    machine$pes$1$cache$match3_2 match3_2(
-        .d(match3_2$d),
-        .q(match3_2$q),
-        .clock(match3_2$clock)
-    );
-    machine$pes$1$cache$match3_3 match3_3(
-        .d(match3_3$d),
-        .q(match3_3$q),
-        .clock(match3_3$clock)
-    );
-    machine$pes$1$cache$match3_4 match3_4(
-        .d(match3_4$d),
-        .q(match3_4$q),
-        .clock(match3_4$clock)
+    machine$pes$1$cache$match3 match3(
+        .d(match3$d),
+        .q(match3$q),
+        .clock(match3$clock)
     );
     machine$pes$1$cache$lconf3 lconf3(
         .d(lconf3$d),
@@ -21857,11 +20758,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         v3$clock = clock;
         id3$clock = clock;
         line3$clock = clock;
-        match3_0$clock = clock;
-        match3_1$clock = clock;
-        match3_2$clock = clock;
-        match3_3$clock = clock;
-        match3_4$clock = clock;
+        match3$clock = clock;
         lconf3$clock = clock;
         iconf3$clock = clock;
         ax3$clock = clock;
@@ -21930,11 +20827,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         v3$d = v3$q;
         id3$d = id3$q;
         line3$d = line3$q;
-        match3_0$d = match3_0$q;
-        match3_1$d = match3_1$q;
-        match3_2$d = match3_2$q;
-        match3_3$d = match3_3$q;
-        match3_4$d = match3_4$q;
+        match3$d = match3$q;
         lconf3$d = lconf3$q;
         iconf3$d = iconf3$q;
         ax3$d = ax3$q;
@@ -22016,18 +20909,14 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
-        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        tag_hit = match3$q;
         miss3 = lconf3$q | ~tag_hit;
         hit = accept & ~miss3;
         miss = accept & miss3;
         v3$d = v2$q & ~rewind;
         id3$d = id2$q;
         line3$d = line2$q;
-        match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
-        match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
-        match3_2$d = tag$read_data[(32'h8)+:(4)] == key2$q[(32'h8)+:(4)];
-        match3_3$d = tag$read_data[(32'hc)+:(4)] == key2$q[(32'hc)+:(4)];
-        match3_4$d = tag$read_data[32'h10] == key2$q[32'h10];
+        match3$d = tag$read_data == key2$q;
         ax3$d = lane_ax$read_data;
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
@@ -22086,7 +20975,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         sp_inc_x$d = read_inc ^ one5;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
         q_valid$d = read_new;
-        head_low = ((q_lane$read_data) & 12'hfff);
+        head_low = ((q_lane$read_data) & 10'h3ff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
         tag$read_address = head_line;
@@ -22102,7 +20991,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         id2$d = id1$q;
         key2$d = key1$q;
         line2$d = line1$q;
-        meta_in = (((line3$q) & 29'h1fffffff) << 32'h10) | ((id3$q) & 29'h1fffffff);
+        meta_in = (((line3$q) & 27'h7ffffff) << 32'h10) | ((id3$q) & 27'h7ffffff);
         if (miss3) begin
             meta_in = meta_in | miss_flag;
         end
@@ -22151,7 +21040,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         ret_ay$write_data = mem_ay;
         ret_bx$write_data = mem_bx;
         ret_by$write_data = mem_by;
-        head_miss = ans_meta$read_data[32'h1c];
+        head_miss = ans_meta$read_data[32'h1a];
         answer = ans$valid & (~head_miss | ret$valid);
         fill = answer & head_miss;
         ans$pop = answer;
@@ -22189,7 +21078,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         if (fill & (t_rp$q == slot3)) begin
             t_v3$d = 1'b0;
         end
-        head_line_fill = ans_meta$read_data[(32'h10)+:(12)];
+        head_line_fill = ans_meta$read_data[(32'h10)+:(10)];
         head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
         head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
         f_v1$d = fill;
@@ -22251,7 +21140,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         lane_bx$write_data = ret_bx$read_data;
         lane_by$write_data = ret_by$read_data;
         tag$write_enable = fill;
-        fl_inc = fl_line$q + one12;
+        fl_inc = fl_line$q + one_line;
         if (fl_on$q) begin
             tag$write_address = fl_line$q;
             tag$write_data = zero17;
@@ -22263,7 +21152,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         end
         if (flush & ~fl_on$q) begin
             fl_on$d = 1'b1;
-            fl_line$d = zero12;
+            fl_line$d = zero_line;
         end
         flushing = fl_on$q;
         lane_ax$write_enable = fill;
@@ -22695,23 +21584,23 @@ module machine$pes$1$cache$ans_meta(clock,write_address,write_data,write_enable,
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [28:0] write_data;
+    input wire  [26:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [28:0] read_data;
+    output reg  [26:0] read_data;
     
     // Update code (custom)
-    reg [28:0] mem [0:15];
-    reg [28:0] head_r;
-    reg [28:0] next_r;
+    reg [26:0] mem [0:15];
+    reg [26:0] head_r;
+    reg [26:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [28:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
+    reg [26:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 27'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -22722,9 +21611,9 @@ module machine$pes$1$cache$ans_meta(clock,write_address,write_data,write_enable,
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
-       head_r = 29'd0;
-       next_r = 29'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 27'd0;
+       head_r = 27'd0;
+       next_r = 27'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -22836,13 +21725,13 @@ endmodule // machine$pes$1$cache$f_id1
 module machine$pes$1$cache$f_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -22874,13 +21763,13 @@ endmodule // machine$pes$1$cache$f_v1
 module machine$pes$1$cache$fl_line(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -23065,281 +21954,69 @@ module machine$pes$1$cache$lane_ax(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -23349,7 +22026,7 @@ module machine$pes$1$cache$lane_ax(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -23386,281 +22063,69 @@ module machine$pes$1$cache$lane_ay(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -23670,7 +22135,7 @@ module machine$pes$1$cache$lane_ay(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -23707,281 +22172,69 @@ module machine$pes$1$cache$lane_bx(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -23991,7 +22244,7 @@ module machine$pes$1$cache$lane_bx(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -24028,281 +22281,69 @@ module machine$pes$1$cache$lane_by(clock,read_address,read_data,write_address,wr
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -24312,7 +22353,7 @@ module machine$pes$1$cache$lane_by(clock,read_address,read_data,write_address,wr
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -24367,13 +22408,13 @@ endmodule // machine$pes$1$cache$lconf3
 module machine$pes$1$cache$line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -24386,13 +22427,13 @@ endmodule // machine$pes$1$cache$line1
 module machine$pes$1$cache$line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -24405,13 +22446,13 @@ endmodule // machine$pes$1$cache$line2
 module machine$pes$1$cache$line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -24440,7 +22481,7 @@ module machine$pes$1$cache$maddr(d,q,clock);
 endmodule // machine$pes$1$cache$maddr
 
 
-module machine$pes$1$cache$match3_0(d,q,clock);
+module machine$pes$1$cache$match3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -24456,83 +22497,7 @@ module machine$pes$1$cache$match3_0(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$cache$match3_0
-
-
-module machine$pes$1$cache$match3_1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$cache$match3_1
-
-
-module machine$pes$1$cache$match3_2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$cache$match3_2
-
-
-module machine$pes$1$cache$match3_3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$cache$match3_3
-
-
-module machine$pes$1$cache$match3_4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$cache$match3_4
+endmodule // machine$pes$1$cache$match3
 
 
 module machine$pes$1$cache$mi0(d,q,clock);
@@ -25543,13 +23508,13 @@ endmodule // machine$pes$1$cache$t_id3
 module machine$pes$1$cache$t_line0(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -25562,13 +23527,13 @@ endmodule // machine$pes$1$cache$t_line0
 module machine$pes$1$cache$t_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -25581,13 +23546,13 @@ endmodule // machine$pes$1$cache$t_line1
 module machine$pes$1$cache$t_line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -25600,13 +23565,13 @@ endmodule // machine$pes$1$cache$t_line2
 module machine$pes$1$cache$t_line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -25753,281 +23718,69 @@ module machine$pes$1$cache$tag(clock,read_address,read_data,write_address,write_
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -26037,7 +23790,7 @@ module machine$pes$1$cache$tag(clock,read_address,read_data,write_address,write_
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -26653,13 +24406,14 @@ module machine$pes$1$last1_y(d,q,clock);
 endmodule // machine$pes$1$last1_y
 
 
-module machine$pes$1$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
+module machine$pes$1$loader(clock,id_valid,id_ready,id,id_ready_next,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
     input wire  clock;
     input wire  id_valid;
     output reg  id_ready;
     input wire  [15:0] id;
+    output reg  id_ready_next;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
     input wire  mem_valid;
@@ -26754,6 +24508,7 @@ module machine$pes$1$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_vali
     
     // Local signals
     reg  room;
+    reg  full_next;
     reg  accept;
     reg  pop;
     reg  [3:0] req_inc;
@@ -26940,7 +24695,9 @@ module machine$pes$1$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_vali
         end
         held_all = (reserved$q == depth5) | ((reserved$q == almost5) & req_valid$q);
         held_almost = ((reserved$q == almost5) & ~req_valid$q) | ((reserved$q == almost4) & req_valid$q);
-        full$d = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full_next = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full$d = full_next;
+        id_ready_next = ~full_next;
     end
     
 endmodule // machine$pes$1$loader
@@ -30237,9 +27994,15 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] k8$d;
     wire  [31:0] k8$q;
     reg  k8$clock;
-    reg  [5:0] exp8$d;
-    wire  [5:0] exp8$q;
-    reg  exp8$clock;
+    reg  [5:0] s0_8$d;
+    wire  [5:0] s0_8$q;
+    reg  s0_8$clock;
+    reg  [5:0] s0_m1_8$d;
+    wire  [5:0] s0_m1_8$q;
+    reg  s0_m1_8$clock;
+    reg  below8$d;
+    wire  below8$q;
+    reg  below8$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -30358,7 +28121,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] side_l;
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
-    reg  [5:0] sh;
     reg  [17:0] n_hi;
     reg  [17:0] e_hi;
     reg  e_lo_nz;
@@ -30366,6 +28128,7 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
     reg  is_outside;
+    reg  [5:0] exp8;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -31132,10 +28895,20 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(k8$q),
         .clock(k8$clock)
     );
-    machine$pes$1$screener$exp8 exp8(
-        .d(exp8$d),
-        .q(exp8$q),
-        .clock(exp8$clock)
+    machine$pes$1$screener$s0_8 s0_8(
+        .d(s0_8$d),
+        .q(s0_8$q),
+        .clock(s0_8$clock)
+    );
+    machine$pes$1$screener$s0_m1_8 s0_m1_8(
+        .d(s0_m1_8$d),
+        .q(s0_m1_8$q),
+        .clock(s0_m1_8$clock)
+    );
+    machine$pes$1$screener$below8 below8(
+        .d(below8$d),
+        .q(below8$q),
+        .clock(below8$clock)
     );
     machine$pes$1$screener$backward8 backward8(
         .d(backward8$d),
@@ -31337,7 +29110,9 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negx8$clock = clock;
         negy8$clock = clock;
         k8$clock = clock;
-        exp8$clock = clock;
+        s0_8$clock = clock;
+        s0_m1_8$clock = clock;
+        below8$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -31471,7 +29246,9 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negx8$d = negx8$q;
         negy8$d = negy8$q;
         k8$d = k8$q;
-        exp8$d = exp8$q;
+        s0_8$d = s0_8$q;
+        s0_m1_8$d = s0_m1_8$q;
+        below8$d = below8$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -31750,10 +29527,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         e_hi = norm_e7$q[(32'he)+:(18)];
         e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
-        sh = s0_m1;
-        if (n_below_e) begin
-            sh = s0;
-        end
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
         is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
@@ -31771,9 +29544,15 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         outside8$d = is_outside;
-        exp8$d = sh;
-        sh5 = exp8$q[(32'h0)+:(5)];
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
+        s0_8$d = s0;
+        s0_m1_8$d = s0_m1;
+        below8$d = n_below_e;
+        exp8 = s0_m1_8$q;
+        if (below8$q) begin
+            exp8 = s0_8$q;
+        end
+        sh5 = exp8[(32'h0)+:(5)];
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8[32'h5] & (exp8 < sh_lo);
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
@@ -31809,19 +29588,19 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         divider$ry = absny32 << sh5;
         divider$fx = zero3;
         divider$fy = zero3;
-        if (exp8$q == sh_m1) begin
+        if (exp8 == sh_m1) begin
             divider$rx = absnx32 >> sh1;
             divider$ry = absny32 >> sh1;
             divider$fx = low_nx << sh2_3;
             divider$fy = low_ny << sh2_3;
         end
-        else if (exp8$q == sh_m2) begin
+        else if (exp8 == sh_m2) begin
             divider$rx = absnx32 >> sh2;
             divider$ry = absny32 >> sh2;
             divider$fx = low_nx << sh1_3;
             divider$fy = low_ny << sh1_3;
         end
-        else if (exp8$q == sh_lo) begin
+        else if (exp8 == sh_lo) begin
             divider$rx = absnx32 >> sh3;
             divider$ry = absny32 >> sh3;
             divider$fx = low_nx;
@@ -31852,9 +29631,9 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         lane_ay$write_data = ay8$q;
         lane_bx$write_data = bx8$q;
         lane_by$write_data = by8$q;
-        sh_pass = ((exp8$q) & 7'h7f);
+        sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
-            sh_pass = ((exp8$q) & 7'h7f) | pass_flag;
+            sh_pass = ((exp8) & 7'h7f) | pass_flag;
         end
         lane_sh$write_data = sh_pass;
         lane_id$write_enable = reserve;
@@ -32678,6 +30457,25 @@ module machine$pes$1$screener$bank3(d,q,clock);
 endmodule // machine$pes$1$screener$bank3
 
 
+module machine$pes$1$screener$below8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$below8
+
+
 module machine$pes$1$screener$bx1(d,q,clock);
     
     // Module arguments
@@ -33265,25 +31063,6 @@ module machine$pes$1$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        tag_out = tgp[3*N +: 3];
     end
 endmodule // machine$pes$1$screener$divider
-
-
-module machine$pes$1$screener$exp8(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$exp8
 
 
 module machine$pes$1$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -35832,6 +33611,44 @@ module machine$pes$1$screener$res_ptr(d,q,clock);
 endmodule // machine$pes$1$screener$res_ptr
 
 
+module machine$pes$1$screener$s0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$s0_8
+
+
+module machine$pes$1$screener$s0_m1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$s0_m1_8
+
+
 module machine$pes$1$screener$side_f7(d,q,clock);
     
     // Module arguments
@@ -36039,6 +33856,25 @@ module machine$pes$1$screener$v8(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$v8
+
+
+module machine$pes$1$stall(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$stall
 
 
 module machine$pes$1$tags(clock,push,data_in,pop,valid,data_out,count);

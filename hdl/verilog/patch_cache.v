@@ -6,7 +6,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     // Module arguments
     input wire  clock;
     input wire  cfg_enable;
-    input wire  [11:0] cfg_mask;
+    input wire  [9:0] cfg_mask;
     input wire  flush;
     output reg  flushing;
     input wire  req;
@@ -28,10 +28,10 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     
     // Constant declarations
     localparam  valid_flag = 17'b10000000000000000;
-    localparam  miss_flag = 29'h10000000;
+    localparam  miss_flag = 27'h4000000;
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
-    localparam  one12 = 12'h1;
+    localparam  one_line = 10'b1;
     localparam  one3 = 3'b1;
     localparam  misses3 = 3'b100;
     localparam  almost3 = 3'b11;
@@ -40,8 +40,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     localparam  slot1 = 2'b1;
     localparam  slot2 = 2'b10;
     localparam  slot3 = 2'b11;
-    localparam  last_line = 12'hfff;
-    localparam  zero12 = 12'h0;
+    localparam  last_line = 10'b1111111111;
+    localparam  zero_line = 10'b0;
     localparam  zero17 = 17'b0;
     
     // Stub signals
@@ -78,8 +78,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [16:0] key1$d;
     wire  [16:0] key1$q;
     reg  key1$clock;
-    reg  [11:0] line1$d;
-    wire  [11:0] line1$q;
+    reg  [9:0] line1$d;
+    wire  [9:0] line1$q;
     reg  line1$clock;
     reg  v2$d;
     wire  v2$q;
@@ -90,8 +90,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [16:0] key2$d;
     wire  [16:0] key2$q;
     reg  key2$clock;
-    reg  [11:0] line2$d;
-    wire  [11:0] line2$q;
+    reg  [9:0] line2$d;
+    wire  [9:0] line2$q;
     reg  line2$clock;
     reg  v3$d;
     wire  v3$q;
@@ -99,24 +99,12 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
-    reg  [11:0] line3$d;
-    wire  [11:0] line3$q;
+    reg  [9:0] line3$d;
+    wire  [9:0] line3$q;
     reg  line3$clock;
-    reg  match3_0$d;
-    wire  match3_0$q;
-    reg  match3_0$clock;
-    reg  match3_1$d;
-    wire  match3_1$q;
-    reg  match3_1$clock;
-    reg  match3_2$d;
-    wire  match3_2$q;
-    reg  match3_2$clock;
-    reg  match3_3$d;
-    wire  match3_3$q;
-    reg  match3_3$clock;
-    reg  match3_4$d;
-    wire  match3_4$q;
-    reg  match3_4$clock;
+    reg  match3$d;
+    wire  match3$q;
+    reg  match3$clock;
     reg  lconf3$d;
     wire  lconf3$q;
     reg  lconf3$clock;
@@ -147,17 +135,17 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [15:0] t_id3$d;
     wire  [15:0] t_id3$q;
     reg  t_id3$clock;
-    reg  [11:0] t_line0$d;
-    wire  [11:0] t_line0$q;
+    reg  [9:0] t_line0$d;
+    wire  [9:0] t_line0$q;
     reg  t_line0$clock;
-    reg  [11:0] t_line1$d;
-    wire  [11:0] t_line1$q;
+    reg  [9:0] t_line1$d;
+    wire  [9:0] t_line1$q;
     reg  t_line1$clock;
-    reg  [11:0] t_line2$d;
-    wire  [11:0] t_line2$q;
+    reg  [9:0] t_line2$d;
+    wire  [9:0] t_line2$q;
     reg  t_line2$clock;
-    reg  [11:0] t_line3$d;
-    wire  [11:0] t_line3$q;
+    reg  [9:0] t_line3$d;
+    wire  [9:0] t_line3$q;
     reg  t_line3$clock;
     reg  t_v0$d;
     wire  t_v0$q;
@@ -186,8 +174,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [15:0] f_id1$d;
     wire  [15:0] f_id1$q;
     reg  f_id1$clock;
-    reg  [11:0] f_line1$d;
-    wire  [11:0] f_line1$q;
+    reg  [9:0] f_line1$d;
+    wire  [9:0] f_line1$q;
     reg  f_line1$clock;
     reg  f_v1$d;
     wire  f_v1$q;
@@ -276,12 +264,12 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     wire  [16:0] ans_by$read_data;
     reg  ans_meta$clock;
     reg  [3:0] ans_meta$write_address;
-    reg  [28:0] ans_meta$write_data;
+    reg  [26:0] ans_meta$write_data;
     reg  ans_meta$write_enable;
     reg  [3:0] ans_meta$head_address;
     reg  [3:0] ans_meta$next_address;
     reg  ans_meta$pop;
-    wire  [28:0] ans_meta$read_data;
+    wire  [26:0] ans_meta$read_data;
     reg  ret$clock;
     reg  ret$push;
     reg  ret$pop;
@@ -325,8 +313,8 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  fl_on$d;
     wire  fl_on$q;
     reg  fl_on$clock;
-    reg  [11:0] fl_line$d;
-    wire  [11:0] fl_line$q;
+    reg  [9:0] fl_line$d;
+    wire  [9:0] fl_line$q;
     reg  fl_line$clock;
     reg  mreq$d;
     wire  mreq$q;
@@ -359,33 +347,33 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     wire  hit_r$q;
     reg  hit_r$clock;
     reg  tag$clock;
-    reg  [11:0] tag$read_address;
+    reg  [9:0] tag$read_address;
     wire  [16:0] tag$read_data;
-    reg  [11:0] tag$write_address;
+    reg  [9:0] tag$write_address;
     reg  [16:0] tag$write_data;
     reg  tag$write_enable;
     reg  lane_ax$clock;
-    reg  [11:0] lane_ax$read_address;
+    reg  [9:0] lane_ax$read_address;
     wire  [16:0] lane_ax$read_data;
-    reg  [11:0] lane_ax$write_address;
+    reg  [9:0] lane_ax$write_address;
     reg  [16:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
     reg  lane_ay$clock;
-    reg  [11:0] lane_ay$read_address;
+    reg  [9:0] lane_ay$read_address;
     wire  [16:0] lane_ay$read_data;
-    reg  [11:0] lane_ay$write_address;
+    reg  [9:0] lane_ay$write_address;
     reg  [16:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
     reg  lane_bx$clock;
-    reg  [11:0] lane_bx$read_address;
+    reg  [9:0] lane_bx$read_address;
     wire  [16:0] lane_bx$read_data;
-    reg  [11:0] lane_bx$write_address;
+    reg  [9:0] lane_bx$write_address;
     reg  [16:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
     reg  lane_by$clock;
-    reg  [11:0] lane_by$read_address;
+    reg  [9:0] lane_by$read_address;
     wire  [16:0] lane_by$read_data;
-    reg  [11:0] lane_by$write_address;
+    reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
     
@@ -407,9 +395,9 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  head_miss;
     reg  answer;
     reg  fill;
-    reg  [28:0] meta_in;
+    reg  [26:0] meta_in;
     reg  [16:0] head_key_fill;
-    reg  [11:0] head_line_fill;
+    reg  [9:0] head_line_fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
@@ -423,12 +411,12 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  ne_sp_inc;
     reg  ne_rd;
     reg  read_new;
-    reg  [11:0] head_low;
-    reg  [11:0] head_line;
+    reg  [9:0] head_low;
+    reg  [9:0] head_line;
     reg  [16:0] head_key;
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
-    reg  [11:0] fl_inc;
+    reg  [9:0] fl_inc;
     reg  [1:0] t_wp_inc;
     reg  [1:0] t_rp_inc;
     
@@ -526,30 +514,10 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .q(line3$q),
         .clock(line3$clock)
     );
-    patch_cache$match3_0 match3_0(
-        .d(match3_0$d),
-        .q(match3_0$q),
-        .clock(match3_0$clock)
-    );
-    patch_cache$match3_1 match3_1(
-        .d(match3_1$d),
-        .q(match3_1$q),
-        .clock(match3_1$clock)
-    );
-    patch_cache$match3_2 match3_2(
-        .d(match3_2$d),
-        .q(match3_2$q),
-        .clock(match3_2$clock)
-    );
-    patch_cache$match3_3 match3_3(
-        .d(match3_3$d),
-        .q(match3_3$q),
-        .clock(match3_3$clock)
-    );
-    patch_cache$match3_4 match3_4(
-        .d(match3_4$d),
-        .q(match3_4$q),
-        .clock(match3_4$clock)
+    patch_cache$match3 match3(
+        .d(match3$d),
+        .q(match3$q),
+        .clock(match3$clock)
     );
     patch_cache$lconf3 lconf3(
         .d(lconf3$d),
@@ -976,11 +944,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         v3$clock = clock;
         id3$clock = clock;
         line3$clock = clock;
-        match3_0$clock = clock;
-        match3_1$clock = clock;
-        match3_2$clock = clock;
-        match3_3$clock = clock;
-        match3_4$clock = clock;
+        match3$clock = clock;
         lconf3$clock = clock;
         iconf3$clock = clock;
         ax3$clock = clock;
@@ -1049,11 +1013,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         v3$d = v3$q;
         id3$d = id3$q;
         line3$d = line3$q;
-        match3_0$d = match3_0$q;
-        match3_1$d = match3_1$q;
-        match3_2$d = match3_2$q;
-        match3_3$d = match3_3$q;
-        match3_4$d = match3_4$q;
+        match3$d = match3$q;
         lconf3$d = lconf3$q;
         iconf3$d = iconf3$q;
         ax3$d = ax3$q;
@@ -1135,18 +1095,14 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
-        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        tag_hit = match3$q;
         miss3 = lconf3$q | ~tag_hit;
         hit = accept & ~miss3;
         miss = accept & miss3;
         v3$d = v2$q & ~rewind;
         id3$d = id2$q;
         line3$d = line2$q;
-        match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
-        match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
-        match3_2$d = tag$read_data[(32'h8)+:(4)] == key2$q[(32'h8)+:(4)];
-        match3_3$d = tag$read_data[(32'hc)+:(4)] == key2$q[(32'hc)+:(4)];
-        match3_4$d = tag$read_data[32'h10] == key2$q[32'h10];
+        match3$d = tag$read_data == key2$q;
         ax3$d = lane_ax$read_data;
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
@@ -1205,7 +1161,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         sp_inc_x$d = read_inc ^ one5;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
         q_valid$d = read_new;
-        head_low = ((q_lane$read_data) & 12'hfff);
+        head_low = ((q_lane$read_data) & 10'h3ff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
         tag$read_address = head_line;
@@ -1221,7 +1177,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         id2$d = id1$q;
         key2$d = key1$q;
         line2$d = line1$q;
-        meta_in = (((line3$q) & 29'h1fffffff) << 32'h10) | ((id3$q) & 29'h1fffffff);
+        meta_in = (((line3$q) & 27'h7ffffff) << 32'h10) | ((id3$q) & 27'h7ffffff);
         if (miss3) begin
             meta_in = meta_in | miss_flag;
         end
@@ -1270,7 +1226,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         ret_ay$write_data = mem_ay;
         ret_bx$write_data = mem_bx;
         ret_by$write_data = mem_by;
-        head_miss = ans_meta$read_data[32'h1c];
+        head_miss = ans_meta$read_data[32'h1a];
         answer = ans$valid & (~head_miss | ret$valid);
         fill = answer & head_miss;
         ans$pop = answer;
@@ -1308,7 +1264,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         if (fill & (t_rp$q == slot3)) begin
             t_v3$d = 1'b0;
         end
-        head_line_fill = ans_meta$read_data[(32'h10)+:(12)];
+        head_line_fill = ans_meta$read_data[(32'h10)+:(10)];
         head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
         head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
         f_v1$d = fill;
@@ -1370,7 +1326,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         lane_bx$write_data = ret_bx$read_data;
         lane_by$write_data = ret_by$read_data;
         tag$write_enable = fill;
-        fl_inc = fl_line$q + one12;
+        fl_inc = fl_line$q + one_line;
         if (fl_on$q) begin
             tag$write_address = fl_line$q;
             tag$write_data = zero17;
@@ -1382,7 +1338,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         end
         if (flush & ~fl_on$q) begin
             fl_on$d = 1'b1;
-            fl_line$d = zero12;
+            fl_line$d = zero_line;
         end
         flushing = fl_on$q;
         lane_ax$write_enable = fill;
@@ -1814,23 +1770,23 @@ module patch_cache$ans_meta(clock,write_address,write_data,write_enable,head_add
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [28:0] write_data;
+    input wire  [26:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [28:0] read_data;
+    output reg  [26:0] read_data;
     
     // Update code (custom)
-    reg [28:0] mem [0:15];
-    reg [28:0] head_r;
-    reg [28:0] next_r;
+    reg [26:0] mem [0:15];
+    reg [26:0] head_r;
+    reg [26:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [28:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
+    reg [26:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 27'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -1841,9 +1797,9 @@ module patch_cache$ans_meta(clock,write_address,write_data,write_enable,head_add
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
-       head_r = 29'd0;
-       next_r = 29'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 27'd0;
+       head_r = 27'd0;
+       next_r = 27'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -1955,13 +1911,13 @@ endmodule // patch_cache$f_id1
 module patch_cache$f_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -1993,13 +1949,13 @@ endmodule // patch_cache$f_v1
 module patch_cache$fl_line(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -2184,281 +2140,69 @@ module patch_cache$lane_ax(clock,read_address,read_data,write_address,write_data
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -2468,7 +2212,7 @@ module patch_cache$lane_ax(clock,read_address,read_data,write_address,write_data
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -2505,281 +2249,69 @@ module patch_cache$lane_ay(clock,read_address,read_data,write_address,write_data
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -2789,7 +2321,7 @@ module patch_cache$lane_ay(clock,read_address,read_data,write_address,write_data
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -2826,281 +2358,69 @@ module patch_cache$lane_bx(clock,read_address,read_data,write_address,write_data
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -3110,7 +2430,7 @@ module patch_cache$lane_bx(clock,read_address,read_data,write_address,write_data
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -3147,281 +2467,69 @@ module patch_cache$lane_by(clock,read_address,read_data,write_address,write_data
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -3431,7 +2539,7 @@ module patch_cache$lane_by(clock,read_address,read_data,write_address,write_data
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -3486,13 +2594,13 @@ endmodule // patch_cache$lconf3
 module patch_cache$line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -3505,13 +2613,13 @@ endmodule // patch_cache$line1
 module patch_cache$line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -3524,13 +2632,13 @@ endmodule // patch_cache$line2
 module patch_cache$line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -3559,7 +2667,7 @@ module patch_cache$maddr(d,q,clock);
 endmodule // patch_cache$maddr
 
 
-module patch_cache$match3_0(d,q,clock);
+module patch_cache$match3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3575,83 +2683,7 @@ module patch_cache$match3_0(d,q,clock);
        q <= d;
     end
           
-endmodule // patch_cache$match3_0
-
-
-module patch_cache$match3_1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$match3_1
-
-
-module patch_cache$match3_2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$match3_2
-
-
-module patch_cache$match3_3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$match3_3
-
-
-module patch_cache$match3_4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // patch_cache$match3_4
+endmodule // patch_cache$match3
 
 
 module patch_cache$mi0(d,q,clock);
@@ -4662,13 +3694,13 @@ endmodule // patch_cache$t_id3
 module patch_cache$t_line0(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4681,13 +3713,13 @@ endmodule // patch_cache$t_line0
 module patch_cache$t_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4700,13 +3732,13 @@ endmodule // patch_cache$t_line1
 module patch_cache$t_line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4719,13 +3751,13 @@ endmodule // patch_cache$t_line2
 module patch_cache$t_line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4872,281 +3904,69 @@ module patch_cache$tag(clock,read_address,read_data,write_address,write_data,wri
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -5156,7 +3976,7 @@ module patch_cache$tag(clock,read_address,read_data,write_address,write_data,wri
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;

@@ -1,13 +1,14 @@
 // patch_loader: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
+module patch_loader(clock,id_valid,id_ready,id,id_ready_next,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
     input wire  clock;
     input wire  id_valid;
     output reg  id_ready;
     input wire  [15:0] id;
+    output reg  id_ready_next;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
     input wire  mem_valid;
@@ -102,6 +103,7 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
     
     // Local signals
     reg  room;
+    reg  full_next;
     reg  accept;
     reg  pop;
     reg  [3:0] req_inc;
@@ -288,7 +290,9 @@ module patch_loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax
         end
         held_all = (reserved$q == depth5) | ((reserved$q == almost5) & req_valid$q);
         held_almost = ((reserved$q == almost5) & ~req_valid$q) | ((reserved$q == almost4) & req_valid$q);
-        full$d = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full_next = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full$d = full_next;
+        id_ready_next = ~full_next;
     end
     
 endmodule // patch_loader

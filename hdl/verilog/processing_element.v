@@ -25,7 +25,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     input wire  [9:0] cmd_first;
     input wire  [10:0] cmd_count;
     input wire  cfg_cache_enable;
-    input wire  [11:0] cfg_cache_mask;
+    input wire  [9:0] cfg_cache_mask;
     input wire  cfg_cache_flush;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
@@ -64,6 +64,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  loader$id_valid;
     wire  loader$id_ready;
     reg  [15:0] loader$id;
+    wire  loader$id_ready_next;
     wire  loader$mem_req;
     wire  [15:0] loader$mem_addr;
     reg  loader$mem_valid;
@@ -81,7 +82,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  [31:0] loader$loads;
     reg  cache$clock;
     reg  cache$cfg_enable;
-    reg  [11:0] cache$cfg_mask;
+    reg  [9:0] cache$cfg_mask;
     reg  cache$flush;
     wire  cache$flushing;
     reg  cache$req;
@@ -289,6 +290,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  tags_full$d;
     wire  tags_full$q;
     reg  tags_full$clock;
+    reg  stall$d;
+    wire  stall$q;
+    reg  stall$clock;
     
     // Local signals
     reg  accept;
@@ -300,6 +304,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [21:0] new_tag;
     reg  room;
     reg  job;
+    reg  tags_full_next;
     reg  other_free;
     reg  in0;
     reg  sector_in;
@@ -318,6 +323,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .id_valid(loader$id_valid),
         .id_ready(loader$id_ready),
         .id(loader$id),
+        .id_ready_next(loader$id_ready_next),
         .mem_req(loader$mem_req),
         .mem_addr(loader$mem_addr),
         .mem_valid(loader$mem_valid),
@@ -596,6 +602,11 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .q(tags_full$q),
         .clock(tags_full$clock)
     );
+    processing_element$stall stall(
+        .d(stall$d),
+        .q(stall$q),
+        .clock(stall$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -618,6 +629,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         used0$clock = clock;
         used1$clock = clock;
         tags_full$clock = clock;
+        stall$clock = clock;
         bank$d = bank$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
@@ -637,6 +649,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         used0$d = used0$q;
         used1$d = used1$q;
         tags_full$d = tags_full$q;
+        stall$d = stall$q;
         job_banks$clock = clock;
         loader$clock = clock;
         cache$clock = clock;
@@ -668,7 +681,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             screener$last_x = last1_x$q;
             screener$last_y = last1_y$q;
         end
-        room = ~tags_full$q & loader$id_ready & ~pend$q;
+        room = ~stall$q;
         cmd_ready = room;
         accept = cmd_valid & room;
         job = accept & ~cmd_retire & ~cmd_sector;
@@ -844,7 +857,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
-        tags_full$d = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
+        tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
+        tags_full$d = tags_full_next;
+        stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
         busy = (tags$count != zero7) | pend$q | queue$occupied | unit$busy | cache$flushing;
         loads = loader$loads;
         cache_hits = cache$hits;
@@ -884,7 +899,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     // Module arguments
     input wire  clock;
     input wire  cfg_enable;
-    input wire  [11:0] cfg_mask;
+    input wire  [9:0] cfg_mask;
     input wire  flush;
     output reg  flushing;
     input wire  req;
@@ -906,10 +921,10 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     
     // Constant declarations
     localparam  valid_flag = 17'b10000000000000000;
-    localparam  miss_flag = 29'h10000000;
+    localparam  miss_flag = 27'h4000000;
     localparam  one5 = 5'b1;
     localparam  one32 = 32'h1;
-    localparam  one12 = 12'h1;
+    localparam  one_line = 10'b1;
     localparam  one3 = 3'b1;
     localparam  misses3 = 3'b100;
     localparam  almost3 = 3'b11;
@@ -918,8 +933,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     localparam  slot1 = 2'b1;
     localparam  slot2 = 2'b10;
     localparam  slot3 = 2'b11;
-    localparam  last_line = 12'hfff;
-    localparam  zero12 = 12'h0;
+    localparam  last_line = 10'b1111111111;
+    localparam  zero_line = 10'b0;
     localparam  zero17 = 17'b0;
     
     // Stub signals
@@ -956,8 +971,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [16:0] key1$d;
     wire  [16:0] key1$q;
     reg  key1$clock;
-    reg  [11:0] line1$d;
-    wire  [11:0] line1$q;
+    reg  [9:0] line1$d;
+    wire  [9:0] line1$q;
     reg  line1$clock;
     reg  v2$d;
     wire  v2$q;
@@ -968,8 +983,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [16:0] key2$d;
     wire  [16:0] key2$q;
     reg  key2$clock;
-    reg  [11:0] line2$d;
-    wire  [11:0] line2$q;
+    reg  [9:0] line2$d;
+    wire  [9:0] line2$q;
     reg  line2$clock;
     reg  v3$d;
     wire  v3$q;
@@ -977,24 +992,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [15:0] id3$d;
     wire  [15:0] id3$q;
     reg  id3$clock;
-    reg  [11:0] line3$d;
-    wire  [11:0] line3$q;
+    reg  [9:0] line3$d;
+    wire  [9:0] line3$q;
     reg  line3$clock;
-    reg  match3_0$d;
-    wire  match3_0$q;
-    reg  match3_0$clock;
-    reg  match3_1$d;
-    wire  match3_1$q;
-    reg  match3_1$clock;
-    reg  match3_2$d;
-    wire  match3_2$q;
-    reg  match3_2$clock;
-    reg  match3_3$d;
-    wire  match3_3$q;
-    reg  match3_3$clock;
-    reg  match3_4$d;
-    wire  match3_4$q;
-    reg  match3_4$clock;
+    reg  match3$d;
+    wire  match3$q;
+    reg  match3$clock;
     reg  lconf3$d;
     wire  lconf3$q;
     reg  lconf3$clock;
@@ -1025,17 +1028,17 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [15:0] t_id3$d;
     wire  [15:0] t_id3$q;
     reg  t_id3$clock;
-    reg  [11:0] t_line0$d;
-    wire  [11:0] t_line0$q;
+    reg  [9:0] t_line0$d;
+    wire  [9:0] t_line0$q;
     reg  t_line0$clock;
-    reg  [11:0] t_line1$d;
-    wire  [11:0] t_line1$q;
+    reg  [9:0] t_line1$d;
+    wire  [9:0] t_line1$q;
     reg  t_line1$clock;
-    reg  [11:0] t_line2$d;
-    wire  [11:0] t_line2$q;
+    reg  [9:0] t_line2$d;
+    wire  [9:0] t_line2$q;
     reg  t_line2$clock;
-    reg  [11:0] t_line3$d;
-    wire  [11:0] t_line3$q;
+    reg  [9:0] t_line3$d;
+    wire  [9:0] t_line3$q;
     reg  t_line3$clock;
     reg  t_v0$d;
     wire  t_v0$q;
@@ -1064,8 +1067,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [15:0] f_id1$d;
     wire  [15:0] f_id1$q;
     reg  f_id1$clock;
-    reg  [11:0] f_line1$d;
-    wire  [11:0] f_line1$q;
+    reg  [9:0] f_line1$d;
+    wire  [9:0] f_line1$q;
     reg  f_line1$clock;
     reg  f_v1$d;
     wire  f_v1$q;
@@ -1154,12 +1157,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     wire  [16:0] ans_by$read_data;
     reg  ans_meta$clock;
     reg  [3:0] ans_meta$write_address;
-    reg  [28:0] ans_meta$write_data;
+    reg  [26:0] ans_meta$write_data;
     reg  ans_meta$write_enable;
     reg  [3:0] ans_meta$head_address;
     reg  [3:0] ans_meta$next_address;
     reg  ans_meta$pop;
-    wire  [28:0] ans_meta$read_data;
+    wire  [26:0] ans_meta$read_data;
     reg  ret$clock;
     reg  ret$push;
     reg  ret$pop;
@@ -1203,8 +1206,8 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  fl_on$d;
     wire  fl_on$q;
     reg  fl_on$clock;
-    reg  [11:0] fl_line$d;
-    wire  [11:0] fl_line$q;
+    reg  [9:0] fl_line$d;
+    wire  [9:0] fl_line$q;
     reg  fl_line$clock;
     reg  mreq$d;
     wire  mreq$q;
@@ -1237,33 +1240,33 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     wire  hit_r$q;
     reg  hit_r$clock;
     reg  tag$clock;
-    reg  [11:0] tag$read_address;
+    reg  [9:0] tag$read_address;
     wire  [16:0] tag$read_data;
-    reg  [11:0] tag$write_address;
+    reg  [9:0] tag$write_address;
     reg  [16:0] tag$write_data;
     reg  tag$write_enable;
     reg  lane_ax$clock;
-    reg  [11:0] lane_ax$read_address;
+    reg  [9:0] lane_ax$read_address;
     wire  [16:0] lane_ax$read_data;
-    reg  [11:0] lane_ax$write_address;
+    reg  [9:0] lane_ax$write_address;
     reg  [16:0] lane_ax$write_data;
     reg  lane_ax$write_enable;
     reg  lane_ay$clock;
-    reg  [11:0] lane_ay$read_address;
+    reg  [9:0] lane_ay$read_address;
     wire  [16:0] lane_ay$read_data;
-    reg  [11:0] lane_ay$write_address;
+    reg  [9:0] lane_ay$write_address;
     reg  [16:0] lane_ay$write_data;
     reg  lane_ay$write_enable;
     reg  lane_bx$clock;
-    reg  [11:0] lane_bx$read_address;
+    reg  [9:0] lane_bx$read_address;
     wire  [16:0] lane_bx$read_data;
-    reg  [11:0] lane_bx$write_address;
+    reg  [9:0] lane_bx$write_address;
     reg  [16:0] lane_bx$write_data;
     reg  lane_bx$write_enable;
     reg  lane_by$clock;
-    reg  [11:0] lane_by$read_address;
+    reg  [9:0] lane_by$read_address;
     wire  [16:0] lane_by$read_data;
-    reg  [11:0] lane_by$write_address;
+    reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
     
@@ -1285,9 +1288,9 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  head_miss;
     reg  answer;
     reg  fill;
-    reg  [28:0] meta_in;
+    reg  [26:0] meta_in;
     reg  [16:0] head_key_fill;
-    reg  [11:0] head_line_fill;
+    reg  [9:0] head_line_fill;
     reg  [4:0] wr_inc;
     reg  [4:0] rd_inc;
     reg  [4:0] rd_next;
@@ -1301,12 +1304,12 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  ne_sp_inc;
     reg  ne_rd;
     reg  read_new;
-    reg  [11:0] head_low;
-    reg  [11:0] head_line;
+    reg  [9:0] head_low;
+    reg  [9:0] head_line;
     reg  [16:0] head_key;
     reg  [31:0] hit_inc;
     reg  [31:0] miss_inc;
-    reg  [11:0] fl_inc;
+    reg  [9:0] fl_inc;
     reg  [1:0] t_wp_inc;
     reg  [1:0] t_rp_inc;
     
@@ -1404,30 +1407,10 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .q(line3$q),
         .clock(line3$clock)
     );
-    processing_element$cache$match3_0 match3_0(
-        .d(match3_0$d),
-        .q(match3_0$q),
-        .clock(match3_0$clock)
-    );
-    processing_element$cache$match3_1 match3_1(
-        .d(match3_1$d),
-        .q(match3_1$q),
-        .clock(match3_1$clock)
-    );
-    processing_element$cache$match3_2 match3_2(
-        .d(match3_2$d),
-        .q(match3_2$q),
-        .clock(match3_2$clock)
-    );
-    processing_element$cache$match3_3 match3_3(
-        .d(match3_3$d),
-        .q(match3_3$q),
-        .clock(match3_3$clock)
-    );
-    processing_element$cache$match3_4 match3_4(
-        .d(match3_4$d),
-        .q(match3_4$q),
-        .clock(match3_4$clock)
+    processing_element$cache$match3 match3(
+        .d(match3$d),
+        .q(match3$q),
+        .clock(match3$clock)
     );
     processing_element$cache$lconf3 lconf3(
         .d(lconf3$d),
@@ -1854,11 +1837,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         v3$clock = clock;
         id3$clock = clock;
         line3$clock = clock;
-        match3_0$clock = clock;
-        match3_1$clock = clock;
-        match3_2$clock = clock;
-        match3_3$clock = clock;
-        match3_4$clock = clock;
+        match3$clock = clock;
         lconf3$clock = clock;
         iconf3$clock = clock;
         ax3$clock = clock;
@@ -1927,11 +1906,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         v3$d = v3$q;
         id3$d = id3$q;
         line3$d = line3$q;
-        match3_0$d = match3_0$q;
-        match3_1$d = match3_1$q;
-        match3_2$d = match3_2$q;
-        match3_3$d = match3_3$q;
-        match3_4$d = match3_4$q;
+        match3$d = match3$q;
         lconf3$d = lconf3$q;
         iconf3$d = iconf3$q;
         ax3$d = ax3$q;
@@ -2013,18 +1988,14 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
-        tag_hit = match3_0$q & match3_1$q & match3_2$q & match3_3$q & match3_4$q;
+        tag_hit = match3$q;
         miss3 = lconf3$q | ~tag_hit;
         hit = accept & ~miss3;
         miss = accept & miss3;
         v3$d = v2$q & ~rewind;
         id3$d = id2$q;
         line3$d = line2$q;
-        match3_0$d = tag$read_data[(32'h0)+:(4)] == key2$q[(32'h0)+:(4)];
-        match3_1$d = tag$read_data[(32'h4)+:(4)] == key2$q[(32'h4)+:(4)];
-        match3_2$d = tag$read_data[(32'h8)+:(4)] == key2$q[(32'h8)+:(4)];
-        match3_3$d = tag$read_data[(32'hc)+:(4)] == key2$q[(32'hc)+:(4)];
-        match3_4$d = tag$read_data[32'h10] == key2$q[32'h10];
+        match3$d = tag$read_data == key2$q;
         ax3$d = lane_ax$read_data;
         ay3$d = lane_ay$read_data;
         bx3$d = lane_bx$read_data;
@@ -2083,7 +2054,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         sp_inc_x$d = read_inc ^ one5;
         q_lane$read_address = read_ptr[(32'h0)+:(4)];
         q_valid$d = read_new;
-        head_low = ((q_lane$read_data) & 12'hfff);
+        head_low = ((q_lane$read_data) & 10'h3ff);
         head_line = head_low & cfg_mask;
         head_key = valid_flag | ((q_lane$read_data) & 17'h1ffff);
         tag$read_address = head_line;
@@ -2099,7 +2070,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         id2$d = id1$q;
         key2$d = key1$q;
         line2$d = line1$q;
-        meta_in = (((line3$q) & 29'h1fffffff) << 32'h10) | ((id3$q) & 29'h1fffffff);
+        meta_in = (((line3$q) & 27'h7ffffff) << 32'h10) | ((id3$q) & 27'h7ffffff);
         if (miss3) begin
             meta_in = meta_in | miss_flag;
         end
@@ -2148,7 +2119,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         ret_ay$write_data = mem_ay;
         ret_bx$write_data = mem_bx;
         ret_by$write_data = mem_by;
-        head_miss = ans_meta$read_data[32'h1c];
+        head_miss = ans_meta$read_data[32'h1a];
         answer = ans$valid & (~head_miss | ret$valid);
         fill = answer & head_miss;
         ans$pop = answer;
@@ -2186,7 +2157,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         if (fill & (t_rp$q == slot3)) begin
             t_v3$d = 1'b0;
         end
-        head_line_fill = ans_meta$read_data[(32'h10)+:(12)];
+        head_line_fill = ans_meta$read_data[(32'h10)+:(10)];
         head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
         head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
         f_v1$d = fill;
@@ -2248,7 +2219,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         lane_bx$write_data = ret_bx$read_data;
         lane_by$write_data = ret_by$read_data;
         tag$write_enable = fill;
-        fl_inc = fl_line$q + one12;
+        fl_inc = fl_line$q + one_line;
         if (fl_on$q) begin
             tag$write_address = fl_line$q;
             tag$write_data = zero17;
@@ -2260,7 +2231,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         end
         if (flush & ~fl_on$q) begin
             fl_on$d = 1'b1;
-            fl_line$d = zero12;
+            fl_line$d = zero_line;
         end
         flushing = fl_on$q;
         lane_ax$write_enable = fill;
@@ -2692,23 +2663,23 @@ module processing_element$cache$ans_meta(clock,write_address,write_data,write_en
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [28:0] write_data;
+    input wire  [26:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [28:0] read_data;
+    output reg  [26:0] read_data;
     
     // Update code (custom)
-    reg [28:0] mem [0:15];
-    reg [28:0] head_r;
-    reg [28:0] next_r;
+    reg [26:0] mem [0:15];
+    reg [26:0] head_r;
+    reg [26:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [28:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
+    reg [26:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 27'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -2719,9 +2690,9 @@ module processing_element$cache$ans_meta(clock,write_address,write_data,write_en
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
-       head_r = 29'd0;
-       next_r = 29'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 27'd0;
+       head_r = 27'd0;
+       next_r = 27'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -2833,13 +2804,13 @@ endmodule // processing_element$cache$f_id1
 module processing_element$cache$f_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -2871,13 +2842,13 @@ endmodule // processing_element$cache$f_v1
 module processing_element$cache$fl_line(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -3062,281 +3033,69 @@ module processing_element$cache$lane_ax(clock,read_address,read_data,write_addre
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -3346,7 +3105,7 @@ module processing_element$cache$lane_ax(clock,read_address,read_data,write_addre
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -3383,281 +3142,69 @@ module processing_element$cache$lane_ay(clock,read_address,read_data,write_addre
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -3667,7 +3214,7 @@ module processing_element$cache$lane_ay(clock,read_address,read_data,write_addre
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -3704,281 +3251,69 @@ module processing_element$cache$lane_bx(clock,read_address,read_data,write_addre
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -3988,7 +3323,7 @@ module processing_element$cache$lane_bx(clock,read_address,read_data,write_addre
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -4025,281 +3360,69 @@ module processing_element$cache$lane_by(clock,read_address,read_data,write_addre
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -4309,7 +3432,7 @@ module processing_element$cache$lane_by(clock,read_address,read_data,write_addre
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -4364,13 +3487,13 @@ endmodule // processing_element$cache$lconf3
 module processing_element$cache$line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4383,13 +3506,13 @@ endmodule // processing_element$cache$line1
 module processing_element$cache$line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4402,13 +3525,13 @@ endmodule // processing_element$cache$line2
 module processing_element$cache$line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -4437,7 +3560,7 @@ module processing_element$cache$maddr(d,q,clock);
 endmodule // processing_element$cache$maddr
 
 
-module processing_element$cache$match3_0(d,q,clock);
+module processing_element$cache$match3(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -4453,83 +3576,7 @@ module processing_element$cache$match3_0(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$cache$match3_0
-
-
-module processing_element$cache$match3_1(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$match3_1
-
-
-module processing_element$cache$match3_2(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$match3_2
-
-
-module processing_element$cache$match3_3(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$match3_3
-
-
-module processing_element$cache$match3_4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$cache$match3_4
+endmodule // processing_element$cache$match3
 
 
 module processing_element$cache$mi0(d,q,clock);
@@ -5540,13 +4587,13 @@ endmodule // processing_element$cache$t_id3
 module processing_element$cache$t_line0(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -5559,13 +4606,13 @@ endmodule // processing_element$cache$t_line0
 module processing_element$cache$t_line1(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -5578,13 +4625,13 @@ endmodule // processing_element$cache$t_line1
 module processing_element$cache$t_line2(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -5597,13 +4644,13 @@ endmodule // processing_element$cache$t_line2
 module processing_element$cache$t_line3(d,q,clock);
     
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 12'h0;
+       q = 10'h0;
     end
     
     always @(posedge clock) begin
@@ -5750,281 +4797,69 @@ module processing_element$cache$tag(clock,read_address,read_data,write_address,w
     
     // Module arguments
     input wire  clock;
-    input wire  [11:0] read_address;
+    input wire  [9:0] read_address;
     output reg  [16:0] read_data;
-    input wire  [11:0] write_address;
+    input wire  [9:0] write_address;
     input wire  [16:0] write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
-    wire [19:0] bo_rd;
-    wire [19:0] bo_wd = {3'd0, write_data};
-    wire [11:0] bo_ra = read_address;
-    wire [11:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
        .ADB0(1'b0),
        .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
        .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[4]), .DOB0(bo_rd[4]),
-       .DIA1(bo_wd[5]), .DOB1(bo_rd[5]),
-       .DIA2(bo_wd[6]), .DOB2(bo_rd[6]),
-       .DIA3(bo_wd[7]), .DOB3(bo_rd[7]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile2 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[8]), .DOB0(bo_rd[8]),
-       .DIA1(bo_wd[9]), .DOB1(bo_rd[9]),
-       .DIA2(bo_wd[10]), .DOB2(bo_rd[10]),
-       .DIA3(bo_wd[11]), .DOB3(bo_rd[11]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile3 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[12]), .DOB0(bo_rd[12]),
-       .DIA1(bo_wd[13]), .DOB1(bo_rd[13]),
-       .DIA2(bo_wd[14]), .DOB2(bo_rd[14]),
-       .DIA3(bo_wd[15]), .DOB3(bo_rd[15]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
-       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
-    );
-    DP16KD #(.DATA_WIDTH_A(4), .DATA_WIDTH_B(4), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile4 (
-       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
-       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
-       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
-       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b0),
-       .ADA1(1'b0),
-       .ADA2(bo_wa[0]),
-       .ADA3(bo_wa[1]),
-       .ADA4(bo_wa[2]),
-       .ADA5(bo_wa[3]),
-       .ADA6(bo_wa[4]),
-       .ADA7(bo_wa[5]),
-       .ADA8(bo_wa[6]),
-       .ADA9(bo_wa[7]),
-       .ADA10(bo_wa[8]),
-       .ADA11(bo_wa[9]),
-       .ADA12(bo_wa[10]),
-       .ADA13(bo_wa[11]),
-       .ADB0(1'b0),
-       .ADB1(1'b0),
-       .ADB2(bo_ra[0]),
-       .ADB3(bo_ra[1]),
-       .ADB4(bo_ra[2]),
-       .ADB5(bo_ra[3]),
-       .ADB6(bo_ra[4]),
-       .ADB7(bo_ra[5]),
-       .ADB8(bo_ra[6]),
-       .ADB9(bo_ra[7]),
-       .ADB10(bo_ra[8]),
-       .ADB11(bo_ra[9]),
-       .ADB12(bo_ra[10]),
-       .ADB13(bo_ra[11]),
-       .DIA0(bo_wd[16]), .DOB0(bo_rd[16]),
-       .DIA1(bo_wd[17]), .DOB1(bo_rd[17]),
-       .DIA2(bo_wd[18]), .DOB2(bo_rd[18]),
-       .DIA3(bo_wd[19]), .DOB3(bo_rd[19]),
-       .DIA4(1'b0),
-       .DIA5(1'b0),
-       .DIA6(1'b0),
-       .DIA7(1'b0),
-       .DIA8(1'b0),
-       .DIA9(1'b0),
-       .DIA10(1'b0),
-       .DIA11(1'b0),
-       .DIA12(1'b0),
-       .DIA13(1'b0),
-       .DIA14(1'b0),
-       .DIA15(1'b0),
-       .DIA16(1'b0),
-       .DIA17(1'b0),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[16:0];
@@ -6034,7 +4869,7 @@ module processing_element$cache$tag(clock,read_address,read_data,write_address,w
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 4096;
+    localparam WORDS = 1024;
     `endif
     reg [16:0] mem [0:WORDS-1];
     reg [16:0] r1;
@@ -6650,13 +5485,14 @@ module processing_element$last1_y(d,q,clock);
 endmodule // processing_element$last1_y
 
 
-module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
+module processing_element$loader(clock,id_valid,id_ready,id,id_ready_next,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
     input wire  clock;
     input wire  id_valid;
     output reg  id_ready;
     input wire  [15:0] id;
+    output reg  id_ready_next;
     output reg  mem_req;
     output reg  [15:0] mem_addr;
     input wire  mem_valid;
@@ -6751,6 +5587,7 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
     
     // Local signals
     reg  room;
+    reg  full_next;
     reg  accept;
     reg  pop;
     reg  [3:0] req_inc;
@@ -6937,7 +5774,9 @@ module processing_element$loader(clock,id_valid,id_ready,id,mem_req,mem_addr,mem
         end
         held_all = (reserved$q == depth5) | ((reserved$q == almost5) & req_valid$q);
         held_almost = ((reserved$q == almost5) & ~req_valid$q) | ((reserved$q == almost4) & req_valid$q);
-        full$d = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full_next = (held_all & ~pop) | (held_almost & accept & ~pop);
+        full$d = full_next;
+        id_ready_next = ~full_next;
     end
     
 endmodule // processing_element$loader
@@ -10234,9 +9073,15 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [31:0] k8$d;
     wire  [31:0] k8$q;
     reg  k8$clock;
-    reg  [5:0] exp8$d;
-    wire  [5:0] exp8$q;
-    reg  exp8$clock;
+    reg  [5:0] s0_8$d;
+    wire  [5:0] s0_8$q;
+    reg  s0_8$clock;
+    reg  [5:0] s0_m1_8$d;
+    wire  [5:0] s0_m1_8$q;
+    reg  s0_m1_8$clock;
+    reg  below8$d;
+    wire  below8$q;
+    reg  below8$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -10355,7 +9200,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [31:0] side_l;
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
-    reg  [5:0] sh;
     reg  [17:0] n_hi;
     reg  [17:0] e_hi;
     reg  e_lo_nz;
@@ -10363,6 +9207,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
     reg  is_outside;
+    reg  [5:0] exp8;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -11129,10 +9974,20 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .q(k8$q),
         .clock(k8$clock)
     );
-    processing_element$screener$exp8 exp8(
-        .d(exp8$d),
-        .q(exp8$q),
-        .clock(exp8$clock)
+    processing_element$screener$s0_8 s0_8(
+        .d(s0_8$d),
+        .q(s0_8$q),
+        .clock(s0_8$clock)
+    );
+    processing_element$screener$s0_m1_8 s0_m1_8(
+        .d(s0_m1_8$d),
+        .q(s0_m1_8$q),
+        .clock(s0_m1_8$clock)
+    );
+    processing_element$screener$below8 below8(
+        .d(below8$d),
+        .q(below8$q),
+        .clock(below8$clock)
     );
     processing_element$screener$backward8 backward8(
         .d(backward8$d),
@@ -11334,7 +10189,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         negx8$clock = clock;
         negy8$clock = clock;
         k8$clock = clock;
-        exp8$clock = clock;
+        s0_8$clock = clock;
+        s0_m1_8$clock = clock;
+        below8$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -11468,7 +10325,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         negx8$d = negx8$q;
         negy8$d = negy8$q;
         k8$d = k8$q;
-        exp8$d = exp8$q;
+        s0_8$d = s0_8$q;
+        s0_m1_8$d = s0_m1_8$q;
+        below8$d = below8$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -11747,10 +10606,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         e_hi = norm_e7$q[(32'he)+:(18)];
         e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
-        sh = s0_m1;
-        if (n_below_e) begin
-            sh = s0;
-        end
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
         is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
@@ -11768,9 +10623,15 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         outside8$d = is_outside;
-        exp8$d = sh;
-        sh5 = exp8$q[(32'h0)+:(5)];
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
+        s0_8$d = s0;
+        s0_m1_8$d = s0_m1;
+        below8$d = n_below_e;
+        exp8 = s0_m1_8$q;
+        if (below8$q) begin
+            exp8 = s0_8$q;
+        end
+        sh5 = exp8[(32'h0)+:(5)];
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8[32'h5] & (exp8 < sh_lo);
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
@@ -11806,19 +10667,19 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         divider$ry = absny32 << sh5;
         divider$fx = zero3;
         divider$fy = zero3;
-        if (exp8$q == sh_m1) begin
+        if (exp8 == sh_m1) begin
             divider$rx = absnx32 >> sh1;
             divider$ry = absny32 >> sh1;
             divider$fx = low_nx << sh2_3;
             divider$fy = low_ny << sh2_3;
         end
-        else if (exp8$q == sh_m2) begin
+        else if (exp8 == sh_m2) begin
             divider$rx = absnx32 >> sh2;
             divider$ry = absny32 >> sh2;
             divider$fx = low_nx << sh1_3;
             divider$fy = low_ny << sh1_3;
         end
-        else if (exp8$q == sh_lo) begin
+        else if (exp8 == sh_lo) begin
             divider$rx = absnx32 >> sh3;
             divider$ry = absny32 >> sh3;
             divider$fx = low_nx;
@@ -11849,9 +10710,9 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         lane_ay$write_data = ay8$q;
         lane_bx$write_data = bx8$q;
         lane_by$write_data = by8$q;
-        sh_pass = ((exp8$q) & 7'h7f);
+        sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
-            sh_pass = ((exp8$q) & 7'h7f) | pass_flag;
+            sh_pass = ((exp8) & 7'h7f) | pass_flag;
         end
         lane_sh$write_data = sh_pass;
         lane_id$write_enable = reserve;
@@ -12675,6 +11536,25 @@ module processing_element$screener$bank3(d,q,clock);
 endmodule // processing_element$screener$bank3
 
 
+module processing_element$screener$below8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$below8
+
+
 module processing_element$screener$bx1(d,q,clock);
     
     // Module arguments
@@ -13262,25 +12142,6 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out
        tag_out = tgp[3*N +: 3];
     end
 endmodule // processing_element$screener$divider
-
-
-module processing_element$screener$exp8(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$screener$exp8
 
 
 module processing_element$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -15829,6 +14690,44 @@ module processing_element$screener$res_ptr(d,q,clock);
 endmodule // processing_element$screener$res_ptr
 
 
+module processing_element$screener$s0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$s0_8
+
+
+module processing_element$screener$s0_m1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$screener$s0_m1_8
+
+
 module processing_element$screener$side_f7(d,q,clock);
     
     // Module arguments
@@ -16036,6 +14935,25 @@ module processing_element$screener$v8(d,q,clock);
     end
           
 endmodule // processing_element$screener$v8
+
+
+module processing_element$stall(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stall
 
 
 module processing_element$tags(clock,push,data_in,pop,valid,data_out,count);

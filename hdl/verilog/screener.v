@@ -553,9 +553,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] k8$d;
     wire  [31:0] k8$q;
     reg  k8$clock;
-    reg  [5:0] exp8$d;
-    wire  [5:0] exp8$q;
-    reg  exp8$clock;
+    reg  [5:0] s0_8$d;
+    wire  [5:0] s0_8$q;
+    reg  s0_8$clock;
+    reg  [5:0] s0_m1_8$d;
+    wire  [5:0] s0_m1_8$q;
+    reg  s0_m1_8$clock;
+    reg  below8$d;
+    wire  below8$q;
+    reg  below8$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -674,7 +680,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] side_l;
     reg  [5:0] s0;
     reg  [5:0] s0_m1;
-    reg  [5:0] sh;
     reg  [17:0] n_hi;
     reg  [17:0] e_hi;
     reg  e_lo_nz;
@@ -682,6 +687,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
     reg  is_outside;
+    reg  [5:0] exp8;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -1448,10 +1454,20 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(k8$q),
         .clock(k8$clock)
     );
-    screener$exp8 exp8(
-        .d(exp8$d),
-        .q(exp8$q),
-        .clock(exp8$clock)
+    screener$s0_8 s0_8(
+        .d(s0_8$d),
+        .q(s0_8$q),
+        .clock(s0_8$clock)
+    );
+    screener$s0_m1_8 s0_m1_8(
+        .d(s0_m1_8$d),
+        .q(s0_m1_8$q),
+        .clock(s0_m1_8$clock)
+    );
+    screener$below8 below8(
+        .d(below8$d),
+        .q(below8$q),
+        .clock(below8$clock)
     );
     screener$backward8 backward8(
         .d(backward8$d),
@@ -1653,7 +1669,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx8$clock = clock;
         negy8$clock = clock;
         k8$clock = clock;
-        exp8$clock = clock;
+        s0_8$clock = clock;
+        s0_m1_8$clock = clock;
+        below8$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -1787,7 +1805,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negx8$d = negx8$q;
         negy8$d = negy8$q;
         k8$d = k8$q;
-        exp8$d = exp8$q;
+        s0_8$d = s0_8$q;
+        s0_m1_8$d = s0_m1_8$q;
+        below8$d = below8$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -2066,10 +2086,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         e_hi = norm_e7$q[(32'he)+:(18)];
         e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
-        sh = s0_m1;
-        if (n_below_e) begin
-            sh = s0;
-        end
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
         is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
@@ -2087,9 +2103,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         outside8$d = is_outside;
-        exp8$d = sh;
-        sh5 = exp8$q[(32'h0)+:(5)];
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8$q[32'h5] & (exp8$q < sh_lo);
+        s0_8$d = s0;
+        s0_m1_8$d = s0_m1;
+        below8$d = n_below_e;
+        exp8 = s0_m1_8$q;
+        if (below8$q) begin
+            exp8 = s0_8$q;
+        end
+        sh5 = exp8[(32'h0)+:(5)];
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8[32'h5] & (exp8 < sh_lo);
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
@@ -2125,19 +2147,19 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         divider$ry = absny32 << sh5;
         divider$fx = zero3;
         divider$fy = zero3;
-        if (exp8$q == sh_m1) begin
+        if (exp8 == sh_m1) begin
             divider$rx = absnx32 >> sh1;
             divider$ry = absny32 >> sh1;
             divider$fx = low_nx << sh2_3;
             divider$fy = low_ny << sh2_3;
         end
-        else if (exp8$q == sh_m2) begin
+        else if (exp8 == sh_m2) begin
             divider$rx = absnx32 >> sh2;
             divider$ry = absny32 >> sh2;
             divider$fx = low_nx << sh1_3;
             divider$fy = low_ny << sh1_3;
         end
-        else if (exp8$q == sh_lo) begin
+        else if (exp8 == sh_lo) begin
             divider$rx = absnx32 >> sh3;
             divider$ry = absny32 >> sh3;
             divider$fx = low_nx;
@@ -2168,9 +2190,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         lane_ay$write_data = ay8$q;
         lane_bx$write_data = bx8$q;
         lane_by$write_data = by8$q;
-        sh_pass = ((exp8$q) & 7'h7f);
+        sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
-            sh_pass = ((exp8$q) & 7'h7f) | pass_flag;
+            sh_pass = ((exp8) & 7'h7f) | pass_flag;
         end
         lane_sh$write_data = sh_pass;
         lane_id$write_enable = reserve;
@@ -2994,6 +3016,25 @@ module screener$bank3(d,q,clock);
 endmodule // screener$bank3
 
 
+module screener$below8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$below8
+
+
 module screener$bx1(d,q,clock);
     
     // Module arguments
@@ -3581,25 +3622,6 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        tag_out = tgp[3*N +: 3];
     end
 endmodule // screener$divider
-
-
-module screener$exp8(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$exp8
 
 
 module screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -6146,6 +6168,44 @@ module screener$res_ptr(d,q,clock);
     end
           
 endmodule // screener$res_ptr
+
+
+module screener$s0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$s0_8
+
+
+module screener$s0_m1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$s0_m1_8
 
 
 module screener$side_f7(d,q,clock);

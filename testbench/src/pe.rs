@@ -719,7 +719,7 @@ mod tests {
 
     #[test]
     fn powers_of_two_and_no_cache_keep_the_identity() {
-        for lines in [None, Some(1), Some(128), Some(4096)] {
+        for lines in [None, Some(1), Some(128), Some(LINES as u32)] {
             let map = MemoryMap::new(lines, 70_000).unwrap();
             assert_eq!(map.cache(), CacheConfig { lines });
             assert_eq!((map.patch(777), map.memory(&[[1; 4]; 3]).len()), (Some(777), 3));
@@ -729,7 +729,7 @@ mod tests {
     #[test]
     fn bad_sizes_are_errors_that_name_them() {
         for (lines, patches, what) in
-            [(0, 10, "got 0"), (4097, 10, "got 4097"), (3, 60_000, "3-line cache spreads 60000 patches")]
+            [(0, 10, "got 0"), (1025, 10, "got 1025"), (3, 60_000, "3-line cache spreads 60000 patches")]
         {
             let e = MemoryMap::new(Some(lines), patches).unwrap_err();
             assert!(e.message().contains(what), "{e}");

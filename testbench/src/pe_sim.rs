@@ -211,7 +211,7 @@ pe_ports! {
         cmd_first: u16 = 10 @ pe,
         cmd_count: u16 = 11 @ pe,
         cfg_cache_enable: bool = 1 @ shared,
-        cfg_cache_mask: u16 = 12 @ shared,
+        cfg_cache_mask: u16 = 10 @ shared,
         cfg_cache_flush: bool = 1 @ shared,
         mem_valid: bool = 1 @ memory,
         mem_ax: i32 = 17 @ memory,

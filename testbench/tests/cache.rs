@@ -1,7 +1,7 @@
 //! Block-level tests of the patch cache (`shelling_hdl::cache`), rung 3 of the equivalence
 //! ladder: a loader-like client (at most 16 requests outstanding, random idle gaps, random
 //! backpressure on its own output) against the host memory model (`HostMemory`) with
-//! T_c ∈ {1, 3, 8}, caches of 1, 16, 1024 and 4096 lines and the cache disabled, id streams with
+//! T_c ∈ {1, 3, 8}, caches of 1, 16, 256 and 1024 lines ([`LINES`]) and the cache disabled, id streams with
 //! and without locality. Every response's data and order are checked against the memory, and
 //! the hit/miss sequence, the host requests and every response's cycle against the model
 //! (`model::Cache`, `model::schedule`). Then: hits one per clock, isolated misses, corner cases
@@ -18,7 +18,7 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
 use shelling_hdl::cache::model::{self, mask_for, Cache};
-use shelling_hdl::cache::{PatchCache, QUEUE_DEPTH};
+use shelling_hdl::cache::{PatchCache, CACHE_BITS, LINES, QUEUE_DEPTH};
 use shelling_hdl::loader::{self, PatchLoader};
 use shelling_testbench::memory::answer_cycles;
 use shelling_testbench::{Driver, Error, HostMemory, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
@@ -51,8 +51,8 @@ impl Config {
 
     fn mask(self) -> u16 {
         match self {
-            Config::Disabled => 0xFFF,
-            Config::Lines(n) => mask_for(n).expect("a power of two up to 4096"),
+            Config::Disabled => LINES as u16 - 1,
+            Config::Lines(n) => mask_for(n).expect("a power of two up to LINES"),
         }
     }
 }
@@ -363,7 +363,7 @@ fn local_ids(len: usize, seed: u64) -> Vec<u16> {
 #[test]
 fn every_response_in_order_with_the_models_hits_and_cycles() -> Result<()> {
     let configs =
-        [Config::Disabled, Config::Lines(1), Config::Lines(16), Config::Lines(1024), Config::Lines(4096)];
+        [Config::Disabled, Config::Lines(1), Config::Lines(16), Config::Lines(256), Config::Lines(LINES)];
     let mut total = 0usize;
     let mut filled = false;
     for tc in [1u32, 3, 8] {
@@ -386,7 +386,7 @@ fn every_response_in_order_with_the_models_hits_and_cycles() -> Result<()> {
                         out.max_queued
                     );
                     filled |= out.max_outstanding == OUTSTANDING;
-                    if local && cfg == Config::Lines(4096) {
+                    if local && cfg == Config::Lines(LINES) {
                         assert!(hits * 2 > ids.len(), "seed {seed:#x}: a local stream should mostly hit");
                     }
                 }
@@ -402,7 +402,7 @@ fn every_response_in_order_with_the_models_hits_and_cycles() -> Result<()> {
 /// cycles after its request: `n + HIT_LATENCY` cycles for `n` hits.
 #[test]
 fn a_stream_of_hits_is_answered_one_per_clock() -> Result<()> {
-    for (tc, lines) in [(8u32, 4096usize), (3, 1024), (1, 16)] {
+    for (tc, lines) in [(8u32, LINES), (3, 256), (1, 16)] {
         let seed = 0xcac4_4175 + u64::from(tc);
         let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
         let cfg = Config::Lines(lines);
@@ -433,7 +433,7 @@ fn misses_under_misses_keep_the_host_busy() -> Result<()> {
     for tc in [4u32, 16, 64] {
         let seed = 0xcac4_3333 + u64::from(tc);
         let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
-        let cfg = Config::Lines(4096);
+        let cfg = Config::Lines(LINES);
         // Warm lines 0..8; then 8 rounds of a miss to a new line and a hit.
         let warm: Vec<u16> = (0..8).collect();
         bench.run(cfg, &warm, Pacing::NONE, seed, OUTSTANDING)?;
@@ -503,7 +503,7 @@ fn corner_cases_extreme_ids_conflicts_and_mask_changes() -> Result<()> {
         let mut bench = Bench::new(random_patches(seed, 1 << 16), tc)?;
         let pacing = Pacing { idle: true, backpressure: true };
         let ends = [0u16, 0, 0xFFFF, 0xFFFF, 0, 0xFFFF, 0x0FFF, 0xF000, 0, 0xFFFF];
-        let out = bench.run(Config::Lines(4096), &ends, pacing, seed, OUTSTANDING)?;
+        let out = bench.run(Config::Lines(LINES), &ends, pacing, seed, OUTSTANDING)?;
         // 0x0FFF and 0xFFFF share line 4095; 0xF000 and 0 share line 0.
         assert_eq!(out.model_hits, [false, true, false, true, true, true, false, false, false, false]);
         // Conflicts: ids k·16 + 5 all map to line 5 of 16.
@@ -515,14 +515,14 @@ fn corner_cases_extreme_ids_conflicts_and_mask_changes() -> Result<()> {
         // Mask changes over the same contents, and a disabled run between them.
         let ids = local_ids(600, seed);
         for cfg in [
-            Config::Lines(4096),
+            Config::Lines(LINES),
             Config::Lines(16),
             Config::Disabled,
             Config::Lines(1),
-            Config::Lines(4096),
+            Config::Lines(LINES),
             Config::Lines(1024),
             Config::Disabled,
-            Config::Lines(4096),
+            Config::Lines(LINES),
         ] {
             bench.run(cfg, &ids, pacing, seed, OUTSTANDING)?;
         }
@@ -550,7 +550,7 @@ fn a_small_memory_serves_its_own_ids() -> Result<()> {
 struct LoaderWithCache {
     pub clock: Signal<In, Clock>,
     pub cfg_enable: Signal<In, bool>,
-    pub cfg_mask: Signal<In, Bits<12>>,
+    pub cfg_mask: Signal<In, Bits<CACHE_BITS>>,
     pub id_valid: Signal<In, bool>,
     pub id_ready: Signal<Out, bool>,
     pub id: Signal<In, Bits<16>>,
@@ -690,7 +690,7 @@ fn the_loader_through_the_cache_delivers_every_patch_in_order() -> Result<()> {
     assert!(off >= ids.len() as u64 * u64::from(tc));
     // All hits after a warm-up: the loader's full rate.
     let repeat: Vec<u16> = (0..2000u16).map(|k| k % 100).collect();
-    let cycles = loader_run(Config::Lines(4096), &repeat, tc, seed)?;
+    let cycles = loader_run(Config::Lines(LINES), &repeat, tc, seed)?;
     assert!(cycles < repeat.len() as u64 + 100 * (u64::from(tc) + 8) + 50, "{cycles} cycles");
     Ok(())
 }

@@ -316,8 +316,8 @@ fn recorded_run_replays_bit_exactly_under_icarus() -> Result<()> {
     let report = rec.replay(drv.uut(), &dir, Simulator::Icarus)?;
     println!("{report}");
     assert_eq!(report.cycles, rec.cycles());
-    // Ten outputs (id_ready, mem_req, mem_addr, out_valid, out_id, 4 coordinates, loads),
-    // compared before and after every rising edge.
-    assert_eq!(report.checks, 2 * 10 * rec.cycles());
+    // Eleven outputs (id_ready, id_ready_next, mem_req, mem_addr, out_valid, out_id, 4
+    // coordinates, loads), compared before and after every rising edge.
+    assert_eq!(report.checks, 2 * 11 * rec.cycles());
     Ok(())
 }

@@ -144,7 +144,7 @@ fn check(
 #[test]
 fn random_streams_match_the_model() -> Result<()> {
     let mut tests = 0;
-    let caches = [None, Some(1), Some(64), Some(4096)];
+    let caches = [None, Some(1), Some(64), Some(LINES as u32)];
     for (k, (tc, lines)) in [1u32, 4, 16].into_iter().flat_map(|t| caches.map(|c| (t, c))).enumerate() {
         let seed = 0x9e00 + k as u64;
         let (t, c) = check("random streams", seed, 256, 300, 64, 128, tc, CacheConfig { lines })?;
@@ -336,7 +336,8 @@ fn the_compiled_pe_agrees_with_rust_hdl_port_by_port() -> Result<()> {
 fn the_compiled_pe_runs_whole_sources_cycle_for_cycle() -> Result<()> {
     let mut fast = VerilatedPe::new()?;
     let mut tests = 0;
-    for (k, (tc, lines)) in [(1u32, None), (4, Some(64)), (16, None), (3, Some(4096))].into_iter().enumerate()
+    for (k, (tc, lines)) in
+        [(1u32, None), (4, Some(64)), (16, None), (3, Some(LINES as u32))].into_iter().enumerate()
     {
         let seed = 0xfa57_00 + k as u64;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);

@@ -80,11 +80,12 @@
 //!   products arrive;
 //! * stage 6: the last three shifts of `2K`; the backward and back-facing screens; the side
 //!   values;
-//! * stage 7: the exponent `sh` (from the two leading-zero counts and one comparison of the
-//!   normalised values); the outside-the-sector screen;
-//! * stage 8 ([`VERDICT_LATENCY`]): the near screen and the verdict. The patch takes the next
-//!   slot of the output FIFO (id, `a`, `b`, `sh` and the verdict written) and enters the divider
-//!   with its initial remainders `floor(|n_c|·2^sh)`;
+//! * stage 7: the exponent's two candidates (from the two leading-zero counts) and the
+//!   comparison of the normalised values that chooses between them, each registered; the
+//!   outside-the-sector screen;
+//! * stage 8 ([`VERDICT_LATENCY`]): the exponent `sh` chosen; the near screen and the
+//!   verdict. The patch takes the next slot of the output FIFO (id, `a`, `b`, `sh` and the
+//!   verdict written) and enters the divider with its initial remainders `floor(|n_c|·2^sh)`;
 //! * stage 9 ([`COUNT_LATENCY`]), beside the divider's first: the verdict, registered as one
 //!   flag per counter, is counted;
 //! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
@@ -546,7 +547,6 @@ pub struct Screener {
     hb_open7: DFF<bool>,
     s0: Signal<Local, Bits<6>>,
     s0_m1: Signal<Local, Bits<6>>,
-    sh: Signal<Local, Bits<6>>,
     n_hi: Signal<Local, Bits<18>>,
     e_hi: Signal<Local, Bits<18>>,
     e_lo_nz: Signal<Local, bool>,
@@ -566,7 +566,12 @@ pub struct Screener {
     negx8: DFF<bool>,
     negy8: DFF<bool>,
     k8: DFF<Bits<32>>,
-    exp8: DFF<Bits<6>>,
+    /// The exponent's two candidates and the choice between them, registered apart (`exp8`
+    /// is the choice): the normalised compare reaches a register through no multiplexer.
+    s0_8: DFF<Bits<6>>,
+    s0_m1_8: DFF<Bits<6>>,
+    below8: DFF<bool>,
+    exp8: Signal<Local, Bits<6>>,
     backward8: DFF<bool>,
     back_facing8: DFF<bool>,
     outside8: DFF<bool>,
@@ -878,7 +883,6 @@ impl Default for Screener {
             e_hi: Default::default(),
             e_lo_nz: Default::default(),
             n_below_e: Default::default(),
-            sh: Default::default(),
             side_f_x: Default::default(),
             side_l_x: Default::default(),
             is_outside: Default::default(),
@@ -893,6 +897,9 @@ impl Default for Screener {
             negx8: Default::default(),
             negy8: Default::default(),
             k8: Default::default(),
+            s0_8: Default::default(),
+            s0_m1_8: Default::default(),
+            below8: Default::default(),
             exp8: Default::default(),
             backward8: Default::default(),
             back_facing8: Default::default(),
@@ -1104,7 +1111,9 @@ impl Logic for Screener {
             negx8,
             negy8,
             k8,
-            exp8,
+            s0_8,
+            s0_m1_8,
+            below8,
             backward8,
             back_facing8,
             outside8,
@@ -1418,8 +1427,10 @@ impl Logic for Screener {
         // Stage 7: the exponent. With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their
         // leading one: the largest sh with nmax·2^sh < 2K is s0 when the normalised nmax is
         // below the normalised 2K, else s0 − 1. It lies in [−17, 31]; below −3 the patch is
-        // near. The outside-the-sector screen: signed comparisons with the margin as unsigned
-        // ones on the sign-flipped values.
+        // near. Both candidates and the compare are registered; stage 8 chooses (`exp8`), so
+        // the compare's carry chain reaches a register directly (it was the screener's
+        // critical path into the exponent register). The outside-the-sector screen: signed
+        // comparisons with the margin as unsigned ones on the sign-flipped values.
         self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
         // s0 − 1 = clz_n + !clz_e (mod 64): one adder from the registers, beside s0's.
         self.s0_m1.next = self.clz_n7.q.val() + !self.clz_e7.q.val();
@@ -1431,10 +1442,6 @@ impl Logic for Screener {
         self.e_lo_nz.next = self.norm_e7.q.val().get_bits::<14>(0) != self.zero14.val();
         self.n_below_e.next =
             (self.n_hi.val() < self.e_hi.val()) | ((self.n_hi.val() == self.e_hi.val()) & self.e_lo_nz.val());
-        self.sh.next = self.s0_m1.val();
-        if self.n_below_e.val() {
-            self.sh.next = self.s0.val();
-        }
         self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
         self.side_l_x.next = self.side_l7.q.val() ^ self.msb32.val();
         self.is_outside.next = (self.hb_open7.q.val() & (self.side_f_x.val() < self.thr_f.val()))
@@ -1453,16 +1460,22 @@ impl Logic for Screener {
         self.backward8.d.next = self.backward7.q.val();
         self.back_facing8.d.next = self.back_facing7.q.val();
         self.outside8.d.next = self.is_outside.val();
-        self.exp8.d.next = self.sh.val();
+        self.s0_8.d.next = self.s0.val();
+        self.s0_m1_8.d.next = self.s0_m1.val();
+        self.below8.d.next = self.n_below_e.val();
 
         // Stage 8 (VERDICT_LATENCY): the near screen and the verdict, counted; the patch takes
         // the next slot of the output FIFO and enters the divider.
-        self.sh5.next = self.exp8.q.val().get_bits::<5>(0);
+        self.exp8.next = self.s0_m1_8.q.val();
+        if self.below8.q.val() {
+            self.exp8.next = self.s0_8.q.val();
+        }
+        self.sh5.next = self.exp8.val().get_bits::<5>(0);
         self.is_near.next = !self.backward8.q.val()
             & !self.back_facing8.q.val()
             & !self.outside8.q.val()
-            & self.exp8.q.val().get_bit(5)
-            & (self.exp8.q.val() < self.sh_lo.val());
+            & self.exp8.val().get_bit(5)
+            & (self.exp8.val() < self.sh_lo.val());
         self.is_pass.next = !self.backward8.q.val()
             & !self.back_facing8.q.val()
             & !self.outside8.q.val()
@@ -1505,17 +1518,17 @@ impl Logic for Screener {
         self.divider.ry.next = self.absny32.val() << self.sh5.val();
         self.divider.fx.next = self.zero3.val();
         self.divider.fy.next = self.zero3.val();
-        if self.exp8.q.val() == self.sh_m1.val() {
+        if self.exp8.val() == self.sh_m1.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh1.val();
             self.divider.ry.next = self.absny32.val() >> self.sh1.val();
             self.divider.fx.next = self.low_nx.val() << self.sh2_3.val();
             self.divider.fy.next = self.low_ny.val() << self.sh2_3.val();
-        } else if self.exp8.q.val() == self.sh_m2.val() {
+        } else if self.exp8.val() == self.sh_m2.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh2.val();
             self.divider.ry.next = self.absny32.val() >> self.sh2.val();
             self.divider.fx.next = self.low_nx.val() << self.sh1_3.val();
             self.divider.fy.next = self.low_ny.val() << self.sh1_3.val();
-        } else if self.exp8.q.val() == self.sh_lo.val() {
+        } else if self.exp8.val() == self.sh_lo.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh3.val();
             self.divider.ry.next = self.absny32.val() >> self.sh3.val();
             self.divider.fx.next = self.low_nx.val();
@@ -1549,9 +1562,9 @@ impl Logic for Screener {
         self.lane_ay.write_data.next = self.ay8.q.val();
         self.lane_bx.write_data.next = self.bx8.q.val();
         self.lane_by.write_data.next = self.by8.q.val();
-        self.sh_pass.next = bit_cast::<7, 6>(self.exp8.q.val());
+        self.sh_pass.next = bit_cast::<7, 6>(self.exp8.val());
         if self.is_pass.val() {
-            self.sh_pass.next = bit_cast::<7, 6>(self.exp8.q.val()) | self.pass_flag.val();
+            self.sh_pass.next = bit_cast::<7, 6>(self.exp8.val()) | self.pass_flag.val();
         }
         self.lane_sh.write_data.next = self.sh_pass.val();
         self.lane_id.write_enable.next = self.reserve.val();
