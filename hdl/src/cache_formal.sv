@@ -94,10 +94,10 @@ module cache_formal (
     localparam DEPTH = 16;
 
     // The configuration and the host memory's patch `f_d` of id `f_c`: free constants.
-    (* anyconst *) reg [11:0] f_mask;
+    (* anyconst *) reg [9:0] f_mask;
     (* anyconst *) reg [15:0] f_c;
     (* anyconst *) reg [67:0] f_d;
-    always @(*) assume(f_mask <= 12'd3);
+    always @(*) assume(f_mask <= 10'd3);
 
     // ---- The host: its outstanding requests' ids, oldest first (four: a fifth fails
     // `a_host_misses` before it could overwrite one). ----
@@ -122,17 +122,17 @@ module cache_formal (
     wire        v1, v2, v3;
     wire [15:0] id1, id2, id3;
     wire [16:0] key1, key2;
-    wire [11:0] line1, line2, line3;
-    wire        match3_0, match3_1, match3_2, match3_3, match3_4, lconf3, iconf3;
+    wire [9:0] line1, line2, line3;
+    wire        match3, lconf3, iconf3;
     wire [16:0] ax3, ay3, bx3, by3;
     wire        mi0, mi1, mi2, mi3, mis3, mis2, mlf;
     // The miss table, the last fill, the previous cycle's hit, the lookup's miss.
     wire [15:0] t_id0, t_id1, t_id2, t_id3;
-    wire [11:0] t_line0, t_line1, t_line2, t_line3;
+    wire [9:0] t_line0, t_line1, t_line2, t_line3;
     wire        t_v0, t_v1, t_v2, t_v3, t_full;
     wire [2:0]  t_n;
     wire [1:0]  t_wp, t_rp;
-    wire [11:0] f_line1;
+    wire [9:0] f_line1;
     wire        f_v1, hit_r, fl_on, miss;
     // The answer queue: the control's count, pointers and head valid; the lanes' words and
     // read data ({miss, line, id} in the meta lane).
@@ -140,9 +140,9 @@ module cache_formal (
     wire [3:0]  a_tail, a_rd, a_inc_x;
     wire        a_hv;
     wire [16:0] am_ax [0:15], am_ay [0:15], am_bx [0:15], am_by [0:15];
-    wire [28:0] am_meta [0:15];
+    wire [26:0] am_meta [0:15];
     wire [16:0] ad_ax, ad_ay, ad_bx, ad_by;
-    wire [28:0] ad_meta;
+    wire [26:0] ad_meta;
     // The return queue, likewise.
     wire [2:0]  r_words;
     wire [1:0]  r_tail, r_rd, r_inc_x;
@@ -168,8 +168,7 @@ module cache_formal (
         .sp_inc_x_q(sp_inc_x), .q_valid_q(q_valid),
         .v1_q(v1), .v2_q(v2), .v3_q(v3), .id1_q(id1), .id2_q(id2), .id3_q(id3),
         .key1_q(key1), .key2_q(key2), .line1_q(line1), .line2_q(line2), .line3_q(line3),
-        .match3_0_q(match3_0), .match3_1_q(match3_1), .match3_2_q(match3_2),
-        .match3_3_q(match3_3), .match3_4_q(match3_4), .lconf3_q(lconf3), .iconf3_q(iconf3),
+        .match3_q(match3), .lconf3_q(lconf3), .iconf3_q(iconf3),
         .ax3_q(ax3), .ay3_q(ay3), .bx3_q(bx3), .by3_q(by3),
         .mi0_q(mi0), .mi1_q(mi1), .mi2_q(mi2), .mi3_q(mi3), .mis3_q(mis3), .mis2_q(mis2),
         .mlf_q(mlf),
@@ -288,13 +287,13 @@ module cache_formal (
     wire [67:0] rm [0:3];
     wire [67:0] lm [0:3];
     wire [15:0] t_id [0:3];
-    wire [11:0] t_line [0:3];
+    wire [9:0] t_line [0:3];
     wire [3:0]  t_v = {t_v3, t_v2, t_v1, t_v0};
     assign t_id[0] = t_id0; assign t_id[1] = t_id1; assign t_id[2] = t_id2; assign t_id[3] = t_id3;
     assign t_line[0] = t_line0; assign t_line[1] = t_line1; assign t_line[2] = t_line2;
     assign t_line[3] = t_line3;
     wire [16:0] key_c = {1'b1, f_c};
-    wire        tag_hit = match3_0 && match3_1 && match3_2 && match3_3 && match3_4;
+    wire        tag_hit = match3;
 
     // The helper: the answer queue slot of each table entry's request, written with it (`miss`:
     // the lookup accepts a miss at this edge, into table entry `t_wp` and answer slot `a_tail`).
@@ -338,9 +337,9 @@ module cache_formal (
                             || (t_in[2] && g_pos[2] == gi) || (t_in[3] && g_pos[3] == gi);
             assign ok_c_id[gi] = c_id[gi] == qm[gi];
             assign ok_a_id[gi] = !live || (am_meta[gi][15:0] == qm[gi]
-                                           && am_meta[gi][27:16] == (qm[gi][11:0] & f_mask));
-            assign ok_a_hit[gi] = !live || am_meta[gi][28] || qm[gi] != f_c || am[gi] == f_d;
-            assign ok_t_miss[gi] = !live || !am_meta[gi][28] || at;
+                                           && am_meta[gi][25:16] == (qm[gi][9:0] & f_mask));
+            assign ok_a_hit[gi] = !live || am_meta[gi][26] || qm[gi] != f_c || am[gi] == f_d;
+            assign ok_t_miss[gi] = !live || !am_meta[gi][26] || at;
         end
         for (gi = 0; gi < 4; gi = gi + 1) begin : t_slot
             assign rm[gi] = {rm_ax[gi], rm_ay[gi], rm_bx[gi], rm_by[gi]};
@@ -351,7 +350,7 @@ module cache_formal (
             wire [1:0] h_s = h_rd + gi;
             wire [1:0] t_h = t_host + gi;
             assign ok_t_v[gi] = t_v[gi] == t_in[gi];
-            assign ok_t_line[gi] = !t_in[gi] || t_line[gi] == (t_id[gi][11:0] & f_mask);
+            assign ok_t_line[gi] = !t_in[gi] || t_line[gi] == (t_id[gi][9:0] & f_mask);
             assign ok_t_pos[gi] = !t_in[gi] || ({1'b0, t_off[gi]} < a_words
                                                 && am_meta[g_pos[gi]] == {1'b1, t_line[gi], t_id[gi]});
             assign ok_s_iconf3[gi] = !(t_in[gi] && v3 && t_id[gi] == id3) || iconf3;
@@ -392,8 +391,8 @@ module cache_formal (
         if (v3) i_q_id3: assert(id3 == qm[q_s3]);
         if (v2) i_q_id2: assert(id2 == qm[q_s2]);
         if (v1) i_q_id1: assert(id1 == qm[q_s1]);
-        i_q_lines: assert(line1 == (id1[11:0] & f_mask) && line2 == (id2[11:0] & f_mask)
-                          && line3 == (id3[11:0] & f_mask));
+        i_q_lines: assert(line1 == (id1[9:0] & f_mask) && line2 == (id2[9:0] & f_mask)
+                          && line3 == (id3[9:0] & f_mask));
         // (The tag keys are zero at power-up, before any request is issued.)
         if (v1) i_q_key1: assert(key1 == {1'b1, id1});
         if (v2) i_q_key2: assert(key2 == {1'b1, id2});
@@ -425,8 +424,8 @@ module cache_formal (
         i_t_distinct: assert(&ok_t_distinct);
         i_t_order: assert(&ok_t_order);
         i_t_miss: assert(&ok_t_miss);
-        if (a_words != 5'd0 && am_meta[a_rd][28]) i_t_oldest: assert(t_n != 3'd0 && g_pos[t_rp] == a_rd);
-        if (a_hv && ad_meta[28]) i_t_head: assert(t_n != 3'd0 && ad_meta[15:0] == t_id[t_rp]);
+        if (a_words != 5'd0 && am_meta[a_rd][26]) i_t_oldest: assert(t_n != 3'd0 && g_pos[t_rp] == a_rd);
+        if (a_hv && ad_meta[26]) i_t_head: assert(t_n != 3'd0 && ad_meta[15:0] == t_id[t_rp]);
 
         // i_r_*: the return queue and the host. The table's entries in order: answered by the
         // host (their patches in the return queue, head valid a cycle after the answer), at
