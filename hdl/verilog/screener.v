@@ -562,6 +562,30 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  below8$d;
     wire  below8$q;
     reg  below8$clock;
+    reg  near_a8$d;
+    wire  near_a8$q;
+    reg  near_a8$clock;
+    reg  near_b8$d;
+    wire  near_b8$q;
+    reg  near_b8$clock;
+    reg  m1_a8$d;
+    wire  m1_a8$q;
+    reg  m1_a8$clock;
+    reg  m2_a8$d;
+    wire  m2_a8$q;
+    reg  m2_a8$clock;
+    reg  lo_a8$d;
+    wire  lo_a8$q;
+    reg  lo_a8$clock;
+    reg  m1_b8$d;
+    wire  m1_b8$q;
+    reg  m1_b8$clock;
+    reg  m2_b8$d;
+    wire  m2_b8$q;
+    reg  m2_b8$clock;
+    reg  lo_b8$d;
+    wire  lo_b8$q;
+    reg  lo_b8$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -688,6 +712,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] side_l_x;
     reg  is_outside;
     reg  [5:0] exp8;
+    reg  near8;
+    reg  is_m1;
+    reg  is_m2;
+    reg  is_lo;
     reg  [4:0] sh5;
     reg  is_near;
     reg  is_pass;
@@ -1469,6 +1497,46 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(below8$q),
         .clock(below8$clock)
     );
+    screener$near_a8 near_a8(
+        .d(near_a8$d),
+        .q(near_a8$q),
+        .clock(near_a8$clock)
+    );
+    screener$near_b8 near_b8(
+        .d(near_b8$d),
+        .q(near_b8$q),
+        .clock(near_b8$clock)
+    );
+    screener$m1_a8 m1_a8(
+        .d(m1_a8$d),
+        .q(m1_a8$q),
+        .clock(m1_a8$clock)
+    );
+    screener$m2_a8 m2_a8(
+        .d(m2_a8$d),
+        .q(m2_a8$q),
+        .clock(m2_a8$clock)
+    );
+    screener$lo_a8 lo_a8(
+        .d(lo_a8$d),
+        .q(lo_a8$q),
+        .clock(lo_a8$clock)
+    );
+    screener$m1_b8 m1_b8(
+        .d(m1_b8$d),
+        .q(m1_b8$q),
+        .clock(m1_b8$clock)
+    );
+    screener$m2_b8 m2_b8(
+        .d(m2_b8$d),
+        .q(m2_b8$q),
+        .clock(m2_b8$clock)
+    );
+    screener$lo_b8 lo_b8(
+        .d(lo_b8$d),
+        .q(lo_b8$q),
+        .clock(lo_b8$clock)
+    );
     screener$backward8 backward8(
         .d(backward8$d),
         .q(backward8$q),
@@ -1672,6 +1740,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         s0_8$clock = clock;
         s0_m1_8$clock = clock;
         below8$clock = clock;
+        near_a8$clock = clock;
+        near_b8$clock = clock;
+        m1_a8$clock = clock;
+        m2_a8$clock = clock;
+        lo_a8$clock = clock;
+        m1_b8$clock = clock;
+        m2_b8$clock = clock;
+        lo_b8$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -1808,6 +1884,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         s0_8$d = s0_8$q;
         s0_m1_8$d = s0_m1_8$q;
         below8$d = below8$q;
+        near_a8$d = near_a8$q;
+        near_b8$d = near_b8$q;
+        m1_a8$d = m1_a8$q;
+        m2_a8$d = m2_a8$q;
+        lo_a8$d = lo_a8$q;
+        m1_b8$d = m1_b8$q;
+        m2_b8$d = m2_b8$q;
+        lo_b8$d = lo_b8$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -2106,12 +2190,30 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
+        near_a8$d = s0[32'h5] & (s0 < sh_lo);
+        near_b8$d = s0_m1[32'h5] & (s0_m1 < sh_lo);
+        m1_a8$d = s0 == sh_m1;
+        m2_a8$d = s0 == sh_m2;
+        lo_a8$d = s0 == sh_lo;
+        m1_b8$d = s0_m1 == sh_m1;
+        m2_b8$d = s0_m1 == sh_m2;
+        lo_b8$d = s0_m1 == sh_lo;
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
         sh5 = exp8[(32'h0)+:(5)];
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & exp8[32'h5] & (exp8 < sh_lo);
+        near8 = near_b8$q;
+        is_m1 = m1_b8$q;
+        is_m2 = m2_b8$q;
+        is_lo = lo_b8$q;
+        if (below8$q) begin
+            near8 = near_a8$q;
+            is_m1 = m1_a8$q;
+            is_m2 = m2_a8$q;
+            is_lo = lo_a8$q;
+        end
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
@@ -2147,19 +2249,19 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         divider$ry = absny32 << sh5;
         divider$fx = zero3;
         divider$fy = zero3;
-        if (exp8 == sh_m1) begin
+        if (is_m1) begin
             divider$rx = absnx32 >> sh1;
             divider$ry = absny32 >> sh1;
             divider$fx = low_nx << sh2_3;
             divider$fy = low_ny << sh2_3;
         end
-        else if (exp8 == sh_m2) begin
+        else if (is_m2) begin
             divider$rx = absnx32 >> sh2;
             divider$ry = absny32 >> sh2;
             divider$fx = low_nx << sh1_3;
             divider$fy = low_ny << sh1_3;
         end
-        else if (exp8 == sh_lo) begin
+        else if (is_lo) begin
             divider$rx = absnx32 >> sh3;
             divider$ry = absny32 >> sh3;
             divider$fx = low_nx;
@@ -4548,6 +4650,120 @@ module screener$lane_wy(clock,write_address,write_data,write_enable,head_address
 endmodule // screener$lane_wy
 
 
+module screener$lo_a8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$lo_a8
+
+
+module screener$lo_b8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$lo_b8
+
+
+module screener$m1_a8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$m1_a8
+
+
+module screener$m1_b8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$m1_b8
+
+
+module screener$m2_a8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$m2_a8
+
+
+module screener$m2_b8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$m2_b8
+
+
 module screener$m_abx(clock,a,b,p);
     
     // Module arguments
@@ -5465,6 +5681,44 @@ module screener$near9(d,q,clock);
     end
           
 endmodule // screener$near9
+
+
+module screener$near_a8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$near_a8
+
+
+module screener$near_b8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$near_b8
 
 
 module screener$negx2(d,q,clock);

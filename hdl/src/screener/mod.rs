@@ -571,7 +571,22 @@ pub struct Screener {
     s0_8: DFF<Bits<6>>,
     s0_m1_8: DFF<Bits<6>>,
     below8: DFF<bool>,
+    /// What stage 8 asks of the exponent, for each candidate (`a`: s0, `b`: s0 − 1), from
+    /// stage 7's adders: near (below [`SH_MIN`]), and equal to −1, −2 and [`SH_MIN`] (the
+    /// divider's right shifts). Stage 8 chooses with `below8`: one gate after registers.
+    near_a8: DFF<bool>,
+    near_b8: DFF<bool>,
+    m1_a8: DFF<bool>,
+    m2_a8: DFF<bool>,
+    lo_a8: DFF<bool>,
+    m1_b8: DFF<bool>,
+    m2_b8: DFF<bool>,
+    lo_b8: DFF<bool>,
     exp8: Signal<Local, Bits<6>>,
+    near8: Signal<Local, bool>,
+    is_m1: Signal<Local, bool>,
+    is_m2: Signal<Local, bool>,
+    is_lo: Signal<Local, bool>,
     backward8: DFF<bool>,
     back_facing8: DFF<bool>,
     outside8: DFF<bool>,
@@ -900,6 +915,18 @@ impl Default for Screener {
             s0_8: Default::default(),
             s0_m1_8: Default::default(),
             below8: Default::default(),
+            near_a8: Default::default(),
+            near_b8: Default::default(),
+            m1_a8: Default::default(),
+            m2_a8: Default::default(),
+            lo_a8: Default::default(),
+            m1_b8: Default::default(),
+            m2_b8: Default::default(),
+            lo_b8: Default::default(),
+            near8: Default::default(),
+            is_m1: Default::default(),
+            is_m2: Default::default(),
+            is_lo: Default::default(),
             exp8: Default::default(),
             backward8: Default::default(),
             back_facing8: Default::default(),
@@ -1114,6 +1141,14 @@ impl Logic for Screener {
             s0_8,
             s0_m1_8,
             below8,
+            near_a8,
+            near_b8,
+            m1_a8,
+            m2_a8,
+            lo_a8,
+            m1_b8,
+            m2_b8,
+            lo_b8,
             backward8,
             back_facing8,
             outside8,
@@ -1427,9 +1462,10 @@ impl Logic for Screener {
         // Stage 7: the exponent. With s0 = clz(nmax) − clz(2K), nmax·2^s0 and 2K share their
         // leading one: the largest sh with nmax·2^sh < 2K is s0 when the normalised nmax is
         // below the normalised 2K, else s0 − 1. It lies in [−17, 31]; below −3 the patch is
-        // near. Both candidates and the compare are registered; stage 8 chooses (`exp8`), so
-        // the compare's carry chain reaches a register directly (it was the screener's
-        // critical path into the exponent register). The outside-the-sector screen: signed
+        // near. Both candidates, the compare and what stage 8 asks of each candidate are
+        // registered; stage 8 chooses (`exp8`, `near8`, `is_m1` …), so the compare's carry
+        // chain reaches a register directly (through the exponent's multiplexer it was the
+        // screener's critical path) and stage 8's verdict and shifts are one gate deeper only. The outside-the-sector screen: signed
         // comparisons with the margin as unsigned ones on the sign-flipped values.
         self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
         // s0 − 1 = clz_n + !clz_e (mod 64): one adder from the registers, beside s0's.
@@ -1463,6 +1499,14 @@ impl Logic for Screener {
         self.s0_8.d.next = self.s0.val();
         self.s0_m1_8.d.next = self.s0_m1.val();
         self.below8.d.next = self.n_below_e.val();
+        self.near_a8.d.next = self.s0.val().get_bit(5) & (self.s0.val() < self.sh_lo.val());
+        self.near_b8.d.next = self.s0_m1.val().get_bit(5) & (self.s0_m1.val() < self.sh_lo.val());
+        self.m1_a8.d.next = self.s0.val() == self.sh_m1.val();
+        self.m2_a8.d.next = self.s0.val() == self.sh_m2.val();
+        self.lo_a8.d.next = self.s0.val() == self.sh_lo.val();
+        self.m1_b8.d.next = self.s0_m1.val() == self.sh_m1.val();
+        self.m2_b8.d.next = self.s0_m1.val() == self.sh_m2.val();
+        self.lo_b8.d.next = self.s0_m1.val() == self.sh_lo.val();
 
         // Stage 8 (VERDICT_LATENCY): the near screen and the verdict, counted; the patch takes
         // the next slot of the output FIFO and enters the divider.
@@ -1471,11 +1515,20 @@ impl Logic for Screener {
             self.exp8.next = self.s0_8.q.val();
         }
         self.sh5.next = self.exp8.val().get_bits::<5>(0);
+        self.near8.next = self.near_b8.q.val();
+        self.is_m1.next = self.m1_b8.q.val();
+        self.is_m2.next = self.m2_b8.q.val();
+        self.is_lo.next = self.lo_b8.q.val();
+        if self.below8.q.val() {
+            self.near8.next = self.near_a8.q.val();
+            self.is_m1.next = self.m1_a8.q.val();
+            self.is_m2.next = self.m2_a8.q.val();
+            self.is_lo.next = self.lo_a8.q.val();
+        }
         self.is_near.next = !self.backward8.q.val()
             & !self.back_facing8.q.val()
             & !self.outside8.q.val()
-            & self.exp8.val().get_bit(5)
-            & (self.exp8.val() < self.sh_lo.val());
+            & self.near8.val();
         self.is_pass.next = !self.backward8.q.val()
             & !self.back_facing8.q.val()
             & !self.outside8.q.val()
@@ -1518,17 +1571,17 @@ impl Logic for Screener {
         self.divider.ry.next = self.absny32.val() << self.sh5.val();
         self.divider.fx.next = self.zero3.val();
         self.divider.fy.next = self.zero3.val();
-        if self.exp8.val() == self.sh_m1.val() {
+        if self.is_m1.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh1.val();
             self.divider.ry.next = self.absny32.val() >> self.sh1.val();
             self.divider.fx.next = self.low_nx.val() << self.sh2_3.val();
             self.divider.fy.next = self.low_ny.val() << self.sh2_3.val();
-        } else if self.exp8.val() == self.sh_m2.val() {
+        } else if self.is_m2.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh2.val();
             self.divider.ry.next = self.absny32.val() >> self.sh2.val();
             self.divider.fx.next = self.low_nx.val() << self.sh1_3.val();
             self.divider.fy.next = self.low_ny.val() << self.sh1_3.val();
-        } else if self.exp8.val() == self.sh_lo.val() {
+        } else if self.is_lo.val() {
             self.divider.rx.next = self.absnx32.val() >> self.sh3.val();
             self.divider.ry.next = self.absny32.val() >> self.sh3.val();
             self.divider.fx.next = self.low_nx.val();
