@@ -10378,8 +10378,10 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  msb32 = 32'h80000000;
-    localparam  thr_f = 32'h7fffff00;
-    localparam  thr_l = 32'h80000100;
+    localparam  thr_f_hi = 16'h7fff;
+    localparam  thr_f_lo = 16'hff00;
+    localparam  thr_l_hi = 16'h8000;
+    localparam  thr_l_lo = 16'h100;
     localparam  zero16 = 16'h0;
     localparam  zero14 = 14'b0;
     localparam  zero8 = 8'h0;
@@ -10400,6 +10402,7 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  c8_6 = 6'b1000;
     localparam  c4_6 = 6'b100;
     localparam  c2_6 = 6'b10;
+    localparam  c3_6 = 6'b11;
     localparam  c1_6 = 6'b1;
     localparam  sh_lo = 6'b111101;
     localparam  sh_m1 = 6'b111111;
@@ -10896,24 +10899,27 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  near_b8$d;
     wire  near_b8$q;
     reg  near_b8$clock;
-    reg  m1_a8$d;
-    wire  m1_a8$q;
-    reg  m1_a8$clock;
-    reg  m2_a8$d;
-    wire  m2_a8$q;
-    reg  m2_a8$clock;
-    reg  lo_a8$d;
-    wire  lo_a8$q;
-    reg  lo_a8$clock;
-    reg  m1_b8$d;
-    wire  m1_b8$q;
-    reg  m1_b8$clock;
-    reg  m2_b8$d;
-    wire  m2_b8$q;
-    reg  m2_b8$clock;
-    reg  lo_b8$d;
-    wire  lo_b8$q;
-    reg  lo_b8$clock;
+    reg  e0_8$d;
+    wire  e0_8$q;
+    reg  e0_8$clock;
+    reg  e1_8$d;
+    wire  e1_8$q;
+    reg  e1_8$clock;
+    reg  e2_8$d;
+    wire  e2_8$q;
+    reg  e2_8$clock;
+    reg  e3_8$d;
+    wire  e3_8$q;
+    reg  e3_8$clock;
+    reg  [5:0] clz_n1_7$d;
+    wire  [5:0] clz_n1_7$q;
+    reg  clz_n1_7$clock;
+    reg  [5:0] clz_n2_7$d;
+    wire  [5:0] clz_n2_7$q;
+    reg  clz_n2_7$clock;
+    reg  [5:0] clz_n3_7$d;
+    wire  [5:0] clz_n3_7$q;
+    reg  clz_n3_7$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -11038,6 +11044,8 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
+    reg  f_lt;
+    reg  l_gt;
     reg  is_outside;
     reg  [5:0] exp8;
     reg  near8;
@@ -11835,35 +11843,40 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(near_b8$q),
         .clock(near_b8$clock)
     );
-    machine$pes$0$screener$m1_a8 m1_a8(
-        .d(m1_a8$d),
-        .q(m1_a8$q),
-        .clock(m1_a8$clock)
+    machine$pes$0$screener$e0_8 e0_8(
+        .d(e0_8$d),
+        .q(e0_8$q),
+        .clock(e0_8$clock)
     );
-    machine$pes$0$screener$m2_a8 m2_a8(
-        .d(m2_a8$d),
-        .q(m2_a8$q),
-        .clock(m2_a8$clock)
+    machine$pes$0$screener$e1_8 e1_8(
+        .d(e1_8$d),
+        .q(e1_8$q),
+        .clock(e1_8$clock)
     );
-    machine$pes$0$screener$lo_a8 lo_a8(
-        .d(lo_a8$d),
-        .q(lo_a8$q),
-        .clock(lo_a8$clock)
+    machine$pes$0$screener$e2_8 e2_8(
+        .d(e2_8$d),
+        .q(e2_8$q),
+        .clock(e2_8$clock)
     );
-    machine$pes$0$screener$m1_b8 m1_b8(
-        .d(m1_b8$d),
-        .q(m1_b8$q),
-        .clock(m1_b8$clock)
+    machine$pes$0$screener$e3_8 e3_8(
+        .d(e3_8$d),
+        .q(e3_8$q),
+        .clock(e3_8$clock)
     );
-    machine$pes$0$screener$m2_b8 m2_b8(
-        .d(m2_b8$d),
-        .q(m2_b8$q),
-        .clock(m2_b8$clock)
+    machine$pes$0$screener$clz_n1_7 clz_n1_7(
+        .d(clz_n1_7$d),
+        .q(clz_n1_7$q),
+        .clock(clz_n1_7$clock)
     );
-    machine$pes$0$screener$lo_b8 lo_b8(
-        .d(lo_b8$d),
-        .q(lo_b8$q),
-        .clock(lo_b8$clock)
+    machine$pes$0$screener$clz_n2_7 clz_n2_7(
+        .d(clz_n2_7$d),
+        .q(clz_n2_7$q),
+        .clock(clz_n2_7$clock)
+    );
+    machine$pes$0$screener$clz_n3_7 clz_n3_7(
+        .d(clz_n3_7$d),
+        .q(clz_n3_7$q),
+        .clock(clz_n3_7$clock)
     );
     machine$pes$0$screener$backward8 backward8(
         .d(backward8$d),
@@ -12070,12 +12083,13 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$clock = clock;
         near_a8$clock = clock;
         near_b8$clock = clock;
-        m1_a8$clock = clock;
-        m2_a8$clock = clock;
-        lo_a8$clock = clock;
-        m1_b8$clock = clock;
-        m2_b8$clock = clock;
-        lo_b8$clock = clock;
+        e0_8$clock = clock;
+        e1_8$clock = clock;
+        e2_8$clock = clock;
+        e3_8$clock = clock;
+        clz_n1_7$clock = clock;
+        clz_n2_7$clock = clock;
+        clz_n3_7$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -12214,12 +12228,13 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$d = below8$q;
         near_a8$d = near_a8$q;
         near_b8$d = near_b8$q;
-        m1_a8$d = m1_a8$q;
-        m2_a8$d = m2_a8$q;
-        lo_a8$d = lo_a8$q;
-        m1_b8$d = m1_b8$q;
-        m2_b8$d = m2_b8$q;
-        lo_b8$d = lo_b8$q;
+        e0_8$d = e0_8$q;
+        e1_8$d = e1_8$q;
+        e2_8$d = e2_8$q;
+        e3_8$d = e3_8$q;
+        clz_n1_7$d = clz_n1_7$q;
+        clz_n2_7$d = clz_n2_7$q;
+        clz_n3_7$d = clz_n3_7$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -12483,6 +12498,9 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy7$d = negy6$q;
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
+        clz_n1_7$d = clz_n6$q + c1_6;
+        clz_n2_7$d = clz_n6$q + c2_6;
+        clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
         clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
         norm_e7$d = ze5;
@@ -12500,7 +12518,9 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
+        f_lt = (side_f_x[(32'h10)+:(16)] < thr_f_hi) | ((side_f_x[(32'h10)+:(16)] == thr_f_hi) & (side_f_x[(32'h0)+:(16)] < thr_f_lo));
+        l_gt = (side_l_x[(32'h10)+:(16)] > thr_l_hi) | ((side_l_x[(32'h10)+:(16)] == thr_l_hi) & (side_l_x[(32'h0)+:(16)] > thr_l_lo));
+        is_outside = (hb_open7$q & f_lt) | (ha_open7$q & l_gt);
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -12518,28 +12538,26 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        near_a8$d = s0[32'h5] & (s0 < sh_lo);
-        near_b8$d = s0_m1[32'h5] & (s0_m1 < sh_lo);
-        m1_a8$d = s0 == sh_m1;
-        m2_a8$d = s0 == sh_m2;
-        lo_a8$d = s0 == sh_lo;
-        m1_b8$d = s0_m1 == sh_m1;
-        m2_b8$d = s0_m1 == sh_m2;
-        lo_b8$d = s0_m1 == sh_lo;
+        e0_8$d = clz_n7$q == clz_e7$q;
+        e1_8$d = clz_n1_7$q == clz_e7$q;
+        e2_8$d = clz_n2_7$q == clz_e7$q;
+        e3_8$d = clz_n3_7$q == clz_e7$q;
+        near_a8$d = clz_n3_7$q < clz_e7$q;
+        near_b8$d = clz_n2_7$q < clz_e7$q;
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
         sh5 = exp8[(32'h0)+:(5)];
         near8 = near_b8$q;
-        is_m1 = m1_b8$q;
-        is_m2 = m2_b8$q;
-        is_lo = lo_b8$q;
+        is_m1 = e0_8$q;
+        is_m2 = e1_8$q;
+        is_lo = e2_8$q;
         if (below8$q) begin
             near8 = near_a8$q;
-            is_m1 = m1_a8$q;
-            is_m2 = m2_a8$q;
-            is_lo = lo_a8$q;
+            is_m1 = e1_8$q;
+            is_m2 = e2_8$q;
+            is_lo = e3_8$q;
         end
         is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
@@ -13902,6 +13920,63 @@ module machine$pes$0$screener$clz_e7(d,q,clock);
 endmodule // machine$pes$0$screener$clz_e7
 
 
+module machine$pes$0$screener$clz_n1_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$clz_n1_7
+
+
+module machine$pes$0$screener$clz_n2_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$clz_n2_7
+
+
+module machine$pes$0$screener$clz_n3_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$clz_n3_7
+
+
 module machine$pes$0$screener$clz_n4(d,q,clock);
     
     // Module arguments
@@ -14052,6 +14127,82 @@ module machine$pes$0$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        tag_out = tgp[3*N +: 3];
     end
 endmodule // machine$pes$0$screener$divider
+
+
+module machine$pes$0$screener$e0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$e0_8
+
+
+module machine$pes$0$screener$e1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$e1_8
+
+
+module machine$pes$0$screener$e2_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$e2_8
+
+
+module machine$pes$0$screener$e3_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$e3_8
 
 
 module machine$pes$0$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -14976,120 +15127,6 @@ module machine$pes$0$screener$lane_wy(clock,write_address,write_data,write_enabl
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$pes$0$screener$lane_wy
-
-
-module machine$pes$0$screener$lo_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$lo_a8
-
-
-module machine$pes$0$screener$lo_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$lo_b8
-
-
-module machine$pes$0$screener$m1_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$m1_a8
-
-
-module machine$pes$0$screener$m1_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$m1_b8
-
-
-module machine$pes$0$screener$m2_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$m2_a8
-
-
-module machine$pes$0$screener$m2_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$m2_b8
 
 
 module machine$pes$0$screener$m_abx(clock,a,b,p);
@@ -27745,8 +27782,10 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  msb32 = 32'h80000000;
-    localparam  thr_f = 32'h7fffff00;
-    localparam  thr_l = 32'h80000100;
+    localparam  thr_f_hi = 16'h7fff;
+    localparam  thr_f_lo = 16'hff00;
+    localparam  thr_l_hi = 16'h8000;
+    localparam  thr_l_lo = 16'h100;
     localparam  zero16 = 16'h0;
     localparam  zero14 = 14'b0;
     localparam  zero8 = 8'h0;
@@ -27767,6 +27806,7 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  c8_6 = 6'b1000;
     localparam  c4_6 = 6'b100;
     localparam  c2_6 = 6'b10;
+    localparam  c3_6 = 6'b11;
     localparam  c1_6 = 6'b1;
     localparam  sh_lo = 6'b111101;
     localparam  sh_m1 = 6'b111111;
@@ -28263,24 +28303,27 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  near_b8$d;
     wire  near_b8$q;
     reg  near_b8$clock;
-    reg  m1_a8$d;
-    wire  m1_a8$q;
-    reg  m1_a8$clock;
-    reg  m2_a8$d;
-    wire  m2_a8$q;
-    reg  m2_a8$clock;
-    reg  lo_a8$d;
-    wire  lo_a8$q;
-    reg  lo_a8$clock;
-    reg  m1_b8$d;
-    wire  m1_b8$q;
-    reg  m1_b8$clock;
-    reg  m2_b8$d;
-    wire  m2_b8$q;
-    reg  m2_b8$clock;
-    reg  lo_b8$d;
-    wire  lo_b8$q;
-    reg  lo_b8$clock;
+    reg  e0_8$d;
+    wire  e0_8$q;
+    reg  e0_8$clock;
+    reg  e1_8$d;
+    wire  e1_8$q;
+    reg  e1_8$clock;
+    reg  e2_8$d;
+    wire  e2_8$q;
+    reg  e2_8$clock;
+    reg  e3_8$d;
+    wire  e3_8$q;
+    reg  e3_8$clock;
+    reg  [5:0] clz_n1_7$d;
+    wire  [5:0] clz_n1_7$q;
+    reg  clz_n1_7$clock;
+    reg  [5:0] clz_n2_7$d;
+    wire  [5:0] clz_n2_7$q;
+    reg  clz_n2_7$clock;
+    reg  [5:0] clz_n3_7$d;
+    wire  [5:0] clz_n3_7$q;
+    reg  clz_n3_7$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -28405,6 +28448,8 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
+    reg  f_lt;
+    reg  l_gt;
     reg  is_outside;
     reg  [5:0] exp8;
     reg  near8;
@@ -29202,35 +29247,40 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(near_b8$q),
         .clock(near_b8$clock)
     );
-    machine$pes$1$screener$m1_a8 m1_a8(
-        .d(m1_a8$d),
-        .q(m1_a8$q),
-        .clock(m1_a8$clock)
+    machine$pes$1$screener$e0_8 e0_8(
+        .d(e0_8$d),
+        .q(e0_8$q),
+        .clock(e0_8$clock)
     );
-    machine$pes$1$screener$m2_a8 m2_a8(
-        .d(m2_a8$d),
-        .q(m2_a8$q),
-        .clock(m2_a8$clock)
+    machine$pes$1$screener$e1_8 e1_8(
+        .d(e1_8$d),
+        .q(e1_8$q),
+        .clock(e1_8$clock)
     );
-    machine$pes$1$screener$lo_a8 lo_a8(
-        .d(lo_a8$d),
-        .q(lo_a8$q),
-        .clock(lo_a8$clock)
+    machine$pes$1$screener$e2_8 e2_8(
+        .d(e2_8$d),
+        .q(e2_8$q),
+        .clock(e2_8$clock)
     );
-    machine$pes$1$screener$m1_b8 m1_b8(
-        .d(m1_b8$d),
-        .q(m1_b8$q),
-        .clock(m1_b8$clock)
+    machine$pes$1$screener$e3_8 e3_8(
+        .d(e3_8$d),
+        .q(e3_8$q),
+        .clock(e3_8$clock)
     );
-    machine$pes$1$screener$m2_b8 m2_b8(
-        .d(m2_b8$d),
-        .q(m2_b8$q),
-        .clock(m2_b8$clock)
+    machine$pes$1$screener$clz_n1_7 clz_n1_7(
+        .d(clz_n1_7$d),
+        .q(clz_n1_7$q),
+        .clock(clz_n1_7$clock)
     );
-    machine$pes$1$screener$lo_b8 lo_b8(
-        .d(lo_b8$d),
-        .q(lo_b8$q),
-        .clock(lo_b8$clock)
+    machine$pes$1$screener$clz_n2_7 clz_n2_7(
+        .d(clz_n2_7$d),
+        .q(clz_n2_7$q),
+        .clock(clz_n2_7$clock)
+    );
+    machine$pes$1$screener$clz_n3_7 clz_n3_7(
+        .d(clz_n3_7$d),
+        .q(clz_n3_7$q),
+        .clock(clz_n3_7$clock)
     );
     machine$pes$1$screener$backward8 backward8(
         .d(backward8$d),
@@ -29437,12 +29487,13 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$clock = clock;
         near_a8$clock = clock;
         near_b8$clock = clock;
-        m1_a8$clock = clock;
-        m2_a8$clock = clock;
-        lo_a8$clock = clock;
-        m1_b8$clock = clock;
-        m2_b8$clock = clock;
-        lo_b8$clock = clock;
+        e0_8$clock = clock;
+        e1_8$clock = clock;
+        e2_8$clock = clock;
+        e3_8$clock = clock;
+        clz_n1_7$clock = clock;
+        clz_n2_7$clock = clock;
+        clz_n3_7$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -29581,12 +29632,13 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$d = below8$q;
         near_a8$d = near_a8$q;
         near_b8$d = near_b8$q;
-        m1_a8$d = m1_a8$q;
-        m2_a8$d = m2_a8$q;
-        lo_a8$d = lo_a8$q;
-        m1_b8$d = m1_b8$q;
-        m2_b8$d = m2_b8$q;
-        lo_b8$d = lo_b8$q;
+        e0_8$d = e0_8$q;
+        e1_8$d = e1_8$q;
+        e2_8$d = e2_8$q;
+        e3_8$d = e3_8$q;
+        clz_n1_7$d = clz_n1_7$q;
+        clz_n2_7$d = clz_n2_7$q;
+        clz_n3_7$d = clz_n3_7$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -29850,6 +29902,9 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy7$d = negy6$q;
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
+        clz_n1_7$d = clz_n6$q + c1_6;
+        clz_n2_7$d = clz_n6$q + c2_6;
+        clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
         clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
         norm_e7$d = ze5;
@@ -29867,7 +29922,9 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
+        f_lt = (side_f_x[(32'h10)+:(16)] < thr_f_hi) | ((side_f_x[(32'h10)+:(16)] == thr_f_hi) & (side_f_x[(32'h0)+:(16)] < thr_f_lo));
+        l_gt = (side_l_x[(32'h10)+:(16)] > thr_l_hi) | ((side_l_x[(32'h10)+:(16)] == thr_l_hi) & (side_l_x[(32'h0)+:(16)] > thr_l_lo));
+        is_outside = (hb_open7$q & f_lt) | (ha_open7$q & l_gt);
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -29885,28 +29942,26 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        near_a8$d = s0[32'h5] & (s0 < sh_lo);
-        near_b8$d = s0_m1[32'h5] & (s0_m1 < sh_lo);
-        m1_a8$d = s0 == sh_m1;
-        m2_a8$d = s0 == sh_m2;
-        lo_a8$d = s0 == sh_lo;
-        m1_b8$d = s0_m1 == sh_m1;
-        m2_b8$d = s0_m1 == sh_m2;
-        lo_b8$d = s0_m1 == sh_lo;
+        e0_8$d = clz_n7$q == clz_e7$q;
+        e1_8$d = clz_n1_7$q == clz_e7$q;
+        e2_8$d = clz_n2_7$q == clz_e7$q;
+        e3_8$d = clz_n3_7$q == clz_e7$q;
+        near_a8$d = clz_n3_7$q < clz_e7$q;
+        near_b8$d = clz_n2_7$q < clz_e7$q;
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
         sh5 = exp8[(32'h0)+:(5)];
         near8 = near_b8$q;
-        is_m1 = m1_b8$q;
-        is_m2 = m2_b8$q;
-        is_lo = lo_b8$q;
+        is_m1 = e0_8$q;
+        is_m2 = e1_8$q;
+        is_lo = e2_8$q;
         if (below8$q) begin
             near8 = near_a8$q;
-            is_m1 = m1_a8$q;
-            is_m2 = m2_a8$q;
-            is_lo = lo_a8$q;
+            is_m1 = e1_8$q;
+            is_m2 = e2_8$q;
+            is_lo = e3_8$q;
         end
         is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
@@ -31269,6 +31324,63 @@ module machine$pes$1$screener$clz_e7(d,q,clock);
 endmodule // machine$pes$1$screener$clz_e7
 
 
+module machine$pes$1$screener$clz_n1_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$clz_n1_7
+
+
+module machine$pes$1$screener$clz_n2_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$clz_n2_7
+
+
+module machine$pes$1$screener$clz_n3_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$clz_n3_7
+
+
 module machine$pes$1$screener$clz_n4(d,q,clock);
     
     // Module arguments
@@ -31419,6 +31531,82 @@ module machine$pes$1$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        tag_out = tgp[3*N +: 3];
     end
 endmodule // machine$pes$1$screener$divider
+
+
+module machine$pes$1$screener$e0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$e0_8
+
+
+module machine$pes$1$screener$e1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$e1_8
+
+
+module machine$pes$1$screener$e2_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$e2_8
+
+
+module machine$pes$1$screener$e3_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$e3_8
 
 
 module machine$pes$1$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -32343,120 +32531,6 @@ module machine$pes$1$screener$lane_wy(clock,write_address,write_data,write_enabl
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$pes$1$screener$lane_wy
-
-
-module machine$pes$1$screener$lo_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$lo_a8
-
-
-module machine$pes$1$screener$lo_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$lo_b8
-
-
-module machine$pes$1$screener$m1_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$m1_a8
-
-
-module machine$pes$1$screener$m1_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$m1_b8
-
-
-module machine$pes$1$screener$m2_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$m2_a8
-
-
-module machine$pes$1$screener$m2_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$m2_b8
 
 
 module machine$pes$1$screener$m_abx(clock,a,b,p);

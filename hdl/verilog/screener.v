@@ -50,8 +50,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  msb32 = 32'h80000000;
-    localparam  thr_f = 32'h7fffff00;
-    localparam  thr_l = 32'h80000100;
+    localparam  thr_f_hi = 16'h7fff;
+    localparam  thr_f_lo = 16'hff00;
+    localparam  thr_l_hi = 16'h8000;
+    localparam  thr_l_lo = 16'h100;
     localparam  zero16 = 16'h0;
     localparam  zero14 = 14'b0;
     localparam  zero8 = 8'h0;
@@ -72,6 +74,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  c8_6 = 6'b1000;
     localparam  c4_6 = 6'b100;
     localparam  c2_6 = 6'b10;
+    localparam  c3_6 = 6'b11;
     localparam  c1_6 = 6'b1;
     localparam  sh_lo = 6'b111101;
     localparam  sh_m1 = 6'b111111;
@@ -568,24 +571,27 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  near_b8$d;
     wire  near_b8$q;
     reg  near_b8$clock;
-    reg  m1_a8$d;
-    wire  m1_a8$q;
-    reg  m1_a8$clock;
-    reg  m2_a8$d;
-    wire  m2_a8$q;
-    reg  m2_a8$clock;
-    reg  lo_a8$d;
-    wire  lo_a8$q;
-    reg  lo_a8$clock;
-    reg  m1_b8$d;
-    wire  m1_b8$q;
-    reg  m1_b8$clock;
-    reg  m2_b8$d;
-    wire  m2_b8$q;
-    reg  m2_b8$clock;
-    reg  lo_b8$d;
-    wire  lo_b8$q;
-    reg  lo_b8$clock;
+    reg  e0_8$d;
+    wire  e0_8$q;
+    reg  e0_8$clock;
+    reg  e1_8$d;
+    wire  e1_8$q;
+    reg  e1_8$clock;
+    reg  e2_8$d;
+    wire  e2_8$q;
+    reg  e2_8$clock;
+    reg  e3_8$d;
+    wire  e3_8$q;
+    reg  e3_8$clock;
+    reg  [5:0] clz_n1_7$d;
+    wire  [5:0] clz_n1_7$q;
+    reg  clz_n1_7$clock;
+    reg  [5:0] clz_n2_7$d;
+    wire  [5:0] clz_n2_7$q;
+    reg  clz_n2_7$clock;
+    reg  [5:0] clz_n3_7$d;
+    wire  [5:0] clz_n3_7$q;
+    reg  clz_n3_7$clock;
     reg  backward8$d;
     wire  backward8$q;
     reg  backward8$clock;
@@ -710,6 +716,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
+    reg  f_lt;
+    reg  l_gt;
     reg  is_outside;
     reg  [5:0] exp8;
     reg  near8;
@@ -1507,35 +1515,40 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(near_b8$q),
         .clock(near_b8$clock)
     );
-    screener$m1_a8 m1_a8(
-        .d(m1_a8$d),
-        .q(m1_a8$q),
-        .clock(m1_a8$clock)
+    screener$e0_8 e0_8(
+        .d(e0_8$d),
+        .q(e0_8$q),
+        .clock(e0_8$clock)
     );
-    screener$m2_a8 m2_a8(
-        .d(m2_a8$d),
-        .q(m2_a8$q),
-        .clock(m2_a8$clock)
+    screener$e1_8 e1_8(
+        .d(e1_8$d),
+        .q(e1_8$q),
+        .clock(e1_8$clock)
     );
-    screener$lo_a8 lo_a8(
-        .d(lo_a8$d),
-        .q(lo_a8$q),
-        .clock(lo_a8$clock)
+    screener$e2_8 e2_8(
+        .d(e2_8$d),
+        .q(e2_8$q),
+        .clock(e2_8$clock)
     );
-    screener$m1_b8 m1_b8(
-        .d(m1_b8$d),
-        .q(m1_b8$q),
-        .clock(m1_b8$clock)
+    screener$e3_8 e3_8(
+        .d(e3_8$d),
+        .q(e3_8$q),
+        .clock(e3_8$clock)
     );
-    screener$m2_b8 m2_b8(
-        .d(m2_b8$d),
-        .q(m2_b8$q),
-        .clock(m2_b8$clock)
+    screener$clz_n1_7 clz_n1_7(
+        .d(clz_n1_7$d),
+        .q(clz_n1_7$q),
+        .clock(clz_n1_7$clock)
     );
-    screener$lo_b8 lo_b8(
-        .d(lo_b8$d),
-        .q(lo_b8$q),
-        .clock(lo_b8$clock)
+    screener$clz_n2_7 clz_n2_7(
+        .d(clz_n2_7$d),
+        .q(clz_n2_7$q),
+        .clock(clz_n2_7$clock)
+    );
+    screener$clz_n3_7 clz_n3_7(
+        .d(clz_n3_7$d),
+        .q(clz_n3_7$q),
+        .clock(clz_n3_7$clock)
     );
     screener$backward8 backward8(
         .d(backward8$d),
@@ -1742,12 +1755,13 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         below8$clock = clock;
         near_a8$clock = clock;
         near_b8$clock = clock;
-        m1_a8$clock = clock;
-        m2_a8$clock = clock;
-        lo_a8$clock = clock;
-        m1_b8$clock = clock;
-        m2_b8$clock = clock;
-        lo_b8$clock = clock;
+        e0_8$clock = clock;
+        e1_8$clock = clock;
+        e2_8$clock = clock;
+        e3_8$clock = clock;
+        clz_n1_7$clock = clock;
+        clz_n2_7$clock = clock;
+        clz_n3_7$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
         outside8$clock = clock;
@@ -1886,12 +1900,13 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         below8$d = below8$q;
         near_a8$d = near_a8$q;
         near_b8$d = near_b8$q;
-        m1_a8$d = m1_a8$q;
-        m2_a8$d = m2_a8$q;
-        lo_a8$d = lo_a8$q;
-        m1_b8$d = m1_b8$q;
-        m2_b8$d = m2_b8$q;
-        lo_b8$d = lo_b8$q;
+        e0_8$d = e0_8$q;
+        e1_8$d = e1_8$q;
+        e2_8$d = e2_8$q;
+        e3_8$d = e3_8$q;
+        clz_n1_7$d = clz_n1_7$q;
+        clz_n2_7$d = clz_n2_7$q;
+        clz_n3_7$d = clz_n3_7$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
         outside8$d = outside8$q;
@@ -2155,6 +2170,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negy7$d = negy6$q;
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
+        clz_n1_7$d = clz_n6$q + c1_6;
+        clz_n2_7$d = clz_n6$q + c2_6;
+        clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
         clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
         norm_e7$d = ze5;
@@ -2172,7 +2190,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        is_outside = (hb_open7$q & (side_f_x < thr_f)) | (ha_open7$q & (side_l_x > thr_l));
+        f_lt = (side_f_x[(32'h10)+:(16)] < thr_f_hi) | ((side_f_x[(32'h10)+:(16)] == thr_f_hi) & (side_f_x[(32'h0)+:(16)] < thr_f_lo));
+        l_gt = (side_l_x[(32'h10)+:(16)] > thr_l_hi) | ((side_l_x[(32'h10)+:(16)] == thr_l_hi) & (side_l_x[(32'h0)+:(16)] > thr_l_lo));
+        is_outside = (hb_open7$q & f_lt) | (ha_open7$q & l_gt);
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -2190,28 +2210,26 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        near_a8$d = s0[32'h5] & (s0 < sh_lo);
-        near_b8$d = s0_m1[32'h5] & (s0_m1 < sh_lo);
-        m1_a8$d = s0 == sh_m1;
-        m2_a8$d = s0 == sh_m2;
-        lo_a8$d = s0 == sh_lo;
-        m1_b8$d = s0_m1 == sh_m1;
-        m2_b8$d = s0_m1 == sh_m2;
-        lo_b8$d = s0_m1 == sh_lo;
+        e0_8$d = clz_n7$q == clz_e7$q;
+        e1_8$d = clz_n1_7$q == clz_e7$q;
+        e2_8$d = clz_n2_7$q == clz_e7$q;
+        e3_8$d = clz_n3_7$q == clz_e7$q;
+        near_a8$d = clz_n3_7$q < clz_e7$q;
+        near_b8$d = clz_n2_7$q < clz_e7$q;
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
         sh5 = exp8[(32'h0)+:(5)];
         near8 = near_b8$q;
-        is_m1 = m1_b8$q;
-        is_m2 = m2_b8$q;
-        is_lo = lo_b8$q;
+        is_m1 = e0_8$q;
+        is_m2 = e1_8$q;
+        is_lo = e2_8$q;
         if (below8$q) begin
             near8 = near_a8$q;
-            is_m1 = m1_a8$q;
-            is_m2 = m2_a8$q;
-            is_lo = lo_a8$q;
+            is_m1 = e1_8$q;
+            is_m2 = e2_8$q;
+            is_lo = e3_8$q;
         end
         is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
         is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
@@ -3574,6 +3592,63 @@ module screener$clz_e7(d,q,clock);
 endmodule // screener$clz_e7
 
 
+module screener$clz_n1_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$clz_n1_7
+
+
+module screener$clz_n2_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$clz_n2_7
+
+
+module screener$clz_n3_7(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$clz_n3_7
+
+
 module screener$clz_n4(d,q,clock);
     
     // Module arguments
@@ -3724,6 +3799,82 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        tag_out = tgp[3*N +: 3];
     end
 endmodule // screener$divider
+
+
+module screener$e0_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$e0_8
+
+
+module screener$e1_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$e1_8
+
+
+module screener$e2_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$e2_8
+
+
+module screener$e3_8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$e3_8
 
 
 module screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -4648,120 +4799,6 @@ module screener$lane_wy(clock,write_address,write_data,write_enable,head_address
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_wy
-
-
-module screener$lo_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$lo_a8
-
-
-module screener$lo_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$lo_b8
-
-
-module screener$m1_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$m1_a8
-
-
-module screener$m1_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$m1_b8
-
-
-module screener$m2_a8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$m2_a8
-
-
-module screener$m2_b8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$m2_b8
 
 
 module screener$m_abx(clock,a,b,p);

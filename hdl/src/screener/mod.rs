@@ -553,6 +553,10 @@ pub struct Screener {
     n_below_e: Signal<Local, bool>,
     side_f_x: Signal<Local, Bits<32>>,
     side_l_x: Signal<Local, Bits<32>>,
+    /// The two outside compares by 16-bit halves, side by side: two short carry chains and a
+    /// gate instead of one 32-bit chain.
+    f_lt: Signal<Local, bool>,
+    l_gt: Signal<Local, bool>,
     is_outside: Signal<Local, bool>,
     // Stage 8: the verdict, the divider's inputs; the patch takes a slot.
     v8: DFF<bool>,
@@ -571,17 +575,20 @@ pub struct Screener {
     s0_8: DFF<Bits<6>>,
     s0_m1_8: DFF<Bits<6>>,
     below8: DFF<bool>,
-    /// What stage 8 asks of the exponent, for each candidate (`a`: s0, `b`: s0 − 1), from
-    /// stage 7's adders: near (below [`SH_MIN`]), and equal to −1, −2 and [`SH_MIN`] (the
-    /// divider's right shifts). Stage 8 chooses with `below8`: one gate after registers.
+    /// What stage 8 asks of the exponent, for each candidate, from compares of the two
+    /// leading-zero counts (no adder before them; both counts lie in 0…31, so `d = clz_n −
+    /// clz_e` in −31…31): `e_k` is `d = −k`, `near_a` is `s0 = d` near (below [`SH_MIN`]:
+    /// `d ≤ −4`), `near_b` is `s0 − 1` near (`d ≤ −3`). Stage 8 chooses with `below8`.
     near_a8: DFF<bool>,
     near_b8: DFF<bool>,
-    m1_a8: DFF<bool>,
-    m2_a8: DFF<bool>,
-    lo_a8: DFF<bool>,
-    m1_b8: DFF<bool>,
-    m2_b8: DFF<bool>,
-    lo_b8: DFF<bool>,
+    e0_8: DFF<bool>,
+    e1_8: DFF<bool>,
+    e2_8: DFF<bool>,
+    e3_8: DFF<bool>,
+    /// `clz_n + 1`, `+ 2`, `+ 3`, registered beside `clz_n7`.
+    clz_n1_7: DFF<Bits<6>>,
+    clz_n2_7: DFF<Bits<6>>,
+    clz_n3_7: DFF<Bits<6>>,
     exp8: Signal<Local, Bits<6>>,
     near8: Signal<Local, bool>,
     is_m1: Signal<Local, bool>,
@@ -627,8 +634,10 @@ pub struct Screener {
     zero32: Constant<Bits<32>>,
     one32: Constant<Bits<32>>,
     msb32: Constant<Bits<32>>,
-    thr_f: Constant<Bits<32>>,
-    thr_l: Constant<Bits<32>>,
+    thr_f_hi: Constant<Bits<16>>,
+    thr_f_lo: Constant<Bits<16>>,
+    thr_l_hi: Constant<Bits<16>>,
+    thr_l_lo: Constant<Bits<16>>,
     zero16: Constant<Bits<16>>,
     zero14: Constant<Bits<14>>,
     zero8: Constant<Bits<8>>,
@@ -649,6 +658,7 @@ pub struct Screener {
     c8_6: Constant<Bits<6>>,
     c4_6: Constant<Bits<6>>,
     c2_6: Constant<Bits<6>>,
+    c3_6: Constant<Bits<6>>,
     c1_6: Constant<Bits<6>>,
     sh_lo: Constant<Bits<6>>,
     sh_m1: Constant<Bits<6>>,
@@ -900,6 +910,8 @@ impl Default for Screener {
             n_below_e: Default::default(),
             side_f_x: Default::default(),
             side_l_x: Default::default(),
+            f_lt: Default::default(),
+            l_gt: Default::default(),
             is_outside: Default::default(),
             v8: Default::default(),
             id8: Default::default(),
@@ -917,12 +929,13 @@ impl Default for Screener {
             below8: Default::default(),
             near_a8: Default::default(),
             near_b8: Default::default(),
-            m1_a8: Default::default(),
-            m2_a8: Default::default(),
-            lo_a8: Default::default(),
-            m1_b8: Default::default(),
-            m2_b8: Default::default(),
-            lo_b8: Default::default(),
+            e0_8: Default::default(),
+            e1_8: Default::default(),
+            e2_8: Default::default(),
+            e3_8: Default::default(),
+            clz_n1_7: Default::default(),
+            clz_n2_7: Default::default(),
+            clz_n3_7: Default::default(),
             near8: Default::default(),
             is_m1: Default::default(),
             is_m2: Default::default(),
@@ -964,8 +977,10 @@ impl Default for Screener {
             zero32: Constant::new(0u64.into()),
             one32: Constant::new(1u64.into()),
             msb32: Constant::new(SIGN32.into()),
-            thr_f: Constant::new((SIGN32 - SECTOR_MARGIN as u64).into()),
-            thr_l: Constant::new((SIGN32 + SECTOR_MARGIN as u64).into()),
+            thr_f_hi: Constant::new(((SIGN32 - SECTOR_MARGIN as u64) >> 16).into()),
+            thr_f_lo: Constant::new(((SIGN32 - SECTOR_MARGIN as u64) & 0xFFFF).into()),
+            thr_l_hi: Constant::new(((SIGN32 + SECTOR_MARGIN as u64) >> 16).into()),
+            thr_l_lo: Constant::new(((SIGN32 + SECTOR_MARGIN as u64) & 0xFFFF).into()),
             zero16: Constant::new(0u64.into()),
             zero14: Constant::new(0u64.into()),
             zero8: Constant::new(0u64.into()),
@@ -986,6 +1001,7 @@ impl Default for Screener {
             c8_6: Constant::new(8u64.into()),
             c4_6: Constant::new(4u64.into()),
             c2_6: Constant::new(2u64.into()),
+            c3_6: Constant::new(3u64.into()),
             c1_6: Constant::new(1u64.into()),
             sh_lo: Constant::new(to_bits(SH_MIN as i64, SH_BITS).into()),
             sh_m1: Constant::new(to_bits(-1, SH_BITS).into()),
@@ -1143,12 +1159,13 @@ impl Logic for Screener {
             below8,
             near_a8,
             near_b8,
-            m1_a8,
-            m2_a8,
-            lo_a8,
-            m1_b8,
-            m2_b8,
-            lo_b8,
+            e0_8,
+            e1_8,
+            e2_8,
+            e3_8,
+            clz_n1_7,
+            clz_n2_7,
+            clz_n3_7,
             backward8,
             back_facing8,
             outside8,
@@ -1446,6 +1463,9 @@ impl Logic for Screener {
         self.negy7.d.next = self.negy6.q.val();
         self.k7.d.next = self.k6.q.val();
         self.clz_n7.d.next = self.clz_n6.q.val();
+        self.clz_n1_7.d.next = self.clz_n6.q.val() + self.c1_6.val();
+        self.clz_n2_7.d.next = self.clz_n6.q.val() + self.c2_6.val();
+        self.clz_n3_7.d.next = self.clz_n6.q.val() + self.c3_6.val();
         self.norm_n7.d.next = self.norm_n6.q.val();
         self.clz_e7.d.next = self.clz_e6.q.val() | self.ce4_e.val() | self.ce2_e.val() | self.ce1_e.val();
         self.norm_e7.d.next = self.ze5.val();
@@ -1480,8 +1500,14 @@ impl Logic for Screener {
             (self.n_hi.val() < self.e_hi.val()) | ((self.n_hi.val() == self.e_hi.val()) & self.e_lo_nz.val());
         self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
         self.side_l_x.next = self.side_l7.q.val() ^ self.msb32.val();
-        self.is_outside.next = (self.hb_open7.q.val() & (self.side_f_x.val() < self.thr_f.val()))
-            | (self.ha_open7.q.val() & (self.side_l_x.val() > self.thr_l.val()));
+        self.f_lt.next = (self.side_f_x.val().get_bits::<16>(16) < self.thr_f_hi.val())
+            | ((self.side_f_x.val().get_bits::<16>(16) == self.thr_f_hi.val())
+                & (self.side_f_x.val().get_bits::<16>(0) < self.thr_f_lo.val()));
+        self.l_gt.next = (self.side_l_x.val().get_bits::<16>(16) > self.thr_l_hi.val())
+            | ((self.side_l_x.val().get_bits::<16>(16) == self.thr_l_hi.val())
+                & (self.side_l_x.val().get_bits::<16>(0) > self.thr_l_lo.val()));
+        self.is_outside.next =
+            (self.hb_open7.q.val() & self.f_lt.val()) | (self.ha_open7.q.val() & self.l_gt.val());
         self.v8.d.next = self.v7.q.val();
         self.id8.d.next = self.id7.q.val();
         self.ax8.d.next = self.ax7.q.val();
@@ -1499,14 +1525,12 @@ impl Logic for Screener {
         self.s0_8.d.next = self.s0.val();
         self.s0_m1_8.d.next = self.s0_m1.val();
         self.below8.d.next = self.n_below_e.val();
-        self.near_a8.d.next = self.s0.val().get_bit(5) & (self.s0.val() < self.sh_lo.val());
-        self.near_b8.d.next = self.s0_m1.val().get_bit(5) & (self.s0_m1.val() < self.sh_lo.val());
-        self.m1_a8.d.next = self.s0.val() == self.sh_m1.val();
-        self.m2_a8.d.next = self.s0.val() == self.sh_m2.val();
-        self.lo_a8.d.next = self.s0.val() == self.sh_lo.val();
-        self.m1_b8.d.next = self.s0_m1.val() == self.sh_m1.val();
-        self.m2_b8.d.next = self.s0_m1.val() == self.sh_m2.val();
-        self.lo_b8.d.next = self.s0_m1.val() == self.sh_lo.val();
+        self.e0_8.d.next = self.clz_n7.q.val() == self.clz_e7.q.val();
+        self.e1_8.d.next = self.clz_n1_7.q.val() == self.clz_e7.q.val();
+        self.e2_8.d.next = self.clz_n2_7.q.val() == self.clz_e7.q.val();
+        self.e3_8.d.next = self.clz_n3_7.q.val() == self.clz_e7.q.val();
+        self.near_a8.d.next = self.clz_n3_7.q.val() < self.clz_e7.q.val();
+        self.near_b8.d.next = self.clz_n2_7.q.val() < self.clz_e7.q.val();
 
         // Stage 8 (VERDICT_LATENCY): the near screen and the verdict, counted; the patch takes
         // the next slot of the output FIFO and enters the divider.
@@ -1515,20 +1539,19 @@ impl Logic for Screener {
             self.exp8.next = self.s0_8.q.val();
         }
         self.sh5.next = self.exp8.val().get_bits::<5>(0);
+        // sh = s0 − 1 = d − 1: −1, −2, −3 at d = 0, −1, −2; sh = s0 = d: at d = −1, −2, −3.
         self.near8.next = self.near_b8.q.val();
-        self.is_m1.next = self.m1_b8.q.val();
-        self.is_m2.next = self.m2_b8.q.val();
-        self.is_lo.next = self.lo_b8.q.val();
+        self.is_m1.next = self.e0_8.q.val();
+        self.is_m2.next = self.e1_8.q.val();
+        self.is_lo.next = self.e2_8.q.val();
         if self.below8.q.val() {
             self.near8.next = self.near_a8.q.val();
-            self.is_m1.next = self.m1_a8.q.val();
-            self.is_m2.next = self.m2_a8.q.val();
-            self.is_lo.next = self.lo_a8.q.val();
+            self.is_m1.next = self.e1_8.q.val();
+            self.is_m2.next = self.e2_8.q.val();
+            self.is_lo.next = self.e3_8.q.val();
         }
-        self.is_near.next = !self.backward8.q.val()
-            & !self.back_facing8.q.val()
-            & !self.outside8.q.val()
-            & self.near8.val();
+        self.is_near.next =
+            !self.backward8.q.val() & !self.back_facing8.q.val() & !self.outside8.q.val() & self.near8.val();
         self.is_pass.next = !self.backward8.q.val()
             & !self.back_facing8.q.val()
             & !self.outside8.q.val()
@@ -1707,5 +1730,29 @@ impl Logic for Screener {
         }
         self.used.d.next = self.used_next.val();
         self.full.d.next = self.used_next.val() == self.depth6.val();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Stage 8's flags from the leading-zero counts (`near_a8` … `e3_8`) are what the exponent
+    /// itself says (near: bit 5 set and below `SH_MIN` unsigned; equal to −1, −2, `SH_MIN`) for
+    /// every pair of counts the normalisers give (0…31 each) and both candidates.
+    #[test]
+    fn exponent_flags_from_the_counts_are_the_exponents() {
+        let six = |v: i64| (v & 63) as u64;
+        let (lo, m1, m2) = (six(SH_MIN as i64), six(-1), six(-2));
+        for n in 0..32i64 {
+            for e in 0..32i64 {
+                let (s0, s0_m1) = (six(n - e), six(n - e - 1));
+                let near = |x: u64| x & 32 != 0 && x < lo;
+                let flags = |x: u64| (near(x), x == m1, x == m2, x == lo);
+                let e_k = |k: i64| n + k == e;
+                assert_eq!(flags(s0), (n + 3 < e, e_k(1), e_k(2), e_k(3)), "s0, clz {n}, {e}");
+                assert_eq!(flags(s0_m1), (n + 2 < e, e_k(0), e_k(1), e_k(2)), "s0 - 1, clz {n}, {e}");
+            }
+        }
     }
 }
