@@ -96,14 +96,16 @@
 //!
 //! # Resources
 //!
-//! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 4096-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 10154 LUT4s, 7451 flip-flops, 16 `MULT18X18D`,
-//! 31 `DP16KD`, 424 LUT RAMs at placement seed 1; on LFE5U-85F-6 a median of 148.3 MHz over
-//! placement seeds 1–5 (132.5–156.7; 139.1 before the registered ready flags and the unit's
-//! split merge compare, 71.8 at seed 1 before the 150 MHz work), its critical paths `pend` into
-//! the tag FIFO's write enable (seeds 1, 4), the cache's answer queue into the tag block RAM's
-//! write enable (3) and the screener's credit count and normaliser (2, 5) (`hdl/fpga/ecp5.md`, checked
-//! against the committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
+//! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 1024-line cache, in the FPGA
+//! flow's register wrapper, wrapper excluded): 10344 LUT4s, 7447 flip-flops, 16 `MULT18X18D`,
+//! 11 `DP16KD` (the cache's five, the unit's six), 422 LUT RAMs at placement seed 1; on
+//! LFE5U-85F-6 a median of 156.0 MHz over placement seeds 1–5 (143.8–157.2; 148.3 and 31
+//! `DP16KD` with the 4096-line cache, before `cmd_ready` became one register and the screener's
+//! exponent flags were registered; 71.8 at seed 1 before the 150 MHz work). Its critical paths:
+//! the cache's miss-table valid bits into the return queue's count (seed 1), the screener's
+//! exponent choice into the divider's inputs (2, 5) and its outside compare (3), the unit's
+//! merge into the key memory's write enable (4) (`hdl/fpga/ecp5.md`, checked against the
+//! committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
 //!
 //! # Models
 //!

@@ -103,7 +103,8 @@
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 153.4 MHz (150.0–161.4; 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`).
+//! median of 158.6 MHz (150.0–163.6; 150.4 before stage 7 registered the exponent's flags and
+//! split the outside compare, 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
