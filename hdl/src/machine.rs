@@ -40,12 +40,12 @@
 //!
 //! # Resources
 //!
-//! N times the PE's (31 `DP16KD` each), plus the arbiter. On the LFE5U-85F-6 four PEs take
-//! 41,584 LUT4s (50 %), 30,149 FFs, 124 of 208 `DP16KD`s and 64 `MULT18X18D`s and route at
-//! 114.3 MHz, the median of placement seeds 1–3 (113.5–121.4; `hdl/fpga/ecp5-machine.md`,
-//! `cargo xtask fpga --blocks machine_4`), their critical paths inside a PE; six PEs (the most
-//! whose block RAMs fit) placed at 60,441 LUT4s and 186 `DP16KD`s but did not route
-//! (PERFORMANCE.md).
+//! N times the PE's (11 `DP16KD` each), plus the arbiter. On the LFE5U-85F-6 four PEs take
+//! 42,171 LUT4s (50 %), 30,133 FFs, 44 of 208 `DP16KD`s and 64 `MULT18X18D`s and route at
+//! 124.2 MHz, the median of placement seeds 1–3 (122.6–126.0; `hdl/fpga/ecp5-machine.md`,
+//! `cargo xtask fpga --blocks machine_4`); the critical paths are the arbiter's answer register
+//! into a PE's loader across the die and a screener's outside compare. Six PEs (the most whose
+//! LUTs fit) have not been run on this RTL (PERFORMANCE.md).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
