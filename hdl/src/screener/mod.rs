@@ -137,9 +137,9 @@
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
 //! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 144 `TRELLIS_DPR16X4` (the
-//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5520 LUT4s (LUT RAM
-//! included) and 4230 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider takes about 1000 LUT4, 580 `CCU2C` carry
-//! cells and 2000 flip-flops.
+//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5542 LUT4s (LUT RAM
+//! included) and 4252 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
+//! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
 use crate::formats::{cross, dot, to_bits, PatchSetup, SECTOR_MARGIN, SH_BITS, SH_MAX, SH_MIN};
 use crate::prim::{FifoControl, FifoRam, Mul18};
