@@ -460,6 +460,8 @@ pub struct PatchCache {
     t_v1: DFF<bool>,
     t_v2: DFF<bool>,
     t_v3: DFF<bool>,
+    /// Some entry is valid (the OR of the `t_v*`), registered from their next values.
+    t_any: DFF<bool>,
     /// Misses in the table (`0..=MISSES`), and "the table is full" as a register of its own
     /// (from the count's next value), so that the accept and the rewind are one gate of
     /// registers.
@@ -530,6 +532,10 @@ pub struct PatchCache {
     table_full: Signal<Local, bool>,
     ret_push: Signal<Local, bool>,
     waiting_any: Signal<Local, bool>,
+    tv0_next: Signal<Local, bool>,
+    tv1_next: Signal<Local, bool>,
+    tv2_next: Signal<Local, bool>,
+    tv3_next: Signal<Local, bool>,
     rewind: Signal<Local, bool>,
     accept: Signal<Local, bool>,
     tag_hit: Signal<Local, bool>,
@@ -649,6 +655,7 @@ impl Default for PatchCache {
             t_v1: Default::default(),
             t_v2: Default::default(),
             t_v3: Default::default(),
+            t_any: Default::default(),
             t_n: Default::default(),
             t_full: Default::default(),
             t_wp: Default::default(),
@@ -703,6 +710,10 @@ impl Default for PatchCache {
             table_full: Default::default(),
             ret_push: Default::default(),
             waiting_any: Default::default(),
+            tv0_next: Default::default(),
+            tv1_next: Default::default(),
+            tv2_next: Default::default(),
+            tv3_next: Default::default(),
             rewind: Default::default(),
             accept: Default::default(),
             tag_hit: Default::default(),
@@ -780,9 +791,9 @@ impl Logic for PatchCache {
         dff_setup!(
             self, clock, wr_ptr, rd_ptr, sp, rd_inc_x, sp_inc_x, q_valid, v1, id1, key1, line1, v2, id2,
             key2, line2, v3, id3, line3, match3, lconf3, iconf3, ax3, ay3, bx3, by3, t_id0, t_id1, t_id2,
-            t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1, t_v2, t_v3, t_n, t_full, t_wp, t_rp,
-            f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2, ml3, mlf, mls3, mls2,
-            fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r
+            t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1, t_v2, t_v3, t_any, t_n, t_full, t_wp,
+            t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2, ml3, mlf, mls3,
+            mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -820,7 +831,7 @@ impl Logic for PatchCache {
         // no pointer. A request whose line is on its way to another id (`lconf3` only) is a
         // miss whatever the stale tag says.
         self.table_full.next = self.t_full.q.val();
-        self.waiting_any.next = self.t_v0.q.val() | self.t_v1.q.val() | self.t_v2.q.val() | self.t_v3.q.val();
+        self.waiting_any.next = self.t_any.q.val();
         self.rewind.next = self.v3.q.val() & (self.iconf3.q.val() | self.table_full.val());
         self.accept.next = self.v3.q.val() & !self.iconf3.q.val() & !self.table_full.val();
         self.tag_hit.next = self.match3.q.val();
@@ -967,29 +978,17 @@ impl Logic for PatchCache {
             self.t_id0.d.next = self.id3.q.val();
             self.t_line0.d.next = self.line3.q.val();
         }
-        if self.miss.val() & (self.t_wp.q.val() == self.slot0.val()) {
-            self.t_v0.d.next = true;
-        }
         if !self.t_v1.q.val() & (self.t_wp.q.val() == self.slot1.val()) {
             self.t_id1.d.next = self.id3.q.val();
             self.t_line1.d.next = self.line3.q.val();
-        }
-        if self.miss.val() & (self.t_wp.q.val() == self.slot1.val()) {
-            self.t_v1.d.next = true;
         }
         if !self.t_v2.q.val() & (self.t_wp.q.val() == self.slot2.val()) {
             self.t_id2.d.next = self.id3.q.val();
             self.t_line2.d.next = self.line3.q.val();
         }
-        if self.miss.val() & (self.t_wp.q.val() == self.slot2.val()) {
-            self.t_v2.d.next = true;
-        }
         if !self.t_v3.q.val() & (self.t_wp.q.val() == self.slot3.val()) {
             self.t_id3.d.next = self.id3.q.val();
             self.t_line3.d.next = self.line3.q.val();
-        }
-        if self.miss.val() & (self.t_wp.q.val() == self.slot3.val()) {
-            self.t_v3.d.next = true;
         }
         // The host's answers wait in order for their turn (one ignored while no miss waits: a
         // protocol violation).
@@ -1033,18 +1032,46 @@ impl Logic for PatchCache {
         if self.fill.val() {
             self.t_rp.d.next = self.t_rp_inc.val();
         }
+        // Entry 0: valid from its miss, invalid from its fill.
+        self.tv0_next.next = self.t_v0.q.val();
+        if self.miss.val() & (self.t_wp.q.val() == self.slot0.val()) {
+            self.tv0_next.next = true;
+        }
         if self.fill.val() & (self.t_rp.q.val() == self.slot0.val()) {
-            self.t_v0.d.next = false;
+            self.tv0_next.next = false;
+        }
+        self.t_v0.d.next = self.tv0_next.val();
+        // Entry 1: valid from its miss, invalid from its fill.
+        self.tv1_next.next = self.t_v1.q.val();
+        if self.miss.val() & (self.t_wp.q.val() == self.slot1.val()) {
+            self.tv1_next.next = true;
         }
         if self.fill.val() & (self.t_rp.q.val() == self.slot1.val()) {
-            self.t_v1.d.next = false;
+            self.tv1_next.next = false;
+        }
+        self.t_v1.d.next = self.tv1_next.val();
+        // Entry 2: valid from its miss, invalid from its fill.
+        self.tv2_next.next = self.t_v2.q.val();
+        if self.miss.val() & (self.t_wp.q.val() == self.slot2.val()) {
+            self.tv2_next.next = true;
         }
         if self.fill.val() & (self.t_rp.q.val() == self.slot2.val()) {
-            self.t_v2.d.next = false;
+            self.tv2_next.next = false;
+        }
+        self.t_v2.d.next = self.tv2_next.val();
+        // Entry 3: valid from its miss, invalid from its fill.
+        self.tv3_next.next = self.t_v3.q.val();
+        if self.miss.val() & (self.t_wp.q.val() == self.slot3.val()) {
+            self.tv3_next.next = true;
         }
         if self.fill.val() & (self.t_rp.q.val() == self.slot3.val()) {
-            self.t_v3.d.next = false;
+            self.tv3_next.next = false;
         }
+        self.t_v3.d.next = self.tv3_next.val();
+        // Some miss waits after this edge: a register of its own, so that a host answer's
+        // push is one gate of `mem_valid` and registers.
+        self.t_any.d.next =
+            self.tv0_next.val() | self.tv1_next.val() | self.tv2_next.val() | self.tv3_next.val();
         self.head_line_fill.next = self.ans_meta.read_data.val().get_bits::<CACHE_BITS>(16);
         self.head_id_fill.next = self.ans_meta.read_data.val().get_bits::<16>(0);
         self.head_key_fill.next = self.valid_flag.val() | bit_cast::<17, 16>(self.head_id_fill.val());

@@ -2860,6 +2860,9 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  t_v3$d;
     wire  t_v3$q;
     reg  t_v3$clock;
+    reg  t_any$d;
+    wire  t_any$q;
+    reg  t_any$clock;
     reg  [2:0] t_n$d;
     wire  [2:0] t_n$q;
     reg  t_n$clock;
@@ -3084,6 +3087,10 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  table_full;
     reg  ret_push;
     reg  waiting_any;
+    reg  tv0_next;
+    reg  tv1_next;
+    reg  tv2_next;
+    reg  tv3_next;
     reg  rewind;
     reg  accept;
     reg  tag_hit;
@@ -3309,6 +3316,11 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         .d(t_v3$d),
         .q(t_v3$q),
         .clock(t_v3$clock)
+    );
+    machine$pes$0$cache$t_any t_any(
+        .d(t_any$d),
+        .q(t_any$q),
+        .clock(t_any$clock)
     );
     machine$pes$0$cache$t_n t_n(
         .d(t_n$d),
@@ -3664,6 +3676,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         t_v1$clock = clock;
         t_v2$clock = clock;
         t_v3$clock = clock;
+        t_any$clock = clock;
         t_n$clock = clock;
         t_full$clock = clock;
         t_wp$clock = clock;
@@ -3733,6 +3746,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         t_v1$d = t_v1$q;
         t_v2$d = t_v2$q;
         t_v3$d = t_v3$q;
+        t_any$d = t_any$q;
         t_n$d = t_n$q;
         t_full$d = t_full$q;
         t_wp$d = t_wp$q;
@@ -3793,7 +3807,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         t_wp_inc = t_wp$q + one2;
         t_rp_inc = t_rp$q + one2;
         table_full = t_full$q;
-        waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
+        waiting_any = t_any$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
         tag_hit = match3$q;
@@ -3897,29 +3911,17 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
             t_id0$d = id3$q;
             t_line0$d = line3$q;
         end
-        if (miss & (t_wp$q == slot0)) begin
-            t_v0$d = 1'b1;
-        end
         if (~t_v1$q & (t_wp$q == slot1)) begin
             t_id1$d = id3$q;
             t_line1$d = line3$q;
-        end
-        if (miss & (t_wp$q == slot1)) begin
-            t_v1$d = 1'b1;
         end
         if (~t_v2$q & (t_wp$q == slot2)) begin
             t_id2$d = id3$q;
             t_line2$d = line3$q;
         end
-        if (miss & (t_wp$q == slot2)) begin
-            t_v2$d = 1'b1;
-        end
         if (~t_v3$q & (t_wp$q == slot3)) begin
             t_id3$d = id3$q;
             t_line3$d = line3$q;
-        end
-        if (miss & (t_wp$q == slot3)) begin
-            t_v3$d = 1'b1;
         end
         ret_push = cfg_enable & mem_valid & waiting_any;
         ret$push = ret_push;
@@ -3953,18 +3955,39 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         if (fill) begin
             t_rp$d = t_rp_inc;
         end
+        tv0_next = t_v0$q;
+        if (miss & (t_wp$q == slot0)) begin
+            tv0_next = 1'b1;
+        end
         if (fill & (t_rp$q == slot0)) begin
-            t_v0$d = 1'b0;
+            tv0_next = 1'b0;
+        end
+        t_v0$d = tv0_next;
+        tv1_next = t_v1$q;
+        if (miss & (t_wp$q == slot1)) begin
+            tv1_next = 1'b1;
         end
         if (fill & (t_rp$q == slot1)) begin
-            t_v1$d = 1'b0;
+            tv1_next = 1'b0;
+        end
+        t_v1$d = tv1_next;
+        tv2_next = t_v2$q;
+        if (miss & (t_wp$q == slot2)) begin
+            tv2_next = 1'b1;
         end
         if (fill & (t_rp$q == slot2)) begin
-            t_v2$d = 1'b0;
+            tv2_next = 1'b0;
+        end
+        t_v2$d = tv2_next;
+        tv3_next = t_v3$q;
+        if (miss & (t_wp$q == slot3)) begin
+            tv3_next = 1'b1;
         end
         if (fill & (t_rp$q == slot3)) begin
-            t_v3$d = 1'b0;
+            tv3_next = 1'b0;
         end
+        t_v3$d = tv3_next;
+        t_any$d = tv0_next | tv1_next | tv2_next | tv3_next;
         head_line_fill = ans_meta$read_data[(32'h10)+:(10)];
         head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
         head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
@@ -6295,6 +6318,25 @@ module machine$pes$0$cache$sp_inc_x(d,q,clock);
     end
           
 endmodule // machine$pes$0$cache$sp_inc_x
+
+
+module machine$pes$0$cache$t_any(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$cache$t_any
 
 
 module machine$pes$0$cache$t_full(d,q,clock);
@@ -20264,6 +20306,9 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  t_v3$d;
     wire  t_v3$q;
     reg  t_v3$clock;
+    reg  t_any$d;
+    wire  t_any$q;
+    reg  t_any$clock;
     reg  [2:0] t_n$d;
     wire  [2:0] t_n$q;
     reg  t_n$clock;
@@ -20488,6 +20533,10 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  table_full;
     reg  ret_push;
     reg  waiting_any;
+    reg  tv0_next;
+    reg  tv1_next;
+    reg  tv2_next;
+    reg  tv3_next;
     reg  rewind;
     reg  accept;
     reg  tag_hit;
@@ -20713,6 +20762,11 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         .d(t_v3$d),
         .q(t_v3$q),
         .clock(t_v3$clock)
+    );
+    machine$pes$1$cache$t_any t_any(
+        .d(t_any$d),
+        .q(t_any$q),
+        .clock(t_any$clock)
     );
     machine$pes$1$cache$t_n t_n(
         .d(t_n$d),
@@ -21068,6 +21122,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         t_v1$clock = clock;
         t_v2$clock = clock;
         t_v3$clock = clock;
+        t_any$clock = clock;
         t_n$clock = clock;
         t_full$clock = clock;
         t_wp$clock = clock;
@@ -21137,6 +21192,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         t_v1$d = t_v1$q;
         t_v2$d = t_v2$q;
         t_v3$d = t_v3$q;
+        t_any$d = t_any$q;
         t_n$d = t_n$q;
         t_full$d = t_full$q;
         t_wp$d = t_wp$q;
@@ -21197,7 +21253,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         t_wp_inc = t_wp$q + one2;
         t_rp_inc = t_rp$q + one2;
         table_full = t_full$q;
-        waiting_any = t_v0$q | t_v1$q | t_v2$q | t_v3$q;
+        waiting_any = t_any$q;
         rewind = v3$q & (iconf3$q | table_full);
         accept = v3$q & ~iconf3$q & ~table_full;
         tag_hit = match3$q;
@@ -21301,29 +21357,17 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
             t_id0$d = id3$q;
             t_line0$d = line3$q;
         end
-        if (miss & (t_wp$q == slot0)) begin
-            t_v0$d = 1'b1;
-        end
         if (~t_v1$q & (t_wp$q == slot1)) begin
             t_id1$d = id3$q;
             t_line1$d = line3$q;
-        end
-        if (miss & (t_wp$q == slot1)) begin
-            t_v1$d = 1'b1;
         end
         if (~t_v2$q & (t_wp$q == slot2)) begin
             t_id2$d = id3$q;
             t_line2$d = line3$q;
         end
-        if (miss & (t_wp$q == slot2)) begin
-            t_v2$d = 1'b1;
-        end
         if (~t_v3$q & (t_wp$q == slot3)) begin
             t_id3$d = id3$q;
             t_line3$d = line3$q;
-        end
-        if (miss & (t_wp$q == slot3)) begin
-            t_v3$d = 1'b1;
         end
         ret_push = cfg_enable & mem_valid & waiting_any;
         ret$push = ret_push;
@@ -21357,18 +21401,39 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         if (fill) begin
             t_rp$d = t_rp_inc;
         end
+        tv0_next = t_v0$q;
+        if (miss & (t_wp$q == slot0)) begin
+            tv0_next = 1'b1;
+        end
         if (fill & (t_rp$q == slot0)) begin
-            t_v0$d = 1'b0;
+            tv0_next = 1'b0;
+        end
+        t_v0$d = tv0_next;
+        tv1_next = t_v1$q;
+        if (miss & (t_wp$q == slot1)) begin
+            tv1_next = 1'b1;
         end
         if (fill & (t_rp$q == slot1)) begin
-            t_v1$d = 1'b0;
+            tv1_next = 1'b0;
+        end
+        t_v1$d = tv1_next;
+        tv2_next = t_v2$q;
+        if (miss & (t_wp$q == slot2)) begin
+            tv2_next = 1'b1;
         end
         if (fill & (t_rp$q == slot2)) begin
-            t_v2$d = 1'b0;
+            tv2_next = 1'b0;
+        end
+        t_v2$d = tv2_next;
+        tv3_next = t_v3$q;
+        if (miss & (t_wp$q == slot3)) begin
+            tv3_next = 1'b1;
         end
         if (fill & (t_rp$q == slot3)) begin
-            t_v3$d = 1'b0;
+            tv3_next = 1'b0;
         end
+        t_v3$d = tv3_next;
+        t_any$d = tv0_next | tv1_next | tv2_next | tv3_next;
         head_line_fill = ans_meta$read_data[(32'h10)+:(10)];
         head_id_fill = ans_meta$read_data[(32'h0)+:(16)];
         head_key_fill = valid_flag | ((head_id_fill) & 17'h1ffff);
@@ -23699,6 +23764,25 @@ module machine$pes$1$cache$sp_inc_x(d,q,clock);
     end
           
 endmodule // machine$pes$1$cache$sp_inc_x
+
+
+module machine$pes$1$cache$t_any(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$cache$t_any
 
 
 module machine$pes$1$cache$t_full(d,q,clock);
