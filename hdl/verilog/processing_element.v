@@ -8638,9 +8638,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     localparam  c2_6 = 6'b10;
     localparam  c3_6 = 6'b11;
     localparam  c1_6 = 6'b1;
-    localparam  sh_lo = 6'b111101;
-    localparam  sh_m1 = 6'b111111;
-    localparam  sh_m2 = 6'b111110;
     localparam  tag_pass = 3'b1;
     localparam  tag_negx = 3'b10;
     localparam  tag_negy = 3'b100;

@@ -141,7 +141,7 @@
 //! included) and 4252 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
-use crate::formats::{cross, dot, to_bits, PatchSetup, SECTOR_MARGIN, SH_BITS, SH_MAX, SH_MIN};
+use crate::formats::{cross, dot, PatchSetup, SECTOR_MARGIN, SH_MAX, SH_MIN};
 use crate::prim::{FifoControl, FifoRam, Mul18};
 
 pub mod divider;
@@ -661,9 +661,6 @@ pub struct Screener {
     c2_6: Constant<Bits<6>>,
     c3_6: Constant<Bits<6>>,
     c1_6: Constant<Bits<6>>,
-    sh_lo: Constant<Bits<6>>,
-    sh_m1: Constant<Bits<6>>,
-    sh_m2: Constant<Bits<6>>,
     tag_pass: Constant<Bits<3>>,
     tag_negx: Constant<Bits<3>>,
     tag_negy: Constant<Bits<3>>,
@@ -1004,9 +1001,6 @@ impl Default for Screener {
             c2_6: Constant::new(2u64.into()),
             c3_6: Constant::new(3u64.into()),
             c1_6: Constant::new(1u64.into()),
-            sh_lo: Constant::new(to_bits(SH_MIN as i64, SH_BITS).into()),
-            sh_m1: Constant::new(to_bits(-1, SH_BITS).into()),
-            sh_m2: Constant::new(to_bits(-2, SH_BITS).into()),
             tag_pass: Constant::new(1u64.into()),
             tag_negx: Constant::new(2u64.into()),
             tag_negy: Constant::new(4u64.into()),
