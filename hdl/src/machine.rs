@@ -51,6 +51,38 @@ use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
 use rust_hdl::prelude::*;
 
+/// Clocks the port registers add to a load: one on the request's way, one on the answer's.
+pub const PORT_LATENCY: u64 = 2;
+/// Clocks the machine adds to each patch load against a PE wired to the memory directly.
+pub const LOAD_LATENCY: u64 = crate::arbiter::LATENCY + PORT_LATENCY;
+
+/// The cycle model of the machine's own registers: each PE's port register.
+pub mod model {
+    use crate::arbiter::model::Outputs;
+
+    /// A PE's port registers: the request on its way to the arbiter (`request`, the PE's
+    /// `mem_req` with `mem_addr` one clock later), and the answer the PE sees: `valid` (its
+    /// `mem_valid`) and the patch (its `mem_ax` … `mem_by`), the last one answered to it.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct Port {
+        pub request: Option<u16>,
+        pub valid: bool,
+        pub patch: [u32; 4],
+    }
+
+    impl Port {
+        /// One rising edge of PE `p`'s port registers, with the PE's request `request` and the
+        /// arbiter's outputs `a` before it.
+        pub fn step(&mut self, p: usize, request: Option<u16>, a: &Outputs) {
+            self.request = request;
+            self.valid = a.answer == Some(p);
+            if self.valid {
+                self.patch = a.patch;
+            }
+        }
+    }
+}
+
 // A PE never has more requests outstanding than its loader holds, so its queue in the arbiter
 // never overflows.
 const _: () = assert!(QUEUE_DEPTH >= crate::loader::DEPTH);
@@ -81,6 +113,16 @@ macro_rules! machine {
             pub requests: Signal<Out, Bits<32>>,
             pes: [ProcessingElement; N],
             arbiter: MemoryArbiter<N>,
+            // Each PE's port registers: its request one clock on its way to the arbiter, the
+            // arbiter's answer one clock later, so that neither crosses the die with logic
+            // on either side.
+            port_req: [DFF<bool>; N],
+            port_addr: [DFF<Bits<16>>; N],
+            port_valid: [DFF<bool>; N],
+            port_ax: [DFF<Bits<17>>; N],
+            port_ay: [DFF<Bits<17>>; N],
+            port_bx: [DFF<Bits<17>>; N],
+            port_by: [DFF<Bits<17>>; N],
         }
 
         impl<const N: usize> Default for Machine<N> {
@@ -102,6 +144,13 @@ macro_rules! machine {
                     requests: Default::default(),
                     pes: std::array::from_fn(|_| Default::default()),
                     arbiter: Default::default(),
+                    port_req: std::array::from_fn(|_| Default::default()),
+                    port_addr: std::array::from_fn(|_| Default::default()),
+                    port_valid: std::array::from_fn(|_| Default::default()),
+                    port_ax: std::array::from_fn(|_| Default::default()),
+                    port_ay: std::array::from_fn(|_| Default::default()),
+                    port_bx: std::array::from_fn(|_| Default::default()),
+                    port_by: std::array::from_fn(|_| Default::default()),
                 }
             }
         }
@@ -117,13 +166,36 @@ macro_rules! machine {
                     self.pes[i].cfg_cache_enable.next = self.cfg_cache_enable.val();
                     self.pes[i].cfg_cache_mask.next = self.cfg_cache_mask.val();
                     self.pes[i].cfg_cache_flush.next = self.cfg_cache_flush.val();
-                    self.arbiter.pe_req[i].next = self.pes[i].mem_req.val();
-                    self.arbiter.pe_addr[i].next = self.pes[i].mem_addr.val();
-                    self.pes[i].mem_valid.next = self.arbiter.pe_valid[i].val();
-                    self.pes[i].mem_ax.next = self.arbiter.pe_ax.val();
-                    self.pes[i].mem_ay.next = self.arbiter.pe_ay.val();
-                    self.pes[i].mem_bx.next = self.arbiter.pe_bx.val();
-                    self.pes[i].mem_by.next = self.arbiter.pe_by.val();
+                    self.port_req[i].clock.next = self.clock.val();
+                    self.port_addr[i].clock.next = self.clock.val();
+                    self.port_req[i].d.next = self.pes[i].mem_req.val();
+                    self.port_addr[i].d.next = self.pes[i].mem_addr.val();
+                    self.arbiter.pe_req[i].next = self.port_req[i].q.val();
+                    self.arbiter.pe_addr[i].next = self.port_addr[i].q.val();
+                    // The port register: loaded only on this PE's own answers, so no two
+                    // PEs' copies of the patch are the same register (synthesis keeps one
+                    // beside each PE rather than merging them into one across the die).
+                    self.port_valid[i].clock.next = self.clock.val();
+                    self.port_ax[i].clock.next = self.clock.val();
+                    self.port_ay[i].clock.next = self.clock.val();
+                    self.port_bx[i].clock.next = self.clock.val();
+                    self.port_by[i].clock.next = self.clock.val();
+                    self.port_valid[i].d.next = self.arbiter.pe_valid[i].val();
+                    self.port_ax[i].d.next = self.port_ax[i].q.val();
+                    self.port_ay[i].d.next = self.port_ay[i].q.val();
+                    self.port_bx[i].d.next = self.port_bx[i].q.val();
+                    self.port_by[i].d.next = self.port_by[i].q.val();
+                    if self.arbiter.pe_valid[i].val() {
+                        self.port_ax[i].d.next = self.arbiter.pe_ax.val();
+                        self.port_ay[i].d.next = self.arbiter.pe_ay.val();
+                        self.port_bx[i].d.next = self.arbiter.pe_bx.val();
+                        self.port_by[i].d.next = self.arbiter.pe_by.val();
+                    }
+                    self.pes[i].mem_valid.next = self.port_valid[i].q.val();
+                    self.pes[i].mem_ax.next = self.port_ax[i].q.val();
+                    self.pes[i].mem_ay.next = self.port_ay[i].q.val();
+                    self.pes[i].mem_bx.next = self.port_bx[i].q.val();
+                    self.pes[i].mem_by.next = self.port_by[i].q.val();
                 }
                 self.host_req.next = self.arbiter.host_req.val();
                 self.host_addr.next = self.arbiter.host_addr.val();

@@ -195,6 +195,48 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  [16:0] arbiter$host_bx;
     reg  [16:0] arbiter$host_by;
     wire  [31:0] arbiter$requests;
+    reg  port_req$0$d;
+    wire  port_req$0$q;
+    reg  port_req$0$clock;
+    reg  port_req$1$d;
+    wire  port_req$1$q;
+    reg  port_req$1$clock;
+    reg  [15:0] port_addr$0$d;
+    wire  [15:0] port_addr$0$q;
+    reg  port_addr$0$clock;
+    reg  [15:0] port_addr$1$d;
+    wire  [15:0] port_addr$1$q;
+    reg  port_addr$1$clock;
+    reg  port_valid$0$d;
+    wire  port_valid$0$q;
+    reg  port_valid$0$clock;
+    reg  port_valid$1$d;
+    wire  port_valid$1$q;
+    reg  port_valid$1$clock;
+    reg  [16:0] port_ax$0$d;
+    wire  [16:0] port_ax$0$q;
+    reg  port_ax$0$clock;
+    reg  [16:0] port_ax$1$d;
+    wire  [16:0] port_ax$1$q;
+    reg  port_ax$1$clock;
+    reg  [16:0] port_ay$0$d;
+    wire  [16:0] port_ay$0$q;
+    reg  port_ay$0$clock;
+    reg  [16:0] port_ay$1$d;
+    wire  [16:0] port_ay$1$q;
+    reg  port_ay$1$clock;
+    reg  [16:0] port_bx$0$d;
+    wire  [16:0] port_bx$0$q;
+    reg  port_bx$0$clock;
+    reg  [16:0] port_bx$1$d;
+    wire  [16:0] port_bx$1$q;
+    reg  port_bx$1$clock;
+    reg  [16:0] port_by$0$d;
+    wire  [16:0] port_by$0$q;
+    reg  port_by$0$clock;
+    reg  [16:0] port_by$1$d;
+    wire  [16:0] port_by$1$q;
+    reg  port_by$1$clock;
     
     // Sub module instances
     machine$pes$0 pes$0(
@@ -312,6 +354,76 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         .host_by(arbiter$host_by),
         .requests(arbiter$requests)
     );
+    machine$port_req$0 port_req$0(
+        .d(port_req$0$d),
+        .q(port_req$0$q),
+        .clock(port_req$0$clock)
+    );
+    machine$port_req$1 port_req$1(
+        .d(port_req$1$d),
+        .q(port_req$1$q),
+        .clock(port_req$1$clock)
+    );
+    machine$port_addr$0 port_addr$0(
+        .d(port_addr$0$d),
+        .q(port_addr$0$q),
+        .clock(port_addr$0$clock)
+    );
+    machine$port_addr$1 port_addr$1(
+        .d(port_addr$1$d),
+        .q(port_addr$1$q),
+        .clock(port_addr$1$clock)
+    );
+    machine$port_valid$0 port_valid$0(
+        .d(port_valid$0$d),
+        .q(port_valid$0$q),
+        .clock(port_valid$0$clock)
+    );
+    machine$port_valid$1 port_valid$1(
+        .d(port_valid$1$d),
+        .q(port_valid$1$q),
+        .clock(port_valid$1$clock)
+    );
+    machine$port_ax$0 port_ax$0(
+        .d(port_ax$0$d),
+        .q(port_ax$0$q),
+        .clock(port_ax$0$clock)
+    );
+    machine$port_ax$1 port_ax$1(
+        .d(port_ax$1$d),
+        .q(port_ax$1$q),
+        .clock(port_ax$1$clock)
+    );
+    machine$port_ay$0 port_ay$0(
+        .d(port_ay$0$d),
+        .q(port_ay$0$q),
+        .clock(port_ay$0$clock)
+    );
+    machine$port_ay$1 port_ay$1(
+        .d(port_ay$1$d),
+        .q(port_ay$1$q),
+        .clock(port_ay$1$clock)
+    );
+    machine$port_bx$0 port_bx$0(
+        .d(port_bx$0$d),
+        .q(port_bx$0$q),
+        .clock(port_bx$0$clock)
+    );
+    machine$port_bx$1 port_bx$1(
+        .d(port_bx$1$d),
+        .q(port_bx$1$q),
+        .clock(port_bx$1$clock)
+    );
+    machine$port_by$0 port_by$0(
+        .d(port_by$0$d),
+        .q(port_by$0$q),
+        .clock(port_by$0$clock)
+    );
+    machine$port_by$1 port_by$1(
+        .d(port_by$1$d),
+        .q(port_by$1$q),
+        .clock(port_by$1$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -354,13 +466,33 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         pes$0$cfg_cache_enable = cfg_cache_enable;
         pes$0$cfg_cache_mask = cfg_cache_mask;
         pes$0$cfg_cache_flush = cfg_cache_flush;
-        arbiter$pe_req$0 = pes$0$mem_req;
-        arbiter$pe_addr$0 = pes$0$mem_addr;
-        pes$0$mem_valid = arbiter$pe_valid$0;
-        pes$0$mem_ax = arbiter$pe_ax;
-        pes$0$mem_ay = arbiter$pe_ay;
-        pes$0$mem_bx = arbiter$pe_bx;
-        pes$0$mem_by = arbiter$pe_by;
+        port_req$0$clock = clock;
+        port_addr$0$clock = clock;
+        port_req$0$d = pes$0$mem_req;
+        port_addr$0$d = pes$0$mem_addr;
+        arbiter$pe_req$0 = port_req$0$q;
+        arbiter$pe_addr$0 = port_addr$0$q;
+        port_valid$0$clock = clock;
+        port_ax$0$clock = clock;
+        port_ay$0$clock = clock;
+        port_bx$0$clock = clock;
+        port_by$0$clock = clock;
+        port_valid$0$d = arbiter$pe_valid$0;
+        port_ax$0$d = port_ax$0$q;
+        port_ay$0$d = port_ay$0$q;
+        port_bx$0$d = port_bx$0$q;
+        port_by$0$d = port_by$0$q;
+        if (arbiter$pe_valid$0) begin
+            port_ax$0$d = arbiter$pe_ax;
+            port_ay$0$d = arbiter$pe_ay;
+            port_bx$0$d = arbiter$pe_bx;
+            port_by$0$d = arbiter$pe_by;
+        end
+        pes$0$mem_valid = port_valid$0$q;
+        pes$0$mem_ax = port_ax$0$q;
+        pes$0$mem_ay = port_ay$0$q;
+        pes$0$mem_bx = port_bx$0$q;
+        pes$0$mem_by = port_by$0$q;
         pes$1$clock = clock;
         pes$1$dir_we = dir_we$1;
         pes$1$dir_addr = dir_addr$1;
@@ -399,13 +531,33 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         pes$1$cfg_cache_enable = cfg_cache_enable;
         pes$1$cfg_cache_mask = cfg_cache_mask;
         pes$1$cfg_cache_flush = cfg_cache_flush;
-        arbiter$pe_req$1 = pes$1$mem_req;
-        arbiter$pe_addr$1 = pes$1$mem_addr;
-        pes$1$mem_valid = arbiter$pe_valid$1;
-        pes$1$mem_ax = arbiter$pe_ax;
-        pes$1$mem_ay = arbiter$pe_ay;
-        pes$1$mem_bx = arbiter$pe_bx;
-        pes$1$mem_by = arbiter$pe_by;
+        port_req$1$clock = clock;
+        port_addr$1$clock = clock;
+        port_req$1$d = pes$1$mem_req;
+        port_addr$1$d = pes$1$mem_addr;
+        arbiter$pe_req$1 = port_req$1$q;
+        arbiter$pe_addr$1 = port_addr$1$q;
+        port_valid$1$clock = clock;
+        port_ax$1$clock = clock;
+        port_ay$1$clock = clock;
+        port_bx$1$clock = clock;
+        port_by$1$clock = clock;
+        port_valid$1$d = arbiter$pe_valid$1;
+        port_ax$1$d = port_ax$1$q;
+        port_ay$1$d = port_ay$1$q;
+        port_bx$1$d = port_bx$1$q;
+        port_by$1$d = port_by$1$q;
+        if (arbiter$pe_valid$1) begin
+            port_ax$1$d = arbiter$pe_ax;
+            port_ay$1$d = arbiter$pe_ay;
+            port_bx$1$d = arbiter$pe_bx;
+            port_by$1$d = arbiter$pe_by;
+        end
+        pes$1$mem_valid = port_valid$1$q;
+        pes$1$mem_ax = port_ax$1$q;
+        pes$1$mem_ay = port_ay$1$q;
+        pes$1$mem_bx = port_bx$1$q;
+        pes$1$mem_by = port_by$1$q;
         host_req = arbiter$host_req;
         host_addr = arbiter$host_addr;
         arbiter$host_valid = host_valid;
@@ -36693,3 +36845,269 @@ module machine$pes$1$used1(d,q,clock);
     end
           
 endmodule // machine$pes$1$used1
+
+
+module machine$port_addr$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_addr$0
+
+
+module machine$port_addr$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_addr$1
+
+
+module machine$port_ax$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_ax$0
+
+
+module machine$port_ax$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_ax$1
+
+
+module machine$port_ay$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_ay$0
+
+
+module machine$port_ay$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_ay$1
+
+
+module machine$port_bx$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_bx$0
+
+
+module machine$port_bx$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_bx$1
+
+
+module machine$port_by$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_by$0
+
+
+module machine$port_by$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_by$1
+
+
+module machine$port_req$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_req$0
+
+
+module machine$port_req$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_req$1
+
+
+module machine$port_valid$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_valid$0
+
+
+module machine$port_valid$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$port_valid$1

@@ -5,9 +5,10 @@
 //!
 //! - [`Composed`]: `N` PE simulators (rust-hdl's or the compiled one) and the arbiter's cycle
 //!   model ([`Arbiter`], checked against the RTL in every cycle by
-//!   `testbench/tests/arbiter.rs`) stepped in lockstep: in each cycle every PE sees the
-//!   arbiter's registered answer (`mem_valid` if it is its own, the patch on the shared bus), the
-//!   arbiter sees every PE's registered request. All those outputs are registers, so this is
+//!   `testbench/tests/arbiter.rs`) and each PE's port register (`shelling_hdl::machine::model`)
+//!   stepped in lockstep: in each cycle every PE sees its port register (the arbiter's answer
+//!   of the cycle before, if it was its own, and the last patch answered to it), the arbiter
+//!   every PE's request of the cycle before (its port's request register). All those outputs are registers, so this is
 //!   the cycle behaviour of the blocks wired together; it runs at the compiled PE's speed, and
 //!   [`Composed::threaded`] steps half the PEs on a second thread ([`Lockstep`]);
 //! - [`Driver<Machine<N>>`](crate::Driver): rust-hdl's simulation of the machine's own RTL
@@ -27,6 +28,7 @@ use crate::pe::{CacheConfig, Command, CommandHost, PeCounters, PeSetup};
 use crate::pe_sim::{PeInputs, PeOutputs, PeSim};
 use crate::{Clocked, Driver, Error, Result};
 pub use shelling_hdl::arbiter::model::Arbiter;
+use shelling_hdl::machine::model::Port;
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_hdl::formats::Nearest;
 use shelling_hdl::intersection::READOUT_LATENCY;
@@ -60,6 +62,7 @@ pub trait MachineSim {
 pub struct Composed<S: PeSim> {
     sims: Vec<S>,
     arbiter: Arbiter,
+    ports: Vec<Port>,
     inputs: Vec<PeInputs>,
     lockstep: Option<Lockstep<S>>,
 }
@@ -71,7 +74,8 @@ impl<S: PeSim> Composed<S> {
         check_pes(sims.len())?;
         let arbiter = Arbiter::new(sims.len());
         let inputs = vec![PeInputs::default(); sims.len()];
-        Ok(Self { sims, arbiter, inputs, lockstep: None })
+        let ports = vec![Port::default(); sims.len()];
+        Ok(Self { sims, arbiter, ports, inputs, lockstep: None })
     }
 }
 
@@ -105,11 +109,10 @@ impl<S: PeSim> MachineSim for Composed<S> {
     }
 
     fn drive(&mut self, mut set: impl FnMut(usize, &mut PeInputs)) -> Result<()> {
-        let a = self.arbiter.outputs();
-        for (p, i) in self.inputs.iter_mut().enumerate() {
+        for (p, (i, port)) in self.inputs.iter_mut().zip(&self.ports).enumerate() {
             set(p, i);
-            i.mem_valid = a.answer == Some(p);
-            [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = a.patch.map(|w| w as i32);
+            i.mem_valid = port.valid;
+            [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = port.patch.map(|w| w as i32);
         }
         Ok(())
     }
@@ -124,9 +127,11 @@ impl<S: PeSim> MachineSim for Composed<S> {
 
     fn tick(&mut self, answer: Option<[i32; 4]>) -> Result<()> {
         let mut requests = [None; MAX_PES];
-        for (r, sim) in requests.iter_mut().zip(&self.sims) {
+        let a = self.arbiter.outputs();
+        for (p, ((r, port), sim)) in requests.iter_mut().zip(&mut self.ports).zip(&self.sims).enumerate() {
+            *r = port.request;
             let o = sim.outputs();
-            *r = o.mem_req.then_some(o.mem_addr);
+            port.step(p, o.mem_req.then_some(o.mem_addr), &a);
         }
         self.arbiter
             .step(&requests[..self.sims.len()], answer.map(|m| m.map(|c| c as u32)))
