@@ -21,9 +21,16 @@
 //!
 //! # Latency and throughput
 //!
-//! Each PE's as `pe.rs` documents, with every patch load [`crate::arbiter::LATENCY`] clocks
-//! longer (the arbiter's queue, grant and answer registers) and the host port shared: one
-//! request per clock to the host, answered one per `T_c`.
+//! Each PE's as `pe.rs` documents, with every patch load [`LOAD_LATENCY`] = 6 clocks longer:
+//! [`crate::arbiter::LATENCY`] = 4 in the arbiter (its queue, grant and answer registers) and
+//! [`PORT_LATENCY`] = 2 in each PE's port registers (one on the request's way, one on the
+//! answer's). The host port is shared: one request per clock to the host, answered one per
+//! `T_c`.
+//!
+//! The port registers are there for the clock: without them the arbiter's answer register
+//! drove every PE's loader across the die through the cache's pass-through multiplexer, the
+//! machine's critical path. Each PE's copy of the patch is loaded only on that PE's answers,
+//! so synthesis cannot merge the copies into one register.
 //!
 //! # Formats
 //!
@@ -31,9 +38,9 @@
 //!
 //! # Models
 //!
-//! No model of its own: the machine is its parts wired together, every output a register of a
-//! part, so stepping the PEs' simulations and [`crate::arbiter::model::Arbiter`] in lockstep
-//! (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks that
+//! The machine is its parts wired together through its port registers ([`model::Port`]),
+//! every output a register, so stepping the PEs' simulations, [`crate::arbiter::model::Arbiter`]
+//! and the port registers in lockstep (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks that
 //! this block and that composition give every PE the same hits and counters, cycle counts
 //! included, run after run and with each PE on its own queue of sources, and replays a recorded
 //! run through its exported Verilog under Verilator (rung 4).
