@@ -129,7 +129,7 @@ module cache_formal (
     // The miss table, the last fill, the previous cycle's hit, the lookup's miss.
     wire [15:0] t_id0, t_id1, t_id2, t_id3;
     wire [9:0] t_line0, t_line1, t_line2, t_line3;
-    wire        t_v0, t_v1, t_v2, t_v3, t_full;
+    wire        t_v0, t_v1, t_v2, t_v3, t_any, t_full;
     wire [2:0]  t_n;
     wire [1:0]  t_wp, t_rp;
     wire [9:0] f_line1;
@@ -174,7 +174,7 @@ module cache_formal (
         .mlf_q(mlf),
         .t_id0_q(t_id0), .t_id1_q(t_id1), .t_id2_q(t_id2), .t_id3_q(t_id3),
         .t_line0_q(t_line0), .t_line1_q(t_line1), .t_line2_q(t_line2), .t_line3_q(t_line3),
-        .t_v0_q(t_v0), .t_v1_q(t_v1), .t_v2_q(t_v2), .t_v3_q(t_v3), .t_full_q(t_full),
+        .t_v0_q(t_v0), .t_v1_q(t_v1), .t_v2_q(t_v2), .t_v3_q(t_v3), .t_any_q(t_any), .t_full_q(t_full),
         .t_n_q(t_n), .t_wp_q(t_wp), .t_rp_q(t_rp),
         .f_line1_q(f_line1), .f_v1_q(f_v1), .hit_r_q(hit_r), .fl_on_q(fl_on), .miss(miss),
         .ans_words_q(a_words), .ans_tail_ptr_q(a_tail), .ans_rd_ptr_q(a_rd),
@@ -416,6 +416,7 @@ module cache_formal (
         // queue's head, when a miss, is the oldest entry.
         i_t_n: assert(t_n <= 3'd4 && t_full == (t_n == 3'd4) && t_wp == t_rp + t_n[1:0]);
         i_t_v: assert(&ok_t_v);
+        i_t_any: assert(t_any == |t_v);
         i_t_line: assert(&ok_t_line);
         i_t_pos_0: assert(ok_t_pos[0]);
         i_t_pos_1: assert(ok_t_pos[1]);
