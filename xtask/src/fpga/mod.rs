@@ -107,6 +107,11 @@ pub struct FpgaArgs {
     /// $SHELLING_FPGA_VENV (default .venv-fpga at the repository root) first.
     #[arg(long)]
     pub install: bool,
+    /// Resume an interrupted run in the same --out: a block whose Verilog is the one already
+    /// synthesized there is not synthesized again, and a seed whose nextpnr report is there is
+    /// not placed again (its row is read from that report and log).
+    #[arg(long)]
+    pub resume: bool,
 }
 
 /// One block on one family, as `fpga.json` records it.
@@ -206,6 +211,7 @@ struct Flow {
     out: PathBuf,
     tools: BTreeMap<ToolKind, Tool>,
     seeds: Vec<u64>,
+    resume: bool,
 }
 
 /// Runs `cargo xtask fpga`.
@@ -280,7 +286,7 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         bail!("--seeds lists {} seeds: at most 16", seeds.len());
     }
     let (rows, ctx) = if args.merge.is_empty() {
-        let ctx = Flow { out: out.clone(), tools, seeds };
+        let ctx = Flow { out: out.clone(), tools, seeds, resume: args.resume };
         // Every (block, target), reported in this order; run longest first (the whole PE).
         let jobs: Vec<(String, Target)> =
             blocks.iter().flat_map(|b| targets.iter().map(move |t| (b.clone(), t.clone()))).collect();
@@ -306,7 +312,7 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
         seeds.sort();
         seeds.dedup();
-        (rows, Flow { out: out.clone(), tools, seeds })
+        (rows, Flow { out: out.clone(), tools, seeds, resume: false })
     };
     let spreads = spreads(&rows, &block_hashes);
 
@@ -451,6 +457,8 @@ struct Synthesized {
     job: String,
     dir: PathBuf,
     wrapper_ffs: u64,
+    /// The netlist was already there (`--resume`).
+    resumed: bool,
 }
 
 /// Yosys on one block in its wrapper; fills the flip-flop counts of `row`.
@@ -469,6 +477,22 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
     let wrap = wrapper::wrap(block, &ports);
     let source = format!("{block}.v");
     let wrapper_v = "wrapper.v";
+    let same = |name: &str, body: &str| std::fs::read_to_string(dir.join(name)).is_ok_and(|t| t == body);
+    if ctx.resume
+        && same(&source, &text)
+        && same(wrapper_v, &wrap.verilog)
+        && dir.join(NETLIST_JSON).is_file()
+    {
+        eprintln!("{job}: resumed (its netlist is of this Verilog)");
+        let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
+        row.wrapper_ffs = Some(cells.wrapper_ffs);
+        row.ffs = Some(cells.ffs - cells.wrapper_ffs);
+        return Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: true });
+    }
+    // The netlist is about to change: no earlier placement report in this directory holds.
+    for seed in &ctx.seeds {
+        let _ = std::fs::remove_file(dir.join(format!("report-seed{seed}.json")));
+    }
     for (name, body) in [(source.as_str(), text.as_str()), (wrapper_v, wrap.verilog.as_str())] {
         std::fs::write(dir.join(name), body)
             .with_context(|| format!("writing {}", dir.join(name).display()))?;
@@ -488,7 +512,7 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
     let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
     row.wrapper_ffs = Some(cells.wrapper_ffs);
     row.ffs = Some(cells.ffs - cells.wrapper_ffs);
-    Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs })
+    Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: false })
 }
 
 /// The netlist Yosys writes in a job's directory.
@@ -500,8 +524,12 @@ fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row)
     let job = format!("{}-seed{seed}", s.job);
     let report_json = format!("report-seed{seed}.json");
     let report_json = report_json.as_str();
-    // A stale report from an earlier run must not be read as this one's.
-    let _ = std::fs::remove_file(dir.join(report_json));
+    let log = ctx.out.join("logs").join(format!("{job}-nextpnr.log"));
+    let resumed = s.resumed && dir.join(report_json).is_file() && log.is_file();
+    if !resumed {
+        // A stale report from an earlier run must not be read as this one's.
+        let _ = std::fs::remove_file(dir.join(report_json));
+    }
     let mut args = target.nextpnr_device.clone();
     args.extend([
         "--json".to_string(),
@@ -514,11 +542,23 @@ fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row)
         "--report".to_string(),
         report_json.to_string(),
     ]);
-    eprintln!("{job}: nextpnr ({}, {} MHz target)", target.device, target.mhz);
-    let log = ctx.out.join("logs").join(format!("{job}-nextpnr.log"));
-    let t = Instant::now();
-    let status = tool_run(&dir, &ctx.tools[&target.tool], &args, &log)?;
-    row.nextpnr_s = Some(report::round(t.elapsed().as_secs_f64(), 1));
+    let status = if resumed {
+        // Placed by the interrupted run: a report is written only when nextpnr succeeds.
+        eprintln!("{job}: resumed (its report is there)");
+        Status {
+            ok: true,
+            tool: target.tool.native().to_string(),
+            command: "(resumed)".into(),
+            log: log.clone(),
+            code: "resumed".into(),
+        }
+    } else {
+        eprintln!("{job}: nextpnr ({}, {} MHz target)", target.device, target.mhz);
+        let t = Instant::now();
+        let status = tool_run(&dir, &ctx.tools[&target.tool], &args, &log)?;
+        row.nextpnr_s = Some(report::round(t.elapsed().as_secs_f64(), 1));
+        status
+    };
     let log_text = std::fs::read_to_string(&log).unwrap_or_default();
     let packed = report::log_utilisation(&log_text);
     let (used, fits) = if status.ok {
