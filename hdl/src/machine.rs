@@ -47,12 +47,13 @@
 //!
 //! # Resources
 //!
-//! N times the PE's (11 `DP16KD` each), plus the arbiter. On the LFE5U-85F-6 four PEs take
-//! 42,171 LUT4s (50 %), 30,133 FFs, 44 of 208 `DP16KD`s and 64 `MULT18X18D`s and route at
-//! 124.2 MHz, the median of placement seeds 1–3 (122.6–126.0; `hdl/fpga/ecp5-machine.md`,
-//! `cargo xtask fpga --blocks machine_4`); the critical paths are the arbiter's answer register
-//! into a PE's loader across the die and a screener's outside compare. Six PEs (the most whose
-//! LUTs fit) have not been run on this RTL (PERFORMANCE.md).
+//! N times the PE's (11 `DP16KD` each), plus the arbiter and the port registers. On the
+//! LFE5U-85F-6 four PEs take 41,867 LUT4s (50 %), 30,481 FFs, 44 of 208 `DP16KD`s and 64
+//! `MULT18X18D`s and route at 129.2 MHz, the median of placement seeds 1–3 (122.7–132.3;
+//! 124.2 before the port registers; `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga --blocks
+//! machine_4`); the critical paths are inside a PE's screener: the divider's quotient into the
+//! `wx` lane of its output FIFO across a PE spread over the die, and the divider's own stage.
+//! Six PEs (the most whose LUTs fit) have not been run on this RTL (PERFORMANCE.md).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;

@@ -97,14 +97,14 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 1024-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 10344 LUT4s, 7447 flip-flops, 16 `MULT18X18D`,
+//! flow's register wrapper, wrapper excluded): 10291 LUT4s, 7448 flip-flops, 16 `MULT18X18D`,
 //! 11 `DP16KD` (the cache's five, the unit's six), 422 LUT RAMs at placement seed 1; on
-//! LFE5U-85F-6 a median of 156.0 MHz over placement seeds 1–5 (143.8–157.2; 148.3 and 31
+//! LFE5U-85F-6 a median of 153.1 MHz over placement seeds 1–5 (150.3–155.9; 156.0 with
+//! 143.8–157.2 before the cache's `t_any` register; 148.3 and 31
 //! `DP16KD` with the 4096-line cache, before `cmd_ready` became one register and the screener's
 //! exponent flags were registered; 71.8 at seed 1 before the 150 MHz work). Its critical paths:
-//! the cache's miss-table valid bits into the return queue's count (seed 1), the screener's
-//! exponent choice into the divider's inputs (2, 5) and its outside compare (3), the unit's
-//! merge into the key memory's write enable (4) (`hdl/fpga/ecp5.md`, checked against the
+//! the screener's divider stage (seeds 1, 2), its exponent into the divider's inputs (3, 5)
+//! and its `full` flag into the loader's count (4) (`hdl/fpga/ecp5.md`, checked against the
 //! committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
 //!
 //! # Models
