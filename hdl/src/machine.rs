@@ -39,8 +39,9 @@
 //! # Models
 //!
 //! The machine is its parts wired together through its port registers ([`model::Port`]),
-//! every output a register, so stepping the PEs' simulations, [`crate::arbiter::model::Arbiter`]
-//! and the port registers in lockstep (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks that
+//! every output a register, so stepping the PEs' simulations,
+//! [`crate::arbiter::model::Arbiter`] and the port registers in lockstep
+//! (`shelling_testbench::machine`) is its cycle model; `testbench/tests/machine.rs` checks that
 //! this block and that composition give every PE the same hits and counters, cycle counts
 //! included, run after run and with each PE on its own queue of sources, and replays a recorded
 //! run through its exported Verilog under Verilator (rung 4).
@@ -125,12 +126,12 @@ macro_rules! machine {
             // arbiter's answer one clock later, so that neither crosses the die with logic
             // on either side.
             port_req: [DFF<bool>; N],
-            port_addr: [DFF<Bits<16>>; N],
+            port_addr: [DFF<Bits<{ crate::formats::ID_BITS as usize }>>; N],
             port_valid: [DFF<bool>; N],
-            port_ax: [DFF<Bits<17>>; N],
-            port_ay: [DFF<Bits<17>>; N],
-            port_bx: [DFF<Bits<17>>; N],
-            port_by: [DFF<Bits<17>>; N],
+            port_ax: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
+            port_ay: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
+            port_bx: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
+            port_by: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
         }
 
         impl<const N: usize> Default for Machine<N> {

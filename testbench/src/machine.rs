@@ -8,9 +8,10 @@
 //!   `testbench/tests/arbiter.rs`) and each PE's port register (`shelling_hdl::machine::model`)
 //!   stepped in lockstep: in each cycle every PE sees its port register (the arbiter's answer
 //!   of the cycle before, if it was its own, and the last patch answered to it), the arbiter
-//!   every PE's request of the cycle before (its port's request register). All those outputs are registers, so this is
-//!   the cycle behaviour of the blocks wired together; it runs at the compiled PE's speed, and
-//!   [`Composed::threaded`] steps half the PEs on a second thread ([`Lockstep`]);
+//!   every PE's request of the cycle before (its port's request register). All those outputs
+//!   are registers, so this is the cycle behaviour of the blocks wired together; it runs at the
+//!   compiled PE's speed, and [`Composed::threaded`] steps half the PEs on a second thread
+//!   ([`Lockstep`]);
 //! - [`Driver<Machine<N>>`](crate::Driver): rust-hdl's simulation of the machine's own RTL
 //!   (`shelling_hdl::machine`), VCD and all.
 //!
@@ -28,10 +29,10 @@ use crate::pe::{CacheConfig, Command, CommandHost, PeCounters, PeSetup};
 use crate::pe_sim::{PeInputs, PeOutputs, PeSim};
 use crate::{Clocked, Driver, Error, Result};
 pub use shelling_hdl::arbiter::model::Arbiter;
-use shelling_hdl::machine::model::Port;
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_hdl::formats::Nearest;
 use shelling_hdl::intersection::READOUT_LATENCY;
+use shelling_hdl::machine::model::Port;
 use shelling_hdl::machine::Machine;
 
 /// A machine simulated one clock cycle at a time from power-up: `pes()` PEs and their memory

@@ -489,10 +489,9 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
         row.ffs = Some(cells.ffs - cells.wrapper_ffs);
         return Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: true });
     }
-    // The netlist is about to change: no earlier placement report in this directory holds.
-    for seed in &ctx.seeds {
-        let _ = std::fs::remove_file(dir.join(format!("report-seed{seed}.json")));
-    }
+    // The netlist is about to be made again: an older one must not be taken for it by a later
+    // --resume if this synthesis fails (a stale report is removed by `place`, seed by seed).
+    let _ = std::fs::remove_file(dir.join(NETLIST_JSON));
     for (name, body) in [(source.as_str(), text.as_str()), (wrapper_v, wrap.verilog.as_str())] {
         std::fs::write(dir.join(name), body)
             .with_context(|| format!("writing {}", dir.join(name).display()))?;
@@ -555,7 +554,7 @@ fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row)
     } else {
         eprintln!("{job}: nextpnr ({}, {} MHz target)", target.device, target.mhz);
         let t = Instant::now();
-        let status = tool_run(&dir, &ctx.tools[&target.tool], &args, &log)?;
+        let status = tool_run(dir, &ctx.tools[&target.tool], &args, &log)?;
         row.nextpnr_s = Some(report::round(t.elapsed().as_secs_f64(), 1));
         status
     };
