@@ -42,7 +42,7 @@ module intersection_formal (
     input wire        clock,
     // The environment: free in every cycle (the two assumptions below aside).
     input wire        dir_we,
-    input wire [9:0]  dir_addr,
+    input wire [10:0] dir_addr,
     input wire [17:0] dir_x,
     input wire [17:0] dir_y,
     input wire        patch_valid,
@@ -54,21 +54,22 @@ module intersection_formal (
     input wire [17:0] patch_wy,
     input wire [5:0]  patch_sh,
     input wire [15:0] patch_id,
-    input wire [9:0]  patch_first,
+    input wire [10:0] patch_first,
     input wire [10:0] patch_count,
     input wire        patch_retire,
     input wire        res_re,
-    input wire [9:0]  res_addr
+    input wire [10:0] res_addr
 );
     wire        patch_ready, res_hit, busy;
     wire [15:0] res_id;
-    wire [31:0] res_key, tests;
+    wire [31:0] res_key, tests, marks;
     // Internal state, exposed by intersection.sby for the induction (not ports of the exported
     // module): the sequencer and the stage valid bits, registers of the leaves `seq`
     // (IssueSequencer), `pipe` (HitPipe) and `merge` (NearestMerge).
     wire [10:0] remaining;
-    wire [9:0]  cur;
+    wire [10:0] cur;
     wire        p_retire, v1, v2, v3, v4, v5, v6, v7, v8, v9;
+    wire        mk1, mk2, mk3, mk4, mk5, mk6, mk7, mk8, mk9;
 
     intersection_unit dut (
         .clock(clock),
@@ -78,11 +79,13 @@ module intersection_formal (
         .patch_wx(patch_wx), .patch_wy(patch_wy), .patch_sh(patch_sh), .patch_id(patch_id),
         .patch_first(patch_first), .patch_count(patch_count), .patch_retire(patch_retire),
         .res_re(res_re), .res_addr(res_addr), .res_hit(res_hit), .res_id(res_id),
-        .res_key(res_key), .busy(busy), .tests(tests)
+        .res_key(res_key), .busy(busy), .tests(tests), .marks(marks)
 `ifdef INVARIANTS
         , .seq_remaining(remaining), .seq$cur(cur), .seq_p_retire(p_retire),
         .seq$v1(v1), .pipe_v2(v2), .pipe_v3(v3), .pipe_v4(v4), .pipe_v5(v5), .pipe_v6(v6),
-        .pipe_v7(v7), .pipe_v8(v8), .merge_v9(v9)
+        .pipe_v7(v7), .pipe_v8(v8), .merge_v9(v9),
+        .seq$mark1(mk1), .pipe_mk2(mk2), .pipe_mk3(mk3), .pipe_mk4(mk4), .pipe_mk5(mk5),
+        .pipe_mk6(mk6), .pipe_mk7(mk7), .pipe_mark8(mk8), .merge_mark9(mk9)
 `endif
     );
 
@@ -93,23 +96,25 @@ module intersection_formal (
     always @(*) assume(!dir_we || !busy);
 
     // The ray and the patch id the live-bit and no-result-without-input properties follow.
-    (* anyconst *) reg [9:0] F_RAY;
+    (* anyconst *) reg [10:0] F_RAY;
     (* anyconst *) reg [15:0] F_ID;
 
     // ---- The harness's sequencer, from the ports: the documented behaviour. ----
     // A patch transfers when patch_valid && patch_ready; it issues rays first .. first + count - 1
-    // (mod 1024), one per clock; a retire job kills them instead of testing them.
+    // (the low ten bits mod 1024: a range stays in its half of the ray memory), one per clock;
+    // a retire job kills them instead of testing them. A retire of no rays is a marker.
     wire take = patch_valid && patch_ready;
     reg         f_past = 1'b0;
     reg         f_past2 = 1'b0;     // two cycles since power-up (for $past(.., 2))
     reg  [10:0] f_rem = 11'd0;     // rays of the current patch still to issue
-    reg  [9:0]  f_cur = 10'd0;     // the ray issued in this cycle (when f_rem != 0)
+    reg  [10:0] f_cur = 11'd0;     // the ray issued in this cycle (when f_rem != 0)
     reg         f_retire = 1'b0;
     reg  [15:0] f_pid = 16'd0;
     wire        issue = f_rem != 11'd0;
     wire        test = issue && !f_retire;    // a ray of a test job is issued
     reg  [9:1]  f_is = 9'd0;       // f_is[k]: a ray was issued k cycles ago
     reg  [9:1]  f_test = 9'd0;     // f_test[k]: a test ray was issued k cycles ago
+    reg  [9:1]  f_mk = 9'd0;       // f_mk[k]: a marker was taken k cycles ago
     reg  [31:0] f_tests = 32'd0;   // test rays issued at least three cycles ago (saturating)
 
     always @(posedge clock) begin
@@ -122,10 +127,11 @@ module intersection_formal (
             f_pid <= patch_id;
         end else if (issue) begin
             f_rem <= f_rem - 11'd1;
-            f_cur <= f_cur + 10'd1;
+            f_cur <= {f_cur[10], f_cur[9:0] + 10'd1};
         end
         f_is <= {f_is[8:1], issue};
         f_test <= {f_test[8:1], test};
+        f_mk <= {f_mk[8:1], take && patch_retire && patch_count == 11'd0};
         if (f_tests != 32'hffff_ffff) f_tests <= f_tests + f_test[2];
     end
 
@@ -136,9 +142,9 @@ module intersection_formal (
         a_tests_bound: assert(tests <= f_tests);
         if (!f_past) a_tests_init: assert(tests == 32'd0);
         // busy: at least while a ray is issued and the cycle after a test ray; never without
-        // a ray issued in the last nine cycles.
+        // a ray issued or a marker taken in the last nine cycles.
         a_busy_issue: assert(!(issue || f_test[1]) || busy);
-        a_busy_cause: assert(!busy || issue || f_is != 9'd0);
+        a_busy_cause: assert(!busy || issue || f_is != 9'd0 || f_mk != 9'd0);
     end
 
     always @(posedge clock) begin
@@ -162,6 +168,8 @@ module intersection_formal (
         i_stages: assert(v1 == f_test[1] && v2 == f_test[2] && (!v3 || f_test[3])
                          && (!v4 || f_test[4]) && (!v5 || f_test[5]) && (!v6 || f_test[6])
                          && (!v7 || f_test[7]) && (!v8 || f_test[8]) && (!v9 || f_test[9]));
+        // A stage holds a marker exactly when one was taken as many cycles before.
+        i_markers: assert({mk9, mk8, mk7, mk6, mk5, mk4, mk3, mk2, mk1} == f_mk);
     end
 `endif
 

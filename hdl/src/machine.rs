@@ -13,7 +13,7 @@
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock of every PE and the arbiter |
 //! | `dir_we$i` … `res_addr$i` | in | as the PE's | PE `i`'s host ports: directions, source, sectors, commands, readout (`pe.rs`) |
-//! | `cmd_ready$i` … `tests$i` | out | as the PE's | PE `i`'s outputs: command ready, readout, `busy` and its counters |
+//! | `cmd_ready$i` … `marks$i` | out | as the PE's | PE `i`'s outputs: command ready, readout, `busy`, its counters and its markers |
 //! | `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush` | in | 1, 10, 1 | every PE's cache setting (one scene, one size) |
 //! | `host_req`, `host_addr` | out | 1, 16 | the shared host memory's request: one per clock at most |
 //! | `host_valid`, `host_ax` … `host_by` | in | 1, 17 each | its answers, in request order |
@@ -222,7 +222,7 @@ macro_rules! machine {
 machine! {
     inputs {
         dir_we: bool,
-        dir_addr: Bits<10>,
+        dir_addr: Bits<11>,
         dir_x: Bits<18>,
         dir_y: Bits<18>,
         origin_x: Bits<17>,
@@ -237,10 +237,10 @@ machine! {
         cmd_retire: bool,
         cmd_sector: bool,
         cmd_id: Bits<16>,
-        cmd_first: Bits<10>,
+        cmd_first: Bits<11>,
         cmd_count: Bits<11>,
         res_re: bool,
-        res_addr: Bits<10>,
+        res_addr: Bits<11>,
     }
     outputs {
         cmd_ready: bool,
@@ -257,5 +257,6 @@ machine! {
         outside: Bits<32>,
         near: Bits<32>,
         tests: Bits<32>,
+        marks: Bits<32>,
     }
 }

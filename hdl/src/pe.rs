@@ -126,9 +126,9 @@ use rust_hdl::prelude::*;
 pub const TAG_BITS: usize = 6;
 /// Commands the PE holds between acceptance and the intersection unit.
 pub const TAG_DEPTH: usize = 1 << TAG_BITS;
-/// A tag: retire flag (bit 21), first ray (bits 11..20), count (bits 0..10). (The update
+/// A tag: retire flag (bit 22), first ray (bits 11..21), count (bits 0..10). (The update
 /// function spells these bit positions as literals: the Verilog generator copies expressions.)
-const TAG_WIDTH: usize = 22;
+const TAG_WIDTH: usize = 23;
 
 /// The processing element (see the [module documentation](self)).
 #[derive(LogicBlock)]
@@ -136,7 +136,7 @@ pub struct ProcessingElement {
     pub clock: Signal<In, Clock>,
     // Rays.
     pub dir_we: Signal<In, bool>,
-    pub dir_addr: Signal<In, Bits<10>>,
+    pub dir_addr: Signal<In, Bits<11>>,
     pub dir_x: Signal<In, Bits<18>>,
     pub dir_y: Signal<In, Bits<18>>,
     // Source and sector.
@@ -154,7 +154,7 @@ pub struct ProcessingElement {
     pub cmd_retire: Signal<In, bool>,
     pub cmd_sector: Signal<In, bool>,
     pub cmd_id: Signal<In, Bits<16>>,
-    pub cmd_first: Signal<In, Bits<10>>,
+    pub cmd_first: Signal<In, Bits<11>>,
     pub cmd_count: Signal<In, Bits<11>>,
     // The patch cache.
     pub cfg_cache_enable: Signal<In, bool>,
@@ -170,7 +170,7 @@ pub struct ProcessingElement {
     pub mem_by: Signal<In, Bits<17>>,
     // Readout.
     pub res_re: Signal<In, bool>,
-    pub res_addr: Signal<In, Bits<10>>,
+    pub res_addr: Signal<In, Bits<11>>,
     pub res_hit: Signal<Out, bool>,
     pub res_id: Signal<Out, Bits<16>>,
     pub res_key: Signal<Out, Bits<32>>,
@@ -185,6 +185,7 @@ pub struct ProcessingElement {
     pub outside: Signal<Out, Bits<32>>,
     pub near: Signal<Out, Bits<32>>,
     pub tests: Signal<Out, Bits<32>>,
+    pub marks: Signal<Out, Bits<32>>,
     // The datapath.
     loader: PatchLoader,
     cache: PatchCache,
@@ -201,7 +202,7 @@ pub struct ProcessingElement {
     pop: Signal<Local, bool>,
     head_tag: Signal<Local, Bits<TAG_WIDTH>>,
     head_retire: Signal<Local, bool>,
-    head_first: Signal<Local, Bits<10>>,
+    head_first: Signal<Local, Bits<11>>,
     head_count: Signal<Local, Bits<11>>,
     new_tag: Signal<Local, Bits<TAG_WIDTH>>,
     // Sectors: two banks, a pending sector command, the jobs of each bank before the
@@ -218,6 +219,18 @@ pub struct ProcessingElement {
     pend_first_y: DFF<Bits<18>>,
     pend_last_x: DFF<Bits<18>>,
     pend_last_y: DFF<Bits<18>>,
+    pend_origin_x: DFF<Bits<17>>,
+    pend_origin_y: DFF<Bits<17>>,
+    pend_normal_x: DFF<Bits<18>>,
+    pend_normal_y: DFF<Bits<18>>,
+    origin0_x: DFF<Bits<17>>,
+    origin0_y: DFF<Bits<17>>,
+    normal0_x: DFF<Bits<18>>,
+    normal0_y: DFF<Bits<18>>,
+    origin1_x: DFF<Bits<17>>,
+    origin1_y: DFF<Bits<17>>,
+    normal1_x: DFF<Bits<18>>,
+    normal1_y: DFF<Bits<18>>,
     first0_x: DFF<Bits<18>>,
     first0_y: DFF<Bits<18>>,
     last0_x: DFF<Bits<18>>,
@@ -250,6 +263,10 @@ pub struct ProcessingElement {
     new_first_y: Signal<Local, Bits<18>>,
     new_last_x: Signal<Local, Bits<18>>,
     new_last_y: Signal<Local, Bits<18>>,
+    new_origin_x: Signal<Local, Bits<17>>,
+    new_origin_y: Signal<Local, Bits<17>>,
+    new_normal_x: Signal<Local, Bits<18>>,
+    new_normal_y: Signal<Local, Bits<18>>,
     in1: Signal<Local, bool>,
     out0: Signal<Local, bool>,
     out1: Signal<Local, bool>,
@@ -311,6 +328,7 @@ impl Default for ProcessingElement {
             outside: Default::default(),
             near: Default::default(),
             tests: Default::default(),
+            marks: Default::default(),
             loader: Default::default(),
             cache: Default::default(),
             sc_slice: Default::default(),
@@ -334,6 +352,18 @@ impl Default for ProcessingElement {
             pend_first_y: Default::default(),
             pend_last_x: Default::default(),
             pend_last_y: Default::default(),
+            pend_origin_x: Default::default(),
+            pend_origin_y: Default::default(),
+            pend_normal_x: Default::default(),
+            pend_normal_y: Default::default(),
+            origin0_x: Default::default(),
+            origin0_y: Default::default(),
+            normal0_x: Default::default(),
+            normal0_y: Default::default(),
+            origin1_x: Default::default(),
+            origin1_y: Default::default(),
+            normal1_x: Default::default(),
+            normal1_y: Default::default(),
             first0_x: Default::default(),
             first0_y: Default::default(),
             last0_x: Default::default(),
@@ -356,6 +386,10 @@ impl Default for ProcessingElement {
             new_first_y: Default::default(),
             new_last_x: Default::default(),
             new_last_y: Default::default(),
+            new_origin_x: Default::default(),
+            new_origin_y: Default::default(),
+            new_normal_x: Default::default(),
+            new_normal_y: Default::default(),
             in1: Default::default(),
             out0: Default::default(),
             out1: Default::default(),
@@ -383,6 +417,18 @@ impl Logic for ProcessingElement {
             pend_first_y,
             pend_last_x,
             pend_last_y,
+            pend_origin_x,
+            pend_origin_y,
+            pend_normal_x,
+            pend_normal_y,
+            origin0_x,
+            origin0_y,
+            normal0_x,
+            normal0_y,
+            origin1_x,
+            origin1_y,
+            normal1_x,
+            normal1_y,
             first0_x,
             first0_y,
             last0_x,
@@ -418,12 +464,21 @@ impl Logic for ProcessingElement {
         self.res_id.next = self.unit.res_id.val();
         self.res_key.next = self.unit.res_key.val();
 
-        // The source: the screener's setup. The sector: the bank of the patch in the
-        // screener's stage 3.
-        self.screener.origin_x.next = self.origin_x.val();
-        self.screener.origin_y.next = self.origin_y.val();
-        self.screener.normal_x.next = self.normal_x.val();
-        self.screener.normal_y.next = self.normal_y.val();
+        // The source, from the bank of the patch the screener reads it for: the origin that of
+        // the patch it takes (stage 0), the normal that of the patch in its stage 1. The
+        // sector: the bank of the patch in the screener's stage 3.
+        self.screener.origin_x.next = self.origin0_x.q.val();
+        self.screener.origin_y.next = self.origin0_y.q.val();
+        if self.screener.in_bank.val() {
+            self.screener.origin_x.next = self.origin1_x.q.val();
+            self.screener.origin_y.next = self.origin1_y.q.val();
+        }
+        self.screener.normal_x.next = self.normal0_x.q.val();
+        self.screener.normal_y.next = self.normal0_y.q.val();
+        if self.screener.normal_bank.val() {
+            self.screener.normal_x.next = self.normal1_x.q.val();
+            self.screener.normal_y.next = self.normal1_y.q.val();
+        }
         self.screener.first_x.next = self.first0_x.q.val();
         self.screener.first_y.next = self.first0_y.q.val();
         self.screener.last_x.next = self.last0_x.q.val();
@@ -463,11 +518,19 @@ impl Logic for ProcessingElement {
         self.new_first_y.next = self.first_y.val();
         self.new_last_x.next = self.last_x.val();
         self.new_last_y.next = self.last_y.val();
+        self.new_origin_x.next = self.origin_x.val();
+        self.new_origin_y.next = self.origin_y.val();
+        self.new_normal_x.next = self.normal_x.val();
+        self.new_normal_y.next = self.normal_y.val();
         if self.pend.q.val() {
             self.new_first_x.next = self.pend_first_x.q.val();
             self.new_first_y.next = self.pend_first_y.q.val();
             self.new_last_x.next = self.pend_last_x.q.val();
             self.new_last_y.next = self.pend_last_y.q.val();
+            self.new_origin_x.next = self.pend_origin_x.q.val();
+            self.new_origin_y.next = self.pend_origin_y.q.val();
+            self.new_normal_x.next = self.pend_normal_x.q.val();
+            self.new_normal_y.next = self.pend_normal_y.q.val();
         }
         self.pend_next.next = self.pend.q.val();
         if self.sector_in.val() & !self.other_free.val() {
@@ -476,6 +539,10 @@ impl Logic for ProcessingElement {
             self.pend_first_y.d.next = self.first_y.val();
             self.pend_last_x.d.next = self.last_x.val();
             self.pend_last_y.d.next = self.last_y.val();
+            self.pend_origin_x.d.next = self.origin_x.val();
+            self.pend_origin_y.d.next = self.origin_y.val();
+            self.pend_normal_x.d.next = self.normal_x.val();
+            self.pend_normal_y.d.next = self.normal_y.val();
         }
         if (self.sector_in.val() | self.pend.q.val()) & self.other_free.val() {
             self.pend_next.next = false;
@@ -485,11 +552,19 @@ impl Logic for ProcessingElement {
                 self.first0_y.d.next = self.new_first_y.val();
                 self.last0_x.d.next = self.new_last_x.val();
                 self.last0_y.d.next = self.new_last_y.val();
+                self.origin0_x.d.next = self.new_origin_x.val();
+                self.origin0_y.d.next = self.new_origin_y.val();
+                self.normal0_x.d.next = self.new_normal_x.val();
+                self.normal0_y.d.next = self.new_normal_y.val();
             } else {
                 self.first1_x.d.next = self.new_first_x.val();
                 self.first1_y.d.next = self.new_first_y.val();
                 self.last1_x.d.next = self.new_last_x.val();
                 self.last1_y.d.next = self.new_last_y.val();
+                self.origin1_x.d.next = self.new_origin_x.val();
+                self.origin1_y.d.next = self.new_origin_y.val();
+                self.normal1_x.d.next = self.new_normal_x.val();
+                self.normal1_y.d.next = self.new_normal_y.val();
             }
         }
         self.pend.d.next = self.pend_next.val();
@@ -526,7 +601,7 @@ impl Logic for ProcessingElement {
         if self.out1.val() & !self.in1.val() & (self.jobs1.q.val() == self.one7.val()) {
             self.used1.d.next = false;
         }
-        self.new_tag.next = (bit_cast::<TAG_WIDTH, 10>(self.cmd_first.val()) << 11)
+        self.new_tag.next = (bit_cast::<TAG_WIDTH, 11>(self.cmd_first.val()) << 11)
             | bit_cast::<TAG_WIDTH, 11>(self.cmd_count.val());
         if self.cmd_retire.val() {
             self.new_tag.next = self.new_tag.val() | self.retire_flag.val();
@@ -581,8 +656,8 @@ impl Logic for ProcessingElement {
         // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job);
         // what it sends goes through a second slice, whose `in_ready` is a register.
         self.head_tag.next = self.tags.data_out.val();
-        self.head_retire.next = self.head_tag.val().get_bit(21);
-        self.head_first.next = self.head_tag.val().get_bits::<10>(11);
+        self.head_retire.next = self.head_tag.val().get_bit(22);
+        self.head_first.next = self.head_tag.val().get_bits::<11>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
         self.queue.in_id.next = self.sc_slice.out_id.val();
         self.queue.in_ax.next = self.sc_slice.out_ax.val();
@@ -657,5 +732,6 @@ impl Logic for ProcessingElement {
         self.outside.next = self.screener.outside.val();
         self.near.next = self.screener.near.val();
         self.tests.next = self.unit.tests.val();
+        self.marks.next = self.unit.marks.val();
     }
 }

@@ -10,7 +10,7 @@
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock |
 //! | `in_valid`, `in_ready` | in, out | 1, 1 | input stream; `in_ready` (fewer than [`QUEUE_DEPTH`] jobs held) is a register |
-//! | `in_id`, `in_ax` … `in_wy`, `in_sh`, `in_first`, `in_count`, `in_retire` | in | 16, 6 × 18, 6, 10, 11, 1 | the job: patch setup (Q12.6 coordinates, `W` and its exponent), ray range, retire flag |
+//! | `in_id`, `in_ax` … `in_wy`, `in_sh`, `in_first`, `in_count`, `in_retire` | in | 16, 6 × 18, 6, 11, 11, 1 | the job: patch setup (Q12.6 coordinates, `W` and its exponent), ray range, retire flag |
 //! | `out_valid`, `out_ready` | out, in | 1, 1 | output stream; `out_valid` and every `out_*` field depend on registers only |
 //! | `out_id` … `out_retire` | out | as the inputs | the job at the head |
 //! | `occupied` | out | 1 | a job is held (for the PE's `busy`) |
@@ -18,8 +18,8 @@
 //! # Structure, latency and throughput
 //!
 //! A [`FifoControl`] over eight [`FifoRam`] lanes (LUT RAM): id, the six coordinates and
-//! `W` components, and one lane of 28 bits for the exponent, the retire flag and the range
-//! (`sh` in bits 22..27, `retire` in bit 21, `first` in bits 11..20, `count` in bits 0..10).
+//! `W` components, and one lane of 29 bits for the exponent, the retire flag and the range
+//! (`sh` in bits 23..28, `retire` in bit 22, `first` in bits 11..21, `count` in bits 0..10).
 //!
 //! **The input register.** A job taken goes first into a register (`p_valid` and the `p_*`
 //! fields, loaded in every clock) and is written into the lanes one clock later, so that the
@@ -120,7 +120,7 @@ pub struct JobQueue {
     pub in_wx: Signal<In, Bits<18>>,
     pub in_wy: Signal<In, Bits<18>>,
     pub in_sh: Signal<In, Bits<6>>,
-    pub in_first: Signal<In, Bits<10>>,
+    pub in_first: Signal<In, Bits<11>>,
     pub in_count: Signal<In, Bits<11>>,
     pub in_retire: Signal<In, bool>,
     pub out_valid: Signal<Out, bool>,
@@ -133,7 +133,7 @@ pub struct JobQueue {
     pub out_wx: Signal<Out, Bits<18>>,
     pub out_wy: Signal<Out, Bits<18>>,
     pub out_sh: Signal<Out, Bits<6>>,
-    pub out_first: Signal<Out, Bits<10>>,
+    pub out_first: Signal<Out, Bits<11>>,
     pub out_count: Signal<Out, Bits<11>>,
     pub out_retire: Signal<Out, bool>,
     pub occupied: Signal<Out, bool>,
@@ -146,7 +146,7 @@ pub struct JobQueue {
     lane_wx: FifoRam<18, QUEUE_BITS>,
     lane_wy: FifoRam<18, QUEUE_BITS>,
     /// `sh`, `retire`, `first`, `count`.
-    lane_job: FifoRam<28, QUEUE_BITS>,
+    lane_job: FifoRam<29, QUEUE_BITS>,
     /// The input register: a job taken at the last edge, written into the lanes at this one.
     p_valid: DFF<bool>,
     p_id: DFF<Bits<16>>,
@@ -156,7 +156,7 @@ pub struct JobQueue {
     p_by: DFF<Bits<18>>,
     p_wx: DFF<Bits<18>>,
     p_wy: DFF<Bits<18>>,
-    p_job: DFF<Bits<28>>,
+    p_job: DFF<Bits<29>>,
     /// Jobs taken and not given (the input register's included).
     held: DFF<Bits<5>>,
     /// `held` is [`QUEUE_DEPTH`].
@@ -164,12 +164,12 @@ pub struct JobQueue {
     take: Signal<Local, bool>,
     push: Signal<Local, bool>,
     pop: Signal<Local, bool>,
-    sh28: Signal<Local, Bits<28>>,
-    first28: Signal<Local, Bits<28>>,
-    count28: Signal<Local, Bits<28>>,
-    job_in: Signal<Local, Bits<28>>,
-    job_out: Signal<Local, Bits<28>>,
-    retire_bit: Constant<Bits<28>>,
+    sh_lane: Signal<Local, Bits<29>>,
+    first_lane: Signal<Local, Bits<29>>,
+    count_lane: Signal<Local, Bits<29>>,
+    job_in: Signal<Local, Bits<29>>,
+    job_out: Signal<Local, Bits<29>>,
+    retire_bit: Constant<Bits<29>>,
     one5: Constant<Bits<5>>,
     almost_full: Constant<Bits<5>>,
     full: Constant<Bits<5>>,
@@ -230,12 +230,12 @@ impl Default for JobQueue {
             take: Default::default(),
             push: Default::default(),
             pop: Default::default(),
-            sh28: Default::default(),
-            first28: Default::default(),
-            count28: Default::default(),
+            sh_lane: Default::default(),
+            first_lane: Default::default(),
+            count_lane: Default::default(),
             job_in: Default::default(),
             job_out: Default::default(),
-            retire_bit: Constant::new((1u64 << 21).into()),
+            retire_bit: Constant::new((1u64 << 22).into()),
             one5: Constant::new(1u64.into()),
             almost_full: Constant::new(((QUEUE_DEPTH - 1) as u64).into()),
             full: Constant::new((QUEUE_DEPTH as u64).into()),
@@ -264,10 +264,10 @@ impl Logic for JobQueue {
         self.take.next = self.in_valid.val() & !self.held_full.q.val();
         self.push.next = self.p_valid.q.val();
         self.control.push.next = self.push.val();
-        self.sh28.next = bit_cast::<28, 6>(self.in_sh.val());
-        self.first28.next = bit_cast::<28, 10>(self.in_first.val());
-        self.count28.next = bit_cast::<28, 11>(self.in_count.val());
-        self.job_in.next = (self.sh28.val() << 22) | (self.first28.val() << 11) | self.count28.val();
+        self.sh_lane.next = bit_cast::<29, 6>(self.in_sh.val());
+        self.first_lane.next = bit_cast::<29, 11>(self.in_first.val());
+        self.count_lane.next = bit_cast::<29, 11>(self.in_count.val());
+        self.job_in.next = (self.sh_lane.val() << 23) | (self.first_lane.val() << 11) | self.count_lane.val();
         if self.in_retire.val() {
             self.job_in.next = self.job_in.val() | self.retire_bit.val();
         }
@@ -312,9 +312,9 @@ impl Logic for JobQueue {
         self.out_wx.next = self.lane_wx.read_data.val();
         self.out_wy.next = self.lane_wy.read_data.val();
         self.job_out.next = self.lane_job.read_data.val();
-        self.out_sh.next = self.job_out.val().get_bits::<6>(22);
-        self.out_retire.next = self.job_out.val().get_bit(21);
-        self.out_first.next = self.job_out.val().get_bits::<10>(11);
+        self.out_sh.next = self.job_out.val().get_bits::<6>(23);
+        self.out_retire.next = self.job_out.val().get_bit(22);
+        self.out_first.next = self.job_out.val().get_bits::<11>(11);
         self.out_count.next = self.job_out.val().get_bits::<11>(0);
 
         // Every lane shares the control's addresses, write enable and pop.

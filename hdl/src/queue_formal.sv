@@ -38,7 +38,7 @@ module queue_formal (
     input wire [17:0] in_wx,
     input wire [17:0] in_wy,
     input wire [5:0]  in_sh,
-    input wire [9:0]  in_first,
+    input wire [10:0] in_first,
     input wire [10:0] in_count,
     input wire        in_retire,
     input wire        out_ready,
@@ -52,19 +52,19 @@ module queue_formal (
     wire [15:0] out_id;
     wire [17:0] out_ax, out_ay, out_bx, out_by, out_wx, out_wy;
     wire [5:0]  out_sh;
-    wire [9:0]  out_first;
+    wire [10:0] out_first;
     wire [10:0] out_count;
 `ifdef INDUCTION
     wire [4:0]  words;
     wire [3:0]  tail_ptr, rd_ptr, rd_inc_x;
     wire [15:0] m_id [0:15];
     wire [17:0] m_ax [0:15], m_ay [0:15], m_bx [0:15], m_by [0:15], m_wx [0:15], m_wy [0:15];
-    wire [27:0] m_job [0:15];
+    wire [28:0] m_job [0:15];
     // The input register (the job taken at the last edge) and the held count.
     wire        p_valid, held_full;
     wire [15:0] p_id;
     wire [17:0] p_ax, p_ay, p_bx, p_by, p_wx, p_wy;
-    wire [27:0] p_job;
+    wire [28:0] p_job;
     wire [4:0]  held;
 `endif
 
@@ -89,9 +89,9 @@ module queue_formal (
     );
 
     // A job as one word: every field, in port order.
-    wire [170:0] in_job = {in_id, in_ax, in_ay, in_bx, in_by, in_wx, in_wy, in_sh, in_first,
+    wire [171:0] in_job = {in_id, in_ax, in_ay, in_bx, in_by, in_wx, in_wy, in_sh, in_first,
                            in_count, in_retire};
-    wire [170:0] out_job = {out_id, out_ax, out_ay, out_bx, out_by, out_wx, out_wy, out_sh,
+    wire [171:0] out_job = {out_id, out_ax, out_ay, out_bx, out_by, out_wx, out_wy, out_sh,
                             out_first, out_count, out_retire};
     wire take = in_valid && in_ready;
     wire give = out_valid && out_ready;
@@ -112,7 +112,7 @@ module queue_formal (
 
     // ---- The followed job. ----
     reg         f_trk = 1'b0;
-    reg [170:0] f_job = 171'd0;
+    reg [171:0] f_job = 172'd0;
     reg [5:0]   f_ahead = 6'd0;  // jobs to leave before it
     wire        f_head = f_trk && f_ahead == 6'd0;
     always @(posedge clock) begin
@@ -147,18 +147,18 @@ module queue_formal (
 `ifdef INDUCTION
     // ---- Invariants over the internal state (the induction's strengthening). ----
     // Slot i of the lanes as a job, fields in port order (the fourth lane unpacked: sh in bits
-    // 22..27, retire in 21, first in 11..20, count in 0..10).
-    wire [170:0] m [0:15];
+    // 23..28, retire in 22, first in 11..21, count in 0..10).
+    wire [171:0] m [0:15];
     genvar i;
     generate
         for (i = 0; i < 16; i = i + 1) begin : slot
             assign m[i] = {m_id[i], m_ax[i], m_ay[i], m_bx[i], m_by[i], m_wx[i], m_wy[i],
-                           m_job[i][27:22], m_job[i][20:11], m_job[i][10:0], m_job[i][21]};
+                           m_job[i][28:23], m_job[i][21:11], m_job[i][10:0], m_job[i][22]};
         end
     endgenerate
     // The input register as a job.
-    wire [170:0] p = {p_id, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_job[27:22], p_job[20:11],
-                      p_job[10:0], p_job[21]};
+    wire [171:0] p = {p_id, p_ax, p_ay, p_bx, p_by, p_wx, p_wy, p_job[28:23], p_job[21:11],
+                      p_job[10:0], p_job[22]};
     always @(*) begin
         i_held: assert({1'b0, held} == f_held && held_full == (f_held == DEPTH));
         i_p_valid: assert(p_valid == f_tp);

@@ -15,7 +15,7 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     input wire  [17:0] in_wx;
     input wire  [17:0] in_wy;
     input wire  [5:0] in_sh;
-    input wire  [9:0] in_first;
+    input wire  [10:0] in_first;
     input wire  [10:0] in_count;
     input wire  in_retire;
     output reg  out_valid;
@@ -28,13 +28,13 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     output reg  [17:0] out_wx;
     output reg  [17:0] out_wy;
     output reg  [5:0] out_sh;
-    output reg  [9:0] out_first;
+    output reg  [10:0] out_first;
     output reg  [10:0] out_count;
     output reg  out_retire;
     output reg  occupied;
     
     // Constant declarations
-    localparam  retire_bit = 28'h200000;
+    localparam  retire_bit = 29'h400000;
     localparam  one5 = 5'b1;
     localparam  almost_full = 5'b1111;
     localparam  full = 5'b10000;
@@ -107,12 +107,12 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     wire  [17:0] lane_wy$read_data;
     reg  lane_job$clock;
     reg  [3:0] lane_job$write_address;
-    reg  [27:0] lane_job$write_data;
+    reg  [28:0] lane_job$write_data;
     reg  lane_job$write_enable;
     reg  [3:0] lane_job$head_address;
     reg  [3:0] lane_job$next_address;
     reg  lane_job$pop;
-    wire  [27:0] lane_job$read_data;
+    wire  [28:0] lane_job$read_data;
     reg  p_valid$d;
     wire  p_valid$q;
     reg  p_valid$clock;
@@ -137,8 +137,8 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     reg  [17:0] p_wy$d;
     wire  [17:0] p_wy$q;
     reg  p_wy$clock;
-    reg  [27:0] p_job$d;
-    wire  [27:0] p_job$q;
+    reg  [28:0] p_job$d;
+    wire  [28:0] p_job$q;
     reg  p_job$clock;
     reg  [4:0] held$d;
     wire  [4:0] held$q;
@@ -151,11 +151,11 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
     reg  take;
     reg  push;
     reg  pop;
-    reg  [27:0] sh28;
-    reg  [27:0] first28;
-    reg  [27:0] count28;
-    reg  [27:0] job_in;
-    reg  [27:0] job_out;
+    reg  [28:0] sh_lane;
+    reg  [28:0] first_lane;
+    reg  [28:0] count_lane;
+    reg  [28:0] job_in;
+    reg  [28:0] job_out;
     
     // Sub module instances
     job_queue$control control(
@@ -341,10 +341,10 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
         take = in_valid & ~held_full$q;
         push = p_valid$q;
         control$push = push;
-        sh28 = ((in_sh) & 28'hfffffff);
-        first28 = ((in_first) & 28'hfffffff);
-        count28 = ((in_count) & 28'hfffffff);
-        job_in = (sh28 << 32'h16) | (first28 << 32'hb) | count28;
+        sh_lane = ((in_sh) & 29'h1fffffff);
+        first_lane = ((in_first) & 29'h1fffffff);
+        count_lane = ((in_count) & 29'h1fffffff);
+        job_in = (sh_lane << 32'h17) | (first_lane << 32'hb) | count_lane;
         if (in_retire) begin
             job_in = job_in | retire_bit;
         end
@@ -384,9 +384,9 @@ module job_queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_
         out_wx = lane_wx$read_data;
         out_wy = lane_wy$read_data;
         job_out = lane_job$read_data;
-        out_sh = job_out[(32'h16)+:(6)];
-        out_retire = job_out[32'h15];
-        out_first = job_out[(32'hb)+:(10)];
+        out_sh = job_out[(32'h17)+:(6)];
+        out_retire = job_out[32'h16];
+        out_first = job_out[(32'hb)+:(11)];
         out_count = job_out[(32'h0)+:(11)];
         lane_id$write_address = control$tail_address;
         lane_id$write_enable = push;
@@ -914,23 +914,23 @@ module job_queue$lane_job(clock,write_address,write_data,write_enable,head_addre
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [27:0] write_data;
+    input wire  [28:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [27:0] read_data;
+    output reg  [28:0] read_data;
     
     // Update code (custom)
-    reg [27:0] mem [0:15];
-    reg [27:0] head_r;
-    reg [27:0] next_r;
+    reg [28:0] mem [0:15];
+    reg [28:0] head_r;
+    reg [28:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [27:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 28'd0;
+    reg [28:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -941,9 +941,9 @@ module job_queue$lane_job(clock,write_address,write_data,write_enable,head_addre
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 28'd0;
-       head_r = 28'd0;
-       next_r = 28'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
+       head_r = 29'd0;
+       next_r = 29'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -1151,13 +1151,13 @@ endmodule // job_queue$p_id
 module job_queue$p_job(d,q,clock);
     
     // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
+    input wire  [28:0] d;
+    output reg  [28:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 28'h0;
+       q = 29'h0;
     end
     
     always @(posedge clock) begin

@@ -1,14 +1,14 @@
 // machine: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir_y$0,dir_y$1,origin_x$0,origin_x$1,origin_y$0,origin_y$1,normal_x$0,normal_x$1,normal_y$0,normal_y$1,first_x$0,first_x$1,first_y$0,first_y$1,last_x$0,last_x$1,last_y$0,last_y$1,cmd_valid$0,cmd_valid$1,cmd_retire$0,cmd_retire$1,cmd_sector$0,cmd_sector$1,cmd_id$0,cmd_id$1,cmd_first$0,cmd_first$1,cmd_count$0,cmd_count$1,res_re$0,res_re$1,res_addr$0,res_addr$1,cmd_ready$0,cmd_ready$1,res_hit$0,res_hit$1,res_id$0,res_id$1,res_key$0,res_key$1,busy$0,busy$1,loads$0,loads$1,cache_hits$0,cache_hits$1,cache_misses$0,cache_misses$1,passed$0,passed$1,backward$0,backward$1,back_facing$0,back_facing$1,outside$0,outside$1,near$0,near$1,tests$0,tests$1,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,host_req,host_addr,host_valid,host_ax,host_ay,host_bx,host_by,requests);
+module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir_y$0,dir_y$1,origin_x$0,origin_x$1,origin_y$0,origin_y$1,normal_x$0,normal_x$1,normal_y$0,normal_y$1,first_x$0,first_x$1,first_y$0,first_y$1,last_x$0,last_x$1,last_y$0,last_y$1,cmd_valid$0,cmd_valid$1,cmd_retire$0,cmd_retire$1,cmd_sector$0,cmd_sector$1,cmd_id$0,cmd_id$1,cmd_first$0,cmd_first$1,cmd_count$0,cmd_count$1,res_re$0,res_re$1,res_addr$0,res_addr$1,cmd_ready$0,cmd_ready$1,res_hit$0,res_hit$1,res_id$0,res_id$1,res_key$0,res_key$1,busy$0,busy$1,loads$0,loads$1,cache_hits$0,cache_hits$1,cache_misses$0,cache_misses$1,passed$0,passed$1,backward$0,backward$1,back_facing$0,back_facing$1,outside$0,outside$1,near$0,near$1,tests$0,tests$1,marks$0,marks$1,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,host_req,host_addr,host_valid,host_ax,host_ay,host_bx,host_by,requests);
     
     // Module arguments
     input wire  clock;
     input wire  dir_we$0;
     input wire  dir_we$1;
-    input wire  [9:0] dir_addr$0;
-    input wire  [9:0] dir_addr$1;
+    input wire  [10:0] dir_addr$0;
+    input wire  [10:0] dir_addr$1;
     input wire  [17:0] dir_x$0;
     input wire  [17:0] dir_x$1;
     input wire  [17:0] dir_y$0;
@@ -37,14 +37,14 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     input wire  cmd_sector$1;
     input wire  [15:0] cmd_id$0;
     input wire  [15:0] cmd_id$1;
-    input wire  [9:0] cmd_first$0;
-    input wire  [9:0] cmd_first$1;
+    input wire  [10:0] cmd_first$0;
+    input wire  [10:0] cmd_first$1;
     input wire  [10:0] cmd_count$0;
     input wire  [10:0] cmd_count$1;
     input wire  res_re$0;
     input wire  res_re$1;
-    input wire  [9:0] res_addr$0;
-    input wire  [9:0] res_addr$1;
+    input wire  [10:0] res_addr$0;
+    input wire  [10:0] res_addr$1;
     output reg  cmd_ready$0;
     output reg  cmd_ready$1;
     output reg  res_hit$0;
@@ -73,6 +73,8 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     output reg  [31:0] near$1;
     output reg  [31:0] tests$0;
     output reg  [31:0] tests$1;
+    output reg  [31:0] marks$0;
+    output reg  [31:0] marks$1;
     input wire  cfg_cache_enable;
     input wire  [9:0] cfg_cache_mask;
     input wire  cfg_cache_flush;
@@ -88,7 +90,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     // Stub signals
     reg  pes$0$clock;
     reg  pes$0$dir_we;
-    reg  [9:0] pes$0$dir_addr;
+    reg  [10:0] pes$0$dir_addr;
     reg  [17:0] pes$0$dir_x;
     reg  [17:0] pes$0$dir_y;
     reg  [16:0] pes$0$origin_x;
@@ -104,7 +106,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  pes$0$cmd_retire;
     reg  pes$0$cmd_sector;
     reg  [15:0] pes$0$cmd_id;
-    reg  [9:0] pes$0$cmd_first;
+    reg  [10:0] pes$0$cmd_first;
     reg  [10:0] pes$0$cmd_count;
     reg  pes$0$cfg_cache_enable;
     reg  [9:0] pes$0$cfg_cache_mask;
@@ -117,7 +119,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  [16:0] pes$0$mem_bx;
     reg  [16:0] pes$0$mem_by;
     reg  pes$0$res_re;
-    reg  [9:0] pes$0$res_addr;
+    reg  [10:0] pes$0$res_addr;
     wire  pes$0$res_hit;
     wire  [15:0] pes$0$res_id;
     wire  [31:0] pes$0$res_key;
@@ -131,9 +133,10 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     wire  [31:0] pes$0$outside;
     wire  [31:0] pes$0$near;
     wire  [31:0] pes$0$tests;
+    wire  [31:0] pes$0$marks;
     reg  pes$1$clock;
     reg  pes$1$dir_we;
-    reg  [9:0] pes$1$dir_addr;
+    reg  [10:0] pes$1$dir_addr;
     reg  [17:0] pes$1$dir_x;
     reg  [17:0] pes$1$dir_y;
     reg  [16:0] pes$1$origin_x;
@@ -149,7 +152,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  pes$1$cmd_retire;
     reg  pes$1$cmd_sector;
     reg  [15:0] pes$1$cmd_id;
-    reg  [9:0] pes$1$cmd_first;
+    reg  [10:0] pes$1$cmd_first;
     reg  [10:0] pes$1$cmd_count;
     reg  pes$1$cfg_cache_enable;
     reg  [9:0] pes$1$cfg_cache_mask;
@@ -162,7 +165,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  [16:0] pes$1$mem_bx;
     reg  [16:0] pes$1$mem_by;
     reg  pes$1$res_re;
-    reg  [9:0] pes$1$res_addr;
+    reg  [10:0] pes$1$res_addr;
     wire  pes$1$res_hit;
     wire  [15:0] pes$1$res_id;
     wire  [31:0] pes$1$res_key;
@@ -176,6 +179,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     wire  [31:0] pes$1$outside;
     wire  [31:0] pes$1$near;
     wire  [31:0] pes$1$tests;
+    wire  [31:0] pes$1$marks;
     reg  arbiter$clock;
     reg  arbiter$pe_req$0;
     reg  arbiter$pe_req$1;
@@ -284,7 +288,8 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         .back_facing(pes$0$back_facing),
         .outside(pes$0$outside),
         .near(pes$0$near),
-        .tests(pes$0$tests)
+        .tests(pes$0$tests),
+        .marks(pes$0$marks)
     );
     machine$pes$1 pes$1(
         .clock(pes$1$clock),
@@ -331,7 +336,8 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         .back_facing(pes$1$back_facing),
         .outside(pes$1$outside),
         .near(pes$1$near),
-        .tests(pes$1$tests)
+        .tests(pes$1$tests),
+        .marks(pes$1$marks)
     );
     machine$arbiter arbiter(
         .clock(arbiter$clock),
@@ -463,6 +469,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         outside$0 = pes$0$outside;
         near$0 = pes$0$near;
         tests$0 = pes$0$tests;
+        marks$0 = pes$0$marks;
         pes$0$cfg_cache_enable = cfg_cache_enable;
         pes$0$cfg_cache_mask = cfg_cache_mask;
         pes$0$cfg_cache_flush = cfg_cache_flush;
@@ -528,6 +535,7 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         outside$1 = pes$1$outside;
         near$1 = pes$1$near;
         tests$1 = pes$1$tests;
+        marks$1 = pes$1$marks;
         pes$1$cfg_cache_enable = cfg_cache_enable;
         pes$1$cfg_cache_mask = cfg_cache_mask;
         pes$1$cfg_cache_flush = cfg_cache_flush;
@@ -1961,12 +1969,12 @@ module machine$arbiter$valid_r$1(d,q,clock);
 endmodule // machine$arbiter$valid_r$1
 
 
-module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_sector,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
+module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_sector,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests,marks);
     
     // Module arguments
     input wire  clock;
     input wire  dir_we;
-    input wire  [9:0] dir_addr;
+    input wire  [10:0] dir_addr;
     input wire  [17:0] dir_x;
     input wire  [17:0] dir_y;
     input wire  [16:0] origin_x;
@@ -1982,7 +1990,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     input wire  cmd_retire;
     input wire  cmd_sector;
     input wire  [15:0] cmd_id;
-    input wire  [9:0] cmd_first;
+    input wire  [10:0] cmd_first;
     input wire  [10:0] cmd_count;
     input wire  cfg_cache_enable;
     input wire  [9:0] cfg_cache_mask;
@@ -1995,7 +2003,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     input wire  [16:0] mem_bx;
     input wire  [16:0] mem_by;
     input wire  res_re;
-    input wire  [9:0] res_addr;
+    input wire  [10:0] res_addr;
     output reg  res_hit;
     output reg  [15:0] res_id;
     output reg  [31:0] res_key;
@@ -2009,13 +2017,14 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     output reg  [31:0] outside;
     output reg  [31:0] near;
     output reg  [31:0] tests;
+    output reg  [31:0] marks;
     
     // Constant declarations
     localparam  one7 = 7'b1;
     localparam  almost_full = 7'b111111;
     localparam  zero1 = 1'b0;
     localparam  one1 = 1'b1;
-    localparam  retire_flag = 22'h200000;
+    localparam  retire_flag = 23'h400000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
     
@@ -2102,7 +2111,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] queue$in_wx;
     reg  [17:0] queue$in_wy;
     reg  [5:0] queue$in_sh;
-    reg  [9:0] queue$in_first;
+    reg  [10:0] queue$in_first;
     reg  [10:0] queue$in_count;
     reg  queue$in_retire;
     wire  queue$out_valid;
@@ -2115,7 +2124,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [17:0] queue$out_wx;
     wire  [17:0] queue$out_wy;
     wire  [5:0] queue$out_sh;
-    wire  [9:0] queue$out_first;
+    wire  [10:0] queue$out_first;
     wire  [10:0] queue$out_count;
     wire  queue$out_retire;
     wire  queue$occupied;
@@ -2138,6 +2147,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  screener$in_bank;
     wire  screener$sector_read;
     wire  screener$sector_bank;
+    wire  screener$normal_bank;
     wire  screener$out_valid;
     reg  screener$out_ready;
     wire  [15:0] screener$out_id;
@@ -2156,7 +2166,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [31:0] screener$near;
     reg  unit$clock;
     reg  unit$dir_we;
-    reg  [9:0] unit$dir_addr;
+    reg  [10:0] unit$dir_addr;
     reg  [17:0] unit$dir_x;
     reg  [17:0] unit$dir_y;
     reg  unit$patch_valid;
@@ -2169,22 +2179,23 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] unit$patch_wy;
     reg  [5:0] unit$patch_sh;
     reg  [15:0] unit$patch_id;
-    reg  [9:0] unit$patch_first;
+    reg  [10:0] unit$patch_first;
     reg  [10:0] unit$patch_count;
     reg  unit$patch_retire;
     reg  unit$res_re;
-    reg  [9:0] unit$res_addr;
+    reg  [10:0] unit$res_addr;
     wire  unit$res_hit;
     wire  [15:0] unit$res_id;
     wire  [31:0] unit$res_key;
     wire  unit$busy;
     wire  [31:0] unit$tests;
+    wire  [31:0] unit$marks;
     reg  tags$clock;
     reg  tags$push;
-    reg  [21:0] tags$data_in;
+    reg  [22:0] tags$data_in;
     reg  tags$pop;
     wire  tags$valid;
-    wire  [21:0] tags$data_out;
+    wire  [22:0] tags$data_out;
     wire  [6:0] tags$count;
     reg  job_banks$clock;
     reg  job_banks$push;
@@ -2211,6 +2222,42 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] pend_last_y$d;
     wire  [17:0] pend_last_y$q;
     reg  pend_last_y$clock;
+    reg  [16:0] pend_origin_x$d;
+    wire  [16:0] pend_origin_x$q;
+    reg  pend_origin_x$clock;
+    reg  [16:0] pend_origin_y$d;
+    wire  [16:0] pend_origin_y$q;
+    reg  pend_origin_y$clock;
+    reg  [17:0] pend_normal_x$d;
+    wire  [17:0] pend_normal_x$q;
+    reg  pend_normal_x$clock;
+    reg  [17:0] pend_normal_y$d;
+    wire  [17:0] pend_normal_y$q;
+    reg  pend_normal_y$clock;
+    reg  [16:0] origin0_x$d;
+    wire  [16:0] origin0_x$q;
+    reg  origin0_x$clock;
+    reg  [16:0] origin0_y$d;
+    wire  [16:0] origin0_y$q;
+    reg  origin0_y$clock;
+    reg  [17:0] normal0_x$d;
+    wire  [17:0] normal0_x$q;
+    reg  normal0_x$clock;
+    reg  [17:0] normal0_y$d;
+    wire  [17:0] normal0_y$q;
+    reg  normal0_y$clock;
+    reg  [16:0] origin1_x$d;
+    wire  [16:0] origin1_x$q;
+    reg  origin1_x$clock;
+    reg  [16:0] origin1_y$d;
+    wire  [16:0] origin1_y$q;
+    reg  origin1_y$clock;
+    reg  [17:0] normal1_x$d;
+    wire  [17:0] normal1_x$q;
+    reg  normal1_x$clock;
+    reg  [17:0] normal1_y$d;
+    wire  [17:0] normal1_y$q;
+    reg  normal1_y$clock;
     reg  [17:0] first0_x$d;
     wire  [17:0] first0_x$q;
     reg  first0_x$clock;
@@ -2257,11 +2304,11 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     // Local signals
     reg  accept;
     reg  pop;
-    reg  [21:0] head_tag;
+    reg  [22:0] head_tag;
     reg  head_retire;
-    reg  [9:0] head_first;
+    reg  [10:0] head_first;
     reg  [10:0] head_count;
-    reg  [21:0] new_tag;
+    reg  [22:0] new_tag;
     reg  room;
     reg  job;
     reg  tags_full_next;
@@ -2272,6 +2319,10 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] new_first_y;
     reg  [17:0] new_last_x;
     reg  [17:0] new_last_y;
+    reg  [16:0] new_origin_x;
+    reg  [16:0] new_origin_y;
+    reg  [17:0] new_normal_x;
+    reg  [17:0] new_normal_y;
     reg  in1;
     reg  out0;
     reg  out1;
@@ -2405,6 +2456,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .in_bank(screener$in_bank),
         .sector_read(screener$sector_read),
         .sector_bank(screener$sector_bank),
+        .normal_bank(screener$normal_bank),
         .out_valid(screener$out_valid),
         .out_ready(screener$out_ready),
         .out_id(screener$out_id),
@@ -2447,7 +2499,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .res_id(unit$res_id),
         .res_key(unit$res_key),
         .busy(unit$busy),
-        .tests(unit$tests)
+        .tests(unit$tests),
+        .marks(unit$marks)
     );
     machine$pes$0$tags tags(
         .clock(tags$clock),
@@ -2496,6 +2549,66 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .d(pend_last_y$d),
         .q(pend_last_y$q),
         .clock(pend_last_y$clock)
+    );
+    machine$pes$0$pend_origin_x pend_origin_x(
+        .d(pend_origin_x$d),
+        .q(pend_origin_x$q),
+        .clock(pend_origin_x$clock)
+    );
+    machine$pes$0$pend_origin_y pend_origin_y(
+        .d(pend_origin_y$d),
+        .q(pend_origin_y$q),
+        .clock(pend_origin_y$clock)
+    );
+    machine$pes$0$pend_normal_x pend_normal_x(
+        .d(pend_normal_x$d),
+        .q(pend_normal_x$q),
+        .clock(pend_normal_x$clock)
+    );
+    machine$pes$0$pend_normal_y pend_normal_y(
+        .d(pend_normal_y$d),
+        .q(pend_normal_y$q),
+        .clock(pend_normal_y$clock)
+    );
+    machine$pes$0$origin0_x origin0_x(
+        .d(origin0_x$d),
+        .q(origin0_x$q),
+        .clock(origin0_x$clock)
+    );
+    machine$pes$0$origin0_y origin0_y(
+        .d(origin0_y$d),
+        .q(origin0_y$q),
+        .clock(origin0_y$clock)
+    );
+    machine$pes$0$normal0_x normal0_x(
+        .d(normal0_x$d),
+        .q(normal0_x$q),
+        .clock(normal0_x$clock)
+    );
+    machine$pes$0$normal0_y normal0_y(
+        .d(normal0_y$d),
+        .q(normal0_y$q),
+        .clock(normal0_y$clock)
+    );
+    machine$pes$0$origin1_x origin1_x(
+        .d(origin1_x$d),
+        .q(origin1_x$q),
+        .clock(origin1_x$clock)
+    );
+    machine$pes$0$origin1_y origin1_y(
+        .d(origin1_y$d),
+        .q(origin1_y$q),
+        .clock(origin1_y$clock)
+    );
+    machine$pes$0$normal1_x normal1_x(
+        .d(normal1_x$d),
+        .q(normal1_x$q),
+        .clock(normal1_x$clock)
+    );
+    machine$pes$0$normal1_y normal1_y(
+        .d(normal1_y$d),
+        .q(normal1_y$q),
+        .clock(normal1_y$clock)
     );
     machine$pes$0$first0_x first0_x(
         .d(first0_x$d),
@@ -2576,6 +2689,18 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         pend_first_y$clock = clock;
         pend_last_x$clock = clock;
         pend_last_y$clock = clock;
+        pend_origin_x$clock = clock;
+        pend_origin_y$clock = clock;
+        pend_normal_x$clock = clock;
+        pend_normal_y$clock = clock;
+        origin0_x$clock = clock;
+        origin0_y$clock = clock;
+        normal0_x$clock = clock;
+        normal0_y$clock = clock;
+        origin1_x$clock = clock;
+        origin1_y$clock = clock;
+        normal1_x$clock = clock;
+        normal1_y$clock = clock;
         first0_x$clock = clock;
         first0_y$clock = clock;
         last0_x$clock = clock;
@@ -2596,6 +2721,18 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         pend_first_y$d = pend_first_y$q;
         pend_last_x$d = pend_last_x$q;
         pend_last_y$d = pend_last_y$q;
+        pend_origin_x$d = pend_origin_x$q;
+        pend_origin_y$d = pend_origin_y$q;
+        pend_normal_x$d = pend_normal_x$q;
+        pend_normal_y$d = pend_normal_y$q;
+        origin0_x$d = origin0_x$q;
+        origin0_y$d = origin0_y$q;
+        normal0_x$d = normal0_x$q;
+        normal0_y$d = normal0_y$q;
+        origin1_x$d = origin1_x$q;
+        origin1_y$d = origin1_y$q;
+        normal1_x$d = normal1_x$q;
+        normal1_y$d = normal1_y$q;
         first0_x$d = first0_x$q;
         first0_y$d = first0_y$q;
         last0_x$d = last0_x$q;
@@ -2627,10 +2764,18 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         res_hit = unit$res_hit;
         res_id = unit$res_id;
         res_key = unit$res_key;
-        screener$origin_x = origin_x;
-        screener$origin_y = origin_y;
-        screener$normal_x = normal_x;
-        screener$normal_y = normal_y;
+        screener$origin_x = origin0_x$q;
+        screener$origin_y = origin0_y$q;
+        if (screener$in_bank) begin
+            screener$origin_x = origin1_x$q;
+            screener$origin_y = origin1_y$q;
+        end
+        screener$normal_x = normal0_x$q;
+        screener$normal_y = normal0_y$q;
+        if (screener$normal_bank) begin
+            screener$normal_x = normal1_x$q;
+            screener$normal_y = normal1_y$q;
+        end
         screener$first_x = first0_x$q;
         screener$first_y = first0_y$q;
         screener$last_x = last0_x$q;
@@ -2663,11 +2808,19 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         new_first_y = first_y;
         new_last_x = last_x;
         new_last_y = last_y;
+        new_origin_x = origin_x;
+        new_origin_y = origin_y;
+        new_normal_x = normal_x;
+        new_normal_y = normal_y;
         if (pend$q) begin
             new_first_x = pend_first_x$q;
             new_first_y = pend_first_y$q;
             new_last_x = pend_last_x$q;
             new_last_y = pend_last_y$q;
+            new_origin_x = pend_origin_x$q;
+            new_origin_y = pend_origin_y$q;
+            new_normal_x = pend_normal_x$q;
+            new_normal_y = pend_normal_y$q;
         end
         pend_next = pend$q;
         if (sector_in & ~other_free) begin
@@ -2676,6 +2829,10 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             pend_first_y$d = first_y;
             pend_last_x$d = last_x;
             pend_last_y$d = last_y;
+            pend_origin_x$d = origin_x;
+            pend_origin_y$d = origin_y;
+            pend_normal_x$d = normal_x;
+            pend_normal_y$d = normal_y;
         end
         if ((sector_in | pend$q) & other_free) begin
             pend_next = 1'b0;
@@ -2685,12 +2842,20 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
                 first0_y$d = new_first_y;
                 last0_x$d = new_last_x;
                 last0_y$d = new_last_y;
+                origin0_x$d = new_origin_x;
+                origin0_y$d = new_origin_y;
+                normal0_x$d = new_normal_x;
+                normal0_y$d = new_normal_y;
             end
             else begin
                 first1_x$d = new_first_x;
                 first1_y$d = new_first_y;
                 last1_x$d = new_last_x;
                 last1_y$d = new_last_y;
+                origin1_x$d = new_origin_x;
+                origin1_y$d = new_origin_y;
+                normal1_x$d = new_normal_x;
+                normal1_y$d = new_normal_y;
             end
         end
         pend$d = pend_next;
@@ -2724,7 +2889,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         if (out1 & ~in1 & (jobs1$q == one7)) begin
             used1$d = 1'b0;
         end
-        new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
+        new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
         if (cmd_retire) begin
             new_tag = new_tag | retire_flag;
         end
@@ -2769,8 +2934,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
         head_tag = tags$data_out;
-        head_retire = head_tag[32'h15];
-        head_first = head_tag[(32'hb)+:(10)];
+        head_retire = head_tag[32'h16];
+        head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
         queue$in_ax = sc_slice$out_ax;
@@ -2830,6 +2995,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         outside = screener$outside;
         near = screener$near;
         tests = unit$tests;
+        marks = unit$marks;
     end
     
 endmodule // machine$pes$0
@@ -8336,6 +8502,158 @@ module machine$pes$0$loader$reserved(d,q,clock);
 endmodule // machine$pes$0$loader$reserved
 
 
+module machine$pes$0$normal0_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$normal0_x
+
+
+module machine$pes$0$normal0_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$normal0_y
+
+
+module machine$pes$0$normal1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$normal1_x
+
+
+module machine$pes$0$normal1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$normal1_y
+
+
+module machine$pes$0$origin0_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$origin0_x
+
+
+module machine$pes$0$origin0_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$origin0_y
+
+
+module machine$pes$0$origin1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$origin1_x
+
+
+module machine$pes$0$origin1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$origin1_y
+
+
 module machine$pes$0$pend(d,q,clock);
     
     // Module arguments
@@ -8431,6 +8749,82 @@ module machine$pes$0$pend_last_y(d,q,clock);
 endmodule // machine$pes$0$pend_last_y
 
 
+module machine$pes$0$pend_normal_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$pend_normal_x
+
+
+module machine$pes$0$pend_normal_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$pend_normal_y
+
+
+module machine$pes$0$pend_origin_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$pend_origin_x
+
+
+module machine$pes$0$pend_origin_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$pend_origin_y
+
+
 module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_first,out_count,out_retire,occupied);
     
     // Module arguments
@@ -8445,7 +8839,7 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     input wire  [17:0] in_wx;
     input wire  [17:0] in_wy;
     input wire  [5:0] in_sh;
-    input wire  [9:0] in_first;
+    input wire  [10:0] in_first;
     input wire  [10:0] in_count;
     input wire  in_retire;
     output reg  out_valid;
@@ -8458,13 +8852,13 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     output reg  [17:0] out_wx;
     output reg  [17:0] out_wy;
     output reg  [5:0] out_sh;
-    output reg  [9:0] out_first;
+    output reg  [10:0] out_first;
     output reg  [10:0] out_count;
     output reg  out_retire;
     output reg  occupied;
     
     // Constant declarations
-    localparam  retire_bit = 28'h200000;
+    localparam  retire_bit = 29'h400000;
     localparam  one5 = 5'b1;
     localparam  almost_full = 5'b1111;
     localparam  full = 5'b10000;
@@ -8537,12 +8931,12 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     wire  [17:0] lane_wy$read_data;
     reg  lane_job$clock;
     reg  [3:0] lane_job$write_address;
-    reg  [27:0] lane_job$write_data;
+    reg  [28:0] lane_job$write_data;
     reg  lane_job$write_enable;
     reg  [3:0] lane_job$head_address;
     reg  [3:0] lane_job$next_address;
     reg  lane_job$pop;
-    wire  [27:0] lane_job$read_data;
+    wire  [28:0] lane_job$read_data;
     reg  p_valid$d;
     wire  p_valid$q;
     reg  p_valid$clock;
@@ -8567,8 +8961,8 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     reg  [17:0] p_wy$d;
     wire  [17:0] p_wy$q;
     reg  p_wy$clock;
-    reg  [27:0] p_job$d;
-    wire  [27:0] p_job$q;
+    reg  [28:0] p_job$d;
+    wire  [28:0] p_job$q;
     reg  p_job$clock;
     reg  [4:0] held$d;
     wire  [4:0] held$q;
@@ -8581,11 +8975,11 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     reg  take;
     reg  push;
     reg  pop;
-    reg  [27:0] sh28;
-    reg  [27:0] first28;
-    reg  [27:0] count28;
-    reg  [27:0] job_in;
-    reg  [27:0] job_out;
+    reg  [28:0] sh_lane;
+    reg  [28:0] first_lane;
+    reg  [28:0] count_lane;
+    reg  [28:0] job_in;
+    reg  [28:0] job_out;
     
     // Sub module instances
     machine$pes$0$queue$control control(
@@ -8771,10 +9165,10 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
         take = in_valid & ~held_full$q;
         push = p_valid$q;
         control$push = push;
-        sh28 = ((in_sh) & 28'hfffffff);
-        first28 = ((in_first) & 28'hfffffff);
-        count28 = ((in_count) & 28'hfffffff);
-        job_in = (sh28 << 32'h16) | (first28 << 32'hb) | count28;
+        sh_lane = ((in_sh) & 29'h1fffffff);
+        first_lane = ((in_first) & 29'h1fffffff);
+        count_lane = ((in_count) & 29'h1fffffff);
+        job_in = (sh_lane << 32'h17) | (first_lane << 32'hb) | count_lane;
         if (in_retire) begin
             job_in = job_in | retire_bit;
         end
@@ -8814,9 +9208,9 @@ module machine$pes$0$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
         out_wx = lane_wx$read_data;
         out_wy = lane_wy$read_data;
         job_out = lane_job$read_data;
-        out_sh = job_out[(32'h16)+:(6)];
-        out_retire = job_out[32'h15];
-        out_first = job_out[(32'hb)+:(10)];
+        out_sh = job_out[(32'h17)+:(6)];
+        out_retire = job_out[32'h16];
+        out_first = job_out[(32'hb)+:(11)];
         out_count = job_out[(32'h0)+:(11)];
         lane_id$write_address = control$tail_address;
         lane_id$write_enable = push;
@@ -9344,23 +9738,23 @@ module machine$pes$0$queue$lane_job(clock,write_address,write_data,write_enable,
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [27:0] write_data;
+    input wire  [28:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [27:0] read_data;
+    output reg  [28:0] read_data;
     
     // Update code (custom)
-    reg [27:0] mem [0:15];
-    reg [27:0] head_r;
-    reg [27:0] next_r;
+    reg [28:0] mem [0:15];
+    reg [28:0] head_r;
+    reg [28:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [27:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 28'd0;
+    reg [28:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -9371,9 +9765,9 @@ module machine$pes$0$queue$lane_job(clock,write_address,write_data,write_enable,
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 28'd0;
-       head_r = 28'd0;
-       next_r = 28'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
+       head_r = 29'd0;
+       next_r = 29'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -9581,13 +9975,13 @@ endmodule // machine$pes$0$queue$p_id
 module machine$pes$0$queue$p_job(d,q,clock);
     
     // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
+    input wire  [28:0] d;
+    output reg  [28:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 28'h0;
+       q = 29'h0;
     end
     
     always @(posedge clock) begin
@@ -10523,7 +10917,7 @@ module machine$pes$0$sc_slice$s_wy(d,q,clock);
 endmodule // machine$pes$0$sc_slice$s_wy
 
 
-module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
+module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,normal_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
     
     // Module arguments
     input wire  clock;
@@ -10545,6 +10939,7 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     input wire  in_bank;
     output reg  sector_read;
     output reg  sector_bank;
+    output reg  normal_bank;
     output reg  out_valid;
     input wire  out_ready;
     output reg  [15:0] out_id;
@@ -10784,6 +11179,12 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [17:0] normal_y2$d;
     wire  [17:0] normal_y2$q;
     reg  normal_y2$clock;
+    reg  [17:0] normal_xa2$d;
+    wire  [17:0] normal_xa2$q;
+    reg  normal_xa2$clock;
+    reg  [17:0] normal_ya2$d;
+    wire  [17:0] normal_ya2$q;
+    reg  normal_ya2$clock;
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
@@ -11524,6 +11925,16 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(normal_y2$q),
         .clock(normal_y2$clock)
     );
+    machine$pes$0$screener$normal_xa2 normal_xa2(
+        .d(normal_xa2$d),
+        .q(normal_xa2$q),
+        .clock(normal_xa2$clock)
+    );
+    machine$pes$0$screener$normal_ya2 normal_ya2(
+        .d(normal_ya2$d),
+        .q(normal_ya2$q),
+        .clock(normal_ya2$clock)
+    );
     machine$pes$0$screener$v3 v3(
         .d(v3$d),
         .q(v3$q),
@@ -12172,6 +12583,8 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy2$clock = clock;
         normal_x2$clock = clock;
         normal_y2$clock = clock;
+        normal_xa2$clock = clock;
+        normal_ya2$clock = clock;
         v3$clock = clock;
         bank3$clock = clock;
         id3$clock = clock;
@@ -12317,6 +12730,8 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy2$d = negy2$q;
         normal_x2$d = normal_x2$q;
         normal_y2$d = normal_y2$q;
+        normal_xa2$d = normal_xa2$q;
+        normal_ya2$d = normal_ya2$q;
         v3$d = v3$q;
         bank3$d = bank3$q;
         id3$d = id3$q;
@@ -12502,11 +12917,14 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         absny2$d = absny;
         negx2$d = nx[32'h11];
         negy2$d = ny[32'h11];
+        normal_bank = bank1$q;
         normal_x2$d = normal_x;
         normal_y2$d = normal_y;
-        m_nax$a = normal_x;
+        normal_xa2$d = normal_x;
+        normal_ya2$d = normal_y;
+        m_nax$a = normal_xa2$q;
         m_nax$b = ax2$q;
-        m_nay$a = normal_y;
+        m_nay$a = normal_ya2$q;
         m_nay$b = ay2$q;
         m_nbx$a = normal_x2$q;
         m_nbx$b = bx2$q;
@@ -16695,6 +17113,25 @@ module machine$pes$0$screener$normal_x2(d,q,clock);
 endmodule // machine$pes$0$screener$normal_x2
 
 
+module machine$pes$0$screener$normal_xa2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$normal_xa2
+
+
 module machine$pes$0$screener$normal_y2(d,q,clock);
     
     // Module arguments
@@ -16712,6 +17149,25 @@ module machine$pes$0$screener$normal_y2(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$normal_y2
+
+
+module machine$pes$0$screener$normal_ya2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$normal_ya2
 
 
 module machine$pes$0$screener$outside8(d,q,clock);
@@ -17251,10 +17707,10 @@ module machine$pes$0$tags(clock,push,data_in,pop,valid,data_out,count);
     // Module arguments
     input wire  clock;
     input wire  push;
-    input wire  [21:0] data_in;
+    input wire  [22:0] data_in;
     input wire  pop;
     output reg  valid;
-    output reg  [21:0] data_out;
+    output reg  [22:0] data_out;
     output reg  [6:0] count;
     
     // Stub signals
@@ -17268,12 +17724,12 @@ module machine$pes$0$tags(clock,push,data_in,pop,valid,data_out,count);
     wire  [6:0] control$count;
     reg  lane$clock;
     reg  [5:0] lane$write_address;
-    reg  [21:0] lane$write_data;
+    reg  [22:0] lane$write_data;
     reg  lane$write_enable;
     reg  [5:0] lane$head_address;
     reg  [5:0] lane$next_address;
     reg  lane$pop;
-    wire  [21:0] lane$read_data;
+    wire  [22:0] lane$read_data;
     
     // Sub module instances
     machine$pes$0$tags$control control(
@@ -17520,23 +17976,23 @@ module machine$pes$0$tags$lane(clock,write_address,write_data,write_enable,head_
     // Module arguments
     input wire  clock;
     input wire  [5:0] write_address;
-    input wire  [21:0] write_data;
+    input wire  [22:0] write_data;
     input wire  write_enable;
     input wire  [5:0] head_address;
     input wire  [5:0] next_address;
     input wire  pop;
-    output reg  [21:0] read_data;
+    output reg  [22:0] read_data;
     
     // Update code (custom)
-    reg [21:0] mem [0:63];
-    reg [21:0] head_r;
-    reg [21:0] next_r;
+    reg [22:0] mem [0:63];
+    reg [22:0] head_r;
+    reg [22:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [21:0] mem_n [0:63];
-    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 22'd0;
+    reg [22:0] mem_n [0:63];
+    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 23'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -17547,9 +18003,9 @@ module machine$pes$0$tags$lane(clock,write_address,write_data,write_enable,head_
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
-       head_r = 22'd0;
-       next_r = 22'd0;
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 23'd0;
+       head_r = 23'd0;
+       next_r = 23'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -17582,12 +18038,12 @@ module machine$pes$0$tags_full(d,q,clock);
 endmodule // machine$pes$0$tags_full
 
 
-module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
+module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests,marks);
     
     // Module arguments
     input wire  clock;
     input wire  dir_we;
-    input wire  [9:0] dir_addr;
+    input wire  [10:0] dir_addr;
     input wire  [17:0] dir_x;
     input wire  [17:0] dir_y;
     input wire  patch_valid;
@@ -17600,16 +18056,17 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     input wire  [17:0] patch_wy;
     input wire  [5:0] patch_sh;
     input wire  [15:0] patch_id;
-    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_first;
     input wire  [10:0] patch_count;
     input wire  patch_retire;
     input wire  res_re;
-    input wire  [9:0] res_addr;
+    input wire  [10:0] res_addr;
     output reg  res_hit;
     output reg  [15:0] res_id;
     output reg  [31:0] res_key;
     output reg  busy;
     output reg  [31:0] tests;
+    output reg  [31:0] marks;
     
     // Constant declarations
     localparam  zero32 = 32'h0;
@@ -17626,37 +18083,44 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     reg  [17:0] seq$patch_wy;
     reg  [5:0] seq$patch_sh;
     reg  [15:0] seq$patch_id;
-    reg  [9:0] seq$patch_first;
+    reg  [10:0] seq$patch_first;
     reg  [10:0] seq$patch_count;
     reg  seq$patch_retire;
     wire  seq$full;
     wire  seq$busy;
     wire  seq$kill;
-    wire  [9:0] seq$cur;
+    wire  [10:0] seq$cur;
     wire  seq$v1;
-    wire  [31:0] seq$tag1;
+    wire  [32:0] seq$tag1;
+    wire  seq$mark1;
     wire  [17:0] seq$o_ax;
     wire  [17:0] seq$o_ay;
     wire  [17:0] seq$o_bx;
     wire  [17:0] seq$o_by;
     wire  [17:0] seq$o_wx;
     wire  [17:0] seq$o_wy;
-    reg  alive_mem$clock;
-    reg  [9:0] alive_mem$read_address;
-    wire  alive_mem$read_data;
-    reg  [9:0] alive_mem$write_address;
-    reg  alive_mem$write_data;
-    reg  alive_mem$write_enable;
+    reg  alive0$clock;
+    reg  [9:0] alive0$read_address;
+    wire  alive0$read_data;
+    reg  [9:0] alive0$write_address;
+    reg  alive0$write_data;
+    reg  alive0$write_enable;
+    reg  alive1$clock;
+    reg  [9:0] alive1$read_address;
+    wire  alive1$read_data;
+    reg  [9:0] alive1$write_address;
+    reg  alive1$write_data;
+    reg  alive1$write_enable;
     reg  dir_mem_x$clock;
-    reg  [9:0] dir_mem_x$read_address;
+    reg  [10:0] dir_mem_x$read_address;
     wire  [17:0] dir_mem_x$read_data;
-    reg  [9:0] dir_mem_x$write_address;
+    reg  [10:0] dir_mem_x$write_address;
     reg  [17:0] dir_mem_x$write_data;
     reg  dir_mem_x$write_enable;
     reg  dir_mem_y$clock;
-    reg  [9:0] dir_mem_y$read_address;
+    reg  [10:0] dir_mem_y$read_address;
     wire  [17:0] dir_mem_y$read_data;
-    reg  [9:0] dir_mem_y$write_address;
+    reg  [10:0] dir_mem_y$write_address;
     reg  [17:0] dir_mem_y$write_data;
     reg  dir_mem_y$write_enable;
     reg  products$clock;
@@ -17676,8 +18140,10 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     wire  [31:0] products$dy_wy;
     reg  pipe$clock;
     reg  pipe$v1;
-    reg  [31:0] pipe$tag1;
-    reg  pipe$alive;
+    reg  [32:0] pipe$tag1;
+    reg  pipe$mark1;
+    reg  pipe$alive0;
+    reg  pipe$alive1;
     reg  [31:0] pipe$dx_ay;
     reg  [31:0] pipe$dy_ax;
     reg  [31:0] pipe$dx_by;
@@ -17685,40 +18151,68 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     wire  [31:0] pipe$tests;
     wire  pipe$busy;
     wire  [5:0] pipe$sh4;
-    wire  [9:0] pipe$ray6;
+    wire  [10:0] pipe$ray6;
     wire  pipe$v8;
-    wire  [25:0] pipe$tag8;
+    wire  [26:0] pipe$tag8;
+    wire  pipe$mark8;
     reg  key_scale$clock;
     reg  [31:0] key_scale$q;
     reg  [5:0] key_scale$sh;
     wire  [31:0] key_scale$key;
-    reg  mem_key$clock;
-    reg  [9:0] mem_key$read_address;
-    wire  [31:0] mem_key$read_data;
-    reg  [9:0] mem_key$write_address;
-    reg  [31:0] mem_key$write_data;
-    reg  mem_key$write_enable;
-    reg  mem_meta$clock;
-    reg  [9:0] mem_meta$read_address;
-    wire  [16:0] mem_meta$read_data;
-    reg  [9:0] mem_meta$write_address;
-    reg  [16:0] mem_meta$write_data;
-    reg  mem_meta$write_enable;
+    reg  mem_key0$clock;
+    reg  [9:0] mem_key0$read_address;
+    wire  [31:0] mem_key0$read_data;
+    reg  [9:0] mem_key0$write_address;
+    reg  [31:0] mem_key0$write_data;
+    reg  mem_key0$write_enable;
+    reg  mem_meta0$clock;
+    reg  [9:0] mem_meta0$read_address;
+    wire  [16:0] mem_meta0$read_data;
+    reg  [9:0] mem_meta0$write_address;
+    reg  [16:0] mem_meta0$write_data;
+    reg  mem_meta0$write_enable;
+    reg  mem_key1$clock;
+    reg  [9:0] mem_key1$read_address;
+    wire  [31:0] mem_key1$read_data;
+    reg  [9:0] mem_key1$write_address;
+    reg  [31:0] mem_key1$write_data;
+    reg  mem_key1$write_enable;
+    reg  mem_meta1$clock;
+    reg  [9:0] mem_meta1$read_address;
+    wire  [16:0] mem_meta1$read_data;
+    reg  [9:0] mem_meta1$write_address;
+    reg  [16:0] mem_meta1$write_data;
+    reg  mem_meta1$write_enable;
     reg  merge$clock;
     reg  merge$v8;
-    reg  [25:0] merge$tag8;
+    reg  [26:0] merge$tag8;
+    reg  merge$mark8;
     reg  [31:0] merge$key;
-    reg  [31:0] merge$mem_key;
-    reg  [16:0] merge$mem_meta;
+    reg  [31:0] merge$mem_key0;
+    reg  [16:0] merge$mem_meta0;
+    reg  [31:0] merge$mem_key1;
+    reg  [16:0] merge$mem_meta1;
     reg  merge$res_re;
-    reg  [9:0] merge$res_addr;
-    wire  [9:0] merge$write_address;
-    wire  [31:0] merge$write_key;
-    wire  [16:0] merge$write_meta;
-    wire  merge$write_enable;
+    reg  [10:0] merge$res_addr;
+    wire  [9:0] merge$write_address0;
+    wire  [31:0] merge$write_key0;
+    wire  [16:0] merge$write_meta0;
+    wire  merge$write_enable0;
+    wire  [9:0] merge$write_address1;
+    wire  [31:0] merge$write_key1;
+    wire  [16:0] merge$write_meta1;
+    wire  merge$write_enable1;
     wire  merge$z2;
+    wire  merge$res_half;
     wire  merge$busy;
     wire  merge$fw_valid;
+    wire  [31:0] merge$marks;
+    
+    // Local signals
+    reg  [9:0] dir_word;
+    reg  [9:0] res_word;
+    reg  [9:0] cur_word;
+    reg  [9:0] ray6_word;
     
     // Sub module instances
     machine$pes$0$unit$seq seq(
@@ -17741,6 +18235,7 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .cur(seq$cur),
         .v1(seq$v1),
         .tag1(seq$tag1),
+        .mark1(seq$mark1),
         .o_ax(seq$o_ax),
         .o_ay(seq$o_ay),
         .o_bx(seq$o_bx),
@@ -17748,13 +18243,21 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .o_wx(seq$o_wx),
         .o_wy(seq$o_wy)
     );
-    machine$pes$0$unit$alive_mem alive_mem(
-        .clock(alive_mem$clock),
-        .read_address(alive_mem$read_address),
-        .read_data(alive_mem$read_data),
-        .write_address(alive_mem$write_address),
-        .write_data(alive_mem$write_data),
-        .write_enable(alive_mem$write_enable)
+    machine$pes$0$unit$alive0 alive0(
+        .clock(alive0$clock),
+        .read_address(alive0$read_address),
+        .read_data(alive0$read_data),
+        .write_address(alive0$write_address),
+        .write_data(alive0$write_data),
+        .write_enable(alive0$write_enable)
+    );
+    machine$pes$0$unit$alive1 alive1(
+        .clock(alive1$clock),
+        .read_address(alive1$read_address),
+        .read_data(alive1$read_data),
+        .write_address(alive1$write_address),
+        .write_data(alive1$write_data),
+        .write_enable(alive1$write_enable)
     );
     machine$pes$0$unit$dir_mem_x dir_mem_x(
         .clock(dir_mem_x$clock),
@@ -17793,7 +18296,9 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .clock(pipe$clock),
         .v1(pipe$v1),
         .tag1(pipe$tag1),
-        .alive(pipe$alive),
+        .mark1(pipe$mark1),
+        .alive0(pipe$alive0),
+        .alive1(pipe$alive1),
         .dx_ay(pipe$dx_ay),
         .dy_ax(pipe$dy_ax),
         .dx_by(pipe$dx_by),
@@ -17803,7 +18308,8 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .sh4(pipe$sh4),
         .ray6(pipe$ray6),
         .v8(pipe$v8),
-        .tag8(pipe$tag8)
+        .tag8(pipe$tag8),
+        .mark8(pipe$mark8)
     );
     machine$pes$0$unit$key_scale key_scale(
         .clock(key_scale$clock),
@@ -17811,51 +18317,83 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .sh(key_scale$sh),
         .key(key_scale$key)
     );
-    machine$pes$0$unit$mem_key mem_key(
-        .clock(mem_key$clock),
-        .read_address(mem_key$read_address),
-        .read_data(mem_key$read_data),
-        .write_address(mem_key$write_address),
-        .write_data(mem_key$write_data),
-        .write_enable(mem_key$write_enable)
+    machine$pes$0$unit$mem_key0 mem_key0(
+        .clock(mem_key0$clock),
+        .read_address(mem_key0$read_address),
+        .read_data(mem_key0$read_data),
+        .write_address(mem_key0$write_address),
+        .write_data(mem_key0$write_data),
+        .write_enable(mem_key0$write_enable)
     );
-    machine$pes$0$unit$mem_meta mem_meta(
-        .clock(mem_meta$clock),
-        .read_address(mem_meta$read_address),
-        .read_data(mem_meta$read_data),
-        .write_address(mem_meta$write_address),
-        .write_data(mem_meta$write_data),
-        .write_enable(mem_meta$write_enable)
+    machine$pes$0$unit$mem_meta0 mem_meta0(
+        .clock(mem_meta0$clock),
+        .read_address(mem_meta0$read_address),
+        .read_data(mem_meta0$read_data),
+        .write_address(mem_meta0$write_address),
+        .write_data(mem_meta0$write_data),
+        .write_enable(mem_meta0$write_enable)
+    );
+    machine$pes$0$unit$mem_key1 mem_key1(
+        .clock(mem_key1$clock),
+        .read_address(mem_key1$read_address),
+        .read_data(mem_key1$read_data),
+        .write_address(mem_key1$write_address),
+        .write_data(mem_key1$write_data),
+        .write_enable(mem_key1$write_enable)
+    );
+    machine$pes$0$unit$mem_meta1 mem_meta1(
+        .clock(mem_meta1$clock),
+        .read_address(mem_meta1$read_address),
+        .read_data(mem_meta1$read_data),
+        .write_address(mem_meta1$write_address),
+        .write_data(mem_meta1$write_data),
+        .write_enable(mem_meta1$write_enable)
     );
     machine$pes$0$unit$merge merge(
         .clock(merge$clock),
         .v8(merge$v8),
         .tag8(merge$tag8),
+        .mark8(merge$mark8),
         .key(merge$key),
-        .mem_key(merge$mem_key),
-        .mem_meta(merge$mem_meta),
+        .mem_key0(merge$mem_key0),
+        .mem_meta0(merge$mem_meta0),
+        .mem_key1(merge$mem_key1),
+        .mem_meta1(merge$mem_meta1),
         .res_re(merge$res_re),
         .res_addr(merge$res_addr),
-        .write_address(merge$write_address),
-        .write_key(merge$write_key),
-        .write_meta(merge$write_meta),
-        .write_enable(merge$write_enable),
+        .write_address0(merge$write_address0),
+        .write_key0(merge$write_key0),
+        .write_meta0(merge$write_meta0),
+        .write_enable0(merge$write_enable0),
+        .write_address1(merge$write_address1),
+        .write_key1(merge$write_key1),
+        .write_meta1(merge$write_meta1),
+        .write_enable1(merge$write_enable1),
         .z2(merge$z2),
+        .res_half(merge$res_half),
         .busy(merge$busy),
-        .fw_valid(merge$fw_valid)
+        .fw_valid(merge$fw_valid),
+        .marks(merge$marks)
     );
     
     // Update code
     always @(*) begin
         seq$clock = clock;
-        alive_mem$clock = clock;
+        alive0$clock = clock;
+        alive1$clock = clock;
         dir_mem_x$clock = clock;
         dir_mem_y$clock = clock;
         products$clock = clock;
         pipe$clock = clock;
         key_scale$clock = clock;
-        mem_key$clock = clock;
-        mem_meta$clock = clock;
+        mem_key0$clock = clock;
+        mem_meta0$clock = clock;
+        mem_key1$clock = clock;
+        mem_meta1$clock = clock;
+        dir_word = ((dir_addr) & 10'h3ff);
+        res_word = ((res_addr) & 10'h3ff);
+        cur_word = ((seq$cur) & 10'h3ff);
+        ray6_word = ((pipe$ray6) & 10'h3ff);
         merge$clock = clock;
         seq$patch_valid = patch_valid;
         seq$patch_ax = patch_ax;
@@ -17878,14 +18416,23 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         dir_mem_y$write_data = dir_y;
         dir_mem_x$write_enable = dir_we;
         dir_mem_y$write_enable = dir_we;
-        alive_mem$read_address = seq$cur;
-        alive_mem$write_address = seq$cur;
-        alive_mem$write_data = 1'b0;
-        alive_mem$write_enable = seq$kill;
-        if (dir_we) begin
-            alive_mem$write_address = dir_addr;
-            alive_mem$write_data = 1'b1;
-            alive_mem$write_enable = 1'b1;
+        alive0$read_address = cur_word;
+        alive0$write_address = cur_word;
+        alive0$write_data = 1'b0;
+        alive0$write_enable = seq$kill & ~seq$cur[32'ha];
+        if (dir_we & ~dir_addr[32'ha]) begin
+            alive0$write_address = dir_word;
+            alive0$write_data = 1'b1;
+            alive0$write_enable = 1'b1;
+        end
+        alive1$read_address = cur_word;
+        alive1$write_address = cur_word;
+        alive1$write_data = 1'b0;
+        alive1$write_enable = seq$kill & seq$cur[32'ha];
+        if (dir_we & dir_addr[32'ha]) begin
+            alive1$write_address = dir_word;
+            alive1$write_data = 1'b1;
+            alive1$write_enable = 1'b1;
         end
         products$ax = seq$o_ax;
         products$ay = seq$o_ay;
@@ -17895,9 +18442,11 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         products$wy = seq$o_wy;
         pipe$v1 = seq$v1;
         pipe$tag1 = seq$tag1;
+        pipe$mark1 = seq$mark1;
         products$dx = dir_mem_x$read_data;
         products$dy = dir_mem_y$read_data;
-        pipe$alive = |alive_mem$read_data;
+        pipe$alive0 = |alive0$read_data;
+        pipe$alive1 = |alive1$read_data;
         tests = pipe$tests;
         pipe$dx_ay = products$dx_ay;
         pipe$dy_ax = products$dy_ax;
@@ -17905,28 +18454,49 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         pipe$dy_bx = products$dy_bx;
         key_scale$q = products$dx_wx + products$dy_wy;
         key_scale$sh = pipe$sh4;
-        mem_key$read_address = pipe$ray6;
-        mem_meta$read_address = pipe$ray6;
-        if (res_re) begin
-            mem_key$read_address = res_addr;
-            mem_meta$read_address = res_addr;
+        mem_key0$read_address = ray6_word;
+        mem_meta0$read_address = ray6_word;
+        mem_key1$read_address = ray6_word;
+        mem_meta1$read_address = ray6_word;
+        if (res_re & ~res_addr[32'ha]) begin
+            mem_key0$read_address = res_word;
+            mem_meta0$read_address = res_word;
+        end
+        if (res_re & res_addr[32'ha]) begin
+            mem_key1$read_address = res_word;
+            mem_meta1$read_address = res_word;
         end
         merge$v8 = pipe$v8;
         merge$tag8 = pipe$tag8;
+        merge$mark8 = pipe$mark8;
         merge$key = key_scale$key;
-        merge$mem_key = mem_key$read_data;
-        merge$mem_meta = mem_meta$read_data;
+        merge$mem_key0 = mem_key0$read_data;
+        merge$mem_meta0 = mem_meta0$read_data;
+        merge$mem_key1 = mem_key1$read_data;
+        merge$mem_meta1 = mem_meta1$read_data;
         merge$res_re = res_re;
         merge$res_addr = res_addr;
-        mem_key$write_address = merge$write_address;
-        mem_meta$write_address = merge$write_address;
-        mem_key$write_data = merge$write_key;
-        mem_meta$write_data = merge$write_meta;
-        mem_key$write_enable = merge$write_enable;
-        mem_meta$write_enable = merge$write_enable;
-        res_hit = mem_meta$read_data[32'h10] & ~merge$z2;
-        res_id = ((mem_meta$read_data) & 16'hffff);
-        res_key = mem_key$read_data;
+        mem_key0$write_address = merge$write_address0;
+        mem_meta0$write_address = merge$write_address0;
+        mem_key0$write_data = merge$write_key0;
+        mem_meta0$write_data = merge$write_meta0;
+        mem_key0$write_enable = merge$write_enable0;
+        mem_meta0$write_enable = merge$write_enable0;
+        mem_key1$write_address = merge$write_address1;
+        mem_meta1$write_address = merge$write_address1;
+        mem_key1$write_data = merge$write_key1;
+        mem_meta1$write_data = merge$write_meta1;
+        mem_key1$write_enable = merge$write_enable1;
+        mem_meta1$write_enable = merge$write_enable1;
+        marks = merge$marks;
+        res_hit = mem_meta0$read_data[32'h10] & ~merge$z2;
+        res_id = ((mem_meta0$read_data) & 16'hffff);
+        res_key = mem_key0$read_data;
+        if (merge$res_half) begin
+            res_hit = mem_meta1$read_data[32'h10] & ~merge$z2;
+            res_id = ((mem_meta1$read_data) & 16'hffff);
+            res_key = mem_key1$read_data;
+        end
         if (merge$z2) begin
             res_id = zero16;
             res_key = zero32;
@@ -17937,7 +18507,7 @@ module machine$pes$0$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
 endmodule // machine$pes$0$unit
 
 
-module machine$pes$0$unit$alive_mem(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$0$unit$alive0(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
@@ -18043,23 +18613,23 @@ module machine$pes$0$unit$alive_mem(clock,read_address,read_data,write_address,w
        end
     end
     `endif
-endmodule // machine$pes$0$unit$alive_mem
+endmodule // machine$pes$0$unit$alive0
 
 
-module machine$pes$0$unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$0$unit$alive1(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
     input wire  [9:0] read_address;
-    output reg  [17:0] read_data;
+    output reg  read_data;
     input wire  [9:0] write_address;
-    input wire  [17:0] write_data;
+    input wire  write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
     wire [17:0] bo_rd;
-    wire [17:0] bo_wd = write_data;
+    wire [17:0] bo_wd = {17'd0, write_data};
     wire [9:0] bo_ra = read_address;
     wire [9:0] bo_wa = write_address;
     DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
@@ -18115,7 +18685,7 @@ module machine$pes$0$unit$dir_mem_x(clock,read_address,read_data,write_address,w
        .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
-    always @(*) read_data = bo_rd[17:0];
+    always @(*) read_data = bo_rd[0:0];
     `else
     // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
     // first ones, and a FORMAL build asserts that no address beyond them is used.
@@ -18123,6 +18693,168 @@ module machine$pes$0$unit$dir_mem_x(clock,read_address,read_data,write_address,w
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
     localparam WORDS = 1024;
+    `endif
+    reg [0:0] mem [0:WORDS-1];
+    reg [0:0] r1;
+    reg collided;
+    integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
+    initial begin
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 1'd0;
+       r1 = 1'd0;
+       collided = 1'b0;
+       read_data = 1'd0;
+    end
+    always @(posedge clock) begin
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    `endif
+endmodule // machine$pes$0$unit$alive1
+
+
+module machine$pes$0$unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [10:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = write_data;
+    wire [10:0] bo_ra = read_address;
+    wire [10:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(1'b0),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(1'b0),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
+       .DIA0(bo_wd[9]), .DOB0(bo_rd[9]),
+       .DIA1(bo_wd[10]), .DOB1(bo_rd[10]),
+       .DIA2(bo_wd[11]), .DOB2(bo_rd[11]),
+       .DIA3(bo_wd[12]), .DOB3(bo_rd[12]),
+       .DIA4(bo_wd[13]), .DOB4(bo_rd[13]),
+       .DIA5(bo_wd[14]), .DOB5(bo_rd[14]),
+       .DIA6(bo_wd[15]), .DOB6(bo_rd[15]),
+       .DIA7(bo_wd[16]), .DOB7(bo_rd[16]),
+       .DIA8(bo_wd[17]), .DOB8(bo_rd[17]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[17:0];
+    `else
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 2048;
     `endif
     reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
@@ -18159,9 +18891,9 @@ module machine$pes$0$unit$dir_mem_y(clock,read_address,read_data,write_address,w
     
     // Module arguments
     input wire  clock;
-    input wire  [9:0] read_address;
+    input wire  [10:0] read_address;
     output reg  [17:0] read_data;
-    input wire  [9:0] write_address;
+    input wire  [10:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
     
@@ -18169,41 +18901,41 @@ module machine$pes$0$unit$dir_mem_y(clock,read_address,read_data,write_address,w
     `ifdef SHELLING_ECP5
     wire [17:0] bo_rd;
     wire [17:0] bo_wd = write_data;
-    wire [9:0] bo_ra = read_address;
-    wire [9:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [10:0] bo_ra = read_address;
+    wire [10:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b1),
-       .ADA1(1'b1),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
        .ADA2(1'b0),
-       .ADA3(1'b0),
-       .ADA4(bo_wa[0]),
-       .ADA5(bo_wa[1]),
-       .ADA6(bo_wa[2]),
-       .ADA7(bo_wa[3]),
-       .ADA8(bo_wa[4]),
-       .ADA9(bo_wa[5]),
-       .ADA10(bo_wa[6]),
-       .ADA11(bo_wa[7]),
-       .ADA12(bo_wa[8]),
-       .ADA13(bo_wa[9]),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
        .ADB0(1'b0),
        .ADB1(1'b0),
        .ADB2(1'b0),
-       .ADB3(1'b0),
-       .ADB4(bo_ra[0]),
-       .ADB5(bo_ra[1]),
-       .ADB6(bo_ra[2]),
-       .ADB7(bo_ra[3]),
-       .ADB8(bo_ra[4]),
-       .ADB9(bo_ra[5]),
-       .ADB10(bo_ra[6]),
-       .ADB11(bo_ra[7]),
-       .ADB12(bo_ra[8]),
-       .ADB13(bo_ra[9]),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
@@ -18213,15 +18945,68 @@ module machine$pes$0$unit$dir_mem_y(clock,read_address,read_data,write_address,w
        .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
        .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
        .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
-       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
-       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
-       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
-       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
-       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
-       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
-       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
-       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
-       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(1'b0),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
+       .DIA0(bo_wd[9]), .DOB0(bo_rd[9]),
+       .DIA1(bo_wd[10]), .DOB1(bo_rd[10]),
+       .DIA2(bo_wd[11]), .DOB2(bo_rd[11]),
+       .DIA3(bo_wd[12]), .DOB3(bo_rd[12]),
+       .DIA4(bo_wd[13]), .DOB4(bo_rd[13]),
+       .DIA5(bo_wd[14]), .DOB5(bo_rd[14]),
+       .DIA6(bo_wd[15]), .DOB6(bo_rd[15]),
+       .DIA7(bo_wd[16]), .DOB7(bo_rd[16]),
+       .DIA8(bo_wd[17]), .DOB8(bo_rd[17]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[17:0];
@@ -18231,7 +19016,7 @@ module machine$pes$0$unit$dir_mem_y(clock,read_address,read_data,write_address,w
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 1024;
+    localparam WORDS = 2048;
     `endif
     reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
@@ -18318,7 +19103,7 @@ module machine$pes$0$unit$key_scale(clock,q,sh,key);
 endmodule // machine$pes$0$unit$key_scale
 
 
-module machine$pes$0$unit$mem_key(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$0$unit$mem_key0(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
@@ -18477,10 +19262,172 @@ module machine$pes$0$unit$mem_key(clock,read_address,read_data,write_address,wri
        end
     end
     `endif
-endmodule // machine$pes$0$unit$mem_key
+endmodule // machine$pes$0$unit$mem_key0
 
 
-module machine$pes$0$unit$mem_meta(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$0$unit$mem_key1(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [31:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] bo_rd;
+    wire [35:0] bo_wd = {4'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
+       .DIA0(bo_wd[18]), .DOB0(bo_rd[18]),
+       .DIA1(bo_wd[19]), .DOB1(bo_rd[19]),
+       .DIA2(bo_wd[20]), .DOB2(bo_rd[20]),
+       .DIA3(bo_wd[21]), .DOB3(bo_rd[21]),
+       .DIA4(bo_wd[22]), .DOB4(bo_rd[22]),
+       .DIA5(bo_wd[23]), .DOB5(bo_rd[23]),
+       .DIA6(bo_wd[24]), .DOB6(bo_rd[24]),
+       .DIA7(bo_wd[25]), .DOB7(bo_rd[25]),
+       .DIA8(bo_wd[26]), .DOB8(bo_rd[26]),
+       .DIA9(bo_wd[27]), .DOB9(bo_rd[27]),
+       .DIA10(bo_wd[28]), .DOB10(bo_rd[28]),
+       .DIA11(bo_wd[29]), .DOB11(bo_rd[29]),
+       .DIA12(bo_wd[30]), .DOB12(bo_rd[30]),
+       .DIA13(bo_wd[31]), .DOB13(bo_rd[31]),
+       .DIA14(bo_wd[32]), .DOB14(bo_rd[32]),
+       .DIA15(bo_wd[33]), .DOB15(bo_rd[33]),
+       .DIA16(bo_wd[34]), .DOB16(bo_rd[34]),
+       .DIA17(bo_wd[35]), .DOB17(bo_rd[35]),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[31:0];
+    `else
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [31:0] mem [0:WORDS-1];
+    reg [31:0] r1;
+    reg collided;
+    integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
+    initial begin
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 32'd0;
+       r1 = 32'd0;
+       collided = 1'b0;
+       read_data = 32'd0;
+    end
+    always @(posedge clock) begin
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    `endif
+endmodule // machine$pes$0$unit$mem_key1
+
+
+module machine$pes$0$unit$mem_meta0(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
@@ -18586,57 +19533,183 @@ module machine$pes$0$unit$mem_meta(clock,read_address,read_data,write_address,wr
        end
     end
     `endif
-endmodule // machine$pes$0$unit$mem_meta
+endmodule // machine$pes$0$unit$mem_meta0
 
 
-module machine$pes$0$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_addr,write_address,write_key,write_meta,write_enable,z2,busy,fw_valid);
+module machine$pes$0$unit$mem_meta1(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
+    reg [16:0] r1;
+    reg collided;
+    integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
+    initial begin
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    `endif
+endmodule // machine$pes$0$unit$mem_meta1
+
+
+module machine$pes$0$unit$merge(clock,v8,tag8,mark8,key,mem_key0,mem_meta0,mem_key1,mem_meta1,res_re,res_addr,write_address0,write_key0,write_meta0,write_enable0,write_address1,write_key1,write_meta1,write_enable1,z2,res_half,busy,fw_valid,marks);
     
     // Module arguments
     input wire  clock;
     input wire  v8;
-    input wire  [25:0] tag8;
+    input wire  [26:0] tag8;
+    input wire  mark8;
     input wire  [31:0] key;
-    input wire  [31:0] mem_key;
-    input wire  [16:0] mem_meta;
+    input wire  [31:0] mem_key0;
+    input wire  [16:0] mem_meta0;
+    input wire  [31:0] mem_key1;
+    input wire  [16:0] mem_meta1;
     input wire  res_re;
-    input wire  [9:0] res_addr;
-    output reg  [9:0] write_address;
-    output reg  [31:0] write_key;
-    output reg  [16:0] write_meta;
-    output reg  write_enable;
+    input wire  [10:0] res_addr;
+    output reg  [9:0] write_address0;
+    output reg  [31:0] write_key0;
+    output reg  [16:0] write_meta0;
+    output reg  write_enable0;
+    output reg  [9:0] write_address1;
+    output reg  [31:0] write_key1;
+    output reg  [16:0] write_meta1;
+    output reg  write_enable1;
     output reg  z2;
+    output reg  res_half;
     output reg  busy;
     output reg  fw_valid;
+    output reg  [31:0] marks;
     
     // Update code (custom)
-    wire [9:0] ray8 = tag8[25:16];
+    wire [10:0] ray8 = tag8[26:16];
     wire [15:0] id8 = tag8[15:0];
-    reg cm_hit, cm_gt_hi, cm_eq_hi, cm_gt_lo, cm_eq_lo, cm_lt;
+    reg cm0_hit, cm0_gt_hi, cm0_eq_hi, cm0_gt_lo, cm0_eq_lo, cm0_lt;
+    reg cm1_hit, cm1_gt_hi, cm1_eq_hi, cm1_gt_lo, cm1_eq_lo, cm1_lt;
     reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
     reg m1, m2, m3;
     reg v9;
-    reg [9:0] ray9;
+    reg [10:0] ray9;
     reg [15:0] id9;
     reg [31:0] key9;
-    reg [9:0] fw_ray;
+    reg [10:0] fw_ray;
     reg [31:0] fw_key;
     reg [15:0] fw_id;
     reg fw2_valid;
-    reg [9:0] fw2_ray;
+    reg [10:0] fw2_ray;
     reg [31:0] fw2_key;
     reg [15:0] fw2_id;
     reg fw3_valid;
     reg rd_valid;
-    reg [9:0] rd_addr;
+    reg [10:0] rd_addr;
     reg z1;
-    reg better;
+    reg mark9;
+    reg fwd, fwin, better0, better1;
     initial begin
-       cm_hit = 1'b0;
-       cm_gt_hi = 1'b0;
-       cm_eq_hi = 1'b0;
-       cm_gt_lo = 1'b0;
-       cm_eq_lo = 1'b0;
-       cm_lt = 1'b0;
+       cm0_hit = 1'b0;
+       cm0_gt_hi = 1'b0;
+       cm0_eq_hi = 1'b0;
+       cm0_gt_lo = 1'b0;
+       cm0_eq_lo = 1'b0;
+       cm0_lt = 1'b0;
+       cm1_hit = 1'b0;
+       cm1_gt_hi = 1'b0;
+       cm1_eq_hi = 1'b0;
+       cm1_gt_lo = 1'b0;
+       cm1_eq_lo = 1'b0;
+       cm1_lt = 1'b0;
        m1 = 1'b0;
        m2 = 1'b0;
        m3 = 1'b0;
@@ -18644,6 +19717,8 @@ module machine$pes$0$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        fw_valid = 1'b0;
        fw2_valid = 1'b0;
        fw3_valid = 1'b0;
+       mark9 = 1'b0;
+       res_half = 1'b0;
        c1_gt = 1'b0;
        c1_eq = 1'b0;
        c1_lt = 1'b0;
@@ -18653,45 +19728,69 @@ module machine$pes$0$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        c3_gt = 1'b0;
        c3_eq = 1'b0;
        c3_lt = 1'b0;
-       ray9 = 10'd0;
-       fw_ray = 10'd0;
-       fw2_ray = 10'd0;
-       rd_addr = 10'd0;
+       ray9 = 11'd0;
+       fw_ray = 11'd0;
+       fw2_ray = 11'd0;
+       rd_addr = 11'd0;
        id9 = 16'd0;
        fw_id = 16'd0;
        fw2_id = 16'd0;
        key9 = 32'd0;
        fw_key = 32'd0;
        fw2_key = 32'd0;
+       marks = 32'd0;
        rd_valid = 1'b0;
        z1 = 1'b0;
        z2 = 1'b0;
     end
     always @(*) begin
-       if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
-       else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
-       else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-       else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && (cm_gt_lo || (cm_eq_lo && cm_lt))));
-       if (rd_valid) begin
-          write_address = rd_addr;
-          write_key = 32'd0;
-          write_meta = 17'd0;
-          write_enable = 1'b1;
-       end else begin
-          write_address = ray9;
-          write_key = key9;
-          write_meta = {1'b1, id9};
-          write_enable = better;
+       fwd = 1'b1;
+       if (m1 && fw_valid) fwin = c1_gt || (c1_eq && c1_lt);
+       else if (m2 && fw2_valid) fwin = c2_gt || (c2_eq && c2_lt);
+       else if (m3 && fw3_valid) fwin = c3_gt || (c3_eq && c3_lt);
+       else begin
+          fwd = 1'b0;
+          fwin = 1'b0;
        end
-       busy = v9;
+       better0 = v9 && (fwd ? fwin : (!cm0_hit || cm0_gt_hi || (cm0_eq_hi && (cm0_gt_lo || (cm0_eq_lo && cm0_lt)))));
+       better1 = v9 && (fwd ? fwin : (!cm1_hit || cm1_gt_hi || (cm1_eq_hi && (cm1_gt_lo || (cm1_eq_lo && cm1_lt)))));
+       if (rd_valid && !rd_addr[10]) begin
+          write_address0 = rd_addr[9:0];
+          write_key0 = 32'd0;
+          write_meta0 = 17'd0;
+          write_enable0 = 1'b1;
+       end else begin
+          write_address0 = ray9[9:0];
+          write_key0 = key9;
+          write_meta0 = {1'b1, id9};
+          write_enable0 = better0 && !ray9[10];
+       end
+       if (rd_valid && rd_addr[10]) begin
+          write_address1 = rd_addr[9:0];
+          write_key1 = 32'd0;
+          write_meta1 = 17'd0;
+          write_enable1 = 1'b1;
+       end else begin
+          write_address1 = ray9[9:0];
+          write_key1 = key9;
+          write_meta1 = {1'b1, id9};
+          write_enable1 = better1 && ray9[10];
+       end
+       busy = v9 || mark9;
     end
     always @(posedge clock) begin
-       cm_hit <= mem_meta[16];
-       cm_gt_hi <= key[31:16] > mem_key[31:16];
-       cm_eq_hi <= key[31:16] == mem_key[31:16];
-       cm_gt_lo <= key[15:0] > mem_key[15:0];
-       cm_eq_lo <= key[15:0] == mem_key[15:0];
-       cm_lt <= id8 < mem_meta[15:0];
+       cm0_hit <= mem_meta0[16];
+       cm0_gt_hi <= key[31:16] > mem_key0[31:16];
+       cm0_eq_hi <= key[31:16] == mem_key0[31:16];
+       cm0_gt_lo <= key[15:0] > mem_key0[15:0];
+       cm0_eq_lo <= key[15:0] == mem_key0[15:0];
+       cm0_lt <= id8 < mem_meta0[15:0];
+       cm1_hit <= mem_meta1[16];
+       cm1_gt_hi <= key[31:16] > mem_key1[31:16];
+       cm1_eq_hi <= key[31:16] == mem_key1[31:16];
+       cm1_gt_lo <= key[15:0] > mem_key1[15:0];
+       cm1_eq_lo <= key[15:0] == mem_key1[15:0];
+       cm1_lt <= id8 < mem_meta1[15:0];
        c1_gt <= key > key9;
        c1_eq <= key == key9;
        c1_lt <= id8 < id9;
@@ -18708,7 +19807,7 @@ module machine$pes$0$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        ray9 <= ray8;
        id9 <= id8;
        key9 <= key;
-       fw_valid <= better;
+       fw_valid <= ray9[10] ? better1 : better0;
        fw_ray <= ray9;
        fw_key <= key9;
        fw_id <= id9;
@@ -18721,17 +19820,22 @@ module machine$pes$0$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        rd_addr <= res_addr;
        z1 <= res_re && rd_valid && res_addr == rd_addr;
        z2 <= z1;
+       res_half <= rd_addr[10];
+       mark9 <= mark8;
+       if (mark9) marks <= marks + 32'd1;
     end
 endmodule // machine$pes$0$unit$merge
 
 
-module machine$pes$0$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests,busy,sh4,ray6,v8,tag8);
+module machine$pes$0$unit$pipe(clock,v1,tag1,mark1,alive0,alive1,dx_ay,dy_ax,dx_by,dy_bx,tests,busy,sh4,ray6,v8,tag8,mark8);
     
     // Module arguments
     input wire  clock;
     input wire  v1;
-    input wire  [31:0] tag1;
-    input wire  alive;
+    input wire  [32:0] tag1;
+    input wire  mark1;
+    input wire  alive0;
+    input wire  alive1;
     input wire  [31:0] dx_ay;
     input wire  [31:0] dy_ax;
     input wire  [31:0] dx_by;
@@ -18739,21 +19843,23 @@ module machine$pes$0$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests
     output reg  [31:0] tests;
     output reg  busy;
     output reg  [5:0] sh4;
-    output reg  [9:0] ray6;
+    output reg  [10:0] ray6;
     output reg  v8;
-    output reg  [25:0] tag8;
+    output reg  [26:0] tag8;
+    output reg  mark8;
     
     // Update code (custom)
     reg v2, v3, v4, v5, v6, v7;
-    reg [31:0] tag2;
-    reg [31:0] tag3;
-    reg [31:0] tag4;
+    reg mk2, mk3, mk4, mk5, mk6, mk7;
+    reg [32:0] tag2;
+    reg [32:0] tag3;
+    reg [32:0] tag4;
     reg [31:0] sa5;
     reg [31:0] sb5;
-    reg [25:0] t5;
-    reg [25:0] t6;
-    reg [25:0] t7;
-    wire live = v2 && alive;
+    reg [26:0] t5;
+    reg [26:0] t6;
+    reg [26:0] t7;
+    wire live = v2 && (tag2[32] ? alive1 : alive0);
     initial begin
        v2 = 1'b0;
        v3 = 1'b0;
@@ -18762,21 +19868,28 @@ module machine$pes$0$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests
        v6 = 1'b0;
        v7 = 1'b0;
        v8 = 1'b0;
-       tag2 = 32'd0;
-       tag3 = 32'd0;
-       tag4 = 32'd0;
+       mk2 = 1'b0;
+       mk3 = 1'b0;
+       mk4 = 1'b0;
+       mk5 = 1'b0;
+       mk6 = 1'b0;
+       mk7 = 1'b0;
+       mark8 = 1'b0;
+       tag2 = 33'd0;
+       tag3 = 33'd0;
+       tag4 = 33'd0;
        sa5 = 32'd0;
        sb5 = 32'd0;
-       t5 = 26'd0;
-       t6 = 26'd0;
-       t7 = 26'd0;
-       tag8 = 26'd0;
+       t5 = 27'd0;
+       t6 = 27'd0;
+       t7 = 27'd0;
+       tag8 = 27'd0;
        tests = 32'd0;
     end
     always @(*) begin
-       busy = v2 || v3 || v4 || v5 || v6 || v7 || v8;
+       busy = v2 || v3 || v4 || v5 || v6 || v7 || v8 || mk2 || mk3 || mk4 || mk5 || mk6 || mk7 || mark8;
        sh4 = tag4[21:16];
-       ray6 = t6[25:16];
+       ray6 = t6[26:16];
     end
     always @(posedge clock) begin
        v2 <= v1;
@@ -18789,13 +19902,20 @@ module machine$pes$0$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests
        v5 <= v4;
        sa5 <= dx_ay - dy_ax;
        sb5 <= dx_by - dy_bx;
-       t5 <= {tag4[31:22], tag4[15:0]};
+       t5 <= {tag4[32:22], tag4[15:0]};
        v6 <= v5 && (sa5 == 32'd0 || sa5[31]) && !sb5[31];
        t6 <= t5;
        v7 <= v6;
        t7 <= t6;
        v8 <= v7;
        tag8 <= t7;
+       mk2 <= mark1;
+       mk3 <= mk2;
+       mk4 <= mk3;
+       mk5 <= mk4;
+       mk6 <= mk5;
+       mk7 <= mk6;
+       mark8 <= mk7;
     end
 endmodule // machine$pes$0$unit$pipe
 
@@ -19268,7 +20388,7 @@ module machine$pes$0$unit$products(clock,dx,dy,ax,ay,bx,by,wx,wy,dx_ay,dy_ax,dx_
 endmodule // machine$pes$0$unit$products
 
 
-module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,full,busy,kill,cur,v1,tag1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
+module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,full,busy,kill,cur,v1,tag1,mark1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
     
     // Module arguments
     input wire  clock;
@@ -19281,15 +20401,16 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
     input wire  [17:0] patch_wy;
     input wire  [5:0] patch_sh;
     input wire  [15:0] patch_id;
-    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_first;
     input wire  [10:0] patch_count;
     input wire  patch_retire;
     output reg  full;
     output reg  busy;
     output reg  kill;
-    output reg  [9:0] cur;
+    output reg  [10:0] cur;
     output reg  v1;
-    output reg  [31:0] tag1;
+    output reg  [32:0] tag1;
+    output reg  mark1;
     output reg  [17:0] o_ax;
     output reg  [17:0] o_ay;
     output reg  [17:0] o_bx;
@@ -19315,9 +20436,10 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        p_sh = 6'd0;
        p_id = 16'd0;
        full = 1'b0;
-       cur = 10'd0;
+       cur = 11'd0;
        v1 = 1'b0;
-       tag1 = 32'd0;
+       tag1 = 33'd0;
+       mark1 = 1'b0;
        p_ax = 18'd0;
        o_ax = 18'd0;
        p_ay = 18'd0;
@@ -19332,12 +20454,13 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        o_wy = 18'd0;
     end
     always @(*) begin
-       busy = issue || v1;
+       busy = issue || v1 || mark1;
        kill = issue && p_retire;
     end
     always @(posedge clock) begin
        v1 <= issue && !p_retire;
        tag1 <= {cur, p_sh, p_id};
+       mark1 <= patch_valid && !full && patch_retire && patch_count == 11'd0;
        o_ax <= p_ax;
        o_ay <= p_ay;
        o_bx <= p_bx;
@@ -19360,7 +20483,7 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        end else if (issue) begin
           remaining <= remaining - 11'd1;
           full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
-          cur <= cur + 10'd1;
+          cur <= {cur[10], cur[9:0] + 10'd1};
        end
     end
 endmodule // machine$pes$0$unit$seq
@@ -19404,12 +20527,12 @@ module machine$pes$0$used1(d,q,clock);
 endmodule // machine$pes$0$used1
 
 
-module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_sector,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests);
+module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_sector,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests,marks);
     
     // Module arguments
     input wire  clock;
     input wire  dir_we;
-    input wire  [9:0] dir_addr;
+    input wire  [10:0] dir_addr;
     input wire  [17:0] dir_x;
     input wire  [17:0] dir_y;
     input wire  [16:0] origin_x;
@@ -19425,7 +20548,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     input wire  cmd_retire;
     input wire  cmd_sector;
     input wire  [15:0] cmd_id;
-    input wire  [9:0] cmd_first;
+    input wire  [10:0] cmd_first;
     input wire  [10:0] cmd_count;
     input wire  cfg_cache_enable;
     input wire  [9:0] cfg_cache_mask;
@@ -19438,7 +20561,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     input wire  [16:0] mem_bx;
     input wire  [16:0] mem_by;
     input wire  res_re;
-    input wire  [9:0] res_addr;
+    input wire  [10:0] res_addr;
     output reg  res_hit;
     output reg  [15:0] res_id;
     output reg  [31:0] res_key;
@@ -19452,13 +20575,14 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     output reg  [31:0] outside;
     output reg  [31:0] near;
     output reg  [31:0] tests;
+    output reg  [31:0] marks;
     
     // Constant declarations
     localparam  one7 = 7'b1;
     localparam  almost_full = 7'b111111;
     localparam  zero1 = 1'b0;
     localparam  one1 = 1'b1;
-    localparam  retire_flag = 22'h200000;
+    localparam  retire_flag = 23'h400000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
     
@@ -19545,7 +20669,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] queue$in_wx;
     reg  [17:0] queue$in_wy;
     reg  [5:0] queue$in_sh;
-    reg  [9:0] queue$in_first;
+    reg  [10:0] queue$in_first;
     reg  [10:0] queue$in_count;
     reg  queue$in_retire;
     wire  queue$out_valid;
@@ -19558,7 +20682,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [17:0] queue$out_wx;
     wire  [17:0] queue$out_wy;
     wire  [5:0] queue$out_sh;
-    wire  [9:0] queue$out_first;
+    wire  [10:0] queue$out_first;
     wire  [10:0] queue$out_count;
     wire  queue$out_retire;
     wire  queue$occupied;
@@ -19581,6 +20705,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  screener$in_bank;
     wire  screener$sector_read;
     wire  screener$sector_bank;
+    wire  screener$normal_bank;
     wire  screener$out_valid;
     reg  screener$out_ready;
     wire  [15:0] screener$out_id;
@@ -19599,7 +20724,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [31:0] screener$near;
     reg  unit$clock;
     reg  unit$dir_we;
-    reg  [9:0] unit$dir_addr;
+    reg  [10:0] unit$dir_addr;
     reg  [17:0] unit$dir_x;
     reg  [17:0] unit$dir_y;
     reg  unit$patch_valid;
@@ -19612,22 +20737,23 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] unit$patch_wy;
     reg  [5:0] unit$patch_sh;
     reg  [15:0] unit$patch_id;
-    reg  [9:0] unit$patch_first;
+    reg  [10:0] unit$patch_first;
     reg  [10:0] unit$patch_count;
     reg  unit$patch_retire;
     reg  unit$res_re;
-    reg  [9:0] unit$res_addr;
+    reg  [10:0] unit$res_addr;
     wire  unit$res_hit;
     wire  [15:0] unit$res_id;
     wire  [31:0] unit$res_key;
     wire  unit$busy;
     wire  [31:0] unit$tests;
+    wire  [31:0] unit$marks;
     reg  tags$clock;
     reg  tags$push;
-    reg  [21:0] tags$data_in;
+    reg  [22:0] tags$data_in;
     reg  tags$pop;
     wire  tags$valid;
-    wire  [21:0] tags$data_out;
+    wire  [22:0] tags$data_out;
     wire  [6:0] tags$count;
     reg  job_banks$clock;
     reg  job_banks$push;
@@ -19654,6 +20780,42 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] pend_last_y$d;
     wire  [17:0] pend_last_y$q;
     reg  pend_last_y$clock;
+    reg  [16:0] pend_origin_x$d;
+    wire  [16:0] pend_origin_x$q;
+    reg  pend_origin_x$clock;
+    reg  [16:0] pend_origin_y$d;
+    wire  [16:0] pend_origin_y$q;
+    reg  pend_origin_y$clock;
+    reg  [17:0] pend_normal_x$d;
+    wire  [17:0] pend_normal_x$q;
+    reg  pend_normal_x$clock;
+    reg  [17:0] pend_normal_y$d;
+    wire  [17:0] pend_normal_y$q;
+    reg  pend_normal_y$clock;
+    reg  [16:0] origin0_x$d;
+    wire  [16:0] origin0_x$q;
+    reg  origin0_x$clock;
+    reg  [16:0] origin0_y$d;
+    wire  [16:0] origin0_y$q;
+    reg  origin0_y$clock;
+    reg  [17:0] normal0_x$d;
+    wire  [17:0] normal0_x$q;
+    reg  normal0_x$clock;
+    reg  [17:0] normal0_y$d;
+    wire  [17:0] normal0_y$q;
+    reg  normal0_y$clock;
+    reg  [16:0] origin1_x$d;
+    wire  [16:0] origin1_x$q;
+    reg  origin1_x$clock;
+    reg  [16:0] origin1_y$d;
+    wire  [16:0] origin1_y$q;
+    reg  origin1_y$clock;
+    reg  [17:0] normal1_x$d;
+    wire  [17:0] normal1_x$q;
+    reg  normal1_x$clock;
+    reg  [17:0] normal1_y$d;
+    wire  [17:0] normal1_y$q;
+    reg  normal1_y$clock;
     reg  [17:0] first0_x$d;
     wire  [17:0] first0_x$q;
     reg  first0_x$clock;
@@ -19700,11 +20862,11 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     // Local signals
     reg  accept;
     reg  pop;
-    reg  [21:0] head_tag;
+    reg  [22:0] head_tag;
     reg  head_retire;
-    reg  [9:0] head_first;
+    reg  [10:0] head_first;
     reg  [10:0] head_count;
-    reg  [21:0] new_tag;
+    reg  [22:0] new_tag;
     reg  room;
     reg  job;
     reg  tags_full_next;
@@ -19715,6 +20877,10 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [17:0] new_first_y;
     reg  [17:0] new_last_x;
     reg  [17:0] new_last_y;
+    reg  [16:0] new_origin_x;
+    reg  [16:0] new_origin_y;
+    reg  [17:0] new_normal_x;
+    reg  [17:0] new_normal_y;
     reg  in1;
     reg  out0;
     reg  out1;
@@ -19848,6 +21014,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .in_bank(screener$in_bank),
         .sector_read(screener$sector_read),
         .sector_bank(screener$sector_bank),
+        .normal_bank(screener$normal_bank),
         .out_valid(screener$out_valid),
         .out_ready(screener$out_ready),
         .out_id(screener$out_id),
@@ -19890,7 +21057,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .res_id(unit$res_id),
         .res_key(unit$res_key),
         .busy(unit$busy),
-        .tests(unit$tests)
+        .tests(unit$tests),
+        .marks(unit$marks)
     );
     machine$pes$1$tags tags(
         .clock(tags$clock),
@@ -19939,6 +21107,66 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .d(pend_last_y$d),
         .q(pend_last_y$q),
         .clock(pend_last_y$clock)
+    );
+    machine$pes$1$pend_origin_x pend_origin_x(
+        .d(pend_origin_x$d),
+        .q(pend_origin_x$q),
+        .clock(pend_origin_x$clock)
+    );
+    machine$pes$1$pend_origin_y pend_origin_y(
+        .d(pend_origin_y$d),
+        .q(pend_origin_y$q),
+        .clock(pend_origin_y$clock)
+    );
+    machine$pes$1$pend_normal_x pend_normal_x(
+        .d(pend_normal_x$d),
+        .q(pend_normal_x$q),
+        .clock(pend_normal_x$clock)
+    );
+    machine$pes$1$pend_normal_y pend_normal_y(
+        .d(pend_normal_y$d),
+        .q(pend_normal_y$q),
+        .clock(pend_normal_y$clock)
+    );
+    machine$pes$1$origin0_x origin0_x(
+        .d(origin0_x$d),
+        .q(origin0_x$q),
+        .clock(origin0_x$clock)
+    );
+    machine$pes$1$origin0_y origin0_y(
+        .d(origin0_y$d),
+        .q(origin0_y$q),
+        .clock(origin0_y$clock)
+    );
+    machine$pes$1$normal0_x normal0_x(
+        .d(normal0_x$d),
+        .q(normal0_x$q),
+        .clock(normal0_x$clock)
+    );
+    machine$pes$1$normal0_y normal0_y(
+        .d(normal0_y$d),
+        .q(normal0_y$q),
+        .clock(normal0_y$clock)
+    );
+    machine$pes$1$origin1_x origin1_x(
+        .d(origin1_x$d),
+        .q(origin1_x$q),
+        .clock(origin1_x$clock)
+    );
+    machine$pes$1$origin1_y origin1_y(
+        .d(origin1_y$d),
+        .q(origin1_y$q),
+        .clock(origin1_y$clock)
+    );
+    machine$pes$1$normal1_x normal1_x(
+        .d(normal1_x$d),
+        .q(normal1_x$q),
+        .clock(normal1_x$clock)
+    );
+    machine$pes$1$normal1_y normal1_y(
+        .d(normal1_y$d),
+        .q(normal1_y$q),
+        .clock(normal1_y$clock)
     );
     machine$pes$1$first0_x first0_x(
         .d(first0_x$d),
@@ -20019,6 +21247,18 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         pend_first_y$clock = clock;
         pend_last_x$clock = clock;
         pend_last_y$clock = clock;
+        pend_origin_x$clock = clock;
+        pend_origin_y$clock = clock;
+        pend_normal_x$clock = clock;
+        pend_normal_y$clock = clock;
+        origin0_x$clock = clock;
+        origin0_y$clock = clock;
+        normal0_x$clock = clock;
+        normal0_y$clock = clock;
+        origin1_x$clock = clock;
+        origin1_y$clock = clock;
+        normal1_x$clock = clock;
+        normal1_y$clock = clock;
         first0_x$clock = clock;
         first0_y$clock = clock;
         last0_x$clock = clock;
@@ -20039,6 +21279,18 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         pend_first_y$d = pend_first_y$q;
         pend_last_x$d = pend_last_x$q;
         pend_last_y$d = pend_last_y$q;
+        pend_origin_x$d = pend_origin_x$q;
+        pend_origin_y$d = pend_origin_y$q;
+        pend_normal_x$d = pend_normal_x$q;
+        pend_normal_y$d = pend_normal_y$q;
+        origin0_x$d = origin0_x$q;
+        origin0_y$d = origin0_y$q;
+        normal0_x$d = normal0_x$q;
+        normal0_y$d = normal0_y$q;
+        origin1_x$d = origin1_x$q;
+        origin1_y$d = origin1_y$q;
+        normal1_x$d = normal1_x$q;
+        normal1_y$d = normal1_y$q;
         first0_x$d = first0_x$q;
         first0_y$d = first0_y$q;
         last0_x$d = last0_x$q;
@@ -20070,10 +21322,18 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         res_hit = unit$res_hit;
         res_id = unit$res_id;
         res_key = unit$res_key;
-        screener$origin_x = origin_x;
-        screener$origin_y = origin_y;
-        screener$normal_x = normal_x;
-        screener$normal_y = normal_y;
+        screener$origin_x = origin0_x$q;
+        screener$origin_y = origin0_y$q;
+        if (screener$in_bank) begin
+            screener$origin_x = origin1_x$q;
+            screener$origin_y = origin1_y$q;
+        end
+        screener$normal_x = normal0_x$q;
+        screener$normal_y = normal0_y$q;
+        if (screener$normal_bank) begin
+            screener$normal_x = normal1_x$q;
+            screener$normal_y = normal1_y$q;
+        end
         screener$first_x = first0_x$q;
         screener$first_y = first0_y$q;
         screener$last_x = last0_x$q;
@@ -20106,11 +21366,19 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         new_first_y = first_y;
         new_last_x = last_x;
         new_last_y = last_y;
+        new_origin_x = origin_x;
+        new_origin_y = origin_y;
+        new_normal_x = normal_x;
+        new_normal_y = normal_y;
         if (pend$q) begin
             new_first_x = pend_first_x$q;
             new_first_y = pend_first_y$q;
             new_last_x = pend_last_x$q;
             new_last_y = pend_last_y$q;
+            new_origin_x = pend_origin_x$q;
+            new_origin_y = pend_origin_y$q;
+            new_normal_x = pend_normal_x$q;
+            new_normal_y = pend_normal_y$q;
         end
         pend_next = pend$q;
         if (sector_in & ~other_free) begin
@@ -20119,6 +21387,10 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             pend_first_y$d = first_y;
             pend_last_x$d = last_x;
             pend_last_y$d = last_y;
+            pend_origin_x$d = origin_x;
+            pend_origin_y$d = origin_y;
+            pend_normal_x$d = normal_x;
+            pend_normal_y$d = normal_y;
         end
         if ((sector_in | pend$q) & other_free) begin
             pend_next = 1'b0;
@@ -20128,12 +21400,20 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
                 first0_y$d = new_first_y;
                 last0_x$d = new_last_x;
                 last0_y$d = new_last_y;
+                origin0_x$d = new_origin_x;
+                origin0_y$d = new_origin_y;
+                normal0_x$d = new_normal_x;
+                normal0_y$d = new_normal_y;
             end
             else begin
                 first1_x$d = new_first_x;
                 first1_y$d = new_first_y;
                 last1_x$d = new_last_x;
                 last1_y$d = new_last_y;
+                origin1_x$d = new_origin_x;
+                origin1_y$d = new_origin_y;
+                normal1_x$d = new_normal_x;
+                normal1_y$d = new_normal_y;
             end
         end
         pend$d = pend_next;
@@ -20167,7 +21447,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         if (out1 & ~in1 & (jobs1$q == one7)) begin
             used1$d = 1'b0;
         end
-        new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
+        new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
         if (cmd_retire) begin
             new_tag = new_tag | retire_flag;
         end
@@ -20212,8 +21492,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
         head_tag = tags$data_out;
-        head_retire = head_tag[32'h15];
-        head_first = head_tag[(32'hb)+:(10)];
+        head_retire = head_tag[32'h16];
+        head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
         queue$in_ax = sc_slice$out_ax;
@@ -20273,6 +21553,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         outside = screener$outside;
         near = screener$near;
         tests = unit$tests;
+        marks = unit$marks;
     end
     
 endmodule // machine$pes$1
@@ -25779,6 +27060,158 @@ module machine$pes$1$loader$reserved(d,q,clock);
 endmodule // machine$pes$1$loader$reserved
 
 
+module machine$pes$1$normal0_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$normal0_x
+
+
+module machine$pes$1$normal0_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$normal0_y
+
+
+module machine$pes$1$normal1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$normal1_x
+
+
+module machine$pes$1$normal1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$normal1_y
+
+
+module machine$pes$1$origin0_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$origin0_x
+
+
+module machine$pes$1$origin0_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$origin0_y
+
+
+module machine$pes$1$origin1_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$origin1_x
+
+
+module machine$pes$1$origin1_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$origin1_y
+
+
 module machine$pes$1$pend(d,q,clock);
     
     // Module arguments
@@ -25874,6 +27307,82 @@ module machine$pes$1$pend_last_y(d,q,clock);
 endmodule // machine$pes$1$pend_last_y
 
 
+module machine$pes$1$pend_normal_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$pend_normal_x
+
+
+module machine$pes$1$pend_normal_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$pend_normal_y
+
+
+module machine$pes$1$pend_origin_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$pend_origin_x
+
+
+module machine$pes$1$pend_origin_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$pend_origin_y
+
+
 module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_first,out_count,out_retire,occupied);
     
     // Module arguments
@@ -25888,7 +27397,7 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     input wire  [17:0] in_wx;
     input wire  [17:0] in_wy;
     input wire  [5:0] in_sh;
-    input wire  [9:0] in_first;
+    input wire  [10:0] in_first;
     input wire  [10:0] in_count;
     input wire  in_retire;
     output reg  out_valid;
@@ -25901,13 +27410,13 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     output reg  [17:0] out_wx;
     output reg  [17:0] out_wy;
     output reg  [5:0] out_sh;
-    output reg  [9:0] out_first;
+    output reg  [10:0] out_first;
     output reg  [10:0] out_count;
     output reg  out_retire;
     output reg  occupied;
     
     // Constant declarations
-    localparam  retire_bit = 28'h200000;
+    localparam  retire_bit = 29'h400000;
     localparam  one5 = 5'b1;
     localparam  almost_full = 5'b1111;
     localparam  full = 5'b10000;
@@ -25980,12 +27489,12 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     wire  [17:0] lane_wy$read_data;
     reg  lane_job$clock;
     reg  [3:0] lane_job$write_address;
-    reg  [27:0] lane_job$write_data;
+    reg  [28:0] lane_job$write_data;
     reg  lane_job$write_enable;
     reg  [3:0] lane_job$head_address;
     reg  [3:0] lane_job$next_address;
     reg  lane_job$pop;
-    wire  [27:0] lane_job$read_data;
+    wire  [28:0] lane_job$read_data;
     reg  p_valid$d;
     wire  p_valid$q;
     reg  p_valid$clock;
@@ -26010,8 +27519,8 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     reg  [17:0] p_wy$d;
     wire  [17:0] p_wy$q;
     reg  p_wy$clock;
-    reg  [27:0] p_job$d;
-    wire  [27:0] p_job$q;
+    reg  [28:0] p_job$d;
+    wire  [28:0] p_job$q;
     reg  p_job$clock;
     reg  [4:0] held$d;
     wire  [4:0] held$q;
@@ -26024,11 +27533,11 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
     reg  take;
     reg  push;
     reg  pop;
-    reg  [27:0] sh28;
-    reg  [27:0] first28;
-    reg  [27:0] count28;
-    reg  [27:0] job_in;
-    reg  [27:0] job_out;
+    reg  [28:0] sh_lane;
+    reg  [28:0] first_lane;
+    reg  [28:0] count_lane;
+    reg  [28:0] job_in;
+    reg  [28:0] job_out;
     
     // Sub module instances
     machine$pes$1$queue$control control(
@@ -26214,10 +27723,10 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
         take = in_valid & ~held_full$q;
         push = p_valid$q;
         control$push = push;
-        sh28 = ((in_sh) & 28'hfffffff);
-        first28 = ((in_first) & 28'hfffffff);
-        count28 = ((in_count) & 28'hfffffff);
-        job_in = (sh28 << 32'h16) | (first28 << 32'hb) | count28;
+        sh_lane = ((in_sh) & 29'h1fffffff);
+        first_lane = ((in_first) & 29'h1fffffff);
+        count_lane = ((in_count) & 29'h1fffffff);
+        job_in = (sh_lane << 32'h17) | (first_lane << 32'hb) | count_lane;
         if (in_retire) begin
             job_in = job_in | retire_bit;
         end
@@ -26257,9 +27766,9 @@ module machine$pes$1$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by
         out_wx = lane_wx$read_data;
         out_wy = lane_wy$read_data;
         job_out = lane_job$read_data;
-        out_sh = job_out[(32'h16)+:(6)];
-        out_retire = job_out[32'h15];
-        out_first = job_out[(32'hb)+:(10)];
+        out_sh = job_out[(32'h17)+:(6)];
+        out_retire = job_out[32'h16];
+        out_first = job_out[(32'hb)+:(11)];
         out_count = job_out[(32'h0)+:(11)];
         lane_id$write_address = control$tail_address;
         lane_id$write_enable = push;
@@ -26787,23 +28296,23 @@ module machine$pes$1$queue$lane_job(clock,write_address,write_data,write_enable,
     // Module arguments
     input wire  clock;
     input wire  [3:0] write_address;
-    input wire  [27:0] write_data;
+    input wire  [28:0] write_data;
     input wire  write_enable;
     input wire  [3:0] head_address;
     input wire  [3:0] next_address;
     input wire  pop;
-    output reg  [27:0] read_data;
+    output reg  [28:0] read_data;
     
     // Update code (custom)
-    reg [27:0] mem [0:15];
-    reg [27:0] head_r;
-    reg [27:0] next_r;
+    reg [28:0] mem [0:15];
+    reg [28:0] head_r;
+    reg [28:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [27:0] mem_n [0:15];
-    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 28'd0;
+    reg [28:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 29'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -26814,9 +28323,9 @@ module machine$pes$1$queue$lane_job(clock,write_address,write_data,write_enable,
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 15; i = i + 1) mem[i] = 28'd0;
-       head_r = 28'd0;
-       next_r = 28'd0;
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 29'd0;
+       head_r = 29'd0;
+       next_r = 29'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -27024,13 +28533,13 @@ endmodule // machine$pes$1$queue$p_id
 module machine$pes$1$queue$p_job(d,q,clock);
     
     // Module arguments
-    input wire  [27:0] d;
-    output reg  [27:0] q;
+    input wire  [28:0] d;
+    output reg  [28:0] q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 28'h0;
+       q = 29'h0;
     end
     
     always @(posedge clock) begin
@@ -27966,7 +29475,7 @@ module machine$pes$1$sc_slice$s_wy(d,q,clock);
 endmodule // machine$pes$1$sc_slice$s_wy
 
 
-module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
+module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,normal_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
     
     // Module arguments
     input wire  clock;
@@ -27988,6 +29497,7 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     input wire  in_bank;
     output reg  sector_read;
     output reg  sector_bank;
+    output reg  normal_bank;
     output reg  out_valid;
     input wire  out_ready;
     output reg  [15:0] out_id;
@@ -28227,6 +29737,12 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [17:0] normal_y2$d;
     wire  [17:0] normal_y2$q;
     reg  normal_y2$clock;
+    reg  [17:0] normal_xa2$d;
+    wire  [17:0] normal_xa2$q;
+    reg  normal_xa2$clock;
+    reg  [17:0] normal_ya2$d;
+    wire  [17:0] normal_ya2$q;
+    reg  normal_ya2$clock;
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
@@ -28967,6 +30483,16 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(normal_y2$q),
         .clock(normal_y2$clock)
     );
+    machine$pes$1$screener$normal_xa2 normal_xa2(
+        .d(normal_xa2$d),
+        .q(normal_xa2$q),
+        .clock(normal_xa2$clock)
+    );
+    machine$pes$1$screener$normal_ya2 normal_ya2(
+        .d(normal_ya2$d),
+        .q(normal_ya2$q),
+        .clock(normal_ya2$clock)
+    );
     machine$pes$1$screener$v3 v3(
         .d(v3$d),
         .q(v3$q),
@@ -29615,6 +31141,8 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy2$clock = clock;
         normal_x2$clock = clock;
         normal_y2$clock = clock;
+        normal_xa2$clock = clock;
+        normal_ya2$clock = clock;
         v3$clock = clock;
         bank3$clock = clock;
         id3$clock = clock;
@@ -29760,6 +31288,8 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy2$d = negy2$q;
         normal_x2$d = normal_x2$q;
         normal_y2$d = normal_y2$q;
+        normal_xa2$d = normal_xa2$q;
+        normal_ya2$d = normal_ya2$q;
         v3$d = v3$q;
         bank3$d = bank3$q;
         id3$d = id3$q;
@@ -29945,11 +31475,14 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         absny2$d = absny;
         negx2$d = nx[32'h11];
         negy2$d = ny[32'h11];
+        normal_bank = bank1$q;
         normal_x2$d = normal_x;
         normal_y2$d = normal_y;
-        m_nax$a = normal_x;
+        normal_xa2$d = normal_x;
+        normal_ya2$d = normal_y;
+        m_nax$a = normal_xa2$q;
         m_nax$b = ax2$q;
-        m_nay$a = normal_y;
+        m_nay$a = normal_ya2$q;
         m_nay$b = ay2$q;
         m_nbx$a = normal_x2$q;
         m_nbx$b = bx2$q;
@@ -34138,6 +35671,25 @@ module machine$pes$1$screener$normal_x2(d,q,clock);
 endmodule // machine$pes$1$screener$normal_x2
 
 
+module machine$pes$1$screener$normal_xa2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$normal_xa2
+
+
 module machine$pes$1$screener$normal_y2(d,q,clock);
     
     // Module arguments
@@ -34155,6 +35707,25 @@ module machine$pes$1$screener$normal_y2(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$normal_y2
+
+
+module machine$pes$1$screener$normal_ya2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$normal_ya2
 
 
 module machine$pes$1$screener$outside8(d,q,clock);
@@ -34694,10 +36265,10 @@ module machine$pes$1$tags(clock,push,data_in,pop,valid,data_out,count);
     // Module arguments
     input wire  clock;
     input wire  push;
-    input wire  [21:0] data_in;
+    input wire  [22:0] data_in;
     input wire  pop;
     output reg  valid;
-    output reg  [21:0] data_out;
+    output reg  [22:0] data_out;
     output reg  [6:0] count;
     
     // Stub signals
@@ -34711,12 +36282,12 @@ module machine$pes$1$tags(clock,push,data_in,pop,valid,data_out,count);
     wire  [6:0] control$count;
     reg  lane$clock;
     reg  [5:0] lane$write_address;
-    reg  [21:0] lane$write_data;
+    reg  [22:0] lane$write_data;
     reg  lane$write_enable;
     reg  [5:0] lane$head_address;
     reg  [5:0] lane$next_address;
     reg  lane$pop;
-    wire  [21:0] lane$read_data;
+    wire  [22:0] lane$read_data;
     
     // Sub module instances
     machine$pes$1$tags$control control(
@@ -34963,23 +36534,23 @@ module machine$pes$1$tags$lane(clock,write_address,write_data,write_enable,head_
     // Module arguments
     input wire  clock;
     input wire  [5:0] write_address;
-    input wire  [21:0] write_data;
+    input wire  [22:0] write_data;
     input wire  write_enable;
     input wire  [5:0] head_address;
     input wire  [5:0] next_address;
     input wire  pop;
-    output reg  [21:0] read_data;
+    output reg  [22:0] read_data;
     
     // Update code (custom)
-    reg [21:0] mem [0:63];
-    reg [21:0] head_r;
-    reg [21:0] next_r;
+    reg [22:0] mem [0:63];
+    reg [22:0] head_r;
+    reg [22:0] next_r;
     reg popped;
     integer i;
     `ifdef SHELLING_ICE40
     // A copy for the second read (the same writes): one read port per memory.
-    reg [21:0] mem_n [0:63];
-    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 22'd0;
+    reg [22:0] mem_n [0:63];
+    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 23'd0;
     always @(posedge clock) begin
        next_r <= mem_n[next_address];
        if (write_enable) begin
@@ -34990,9 +36561,9 @@ module machine$pes$1$tags$lane(clock,write_address,write_data,write_enable,head_
     always @(posedge clock) next_r <= mem[next_address];
     `endif
     initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
-       head_r = 22'd0;
-       next_r = 22'd0;
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 23'd0;
+       head_r = 23'd0;
+       next_r = 23'd0;
        popped = 1'b0;
     end
     always @(posedge clock) begin
@@ -35025,12 +36596,12 @@ module machine$pes$1$tags_full(d,q,clock);
 endmodule // machine$pes$1$tags_full
 
 
-module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests);
+module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_ready,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,res_re,res_addr,res_hit,res_id,res_key,busy,tests,marks);
     
     // Module arguments
     input wire  clock;
     input wire  dir_we;
-    input wire  [9:0] dir_addr;
+    input wire  [10:0] dir_addr;
     input wire  [17:0] dir_x;
     input wire  [17:0] dir_y;
     input wire  patch_valid;
@@ -35043,16 +36614,17 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     input wire  [17:0] patch_wy;
     input wire  [5:0] patch_sh;
     input wire  [15:0] patch_id;
-    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_first;
     input wire  [10:0] patch_count;
     input wire  patch_retire;
     input wire  res_re;
-    input wire  [9:0] res_addr;
+    input wire  [10:0] res_addr;
     output reg  res_hit;
     output reg  [15:0] res_id;
     output reg  [31:0] res_key;
     output reg  busy;
     output reg  [31:0] tests;
+    output reg  [31:0] marks;
     
     // Constant declarations
     localparam  zero32 = 32'h0;
@@ -35069,37 +36641,44 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     reg  [17:0] seq$patch_wy;
     reg  [5:0] seq$patch_sh;
     reg  [15:0] seq$patch_id;
-    reg  [9:0] seq$patch_first;
+    reg  [10:0] seq$patch_first;
     reg  [10:0] seq$patch_count;
     reg  seq$patch_retire;
     wire  seq$full;
     wire  seq$busy;
     wire  seq$kill;
-    wire  [9:0] seq$cur;
+    wire  [10:0] seq$cur;
     wire  seq$v1;
-    wire  [31:0] seq$tag1;
+    wire  [32:0] seq$tag1;
+    wire  seq$mark1;
     wire  [17:0] seq$o_ax;
     wire  [17:0] seq$o_ay;
     wire  [17:0] seq$o_bx;
     wire  [17:0] seq$o_by;
     wire  [17:0] seq$o_wx;
     wire  [17:0] seq$o_wy;
-    reg  alive_mem$clock;
-    reg  [9:0] alive_mem$read_address;
-    wire  alive_mem$read_data;
-    reg  [9:0] alive_mem$write_address;
-    reg  alive_mem$write_data;
-    reg  alive_mem$write_enable;
+    reg  alive0$clock;
+    reg  [9:0] alive0$read_address;
+    wire  alive0$read_data;
+    reg  [9:0] alive0$write_address;
+    reg  alive0$write_data;
+    reg  alive0$write_enable;
+    reg  alive1$clock;
+    reg  [9:0] alive1$read_address;
+    wire  alive1$read_data;
+    reg  [9:0] alive1$write_address;
+    reg  alive1$write_data;
+    reg  alive1$write_enable;
     reg  dir_mem_x$clock;
-    reg  [9:0] dir_mem_x$read_address;
+    reg  [10:0] dir_mem_x$read_address;
     wire  [17:0] dir_mem_x$read_data;
-    reg  [9:0] dir_mem_x$write_address;
+    reg  [10:0] dir_mem_x$write_address;
     reg  [17:0] dir_mem_x$write_data;
     reg  dir_mem_x$write_enable;
     reg  dir_mem_y$clock;
-    reg  [9:0] dir_mem_y$read_address;
+    reg  [10:0] dir_mem_y$read_address;
     wire  [17:0] dir_mem_y$read_data;
-    reg  [9:0] dir_mem_y$write_address;
+    reg  [10:0] dir_mem_y$write_address;
     reg  [17:0] dir_mem_y$write_data;
     reg  dir_mem_y$write_enable;
     reg  products$clock;
@@ -35119,8 +36698,10 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     wire  [31:0] products$dy_wy;
     reg  pipe$clock;
     reg  pipe$v1;
-    reg  [31:0] pipe$tag1;
-    reg  pipe$alive;
+    reg  [32:0] pipe$tag1;
+    reg  pipe$mark1;
+    reg  pipe$alive0;
+    reg  pipe$alive1;
     reg  [31:0] pipe$dx_ay;
     reg  [31:0] pipe$dy_ax;
     reg  [31:0] pipe$dx_by;
@@ -35128,40 +36709,68 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
     wire  [31:0] pipe$tests;
     wire  pipe$busy;
     wire  [5:0] pipe$sh4;
-    wire  [9:0] pipe$ray6;
+    wire  [10:0] pipe$ray6;
     wire  pipe$v8;
-    wire  [25:0] pipe$tag8;
+    wire  [26:0] pipe$tag8;
+    wire  pipe$mark8;
     reg  key_scale$clock;
     reg  [31:0] key_scale$q;
     reg  [5:0] key_scale$sh;
     wire  [31:0] key_scale$key;
-    reg  mem_key$clock;
-    reg  [9:0] mem_key$read_address;
-    wire  [31:0] mem_key$read_data;
-    reg  [9:0] mem_key$write_address;
-    reg  [31:0] mem_key$write_data;
-    reg  mem_key$write_enable;
-    reg  mem_meta$clock;
-    reg  [9:0] mem_meta$read_address;
-    wire  [16:0] mem_meta$read_data;
-    reg  [9:0] mem_meta$write_address;
-    reg  [16:0] mem_meta$write_data;
-    reg  mem_meta$write_enable;
+    reg  mem_key0$clock;
+    reg  [9:0] mem_key0$read_address;
+    wire  [31:0] mem_key0$read_data;
+    reg  [9:0] mem_key0$write_address;
+    reg  [31:0] mem_key0$write_data;
+    reg  mem_key0$write_enable;
+    reg  mem_meta0$clock;
+    reg  [9:0] mem_meta0$read_address;
+    wire  [16:0] mem_meta0$read_data;
+    reg  [9:0] mem_meta0$write_address;
+    reg  [16:0] mem_meta0$write_data;
+    reg  mem_meta0$write_enable;
+    reg  mem_key1$clock;
+    reg  [9:0] mem_key1$read_address;
+    wire  [31:0] mem_key1$read_data;
+    reg  [9:0] mem_key1$write_address;
+    reg  [31:0] mem_key1$write_data;
+    reg  mem_key1$write_enable;
+    reg  mem_meta1$clock;
+    reg  [9:0] mem_meta1$read_address;
+    wire  [16:0] mem_meta1$read_data;
+    reg  [9:0] mem_meta1$write_address;
+    reg  [16:0] mem_meta1$write_data;
+    reg  mem_meta1$write_enable;
     reg  merge$clock;
     reg  merge$v8;
-    reg  [25:0] merge$tag8;
+    reg  [26:0] merge$tag8;
+    reg  merge$mark8;
     reg  [31:0] merge$key;
-    reg  [31:0] merge$mem_key;
-    reg  [16:0] merge$mem_meta;
+    reg  [31:0] merge$mem_key0;
+    reg  [16:0] merge$mem_meta0;
+    reg  [31:0] merge$mem_key1;
+    reg  [16:0] merge$mem_meta1;
     reg  merge$res_re;
-    reg  [9:0] merge$res_addr;
-    wire  [9:0] merge$write_address;
-    wire  [31:0] merge$write_key;
-    wire  [16:0] merge$write_meta;
-    wire  merge$write_enable;
+    reg  [10:0] merge$res_addr;
+    wire  [9:0] merge$write_address0;
+    wire  [31:0] merge$write_key0;
+    wire  [16:0] merge$write_meta0;
+    wire  merge$write_enable0;
+    wire  [9:0] merge$write_address1;
+    wire  [31:0] merge$write_key1;
+    wire  [16:0] merge$write_meta1;
+    wire  merge$write_enable1;
     wire  merge$z2;
+    wire  merge$res_half;
     wire  merge$busy;
     wire  merge$fw_valid;
+    wire  [31:0] merge$marks;
+    
+    // Local signals
+    reg  [9:0] dir_word;
+    reg  [9:0] res_word;
+    reg  [9:0] cur_word;
+    reg  [9:0] ray6_word;
     
     // Sub module instances
     machine$pes$1$unit$seq seq(
@@ -35184,6 +36793,7 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .cur(seq$cur),
         .v1(seq$v1),
         .tag1(seq$tag1),
+        .mark1(seq$mark1),
         .o_ax(seq$o_ax),
         .o_ay(seq$o_ay),
         .o_bx(seq$o_bx),
@@ -35191,13 +36801,21 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .o_wx(seq$o_wx),
         .o_wy(seq$o_wy)
     );
-    machine$pes$1$unit$alive_mem alive_mem(
-        .clock(alive_mem$clock),
-        .read_address(alive_mem$read_address),
-        .read_data(alive_mem$read_data),
-        .write_address(alive_mem$write_address),
-        .write_data(alive_mem$write_data),
-        .write_enable(alive_mem$write_enable)
+    machine$pes$1$unit$alive0 alive0(
+        .clock(alive0$clock),
+        .read_address(alive0$read_address),
+        .read_data(alive0$read_data),
+        .write_address(alive0$write_address),
+        .write_data(alive0$write_data),
+        .write_enable(alive0$write_enable)
+    );
+    machine$pes$1$unit$alive1 alive1(
+        .clock(alive1$clock),
+        .read_address(alive1$read_address),
+        .read_data(alive1$read_data),
+        .write_address(alive1$write_address),
+        .write_data(alive1$write_data),
+        .write_enable(alive1$write_enable)
     );
     machine$pes$1$unit$dir_mem_x dir_mem_x(
         .clock(dir_mem_x$clock),
@@ -35236,7 +36854,9 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .clock(pipe$clock),
         .v1(pipe$v1),
         .tag1(pipe$tag1),
-        .alive(pipe$alive),
+        .mark1(pipe$mark1),
+        .alive0(pipe$alive0),
+        .alive1(pipe$alive1),
         .dx_ay(pipe$dx_ay),
         .dy_ax(pipe$dy_ax),
         .dx_by(pipe$dx_by),
@@ -35246,7 +36866,8 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .sh4(pipe$sh4),
         .ray6(pipe$ray6),
         .v8(pipe$v8),
-        .tag8(pipe$tag8)
+        .tag8(pipe$tag8),
+        .mark8(pipe$mark8)
     );
     machine$pes$1$unit$key_scale key_scale(
         .clock(key_scale$clock),
@@ -35254,51 +36875,83 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         .sh(key_scale$sh),
         .key(key_scale$key)
     );
-    machine$pes$1$unit$mem_key mem_key(
-        .clock(mem_key$clock),
-        .read_address(mem_key$read_address),
-        .read_data(mem_key$read_data),
-        .write_address(mem_key$write_address),
-        .write_data(mem_key$write_data),
-        .write_enable(mem_key$write_enable)
+    machine$pes$1$unit$mem_key0 mem_key0(
+        .clock(mem_key0$clock),
+        .read_address(mem_key0$read_address),
+        .read_data(mem_key0$read_data),
+        .write_address(mem_key0$write_address),
+        .write_data(mem_key0$write_data),
+        .write_enable(mem_key0$write_enable)
     );
-    machine$pes$1$unit$mem_meta mem_meta(
-        .clock(mem_meta$clock),
-        .read_address(mem_meta$read_address),
-        .read_data(mem_meta$read_data),
-        .write_address(mem_meta$write_address),
-        .write_data(mem_meta$write_data),
-        .write_enable(mem_meta$write_enable)
+    machine$pes$1$unit$mem_meta0 mem_meta0(
+        .clock(mem_meta0$clock),
+        .read_address(mem_meta0$read_address),
+        .read_data(mem_meta0$read_data),
+        .write_address(mem_meta0$write_address),
+        .write_data(mem_meta0$write_data),
+        .write_enable(mem_meta0$write_enable)
+    );
+    machine$pes$1$unit$mem_key1 mem_key1(
+        .clock(mem_key1$clock),
+        .read_address(mem_key1$read_address),
+        .read_data(mem_key1$read_data),
+        .write_address(mem_key1$write_address),
+        .write_data(mem_key1$write_data),
+        .write_enable(mem_key1$write_enable)
+    );
+    machine$pes$1$unit$mem_meta1 mem_meta1(
+        .clock(mem_meta1$clock),
+        .read_address(mem_meta1$read_address),
+        .read_data(mem_meta1$read_data),
+        .write_address(mem_meta1$write_address),
+        .write_data(mem_meta1$write_data),
+        .write_enable(mem_meta1$write_enable)
     );
     machine$pes$1$unit$merge merge(
         .clock(merge$clock),
         .v8(merge$v8),
         .tag8(merge$tag8),
+        .mark8(merge$mark8),
         .key(merge$key),
-        .mem_key(merge$mem_key),
-        .mem_meta(merge$mem_meta),
+        .mem_key0(merge$mem_key0),
+        .mem_meta0(merge$mem_meta0),
+        .mem_key1(merge$mem_key1),
+        .mem_meta1(merge$mem_meta1),
         .res_re(merge$res_re),
         .res_addr(merge$res_addr),
-        .write_address(merge$write_address),
-        .write_key(merge$write_key),
-        .write_meta(merge$write_meta),
-        .write_enable(merge$write_enable),
+        .write_address0(merge$write_address0),
+        .write_key0(merge$write_key0),
+        .write_meta0(merge$write_meta0),
+        .write_enable0(merge$write_enable0),
+        .write_address1(merge$write_address1),
+        .write_key1(merge$write_key1),
+        .write_meta1(merge$write_meta1),
+        .write_enable1(merge$write_enable1),
         .z2(merge$z2),
+        .res_half(merge$res_half),
         .busy(merge$busy),
-        .fw_valid(merge$fw_valid)
+        .fw_valid(merge$fw_valid),
+        .marks(merge$marks)
     );
     
     // Update code
     always @(*) begin
         seq$clock = clock;
-        alive_mem$clock = clock;
+        alive0$clock = clock;
+        alive1$clock = clock;
         dir_mem_x$clock = clock;
         dir_mem_y$clock = clock;
         products$clock = clock;
         pipe$clock = clock;
         key_scale$clock = clock;
-        mem_key$clock = clock;
-        mem_meta$clock = clock;
+        mem_key0$clock = clock;
+        mem_meta0$clock = clock;
+        mem_key1$clock = clock;
+        mem_meta1$clock = clock;
+        dir_word = ((dir_addr) & 10'h3ff);
+        res_word = ((res_addr) & 10'h3ff);
+        cur_word = ((seq$cur) & 10'h3ff);
+        ray6_word = ((pipe$ray6) & 10'h3ff);
         merge$clock = clock;
         seq$patch_valid = patch_valid;
         seq$patch_ax = patch_ax;
@@ -35321,14 +36974,23 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         dir_mem_y$write_data = dir_y;
         dir_mem_x$write_enable = dir_we;
         dir_mem_y$write_enable = dir_we;
-        alive_mem$read_address = seq$cur;
-        alive_mem$write_address = seq$cur;
-        alive_mem$write_data = 1'b0;
-        alive_mem$write_enable = seq$kill;
-        if (dir_we) begin
-            alive_mem$write_address = dir_addr;
-            alive_mem$write_data = 1'b1;
-            alive_mem$write_enable = 1'b1;
+        alive0$read_address = cur_word;
+        alive0$write_address = cur_word;
+        alive0$write_data = 1'b0;
+        alive0$write_enable = seq$kill & ~seq$cur[32'ha];
+        if (dir_we & ~dir_addr[32'ha]) begin
+            alive0$write_address = dir_word;
+            alive0$write_data = 1'b1;
+            alive0$write_enable = 1'b1;
+        end
+        alive1$read_address = cur_word;
+        alive1$write_address = cur_word;
+        alive1$write_data = 1'b0;
+        alive1$write_enable = seq$kill & seq$cur[32'ha];
+        if (dir_we & dir_addr[32'ha]) begin
+            alive1$write_address = dir_word;
+            alive1$write_data = 1'b1;
+            alive1$write_enable = 1'b1;
         end
         products$ax = seq$o_ax;
         products$ay = seq$o_ay;
@@ -35338,9 +37000,11 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         products$wy = seq$o_wy;
         pipe$v1 = seq$v1;
         pipe$tag1 = seq$tag1;
+        pipe$mark1 = seq$mark1;
         products$dx = dir_mem_x$read_data;
         products$dy = dir_mem_y$read_data;
-        pipe$alive = |alive_mem$read_data;
+        pipe$alive0 = |alive0$read_data;
+        pipe$alive1 = |alive1$read_data;
         tests = pipe$tests;
         pipe$dx_ay = products$dx_ay;
         pipe$dy_ax = products$dy_ax;
@@ -35348,28 +37012,49 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
         pipe$dy_bx = products$dy_bx;
         key_scale$q = products$dx_wx + products$dy_wy;
         key_scale$sh = pipe$sh4;
-        mem_key$read_address = pipe$ray6;
-        mem_meta$read_address = pipe$ray6;
-        if (res_re) begin
-            mem_key$read_address = res_addr;
-            mem_meta$read_address = res_addr;
+        mem_key0$read_address = ray6_word;
+        mem_meta0$read_address = ray6_word;
+        mem_key1$read_address = ray6_word;
+        mem_meta1$read_address = ray6_word;
+        if (res_re & ~res_addr[32'ha]) begin
+            mem_key0$read_address = res_word;
+            mem_meta0$read_address = res_word;
+        end
+        if (res_re & res_addr[32'ha]) begin
+            mem_key1$read_address = res_word;
+            mem_meta1$read_address = res_word;
         end
         merge$v8 = pipe$v8;
         merge$tag8 = pipe$tag8;
+        merge$mark8 = pipe$mark8;
         merge$key = key_scale$key;
-        merge$mem_key = mem_key$read_data;
-        merge$mem_meta = mem_meta$read_data;
+        merge$mem_key0 = mem_key0$read_data;
+        merge$mem_meta0 = mem_meta0$read_data;
+        merge$mem_key1 = mem_key1$read_data;
+        merge$mem_meta1 = mem_meta1$read_data;
         merge$res_re = res_re;
         merge$res_addr = res_addr;
-        mem_key$write_address = merge$write_address;
-        mem_meta$write_address = merge$write_address;
-        mem_key$write_data = merge$write_key;
-        mem_meta$write_data = merge$write_meta;
-        mem_key$write_enable = merge$write_enable;
-        mem_meta$write_enable = merge$write_enable;
-        res_hit = mem_meta$read_data[32'h10] & ~merge$z2;
-        res_id = ((mem_meta$read_data) & 16'hffff);
-        res_key = mem_key$read_data;
+        mem_key0$write_address = merge$write_address0;
+        mem_meta0$write_address = merge$write_address0;
+        mem_key0$write_data = merge$write_key0;
+        mem_meta0$write_data = merge$write_meta0;
+        mem_key0$write_enable = merge$write_enable0;
+        mem_meta0$write_enable = merge$write_enable0;
+        mem_key1$write_address = merge$write_address1;
+        mem_meta1$write_address = merge$write_address1;
+        mem_key1$write_data = merge$write_key1;
+        mem_meta1$write_data = merge$write_meta1;
+        mem_key1$write_enable = merge$write_enable1;
+        mem_meta1$write_enable = merge$write_enable1;
+        marks = merge$marks;
+        res_hit = mem_meta0$read_data[32'h10] & ~merge$z2;
+        res_id = ((mem_meta0$read_data) & 16'hffff);
+        res_key = mem_key0$read_data;
+        if (merge$res_half) begin
+            res_hit = mem_meta1$read_data[32'h10] & ~merge$z2;
+            res_id = ((mem_meta1$read_data) & 16'hffff);
+            res_key = mem_key1$read_data;
+        end
         if (merge$z2) begin
             res_id = zero16;
             res_key = zero32;
@@ -35380,7 +37065,7 @@ module machine$pes$1$unit(clock,dir_we,dir_addr,dir_x,dir_y,patch_valid,patch_re
 endmodule // machine$pes$1$unit
 
 
-module machine$pes$1$unit$alive_mem(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$1$unit$alive0(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
@@ -35486,23 +37171,23 @@ module machine$pes$1$unit$alive_mem(clock,read_address,read_data,write_address,w
        end
     end
     `endif
-endmodule // machine$pes$1$unit$alive_mem
+endmodule // machine$pes$1$unit$alive0
 
 
-module machine$pes$1$unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$1$unit$alive1(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
     input wire  [9:0] read_address;
-    output reg  [17:0] read_data;
+    output reg  read_data;
     input wire  [9:0] write_address;
-    input wire  [17:0] write_data;
+    input wire  write_data;
     input wire  write_enable;
     
     // Update code (custom)
     `ifdef SHELLING_ECP5
     wire [17:0] bo_rd;
-    wire [17:0] bo_wd = write_data;
+    wire [17:0] bo_wd = {17'd0, write_data};
     wire [9:0] bo_ra = read_address;
     wire [9:0] bo_wa = write_address;
     DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
@@ -35558,7 +37243,7 @@ module machine$pes$1$unit$dir_mem_x(clock,read_address,read_data,write_address,w
        .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
-    always @(*) read_data = bo_rd[17:0];
+    always @(*) read_data = bo_rd[0:0];
     `else
     // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
     // first ones, and a FORMAL build asserts that no address beyond them is used.
@@ -35566,6 +37251,168 @@ module machine$pes$1$unit$dir_mem_x(clock,read_address,read_data,write_address,w
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
     localparam WORDS = 1024;
+    `endif
+    reg [0:0] mem [0:WORDS-1];
+    reg [0:0] r1;
+    reg collided;
+    integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
+    initial begin
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 1'd0;
+       r1 = 1'd0;
+       collided = 1'b0;
+       read_data = 1'd0;
+    end
+    always @(posedge clock) begin
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    `endif
+endmodule // machine$pes$1$unit$alive1
+
+
+module machine$pes$1$unit$dir_mem_x(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [10:0] read_address;
+    output reg  [17:0] read_data;
+    input wire  [10:0] write_address;
+    input wire  [17:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = write_data;
+    wire [10:0] bo_ra = read_address;
+    wire [10:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(1'b0),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(1'b0),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
+       .DIA0(bo_wd[9]), .DOB0(bo_rd[9]),
+       .DIA1(bo_wd[10]), .DOB1(bo_rd[10]),
+       .DIA2(bo_wd[11]), .DOB2(bo_rd[11]),
+       .DIA3(bo_wd[12]), .DOB3(bo_rd[12]),
+       .DIA4(bo_wd[13]), .DOB4(bo_rd[13]),
+       .DIA5(bo_wd[14]), .DOB5(bo_rd[14]),
+       .DIA6(bo_wd[15]), .DOB6(bo_rd[15]),
+       .DIA7(bo_wd[16]), .DOB7(bo_rd[16]),
+       .DIA8(bo_wd[17]), .DOB8(bo_rd[17]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[17:0];
+    `else
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 2048;
     `endif
     reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
@@ -35602,9 +37449,9 @@ module machine$pes$1$unit$dir_mem_y(clock,read_address,read_data,write_address,w
     
     // Module arguments
     input wire  clock;
-    input wire  [9:0] read_address;
+    input wire  [10:0] read_address;
     output reg  [17:0] read_data;
-    input wire  [9:0] write_address;
+    input wire  [10:0] write_address;
     input wire  [17:0] write_data;
     input wire  write_enable;
     
@@ -35612,41 +37459,41 @@ module machine$pes$1$unit$dir_mem_y(clock,read_address,read_data,write_address,w
     `ifdef SHELLING_ECP5
     wire [17:0] bo_rd;
     wire [17:0] bo_wd = write_data;
-    wire [9:0] bo_ra = read_address;
-    wire [9:0] bo_wa = write_address;
-    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+    wire [10:0] bo_ra = read_address;
+    wire [10:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
        .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
        .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
        .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
        .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
-       .ADA0(1'b1),
-       .ADA1(1'b1),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
        .ADA2(1'b0),
-       .ADA3(1'b0),
-       .ADA4(bo_wa[0]),
-       .ADA5(bo_wa[1]),
-       .ADA6(bo_wa[2]),
-       .ADA7(bo_wa[3]),
-       .ADA8(bo_wa[4]),
-       .ADA9(bo_wa[5]),
-       .ADA10(bo_wa[6]),
-       .ADA11(bo_wa[7]),
-       .ADA12(bo_wa[8]),
-       .ADA13(bo_wa[9]),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
        .ADB0(1'b0),
        .ADB1(1'b0),
        .ADB2(1'b0),
-       .ADB3(1'b0),
-       .ADB4(bo_ra[0]),
-       .ADB5(bo_ra[1]),
-       .ADB6(bo_ra[2]),
-       .ADB7(bo_ra[3]),
-       .ADB8(bo_ra[4]),
-       .ADB9(bo_ra[5]),
-       .ADB10(bo_ra[6]),
-       .ADB11(bo_ra[7]),
-       .ADB12(bo_ra[8]),
-       .ADB13(bo_ra[9]),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
        .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
        .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
        .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
@@ -35656,15 +37503,68 @@ module machine$pes$1$unit$dir_mem_y(clock,read_address,read_data,write_address,w
        .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
        .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
        .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
-       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
-       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
-       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
-       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
-       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
-       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
-       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
-       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
-       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(9), .DATA_WIDTH_B(9), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b0),
+       .ADA1(1'b0),
+       .ADA2(1'b0),
+       .ADA3(bo_wa[0]),
+       .ADA4(bo_wa[1]),
+       .ADA5(bo_wa[2]),
+       .ADA6(bo_wa[3]),
+       .ADA7(bo_wa[4]),
+       .ADA8(bo_wa[5]),
+       .ADA9(bo_wa[6]),
+       .ADA10(bo_wa[7]),
+       .ADA11(bo_wa[8]),
+       .ADA12(bo_wa[9]),
+       .ADA13(bo_wa[10]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(bo_ra[0]),
+       .ADB4(bo_ra[1]),
+       .ADB5(bo_ra[2]),
+       .ADB6(bo_ra[3]),
+       .ADB7(bo_ra[4]),
+       .ADB8(bo_ra[5]),
+       .ADB9(bo_ra[6]),
+       .ADB10(bo_ra[7]),
+       .ADB11(bo_ra[8]),
+       .ADB12(bo_ra[9]),
+       .ADB13(bo_ra[10]),
+       .DIA0(bo_wd[9]), .DOB0(bo_rd[9]),
+       .DIA1(bo_wd[10]), .DOB1(bo_rd[10]),
+       .DIA2(bo_wd[11]), .DOB2(bo_rd[11]),
+       .DIA3(bo_wd[12]), .DOB3(bo_rd[12]),
+       .DIA4(bo_wd[13]), .DOB4(bo_rd[13]),
+       .DIA5(bo_wd[14]), .DOB5(bo_rd[14]),
+       .DIA6(bo_wd[15]), .DOB6(bo_rd[15]),
+       .DIA7(bo_wd[16]), .DOB7(bo_rd[16]),
+       .DIA8(bo_wd[17]), .DOB8(bo_rd[17]),
+       .DIA9(1'b0),
+       .DIA10(1'b0),
+       .DIA11(1'b0),
+       .DIA12(1'b0),
+       .DIA13(1'b0),
+       .DIA14(1'b0),
+       .DIA15(1'b0),
+       .DIA16(1'b0),
+       .DIA17(1'b0),
        .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
     );
     always @(*) read_data = bo_rd[17:0];
@@ -35674,7 +37574,7 @@ module machine$pes$1$unit$dir_mem_y(clock,read_address,read_data,write_address,w
     `ifdef SHELLING_FORMAL_BRAM_WORDS
     localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
     `else
-    localparam WORDS = 1024;
+    localparam WORDS = 2048;
     `endif
     reg [17:0] mem [0:WORDS-1];
     reg [17:0] r1;
@@ -35761,7 +37661,7 @@ module machine$pes$1$unit$key_scale(clock,q,sh,key);
 endmodule // machine$pes$1$unit$key_scale
 
 
-module machine$pes$1$unit$mem_key(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$1$unit$mem_key0(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
@@ -35920,10 +37820,172 @@ module machine$pes$1$unit$mem_key(clock,read_address,read_data,write_address,wri
        end
     end
     `endif
-endmodule // machine$pes$1$unit$mem_key
+endmodule // machine$pes$1$unit$mem_key0
 
 
-module machine$pes$1$unit$mem_meta(clock,read_address,read_data,write_address,write_data,write_enable);
+module machine$pes$1$unit$mem_key1(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [31:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [31:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [35:0] bo_rd;
+    wire [35:0] bo_wd = {4'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile1 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
+       .DIA0(bo_wd[18]), .DOB0(bo_rd[18]),
+       .DIA1(bo_wd[19]), .DOB1(bo_rd[19]),
+       .DIA2(bo_wd[20]), .DOB2(bo_rd[20]),
+       .DIA3(bo_wd[21]), .DOB3(bo_rd[21]),
+       .DIA4(bo_wd[22]), .DOB4(bo_rd[22]),
+       .DIA5(bo_wd[23]), .DOB5(bo_rd[23]),
+       .DIA6(bo_wd[24]), .DOB6(bo_rd[24]),
+       .DIA7(bo_wd[25]), .DOB7(bo_rd[25]),
+       .DIA8(bo_wd[26]), .DOB8(bo_rd[26]),
+       .DIA9(bo_wd[27]), .DOB9(bo_rd[27]),
+       .DIA10(bo_wd[28]), .DOB10(bo_rd[28]),
+       .DIA11(bo_wd[29]), .DOB11(bo_rd[29]),
+       .DIA12(bo_wd[30]), .DOB12(bo_rd[30]),
+       .DIA13(bo_wd[31]), .DOB13(bo_rd[31]),
+       .DIA14(bo_wd[32]), .DOB14(bo_rd[32]),
+       .DIA15(bo_wd[33]), .DOB15(bo_rd[33]),
+       .DIA16(bo_wd[34]), .DOB16(bo_rd[34]),
+       .DIA17(bo_wd[35]), .DOB17(bo_rd[35]),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[31:0];
+    `else
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [31:0] mem [0:WORDS-1];
+    reg [31:0] r1;
+    reg collided;
+    integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
+    initial begin
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 32'd0;
+       r1 = 32'd0;
+       collided = 1'b0;
+       read_data = 32'd0;
+    end
+    always @(posedge clock) begin
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    `endif
+endmodule // machine$pes$1$unit$mem_key1
+
+
+module machine$pes$1$unit$mem_meta0(clock,read_address,read_data,write_address,write_data,write_enable);
     
     // Module arguments
     input wire  clock;
@@ -36029,57 +38091,183 @@ module machine$pes$1$unit$mem_meta(clock,read_address,read_data,write_address,wr
        end
     end
     `endif
-endmodule // machine$pes$1$unit$mem_meta
+endmodule // machine$pes$1$unit$mem_meta0
 
 
-module machine$pes$1$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_addr,write_address,write_key,write_meta,write_enable,z2,busy,fw_valid);
+module machine$pes$1$unit$mem_meta1(clock,read_address,read_data,write_address,write_data,write_enable);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] read_address;
+    output reg  [16:0] read_data;
+    input wire  [9:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    
+    // Update code (custom)
+    `ifdef SHELLING_ECP5
+    wire [17:0] bo_rd;
+    wire [17:0] bo_wd = {1'd0, write_data};
+    wire [9:0] bo_ra = read_address;
+    wire [9:0] bo_wa = write_address;
+    DP16KD #(.DATA_WIDTH_A(18), .DATA_WIDTH_B(18), .REGMODE_A("NOREG"), .REGMODE_B("OUTREG"), .RESETMODE("SYNC"), .ASYNC_RESET_RELEASE("SYNC"), .CSDECODE_A("0b000"), .CSDECODE_B("0b000"), .WRITEMODE_A("NORMAL"), .WRITEMODE_B("NORMAL"), .GSR("DISABLED")) bo_tile0 (
+       .CLKA(clock), .WEA(write_enable), .CEA(1'b1), .OCEA(1'b1), .RSTA(1'b0),
+       .CSA0(1'b0), .CSA1(1'b0), .CSA2(1'b0),
+       .CLKB(clock), .WEB(1'b0), .CEB(1'b1), .OCEB(1'b1), .RSTB(1'b0),
+       .CSB0(1'b0), .CSB1(1'b0), .CSB2(1'b0),
+       .ADA0(1'b1),
+       .ADA1(1'b1),
+       .ADA2(1'b0),
+       .ADA3(1'b0),
+       .ADA4(bo_wa[0]),
+       .ADA5(bo_wa[1]),
+       .ADA6(bo_wa[2]),
+       .ADA7(bo_wa[3]),
+       .ADA8(bo_wa[4]),
+       .ADA9(bo_wa[5]),
+       .ADA10(bo_wa[6]),
+       .ADA11(bo_wa[7]),
+       .ADA12(bo_wa[8]),
+       .ADA13(bo_wa[9]),
+       .ADB0(1'b0),
+       .ADB1(1'b0),
+       .ADB2(1'b0),
+       .ADB3(1'b0),
+       .ADB4(bo_ra[0]),
+       .ADB5(bo_ra[1]),
+       .ADB6(bo_ra[2]),
+       .ADB7(bo_ra[3]),
+       .ADB8(bo_ra[4]),
+       .ADB9(bo_ra[5]),
+       .ADB10(bo_ra[6]),
+       .ADB11(bo_ra[7]),
+       .ADB12(bo_ra[8]),
+       .ADB13(bo_ra[9]),
+       .DIA0(bo_wd[0]), .DOB0(bo_rd[0]),
+       .DIA1(bo_wd[1]), .DOB1(bo_rd[1]),
+       .DIA2(bo_wd[2]), .DOB2(bo_rd[2]),
+       .DIA3(bo_wd[3]), .DOB3(bo_rd[3]),
+       .DIA4(bo_wd[4]), .DOB4(bo_rd[4]),
+       .DIA5(bo_wd[5]), .DOB5(bo_rd[5]),
+       .DIA6(bo_wd[6]), .DOB6(bo_rd[6]),
+       .DIA7(bo_wd[7]), .DOB7(bo_rd[7]),
+       .DIA8(bo_wd[8]), .DOB8(bo_rd[8]),
+       .DIA9(bo_wd[9]), .DOB9(bo_rd[9]),
+       .DIA10(bo_wd[10]), .DOB10(bo_rd[10]),
+       .DIA11(bo_wd[11]), .DOB11(bo_rd[11]),
+       .DIA12(bo_wd[12]), .DOB12(bo_rd[12]),
+       .DIA13(bo_wd[13]), .DOB13(bo_rd[13]),
+       .DIA14(bo_wd[14]), .DOB14(bo_rd[14]),
+       .DIA15(bo_wd[15]), .DOB15(bo_rd[15]),
+       .DIA16(bo_wd[16]), .DOB16(bo_rd[16]),
+       .DIA17(bo_wd[17]), .DOB17(bo_rd[17]),
+       .DIB0(1'b0), .DIB1(1'b0), .DIB2(1'b0), .DIB3(1'b0), .DIB4(1'b0), .DIB5(1'b0), .DIB6(1'b0), .DIB7(1'b0), .DIB8(1'b0), .DIB9(1'b0), .DIB10(1'b0), .DIB11(1'b0), .DIB12(1'b0), .DIB13(1'b0), .DIB14(1'b0), .DIB15(1'b0), .DIB16(1'b0), .DIB17(1'b0)
+    );
+    always @(*) read_data = bo_rd[16:0];
+    `else
+    // `SHELLING_FORMAL_BRAM_WORDS (formal harnesses only): the memory keeps that many words, the
+    // first ones, and a FORMAL build asserts that no address beyond them is used.
+    `ifdef SHELLING_FORMAL_BRAM_WORDS
+    localparam WORDS = `SHELLING_FORMAL_BRAM_WORDS;
+    `else
+    localparam WORDS = 1024;
+    `endif
+    reg [16:0] mem [0:WORDS-1];
+    reg [16:0] r1;
+    reg collided;
+    integer i;
+    `ifdef FORMAL
+    always @(*) begin
+       a_bram_read_address: assert(read_address < WORDS);
+       if (write_enable) a_bram_write_address: assert(write_address < WORDS);
+    end
+    `endif
+    initial begin
+       for (i = 0; i < WORDS; i = i + 1) mem[i] = 17'd0;
+       r1 = 17'd0;
+       collided = 1'b0;
+       read_data = 17'd0;
+    end
+    always @(posedge clock) begin
+       // A plain registered read (read before write), so that synthesis infers block RAM; a read
+       // and a write of the same address in one clock are poisoned after the read register (see
+       // the Rust docs).
+       r1 <= mem[read_address];
+       collided <= write_enable && write_address == read_address;
+       read_data <= collided ? ~r1 : r1;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    `endif
+endmodule // machine$pes$1$unit$mem_meta1
+
+
+module machine$pes$1$unit$merge(clock,v8,tag8,mark8,key,mem_key0,mem_meta0,mem_key1,mem_meta1,res_re,res_addr,write_address0,write_key0,write_meta0,write_enable0,write_address1,write_key1,write_meta1,write_enable1,z2,res_half,busy,fw_valid,marks);
     
     // Module arguments
     input wire  clock;
     input wire  v8;
-    input wire  [25:0] tag8;
+    input wire  [26:0] tag8;
+    input wire  mark8;
     input wire  [31:0] key;
-    input wire  [31:0] mem_key;
-    input wire  [16:0] mem_meta;
+    input wire  [31:0] mem_key0;
+    input wire  [16:0] mem_meta0;
+    input wire  [31:0] mem_key1;
+    input wire  [16:0] mem_meta1;
     input wire  res_re;
-    input wire  [9:0] res_addr;
-    output reg  [9:0] write_address;
-    output reg  [31:0] write_key;
-    output reg  [16:0] write_meta;
-    output reg  write_enable;
+    input wire  [10:0] res_addr;
+    output reg  [9:0] write_address0;
+    output reg  [31:0] write_key0;
+    output reg  [16:0] write_meta0;
+    output reg  write_enable0;
+    output reg  [9:0] write_address1;
+    output reg  [31:0] write_key1;
+    output reg  [16:0] write_meta1;
+    output reg  write_enable1;
     output reg  z2;
+    output reg  res_half;
     output reg  busy;
     output reg  fw_valid;
+    output reg  [31:0] marks;
     
     // Update code (custom)
-    wire [9:0] ray8 = tag8[25:16];
+    wire [10:0] ray8 = tag8[26:16];
     wire [15:0] id8 = tag8[15:0];
-    reg cm_hit, cm_gt_hi, cm_eq_hi, cm_gt_lo, cm_eq_lo, cm_lt;
+    reg cm0_hit, cm0_gt_hi, cm0_eq_hi, cm0_gt_lo, cm0_eq_lo, cm0_lt;
+    reg cm1_hit, cm1_gt_hi, cm1_eq_hi, cm1_gt_lo, cm1_eq_lo, cm1_lt;
     reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
     reg m1, m2, m3;
     reg v9;
-    reg [9:0] ray9;
+    reg [10:0] ray9;
     reg [15:0] id9;
     reg [31:0] key9;
-    reg [9:0] fw_ray;
+    reg [10:0] fw_ray;
     reg [31:0] fw_key;
     reg [15:0] fw_id;
     reg fw2_valid;
-    reg [9:0] fw2_ray;
+    reg [10:0] fw2_ray;
     reg [31:0] fw2_key;
     reg [15:0] fw2_id;
     reg fw3_valid;
     reg rd_valid;
-    reg [9:0] rd_addr;
+    reg [10:0] rd_addr;
     reg z1;
-    reg better;
+    reg mark9;
+    reg fwd, fwin, better0, better1;
     initial begin
-       cm_hit = 1'b0;
-       cm_gt_hi = 1'b0;
-       cm_eq_hi = 1'b0;
-       cm_gt_lo = 1'b0;
-       cm_eq_lo = 1'b0;
-       cm_lt = 1'b0;
+       cm0_hit = 1'b0;
+       cm0_gt_hi = 1'b0;
+       cm0_eq_hi = 1'b0;
+       cm0_gt_lo = 1'b0;
+       cm0_eq_lo = 1'b0;
+       cm0_lt = 1'b0;
+       cm1_hit = 1'b0;
+       cm1_gt_hi = 1'b0;
+       cm1_eq_hi = 1'b0;
+       cm1_gt_lo = 1'b0;
+       cm1_eq_lo = 1'b0;
+       cm1_lt = 1'b0;
        m1 = 1'b0;
        m2 = 1'b0;
        m3 = 1'b0;
@@ -36087,6 +38275,8 @@ module machine$pes$1$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        fw_valid = 1'b0;
        fw2_valid = 1'b0;
        fw3_valid = 1'b0;
+       mark9 = 1'b0;
+       res_half = 1'b0;
        c1_gt = 1'b0;
        c1_eq = 1'b0;
        c1_lt = 1'b0;
@@ -36096,45 +38286,69 @@ module machine$pes$1$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        c3_gt = 1'b0;
        c3_eq = 1'b0;
        c3_lt = 1'b0;
-       ray9 = 10'd0;
-       fw_ray = 10'd0;
-       fw2_ray = 10'd0;
-       rd_addr = 10'd0;
+       ray9 = 11'd0;
+       fw_ray = 11'd0;
+       fw2_ray = 11'd0;
+       rd_addr = 11'd0;
        id9 = 16'd0;
        fw_id = 16'd0;
        fw2_id = 16'd0;
        key9 = 32'd0;
        fw_key = 32'd0;
        fw2_key = 32'd0;
+       marks = 32'd0;
        rd_valid = 1'b0;
        z1 = 1'b0;
        z2 = 1'b0;
     end
     always @(*) begin
-       if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
-       else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
-       else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-       else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && (cm_gt_lo || (cm_eq_lo && cm_lt))));
-       if (rd_valid) begin
-          write_address = rd_addr;
-          write_key = 32'd0;
-          write_meta = 17'd0;
-          write_enable = 1'b1;
-       end else begin
-          write_address = ray9;
-          write_key = key9;
-          write_meta = {1'b1, id9};
-          write_enable = better;
+       fwd = 1'b1;
+       if (m1 && fw_valid) fwin = c1_gt || (c1_eq && c1_lt);
+       else if (m2 && fw2_valid) fwin = c2_gt || (c2_eq && c2_lt);
+       else if (m3 && fw3_valid) fwin = c3_gt || (c3_eq && c3_lt);
+       else begin
+          fwd = 1'b0;
+          fwin = 1'b0;
        end
-       busy = v9;
+       better0 = v9 && (fwd ? fwin : (!cm0_hit || cm0_gt_hi || (cm0_eq_hi && (cm0_gt_lo || (cm0_eq_lo && cm0_lt)))));
+       better1 = v9 && (fwd ? fwin : (!cm1_hit || cm1_gt_hi || (cm1_eq_hi && (cm1_gt_lo || (cm1_eq_lo && cm1_lt)))));
+       if (rd_valid && !rd_addr[10]) begin
+          write_address0 = rd_addr[9:0];
+          write_key0 = 32'd0;
+          write_meta0 = 17'd0;
+          write_enable0 = 1'b1;
+       end else begin
+          write_address0 = ray9[9:0];
+          write_key0 = key9;
+          write_meta0 = {1'b1, id9};
+          write_enable0 = better0 && !ray9[10];
+       end
+       if (rd_valid && rd_addr[10]) begin
+          write_address1 = rd_addr[9:0];
+          write_key1 = 32'd0;
+          write_meta1 = 17'd0;
+          write_enable1 = 1'b1;
+       end else begin
+          write_address1 = ray9[9:0];
+          write_key1 = key9;
+          write_meta1 = {1'b1, id9};
+          write_enable1 = better1 && ray9[10];
+       end
+       busy = v9 || mark9;
     end
     always @(posedge clock) begin
-       cm_hit <= mem_meta[16];
-       cm_gt_hi <= key[31:16] > mem_key[31:16];
-       cm_eq_hi <= key[31:16] == mem_key[31:16];
-       cm_gt_lo <= key[15:0] > mem_key[15:0];
-       cm_eq_lo <= key[15:0] == mem_key[15:0];
-       cm_lt <= id8 < mem_meta[15:0];
+       cm0_hit <= mem_meta0[16];
+       cm0_gt_hi <= key[31:16] > mem_key0[31:16];
+       cm0_eq_hi <= key[31:16] == mem_key0[31:16];
+       cm0_gt_lo <= key[15:0] > mem_key0[15:0];
+       cm0_eq_lo <= key[15:0] == mem_key0[15:0];
+       cm0_lt <= id8 < mem_meta0[15:0];
+       cm1_hit <= mem_meta1[16];
+       cm1_gt_hi <= key[31:16] > mem_key1[31:16];
+       cm1_eq_hi <= key[31:16] == mem_key1[31:16];
+       cm1_gt_lo <= key[15:0] > mem_key1[15:0];
+       cm1_eq_lo <= key[15:0] == mem_key1[15:0];
+       cm1_lt <= id8 < mem_meta1[15:0];
        c1_gt <= key > key9;
        c1_eq <= key == key9;
        c1_lt <= id8 < id9;
@@ -36151,7 +38365,7 @@ module machine$pes$1$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        ray9 <= ray8;
        id9 <= id8;
        key9 <= key;
-       fw_valid <= better;
+       fw_valid <= ray9[10] ? better1 : better0;
        fw_ray <= ray9;
        fw_key <= key9;
        fw_id <= id9;
@@ -36164,17 +38378,22 @@ module machine$pes$1$unit$merge(clock,v8,tag8,key,mem_key,mem_meta,res_re,res_ad
        rd_addr <= res_addr;
        z1 <= res_re && rd_valid && res_addr == rd_addr;
        z2 <= z1;
+       res_half <= rd_addr[10];
+       mark9 <= mark8;
+       if (mark9) marks <= marks + 32'd1;
     end
 endmodule // machine$pes$1$unit$merge
 
 
-module machine$pes$1$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests,busy,sh4,ray6,v8,tag8);
+module machine$pes$1$unit$pipe(clock,v1,tag1,mark1,alive0,alive1,dx_ay,dy_ax,dx_by,dy_bx,tests,busy,sh4,ray6,v8,tag8,mark8);
     
     // Module arguments
     input wire  clock;
     input wire  v1;
-    input wire  [31:0] tag1;
-    input wire  alive;
+    input wire  [32:0] tag1;
+    input wire  mark1;
+    input wire  alive0;
+    input wire  alive1;
     input wire  [31:0] dx_ay;
     input wire  [31:0] dy_ax;
     input wire  [31:0] dx_by;
@@ -36182,21 +38401,23 @@ module machine$pes$1$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests
     output reg  [31:0] tests;
     output reg  busy;
     output reg  [5:0] sh4;
-    output reg  [9:0] ray6;
+    output reg  [10:0] ray6;
     output reg  v8;
-    output reg  [25:0] tag8;
+    output reg  [26:0] tag8;
+    output reg  mark8;
     
     // Update code (custom)
     reg v2, v3, v4, v5, v6, v7;
-    reg [31:0] tag2;
-    reg [31:0] tag3;
-    reg [31:0] tag4;
+    reg mk2, mk3, mk4, mk5, mk6, mk7;
+    reg [32:0] tag2;
+    reg [32:0] tag3;
+    reg [32:0] tag4;
     reg [31:0] sa5;
     reg [31:0] sb5;
-    reg [25:0] t5;
-    reg [25:0] t6;
-    reg [25:0] t7;
-    wire live = v2 && alive;
+    reg [26:0] t5;
+    reg [26:0] t6;
+    reg [26:0] t7;
+    wire live = v2 && (tag2[32] ? alive1 : alive0);
     initial begin
        v2 = 1'b0;
        v3 = 1'b0;
@@ -36205,21 +38426,28 @@ module machine$pes$1$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests
        v6 = 1'b0;
        v7 = 1'b0;
        v8 = 1'b0;
-       tag2 = 32'd0;
-       tag3 = 32'd0;
-       tag4 = 32'd0;
+       mk2 = 1'b0;
+       mk3 = 1'b0;
+       mk4 = 1'b0;
+       mk5 = 1'b0;
+       mk6 = 1'b0;
+       mk7 = 1'b0;
+       mark8 = 1'b0;
+       tag2 = 33'd0;
+       tag3 = 33'd0;
+       tag4 = 33'd0;
        sa5 = 32'd0;
        sb5 = 32'd0;
-       t5 = 26'd0;
-       t6 = 26'd0;
-       t7 = 26'd0;
-       tag8 = 26'd0;
+       t5 = 27'd0;
+       t6 = 27'd0;
+       t7 = 27'd0;
+       tag8 = 27'd0;
        tests = 32'd0;
     end
     always @(*) begin
-       busy = v2 || v3 || v4 || v5 || v6 || v7 || v8;
+       busy = v2 || v3 || v4 || v5 || v6 || v7 || v8 || mk2 || mk3 || mk4 || mk5 || mk6 || mk7 || mark8;
        sh4 = tag4[21:16];
-       ray6 = t6[25:16];
+       ray6 = t6[26:16];
     end
     always @(posedge clock) begin
        v2 <= v1;
@@ -36232,13 +38460,20 @@ module machine$pes$1$unit$pipe(clock,v1,tag1,alive,dx_ay,dy_ax,dx_by,dy_bx,tests
        v5 <= v4;
        sa5 <= dx_ay - dy_ax;
        sb5 <= dx_by - dy_bx;
-       t5 <= {tag4[31:22], tag4[15:0]};
+       t5 <= {tag4[32:22], tag4[15:0]};
        v6 <= v5 && (sa5 == 32'd0 || sa5[31]) && !sb5[31];
        t6 <= t5;
        v7 <= v6;
        t7 <= t6;
        v8 <= v7;
        tag8 <= t7;
+       mk2 <= mark1;
+       mk3 <= mk2;
+       mk4 <= mk3;
+       mk5 <= mk4;
+       mk6 <= mk5;
+       mk7 <= mk6;
+       mark8 <= mk7;
     end
 endmodule // machine$pes$1$unit$pipe
 
@@ -36711,7 +38946,7 @@ module machine$pes$1$unit$products(clock,dx,dy,ax,ay,bx,by,wx,wy,dx_ay,dy_ax,dx_
 endmodule // machine$pes$1$unit$products
 
 
-module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,full,busy,kill,cur,v1,tag1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
+module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_by,patch_wx,patch_wy,patch_sh,patch_id,patch_first,patch_count,patch_retire,full,busy,kill,cur,v1,tag1,mark1,o_ax,o_ay,o_bx,o_by,o_wx,o_wy);
     
     // Module arguments
     input wire  clock;
@@ -36724,15 +38959,16 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
     input wire  [17:0] patch_wy;
     input wire  [5:0] patch_sh;
     input wire  [15:0] patch_id;
-    input wire  [9:0] patch_first;
+    input wire  [10:0] patch_first;
     input wire  [10:0] patch_count;
     input wire  patch_retire;
     output reg  full;
     output reg  busy;
     output reg  kill;
-    output reg  [9:0] cur;
+    output reg  [10:0] cur;
     output reg  v1;
-    output reg  [31:0] tag1;
+    output reg  [32:0] tag1;
+    output reg  mark1;
     output reg  [17:0] o_ax;
     output reg  [17:0] o_ay;
     output reg  [17:0] o_bx;
@@ -36758,9 +38994,10 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        p_sh = 6'd0;
        p_id = 16'd0;
        full = 1'b0;
-       cur = 10'd0;
+       cur = 11'd0;
        v1 = 1'b0;
-       tag1 = 32'd0;
+       tag1 = 33'd0;
+       mark1 = 1'b0;
        p_ax = 18'd0;
        o_ax = 18'd0;
        p_ay = 18'd0;
@@ -36775,12 +39012,13 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        o_wy = 18'd0;
     end
     always @(*) begin
-       busy = issue || v1;
+       busy = issue || v1 || mark1;
        kill = issue && p_retire;
     end
     always @(posedge clock) begin
        v1 <= issue && !p_retire;
        tag1 <= {cur, p_sh, p_id};
+       mark1 <= patch_valid && !full && patch_retire && patch_count == 11'd0;
        o_ax <= p_ax;
        o_ay <= p_ay;
        o_bx <= p_bx;
@@ -36803,7 +39041,7 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        end else if (issue) begin
           remaining <= remaining - 11'd1;
           full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
-          cur <= cur + 10'd1;
+          cur <= {cur[10], cur[9:0] + 10'd1};
        end
     end
 endmodule // machine$pes$1$unit$seq

@@ -1,7 +1,7 @@
 // screener: exported from rust-hdl by `shelling export-verilog`; do not edit.
 
 
-module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
+module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_bank,sector_read,sector_bank,normal_bank,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_pass,passed,backward,back_facing,outside,near);
     
     // Module arguments
     input wire  clock;
@@ -23,6 +23,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     input wire  in_bank;
     output reg  sector_read;
     output reg  sector_bank;
+    output reg  normal_bank;
     output reg  out_valid;
     input wire  out_ready;
     output reg  [15:0] out_id;
@@ -262,6 +263,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [17:0] normal_y2$d;
     wire  [17:0] normal_y2$q;
     reg  normal_y2$clock;
+    reg  [17:0] normal_xa2$d;
+    wire  [17:0] normal_xa2$q;
+    reg  normal_xa2$clock;
+    reg  [17:0] normal_ya2$d;
+    wire  [17:0] normal_ya2$q;
+    reg  normal_ya2$clock;
     reg  v3$d;
     wire  v3$q;
     reg  v3$clock;
@@ -1002,6 +1009,16 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(normal_y2$q),
         .clock(normal_y2$clock)
     );
+    screener$normal_xa2 normal_xa2(
+        .d(normal_xa2$d),
+        .q(normal_xa2$q),
+        .clock(normal_xa2$clock)
+    );
+    screener$normal_ya2 normal_ya2(
+        .d(normal_ya2$d),
+        .q(normal_ya2$q),
+        .clock(normal_ya2$clock)
+    );
     screener$v3 v3(
         .d(v3$d),
         .q(v3$q),
@@ -1650,6 +1667,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negy2$clock = clock;
         normal_x2$clock = clock;
         normal_y2$clock = clock;
+        normal_xa2$clock = clock;
+        normal_ya2$clock = clock;
         v3$clock = clock;
         bank3$clock = clock;
         id3$clock = clock;
@@ -1795,6 +1814,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negy2$d = negy2$q;
         normal_x2$d = normal_x2$q;
         normal_y2$d = normal_y2$q;
+        normal_xa2$d = normal_xa2$q;
+        normal_ya2$d = normal_ya2$q;
         v3$d = v3$q;
         bank3$d = bank3$q;
         id3$d = id3$q;
@@ -1980,11 +2001,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         absny2$d = absny;
         negx2$d = nx[32'h11];
         negy2$d = ny[32'h11];
+        normal_bank = bank1$q;
         normal_x2$d = normal_x;
         normal_y2$d = normal_y;
-        m_nax$a = normal_x;
+        normal_xa2$d = normal_x;
+        normal_ya2$d = normal_y;
+        m_nax$a = normal_xa2$q;
         m_nax$b = ax2$q;
-        m_nay$a = normal_y;
+        m_nay$a = normal_ya2$q;
         m_nay$b = ay2$q;
         m_nbx$a = normal_x2$q;
         m_nbx$b = bx2$q;
@@ -6173,6 +6197,25 @@ module screener$normal_x2(d,q,clock);
 endmodule // screener$normal_x2
 
 
+module screener$normal_xa2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$normal_xa2
+
+
 module screener$normal_y2(d,q,clock);
     
     // Module arguments
@@ -6190,6 +6233,25 @@ module screener$normal_y2(d,q,clock);
     end
           
 endmodule // screener$normal_y2
+
+
+module screener$normal_ya2(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$normal_ya2
 
 
 module screener$outside8(d,q,clock);

@@ -260,3 +260,99 @@ pub fn run_bundle(
     let cycles = stream_jobs(drv, jobs, pacing, seed)?;
     Ok((read_hits(drv, rays_touched(dirs, jobs))?, cycles))
 }
+
+/// The rays of the ray memory's half `half` (0 or 1): ray `r` of a bundle there is ray
+/// `half · MAX_BUNDLE + r` of the unit.
+fn in_half(half: usize, r: usize) -> u64 {
+    (half * MAX_BUNDLE + r % MAX_BUNDLE) as u64
+}
+
+/// Drives job `j` of a bundle in half `half` on the unit's patch port (or none).
+fn present_job(u: &mut IntersectionUnit, job: Option<(Job, usize)>) {
+    u.patch_valid.next = job.is_some();
+    if let Some((j, half)) = job {
+        let p = j.patch;
+        u.patch_ax.next = field(p.a[0] as i64);
+        u.patch_ay.next = field(p.a[1] as i64);
+        u.patch_bx.next = field(p.b[0] as i64);
+        u.patch_by.next = field(p.b[1] as i64);
+        u.patch_wx.next = field(p.w[0] as i64);
+        u.patch_wy.next = field(p.w[1] as i64);
+        u.patch_sh.next = field(p.sh as i64);
+        u.patch_id.next = (p.id as u64).into();
+        u.patch_first.next = in_half(half, j.first as usize).into();
+        u.patch_count.next = (j.count as u64).into();
+        u.patch_retire.next = j.retire;
+    }
+}
+
+/// Bundles overlapped in the two halves of the ray memory, as a PE's host runs its sources:
+/// bundle `b` lives in half `b mod 2`; its jobs stream as soon as its directions are written and
+/// the bundle before has sent all of its own, and end with a marker (a retire of no rays); it is
+/// read out as soon as the unit's `marks` counts that marker, while the next bundle's jobs run
+/// in the other half; bundle `b + 2`'s directions are written into the half as it is read out.
+/// Every cycle carries a direction write, a readout request and a patch offer where one is due.
+/// Returns each bundle's hits (of [`rays_touched`] rays) and the cycles of the whole run.
+pub fn run_overlapped(
+    drv: &mut Driver<IntersectionUnit>,
+    bundles: &[(Vec<[i32; 2]>, Vec<Job>)],
+) -> Result<(Vec<Vec<Option<Nearest>>>, u64)> {
+    let n = bundles.len();
+    let start = drv.cycles();
+    let marks_before = drv.uut().marks.val().to_u32();
+    let rays: Vec<usize> = bundles.iter().map(|(d, j)| rays_touched(d, j)).collect();
+    // Per bundle: directions written, jobs sent (the marker last), readout requests and hits.
+    let (mut written, mut sent, mut requested) = (vec![0usize; n], vec![0usize; n], vec![0usize; n]);
+    let mut hits: Vec<Vec<Option<Nearest>>> = vec![Vec::new(); n];
+    // The readouts in flight: (bundle, cycles since the request).
+    let mut in_flight: Vec<(usize, u64)> = Vec::new();
+    let total: u64 = bundles.iter().map(|(d, j)| d.len() as u64 + j.iter().map(|j| j.count as u64 + 1).sum::<u64>()).sum();
+    let limit = start + 64 + 4 * total + 4 * rays.iter().sum::<usize>() as u64;
+    while hits.iter().zip(&rays).any(|(h, &r)| h.len() < r) {
+        let marks = drv.uut().marks.val().to_u32().wrapping_sub(marks_before) as usize;
+        // The bundle being written: the first not fully written, once the bundle two before it
+        // (the same half) has been read out.
+        let w = (0..n).find(|&b| written[b] < bundles[b].0.len());
+        let w = w.filter(|&b| b < 2 || requested[b - 2] == rays[b - 2]);
+        // The bundle streaming: the first with jobs left, once written and the one before sent.
+        let s = (0..n).find(|&b| sent[b] <= bundles[b].1.len());
+        let s = s.filter(|&b| written[b] == bundles[b].0.len());
+        // The bundle read out: the first with readouts left, once its marker is counted.
+        let r = (0..n).find(|&b| requested[b] < rays[b]).filter(|&b| marks > b);
+        let write = w.map(|b| (in_half(b % 2, written[b]) as usize, bundles[b].0[written[b]]));
+        let read = r.map(|b| in_half(b % 2, requested[b]) as usize);
+        let job = s.map(|b| {
+            let j = bundles[b].1.get(sent[b]).copied().unwrap_or(Job::retire(0, 0));
+            (j, b % 2)
+        });
+        drv.drive(|u| {
+            u.write_direction(write);
+            u.request_readout(read);
+            present_job(u, job);
+        })?;
+        let taken = drv.uut().patch_valid.val() && drv.uut().patch_ready.val();
+        drv.tick()?;
+        if let Some(b) = w {
+            written[b] += 1;
+        }
+        if let (Some(b), true) = (s, taken) {
+            sent[b] += 1;
+        }
+        in_flight.iter_mut().for_each(|f| f.1 += 1);
+        if let Some((b, _)) = in_flight.first().copied().filter(|f| f.1 == READOUT_LATENCY - 1) {
+            hits[b].push(drv.uut().readout());
+            in_flight.remove(0);
+        }
+        if let Some(b) = r {
+            requested[b] += 1;
+            in_flight.push((b, 0));
+        }
+        if drv.cycles() > limit {
+            return Err(Error::new(format!(
+                "overlapped bundles: no end after {} cycles (written {written:?}, sent {sent:?}, read {requested:?}, marks {marks})",
+                drv.cycles() - start
+            )));
+        }
+    }
+    Ok((hits, drv.cycles() - start))
+}

@@ -193,7 +193,7 @@ macro_rules! machine_port {
 pe_ports! {
     inputs {
         dir_we: bool = 1 @ pe,
-        dir_addr: u16 = 10 @ pe,
+        dir_addr: u16 = 11 @ pe,
         dir_x: i32 = 18 @ pe,
         dir_y: i32 = 18 @ pe,
         origin_x: i32 = 17 @ pe,
@@ -208,7 +208,7 @@ pe_ports! {
         cmd_retire: bool = 1 @ pe,
         cmd_sector: bool = 1 @ pe,
         cmd_id: u16 = 16 @ pe,
-        cmd_first: u16 = 10 @ pe,
+        cmd_first: u16 = 11 @ pe,
         cmd_count: u16 = 11 @ pe,
         cfg_cache_enable: bool = 1 @ shared,
         cfg_cache_mask: u16 = 10 @ shared,
@@ -219,7 +219,7 @@ pe_ports! {
         mem_bx: i32 = 17 @ memory,
         mem_by: i32 = 17 @ memory,
         res_re: bool = 1 @ pe,
-        res_addr: u16 = 10 @ pe,
+        res_addr: u16 = 11 @ pe,
     }
     outputs {
         cmd_ready: bool = 1 @ pe,
@@ -238,6 +238,7 @@ pe_ports! {
         outside: u32 = 32 @ pe,
         near: u32 = 32 @ pe,
         tests: u32 = 32 @ pe,
+        marks: u32 = 32 @ pe,
     }
 }
 

@@ -15,7 +15,8 @@ use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::prim::BramOut;
 use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
 use shelling_testbench::intersection::{
-    load_directions, model_bundle, model_bundle_counted, run_bundle, stream_jobs, Job, RayBench, MAX_BUNDLE,
+    load_directions, model_bundle, model_bundle_counted, run_bundle, run_overlapped, stream_jobs, Job, RayBench,
+    MAX_BUNDLE,
 };
 use shelling_testbench::{waveform_path, Design, Driver, Error, Pacing, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
@@ -207,6 +208,88 @@ fn retired_rays_are_neither_tested_nor_updated() -> Result<()> {
     for pacing in [Pacing::NONE, Pacing { idle: true, backpressure: false }] {
         check("retired rays", &dirs, &jobs, pacing, 21)?;
     }
+    Ok(())
+}
+
+/// Runs `bundles` overlapped in the two halves of a fresh unit ([`run_overlapped`]) and checks
+/// every bundle's rays and the tests counter against the model; returns the unit and the cycles.
+fn check_overlapped(
+    name: &str,
+    bundles: &[(Vec<[i32; 2]>, Vec<Job>)],
+    seed: u64,
+    record: bool,
+) -> Result<(Driver<IntersectionUnit>, u64)> {
+    let mut drv = driver()?;
+    if record {
+        drv.record_ports()?;
+    }
+    let (hits, cycles) = run_overlapped(&mut drv, bundles)?;
+    let mut tests = 0;
+    for (b, ((dirs, jobs), hits)) in bundles.iter().zip(hits).enumerate() {
+        let mut board = Scoreboard::new(name, seed, model_bundle(dirs, jobs)).with_context(format!("bundle {b}"));
+        board.check_all(hits.into_iter().enumerate().map(|(i, h)| (i as u64, h)))?;
+        board.finish()?;
+        tests += model_bundle_counted(dirs, jobs).1;
+    }
+    let counted = drv.uut().tests.val().to_u64();
+    if counted != tests {
+        return Err(Error::new(format!("{name}: tests counter {counted} != {tests} (seed {seed:#x})")));
+    }
+    let marks = drv.uut().marks.val().to_u64();
+    if marks != bundles.len() as u64 {
+        return Err(Error::new(format!("{name}: {marks} markers counted of {}", bundles.len())));
+    }
+    Ok((drv, cycles))
+}
+
+#[test]
+fn bundles_overlap_in_the_two_halves_of_the_ray_memory() -> Result<()> {
+    // Five bundles, each in the half its number's parity names: a bundle's readout and the
+    // directions of the one after next run beside the next one's tests. Replayed on the
+    // exported Verilog (rungs 4 and 5).
+    let seed = 0x0ba1f;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    // Every job within its bundle's rays, as a PE's host sends them: the rays beyond keep the
+    // live bits of the half's earlier bundles.
+    let bundles: Vec<_> = (0..5)
+        .map(|b| {
+            let rays = [96, 40, 128, 64, 80][b];
+            let (dirs, jobs) = scene_bundle(&mut rng, rays, 40);
+            let jobs = jobs.into_iter().map(|j| Job { count: j.count.min((rays - j.first as usize) as u16), ..j });
+            (dirs, jobs.collect())
+        })
+        .collect();
+    let (mut drv, cycles) = check_overlapped("overlapped bundles", &bundles, seed, true)?;
+    // Overlapped, the run costs about the jobs' ray slots, not the directions and readouts too.
+    let slots: u64 = bundles.iter().flat_map(|(_, j)| j).map(|j| j.count as u64 + 1).sum();
+    let host: u64 = bundles.iter().map(|(d, j)| 2 * shelling_testbench::intersection::rays_touched(d, j) as u64).sum();
+    assert!(cycles < slots + host / 2 + 200, "{cycles} cycles for {slots} slots and {host} host cycles");
+    let rec = drv.take_recording().ok_or("recording was on")?;
+    for (design, simulator, name) in [
+        (Design::Rtl, Simulator::Icarus, "intersection_unit-overlapped"),
+        (Design::Rtl, Simulator::Verilator, "intersection_unit-overlapped-verilator"),
+        (Design::Gates, Simulator::Icarus, "intersection_unit-overlapped-gates"),
+    ] {
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(name);
+        let report = rec
+            .replay_netlist(drv.uut(), &dir, design, simulator)
+            .map_err(|e| e.context(format!("seed {seed:#x}")))?;
+        assert_eq!(report.cycles, rec.cycles());
+    }
+    Ok(())
+}
+
+#[test]
+fn a_half_is_read_out_only_after_its_last_write() -> Result<()> {
+    // The last job of bundle 0 writes ray 0, the first ray its readout reads, as soon as the
+    // marker behind it is counted: a marker counted a clock early reads the ray in the clock
+    // of its write, before the hit.
+    let e = 1 << 16;
+    let wall = |id, x: i32| PatchSetup { id, a: [x, -640], b: [x, 640], w: [(1 << 16) * 64 / x, 0], sh: 0 };
+    let b0 = (vec![[e, 0]; 4], vec![Job::test(wall(1, 640), 0, 4), Job::test(wall(2, 320), 0, 1)]);
+    let b1 = (vec![[e, 0]; 4], vec![Job::test(wall(3, 160), 1, 2)]);
+    let b2 = (vec![[e, 0]; 2], vec![Job::test(wall(4, 80), 0, 1)]);
+    check_overlapped("marker timing", &[b0, b1, b2], 0, false)?;
     Ok(())
 }
 

@@ -164,7 +164,7 @@ pub struct IntersectionUnit {
     pub clock: Signal<In, Clock>,
     // Bundle setup: the ray direction memory.
     pub dir_we: Signal<In, bool>,
-    pub dir_addr: Signal<In, Bits<10>>,
+    pub dir_addr: Signal<In, Bits<11>>,
     pub dir_x: Signal<In, Bits<18>>,
     pub dir_y: Signal<In, Bits<18>>,
     // Patch stream.
@@ -178,32 +178,42 @@ pub struct IntersectionUnit {
     pub patch_wy: Signal<In, Bits<18>>,
     pub patch_sh: Signal<In, Bits<6>>,
     pub patch_id: Signal<In, Bits<16>>,
-    pub patch_first: Signal<In, Bits<10>>,
+    pub patch_first: Signal<In, Bits<11>>,
     pub patch_count: Signal<In, Bits<11>>,
     pub patch_retire: Signal<In, bool>,
-    // Result readout (read and clear), only while not busy.
+    // Result readout (read and clear), only in a half with no test in flight.
     pub res_re: Signal<In, bool>,
-    pub res_addr: Signal<In, Bits<10>>,
+    pub res_addr: Signal<In, Bits<11>>,
     pub res_hit: Signal<Out, bool>,
     pub res_id: Signal<Out, Bits<16>>,
     pub res_key: Signal<Out, Bits<32>>,
     // Status.
     pub busy: Signal<Out, bool>,
     pub tests: Signal<Out, Bits<32>>,
+    pub marks: Signal<Out, Bits<32>>,
     // Stages 0 and 1: the sequencer, the current patch, the issued ray's operands.
     seq: IssueSequencer,
-    alive_mem: BramOut<1, 10>,
+    /// The live bits of each half.
+    alive0: BramOut<1, 10>,
+    alive1: BramOut<1, 10>,
     // Stage 2: directions and live bit arrive; the six products start (stage 4: they arrive).
-    dir_mem_x: BramOut<18, 10>,
-    dir_mem_y: BramOut<18, 10>,
+    dir_mem_x: BramOut<18, 11>,
+    dir_mem_y: BramOut<18, 11>,
     products: RayProductsPipe,
     // Stages 2 to 8: live bit, side values, hit decision; the key from stage 4's `q` on.
     pipe: HitPipe,
     key_scale: KeyScalePipe,
     // Stages 8 and 9: the ray memory (read in stage 6), the verdict and the write-back.
-    mem_key: BramOut<32, 10>,
-    mem_meta: BramOut<17, 10>,
+    mem_key0: BramOut<32, 10>,
+    mem_meta0: BramOut<17, 10>,
+    mem_key1: BramOut<32, 10>,
+    mem_meta1: BramOut<17, 10>,
     merge: NearestMerge,
+    /// The low 10 bits of `dir_addr`, `res_addr` and the issued ray: the word in its half.
+    dir_word: Signal<Local, Bits<10>>,
+    res_word: Signal<Local, Bits<10>>,
+    cur_word: Signal<Local, Bits<10>>,
+    ray6_word: Signal<Local, Bits<10>>,
     // Constants (the Verilog-safe way to compare).
     zero32: Constant<Bits<32>>,
     zero16: Constant<Bits<16>>,
@@ -237,16 +247,24 @@ impl Default for IntersectionUnit {
             res_key: Default::default(),
             busy: Default::default(),
             tests: Default::default(),
+            marks: Default::default(),
             seq: Default::default(),
-            alive_mem: Default::default(),
+            alive0: Default::default(),
+            alive1: Default::default(),
             dir_mem_x: Default::default(),
             dir_mem_y: Default::default(),
             products: Default::default(),
             pipe: Default::default(),
             key_scale: Default::default(),
-            mem_key: Default::default(),
-            mem_meta: Default::default(),
+            mem_key0: Default::default(),
+            mem_meta0: Default::default(),
+            mem_key1: Default::default(),
+            mem_meta1: Default::default(),
             merge: Default::default(),
+            dir_word: Default::default(),
+            res_word: Default::default(),
+            cur_word: Default::default(),
+            ray6_word: Default::default(),
             zero32: Constant::new(0.into()),
             zero16: Constant::new(0.into()),
         }
@@ -257,14 +275,21 @@ impl Logic for IntersectionUnit {
     #[hdl_gen]
     fn update(&mut self) {
         self.seq.clock.next = self.clock.val();
-        self.alive_mem.clock.next = self.clock.val();
+        self.alive0.clock.next = self.clock.val();
+        self.alive1.clock.next = self.clock.val();
         self.dir_mem_x.clock.next = self.clock.val();
         self.dir_mem_y.clock.next = self.clock.val();
         self.products.clock.next = self.clock.val();
         self.pipe.clock.next = self.clock.val();
         self.key_scale.clock.next = self.clock.val();
-        self.mem_key.clock.next = self.clock.val();
-        self.mem_meta.clock.next = self.clock.val();
+        self.mem_key0.clock.next = self.clock.val();
+        self.mem_meta0.clock.next = self.clock.val();
+        self.mem_key1.clock.next = self.clock.val();
+        self.mem_meta1.clock.next = self.clock.val();
+        self.dir_word.next = bit_cast::<10, 11>(self.dir_addr.val());
+        self.res_word.next = bit_cast::<10, 11>(self.res_addr.val());
+        self.cur_word.next = bit_cast::<10, 11>(self.seq.cur.val());
+        self.ray6_word.next = bit_cast::<10, 11>(self.pipe.ray6.val());
         self.merge.clock.next = self.clock.val();
 
         // Stage 0: the sequencer takes a patch while the current one issues its last ray (or
@@ -290,16 +315,26 @@ impl Logic for IntersectionUnit {
         self.dir_mem_y.write_data.next = self.dir_y.val();
         self.dir_mem_x.write_enable.next = self.dir_we.val();
         self.dir_mem_y.write_enable.next = self.dir_we.val();
-        // The live bits: a direction write revives its ray, a retire job's issue kills one.
-        // (A retire's issue reads and writes the same word: its read is never used.)
-        self.alive_mem.read_address.next = self.seq.cur.val();
-        self.alive_mem.write_address.next = self.seq.cur.val();
-        self.alive_mem.write_data.next = false.into();
-        self.alive_mem.write_enable.next = self.seq.kill.val();
-        if self.dir_we.val() {
-            self.alive_mem.write_address.next = self.dir_addr.val();
-            self.alive_mem.write_data.next = true.into();
-            self.alive_mem.write_enable.next = true;
+        // The live bits, a memory per half: a direction write revives its ray, a retire job's
+        // issue kills one. (A retire's issue reads and writes the same word: its read is never
+        // used. The host writes directions only into the half the tests are not in.)
+        self.alive0.read_address.next = self.cur_word.val();
+        self.alive0.write_address.next = self.cur_word.val();
+        self.alive0.write_data.next = false.into();
+        self.alive0.write_enable.next = self.seq.kill.val() & !self.seq.cur.val().get_bit(10);
+        if self.dir_we.val() & !self.dir_addr.val().get_bit(10) {
+            self.alive0.write_address.next = self.dir_word.val();
+            self.alive0.write_data.next = true.into();
+            self.alive0.write_enable.next = true;
+        }
+        self.alive1.read_address.next = self.cur_word.val();
+        self.alive1.write_address.next = self.cur_word.val();
+        self.alive1.write_data.next = false.into();
+        self.alive1.write_enable.next = self.seq.kill.val() & self.seq.cur.val().get_bit(10);
+        if self.dir_we.val() & self.dir_addr.val().get_bit(10) {
+            self.alive1.write_address.next = self.dir_word.val();
+            self.alive1.write_data.next = true.into();
+            self.alive1.write_enable.next = true;
         }
 
         // Stage 1: the patch operands enter the products leaf; its registers hold them.
@@ -311,11 +346,13 @@ impl Logic for IntersectionUnit {
         self.products.wy.next = self.seq.o_wy.val();
         self.pipe.v1.next = self.seq.v1.val();
         self.pipe.tag1.next = self.seq.tag1.val();
+        self.pipe.mark1.next = self.seq.mark1.val();
 
         // Stage 2: the ray's direction and live bit arrive; the six products start.
         self.products.dx.next = self.dir_mem_x.read_data.val();
         self.products.dy.next = self.dir_mem_y.read_data.val();
-        self.pipe.alive.next = self.alive_mem.read_data.val().any();
+        self.pipe.alive0.next = self.alive0.read_data.val().any();
+        self.pipe.alive1.next = self.alive1.read_data.val().any();
         self.tests.next = self.pipe.tests.val();
 
         // Stage 4: the products arrive: the side values (into the pipe leaf) and the inverse
@@ -328,35 +365,57 @@ impl Logic for IntersectionUnit {
         self.key_scale.q.next = self.products.dx_wx.val() + self.products.dy_wy.val();
         self.key_scale.sh.next = self.pipe.sh4.val();
 
-        // The ray memory: read for stage 6's ray, or for the host's readout.
-        self.mem_key.read_address.next = self.pipe.ray6.val();
-        self.mem_meta.read_address.next = self.pipe.ray6.val();
-        if self.res_re.val() {
-            self.mem_key.read_address.next = self.res_addr.val();
-            self.mem_meta.read_address.next = self.res_addr.val();
+        // The ray memory, a memory per half: read for stage 6's ray, or for the host's readout
+        // in its half.
+        self.mem_key0.read_address.next = self.ray6_word.val();
+        self.mem_meta0.read_address.next = self.ray6_word.val();
+        self.mem_key1.read_address.next = self.ray6_word.val();
+        self.mem_meta1.read_address.next = self.ray6_word.val();
+        if self.res_re.val() & !self.res_addr.val().get_bit(10) {
+            self.mem_key0.read_address.next = self.res_word.val();
+            self.mem_meta0.read_address.next = self.res_word.val();
+        }
+        if self.res_re.val() & self.res_addr.val().get_bit(10) {
+            self.mem_key1.read_address.next = self.res_word.val();
+            self.mem_meta1.read_address.next = self.res_word.val();
         }
 
         // Stages 8 and 9: the new hit against the ray's nearest so far, and the write-back
-        // (or a readout's clear).
+        // (or a readout's clear), each half on its own port.
         self.merge.v8.next = self.pipe.v8.val();
         self.merge.tag8.next = self.pipe.tag8.val();
+        self.merge.mark8.next = self.pipe.mark8.val();
         self.merge.key.next = self.key_scale.key.val();
-        self.merge.mem_key.next = self.mem_key.read_data.val();
-        self.merge.mem_meta.next = self.mem_meta.read_data.val();
+        self.merge.mem_key0.next = self.mem_key0.read_data.val();
+        self.merge.mem_meta0.next = self.mem_meta0.read_data.val();
+        self.merge.mem_key1.next = self.mem_key1.read_data.val();
+        self.merge.mem_meta1.next = self.mem_meta1.read_data.val();
         self.merge.res_re.next = self.res_re.val();
         self.merge.res_addr.next = self.res_addr.val();
-        self.mem_key.write_address.next = self.merge.write_address.val();
-        self.mem_meta.write_address.next = self.merge.write_address.val();
-        self.mem_key.write_data.next = self.merge.write_key.val();
-        self.mem_meta.write_data.next = self.merge.write_meta.val();
-        self.mem_key.write_enable.next = self.merge.write_enable.val();
-        self.mem_meta.write_enable.next = self.merge.write_enable.val();
+        self.mem_key0.write_address.next = self.merge.write_address0.val();
+        self.mem_meta0.write_address.next = self.merge.write_address0.val();
+        self.mem_key0.write_data.next = self.merge.write_key0.val();
+        self.mem_meta0.write_data.next = self.merge.write_meta0.val();
+        self.mem_key0.write_enable.next = self.merge.write_enable0.val();
+        self.mem_meta0.write_enable.next = self.merge.write_enable0.val();
+        self.mem_key1.write_address.next = self.merge.write_address1.val();
+        self.mem_meta1.write_address.next = self.merge.write_address1.val();
+        self.mem_key1.write_data.next = self.merge.write_key1.val();
+        self.mem_meta1.write_data.next = self.merge.write_meta1.val();
+        self.mem_key1.write_enable.next = self.merge.write_enable1.val();
+        self.mem_meta1.write_enable.next = self.merge.write_enable1.val();
+        self.marks.next = self.merge.marks.val();
 
-        // Readout: the word two clocks after `res_re`; zero when the same ray was read (and
-        // is being cleared) in the clock before, whose clear that read could not see.
-        self.res_hit.next = self.mem_meta.read_data.val().get_bit(16) & !self.merge.z2.val();
-        self.res_id.next = bit_cast::<16, 17>(self.mem_meta.read_data.val());
-        self.res_key.next = self.mem_key.read_data.val();
+        // Readout: the word of its half two clocks after `res_re`; zero when the same ray was
+        // read (and is being cleared) in the clock before, whose clear that read could not see.
+        self.res_hit.next = self.mem_meta0.read_data.val().get_bit(16) & !self.merge.z2.val();
+        self.res_id.next = bit_cast::<16, 17>(self.mem_meta0.read_data.val());
+        self.res_key.next = self.mem_key0.read_data.val();
+        if self.merge.res_half.val() {
+            self.res_hit.next = self.mem_meta1.read_data.val().get_bit(16) & !self.merge.z2.val();
+            self.res_id.next = bit_cast::<16, 17>(self.mem_meta1.read_data.val());
+            self.res_key.next = self.mem_key1.read_data.val();
+        }
         if self.merge.z2.val() {
             self.res_id.next = self.zero16.val();
             self.res_key.next = self.zero32.val();

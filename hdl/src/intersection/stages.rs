@@ -282,7 +282,9 @@ struct IssueRegs {
     p_id: u32,
     p_retire: bool,
     v1: bool,
-    tag1: u32,
+    tag1: u64,
+    /// A marker (a retire of no rays) was taken at the last edge.
+    mark1: bool,
     /// Stage 1's patch operands: ax, ay, bx, by, wx, wy.
     o: [u32; 6],
 }
@@ -291,23 +293,26 @@ struct IssueRegs {
 /// one ray of the current patch per clock, the current patch's fields, and stage 1's registers.
 ///
 /// Ports (formats as in the unit's patch port): in `patch_valid`, `patch_ax` … `patch_wy` (18
-/// bits each, two's complement), `patch_sh` (6), `patch_id` (16), `patch_first` (10),
-/// `patch_count` (11), `patch_retire`; out `full`, `busy`, `kill`, `cur` (10), `v1`,
-/// `tag1` (32), `o_ax` … `o_wy` (18 each).
+/// bits each, two's complement), `patch_sh` (6), `patch_id` (16), `patch_first` (11: bit 10
+/// the half of the ray memory), `patch_count` (11), `patch_retire`; out `full`, `busy`, `kill`,
+/// `cur` (11), `v1`, `tag1` (33), `mark1`, `o_ax` … `o_wy` (18 each).
 ///
 /// Registers: `remaining` (rays of the current patch still to issue), `full` (`remaining > 1`:
 /// no patch can be taken), `cur` (the ray issued in this clock while `remaining ≠ 0`), the
 /// current patch `p_*` and stage 1: `v1` (a ray of a test job was issued in the clock before),
-/// `tag1` = `{ray (31…22), sh (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
+/// `tag1` = `{ray (32…22), sh (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
 /// patch is taken at the rising edge when `patch_valid && !full`; otherwise a ray issues when
-/// `remaining ≠ 0` (`remaining` counts down, `cur` up, modulo 1024). `full` is updated beside
+/// `remaining ≠ 0` (`remaining` counts down, `cur` up, its low 10 bits modulo 1024: a range
+/// stays in its half). A retire of no rays is a **marker**: its take sets `mark1` for one clock,
+/// beside stage 1's last ray before it. `full` is updated beside
 /// `remaining` from shallow tests (`patch_count > 1` on a take, `remaining > 2` on an issue),
 /// so that the unit's `patch_ready`, its complement, is a register: in the processing element
 /// it feeds the slice in front of the unit, whose pop decides the take.
 ///
 /// Outputs, all functions of the registers only (so the leaf has no combinational path from an
-/// input): `full` (the register), `busy` = a ray issues or `v1`, `kill` = a ray of a
-/// retire job issues (its live bit is cleared), and the registers `cur`, `v1`, `tag1`, `o_*`.
+/// input): `full` (the register), `busy` = a ray issues, `v1` or `mark1`, `kill` = a ray of a
+/// retire job issues (its live bit is cleared), and the registers `cur`, `v1`, `tag1`,
+/// `mark1`, `o_*`.
 /// Latency: `v1`, `tag1` and `o_*` describe the ray issued one clock earlier. All registers
 /// are zero at power-up.
 #[derive(LogicBlock, Default)]
@@ -322,15 +327,16 @@ pub struct IssueSequencer {
     pub patch_wy: Signal<In, Bits<18>>,
     pub patch_sh: Signal<In, Bits<6>>,
     pub patch_id: Signal<In, Bits<16>>,
-    pub patch_first: Signal<In, Bits<10>>,
+    pub patch_first: Signal<In, Bits<11>>,
     pub patch_count: Signal<In, Bits<11>>,
     pub patch_retire: Signal<In, bool>,
     pub full: Signal<Out, bool>,
     pub busy: Signal<Out, bool>,
     pub kill: Signal<Out, bool>,
-    pub cur: Signal<Out, Bits<10>>,
+    pub cur: Signal<Out, Bits<11>>,
     pub v1: Signal<Out, bool>,
-    pub tag1: Signal<Out, Bits<32>>,
+    pub tag1: Signal<Out, Bits<33>>,
+    pub mark1: Signal<Out, bool>,
     pub o_ax: Signal<Out, Bits<18>>,
     pub o_ay: Signal<Out, Bits<18>>,
     pub o_bx: Signal<Out, Bits<18>>,
@@ -347,9 +353,11 @@ impl Logic for IssueSequencer {
             let issue = s.remaining != 0;
             let mut n = s;
             n.v1 = issue && !s.p_retire;
-            n.tag1 = (s.cur << 22) | (s.p_sh << 16) | s.p_id;
+            n.tag1 = ((s.cur as u64) << 22) | ((s.p_sh as u64) << 16) | s.p_id as u64;
             n.o = s.p;
-            if self.patch_valid.val() && !s.full {
+            let take = self.patch_valid.val() && !s.full;
+            n.mark1 = take && self.patch_retire.val() && self.patch_count.val().to_u32() == 0;
+            if take {
                 n.remaining = self.patch_count.val().to_u32();
                 n.full = n.remaining > 1;
                 n.cur = self.patch_first.val().to_u32();
@@ -367,17 +375,18 @@ impl Logic for IssueSequencer {
             } else if issue {
                 n.remaining = s.remaining - 1;
                 n.full = s.remaining > 2;
-                n.cur = (s.cur + 1) & 0x3ff;
+                n.cur = (s.cur & 0x400) | ((s.cur + 1) & 0x3ff);
             }
             debug_assert_eq!(n.full, n.remaining > 1);
             self._r = n;
             let issue = n.remaining != 0;
             self.full.next = n.full;
-            self.busy.next = issue || n.v1;
+            self.busy.next = issue || n.v1 || n.mark1;
             self.kill.next = issue && n.p_retire;
             self.cur.next = bits(n.cur);
             self.v1.next = n.v1;
-            self.tag1.next = bits(n.tag1);
+            self.tag1.next = Bits::from(n.tag1);
+            self.mark1.next = n.mark1;
             self.o_ax.next = bits(n.o[0]);
             self.o_ay.next = bits(n.o[1]);
             self.o_bx.next = bits(n.o[2]);
@@ -394,6 +403,7 @@ impl Logic for IssueSequencer {
         self.cur.connect();
         self.v1.connect();
         self.tag1.connect();
+        self.mark1.connect();
         self.o_ax.connect();
         self.o_ay.connect();
         self.o_bx.connect();
@@ -410,13 +420,14 @@ impl Logic for IssueSequencer {
         }
         v += "wire issue = remaining != 11'd0;\n";
         v += "initial begin\n   remaining = 11'd0;\n   p_retire = 1'b0;\n   p_sh = 6'd0;\n   p_id = 16'd0;\n";
-        v += "   full = 1'b0;\n   cur = 10'd0;\n   v1 = 1'b0;\n   tag1 = 32'd0;\n";
+        v += "   full = 1'b0;\n   cur = 11'd0;\n   v1 = 1'b0;\n   tag1 = 33'd0;\n   mark1 = 1'b0;\n";
         for o in ops {
             v += &format!("   p_{o} = 18'd0;\n   o_{o} = 18'd0;\n");
         }
         v += "end\n";
-        v += "always @(*) begin\n   busy = issue || v1;\n   kill = issue && p_retire;\nend\n";
+        v += "always @(*) begin\n   busy = issue || v1 || mark1;\n   kill = issue && p_retire;\nend\n";
         v += "always @(posedge clock) begin\n   v1 <= issue && !p_retire;\n   tag1 <= {cur, p_sh, p_id};\n";
+        v += "   mark1 <= patch_valid && !full && patch_retire && patch_count == 11'd0;\n";
         for o in ops {
             v += &format!("   o_{o} <= p_{o};\n");
         }
@@ -427,7 +438,8 @@ impl Logic for IssueSequencer {
         }
         v += "      p_sh <= patch_sh;\n      p_id <= patch_id;\n      p_retire <= patch_retire;\n";
         v += "   end else if (issue) begin\n      remaining <= remaining - 11'd1;\n";
-        v += "      full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;\n      cur <= cur + 10'd1;\n   end\nend\n";
+        v += "      full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;\n";
+        v += "      cur <= {cur[10], cur[9:0] + 10'd1};\n   end\nend\n";
         Verilog::Custom(v)
     }
 
@@ -448,19 +460,21 @@ impl Logic for IssueSequencer {
                 "patch_count",
                 "patch_retire",
             ],
-            &["full", "busy", "kill", "cur", "v1", "tag1", "o_ax", "o_ay", "o_bx", "o_by", "o_wx", "o_wy"],
+            &["full", "busy", "kill", "cur", "v1", "tag1", "mark1", "o_ax", "o_ay", "o_bx", "o_by", "o_wx", "o_wy"],
         )
     }
 }
 
 /// The registers of [`HitPipe`], as in its Verilog: `v[k]` is stage `k`'s valid bit (index
-/// 0 and 1 unused), `tag2` … `tag4` the issue's tag, `t5` … `t8` its ray and id.
+/// 0 and 1 unused), `tag2` … `tag4` the issue's tag, `t5` … `t8` its ray and id, `mk[k]`
+/// stage `k`'s marker.
 #[derive(Clone, Copy, Debug, Default)]
 struct HitRegs {
     v: [bool; 9],
-    tag2: u32,
-    tag3: u32,
-    tag4: u32,
+    mk: [bool; 9],
+    tag2: u64,
+    tag3: u64,
+    tag4: u64,
     count: u32,
     sa5: u32,
     sb5: u32,
@@ -475,12 +489,14 @@ struct HitRegs {
 /// counter, the side values, the hit decision, and each test's ray and patch id until its key
 /// arrives.
 ///
-/// Ports: in `v1`, `tag1` (32: ray 31…22, `sh` 21…16, id 15…0) from [`IssueSequencer`], `alive`
-/// (the ray's live bit, arriving in stage 2), the products `dx_ay`, `dy_ax`, `dx_by`, `dy_bx`
-/// (32 bits two's complement, arriving in stage 4); out `tests` (32, the live tests so far,
-/// wrapping), `busy` (a test in stages 2 to 8), `sh4` (6: stage 4's `sh`, for the key leaf),
-/// `ray6` (10: stage 6's ray, the ray-memory read), `v8` and `tag8` (26: ray 25…16, id 15…0):
-/// stage 8's hit.
+/// Ports: in `v1`, `tag1` (33: ray 32…22, `sh` 21…16, id 15…0) and `mark1` from
+/// [`IssueSequencer`], `alive0`, `alive1` (the ray's live bit in each half's memory, arriving in
+/// stage 2: the ray's half, bit 10 of its index, chooses), the products `dx_ay`, `dy_ax`,
+/// `dx_by`, `dy_bx` (32 bits two's complement, arriving in stage 4); out `tests` (32, the live
+/// tests so far, wrapping), `busy` (a test or a marker in stages 2 to 8), `sh4` (6: stage 4's
+/// `sh`, for the key leaf), `ray6` (11: stage 6's ray, the ray-memory read), `v8` and `tag8`
+/// (27: ray 26…16, id 15…0): stage 8's hit, and `mark8`: stage 8's marker (a marker rides
+/// beside the tests, one register per stage).
 ///
 /// Stages (one register set each, clock by clock): 2 takes `v1`, `tag1`; 3: the test is live
 /// (`v2 && alive`; `tests` counts it); 4: a copy; 5: `sa5 = dx_ay − dy_ax`, `sb5 = dx_by −
@@ -492,8 +508,10 @@ struct HitRegs {
 pub struct HitPipe {
     pub clock: Signal<In, Clock>,
     pub v1: Signal<In, bool>,
-    pub tag1: Signal<In, Bits<32>>,
-    pub alive: Signal<In, bool>,
+    pub tag1: Signal<In, Bits<33>>,
+    pub mark1: Signal<In, bool>,
+    pub alive0: Signal<In, bool>,
+    pub alive1: Signal<In, bool>,
     pub dx_ay: Signal<In, Bits<32>>,
     pub dy_ax: Signal<In, Bits<32>>,
     pub dx_by: Signal<In, Bits<32>>,
@@ -501,9 +519,10 @@ pub struct HitPipe {
     pub tests: Signal<Out, Bits<32>>,
     pub busy: Signal<Out, bool>,
     pub sh4: Signal<Out, Bits<6>>,
-    pub ray6: Signal<Out, Bits<10>>,
+    pub ray6: Signal<Out, Bits<11>>,
     pub v8: Signal<Out, bool>,
-    pub tag8: Signal<Out, Bits<26>>,
+    pub tag8: Signal<Out, Bits<27>>,
+    pub mark8: Signal<Out, bool>,
     _r: HitRegs,
 }
 
@@ -511,7 +530,11 @@ impl Logic for HitPipe {
     fn update(&mut self) {
         if self.clock.pos_edge() {
             let s = self._r;
-            let live = s.v[2] && self.alive.val();
+            let alive = if s.tag2 >> 32 != 0 { self.alive1.val() } else { self.alive0.val() };
+            let live = s.v[2] && alive;
+            let mut mk = [false; 9];
+            mk[2] = self.mark1.val();
+            mk[3..].copy_from_slice(&s.mk[2..8]);
             let n = HitRegs {
                 v: [
                     false,
@@ -524,24 +547,26 @@ impl Logic for HitPipe {
                     s.v[6],
                     s.v[7],
                 ],
-                tag2: self.tag1.val().to_u32(),
+                mk,
+                tag2: self.tag1.val().to_u64(),
                 tag3: s.tag2,
                 tag4: s.tag3,
                 count: s.count.wrapping_add(live as u32),
                 sa5: self.dx_ay.val().to_u32().wrapping_sub(self.dy_ax.val().to_u32()),
                 sb5: self.dx_by.val().to_u32().wrapping_sub(self.dy_bx.val().to_u32()),
-                t5: ((s.tag4 >> 22) << 16) | (s.tag4 & 0xffff),
+                t5: (((s.tag4 >> 22) << 16) | (s.tag4 & 0xffff)) as u32,
                 t6: s.t5,
                 t7: s.t6,
                 t8: s.t7,
             };
             self._r = n;
             self.tests.next = bits(n.count);
-            self.busy.next = n.v[2..].iter().any(|&v| v);
-            self.sh4.next = bits((n.tag4 >> 16) & 0x3f);
+            self.busy.next = n.v[2..].iter().chain(&n.mk[2..]).any(|&v| v);
+            self.sh4.next = bits((n.tag4 >> 16) as u32 & 0x3f);
             self.ray6.next = bits(n.t6 >> 16);
             self.v8.next = n.v[8];
             self.tag8.next = bits(n.t8);
+            self.mark8.next = n.mk[8];
         }
     }
 
@@ -552,21 +577,23 @@ impl Logic for HitPipe {
         self.ray6.connect();
         self.v8.connect();
         self.tag8.connect();
+        self.mark8.connect();
     }
 
     fn hdl(&self) -> Verilog {
         Verilog::Custom(
             "\
 reg v2, v3, v4, v5, v6, v7;
-reg [31:0] tag2;
-reg [31:0] tag3;
-reg [31:0] tag4;
+reg mk2, mk3, mk4, mk5, mk6, mk7;
+reg [32:0] tag2;
+reg [32:0] tag3;
+reg [32:0] tag4;
 reg [31:0] sa5;
 reg [31:0] sb5;
-reg [25:0] t5;
-reg [25:0] t6;
-reg [25:0] t7;
-wire live = v2 && alive;
+reg [26:0] t5;
+reg [26:0] t6;
+reg [26:0] t7;
+wire live = v2 && (tag2[32] ? alive1 : alive0);
 initial begin
    v2 = 1'b0;
    v3 = 1'b0;
@@ -575,21 +602,28 @@ initial begin
    v6 = 1'b0;
    v7 = 1'b0;
    v8 = 1'b0;
-   tag2 = 32'd0;
-   tag3 = 32'd0;
-   tag4 = 32'd0;
+   mk2 = 1'b0;
+   mk3 = 1'b0;
+   mk4 = 1'b0;
+   mk5 = 1'b0;
+   mk6 = 1'b0;
+   mk7 = 1'b0;
+   mark8 = 1'b0;
+   tag2 = 33'd0;
+   tag3 = 33'd0;
+   tag4 = 33'd0;
    sa5 = 32'd0;
    sb5 = 32'd0;
-   t5 = 26'd0;
-   t6 = 26'd0;
-   t7 = 26'd0;
-   tag8 = 26'd0;
+   t5 = 27'd0;
+   t6 = 27'd0;
+   t7 = 27'd0;
+   tag8 = 27'd0;
    tests = 32'd0;
 end
 always @(*) begin
-   busy = v2 || v3 || v4 || v5 || v6 || v7 || v8;
+   busy = v2 || v3 || v4 || v5 || v6 || v7 || v8 || mk2 || mk3 || mk4 || mk5 || mk6 || mk7 || mark8;
    sh4 = tag4[21:16];
-   ray6 = t6[25:16];
+   ray6 = t6[26:16];
 end
 always @(posedge clock) begin
    v2 <= v1;
@@ -602,13 +636,20 @@ always @(posedge clock) begin
    v5 <= v4;
    sa5 <= dx_ay - dy_ax;
    sb5 <= dx_by - dy_bx;
-   t5 <= {tag4[31:22], tag4[15:0]};
+   t5 <= {tag4[32:22], tag4[15:0]};
    v6 <= v5 && (sa5 == 32'd0 || sa5[31]) && !sb5[31];
    t6 <= t5;
    v7 <= v6;
    t7 <= t6;
    v8 <= v7;
    tag8 <= t7;
+   mk2 <= mark1;
+   mk3 <= mk2;
+   mk4 <= mk3;
+   mk5 <= mk4;
+   mk6 <= mk5;
+   mk7 <= mk6;
+   mark8 <= mk7;
 end
 "
             .into(),
@@ -618,8 +659,8 @@ end
     fn timing(&self) -> Vec<TimingInfo> {
         clocked(
             "hit_pipe",
-            &["v1", "tag1", "alive", "dx_ay", "dy_ax", "dx_by", "dy_bx"],
-            &["tests", "busy", "sh4", "ray6", "v8", "tag8"],
+            &["v1", "tag1", "mark1", "alive0", "alive1", "dx_ay", "dy_ax", "dx_by", "dy_bx"],
+            &["tests", "busy", "sh4", "ray6", "v8", "tag8", "mark8"],
         )
     }
 }
@@ -636,8 +677,8 @@ struct MergeWrite {
 /// The registers of [`NearestMerge`], as in its Verilog.
 #[derive(Clone, Copy, Debug, Default)]
 struct MergeRegs {
-    /// The new hit against the memory's word: hit flag, larger key, equal key, lower id.
-    cm: [bool; 4],
+    /// The new hit against each half's memory word: hit flag, larger key, equal key, lower id.
+    cm: [[bool; 4]; 2],
     /// Against stage 9's write, the last one and the one before (`c1`, `c2`, `c3`): larger
     /// key, equal key, lower id.
     c: [[bool; 3]; 3],
@@ -654,13 +695,24 @@ struct MergeRegs {
     rd_addr: u32,
     z1: bool,
     z2: bool,
+    /// The half of the readout word arriving now (`rd_addr`'s bit 10, a clock later).
+    res_half: bool,
+    mark9: bool,
+    marks: u32,
+}
+
+/// The half of the ray memory a ray index (11 bits) lies in.
+#[inline(always)]
+fn half(ray: u32) -> usize {
+    (ray >> 10 & 1) as usize
 }
 
 impl MergeRegs {
-    /// Stage 9's verdict: the newest of the last three writes to the ray decides, otherwise the
-    /// memory's word.
-    fn better(&self) -> bool {
+    /// Stage 9's verdict if the ray lies in half `h`: the newest of the last three writes to
+    /// the ray decides, otherwise half `h`'s memory word.
+    fn better_in(&self, h: usize) -> bool {
         let wins = |c: [bool; 3]| c[0] || (c[1] && c[2]);
+        let cm = self.cm[h];
         let w = if self.m[0] && self.fw[0].valid {
             wins(self.c[0])
         } else if self.m[1] && self.fw[1].valid {
@@ -668,56 +720,86 @@ impl MergeRegs {
         } else if self.m[2] && self.fw3_valid {
             wins(self.c[2])
         } else {
-            !self.cm[0] || self.cm[1] || (self.cm[2] && self.cm[3])
+            !cm[0] || cm[1] || (cm[2] && cm[3])
         };
         self.v9 && w
     }
+
+    /// Stage 9's verdict.
+    fn better(&self) -> bool {
+        self.better_in(half(self.ray9))
+    }
+
+    /// Half `h`'s write port: a readout's clear in that half, else stage 9's write-back.
+    fn write(&self, h: usize) -> (u32, u32, u32, bool) {
+        if self.rd_valid && half(self.rd_addr) == h {
+            (self.rd_addr & 0x3ff, 0, 0, true)
+        } else {
+            (self.ray9 & 0x3ff, self.key9, 0x1_0000 | self.id9, self.better_in(h) && half(self.ray9) == h)
+        }
+    }
 }
 
-/// The intersection unit's stages 8 and 9 and its readout clear ([`crate::intersection`]): the
-/// new hit against every candidate for its ray's nearest hit (the ray memory's word and the
-/// three writes after its read), the verdict, the write-back, and the clear of a ray read out.
+/// The intersection unit's stages 8 and 9, its readout clear and its marker count
+/// ([`crate::intersection`]): the new hit against every candidate for its ray's nearest hit
+/// (the ray memory's word and the three writes after its read), the verdict, the write-back,
+/// and the clear of a ray read out. The ray memory is two halves (ray index bit 10), each a
+/// memory of its own with its own write port, so that a readout's clear in one half and the
+/// tests' write-backs in the other never share a port.
 ///
-/// Ports: in `v8`, `tag8` (26: ray 25…16, id 15…0) from [`HitPipe`], `key` (32, unsigned, from
-/// [`KeyScalePipe`]), the ray memory's word `mem_key` (32) and `mem_meta` (17: hit flag 16, id
-/// 15…0), all arriving in stage 8; the readout request `res_re`, `res_addr` (10); out the ray
-/// memory's write port `write_address` (10), `write_key` (32), `write_meta` (17),
-/// `write_enable`, `z2` (the readout answered now read a ray whose clear it could not see:
-/// report zero), `busy` (a test in stage 9) and `fw_valid` (stage 9 wrote in the clock
-/// before).
+/// Ports: in `v8`, `tag8` (27: ray 26…16, id 15…0) and `mark8` from [`HitPipe`], `key` (32,
+/// unsigned, from [`KeyScalePipe`]), each half's memory word `mem_key0`, `mem_key1` (32) and
+/// `mem_meta0`, `mem_meta1` (17: hit flag 16, id 15…0), all arriving in stage 8; the readout
+/// request `res_re`, `res_addr` (11); out each half's write port `write_address0/1` (10),
+/// `write_key0/1` (32), `write_meta0/1` (17), `write_enable0/1`; `z2` (the readout answered now
+/// read a ray whose clear it could not see: report zero), `res_half` (the half of the readout
+/// answered now), `busy` (a test or a marker in stage 9), `fw_valid` (stage 9 wrote in the
+/// clock before) and `marks` (32: markers counted so far, wrapping).
 ///
-/// Stage 8 (registered at its end): the new key and id against the memory's word (`cm_*`: hit
-/// flag; in the Verilog the key compare split in halves, `cm_gt_hi`, `cm_eq_hi`, `cm_gt_lo`,
-/// `cm_eq_lo` and the id's `cm_lt`, five independent 16-bit compares combined only after their
-/// registers, so that no compare longer than 16 bits, and nothing after one, follows the block
-/// RAM's output: on ECP5 that path, its routing out of the block RAM included, was the slowest
-/// of the intersection unit (a median of 137.6 MHz with the lower half and the id combined
-/// before the register); the model keeps the whole-word compares, the same verdict), against stage 9's (`c1_*`), the last write's
-/// (`c2_*`, `fw_*`) and the one before (`c3_*`, `fw2_*`); `m1` … `m3`: the ray is theirs.
-/// Stage 9 (combinational, from registers only): the newest write to the ray among the last
-/// three (`fw_valid`, `fw2_valid`, `fw3_valid`: the verdicts of the last three clocks)
-/// decides, without one the memory's word; a hit that wins is written (`{1, id}` and its key)
-/// at the end of the clock. A readout request is registered (`rd_valid`, `rd_addr`) and clears
-/// its ray in the next clock, in place of stage 9's write; `z1`, `z2` mark a readout of the
-/// ray read (and cleared) in the clock before, two clocks on. All registers are zero at
-/// power-up.
+/// Stage 8 (registered at its end): the new key and id against both halves' memory words
+/// (`cm0_*`, `cm1_*`: hit flag; in the Verilog the key compare split in halves, `gt_hi`,
+/// `eq_hi`, `gt_lo`, `eq_lo` and the id's `lt`, five independent 16-bit compares combined only
+/// after their registers, so that no compare longer than 16 bits, and no multiplexer, follows a
+/// block RAM's output: on ECP5 that path, its routing out of the block RAM included, was the
+/// slowest of the intersection unit (a median of 137.6 MHz with the lower half and the id
+/// combined before the register); the model keeps the whole-word compares, the same verdict),
+/// against stage 9's (`c1_*`), the last write's (`c2_*`, `fw_*`) and the one before (`c3_*`,
+/// `fw2_*`); `m1` … `m3`: the ray is theirs. Stage 9 (combinational, from registers only): the
+/// newest write to the ray among the last three (`fw_valid`, `fw2_valid`, `fw3_valid`: the
+/// verdicts of the last three clocks) decides, without one the memory word of the ray's half;
+/// each half's write enable is that half's own verdict and the ray's half bit. A hit that wins
+/// is written (`{1, id}` and its key) at the end of the clock. A readout request is registered
+/// (`rd_valid`, `rd_addr`) and clears its ray in the next clock on its half's port; `z1`, `z2`
+/// mark a readout of the ray read (and cleared) in the clock before, two clocks on. A marker in
+/// stage 9 (`mark9`) is counted at the end of the clock, the clock of the write-back of the
+/// last test issued before it: `marks` shows it in the clock after, when a readout's read of
+/// that test's ray sees its write. All registers are zero at power-up.
 #[derive(LogicBlock, Default)]
 pub struct NearestMerge {
     pub clock: Signal<In, Clock>,
     pub v8: Signal<In, bool>,
-    pub tag8: Signal<In, Bits<26>>,
+    pub tag8: Signal<In, Bits<27>>,
+    pub mark8: Signal<In, bool>,
     pub key: Signal<In, Bits<32>>,
-    pub mem_key: Signal<In, Bits<32>>,
-    pub mem_meta: Signal<In, Bits<17>>,
+    pub mem_key0: Signal<In, Bits<32>>,
+    pub mem_meta0: Signal<In, Bits<17>>,
+    pub mem_key1: Signal<In, Bits<32>>,
+    pub mem_meta1: Signal<In, Bits<17>>,
     pub res_re: Signal<In, bool>,
-    pub res_addr: Signal<In, Bits<10>>,
-    pub write_address: Signal<Out, Bits<10>>,
-    pub write_key: Signal<Out, Bits<32>>,
-    pub write_meta: Signal<Out, Bits<17>>,
-    pub write_enable: Signal<Out, bool>,
+    pub res_addr: Signal<In, Bits<11>>,
+    pub write_address0: Signal<Out, Bits<10>>,
+    pub write_key0: Signal<Out, Bits<32>>,
+    pub write_meta0: Signal<Out, Bits<17>>,
+    pub write_enable0: Signal<Out, bool>,
+    pub write_address1: Signal<Out, Bits<10>>,
+    pub write_key1: Signal<Out, Bits<32>>,
+    pub write_meta1: Signal<Out, Bits<17>>,
+    pub write_enable1: Signal<Out, bool>,
     pub z2: Signal<Out, bool>,
+    pub res_half: Signal<Out, bool>,
     pub busy: Signal<Out, bool>,
     pub fw_valid: Signal<Out, bool>,
+    pub marks: Signal<Out, Bits<32>>,
     _r: MergeRegs,
 }
 
@@ -728,11 +810,14 @@ impl Logic for NearestMerge {
             let t8 = self.tag8.val().to_u32();
             let (ray8, id8) = (t8 >> 16, t8 & 0xffff);
             let key = self.key.val().to_u32();
-            let (mem_key, meta) = (self.mem_key.val().to_u32(), self.mem_meta.val().to_u32());
             let cmp = |k: u32, id: u32| [key > k, key == k, id8 < id];
+            let cmp_mem = |k: u32, meta: u32| [meta >> 16 != 0, key > k, key == k, id8 < (meta & 0xffff)];
             let (res_re, res_addr) = (self.res_re.val(), self.res_addr.val().to_u32());
             let n = MergeRegs {
-                cm: [meta >> 16 != 0, key > mem_key, key == mem_key, id8 < (meta & 0xffff)],
+                cm: [
+                    cmp_mem(self.mem_key0.val().to_u32(), self.mem_meta0.val().to_u32()),
+                    cmp_mem(self.mem_key1.val().to_u32(), self.mem_meta1.val().to_u32()),
+                ],
                 c: [cmp(s.key9, s.id9), cmp(s.fw[0].key, s.fw[0].id), cmp(s.fw[1].key, s.fw[1].id)],
                 m: [ray8 == s.ray9, ray8 == s.fw[0].ray, ray8 == s.fw[1].ray],
                 v9: self.v8.val(),
@@ -745,119 +830,138 @@ impl Logic for NearestMerge {
                 rd_addr: res_addr,
                 z1: res_re && s.rd_valid && res_addr == s.rd_addr,
                 z2: s.z1,
+                res_half: half(s.rd_addr) == 1,
+                mark9: self.mark8.val(),
+                marks: s.marks.wrapping_add(s.mark9 as u32),
             };
             self._r = n;
-            if n.rd_valid {
-                self.write_address.next = bits(n.rd_addr);
-                self.write_key.next = bits(0);
-                self.write_meta.next = bits(0);
-                self.write_enable.next = true;
-            } else {
-                self.write_address.next = bits(n.ray9);
-                self.write_key.next = bits(n.key9);
-                self.write_meta.next = bits(0x1_0000 | n.id9);
-                self.write_enable.next = n.better();
-            }
+            let (a, k, m, e) = n.write(0);
+            self.write_address0.next = bits(a);
+            self.write_key0.next = bits(k);
+            self.write_meta0.next = bits(m);
+            self.write_enable0.next = e;
+            let (a, k, m, e) = n.write(1);
+            self.write_address1.next = bits(a);
+            self.write_key1.next = bits(k);
+            self.write_meta1.next = bits(m);
+            self.write_enable1.next = e;
             self.z2.next = n.z2;
-            self.busy.next = n.v9;
+            self.res_half.next = n.res_half;
+            self.busy.next = n.v9 || n.mark9;
             self.fw_valid.next = n.fw[0].valid;
+            self.marks.next = bits(n.marks);
         }
     }
 
     fn connect(&mut self) {
-        self.write_address.connect();
-        self.write_key.connect();
-        self.write_meta.connect();
-        self.write_enable.connect();
+        self.write_address0.connect();
+        self.write_key0.connect();
+        self.write_meta0.connect();
+        self.write_enable0.connect();
+        self.write_address1.connect();
+        self.write_key1.connect();
+        self.write_meta1.connect();
+        self.write_enable1.connect();
         self.z2.connect();
+        self.res_half.connect();
         self.busy.connect();
         self.fw_valid.connect();
+        self.marks.connect();
     }
 
     fn hdl(&self) -> Verilog {
         let mut v = String::from(
             "\
-wire [9:0] ray8 = tag8[25:16];
+wire [10:0] ray8 = tag8[26:16];
 wire [15:0] id8 = tag8[15:0];
-reg cm_hit, cm_gt_hi, cm_eq_hi, cm_gt_lo, cm_eq_lo, cm_lt;
+reg cm0_hit, cm0_gt_hi, cm0_eq_hi, cm0_gt_lo, cm0_eq_lo, cm0_lt;
+reg cm1_hit, cm1_gt_hi, cm1_eq_hi, cm1_gt_lo, cm1_eq_lo, cm1_lt;
 reg c1_gt, c1_eq, c1_lt, c2_gt, c2_eq, c2_lt, c3_gt, c3_eq, c3_lt;
 reg m1, m2, m3;
 reg v9;
-reg [9:0] ray9;
+reg [10:0] ray9;
 reg [15:0] id9;
 reg [31:0] key9;
-reg [9:0] fw_ray;
+reg [10:0] fw_ray;
 reg [31:0] fw_key;
 reg [15:0] fw_id;
 reg fw2_valid;
-reg [9:0] fw2_ray;
+reg [10:0] fw2_ray;
 reg [31:0] fw2_key;
 reg [15:0] fw2_id;
 reg fw3_valid;
 reg rd_valid;
-reg [9:0] rd_addr;
+reg [10:0] rd_addr;
 reg z1;
-reg better;
+reg mark9;
+reg fwd, fwin, better0, better1;
 initial begin
 ",
         );
-        for r in [
-            "cm_hit",
-            "cm_gt_hi",
-            "cm_eq_hi",
-            "cm_gt_lo",
-            "cm_eq_lo",
-            "cm_lt",
-            "m1",
-            "m2",
-            "m3",
-            "v9",
-            "fw_valid",
-            "fw2_valid",
-            "fw3_valid",
-        ] {
+        for h in 0..2 {
+            for f in ["hit", "gt_hi", "eq_hi", "gt_lo", "eq_lo", "lt"] {
+                v += &format!("   cm{h}_{f} = 1'b0;\n");
+            }
+        }
+        for r in ["m1", "m2", "m3", "v9", "fw_valid", "fw2_valid", "fw3_valid", "mark9", "res_half"] {
             v += &format!("   {r} = 1'b0;\n");
         }
         for c in 1..=3 {
             v += &format!("   c{c}_gt = 1'b0;\n   c{c}_eq = 1'b0;\n   c{c}_lt = 1'b0;\n");
         }
         for r in ["ray9", "fw_ray", "fw2_ray", "rd_addr"] {
-            v += &format!("   {r} = 10'd0;\n");
+            v += &format!("   {r} = 11'd0;\n");
         }
         for r in ["id9", "fw_id", "fw2_id"] {
             v += &format!("   {r} = 16'd0;\n");
         }
-        for r in ["key9", "fw_key", "fw2_key"] {
+        for r in ["key9", "fw_key", "fw2_key", "marks"] {
             v += &format!("   {r} = 32'd0;\n");
         }
         v += "   rd_valid = 1'b0;\n   z1 = 1'b0;\n   z2 = 1'b0;\nend\n";
         v += "\
 always @(*) begin
-   if (m1 && fw_valid) better = v9 && (c1_gt || (c1_eq && c1_lt));
-   else if (m2 && fw2_valid) better = v9 && (c2_gt || (c2_eq && c2_lt));
-   else if (m3 && fw3_valid) better = v9 && (c3_gt || (c3_eq && c3_lt));
-   else better = v9 && (!cm_hit || cm_gt_hi || (cm_eq_hi && (cm_gt_lo || (cm_eq_lo && cm_lt))));
-   if (rd_valid) begin
-      write_address = rd_addr;
-      write_key = 32'd0;
-      write_meta = 17'd0;
-      write_enable = 1'b1;
-   end else begin
-      write_address = ray9;
-      write_key = key9;
-      write_meta = {1'b1, id9};
-      write_enable = better;
+   fwd = 1'b1;
+   if (m1 && fw_valid) fwin = c1_gt || (c1_eq && c1_lt);
+   else if (m2 && fw2_valid) fwin = c2_gt || (c2_eq && c2_lt);
+   else if (m3 && fw3_valid) fwin = c3_gt || (c3_eq && c3_lt);
+   else begin
+      fwd = 1'b0;
+      fwin = 1'b0;
    end
-   busy = v9;
-end
-always @(posedge clock) begin
-   cm_hit <= mem_meta[16];
-   cm_gt_hi <= key[31:16] > mem_key[31:16];
-   cm_eq_hi <= key[31:16] == mem_key[31:16];
-   cm_gt_lo <= key[15:0] > mem_key[15:0];
-   cm_eq_lo <= key[15:0] == mem_key[15:0];
-   cm_lt <= id8 < mem_meta[15:0];
+   better0 = v9 && (fwd ? fwin : (!cm0_hit || cm0_gt_hi || (cm0_eq_hi && (cm0_gt_lo || (cm0_eq_lo && cm0_lt)))));
+   better1 = v9 && (fwd ? fwin : (!cm1_hit || cm1_gt_hi || (cm1_eq_hi && (cm1_gt_lo || (cm1_eq_lo && cm1_lt)))));
 ";
+        for h in 0..2 {
+            // `!` for half 0: the half bit is low.
+            let is = if h == 1 { "" } else { "!" };
+            v += &format!(
+                "   if (rd_valid && {is}rd_addr[10]) begin
+      write_address{h} = rd_addr[9:0];
+      write_key{h} = 32'd0;
+      write_meta{h} = 17'd0;
+      write_enable{h} = 1'b1;
+   end else begin
+      write_address{h} = ray9[9:0];
+      write_key{h} = key9;
+      write_meta{h} = {{1'b1, id9}};
+      write_enable{h} = better{h} && {is}ray9[10];
+   end
+"
+            );
+        }
+        v += "   busy = v9 || mark9;\nend\nalways @(posedge clock) begin\n";
+        for h in 0..2 {
+            v += &format!(
+                "   cm{h}_hit <= mem_meta{h}[16];
+   cm{h}_gt_hi <= key[31:16] > mem_key{h}[31:16];
+   cm{h}_eq_hi <= key[31:16] == mem_key{h}[31:16];
+   cm{h}_gt_lo <= key[15:0] > mem_key{h}[15:0];
+   cm{h}_eq_lo <= key[15:0] == mem_key{h}[15:0];
+   cm{h}_lt <= id8 < mem_meta{h}[15:0];
+"
+            );
+        }
         for (c, (k, id)) in
             [("c1", ("key9", "id9")), ("c2", ("fw_key", "fw_id")), ("c3", ("fw2_key", "fw2_id"))]
         {
@@ -871,7 +975,7 @@ always @(posedge clock) begin
    ray9 <= ray8;
    id9 <= id8;
    key9 <= key;
-   fw_valid <= better;
+   fw_valid <= ray9[10] ? better1 : better0;
    fw_ray <= ray9;
    fw_key <= key9;
    fw_id <= id9;
@@ -884,6 +988,9 @@ always @(posedge clock) begin
    rd_addr <= res_addr;
    z1 <= res_re && rd_valid && res_addr == rd_addr;
    z2 <= z1;
+   res_half <= rd_addr[10];
+   mark9 <= mark8;
+   if (mark9) marks <= marks + 32'd1;
 end
 ";
         Verilog::Custom(v)
@@ -892,8 +999,22 @@ end
     fn timing(&self) -> Vec<TimingInfo> {
         clocked(
             "nearest_merge",
-            &["v8", "tag8", "key", "mem_key", "mem_meta", "res_re", "res_addr"],
-            &["write_address", "write_key", "write_meta", "write_enable", "z2", "busy", "fw_valid"],
+            &["v8", "tag8", "mark8", "key", "mem_key0", "mem_meta0", "mem_key1", "mem_meta1", "res_re", "res_addr"],
+            &[
+                "write_address0",
+                "write_key0",
+                "write_meta0",
+                "write_enable0",
+                "write_address1",
+                "write_key1",
+                "write_meta1",
+                "write_enable1",
+                "z2",
+                "res_half",
+                "busy",
+                "fw_valid",
+                "marks",
+            ],
         )
     }
 }

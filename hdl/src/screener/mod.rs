@@ -32,18 +32,20 @@
 //! | `in_ax`, `in_ay`, `in_bx`, `in_by` | in | 4 × 17 | endpoints, world coordinates (Q11.6 unsigned) |
 //! | `in_bank` | in | 1 | the patch's sector bank: a tag carried to stage 3, where the sector is read |
 //! | `sector_read`, `sector_bank` | out | 1, 1 | a patch is in stage 3 and reads `first`/`last` in this cycle; its `in_bank` (both registers) |
+//! | `normal_bank` | out | 1 | the `in_bank` of the patch in stage 1, which reads `normal` in this cycle (a register) |
 //! | `out_valid`, `out_ready`, `out_id` | out, in, out | 1, 1, 16 | every patch out (valid/ready), in acceptance order |
 //! | `out_pass` | out | 1 | the patch passed; if not, only `out_id` is meaningful (the consumer drops it) |
 //! | `out_ax`, `out_ay`, `out_bx`, `out_by` | out | 4 × 18 | endpoints relative to the origin (Q12.6) |
 //! | `out_wx`, `out_wy`, `out_sh` | out | 18, 18, 6 | inverse-distance vector, its exponent in [−3, 31] |
 //! | `passed`, `backward`, `back_facing`, `outside`, `near` | out | 5 × 32 | verdict counters, wrapping at 2³² |
 //!
-//! The source's setup (`origin`, `normal`) is held constant while its patches stream (from the
-//! first patch's acceptance until the last one's verdict, [`VERDICT_LATENCY`] cycles later). The
-//! sector's (`first`, `last`) is read once per patch, in its stage 3 ([`SECTOR_STAGE`]): a user
-//! that changes sectors while patches stream tags each patch with `in_bank` and presents the
-//! sector of the bank `sector_bank` shows (the processing element keeps two banks and
-//! multiplexes them; with `in_bank` held low the screener is the one-sector block). A transfer happens
+//! The source's setup is read once per patch: `origin` in its stage 0 (as it is accepted),
+//! `normal` in its stage 1, the sector's (`first`, `last`) in its stage 3 ([`SECTOR_STAGE`]). A
+//! user that changes the source or the sector while patches stream tags each patch with
+//! `in_bank` and presents, in each cycle, the origin of the bank on `in_bank`, the normal of the
+//! bank `normal_bank` shows and the sector of the bank `sector_bank` shows (the processing
+//! element keeps two banks and multiplexes them; with `in_bank` held low and the setup held
+//! constant the screener is the one-sector block). A transfer happens
 //! in a cycle where `valid && ready` holds before the rising edge. `in_ready` depends only on
 //! registers (not on `in_valid` or `out_ready`); `out_valid` is a register and the `out_*` data
 //! depend only on registers (the output FIFO's two read registers, chosen by the registered
@@ -319,6 +321,8 @@ pub struct Screener {
     // The sector read: the bank of the patch in stage 3.
     pub sector_read: Signal<Out, bool>,
     pub sector_bank: Signal<Out, bool>,
+    /// The bank of the patch in stage 1, whose `normal` is read now.
+    pub normal_bank: Signal<Out, bool>,
     // Every patch out, with its verdict.
     pub out_valid: Signal<Out, bool>,
     pub out_ready: Signal<In, bool>,
@@ -410,6 +414,9 @@ pub struct Screener {
     negy2: DFF<bool>,
     normal_x2: DFF<Bits<18>>,
     normal_y2: DFF<Bits<18>>,
+    /// The normal again, for the products with `a` (no register drives two multipliers).
+    normal_xa2: DFF<Bits<18>>,
+    normal_ya2: DFF<Bits<18>>,
     nmax: Signal<Local, Bits<18>>,
     // Stage 3: the side products start; those of K arrive; the first two shifts of clz(nmax).
     v3: DFF<bool>,
@@ -690,6 +697,7 @@ impl Default for Screener {
             in_bank: Default::default(),
             sector_read: Default::default(),
             sector_bank: Default::default(),
+            normal_bank: Default::default(),
             out_valid: Default::default(),
             out_ready: Default::default(),
             out_id: Default::default(),
@@ -771,6 +779,8 @@ impl Default for Screener {
             negy2: Default::default(),
             normal_x2: Default::default(),
             normal_y2: Default::default(),
+            normal_xa2: Default::default(),
+            normal_ya2: Default::default(),
             nmax: Default::default(),
             v3: Default::default(),
             bank3: Default::default(),
@@ -1052,6 +1062,8 @@ impl Logic for Screener {
             negy2,
             normal_x2,
             normal_y2,
+            normal_xa2,
+            normal_ya2,
             v3,
             bank3,
             id3,
@@ -1249,14 +1261,17 @@ impl Logic for Screener {
         self.absny2.d.next = self.absny.val();
         self.negx2.d.next = self.nx.val().get_bit(17);
         self.negy2.d.next = self.ny.val().get_bit(17);
+        self.normal_bank.next = self.bank1.q.val();
         self.normal_x2.d.next = self.normal_x.val();
         self.normal_y2.d.next = self.normal_y.val();
+        self.normal_xa2.d.next = self.normal_x.val();
+        self.normal_ya2.d.next = self.normal_y.val();
 
-        // Stage 2: the products of dot(n_s, a) and dot(n_s, b) start (the normal for b from a
-        // register of its own); nmax = max(|n_x|, |n_y|).
-        self.m_nax.a.next = self.normal_x.val();
+        // Stage 2: the products of dot(n_s, a) and dot(n_s, b) start (the normal read in stage
+        // 1, in two registers of its own, one for a and one for b); nmax = max(|n_x|, |n_y|).
+        self.m_nax.a.next = self.normal_xa2.q.val();
         self.m_nax.b.next = self.ax2.q.val();
-        self.m_nay.a.next = self.normal_y.val();
+        self.m_nay.a.next = self.normal_ya2.q.val();
         self.m_nay.b.next = self.ay2.q.val();
         self.m_nbx.a.next = self.normal_x2.q.val();
         self.m_nbx.b.next = self.bx2.q.val();
