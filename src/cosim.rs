@@ -219,6 +219,12 @@ pub(crate) fn check_against_model(
     want: &[Option<Nearest>],
     model: &ModelCounts,
 ) -> Result<(), CosimError> {
+    check_hits(hits, want)?;
+    check_counts(hardware, model)
+}
+
+/// Every ray's nearest hit against the model's.
+pub(crate) fn check_hits(hits: &[Option<Nearest>], want: &[Option<Nearest>]) -> Result<(), CosimError> {
     if let Some(r) = (0..hits.len()).find(|&r| hits[r] != want[r]) {
         return Err(CosimError::Mismatch(format!(
             "ray {r}: PE {:?}, model {:?} ({} rays differ)",
@@ -227,6 +233,11 @@ pub(crate) fn check_against_model(
             (0..hits.len()).filter(|&r| hits[r] != want[r]).count()
         )));
     }
+    Ok(())
+}
+
+/// The PE's counts (loads, passed patches, tests) against the model's.
+pub(crate) fn check_counts(hardware: &PeCounters, model: &ModelCounts) -> Result<(), CosimError> {
     let pairs = [
         ("patch loads", hardware.patch_loads, model.loads),
         ("memory loads", hardware.memory_loads + hardware.cache_hits, model.loads),

@@ -25,7 +25,7 @@
 
 use crate::lockstep::Lockstep;
 use crate::memory::HostMemory;
-use crate::pe::{CacheConfig, Command, CommandHost, PeCounters, PeSetup};
+use crate::pe::{counters, counts_since, CacheConfig, Command, CommandHost, PeCounters, PeSetup, PE_RAY_MEMORY};
 use crate::pe_sim::{PeInputs, PeOutputs, PeSim};
 use crate::{Clocked, Driver, Error, Result};
 pub use shelling_hdl::arbiter::model::Arbiter;
@@ -202,8 +202,10 @@ pub struct Work<'a> {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Traced {
     pub hits: Vec<Option<Nearest>>,
-    /// Its counters (`cycles` its command phase's; `memory_loads` its share of the host's
-    /// answers; `setup_cycles` and `readout_cycles` its own).
+    /// Its host's counts: `setup_cycles` (its directions written), `cycles` (from its first
+    /// command offered to its marker taken) and `readout_cycles`, and the intersection unit's
+    /// busy and stall cycles in its command phase. The PE's counters cannot be split between
+    /// overlapped sources: they are the PE's, over its queue, in [`MachineCounters::totals`].
     pub counters: PeCounters,
     /// The machine cycles at which its setup began and its readout ended.
     pub start: u64,
@@ -219,29 +221,224 @@ pub struct MachineCounters {
     pub memory_loads: u64,
     /// Each PE's sources, in the order given.
     pub pes: Vec<Vec<Traced>>,
+    /// Each PE's counters over its whole queue (loads, cache hits, screener verdicts, tests,
+    /// `memory_loads` its share of the host's answers; `cycles` from its first command to its
+    /// last readout, and the sums of its sources' busy, stall and drain cycles).
+    pub totals: Vec<PeCounters>,
 }
 
-/// Where one PE is in its queue.
-enum Phase {
-    /// Writing the directions: the `c`-th clock of `rays + 1`.
-    Setup(usize),
-    Commands(Box<CommandHost>),
-    /// Reading the hits: the `c`-th clock of `rays + READOUT_LATENCY - 1`; and, when a source
-    /// follows, writing its directions at once (the `s`-th clock of its setup), the ray memory's
-    /// direction and hit words being separate memories.
-    Readout {
-        c: usize,
-        s: usize,
-    },
-    Done,
+/// One PE's host in [`run_queues`]: its ray ports, step by step, and its command stream,
+/// source by source.
+///
+/// The ray memory's halves alternate: source `j` lives in half `j mod 2`. In **step** `k` the
+/// host writes source `k`'s directions into half `k mod 2` and reads source `k − 2`'s hits out
+/// of it, one ray of each per clock (a direction write and a readout share no memory); the step
+/// starts once the PE's `marks` has counted source `k − 2`'s marker, so the half holds no test
+/// in flight. Source `j`'s commands start once its directions are written and source `j − 1`'s
+/// commands have all been taken: the PE never waits for a source's setup or readout, and the
+/// two halves keep the command stream going across sources.
+struct PeHost<'a> {
+    queue: &'a [Work<'a>],
+    /// The step, and the clocks into it (`None`: waiting for its marker).
+    step: usize,
+    c: Option<usize>,
+    /// The next source to stream and the one streaming, with its host.
+    next_source: usize,
+    streaming: Option<(usize, Box<CommandHost>)>,
+    marks_base: u32,
+    counters_base: [u32; 8],
+    traced: Vec<Traced>,
+    totals: PeCounters,
+    first_command: Option<u64>,
+    /// Clocks the step has waited for its marker.
+    waiting: u64,
+}
+
+impl<'a> PeHost<'a> {
+    fn new(queue: &'a [Work<'a>], out: &PeOutputs) -> Self {
+        let traced = vec![Traced::default(); queue.len()];
+        Self {
+            queue,
+            step: 0,
+            c: None,
+            next_source: 0,
+            streaming: None,
+            marks_base: out.marks,
+            counters_base: counters(out),
+            traced,
+            totals: PeCounters::default(),
+            first_command: None,
+            waiting: 0,
+        }
+    }
+
+    fn rays(&self, j: usize) -> usize {
+        self.queue[j].setup.dirs.len()
+    }
+
+    /// Source `k − 2`, read out in step `k`.
+    fn read_in(&self, k: usize) -> Option<usize> {
+        k.checked_sub(2).filter(|&j| j < self.queue.len())
+    }
+
+    /// The clocks of step `k`: its writes, and its readouts with their latency.
+    fn step_length(&self, k: usize) -> usize {
+        let write = if k < self.queue.len() { self.rays(k) } else { 0 };
+        let read = self.read_in(k).map_or(0, |j| self.rays(j) + READOUT_LATENCY as usize - 1);
+        write.max(read)
+    }
+
+    fn done(&self) -> bool {
+        self.step >= self.queue.len() + 2
+    }
+
+    /// Before this cycle's inputs: starts the step whose marker is counted (skipping empty
+    /// ones), and the next source's commands once it may stream.
+    fn begin(&mut self, out: &PeOutputs, now: u64) {
+        let marks = out.marks.wrapping_sub(self.marks_base) as usize;
+        while self.c.is_none() && !self.done() {
+            if self.read_in(self.step).is_some_and(|j| marks < j + 1) {
+                break;
+            }
+            if self.step_length(self.step) == 0 {
+                self.step += 1;
+            } else {
+                self.c = Some(0);
+                if self.step < self.queue.len() {
+                    self.traced[self.step].start = now;
+                }
+            }
+        }
+        let written = |j: usize| self.step > j || (self.step == j && self.c.is_some_and(|c| c >= self.rays(j)));
+        let free = self.streaming.as_ref().is_none_or(|(_, h)| h.all_sent());
+        let j = self.next_source;
+        if j < self.queue.len() && free && written(j) {
+            if let Some((prev, h)) = self.streaming.take() {
+                self.finish_commands(prev, &h, out, now);
+            }
+            let w = self.queue[j];
+            self.streaming = Some((j, Box::new(CommandHost::in_half(w.setup, w.commands, *out, now, j % 2))));
+            self.traced[j].counters.setup_cycles = self.rays(j) as u64;
+            self.first_command.get_or_insert(now);
+            self.next_source += 1;
+        }
+    }
+
+    /// Source `j`'s command phase is over: its host's counts.
+    fn finish_commands(&mut self, j: usize, h: &CommandHost, out: &PeOutputs, now: u64) {
+        let k = h.counters(out, now, PeCounters::default());
+        let t = &mut self.traced[j].counters;
+        t.cycles = k.cycles;
+        t.intersection_busy_cycles = k.intersection_busy_cycles;
+        t.stall_cycles = k.stall_cycles;
+        t.drain_cycles = k.drain_cycles;
+        t.pipeline_efficiency = k.pipeline_efficiency;
+        self.totals.intersection_busy_cycles += k.intersection_busy_cycles;
+        self.totals.stall_cycles += k.stall_cycles;
+        self.totals.drain_cycles += k.drain_cycles;
+    }
+
+    /// This cycle's inputs.
+    fn drive(&self, i: &mut PeInputs, cache: CacheConfig) {
+        i.dir_we = false;
+        i.res_re = false;
+        i.cfg_cache_enable = cache.lines.is_some();
+        i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
+        if let Some(c) = self.c {
+            let k = self.step;
+            if let Some(&d) = self.queue.get(k).and_then(|w| w.setup.dirs.get(c)) {
+                i.dir_we = true;
+                i.dir_addr = ((k % 2) * PE_RAY_MEMORY + c) as u16;
+                [i.dir_x, i.dir_y] = d;
+            }
+            if let Some(j) = self.read_in(k).filter(|&j| c < self.rays(j)) {
+                i.res_re = true;
+                i.res_addr = ((j % 2) * PE_RAY_MEMORY + c) as u16;
+            }
+        }
+        match &self.streaming {
+            Some((_, h)) => h.offer(i),
+            None => CommandHost::set_inputs(i, None),
+        }
+    }
+
+    /// After the edge (cycle `now`): the readouts arriving, the step's end, the command
+    /// host's counts.
+    fn after_tick(&mut self, out: &PeOutputs, now: u64, limit: u64, done: &mut impl FnMut()) -> Result<()> {
+        if let Some((_, h)) = &mut self.streaming {
+            h.after_tick(out, now, &mut |_, _| {});
+            if !h.all_sent() {
+                h.check_progress(now, limit)?;
+            }
+        }
+        let Some(c) = self.c else {
+            // Waiting for a marker: once the commands before it are all taken, it comes within
+            // the PE's latency (a stream that does not progress fails its host's check).
+            let sent = self.streaming.as_ref().is_none_or(|(_, h)| h.all_sent());
+            self.waiting = if sent { self.waiting + 1 } else { 0 };
+            if self.waiting > limit {
+                return Err(Error::new(format!(
+                    "step {}: no marker of source {:?} after {} cycles",
+                    self.step,
+                    self.read_in(self.step),
+                    self.waiting
+                )));
+            }
+            return Ok(());
+        };
+        self.waiting = 0;
+        let k = self.step;
+        let latency = READOUT_LATENCY as usize;
+        if let Some(j) = self.read_in(k) {
+            if c + 1 >= latency && c + 1 - latency < self.rays(j) {
+                self.traced[j].hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
+            }
+        }
+        if c + 1 < self.step_length(k) {
+            self.c = Some(c + 1);
+            return Ok(());
+        }
+        if let Some(j) = self.read_in(k) {
+            let rays = self.rays(j);
+            let t = &mut self.traced[j];
+            t.counters.readout_cycles = (rays + latency - 1) as u64;
+            t.end = now;
+            done();
+        }
+        self.step += 1;
+        self.c = None;
+        if self.done() {
+            if let Some((prev, h)) = self.streaming.take() {
+                self.finish_commands(prev, &h, out, now);
+            }
+            let k = counts_since(self.counters_base, out, std::mem::take(&mut self.totals));
+            self.totals = PeCounters {
+                cycles: now - self.first_command.unwrap_or(now),
+                memory_loads: k.patch_loads - k.cache_hits,
+                ..k
+            };
+            self.totals.pipeline_efficiency = if self.totals.cycles > 0 {
+                self.totals.intersection_busy_cycles as f64 / self.totals.cycles as f64
+            } else {
+                0.0
+            };
+        }
+        Ok(())
+    }
+
+    fn before_tick(&mut self, out: &PeOutputs) {
+        if let Some((_, h)) = &mut self.streaming {
+            h.before_tick(out);
+        }
+    }
 }
 
 /// Runs each PE `p` through its queue `queues[p]` of sources, one after another, sharing
-/// `memory`: a PE writes its next source's directions while it reads the last one's hits out,
-/// and starts its commands when both are done, whatever the others do; so one PE's setup and
-/// readout (on its own ray ports) overlap each other and the others' commands on the shared
-/// memory. PEs without a queue idle. `done(sources done)` after each source's
-/// readout. Returns every source's hits and counters.
+/// `memory`, each PE's sources overlapped in the two halves of its ray memory ([`PeHost`]):
+/// while source `j`'s commands stream, the host reads source `j − 1`'s hits out as soon as its
+/// marker is counted and writes source `j + 1`'s directions, whatever the other PEs do. PEs
+/// without a queue idle. `done(sources done)` after each source's readout. Returns every
+/// source's hits and counts, and each PE's counters over its queue.
 pub fn run_queues<M: MachineSim>(
     m: &mut M,
     memory: &mut HostMemory,
@@ -258,141 +455,53 @@ pub fn run_queues<M: MachineSim>(
     for w in queues.iter().flatten() {
         w.setup.check(w.commands, memory.len())?;
     }
-    let mut k = MachineCounters { pes: vec![Vec::new(); queues.len()], ..Default::default() };
-    let mut phase: Vec<Phase> =
-        queues.iter().map(|q| if q.is_empty() { Phase::Done } else { Phase::Setup(0) }).collect();
-    let mut current: Vec<Traced> = vec![Traced::default(); queues.len()];
-    let latency = READOUT_LATENCY as usize;
+    let mut hosts: Vec<PeHost> = queues.iter().enumerate().map(|(p, q)| PeHost::new(q, &m.outputs(p))).collect();
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
     let loads_before = memory.loads();
     let mut answer: Option<[i32; 4]> = None;
     let mut now = 0u64;
     let mut finished = 0;
     loop {
-        // This cycle's inputs, PE by PE from its phase.
-        for (p, ph) in phase.iter().enumerate() {
-            if let Phase::Readout { c, .. } = ph {
-                if *c < queues[p][k.pes[p].len()].setup.dirs.len() && m.outputs(p).busy {
-                    return Err(Error::new(format!("PE {p}: readout while the unit is busy")));
-                }
-            }
+        for (p, h) in hosts.iter_mut().enumerate() {
+            h.begin(&m.outputs(p), now);
         }
-        m.drive(|p, i| {
-            i.dir_we = false;
-            i.res_re = false;
-            let at = k.pes.get(p).map_or(0, Vec::len);
-            let mut set_up = |setup: &PeSetup, c: usize| {
-                [i.origin_x, i.origin_y] = setup.origin;
-                [i.normal_x, i.normal_y] = setup.normal;
-                i.cfg_cache_enable = cache.lines.is_some();
-                i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
-                if let Some(&d) = setup.dirs.get(c) {
-                    i.dir_we = true;
-                    i.dir_addr = c as u16;
-                    [i.dir_x, i.dir_y] = d;
-                }
-            };
-            let cmd = match phase.get(p) {
-                Some(Phase::Setup(c)) => {
-                    set_up(queues[p][at].setup, *c);
-                    None
-                }
-                Some(Phase::Commands(h)) => h.command(),
-                Some(&Phase::Readout { c, s }) => {
-                    if let Some(next) = queues[p].get(at + 1) {
-                        set_up(next.setup, s);
-                    }
-                    i.res_re = c < queues[p][at].setup.dirs.len();
-                    i.res_addr = c as u16;
-                    None
-                }
-                _ => None,
-            };
-            CommandHost::set_inputs(i, cmd);
-        })?;
-        for (p, ph) in phase.iter_mut().enumerate() {
-            if let Phase::Commands(h) = ph {
-                h.before_tick(&m.outputs(p));
+        m.drive(|p, i| match hosts.get(p) {
+            Some(h) => h.drive(i, cache),
+            None => {
+                i.dir_we = false;
+                i.res_re = false;
+                CommandHost::set_inputs(i, None);
             }
+        })?;
+        for (p, h) in hosts.iter_mut().enumerate() {
+            h.before_tick(&m.outputs(p));
         }
         let request = m.host_request();
         m.tick(answer)?;
         answer = memory.cycle(request)?;
         now += 1;
-        let mut all = true;
-        for (p, ph) in phase.iter_mut().enumerate() {
-            let Some(work) = queues[p].get(k.pes[p].len()) else { continue };
-            let out = m.outputs(p);
-            let rays = work.setup.dirs.len();
-            let t = &mut current[p];
-            match ph {
-                Phase::Setup(c) => {
-                    if *c == 0 {
-                        t.start = now - 1;
-                    }
-                    *c += 1;
-                    if *c > rays {
-                        t.counters.setup_cycles = *c as u64;
-                        *ph =
-                            Phase::Commands(Box::new(CommandHost::new(work.setup, work.commands, out, now)));
-                    }
-                }
-                Phase::Commands(h) => {
-                    h.after_tick(&out, now, &mut |_, _| {});
-                    if h.finished(&out) {
-                        t.counters = h.counters(&out, now, t.counters);
-                        t.counters.memory_loads = t.counters.patch_loads - t.counters.cache_hits;
-                        *ph = Phase::Readout { c: 0, s: 0 };
-                    } else {
-                        h.check_progress(now, limit)
-                            .map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
-                    }
-                }
-                Phase::Readout { c, s } => {
-                    let next = queues[p].get(k.pes[p].len() + 1);
-                    if next.is_some_and(|nx| *s <= nx.setup.dirs.len()) {
-                        *s += 1;
-                    }
-                    if *c + 1 >= latency && *c + 1 - latency < rays {
-                        t.hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
-                    }
-                    *c += 1;
-                    if *c == rays + latency - 1 {
-                        t.counters.readout_cycles = *c as u64;
-                        t.end = now;
-                        k.pes[p].push(std::mem::take(t));
-                        finished += 1;
-                        done(finished);
-                        *ph = match next {
-                            None => Phase::Done,
-                            Some(nx) => {
-                                // Its setup began with this readout, `c` clocks ago.
-                                t.start = now - *c as u64;
-                                if *s > nx.setup.dirs.len() {
-                                    t.counters.setup_cycles = *s as u64;
-                                    Phase::Commands(Box::new(CommandHost::new(
-                                        nx.setup,
-                                        nx.commands,
-                                        out,
-                                        now,
-                                    )))
-                                } else {
-                                    Phase::Setup(*s)
-                                }
-                            }
-                        };
-                    }
-                }
-                Phase::Done => {}
+        for (p, h) in hosts.iter_mut().enumerate() {
+            if h.done() {
+                continue;
             }
-            all &= matches!(ph, Phase::Done);
+            h.after_tick(&m.outputs(p), now, limit, &mut || {
+                finished += 1;
+                done(finished);
+            })
+            .map_err(|e| Error::new(format!("PE {p}: {}", e.message())))?;
         }
         // Every PE done has no request outstanding: the host memory's being idle ends the run.
-        if all && answer.is_none() && memory.pending() == 0 && request.is_none() {
+        if hosts.iter().all(PeHost::done) && answer.is_none() && memory.pending() == 0 && request.is_none() {
             break;
         }
     }
-    k.cycles = now;
+    let totals: Vec<PeCounters> = hosts.iter().map(|h| h.totals).collect();
+    let mut k = MachineCounters {
+        pes: hosts.into_iter().map(|h| h.traced).collect(),
+        totals,
+        cycles: now,
+        ..Default::default()
+    };
     k.memory_loads = memory.loads() - loads_before;
     Ok(k)
 }

@@ -19,7 +19,8 @@ use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
 
 impl_clocked!(ProcessingElement);
 
-/// Rays a PE holds: the size of its ray memory (the bundle of one source on the PE).
+/// Rays a PE's source holds: the size of one half of its ray memory (the bundle of one source
+/// on the PE; the other half holds the source before or after it).
 pub const PE_RAY_MEMORY: usize = 1 << RAY_BITS;
 
 /// One command of the host, in stream order.
@@ -92,6 +93,21 @@ pub struct ModelCounts {
     pub live_runs: u64,
     /// Rays retired by retire commands (each costs the intersection unit a slot).
     pub retires: u64,
+}
+
+impl ModelCounts {
+    /// The counts of two command streams run one after the other.
+    pub fn plus(&self, o: &ModelCounts) -> ModelCounts {
+        ModelCounts {
+            sectors: self.sectors + o.sectors,
+            loads: self.loads + o.loads,
+            passed: self.passed + o.passed,
+            ray_slots: self.ray_slots + o.ray_slots,
+            tests: self.tests + o.tests,
+            live_runs: self.live_runs + o.live_runs,
+            retires: self.retires + o.retires,
+        }
+    }
 }
 
 /// The bit-true model of a PE running `commands` for `setup` on a host memory holding
@@ -305,6 +321,9 @@ pub fn rust_hdl_pe() -> Result<RustHdlPe> {
 /// a machine of several PEs (`crate::machine`) steps one per PE beside its memory arbiter.
 pub struct CommandHost {
     stream: Vec<Command>,
+    /// The source's origin and normal, offered with every command (the PE takes them with a
+    /// sector command).
+    source: [[i32; 2]; 2],
     next: usize,
     // The last command taken was a sector.
     after_sector: bool,
@@ -323,18 +342,36 @@ pub struct CommandHost {
     drain_cycles: u64,
 }
 
-fn counters(o: &PeOutputs) -> [u32; 8] {
+/// The PE's counters (loads, tests, cache hits, passed, backward, back-facing, outside, near),
+/// as they are now: [`counts_since`] turns two of them into counts.
+pub fn counters(o: &PeOutputs) -> [u32; 8] {
     [o.loads, o.tests, o.cache_hits, o.passed, o.backward, o.back_facing, o.outside, o.near]
 }
 
+/// `k` with what the PE's counters added from `base` to `out` (they wrap).
+pub fn counts_since(base: [u32; 8], out: &PeOutputs, mut k: PeCounters) -> PeCounters {
+    let delta: Vec<u64> = counters(out).iter().zip(base).map(|(c, b)| c.wrapping_sub(b) as u64).collect();
+    k.patch_loads = delta[0];
+    k.tests = delta[1];
+    k.cache_hits = delta[2];
+    k.passed = delta[3];
+    k.backward = delta[4];
+    k.back_facing = delta[5];
+    k.outside = delta[6];
+    k.near = delta[7];
+    k
+}
+
 impl CommandHost {
-    /// The command phase of a source starting with the PE's outputs `out` at cycle `now`.
+    /// The command phase of a source starting with the PE's outputs `out` at cycle `now`, its
+    /// rays in the first half of the ray memory.
     pub fn new(setup: &PeSetup, commands: &[Command], out: PeOutputs, now: u64) -> Self {
         let n = setup.dirs.len();
         let whole = Command::Sector { first: setup.dirs[0], last: setup.dirs[n - 1] };
         let base = counters(&out);
         Self {
             stream: std::iter::once(whole).chain(commands.iter().copied()).collect(),
+            source: [setup.origin, setup.normal],
             next: 0,
             after_sector: false,
             base,
@@ -350,9 +387,39 @@ impl CommandHost {
         }
     }
 
+    /// As [`CommandHost::new`], the source's rays in half `half` (0 or 1) of the ray memory
+    /// (ray `r` is the PE's ray `half · PE_RAY_MEMORY + r`), and its stream ending with a
+    /// **marker** (a retire of no rays): the PE's `marks` counts it once the source's last test
+    /// has written its hit, and its half may then be read out while the next source runs in
+    /// the other.
+    pub fn in_half(setup: &PeSetup, commands: &[Command], out: PeOutputs, now: u64, half: usize) -> Self {
+        let mut h = Self::new(setup, commands, out, now);
+        let off = (half * PE_RAY_MEMORY) as u16;
+        for c in &mut h.stream {
+            match c {
+                Command::Job { first, .. } | Command::Retire { first, .. } => *first += off,
+                Command::Sector { .. } => {}
+            }
+        }
+        h.stream.push(Command::Retire { first: off, count: 0 });
+        h
+    }
+
     /// The command offered in this cycle, if any is left.
     pub fn command(&self) -> Option<Command> {
         self.stream.get(self.next).copied()
+    }
+
+    /// Sets the command ports of `i` to offer this cycle's command, and the source's origin
+    /// and normal beside it.
+    pub fn offer(&self, i: &mut PeInputs) {
+        [[i.origin_x, i.origin_y], [i.normal_x, i.normal_y]] = self.source;
+        Self::set_inputs(i, self.command());
+    }
+
+    /// Every command taken.
+    pub fn all_sent(&self) -> bool {
+        self.next == self.stream.len()
     }
 
     /// Sets the command ports of `i` to offer `cmd` (or nothing).
@@ -439,17 +506,7 @@ impl CommandHost {
         k.drain_cycles = self.drain_cycles;
         k.pipeline_efficiency =
             if k.cycles > 0 { k.intersection_busy_cycles as f64 / k.cycles as f64 } else { 0.0 };
-        let delta: Vec<u64> =
-            counters(out).iter().zip(self.base).map(|(c, b)| c.wrapping_sub(b) as u64).collect();
-        k.patch_loads = delta[0];
-        k.cache_hits = delta[2];
-        k.tests = delta[1];
-        k.passed = delta[3];
-        k.backward = delta[4];
-        k.back_facing = delta[5];
-        k.outside = delta[6];
-        k.near = delta[7];
-        k
+        counts_since(self.base, out, k)
     }
 }
 

@@ -282,7 +282,7 @@ fn the_compiled_pe_agrees_with_rust_hdl_port_by_port() -> Result<()> {
         // Long runs of one kind of traffic, so the pipelines fill.
         let phase = (cycle / 1000) % 4;
         i.dir_we = phase == 0 && d != 0;
-        i.dir_addr = w(&mut rng, 10) as u16;
+        i.dir_addr = w(&mut rng, 11) as u16;
         [i.dir_x, i.dir_y] = [rng.random_range(-65536..65536), rng.random_range(-65536..65536)];
         [i.origin_x, i.origin_y] = [rng.random_range(-65536..65536), rng.random_range(-65536..65536)];
         for v in
@@ -292,11 +292,15 @@ fn the_compiled_pe_agrees_with_rust_hdl_port_by_port() -> Result<()> {
         }
         i.cmd_valid = phase != 0 && d != 0;
         i.cmd_retire = d == 3;
-        // Sector commands late only: a stream that breaks the memory protocol can leave a
-        // bank's job count above zero for ever, and a sector then waits for ever.
+        // Sector commands late only, and the first command of all (the source's origin and
+        // normal, taken with it): a stream that breaks the memory protocol can leave a bank's
+        // job count above zero for ever, and a sector then waits for ever.
         i.cmd_sector = cycle >= 16_000 && rng.random_range(0..8) == 0;
+        if cycle == 1000 {
+            (i.cmd_valid, i.cmd_sector) = (true, true);
+        }
         i.cmd_id = w(&mut rng, 16) as u16;
-        i.cmd_first = w(&mut rng, 10) as u16;
+        i.cmd_first = w(&mut rng, 11) as u16;
         i.cmd_count = w(&mut rng, 6) as u16;
         i.cfg_cache_enable = phase >= 2;
         i.cfg_cache_mask = (1u16 << rng.random_range(0..13)) - 1;
@@ -306,7 +310,7 @@ fn the_compiled_pe_agrees_with_rust_hdl_port_by_port() -> Result<()> {
             *v = rng.random_range(-65536..65536);
         }
         i.res_re = phase == 3 && d == 0;
-        i.res_addr = w(&mut rng, 10) as u16;
+        i.res_addr = w(&mut rng, 11) as u16;
         for (edge, f) in [("before", false), ("after", true)] {
             if f {
                 rtl.tick()?;
