@@ -155,8 +155,9 @@ fn intersection_unit_synthesizes_to_dsps_without_latches() {
     assert!(cells(&stat, "LUT4") > 0 && cells(&stat, "TRELLIS_FF") > 0, "{stat}");
 }
 
-/// The intersection unit's memories are `BramOut`s: on ECP5 six hand-instantiated `DP16KD`s
-/// (directions 2, live bits 1, keys 2, valid + id 1), every one reading through its output
+/// The intersection unit's memories are `BramOut`s: on ECP5 twelve hand-instantiated `DP16KD`s
+/// (directions 4 for the 2048 rays of the two halves; per half live bits 1, keys 2, valid + id
+/// 1), every one reading through its output
 /// register (`REGMODE_B = "OUTREG"`), none left to Yosys' memory mapping (which never sets it).
 #[test]
 fn intersection_unit_block_rams_use_their_output_register() {
@@ -164,9 +165,9 @@ fn intersection_unit_block_rams_use_their_output_register() {
         "intersection_unit",
         "synth_ecp5",
         "tee -o /dev/stdout stat; select -list t:DP16KD r:REGMODE_B=OUTREG %i; \
-         select -assert-count 6 t:DP16KD; select -assert-count 6 t:DP16KD r:REGMODE_B=OUTREG %i",
+         select -assert-count 12 t:DP16KD; select -assert-count 12 t:DP16KD r:REGMODE_B=OUTREG %i",
     );
-    assert_eq!(cells(&text, "DP16KD"), 6, "{text}");
+    assert_eq!(cells(&text, "DP16KD"), 12, "{text}");
 }
 
 /// Every multiplier of the intersection unit (6) and the screener (10) is a hand-instantiated
@@ -229,7 +230,7 @@ fn processing_element_synthesizes_without_latches() {
     let stat = synth_ecp5("processing_element");
     assert_no_latch("processing_element", &stat);
     assert_eq!(cells(&stat, "MULT18X18D"), 16, "{stat}");
-    assert_eq!(cells(&stat, "DP16KD"), 11, "the cache's five tiles and the unit's six:\n{stat}");
+    assert_eq!(cells(&stat, "DP16KD"), 17, "the cache's five tiles and the unit's twelve:\n{stat}");
     assert!(cells(&stat, "TRELLIS_DPR16X4") > 0, "{stat}");
     println!("{stat}");
 }
