@@ -14,7 +14,10 @@
 // * no test without an input: `tests` grows by at most one per cycle, and only for a ray of a
 //   test (not retire) job issued three cycles before; it never exceeds the number of such rays;
 // * `busy` is high while a ray is issued and in the cycle after a test ray, and never without
-//   a ray issued in the last nine cycles (the write is at the end of stage 9).
+//   a ray issued or a marker taken in the last nine cycles (the write is at the end of stage 9);
+// * a marker (a retire of no rays) is counted on `marks` exactly ten cycles after it is taken:
+//   in the cycle after the write-back of the last test issued before it, never earlier (the
+//   host reads a half out from then on).
 //
 // Proved to a bounded depth only (they need the ray memories' contents):
 //
@@ -114,7 +117,7 @@ module intersection_formal (
     wire        test = issue && !f_retire;    // a ray of a test job is issued
     reg  [9:1]  f_is = 9'd0;       // f_is[k]: a ray was issued k cycles ago
     reg  [9:1]  f_test = 9'd0;     // f_test[k]: a test ray was issued k cycles ago
-    reg  [9:1]  f_mk = 9'd0;       // f_mk[k]: a marker was taken k cycles ago
+    reg  [10:1] f_mk = 10'd0;      // f_mk[k]: a marker was taken k cycles ago
     reg  [31:0] f_tests = 32'd0;   // test rays issued at least three cycles ago (saturating)
 
     always @(posedge clock) begin
@@ -131,7 +134,7 @@ module intersection_formal (
         end
         f_is <= {f_is[8:1], issue};
         f_test <= {f_test[8:1], test};
-        f_mk <= {f_mk[8:1], take && patch_retire && patch_count == 11'd0};
+        f_mk <= {f_mk[9:1], take && patch_retire && patch_count == 11'd0};
         if (f_tests != 32'hffff_ffff) f_tests <= f_tests + f_test[2];
     end
 
@@ -144,7 +147,8 @@ module intersection_formal (
         // busy: at least while a ray is issued and the cycle after a test ray; never without
         // a ray issued or a marker taken in the last nine cycles.
         a_busy_issue: assert(!(issue || f_test[1]) || busy);
-        a_busy_cause: assert(!busy || issue || f_is != 9'd0 || f_mk != 9'd0);
+        a_busy_cause: assert(!busy || issue || f_is != 9'd0 || f_mk[9:1] != 9'd0);
+        if (!f_past) a_marks_init: assert(marks == 32'd0);
     end
 
     always @(posedge clock) begin
@@ -154,6 +158,9 @@ module intersection_formal (
             // tests grows by at most one, and only for a test ray issued three cycles before.
             a_tests_step: assert(tests == $past(tests)
                                  || (tests == $past(tests) + 32'd1 && f_test[3]));
+            // A marker is counted ten cycles after it is taken: in the cycle after the
+            // write-back (end of stage 9) of the last test issued before it.
+            a_marks_step: assert(marks == $past(marks) + {31'd0, f_mk[10]});
         end
     end
 
@@ -169,7 +176,7 @@ module intersection_formal (
                          && (!v4 || f_test[4]) && (!v5 || f_test[5]) && (!v6 || f_test[6])
                          && (!v7 || f_test[7]) && (!v8 || f_test[8]) && (!v9 || f_test[9]));
         // A stage holds a marker exactly when one was taken as many cycles before.
-        i_markers: assert({mk9, mk8, mk7, mk6, mk5, mk4, mk3, mk2, mk1} == f_mk);
+        i_markers: assert({mk9, mk8, mk7, mk6, mk5, mk4, mk3, mk2, mk1} == f_mk[9:1]);
     end
 `endif
 

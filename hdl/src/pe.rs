@@ -3,41 +3,48 @@
 //!
 //! # Purpose
 //!
-//! One PE traces one source's bundle (up to 1024 rays). The host writes the ray directions and
-//! the source (origin, normal), then streams commands, each one item of the work stream
-//! (`src/workstream.rs`):
+//! One PE traces one source's bundle (up to 1024 rays) at a time, and the next source's beside
+//! it: its ray memory has two halves (see [`crate::intersection`]). The host writes a source's
+//! ray directions into a half, then streams commands, each one item of the work stream
+//! (`src/workstream.rs`), the ray ranges in that half:
 //!
 //! * a **sector** (`cmd_sector`): the sector's first and last ray directions (`first_*`,
-//!   `last_*`, taken with the command); the jobs after it are screened for it;
+//!   `last_*`) and the source's origin and normal (`origin_*`, `normal_*`), all taken with the
+//!   command; the jobs after it are screened for them;
 //! * a **job**: load patch `cmd_id` from host memory, screen it for its sector and, if it
 //!   passes, test it against the live rays `cmd_first .. cmd_first + cmd_count`;
-//! * a **retire**: rays `cmd_first .. cmd_first + cmd_count` leave the bundle (tracking).
+//! * a **retire**: rays `cmd_first .. cmd_first + cmd_count` leave the bundle (tracking); a
+//!   retire of no rays is a **marker**, counted on `marks` once every test before it has
+//!   written its hit.
 //!
 //! Commands take effect in stream order: a retire reaches the intersection unit after every job
 //! sent before it, and before any job sent after it, although jobs spend the loader's and the
 //! screener's latency on the way and retires do not; a job is screened for the last sector sent
 //! before it, although the next sector may arrive while it is still in the loader (the
-//! paper's Figure 12, its steps overlapped: the PE never drains between sectors). The nearest
-//! hits are read from the ray memory when the PE is idle.
+//! paper's Figure 12, its steps overlapped: the PE never drains between sectors, nor between
+//! sources). A source's nearest hits are read from its half once `marks` has counted the marker
+//! that ends its commands (or when the PE is idle), while the next source's commands run in the
+//! other half and the directions of the one after are written beside the readout.
 //!
 //! # Ports ([`ProcessingElement`])
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock |
-//! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 10, 18, 18 | write ray `dir_addr`'s direction (Q2.16); the ray becomes live |
-//! | `origin_x/y`, `normal_x/y` | in | 17, 18 | the source (the screener's setup), changed only while not `busy` |
+//! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 11, 18, 18 | write ray `dir_addr`'s direction (Q2.16; bit 10 the half); the ray becomes live |
+//! | `origin_x/y`, `normal_x/y` | in | 17, 18 | the source (the screener's setup), taken with a sector command |
 //! | `cmd_valid`, `cmd_ready` | in, out | 1, 1 | command stream (valid/ready) |
 //! | `cmd_sector`, `cmd_retire` | in | 1, 1 | a sector, a retire, or (both low) a job |
 //! | `first_x/y`, `last_x/y` | in | 18 | a sector command's first and last ray (Q2.16) |
-//! | `cmd_id`, `cmd_first`, `cmd_count` | in | 16, 10, 11 | a job's patch id; a job's or a retire's ray range |
+//! | `cmd_id`, `cmd_first`, `cmd_count` | in | 16, 11, 11 | a job's patch id; a job's or a retire's ray range (in the half of `cmd_first`'s bit 10) |
 //! | `cfg_cache_enable`, `cfg_cache_mask` | in | 1, 10 | the patch cache: on, and its lines − 1 (a power of two up to 1024), held during a run |
 //! | `cfg_cache_flush` | in | 1 | invalidate the cache (a new scene in the host memory): raise while not `busy`; `busy` stays high for the 1024 cycles it takes ([`PatchCache`]) |
 //! | `mem_req`, `mem_addr` | out | 1, 16 | host memory request (one pulse per patch) |
 //! | `mem_valid`, `mem_ax` … `mem_by` | in | 1, 4 × 17 | host memory response, in request order (world coordinates, Q11.6) |
-//! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 10, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (two cycles after, [`crate::intersection::READOUT_LATENCY`]; only while not `busy`) |
+//! | `res_re`, `res_addr`, `res_hit`, `res_id`, `res_key` | in, in, out, out, out | 1, 11, 1, 16, 32 | read and clear ray `res_addr`'s nearest hit (two cycles after, [`crate::intersection::READOUT_LATENCY`]; only in a half whose marker is counted, or while not `busy`) |
 //! | `busy` | out | 1 | a command is in flight (a sector waiting included), or the cache is flushing |
 //! | `loads`, `cache_hits`, `cache_misses`, `passed`, `backward`, `back_facing`, `outside`, `near`, `tests` | out | 32 each | counters (wrapping): patches loaded, the cache's hits and misses, the screener's verdicts, ray-patch tests of live rays |
+//! | `marks` | out | 32 | markers counted (wrapping; [`crate::intersection`]) |
 //!
 //! # Structure
 //!
@@ -65,17 +72,22 @@
 //! passed jobs and retires into it and drops screened-out patches, and so runs up to sixteen
 //! jobs ahead of the unit: the patches screened out behind a long job cost the unit nothing.
 //!
-//! **Sectors, overlapped.** The PE holds two sectors (two banks of first and last ray, in
-//! registers) and the bank the jobs being accepted belong to. Each job's bank goes into a
+//! **Sectors, overlapped.** The PE holds two sectors (two banks of first and last ray, and of
+//! the source's origin and normal, in registers) and the bank the jobs being accepted belong
+//! to. Each job's bank goes into a
 //! one-bit [`Fifo`] beside the loader as its id goes in (`job_banks`), leaves it as the screener
 //! takes the patch (`in_bank`), and rides the screener's pipeline to its stage 3, where the
-//! screener reads the sector (`sector_bank`): the PE presents that bank's first and last ray.
+//! screener reads the sector (`sector_bank`): the PE presents that bank's first and last ray,
+//! the origin of the bank of the patch the screener takes (`in_bank`) and the normal of the
+//! bank of the patch in its stage 1 (`normal_bank`). So a source change is a sector change:
+//! the next source's first sector command brings its origin and normal.
 //! Each bank counts its jobs accepted and not yet past that read (`jobs0`, `jobs1`). A sector
 //! command takes the other bank at once if that bank's count is zero, or waits in a register
 //! (`pend`) until it is, with `cmd_ready` low meanwhile; then the accepted jobs' bank flips. So
 //! a sector change stalls the stream only while the sector before last still has jobs before
 //! the screener's stage 3: with sectors of a few jobs and a long memory latency. Jobs before
-//! the first sector command are screened for a zero sector (the host always sends one first).
+//! the first sector command are screened for a zero sector, origin and normal (the host always
+//! sends one first).
 //!
 //! `cmd_ready` is high while the tag FIFO has room, the loader can take an id and no sector
 //! waits (for every kind of command: the condition must not depend on `cmd_retire` or

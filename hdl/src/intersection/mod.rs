@@ -1,22 +1,24 @@
 //! The intersection unit: a patch, set up once by the screener, is tested against a bundle of
 //! rays streamed past it, one ray-patch test per clock, and every ray keeps its nearest hit in a
-//! ray memory.
+//! ray memory of two halves: one bundle's tests run in one half while the host reads the last
+//! bundle out of the other and writes the next one's directions into it.
 //!
 //! # Ports ([`IntersectionUnit`])
 //!
 //! | port | dir | width | meaning |
 //! |---|---|---|---|
 //! | `clock` | in | 1 | rising-edge clock |
-//! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 10, 18, 18 | bundle setup: write ray `dir_addr`'s direction |
+//! | `dir_we`, `dir_addr`, `dir_x`, `dir_y` | in | 1, 11, 18, 18 | bundle setup: write ray `dir_addr`'s direction (bit 10: the half) and make it live |
 //! | `patch_valid`, `patch_ready` | in, out | 1, 1 | patch stream (valid/ready) |
 //! | `patch_ax`, `patch_ay`, `patch_bx`, `patch_by` | in | 4 × 18 | endpoints relative to the origin |
 //! | `patch_wx`, `patch_wy`, `patch_sh` | in | 18, 18, 6 | inverse-distance vector and its exponent |
-//! | `patch_id`, `patch_first`, `patch_count` | in | 16, 10, 11 | patch id; test rays `first .. first + count` (mod 1024) |
-//! | `patch_retire` | in | 1 | instead of testing, retire rays `first .. first + count` (the patch fields are ignored) |
-//! | `res_re`, `res_addr` | in | 1, 10 | readout: read and clear ray `res_addr` (only while not `busy`) |
+//! | `patch_id`, `patch_first`, `patch_count` | in | 16, 11, 11 | patch id; test rays `first .. first + count` (the low 10 bits mod 1024: a range stays in the half of `first`'s bit 10) |
+//! | `patch_retire` | in | 1 | instead of testing, retire rays `first .. first + count` (the patch fields are ignored); with `count = 0` a **marker** |
+//! | `res_re`, `res_addr` | in | 1, 11 | readout: read and clear ray `res_addr` (only in a half no test in flight touches: after the marker behind its bundle's last job is counted) |
 //! | `res_hit`, `res_id`, `res_key` | out | 1, 16, 32 | the ray's nearest hit, two cycles after `res_re` ([`READOUT_LATENCY`]) |
-//! | `busy` | out | 1 | a test is issuing or may still update the ray memory |
+//! | `busy` | out | 1 | a test or a marker is issuing or in flight (a test may still update the ray memory) |
 //! | `tests` | out | 32 | ray-patch tests of live rays so far (wraps) |
+//! | `marks` | out | 32 | markers counted so far (wraps): each in the clock after the write-back of the last test issued before it |
 //!
 //! A patch transfers when `patch_valid && patch_ready` before the rising edge. `patch_ready` is
 //! high while fewer than two rays of the current patch remain, so the next patch is taken while
@@ -24,14 +26,28 @@
 //! `patch_count = 0` is consumed in one cycle. `patch_ready` is a register (the sequencer keeps
 //! `remaining > 1` in one beside the count).
 //!
+//! # Two halves and markers
+//!
+//! The ray memory holds 2048 rays, two bundles of up to 1024: bit 10 of a ray index is its half.
+//! The directions are one 2048-word memory (the host writes, the tests read: separate ports);
+//! the live bits, the keys and the hit records are a memory per half, each with its own ports,
+//! so that the host's readout of one half (a read and a clear) and its direction writes (the
+//! live bit) never meet the tests of the other half on a port. The host keeps to one rule: it
+//! touches a half (directions or readout) only while no test of it is in flight. A **marker**,
+//! a retire job of no rays, tells it when: the unit counts it on `marks` in the clock after the
+//! write-back of the last test issued before it (it rides the pipeline beside that test, one
+//! register per stage), so a host that ends each bundle's jobs with a marker reads the bundle
+//! out once `marks` has counted it, while the next bundle's jobs run in the other half. A
+//! marker costs no issue slot. With one bundle in half 0 and no marker the unit is the
+//! one-bundle unit of before: the host writes, streams, waits for `busy` to fall, reads out.
+//!
 //! # Live rays
 //!
-//! Each ray has a live bit (a one-bit [`BramOut`] beside the direction memory): writing its
-//! direction makes it live, a retire job (`patch_retire`) kills the rays of its range, one per
-//! clock through the same sequencer as a test, so it takes effect in stream order. A test of a
-//! dead ray occupies its issue slot but neither counts nor writes (the shelling techniques'
-//! tracking: a ray that found its hit leaves the bundle). All rays are dead at power-up. The
-//! host writes directions only while the unit is not busy.
+//! Each ray has a live bit (a one-bit [`BramOut`] per half): writing its direction makes it
+//! live, a retire job (`patch_retire`) kills the rays of its range, one per clock through the
+//! same sequencer as a test, so it takes effect in stream order. A test of a dead ray occupies
+//! its issue slot but neither counts nor writes (the shelling techniques' tracking: a ray that
+//! found its hit leaves the bundle). All rays are dead at power-up.
 //!
 //! # Formats
 //!
@@ -48,32 +64,36 @@
 //! `DP16KD` with `REGMODE_B = "OUTREG"`, about 1 ns clock-to-out instead of 5.8 ns), so a read
 //! takes two clocks:
 //!
-//! * stage 0: the sequencer issues ray `cur` of the current patch (direction and live-bit read);
+//! * stage 0: the sequencer issues ray `cur` of the current patch (direction and both halves'
+//!   live-bit reads; the ray's half picks one in stage 2);
 //! * stage 1: the patch operands enter the [`RayProductsPipe`] leaf (which holds them a clock);
 //! * stage 2: direction and live bit arrive; the six products start (six 18×18 DSP
 //!   multipliers, latency 2); a dead ray's test goes on as a bubble and is not counted;
 //! * stage 4: side values `s_a`, `s_b` and `q = dot(d, W)` (registered); `q` enters the
 //!   [`KeyScalePipe`] leaf (shift by `sh`, saturating, in three register stages);
 //! * stage 5: the hit decision, `s_a ≤ 0 ≤ s_b`;
-//! * stage 6: the ray memory is read;
-//! * stage 8: the key and the ray memory's word arrive; the new key and id are compared with
-//!   each candidate for the ray's nearest hit (registered: larger key, equal key, lower id);
-//! * stage 9: the newest candidate picks the verdict; write back at the end of the clock.
+//! * stage 6: the ray memory is read (both halves, at the ray's word; a half being read out reads
+//!   the host's word instead);
+//! * stage 8: the key and both halves' words arrive; the new key and id are compared with each
+//!   candidate for the ray's nearest hit (registered: larger key, equal key, lower id), with
+//!   both halves' words, so that no multiplexer follows a block RAM's output;
+//! * stage 9: the newest candidate (or the word of the ray's half) picks the verdict; write back
+//!   into the ray's half at the end of the clock.
 //!
 //! Every register of the unit is in a hand-written leaf ([`stages`]; a Rust model on plain
 //! integers and a Verilog body), so that a settle pass of the simulation visits a handful of
 //! blocks instead of some eighty `DFF`s: [`IssueSequencer`] (stages 0 and 1: the sequencer,
 //! the current patch, the issued ray's operands and tag), [`RayProductsPipe`] and
 //! [`KeyScalePipe`] (products and key), [`HitPipe`] (stages 2 to 8 but for those: live bit,
-//! test counter, side values, hit decision, each test's ray and id), [`NearestMerge`] (stages 8
-//! and 9: comparisons, forwarding, verdict, write-back and the readout's clear), and the five
-//! [`BramOut`]s. The unit's own logic is wiring, the ray memory's read-address multiplexer and
-//! the readout's zeroing, all combinational. (As 73 `DFF`s of the unit, the registers cost the
+//! test counter, side values, hit decision, each test's ray and id, the markers), [`NearestMerge`]
+//! (stages 8 and 9: comparisons, forwarding, verdict, write-back, the readout's clear and the
+//! marker count), and the eight [`BramOut`]s. The unit's own logic is wiring, the memories'
+//! address multiplexers and the readout's choice of half and zeroing, all combinational. (As 73 `DFF`s of the unit, the registers cost the
 //! simulation 2.7 times as long: PERFORMANCE.md, "Speed".)
 //!
 //! `tests` counts a live test three clocks after its issue.
 //!
-//! **Forwarding.** The ray memory (two [`BramOut`]s: key, and valid + id) is read in stage 6,
+//! **Forwarding.** The ray memory (per half two [`BramOut`]s: key, and valid + id) is read in stage 6,
 //! so the word arriving in stage 8 has seen the writes of the tests issued four or more clocks
 //! before, but not those of the three tests right before: their writes end stage 9 one and two
 //! clocks after the read, and in the clock of the read (a same-address read and write, whose
@@ -86,14 +106,15 @@
 //! the memory's word. Every comparison starts from registers or from the block RAM's output
 //! register and ends in a register; dead tests and misses write nothing. Writes to the live
 //! bits never meet a read that should see them (a retire's issue reads its own ray and ignores
-//! it; directions are written only while not busy).
+//! it; directions are written only into a half no test is in).
 //!
-//! **Readout.** `res_re` reads the ray memory (address in the clock of `res_re`, the word two
-//! clocks later on `res_*`) and clears the ray one clock later (a write in the clock of its own
-//! read would collide). A readout of the same ray in the next clock cannot see that clear, so
-//! it reports no hit (zero), which is what the clear leaves. Readouts stream one per clock;
-//! `busy` is high while any stage holds a test (so every write has ended before a readout's
-//! read).
+//! **Readout.** `res_re` reads the ray memory's half of `res_addr` (address in the clock of
+//! `res_re`, the word two clocks later on `res_*`) and clears the ray one clock later on that
+//! half's write port (a write in the clock of its own read would collide), beside the other
+//! half's write-backs. A readout of the same ray in the next clock cannot see that clear, so it
+//! reports no hit (zero), which is what the clear leaves. Readouts stream one per clock; a half
+//! is read out once the marker behind its bundle is counted, or once `busy` is low (so every
+//! write to it has ended before a readout's read).
 //!
 //! Resources (`cargo xtask fpga --blocks intersection_unit --families ecp5`: Yosys `synth_ecp5`
 //! with `SHELLING_ECP5`, nextpnr-ecp5 on the LFE5U-85F-6, seed 1): 6 `MULT18X18D` (with their
@@ -146,7 +167,8 @@ pub mod model {
     }
 }
 
-/// Bundle size limit of the unit: ray indices are 10 bits.
+/// Bundle size limit of the unit: a bundle's ray indices are 10 bits (one half of the ray
+/// memory; the unit's ray indices are [`RAY_BITS`] + 1 bits, the top one the half).
 pub const RAY_BITS: usize = 10;
 
 /// Clocks from a ray's issue (stage 0) to its ray-memory write (the end of stage 9).
