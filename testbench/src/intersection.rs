@@ -194,24 +194,7 @@ pub fn stream_jobs(
     let limit = start + 16 + 2 * (tests + jobs.len() as u64) * if pacing.idle { 4 } else { 1 };
     let mut src = Source::new(jobs.iter().copied(), pacing, seed);
     loop {
-        drv.drive(|u| {
-            let job = src.present(true).copied();
-            u.patch_valid.next = job.is_some();
-            if let Some(j) = job {
-                let p = j.patch;
-                u.patch_ax.next = field(p.a[0] as i64);
-                u.patch_ay.next = field(p.a[1] as i64);
-                u.patch_bx.next = field(p.b[0] as i64);
-                u.patch_by.next = field(p.b[1] as i64);
-                u.patch_wx.next = field(p.w[0] as i64);
-                u.patch_wy.next = field(p.w[1] as i64);
-                u.patch_sh.next = field(p.sh as i64);
-                u.patch_id.next = (p.id as u64).into();
-                u.patch_first.next = (j.first as u64 % MAX_BUNDLE as u64).into();
-                u.patch_count.next = (j.count as u64).into();
-                u.patch_retire.next = j.retire;
-            }
-        })?;
+        drv.drive(|u| present_job(u, src.present(true).map(|&j| (j, 0))))?;
         let u = drv.uut();
         src.accepted(u.patch_valid.val() && u.patch_ready.val())?;
         drv.tick()?;
@@ -306,7 +289,8 @@ pub fn run_overlapped(
     let mut hits: Vec<Vec<Option<Nearest>>> = vec![Vec::new(); n];
     // The readouts in flight: (bundle, cycles since the request).
     let mut in_flight: Vec<(usize, u64)> = Vec::new();
-    let total: u64 = bundles.iter().map(|(d, j)| d.len() as u64 + j.iter().map(|j| j.count as u64 + 1).sum::<u64>()).sum();
+    let total: u64 =
+        bundles.iter().map(|(d, j)| d.len() as u64 + j.iter().map(|j| j.count as u64 + 1).sum::<u64>()).sum();
     let limit = start + 64 + 4 * total + 4 * rays.iter().sum::<usize>() as u64;
     while hits.iter().zip(&rays).any(|(h, &r)| h.len() < r) {
         let marks = drv.uut().marks.val().to_u32().wrapping_sub(marks_before) as usize;

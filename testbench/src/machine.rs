@@ -25,7 +25,9 @@
 
 use crate::lockstep::Lockstep;
 use crate::memory::HostMemory;
-use crate::pe::{counters, counts_since, CacheConfig, Command, CommandHost, PeCounters, PeSetup, PE_RAY_MEMORY};
+use crate::pe::{
+    counters, counts_since, CacheConfig, Command, CommandHost, PeCounters, PeSetup, PE_RAY_MEMORY,
+};
 use crate::pe_sim::{PeInputs, PeOutputs, PeSim};
 use crate::{Clocked, Driver, Error, Result};
 pub use shelling_hdl::arbiter::model::Arbiter;
@@ -309,7 +311,8 @@ impl<'a> PeHost<'a> {
                 }
             }
         }
-        let written = |j: usize| self.step > j || (self.step == j && self.c.is_some_and(|c| c >= self.rays(j)));
+        let written =
+            |j: usize| self.step > j || (self.step == j && self.c.is_some_and(|c| c >= self.rays(j)));
         let free = self.streaming.as_ref().is_none_or(|(_, h)| h.all_sent());
         let j = self.next_source;
         if j < self.queue.len() && free && written(j) {
@@ -455,7 +458,8 @@ pub fn run_queues<M: MachineSim>(
     for w in queues.iter().flatten() {
         w.setup.check(w.commands, memory.len())?;
     }
-    let mut hosts: Vec<PeHost> = queues.iter().enumerate().map(|(p, q)| PeHost::new(q, &m.outputs(p))).collect();
+    let mut hosts: Vec<PeHost> =
+        queues.iter().enumerate().map(|(p, q)| PeHost::new(q, &m.outputs(p))).collect();
     let limit = 64 * (memory.tc() as u64 * n as u64 + 64);
     let loads_before = memory.loads();
     let mut answer: Option<[i32; 4]> = None;

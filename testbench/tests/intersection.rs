@@ -15,8 +15,8 @@ use shelling_hdl::intersection::IntersectionUnit;
 use shelling_hdl::prim::BramOut;
 use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
 use shelling_testbench::intersection::{
-    load_directions, model_bundle, model_bundle_counted, run_bundle, run_overlapped, stream_jobs, Job, RayBench,
-    MAX_BUNDLE,
+    load_directions, model_bundle, model_bundle_counted, run_bundle, run_overlapped, stream_jobs, Job,
+    RayBench, MAX_BUNDLE,
 };
 use shelling_testbench::{waveform_path, Design, Driver, Error, Pacing, Result, Scoreboard, Simulator};
 use std::path::PathBuf;
@@ -226,7 +226,8 @@ fn check_overlapped(
     let (hits, cycles) = run_overlapped(&mut drv, bundles)?;
     let mut tests = 0;
     for (b, ((dirs, jobs), hits)) in bundles.iter().zip(hits).enumerate() {
-        let mut board = Scoreboard::new(name, seed, model_bundle(dirs, jobs)).with_context(format!("bundle {b}"));
+        let mut board =
+            Scoreboard::new(name, seed, model_bundle(dirs, jobs)).with_context(format!("bundle {b}"));
         board.check_all(hits.into_iter().enumerate().map(|(i, h)| (i as u64, h)))?;
         board.finish()?;
         tests += model_bundle_counted(dirs, jobs).1;
@@ -255,14 +256,16 @@ fn bundles_overlap_in_the_two_halves_of_the_ray_memory() -> Result<()> {
         .map(|b| {
             let rays = [96, 40, 128, 64, 80][b];
             let (dirs, jobs) = scene_bundle(&mut rng, rays, 40);
-            let jobs = jobs.into_iter().map(|j| Job { count: j.count.min((rays - j.first as usize) as u16), ..j });
+            let jobs =
+                jobs.into_iter().map(|j| Job { count: j.count.min((rays - j.first as usize) as u16), ..j });
             (dirs, jobs.collect())
         })
         .collect();
     let (mut drv, cycles) = check_overlapped("overlapped bundles", &bundles, seed, true)?;
     // Overlapped, the run costs about the jobs' ray slots, not the directions and readouts too.
     let slots: u64 = bundles.iter().flat_map(|(_, j)| j).map(|j| j.count as u64 + 1).sum();
-    let host: u64 = bundles.iter().map(|(d, j)| 2 * shelling_testbench::intersection::rays_touched(d, j) as u64).sum();
+    let host: u64 =
+        bundles.iter().map(|(d, j)| 2 * shelling_testbench::intersection::rays_touched(d, j) as u64).sum();
     assert!(cycles < slots + host / 2 + 200, "{cycles} cycles for {slots} slots and {host} host cycles");
     let rec = drv.take_recording().ok_or("recording was on")?;
     for (design, simulator, name) in [

@@ -460,7 +460,10 @@ impl Logic for IssueSequencer {
                 "patch_count",
                 "patch_retire",
             ],
-            &["full", "busy", "kill", "cur", "v1", "tag1", "mark1", "o_ax", "o_ay", "o_bx", "o_by", "o_wx", "o_wy"],
+            &[
+                "full", "busy", "kill", "cur", "v1", "tag1", "mark1", "o_ax", "o_ay", "o_bx", "o_by", "o_wx",
+                "o_wy",
+            ],
         )
     }
 }
@@ -999,7 +1002,18 @@ end
     fn timing(&self) -> Vec<TimingInfo> {
         clocked(
             "nearest_merge",
-            &["v8", "tag8", "mark8", "key", "mem_key0", "mem_meta0", "mem_key1", "mem_meta1", "res_re", "res_addr"],
+            &[
+                "v8",
+                "tag8",
+                "mark8",
+                "key",
+                "mem_key0",
+                "mem_meta0",
+                "mem_key1",
+                "mem_meta1",
+                "res_re",
+                "res_addr",
+            ],
             &[
                 "write_address0",
                 "write_key0",
