@@ -6,7 +6,10 @@
 //! The host deals whole sources (the radiosity method shoots from every patch) or sectors of
 //! every source (the paper: "when assigning sectors to processors, a ray is always processed by
 //! one processor"), and each PE runs its queue on its own
-//! ([`shelling_testbench::machine::run_queues`]): no PE waits for another's source to end.
+//! ([`shelling_testbench::machine::run_queues`]): no PE waits for another's source to end, nor
+//! for its own sources' setups and readouts (they overlap its commands, in the other half of
+//! its ray memory). Every source's hits are checked; a PE's counts are checked over its queue,
+//! its overlapped sources' counts being one stream.
 //!
 //! Whole sources: the order matters to the PEs' caches, a PE that traces neighbouring sources
 //! one after the other finding the patches the last one loaded. [`spatial_order`] sorts the
@@ -235,8 +238,9 @@ pub struct MachineRun {
     pub parts: usize,
     /// From the first setup to the last readout.
     pub cycles: u64,
-    /// Summed over the PEs: cycles writing directions, running commands and reading hits (a
-    /// PE's share of `cycles` not in these it idled, done before the others).
+    /// Summed over the sources: cycles writing directions, running commands (from the first
+    /// offered to the marker taken) and reading hits. A PE's sources overlap (a setup and a
+    /// readout beside the commands of another), so these add up to more than its time.
     pub setup_cycles: u64,
     pub command_cycles: u64,
     pub readout_cycles: u64,

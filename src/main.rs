@@ -1219,7 +1219,7 @@ fn report_machine(
     );
     say!(
         out,
-        "cycles {}  per source {:.0}  rays per cycle {:.3}  (summed over the PEs: setup {}, commands {}, readout {})",
+        "cycles {}  per source {:.0}  rays per cycle {:.3}  (summed over the sources, overlapped in each PE: setup {}, commands {}, readout {})",
         run.cycles,
         run.cycles_per_source(),
         run.rays_per_cycle(),

@@ -205,7 +205,8 @@ pub struct Work<'a> {
 pub struct Traced {
     pub hits: Vec<Option<Nearest>>,
     /// Its host's counts: `setup_cycles` (its directions written), `cycles` (from its first
-    /// command offered to its marker taken) and `readout_cycles`, and the intersection unit's
+    /// command offered to the next source's first, or to the end of the PE's queue) and
+    /// `readout_cycles`, and the intersection unit's
     /// busy and stall cycles in its command phase. The PE's counters cannot be split between
     /// overlapped sources: they are the PE's, over its queue, in [`MachineCounters::totals`].
     pub counters: PeCounters,
@@ -393,20 +394,20 @@ impl<'a> PeHost<'a> {
         let k = self.step;
         let latency = READOUT_LATENCY as usize;
         if let Some(j) = self.read_in(k) {
-            if c + 1 >= latency && c + 1 - latency < self.rays(j) {
-                self.traced[j].hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
+            let rays = self.rays(j);
+            if c + 1 >= latency && c + 1 - latency < rays {
+                let t = &mut self.traced[j];
+                t.hits.push(out.res_hit.then_some(Nearest { key: out.res_key, id: out.res_id }));
+                if t.hits.len() == rays {
+                    t.counters.readout_cycles = (rays + latency - 1) as u64;
+                    t.end = now;
+                    done();
+                }
             }
         }
         if c + 1 < self.step_length(k) {
             self.c = Some(c + 1);
             return Ok(());
-        }
-        if let Some(j) = self.read_in(k) {
-            let rays = self.rays(j);
-            let t = &mut self.traced[j];
-            t.counters.readout_cycles = (rays + latency - 1) as u64;
-            t.end = now;
-            done();
         }
         self.step += 1;
         self.c = None;
