@@ -109,15 +109,15 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 1024-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 10291 LUT4s, 7448 flip-flops, 16 `MULT18X18D`,
-//! 11 `DP16KD` (the cache's five, the unit's six), 422 LUT RAMs at placement seed 1; on
-//! LFE5U-85F-6 a median of 153.1 MHz over placement seeds 1–5 (150.3–155.9; 156.0 with
-//! 143.8–157.2 before the cache's `t_any` register; 148.3 and 31
-//! `DP16KD` with the 4096-line cache, before `cmd_ready` became one register and the screener's
-//! exponent flags were registered; 71.8 at seed 1 before the 150 MHz work). Its critical paths:
-//! the screener's divider stage (seeds 1, 2), its exponent into the divider's inputs (3, 5)
-//! and its `full` flag into the loader's count (4) (`hdl/fpga/ecp5.md`, checked against the
-//! committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
+//! flow's register wrapper, wrapper excluded): 10846 LUT4s, 7724 flip-flops, 16 `MULT18X18D`,
+//! 17 `DP16KD` (the cache's five, the unit's twelve), 424 LUT RAMs at placement seed 1; on
+//! LFE5U-85F-6 a median of 149.4 MHz over placement seeds 1–5 (140.2–154.0), 0.6 MHz short of
+//! the 150 MHz goal (153.1, 150.3–155.9, with the one-half ray memory and the source outside
+//! the banks; 71.8 at seed 1 before the 150 MHz work). Its critical paths: the screener's side
+//! flags (seed 1), its divider into the output FIFO (2), the bank FIFO's head through the
+//! origin's bank multiplexer into stage 0's subtraction (3), the screener's `used` count (4),
+//! and the unit's merge into a far ray-memory tile's write enable (5) (`hdl/fpga/ecp5.md`,
+//! checked against the committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
 //!
 //! # Models
 //!

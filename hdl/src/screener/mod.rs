@@ -105,8 +105,10 @@
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 158.6 MHz (150.0–163.6; 150.4 before stage 7 registered the exponent's flags and
-//! split the outside compare, 125 at seed 1 before the DSP registers; `hdl/fpga/ecp5.md`).
+//! median of 155.1 MHz (150.4–165.4; 158.6, 150.0–163.6, before the normal was read in stage
+//! 1 only, for the processing element's banks; 150.4 before stage 7 registered the exponent's
+//! flags and split the outside compare, 125 at seed 1 before the DSP registers;
+//! `hdl/fpga/ecp5.md`).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
@@ -139,7 +141,7 @@
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
 //! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 144 `TRELLIS_DPR16X4` (the
-//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5542 LUT4s (LUT RAM
+//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5684 LUT4s (LUT RAM
 //! included) and 4252 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
