@@ -48,12 +48,14 @@
 //!
 //! # Resources
 //!
-//! N times the PE's (11 `DP16KD` each), plus the arbiter and the port registers. On the
-//! LFE5U-85F-6 four PEs take 41,867 LUT4s (50 %), 30,481 FFs, 44 of 208 `DP16KD`s and 64
-//! `MULT18X18D`s and route at 129.2 MHz, the median of placement seeds 1–3 (122.7–132.3;
-//! 124.2 before the port registers; `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga --blocks
-//! machine_4`); the critical paths are inside a PE's screener: the divider's quotient into the
-//! `wx` lane of its output FIFO across a PE spread over the die, and the divider's own stage.
+//! N times the PE's (17 `DP16KD` each), plus the arbiter and the port registers. On the
+//! LFE5U-85F-6 four PEs take 43,693 LUT4s (52 %), 31,585 FFs, 68 of 208 `DP16KD`s and 64
+//! `MULT18X18D`s and route at 131.5 MHz, the median of placement seeds 1, 2 and 4
+//! (129.3–133.5; seed 3 did not finish routing in 70 minutes; 129.2 with the one-half ray
+//! memory, 124.2 before the port registers; `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga
+//! --blocks machine_4`); the critical paths are inside a PE: the bank FIFO's head through the
+//! origin's bank multiplexer into the screener's first subtraction (seeds 1, 4), and the
+//! screener's divider into the `wy` lane of its output FIFO (seed 2).
 //! Six PEs (the most whose LUTs fit) have not been run on this RTL (PERFORMANCE.md).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
