@@ -9,7 +9,7 @@ fn the_machine_synthesizes_without_latches() {
     let stat = synth_ecp5("machine");
     assert_no_latch("machine", &stat);
     assert_eq!(cells(&stat, "MULT18X18D"), 32, "two PEs of 16 multipliers:\n{stat}");
-    assert_eq!(cells(&stat, "DP16KD"), 22, "two PEs' memories in block RAM (11 each):\n{stat}");
+    assert_eq!(cells(&stat, "DP16KD"), 34, "two PEs' memories in block RAM (17 each):\n{stat}");
     assert!(cells(&stat, "TRELLIS_DPR16X4") > 0, "{stat}");
     println!("{stat}");
 }
