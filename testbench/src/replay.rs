@@ -778,6 +778,11 @@ fn run_verilator(dir: &Path, design: &str, defines: &[String]) -> Result<String>
         // default `-Os`, and a replay's few hundred thousand cycles still run in seconds.
         "-MAKEFLAGS",
         "OPT_FAST=-O0",
+        // Verilator's bit-op-tree folding evaluates some XOR trees of Yosys' gate netlists
+        // wrongly (upstream issues 4059 and 5186; Debian's 5.006 has them): on the PE's gate
+        // netlist it set the sign bit of a positive product, so every key read out was 1.
+        // Icarus and Verilator without this one optimisation agree with the RTL on every cycle.
+        "-fno-const-bit-op-tree",
         "--top-module",
         TB_MODULE,
         "--Mdir",
