@@ -244,6 +244,12 @@ pub struct MachineRun {
     pub setup_cycles: u64,
     pub command_cycles: u64,
     pub readout_cycles: u64,
+    /// The longest PE's command stream: from its first command to the start of its last
+    /// readout (the first setup and the last readout apart; every other setup and readout
+    /// overlaps its commands).
+    pub stream_cycles: u64,
+    /// Summed over the PEs: cycles their intersection units tested a live ray.
+    pub intersection_busy_cycles: u64,
     /// Rays traced (every source's bundle).
     pub rays: u64,
     /// Patches the host memory delivered, and the cycles its port was busy.
@@ -386,6 +392,9 @@ fn run_on<M: MachineSim>(
         }
         check_counts(totals, &queue_model)
             .map_err(|e| CosimError::Mismatch(format!("PE {p}'s {} sources: {e}", q.len())))?;
+        let last_readout = traced.last().map_or(0, |t| t.counters.readout_cycles);
+        m.stream_cycles = m.stream_cycles.max(totals.cycles.saturating_sub(last_readout));
+        m.intersection_busy_cycles += totals.intersection_busy_cycles;
         m.patch_loads += totals.patch_loads;
         m.cache_hits += totals.cache_hits;
         m.tests += totals.tests;

@@ -38,11 +38,13 @@ fn cycle_figures_on_a_tiny_sample() {
         engine: Engine::RustHdl,
     };
     let report = figures::run(&opts).expect("figures with the co-simulation");
-    assert_eq!(report.cosim_runs, 3 * 2 * 2);
+    // Each source on its own, then the length's sources back to back (one here).
+    assert_eq!(report.cosim_runs, 2 * 3 * 2 * 2);
     assert_eq!(report.cycles.len(), 3 * 2 * 2);
     assert!(report.to_string().contains("co-simulation"));
 
     assert!(dir.join("cycles.md").exists(), "no cycles.md");
+    assert!(dir.join("cycles_queue.md").exists(), "no cycles_queue.md");
     let text = std::fs::read_to_string(dir.join("cycles.csv")).expect("cycles.csv");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
@@ -72,6 +74,11 @@ fn cycle_figures_on_a_tiny_sample() {
         assert!(num(r, "passed") <= num(r, "patch_loads"), "{r:?}");
         assert!(num(r, "sectors") >= 1.0 || r["method"] == "conventional", "{r:?}");
         assert!(cycles >= num(r, "bound_cycles"), "{r:?}");
+        // The queue of one source: the same loads as the source alone, never under its bound.
+        assert_eq!(num(r, "queue_memory_loads"), num(r, "memory_loads"), "{r:?}");
+        assert!(num(r, "queue_cycles") >= num(r, "queue_bound_cycles"), "{r:?}");
+        let q_eff = num(r, "queue_pipeline_efficiency");
+        assert!(q_eff > 0.0 && q_eff <= 1.0, "{r:?}");
         assert!(num(r, "drain_cycles") <= num(r, "stall_cycles"), "{r:?}");
         if cache == 0.0 {
             assert_eq!(num(r, "cache_hits"), 0.0, "{r:?}");
@@ -270,5 +277,6 @@ fn holds_block(doc: &str, name: &str, file: &str) {
 #[test]
 fn the_documents_hold_the_committed_tables() {
     holds_block("FIGURES.md", "cycles-table", "figures/cycles.md");
+    holds_block("FIGURES.md", "cycles-queue-table", "figures/cycles_queue.md");
     holds_block("README.md", "headline", "figures/headline.md");
 }

@@ -28,6 +28,7 @@
 use super::plot::{method_marker, render, tick_label, Chart, Marker, Series, XAxis};
 use super::{csv_num, scene_seed, source_patches, FigureOptions, METHODS};
 use crate::cosim::{self, CosimConfig};
+use crate::machine::{self, Deal, MachineConfig, MachineRun};
 use crate::run::{GriddedScene, Scheduled};
 use crate::scene;
 use crate::trace::Method;
@@ -121,6 +122,38 @@ impl CycleTotals {
     }
 }
 
+/// One PE's run of all the sources of a row back to back ([`crate::machine::run`] with one PE):
+/// each source's directions written and its hits read out while the commands of the one before
+/// or after run, the cache (if on) kept from source to source, as in a radiosity solve that
+/// shoots from every patch.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QueueTotals {
+    /// From the first command to the start of the last readout
+    /// ([`crate::machine::MachineRun::stream_cycles`]).
+    pub cycles: u64,
+    pub intersection_busy_cycles: u64,
+    pub memory_loads: u64,
+    pub patch_loads: u64,
+    pub tests: u64,
+    /// `max(memory_loads · T_c, patch_loads, tests · T_λ, rays)` over the whole queue: the host
+    /// memory, the loader, the intersection unit and the host's ray port (one direction written
+    /// and one hit read a clock: a source's `R` of each, beside the commands of the sources
+    /// before and after it) each need that many cycles at the least. (The sum over the sources
+    /// of each one's own bound is no bound here: one source's loads overlap another's tests.)
+    pub bound_cycles: u64,
+}
+
+fn queue_totals(r: &MachineRun, tc: u32) -> QueueTotals {
+    QueueTotals {
+        cycles: r.stream_cycles,
+        intersection_busy_cycles: r.intersection_busy_cycles,
+        memory_loads: r.memory_loads,
+        patch_loads: r.patch_loads,
+        tests: r.tests,
+        bound_cycles: (r.memory_loads * tc as u64).max(r.patch_loads).max(r.tests).max(r.rays),
+    }
+}
+
 /// One technique at one segment length, `T_c` and cache setting.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CycleRow {
@@ -132,6 +165,8 @@ pub struct CycleRow {
     /// Sources co-simulated.
     pub sources: usize,
     pub total: CycleTotals,
+    /// The same sources back to back on one PE.
+    pub queue: QueueTotals,
     /// Mean over the sources of the measured `S` (shelling techniques only).
     pub s_measured: Option<f64>,
     /// Mean over the sources of the true ADLC.
@@ -159,6 +194,16 @@ impl CycleRow {
     /// Measured cycles over the bound of [`CycleTotals::bound_cycles`].
     pub fn overhead(&self) -> f64 {
         self.total.cycles as f64 / self.total.bound_cycles.max(1) as f64
+    }
+
+    /// The sources back to back: cycles over their bound ([`QueueTotals`]).
+    pub fn queue_overhead(&self) -> f64 {
+        self.queue.cycles as f64 / self.queue.bound_cycles.max(1) as f64
+    }
+
+    /// The sources back to back: the intersection unit's busy cycles over all cycles.
+    pub fn queue_efficiency(&self) -> f64 {
+        self.queue.intersection_busy_cycles as f64 / self.queue.cycles.max(1) as f64
     }
 }
 
@@ -278,14 +323,86 @@ fn speedup_of(sp: &[Speedup], r: &CycleRow, scenario: Scenario) -> Option<Speedu
         .copied()
 }
 
-/// One co-simulation: a schedule, a technique, a `T_c` and a cache setting.
+/// What a co-simulation runs.
+#[derive(Clone, Copy)]
+enum Run {
+    /// One source on a fresh PE (its index in the sample).
+    Source(usize),
+    /// Every sample source of a length (its index) back to back on one PE.
+    Queue(usize),
+}
+
+/// What a co-simulation found.
+enum Outcome {
+    Source(PeCounters, ModelCounts),
+    Queue(QueueTotals),
+}
+
+/// One co-simulation: a source or a queue, a technique, a `T_c` and a cache setting.
 struct Job {
-    source: usize,
+    what: Run,
     method: usize,
     tc: u32,
     cache: Option<u32>,
     /// Rough cycle estimate (for the order and the progress bar).
     cost: u64,
+}
+
+/// Runs `run(j, report)` for every job `j`, longest `costs` first, one job at a time on every
+/// rayon thread, so that the threads finish close together; `report(done, of)` moves `bar` by
+/// that fraction of the job's cost. The first failure stops the jobs not yet started and is
+/// returned.
+fn longest_first<T: Send>(
+    costs: &[u64],
+    bar: &indicatif::ProgressBar,
+    run: impl Fn(usize, &mut dyn FnMut(usize, usize)) -> Result<T> + Sync,
+) -> Result<Vec<T>> {
+    let mut order: Vec<usize> = (0..costs.len()).collect();
+    order.sort_by_key(|&j| std::cmp::Reverse(costs[j]));
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let failed = AtomicBool::new(false);
+    let results: Mutex<Vec<Option<Result<T>>>> = Mutex::new((0..costs.len()).map(|_| None).collect());
+    rayon::scope(|scope| {
+        for _ in 0..rayon::current_num_threads() {
+            scope.spawn(|_| loop {
+                let n = next.fetch_add(1, Ordering::Relaxed);
+                if n >= order.len() || failed.load(Ordering::Relaxed) {
+                    break;
+                }
+                let (j, cost) = (order[n], costs[order[n]]);
+                let mut reported = 0u64;
+                let result = run(j, &mut |d, t| {
+                    let now = cost * d as u64 / t.max(1) as u64;
+                    if now > reported {
+                        bar.inc(now - reported);
+                        reported = now;
+                    }
+                });
+                bar.inc(cost.saturating_sub(reported));
+                bar.set_message(format!("{}/{}", done.fetch_add(1, Ordering::Relaxed) + 1, costs.len()));
+                if result.is_err() {
+                    failed.store(true, Ordering::Relaxed);
+                }
+                if let Ok(mut r) = results.lock() {
+                    r[j] = Some(result);
+                }
+            });
+        }
+    });
+    let results = results.into_inner().map_err(|_| anyhow!("a co-simulation worker panicked"))?;
+    let mut out = Vec::with_capacity(costs.len());
+    for r in results {
+        match r {
+            Some(Ok(v)) => out.push(v),
+            Some(Err(e)) => return Err(e),
+            None => {}
+        }
+    }
+    if out.len() != costs.len() {
+        bail!("{} of {} co-simulation runs did not finish", costs.len() - out.len(), costs.len());
+    }
+    Ok(out)
 }
 
 fn estimate(s: &Scheduled, tc: u32, cache: Option<u32>, patches: usize) -> u64 {
@@ -347,13 +464,21 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
         for (method, s) in sched.iter().enumerate() {
             for &(tc, cache) in &configs {
                 let cost = estimate(s, tc, cache, opts.count);
-                jobs.push(Job { source, method, tc, cache, cost });
+                jobs.push(Job { what: Run::Source(source), method, tc, cache, cost });
             }
         }
     }
-    // Longest first, handed out one at a time: the workers finish close together.
-    let mut order: Vec<usize> = (0..jobs.len()).collect();
-    order.sort_by_key(|&j| std::cmp::Reverse(jobs[j].cost));
+    for length in 0..opts.lengths.len() {
+        for method in 0..METHODS.len() {
+            for &(tc, cache) in &configs {
+                let cost = (0..sources.len())
+                    .filter(|&k| sources[k].0 == length)
+                    .map(|k| estimate(&schedules[k][method], tc, cache, opts.count))
+                    .sum();
+                jobs.push(Job { what: Run::Queue(length), method, tc, cache, cost });
+            }
+        }
+    }
 
     let total_cost: u64 = jobs.iter().map(|j| j.cost).sum();
     let bar = if opts.progress {
@@ -368,64 +493,55 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
     } else {
         indicatif::ProgressBar::hidden()
     };
-
-    let next = AtomicUsize::new(0);
-    let done = AtomicUsize::new(0);
-    let failed = AtomicBool::new(false);
-    let results: Mutex<Vec<Option<Result<(PeCounters, ModelCounts)>>>> =
-        Mutex::new((0..jobs.len()).map(|_| None).collect());
-    rayon::scope(|scope| {
-        for _ in 0..rayon::current_num_threads() {
-            scope.spawn(|_| loop {
-                let n = next.fetch_add(1, Ordering::Relaxed);
-                if n >= order.len() || failed.load(Ordering::Relaxed) {
-                    break;
-                }
-                let j = &jobs[order[n]];
-                let sched = &schedules[j.source][j.method];
-                let mut reported = 0u64;
+    let engine = opts.engine.resolve(false);
+    let costs: Vec<u64> = jobs.iter().map(|j| j.cost).collect();
+    let outcomes = longest_first(&costs, &bar, |n, report| {
+        let j = &jobs[n];
+        let setting = || {
+            format!(
+                "{}, T_c {}, {}",
+                METHODS[j.method],
+                j.tc,
+                j.cache.map_or("without the patch cache".to_string(), |n| format!(
+                    "with a patch cache of {n} lines"
+                ))
+            )
+        };
+        match j.what {
+            Run::Source(source) => {
                 let config = CosimConfig { tc: j.tc, cache: j.cache, vcd: None, engine: opts.engine };
-                let run = cosim::run(sched, &config, |d, t| {
-                    let now = j.cost * d as u64 / t.max(1) as u64;
-                    if now > reported {
-                        bar.inc(now - reported);
-                        reported = now;
-                    }
-                });
-                bar.inc(j.cost.saturating_sub(reported));
-                bar.set_message(format!("{}/{}", done.fetch_add(1, Ordering::Relaxed) + 1, jobs.len()));
-                let (i, k) = sources[j.source];
-                let result = run.map(|c| (c.hardware, c.model)).map_err(|e| {
-                    failed.store(true, Ordering::Relaxed);
-                    anyhow!(
-                        "co-simulating source patch {k} of the scene of length {} ({}, T_c {}, {}): {e}",
-                        opts.lengths[i],
-                        METHODS[j.method],
-                        j.tc,
-                        j.cache.map_or("without the patch cache".to_string(), |n| format!(
-                            "with a patch cache of {n} lines"
-                        ))
-                    )
-                });
-                if let Ok(mut r) = results.lock() {
-                    r[order[n]] = Some(result);
-                }
-            });
+                let (i, k) = sources[source];
+                cosim::run(&schedules[source][j.method], &config, |d, t| report(d, t))
+                    .map(|c| Outcome::Source(c.hardware, c.model))
+                    .map_err(|e| {
+                        anyhow!(
+                            "co-simulating source patch {k} of the scene of length {} ({}): {e}",
+                            opts.lengths[i],
+                            setting()
+                        )
+                    })
+            }
+            Run::Queue(i) => {
+                let work: Vec<Scheduled> = (0..sources.len())
+                    .filter(|&k| sources[k].0 == i)
+                    .map(|k| schedules[k][j.method].clone())
+                    .collect();
+                let config =
+                    MachineConfig { pes: 1, tc: j.tc, cache: j.cache, deal: Deal::Blocks, engine, vcd: None };
+                machine::run(&work, &config, |d, t| report(d, t))
+                    .map(|r| Outcome::Queue(queue_totals(&r, j.tc)))
+                    .map_err(|e| {
+                        anyhow!(
+                            "co-simulating the {} sources of the scene of length {} back to back ({}): {e}",
+                            work.len(),
+                            opts.lengths[i],
+                            setting()
+                        )
+                    })
+            }
         }
-    });
+    })?;
     bar.finish_and_clear();
-    let results = results.into_inner().map_err(|_| anyhow!("a co-simulation worker panicked"))?;
-    let mut counters: Vec<(PeCounters, ModelCounts)> = Vec::with_capacity(jobs.len());
-    for r in results {
-        match r {
-            Some(Ok(c)) => counters.push(c),
-            Some(Err(e)) => return Err(e),
-            None => {}
-        }
-    }
-    if counters.len() != jobs.len() {
-        bail!("{} of {} co-simulation runs did not finish", jobs.len() - counters.len(), jobs.len());
-    }
 
     // Sum in a fixed order.
     let mut rows = Vec::new();
@@ -434,17 +550,23 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
             for &tc in &opts.tcs {
                 for (m, &method) in METHODS.iter().enumerate() {
                     let mut total = CycleTotals::default();
+                    let mut queue = QueueTotals::default();
                     let (mut n, mut s_sum, mut adlc_sum) = (0usize, 0.0, 0.0);
-                    for (j, job) in jobs.iter().enumerate() {
-                        if sources[job.source].0 != i || job.method != m || job.tc != tc || job.cache != cache
-                        {
+                    for (job, outcome) in jobs.iter().zip(&outcomes) {
+                        if job.method != m || job.tc != tc || job.cache != cache {
                             continue;
                         }
-                        total.add(&counters[j].0, &counters[j].1, tc);
-                        let trace = &schedules[job.source][m].trace;
-                        s_sum += trace.stats.leaving_fraction();
-                        adlc_sum += trace.counters.adlc_true;
-                        n += 1;
+                        match (job.what, outcome) {
+                            (Run::Source(k), Outcome::Source(h, model)) if sources[k].0 == i => {
+                                total.add(h, model, tc);
+                                let trace = &schedules[k][m].trace;
+                                s_sum += trace.stats.leaving_fraction();
+                                adlc_sum += trace.counters.adlc_true;
+                                n += 1;
+                            }
+                            (Run::Queue(l), Outcome::Queue(q)) if l == i => queue = *q,
+                            _ => {}
+                        }
                     }
                     let nf = n.max(1) as f64;
                     rows.push(CycleRow {
@@ -454,6 +576,7 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
                         cache,
                         sources: n,
                         total,
+                        queue,
                         s_measured: (method != Method::Conventional).then(|| s_sum / nf),
                         adlc_true: adlc_sum / nf,
                     });
@@ -468,14 +591,15 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
 pub const CSV_HEADER: &str = "length,method,tc,cache_lines,sources,cycles,intersection_busy_cycles,\
 pipeline_efficiency,stall_cycles,drain_cycles,sectors,patch_loads,memory_loads,cache_hits,passed,ray_slots,\
 tests,live_runs,bound_cycles,s_measured,adlc_true,speedup,speedup_vs_shared_conventional,predicted_speedup,\
-predicted_branch";
+predicted_branch,queue_cycles,queue_pipeline_efficiency,queue_memory_loads,queue_bound_cycles";
 
 /// The text of `cycles.csv`: per-source means (pipeline efficiency over all cycles of the row);
 /// `cache_lines` 0 is the shared memory without cache. `speedup` is the conventional technique's
 /// cycles (same `T_c` and cache setting) over the row's; `speedup_vs_shared_conventional` the
 /// conventional technique's without the cache over the row's; `predicted_speedup` is Eq. 10 for
 /// rows without the cache and Eq. 10's compute branch (Eq. 11) for rows with it, to be read
-/// beside `speedup_vs_shared_conventional` ([`prediction`]).
+/// beside `speedup_vs_shared_conventional` ([`prediction`]). The `queue_*` columns are the
+/// same sources run back to back on one PE ([`QueueTotals`]), also per source.
 pub fn csv(rows: &[CycleRow]) -> String {
     let sp = speedups(rows);
     let mut out = format!("{CSV_HEADER}\n");
@@ -522,6 +646,11 @@ pub fn csv(rows: &[CycleRow]) -> String {
         let pred = paper.and_then(|s| s.predicted);
         cols.push(pred.map(|p| csv_num(p.value)).unwrap_or_default());
         cols.push(pred.map(|p| p.branch.name().to_string()).unwrap_or_default());
+        let q = &r.queue;
+        cols.push(csv_num(r.mean(q.cycles)));
+        cols.push(csv_num(r.queue_efficiency()));
+        cols.push(csv_num(r.mean(q.memory_loads)));
+        cols.push(csv_num(r.mean(q.bound_cycles)));
         out.push_str(&cols.join(","));
         out.push('\n');
     }
@@ -602,12 +731,52 @@ pub fn markdown(rows: &[CycleRow]) -> String {
     out
 }
 
+/// The table of FIGURES.md ("The PE at its bound"), written to `cycles_queue.md`: the sources back to back on one PE ([`QueueTotals`]), per
+/// length and `T_c`: S's cycles per source without and with the cache, the shelling techniques' cycles over their bound and
+/// their pipeline efficiency, on the shared memory and behind the cache.
+pub fn queue_markdown(rows: &[CycleRow]) -> String {
+    let mut out = String::from(
+        "| L | T_c | S cycles | S cycles, cache | S / bound | D / bound | S / bound, cache \
+         | D / bound, cache | eff. S | eff. D | eff. S, cache | eff. D, cache |\n\
+         |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    let mut last = None;
+    for r in rows.iter().filter(|r| r.method == Method::Stochastic && r.cache.is_none()) {
+        let row = |m, cached| find(rows, r.length, m, r.tc, cached);
+        let (Some(d), Some(sc), Some(dc)) = (
+            row(Method::Deterministic, false),
+            row(Method::Stochastic, true),
+            row(Method::Deterministic, true),
+        ) else {
+            continue;
+        };
+        let first = last != Some(r.length);
+        last = Some(r.length);
+        let cols = [
+            if first { csv_num(r.length) } else { String::new() },
+            r.tc.to_string(),
+            format!("{:.0}", r.mean(r.queue.cycles)),
+            format!("{:.0}", sc.mean(sc.queue.cycles)),
+            format!("{:.2}", r.queue_overhead()),
+            format!("{:.2}", d.queue_overhead()),
+            format!("{:.2}", sc.queue_overhead()),
+            format!("{:.2}", dc.queue_overhead()),
+            format!("{:.3}", r.queue_efficiency()),
+            format!("{:.3}", d.queue_efficiency()),
+            format!("{:.3}", sc.queue_efficiency()),
+            format!("{:.3}", dc.queue_efficiency()),
+        ];
+        out.push_str(&format!("| {} |\n", cols.join(" | ")));
+    }
+    out
+}
+
 /// The table of the report.
 pub(super) fn write_table(f: &mut fmt::Formatter<'_>, rows: &[CycleRow]) -> fmt::Result {
     let sp = speedups(rows);
     writeln!(
         f,
-        "{:>8} {:>6} {:>4} {:<14}{:>11}{:>10}{:>7}{:>10}{:>9}{:>8}{:>9}{:>8}{:>8}{:>9}{:>8}",
+        "{:>8} {:>6} {:>4} {:<14}{:>11}{:>10}{:>7}{:>10}{:>9}{:>8}{:>9}{:>9}{:>8}{:>8}{:>9}{:>8}",
         "length",
         "cache",
         "T_c",
@@ -619,6 +788,7 @@ pub(super) fn write_table(f: &mut fmt::Formatter<'_>, rows: &[CycleRow]) -> fmt:
         "loads",
         "hits",
         "/bound",
+        "q/bound",
         "SF",
         "Eq.10",
         "SF shr.",
@@ -634,7 +804,7 @@ pub(super) fn write_table(f: &mut fmt::Formatter<'_>, rows: &[CycleRow]) -> fmt:
         };
         writeln!(
             f,
-            "{:>8} {:>6} {:>4} {:<14}{:>11.0}{:>10.0}{:>7.3}{:>10.0}{:>9.0}{:>8.0}{:>9.2}{:>8}{:>8}{:>9}{:>8}",
+            "{:>8} {:>6} {:>4} {:<14}{:>11.0}{:>10.0}{:>7.3}{:>10.0}{:>9.0}{:>8.0}{:>9.2}{:>9.2}{:>8}{:>8}{:>9}{:>8}",
             r.length,
             r.cache.map_or_else(|| "off".to_string(), |l| l.to_string()),
             r.tc,
@@ -646,6 +816,7 @@ pub(super) fn write_table(f: &mut fmt::Formatter<'_>, rows: &[CycleRow]) -> fmt:
             r.mean(t.memory_loads),
             r.mean(t.cache_hits),
             r.overhead(),
+            r.queue_overhead(),
             opt(same.map(|s| s.measured)),
             opt(if r.cache.is_none() { same.and_then(|s| s.predicted).map(|p| p.value) } else { None }),
             opt(paper.map(|s| s.measured)),
