@@ -579,7 +579,7 @@ impl Recording {
         let defines: Vec<String> = defines.iter().map(|d| format!("-D{d}")).collect();
         let output = match simulator {
             Simulator::Icarus => run_icarus(dir, design.file(), &defines)?,
-            Simulator::Verilator => run_verilator(dir, design.file(), &defines)?,
+            Simulator::Verilator => run_verilator(dir, design, &defines)?,
         };
         let (cycles, checks) = parse_summary(&output, self.cycles).map_err(|e| {
             e.context(format_args!("{design} under {simulator}, replay in {}", dir.display()))
@@ -762,10 +762,20 @@ fn run_icarus(dir: &Path, design: &str, defines: &[String]) -> Result<String> {
     Ok(String::from_utf8_lossy(&run.stdout).into_owned())
 }
 
-/// Builds `tb.v` with the design in `design` into a binary (the `-D` options in `defines`
-/// first) and runs it.
-fn run_verilator(dir: &Path, design: &str, defines: &[String]) -> Result<String> {
+/// Builds `tb.v` with `design`'s file into a binary (the `-D` options in `defines` first) and
+/// runs it.
+///
+/// A netlist is built without Verilator's bit-op-tree folding, which evaluates some XOR trees
+/// of Yosys' gate netlists wrongly (upstream issues 4059 and 5186; Debian's 5.006 has them): on
+/// the PE's gate netlist it set the sign bit of a positive product, so every key read out was 1,
+/// where Icarus on the same netlist and Verilator without that one optimisation agree with the
+/// RTL on every cycle. The RTL is built as the compiled PE (`verilated.rs`) is, with it: its
+/// replays check that build.
+fn run_verilator(dir: &Path, design: Design, defines: &[String]) -> Result<String> {
     let mut build: Vec<&str> = defines.iter().map(String::as_str).collect();
+    if design != Design::Rtl {
+        build.push("-fno-const-bit-op-tree");
+    }
     build.extend([
         "--binary",
         "--timing",
@@ -778,11 +788,6 @@ fn run_verilator(dir: &Path, design: &str, defines: &[String]) -> Result<String>
         // default `-Os`, and a replay's few hundred thousand cycles still run in seconds.
         "-MAKEFLAGS",
         "OPT_FAST=-O0",
-        // Verilator's bit-op-tree folding evaluates some XOR trees of Yosys' gate netlists
-        // wrongly (upstream issues 4059 and 5186; Debian's 5.006 has them): on the PE's gate
-        // netlist it set the sign bit of a positive product, so every key read out was 1.
-        // Icarus and Verilator without this one optimisation agree with the RTL on every cycle.
-        "-fno-const-bit-op-tree",
         "--top-module",
         TB_MODULE,
         "--Mdir",
@@ -790,7 +795,7 @@ fn run_verilator(dir: &Path, design: &str, defines: &[String]) -> Result<String>
         "-o",
         "replay",
         "tb.v",
-        design,
+        design.file(),
     ]);
     run_tool(dir, "verilator", &build, "apt-get install -y verilator")?;
     let run = run_tool(dir, "verilator/replay", &[], "it was just built")?;
