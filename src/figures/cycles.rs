@@ -13,6 +13,11 @@
 //! patch cache of [`FigureOptions::cache_lines`] lines. Every run checks every hit against the
 //! bit-true model ([`crate::cosim::run`]); a mismatch fails the command.
 //!
+//! Then each length's sources run back to back on one PE, for every technique, `T_c` and cache
+//! setting ([`QueueTotals`], [`crate::machine::run`] with one PE): the steady state of a
+//! radiosity solve, each source's setup and readout overlapping the commands of its neighbours
+//! and the cache kept from source to source; every hit checked the same way.
+//!
 //! # Speedups and predictions
 //!
 //! The measured speedup of a shelling technique is the conventional technique's mean cycles
@@ -731,9 +736,10 @@ pub fn markdown(rows: &[CycleRow]) -> String {
     out
 }
 
-/// The table of FIGURES.md ("The PE at its bound"), written to `cycles_queue.md`: the sources back to back on one PE ([`QueueTotals`]), per
-/// length and `T_c`: S's cycles per source without and with the cache, the shelling techniques' cycles over their bound and
-/// their pipeline efficiency, on the shared memory and behind the cache.
+/// The table of FIGURES.md ("Sources back to back"), written to `cycles_queue.md`: the
+/// sources back to back on one PE ([`QueueTotals`]), per length and `T_c`: S's cycles per source
+/// without and with the cache, and the shelling techniques' cycles over their bound and their
+/// pipeline efficiency, on the shared memory and behind the cache.
 pub fn queue_markdown(rows: &[CycleRow]) -> String {
     let mut out = String::from(
         "| L | T_c | S cycles | S cycles, cache | S / bound | D / bound | S / bound, cache \
