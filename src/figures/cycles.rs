@@ -474,7 +474,7 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
         }
     }
     for length in 0..opts.lengths.len() {
-        for method in 0..METHODS.len() {
+        for (method, _) in METHODS.iter().enumerate() {
             for &(tc, cache) in &configs {
                 let cost = (0..sources.len())
                     .filter(|&k| sources[k].0 == length)
@@ -516,7 +516,7 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
             Run::Source(source) => {
                 let config = CosimConfig { tc: j.tc, cache: j.cache, vcd: None, engine: opts.engine };
                 let (i, k) = sources[source];
-                cosim::run(&schedules[source][j.method], &config, |d, t| report(d, t))
+                cosim::run(&schedules[source][j.method], &config, &mut *report)
                     .map(|c| Outcome::Source(c.hardware, c.model))
                     .map_err(|e| {
                         anyhow!(
@@ -533,7 +533,7 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
                     .collect();
                 let config =
                     MachineConfig { pes: 1, tc: j.tc, cache: j.cache, deal: Deal::Blocks, engine, vcd: None };
-                machine::run(&work, &config, |d, t| report(d, t))
+                machine::run(&work, &config, &mut *report)
                     .map(|r| Outcome::Queue(queue_totals(&r, j.tc)))
                     .map_err(|e| {
                         anyhow!(
