@@ -239,8 +239,9 @@ pub struct MachineRun {
     /// From the first setup to the last readout.
     pub cycles: u64,
     /// Summed over the sources: cycles writing directions, running commands (from the first
-    /// offered to the next source's first, or to the end of the PE's queue) and reading hits. A PE's sources overlap (a setup and a
-    /// readout beside the commands of another), so these add up to more than its time.
+    /// offered to the next source's first, or to the end of the PE's queue) and reading hits.
+    /// A PE's sources overlap (a setup and a readout beside the commands of another), so these
+    /// add up to more than its time.
     pub setup_cycles: u64,
     pub command_cycles: u64,
     pub readout_cycles: u64,

@@ -473,13 +473,15 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
             }
         }
     }
-    for length in 0..opts.lengths.len() {
+    // Each length's sample sources (indices into `sources`), a queue's work in that order.
+    let of_length: Vec<Vec<usize>> = (0..opts.lengths.len())
+        .map(|i| (0..sources.len()).filter(|&k| sources[k].0 == i).collect())
+        .collect();
+    for (length, queue) in of_length.iter().enumerate() {
         for (method, _) in METHODS.iter().enumerate() {
             for &(tc, cache) in &configs {
-                let cost = (0..sources.len())
-                    .filter(|&k| sources[k].0 == length)
-                    .map(|k| estimate(&schedules[k][method], tc, cache, opts.count))
-                    .sum();
+                let cost =
+                    queue.iter().map(|&k| estimate(&schedules[k][method], tc, cache, opts.count)).sum();
                 jobs.push(Job { what: Run::Queue(length), method, tc, cache, cost });
             }
         }
@@ -527,10 +529,8 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
                     })
             }
             Run::Queue(i) => {
-                let work: Vec<Scheduled> = (0..sources.len())
-                    .filter(|&k| sources[k].0 == i)
-                    .map(|k| schedules[k][j.method].clone())
-                    .collect();
+                let work: Vec<Scheduled> =
+                    of_length[i].iter().map(|&k| schedules[k][j.method].clone()).collect();
                 let config =
                     MachineConfig { pes: 1, tc: j.tc, cache: j.cache, deal: Deal::Blocks, engine, vcd: None };
                 machine::run(&work, &config, &mut *report)

@@ -1,7 +1,7 @@
 //! Tier 2: the co-simulated part of the committed figures (`figures/cycles.csv` and the tables
 //! `figures/cycles.md` and `figures/cycles_queue.md` that FIGURES.md holds) recomputed with the
-//! command FIGURES.md quotes and compared byte for byte (the cycle counts are exact, so any change to the RTL, the scheduler
-//! or the host's commands shows). `SHELLING_BLESS=1` copies the fresh files over the committed
+//! command FIGURES.md quotes and compared byte for byte (the cycle counts are exact, so any
+//! change to the RTL, the scheduler or the host's commands shows). `SHELLING_BLESS=1` copies the fresh files over the committed
 //! ones instead.
 
 use std::path::Path;
