@@ -36,7 +36,6 @@ use anyhow::{bail, Context, Result};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// What the machine figures sweep.
 #[derive(Clone, Debug)]
@@ -191,14 +190,14 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
                 .collect::<Result<Vec<_>>>()
         })
         .collect::<Result<_>>()?;
-    let done = AtomicUsize::new(0);
     // One run at a time: a compiled machine steps its PEs on two threads (`Composed::threaded`,
     // its helper spinning between edges), so runs side by side oversubscribe the cores. On two
     // cores two runs at once took 26 times as long as one after the other (34.2 s against
     // 1.3 s for `--lengths 32 --sources 16 --pes 1,8 --tc 16 --caches 128`).
     let runs: Vec<MachineRun> = jobs
         .iter()
-        .map(|&(li, m, tc, cache, pes, deal, layout)| {
+        .enumerate()
+        .map(|(done, &(li, m, tc, cache, pes, deal, layout))| {
             let (_, [whole, parts, file]) =
                 schedules[li].iter().find(|s| s.0 == m).expect("every technique scheduled");
             let config = MachineConfig { pes, tc, cache, deal, engine, vcd: None };
@@ -215,7 +214,7 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
                     layout.name()
                 )
             })?;
-            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            let n = done + 1;
             if o.progress {
                 eprint!("\rmachine runs {n}/{}", jobs.len());
             }
