@@ -13,9 +13,10 @@
 //!
 //! Whole sources: the order matters to the PEs' caches, a PE that traces neighbouring sources
 //! one after the other finding the patches the last one loaded. [`spatial_order`] sorts the
-//! sources along a Z-order curve of their midpoints, and [`Deal`] hands that order out in
-//! contiguous blocks (PE `p` traces the `p`-th block) or interleaved (PE `p` the sources `p`,
-//! `p + N`, ...).
+//! sources along a Hilbert curve of their midpoints, and [`Deal`] hands that order out in
+//! contiguous blocks of even work (PE `p` traces the `p`-th block; a source's work,
+//! [`work_of`], is taken from the bit-true model of its commands before the run) or
+//! interleaved (PE `p` the sources `p`, `p + N`, ...).
 //!
 //! Sectors: each source's bundle is cut into `N` contiguous ray ranges ([`part_range`]), PE `p`
 //! taking the `p`-th range of every source. Stochastic shelling sizes each sector from the
@@ -45,7 +46,8 @@ use shelling_testbench::Driver;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Deal {
-    /// PE `p` traces the `p`-th of `N` contiguous blocks of the order, source after source.
+    /// PE `p` traces the `p`-th of `N` contiguous blocks of the order, source after source, the
+    /// blocks cut where the sources' work ([`work_of`]) reaches `p/N` of the whole.
     #[default]
     Blocks,
     /// PE `p` traces the sources `p`, `p + N`, `p + 2N`, ... of the order.
@@ -74,14 +76,30 @@ impl Deal {
     }
 }
 
-/// The deal of `sources` sources to `pes` PEs: `queues[p]` lists, in the order PE `p` traces
-/// them, the work items it is given, item `i·parts + j` being part `j` of the `i`-th source
-/// of the order (`parts` is [`Deal::parts`]).
-pub fn deal(sources: usize, pes: usize, how: Deal) -> Vec<Vec<usize>> {
-    let per = sources.div_ceil(pes);
+/// The deal of the sources to `pes` PEs, `work[i]` being the `i`-th source's work (any
+/// measure that adds up, e.g. its tests): `queues[p]` lists, in the order PE `p` traces them,
+/// the work items it is given, item `i·parts + j` being part `j` of the `i`-th source of the
+/// order (`parts` is [`Deal::parts`]). Blocks are cut where the work, not the count, reaches
+/// `p/N` of the whole: source `i` goes to the block its work's midpoint falls in, so the blocks
+/// stay contiguous and every PE's share is within about one source of `1/N` of the work (all
+/// zero work: even counts). `pes` is at least 1.
+pub fn deal(work: &[u64], pes: usize, how: Deal) -> Vec<Vec<usize>> {
+    let sources = work.len();
+    let even = work.iter().all(|&w| w == 0);
+    let weight = |i: usize| if even { 1 } else { u128::from(work[i]) };
+    let total: u128 = (0..sources).map(weight).sum();
+    let mut blocks = vec![Vec::new(); pes];
+    let mut before = 0u128;
+    for i in 0..sources {
+        let w = weight(i);
+        // The block of the midpoint (before + w/2) / total, in units of 1/(2·total).
+        let p = ((2 * before + w) * pes as u128 / (2 * total).max(1)) as usize;
+        blocks[p.min(pes - 1)].push(i);
+        before += w;
+    }
     (0..pes)
         .map(|p| match how {
-            Deal::Blocks => (p * per..((p + 1) * per).min(sources)).collect(),
+            Deal::Blocks => std::mem::take(&mut blocks[p]),
             Deal::Interleaved => (p..sources).step_by(pes).collect(),
             Deal::Sectors => (0..sources).map(|i| i * pes + p).collect(),
         })
@@ -146,8 +164,30 @@ pub fn schedule_parts(
         .collect()
 }
 
-/// The patches `ids` of `segments` in Z-order of their midpoints (on a 1024 × 1024 grid over
-/// their bounding box), so that neighbours in the order are mostly neighbours in the scene.
+/// The index of cell `(x, y)` along the Hilbert curve over a `2^bits × 2^bits` grid: cells
+/// consecutive on the curve are neighbours in the grid (the curve never jumps, as a Z-order
+/// curve does between its quadrants).
+pub fn hilbert_index(bits: u32, x: u32, y: u32) -> u64 {
+    let (mut x, mut y, mut d) = (x, y, 0u64);
+    let n = 1u32 << bits;
+    let mut s = n / 2;
+    while s > 0 {
+        let (rx, ry) = (u32::from(x & s > 0), u32::from(y & s > 0));
+        d += u64::from(s) * u64::from(s) * u64::from((3 * rx) ^ ry);
+        // Rotate the quadrant so that the curve inside it starts where the last one ended.
+        if ry == 0 {
+            if rx == 1 {
+                (x, y) = (n - 1 - x, n - 1 - y);
+            }
+            (x, y) = (y, x);
+        }
+        s /= 2;
+    }
+    d
+}
+
+/// The patches `ids` of `segments` along a Hilbert curve of their midpoints (on a 1024 × 1024
+/// grid over their bounding box), so that neighbours in the order are neighbours in the scene.
 pub fn spatial_order(segments: &[Segment], ids: &[usize]) -> Vec<usize> {
     let mid = |k: usize| (segments[k].a + segments[k].b) * 0.5;
     let (mut lo, mut hi) = (mid(ids[0]), mid(ids[0]));
@@ -156,13 +196,12 @@ pub fn spatial_order(segments: &[Segment], ids: &[usize]) -> Vec<usize> {
         hi = hi.max(mid(k));
     }
     let span = (hi - lo).max(glam::DVec2::splat(1e-9));
-    let morton = |k: usize| {
+    let key = |k: usize| {
         let q = ((mid(k) - lo) / span * 1023.0).round();
-        let (x, y) = (q.x as u32, q.y as u32);
-        (0..10).fold(0u32, |m, b| m | ((x >> b) & 1) << (2 * b) | ((y >> b) & 1) << (2 * b + 1))
+        hilbert_index(10, q.x as u32, q.y as u32)
     };
     let mut out = ids.to_vec();
-    out.sort_by_key(|&k| (morton(k), k));
+    out.sort_by_key(|&k| (key(k), k));
     out
 }
 
@@ -170,11 +209,11 @@ pub fn spatial_order(segments: &[Segment], ids: &[usize]) -> Vec<usize> {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
 pub enum Layout {
-    /// In Z-order of their midpoints ([`z_ordered`]): patches near one another in the scene
-    /// sit at consecutive addresses, so they fall in different lines of a PE's direct-mapped
-    /// cache instead of evicting one another.
+    /// Along a Hilbert curve of their midpoints ([`hilbert_ordered`]): patches near one another
+    /// in the scene sit at consecutive addresses, so they fall in different lines of a PE's
+    /// direct-mapped cache instead of evicting one another.
     #[default]
-    ZOrder,
+    Hilbert,
     /// In the scene file's order.
     File,
 }
@@ -182,15 +221,15 @@ pub enum Layout {
 impl Layout {
     pub fn name(self) -> &'static str {
         match self {
-            Layout::ZOrder => "z-order",
+            Layout::Hilbert => "hilbert",
             Layout::File => "file",
         }
     }
 }
 
-/// `scene` with its patches (and their materials) in Z-order of their midpoints, and for each
-/// new index the old one: `(scene', old_of_new)`, `scene'.segments[i] = scene.segments[old_of_new[i]]`.
-pub fn z_ordered(scene: &Scene) -> (Scene, Vec<usize>) {
+/// `scene` with its patches (and their materials) along a Hilbert curve of their midpoints, and
+/// for each new index the old one: `(scene', old_of_new)`, `scene'.segments[i] = scene.segments[old_of_new[i]]`.
+pub fn hilbert_ordered(scene: &Scene) -> (Scene, Vec<usize>) {
     let all: Vec<usize> = (0..scene.segments.len()).collect();
     let old_of_new = spatial_order(&scene.segments, &all);
     let out = Scene {
@@ -204,7 +243,7 @@ pub fn z_ordered(scene: &Scene) -> (Scene, Vec<usize>) {
 /// `scene` laid out as `layout` says, and for each new index the old one.
 pub fn lay_out(scene: Scene, layout: Layout) -> (Scene, Vec<usize>) {
     match layout {
-        Layout::ZOrder => z_ordered(&scene),
+        Layout::Hilbert => hilbert_ordered(&scene),
         Layout::File => {
             let n = scene.segments.len();
             (scene, (0..n).collect())
@@ -319,6 +358,15 @@ pub fn run(
     }
 }
 
+/// A work item's weight in the deal: its ray-patch tests in the bit-true model, the intersection
+/// unit's cycles, known before the run. Of the bounds known then (the tests, the loader's
+/// patches, the ray port's directions) the tests alone balanced the README's headline best:
+/// four PEs took 448,004 cycles (stochastic), 452,310 with the largest of the three, 449,321
+/// with even counts; what the host's loads add depends on the caches and the other PEs.
+pub fn work_of(model: &pe::ModelCounts) -> u64 {
+    model.tests
+}
+
 fn sim(e: shelling_testbench::Error) -> CosimError {
     CosimError::Sim(e.message().to_string())
 }
@@ -353,8 +401,12 @@ fn run_on<M: MachineSim>(
     }
     let patches = map.memory(&patches);
     let sources = items.len() / parts;
+    // The bit-true model of every item: what its hits are checked against, and the work that
+    // weighs its source in the deal.
+    let models: Vec<_> = items.iter().map(|(setup, cmds)| pe::model(setup, &patches, cmds)).collect();
+    let work: Vec<u64> = models.chunks(parts).map(|m| m.iter().map(|(_, c)| work_of(c)).sum()).collect();
     let mut memory = HostMemory::new(patches.clone(), config.tc).map_err(sim)?;
-    let dealt = deal(sources, config.pes, config.deal);
+    let dealt = deal(&work, config.pes, config.deal);
     let queues: Vec<Vec<Work>> = dealt
         .iter()
         .map(|q| q.iter().map(|&i| Work { setup: &items[i].0, commands: &items[i].1 }).collect())
@@ -377,12 +429,12 @@ fn run_on<M: MachineSim>(
         // so its counters cannot be split between them).
         let mut queue_model = pe::ModelCounts::default();
         for (&i, t) in q.iter().zip(traced) {
-            let (setup, cmds) = &items[i];
-            let (want, model) = pe::model(setup, &patches, cmds);
-            check_hits(&t.hits, &want).map_err(|e| {
+            let (setup, _) = &items[i];
+            let (want, model) = &models[i];
+            check_hits(&t.hits, want).map_err(|e| {
                 CosimError::Mismatch(format!("source {} part {} on PE {p}: {e}", i / parts, i % parts))
             })?;
-            queue_model = queue_model.plus(&model);
+            queue_model = queue_model.plus(model);
             let c = &t.counters;
             let s = &mut span[i / parts];
             *s = (s.0.min(t.start), s.1.max(t.end));
@@ -413,16 +465,36 @@ mod tests {
     fn deals_cover_every_item_once() {
         for how in [Deal::Blocks, Deal::Interleaved, Deal::Sectors] {
             for (n, pes) in [(10, 3), (8, 8), (1, 4), (17, 4)] {
-                let queues = deal(n, pes, how);
+                let queues = deal(&vec![1; n], pes, how);
                 assert_eq!(queues.len(), pes);
                 let mut seen: Vec<usize> = queues.iter().flatten().copied().collect();
                 seen.sort();
                 assert_eq!(seen, (0..n * how.parts(pes)).collect::<Vec<_>>(), "{how:?} {n} on {pes}");
             }
         }
-        assert_eq!(deal(5, 2, Deal::Blocks), vec![vec![0, 1, 2], vec![3, 4]]);
-        assert_eq!(deal(5, 2, Deal::Interleaved), vec![vec![0, 2, 4], vec![1, 3]]);
-        assert_eq!(deal(2, 3, Deal::Sectors), vec![vec![0, 3], vec![1, 4], vec![2, 5]]);
+        assert_eq!(deal(&[1; 6], 2, Deal::Blocks), vec![vec![0, 1, 2], vec![3, 4, 5]]);
+        assert_eq!(deal(&[0; 6], 2, Deal::Blocks), vec![vec![0, 1, 2], vec![3, 4, 5]]);
+        assert_eq!(deal(&[1; 5], 2, Deal::Interleaved), vec![vec![0, 2, 4], vec![1, 3]]);
+        assert_eq!(deal(&[1; 2], 3, Deal::Sectors), vec![vec![0, 3], vec![1, 4], vec![2, 5]]);
+    }
+
+    /// Blocks are cut by work: a heavy source is a block alone, the light ones share the rest,
+    /// in order; one source on many PEs leaves the others idle.
+    #[test]
+    fn blocks_share_the_work() {
+        assert_eq!(deal(&[1, 1, 1, 9, 1, 1], 2, Deal::Blocks), vec![vec![0, 1, 2], vec![3, 4, 5]]);
+        assert_eq!(deal(&[9, 1, 1, 1], 2, Deal::Blocks), vec![vec![0], vec![1, 2, 3]]);
+        assert_eq!(
+            deal(&[3, 3, 1, 1, 1, 1, 1, 1], 3, Deal::Blocks),
+            vec![vec![0], vec![1, 2, 3], vec![4, 5, 6, 7]]
+        );
+        assert_eq!(deal(&[5], 3, Deal::Blocks), vec![vec![], vec![0], vec![]]);
+        let work: Vec<u64> = (0..1000).map(|i| 1 + (i * 7919 % 101)).collect();
+        let total: u64 = work.iter().sum();
+        for q in deal(&work, 4, Deal::Blocks) {
+            let share: u64 = q.iter().map(|&i| work[i]).sum();
+            assert!(share.abs_diff(total / 4) <= 101, "a block of {share} of {total}");
+        }
     }
 
     /// A source's parts, each scheduled on its own, trace what its whole bundle traces: every
@@ -447,17 +519,38 @@ mod tests {
         assert!(schedule_sources(&prepared, &[5], Method::Stochastic, RaySet::Angle, 2, &params, 3).is_err());
     }
 
+    /// The curve visits every cell once, each step to a grid neighbour.
     #[test]
-    fn z_order_permutes_the_scene_and_keeps_each_patch_with_its_material() {
+    fn the_hilbert_curve_steps_to_neighbours() {
+        for bits in 1..=5u32 {
+            let n = 1u32 << bits;
+            let mut at = vec![None; (n * n) as usize];
+            for x in 0..n {
+                for y in 0..n {
+                    let d = hilbert_index(bits, x, y) as usize;
+                    assert!(at[d].is_none(), "{bits} bits: cell {d} twice");
+                    at[d] = Some((x, y));
+                }
+            }
+            let at: Vec<(u32, u32)> = at.into_iter().map(|c| c.expect("every cell")).collect();
+            assert_eq!(at[0], (0, 0));
+            for w in at.windows(2) {
+                assert_eq!(w[0].0.abs_diff(w[1].0) + w[0].1.abs_diff(w[1].1), 1, "{bits} bits: {w:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_hilbert_order_permutes_the_scene_and_keeps_each_patch_with_its_material() {
         let mut scene = crate::scene::generate(200, 16.0, 3, crate::scene::PAPER_WORLD).expect("scene");
         for (i, m) in scene.materials.iter_mut().enumerate() {
             m.reflectance = Some(i as f64 / 1000.0);
         }
-        let (z, old) = z_ordered(&scene);
+        let (z, old) = hilbert_ordered(&scene);
         let mut sorted = old.clone();
         sorted.sort();
         assert_eq!(sorted, (0..200).collect::<Vec<_>>(), "a permutation");
-        assert_ne!(old, sorted, "the generator's order is not Z-order");
+        assert_ne!(old, sorted, "the generator's order is not the Hilbert order");
         for (new, &k) in old.iter().enumerate() {
             assert_eq!(z.segments[new], scene.segments[k]);
             assert_eq!(z.material(new), scene.material(k));

@@ -512,12 +512,12 @@ struct MachineArgs {
     /// Source patches from --first on (default: every one to the scene's last).
     #[arg(long, allow_negative_numbers = true)]
     count: Option<usize>,
-    /// How the sources, in Z-order of their midpoints, are dealt to the PEs.
+    /// How the sources, in Hilbert order of their midpoints, are dealt to the PEs.
     #[arg(long, value_enum, default_value_t = machine::Deal::Blocks)]
     deal: machine::Deal,
-    /// How the host memory lays the patches out: in Z-order of their midpoints (neighbours in
+    /// How the host memory lays the patches out: in Hilbert order of their midpoints (neighbours in
     /// different cache lines) or in the file's order. --first and --count are the file's indices.
-    #[arg(long, value_enum, default_value_t = machine::Layout::ZOrder)]
+    #[arg(long, value_enum, default_value_t = machine::Layout::Hilbert)]
     layout: machine::Layout,
     /// Technique: conventional, stochastic or deterministic.
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
@@ -1184,7 +1184,7 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();
     let run = run?;
-    let layout = if a.layout == machine::Layout::ZOrder { "Z" } else { "the file's" };
+    let layout = if a.layout == machine::Layout::Hilbert { "Hilbert" } else { "the file's" };
     report_machine(&run, &config, a.json, a.rays, a.method, layout)
 }
 

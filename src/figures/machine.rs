@@ -6,11 +6,11 @@
 //! # Sample
 //!
 //! For the `i`-th segment length, the scene of the first seed ([`scene_seed`]`(i, 0)`, the
-//! golden part's first scene), its patches in Z-order of their midpoints in the host memory
-//! ([`Layout::ZOrder`]), and a spatially compact run of `sources` of them: the `sources` from
+//! golden part's first scene), its patches along a Hilbert curve of their midpoints in the host
+//! memory ([`Layout::Hilbert`]), and a spatially compact run of `sources` of them: the `sources` from
 //! the middle of that order on, so that the sources are neighbours and a PE's cache can carry
 //! patches from one source to the next, as it would over a whole scene. Sources are dealt in
-//! blocks ([`Deal::Blocks`]); each PE runs its queue on its own. A second set of rows compares
+//! blocks of even work ([`Deal::Blocks`]); each PE runs its queue on its own. A second set of rows compares
 //! the other deals, and the same sources with the patches in the file's order
 //! ([`Layout::File`]), at [`MachineFigureOptions::deal_pes`] PEs, `T_c` =
 //! [`MachineFigureOptions::deal_tc`] and the smallest cache.
@@ -128,16 +128,16 @@ pub fn validate(o: &MachineFigureOptions) -> Result<()> {
     Ok(())
 }
 
-/// One length's scene and its sources in Z-order (the run the sweep takes).
+/// One length's scene and its sources in Hilbert order (the run the sweep takes).
 /// One length's scene in both layouts, and the sources the sweep takes (the same patches) in
-/// each: `(Z-ordered scene, its sources, file-ordered scene, its sources)`.
+/// each: `(Hilbert-ordered scene, its sources, file-ordered scene, its sources)`.
 fn sample(
     o: &MachineFigureOptions,
     li: usize,
 ) -> Result<(GriddedScene, Vec<usize>, GriddedScene, Vec<usize>)> {
     let sc = scene::generate(o.count, o.lengths[li], scene_seed(li, 0), scene::PAPER_WORLD)
         .context("generating the workload's scene")?;
-    let (z, old_of_new) = machine::z_ordered(&sc);
+    let (z, old_of_new) = machine::hilbert_ordered(&sc);
     let from = (o.count - o.sources) / 2;
     let z_ids: Vec<usize> = (from..from + o.sources).collect();
     let file_ids: Vec<usize> = z_ids.iter().map(|&k| old_of_new[k]).collect();
@@ -160,14 +160,14 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
             for &tc in &o.tcs {
                 for &cache in &o.caches {
                     for &p in &o.pes {
-                        jobs.push((li, m, tc, cache, p, Deal::Blocks, Layout::ZOrder));
+                        jobs.push((li, m, tc, cache, p, Deal::Blocks, Layout::Hilbert));
                     }
                 }
             }
             let cache = o.caches.iter().flatten().min().copied();
             for (deal, layout) in [
-                (Deal::Interleaved, Layout::ZOrder),
-                (Deal::Sectors, Layout::ZOrder),
+                (Deal::Interleaved, Layout::Hilbert),
+                (Deal::Sectors, Layout::Hilbert),
                 (Deal::Blocks, Layout::File),
             ] {
                 jobs.push((li, m, o.deal_tc, cache, o.deal_pes, deal, layout));
@@ -243,7 +243,7 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
         rows.iter()
             .find(|b| {
                 b.pes == 1
-                    && (b.deal, b.layout) == (Deal::Blocks, Layout::ZOrder)
+                    && (b.deal, b.layout) == (Deal::Blocks, Layout::Hilbert)
                     && (b.length, b.method, b.tc, b.cache) == (r.length, r.method, r.tc, r.cache)
             })
             .map(|b| b.run.cycles)
@@ -304,14 +304,14 @@ fn saturation(rows: &[&MachineRow]) -> String {
 pub fn markdown(o: &MachineFigureOptions, rows: &[MachineRow]) -> String {
     let mut s = String::new();
     let blocks: Vec<&MachineRow> =
-        rows.iter().filter(|r| (r.deal, r.layout) == (Deal::Blocks, Layout::ZOrder)).collect();
+        rows.iter().filter(|r| (r.deal, r.layout) == (Deal::Blocks, Layout::Hilbert)).collect();
     let most = *o.pes.iter().max().unwrap_or(&1);
     let _ = writeln!(
         s,
-        "Cycles per source on 1 to {most} PEs (sources dealt in blocks), the speedup at {most} PEs over one, \
+        "Cycles per source on 1 to {most} PEs (sources dealt in blocks of even work), the speedup at {most} PEs over one, \
          the shared port's busy share at {most} PEs, and the fewest PEs that keep the port at least 90 % busy \
          (`-`: none), per segment length L, technique, `T_c` and per-PE cache (patches; `off`: every load from \
-         the host memory), the patches in Z-order in the host memory. {} sources of {} rays per length.\n",
+         the host memory), the patches in Hilbert order in the host memory. {} sources of {} rays per length.\n",
         o.sources, o.rays
     );
     let pes_cols: String =
@@ -363,10 +363,10 @@ pub fn markdown(o: &MachineFigureOptions, rows: &[MachineRow]) -> String {
     for &l in &o.lengths {
         for &m in &METHODS {
             for (deal, layout) in [
-                (Deal::Blocks, Layout::ZOrder),
+                (Deal::Blocks, Layout::Hilbert),
                 (Deal::Blocks, Layout::File),
-                (Deal::Interleaved, Layout::ZOrder),
-                (Deal::Sectors, Layout::ZOrder),
+                (Deal::Interleaved, Layout::Hilbert),
+                (Deal::Sectors, Layout::Hilbert),
             ] {
                 if let Some(r) = rows.iter().find(|r| {
                     (r.length, r.method, r.tc, r.cache, r.pes, r.deal, r.layout)
@@ -410,7 +410,7 @@ pub fn svgs(o: &MachineFigureOptions, rows: &[MachineRow], l: f64) -> Result<Vec
                 let mut pts: Vec<(f64, f64)> = rows
                     .iter()
                     .filter(|r| {
-                        (r.deal, r.layout) == (Deal::Blocks, Layout::ZOrder)
+                        (r.deal, r.layout) == (Deal::Blocks, Layout::Hilbert)
                             && (r.length, r.method, r.tc, r.cache) == (l, m, tc, cache)
                     })
                     .map(|r| (r.pes as f64, value(r)))
@@ -467,18 +467,18 @@ pub fn write(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
 
 /// The README's headline workload: the paper's scene (1000 segments of length 32 in
 /// [0, 1024)², seed 7, as the README's and the tracer benchmark's), every one of its sources in
-/// Z-order, R = 1024 rays (angle set), `T_c` = [`HEADLINE_TC`] shared by all PEs, a cache of
+/// Hilbert order, R = 1024 rays (angle set), `T_c` = [`HEADLINE_TC`] shared by all PEs, a cache of
 /// [`HEADLINE_CACHE`] patches per PE (a quarter of the scene: the cache's 256-line index with
 /// the host memory map that leaves lines 250 … 255 unused, `shelling_testbench::pe::MemoryMap`),
-/// sources dealt in blocks.
+/// sources dealt in blocks of even work ([`Deal::Blocks`]).
 pub const HEADLINE_TC: u32 = 16;
 pub const HEADLINE_CACHE: u32 = 250;
 
-/// The headline's scene, prepared, its patches in Z-order in the host memory
-/// ([`Layout::ZOrder`]), and its sources in the order they are dealt (Z-order).
+/// The headline's scene, prepared, its patches in Hilbert order in the host memory
+/// ([`Layout::Hilbert`]), and its sources in the order they are dealt (Hilbert order).
 pub fn headline_scene() -> Result<(GriddedScene, Vec<usize>)> {
     let sc = scene::generate(1000, 32.0, 7, scene::PAPER_WORLD).context("the headline scene")?;
-    let (z, _) = machine::z_ordered(&sc);
+    let (z, _) = machine::hilbert_ordered(&sc);
     let n = z.segments.len();
     Ok((GriddedScene::new(z, GridParams::default()), (0..n).collect()))
 }
