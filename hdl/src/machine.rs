@@ -49,18 +49,18 @@
 //! # Resources
 //!
 //! N times the PE's (17 `DP16KD` each), plus the arbiter and the port registers. On the
-//! LFE5U-85F-6 four PEs take 43,693 LUT4s (52 %), 31,585 FFs, 68 of 208 `DP16KD`s and 64
-//! `MULT18X18D`s and route at 131.5 MHz, the median of placement seeds 1, 2 and 4
-//! (129.3–133.5; seed 3 did not finish routing in 70 minutes; 129.2 with the one-half ray
-//! memory, 124.2 before the port registers; `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga
-//! --blocks machine_4`); the critical paths are inside a PE: the bank FIFO's head through the
-//! origin's bank multiplexer into the screener's first subtraction (seeds 1, 4), and the
-//! screener's divider into the `wy` lane of its output FIFO (seed 2).
-//! Six PEs, the most whose LUTs fit, take 63,823 LUT4s (76 %), 47,320 FFs, 102 `DP16KD`s and
-//! 96 `MULT18X18D`s and route at 110.5 MHz (105.1–121.4, seeds 1–3, `--blocks machine_6`);
-//! their critical paths: this block's `cfg_cache_enable` register into a far PE's loader
-//! (8.3 ns of routing: one register drives all the PEs), the merge's verdict into a far
-//! ray-memory tile, the screener's side test.
+//! LFE5U-85F-6 four PEs take 44,321 LUT4s (53 %), 31,993 FFs, 68 of 208 `DP16KD`s and 64
+//! `MULT18X18D`s and route at 124.6 MHz, the median of placement seeds 2 to 6 (112.5–127.7;
+//! seed 1 did not finish routing in 45 minutes; `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga
+//! --blocks machine_4`). Their critical paths are inside one PE but cross the die: the placer
+//! spreads a PE over half its width (seed 3: the tag FIFO's head through `head_retire` into
+//! the slice's `load_main`, a clock enable, 7.7 ns of routing from column 98 to 44 to 109),
+//! besides the divider's 33-bit step and a merge verdict into a ray-memory tile. On the
+//! netlist before the origin's FIFO lanes and the divider's signed `W` they routed at 131.5
+//! (seeds 1, 2, 4): the seeds' spread is larger than either change.
+//! Six PEs, the most whose LUTs fit, take 64,744 LUT4s (77 %), 47,940 FFs, 102 `DP16KD`s and
+//! 96 `MULT18X18D`s and route at 112.1 MHz (110.5–120.7, seeds 1–3, `--blocks machine_6`;
+//! 110.5 on the netlist before); their critical paths are wires into far PEs as well.
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;

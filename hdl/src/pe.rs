@@ -75,10 +75,11 @@
 //! **Sectors, overlapped.** The PE holds two sectors (two banks of first and last ray, and of
 //! the source's origin and normal, in registers) and the bank the jobs being accepted belong
 //! to. Each job's bank goes into a
-//! one-bit [`Fifo`] beside the loader as its id goes in (`job_banks`), leaves it as the screener
-//! takes the patch (`in_bank`), and rides the screener's pipeline to its stage 3, where the
-//! screener reads the sector (`sector_bank`): the PE presents that bank's first and last ray,
-//! the origin of the bank of the patch the screener takes (`in_bank`) and the normal of the
+//! FIFO beside the loader as its id goes in (`job_banks`, with that bank's origin), leaves it as
+//! the screener takes the patch (`in_bank`), and rides the screener's pipeline to its stage 3,
+//! where the screener reads the sector (`sector_bank`): the PE presents that bank's first and
+//! last ray, the origin the job brought through the FIFO (no bank multiplexer before stage
+//! 0's subtraction) and the normal of the
 //! bank of the patch in its stage 1 (`normal_bank`). So a source change is a sector change:
 //! the next source's first sector command brings its origin and normal.
 //! Each bank counts its jobs accepted and not yet past that read (`jobs0`, `jobs1`). A sector
@@ -109,15 +110,15 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 1024-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 10846 LUT4s, 7724 flip-flops, 16 `MULT18X18D`,
-//! 17 `DP16KD` (the cache's five, the unit's twelve), 424 LUT RAMs at placement seed 1; on
-//! LFE5U-85F-6 a median of 149.4 MHz over placement seeds 1–5 (140.2–154.0), 0.6 MHz short of
-//! the 150 MHz goal (153.1, 150.3–155.9, with the one-half ray memory and the source outside
-//! the banks; 71.8 at seed 1 before the 150 MHz work). Its critical paths: the screener's side
-//! flags (seed 1), its divider into the output FIFO (2), the bank FIFO's head through the
-//! origin's bank multiplexer into stage 0's subtraction (3), the screener's `used` count (4),
-//! and the unit's merge into a far ray-memory tile's write enable (5) (`hdl/fpga/ecp5.md`,
-//! checked against the committed Verilog by `tests/hardware.rs`; PERFORMANCE.md).
+//! flow's register wrapper, wrapper excluded): 10824 LUT4s, 7826 flip-flops, 16 `MULT18X18D`,
+//! 17 `DP16KD` (the cache's five, the unit's twelve), 444 LUT RAMs at placement seed 1; on
+//! LFE5U-85F-6 a median of 153.3 MHz over placement seeds 1–5 (140.8–157.3), over the 150 MHz
+//! goal (149.4, 140.2–154.0, with the origin through a bank multiplexer and `W` negated after
+//! the divider; 71.8 at seed 1 before the 150 MHz work). Its critical paths: the screener's
+//! normaliser exponent into its `below8` flag (seed 1), the slice's valid into the screener's
+//! `full` (2), a ray-memory word into the merge's compares (3, 5), the screener's side test (4)
+//! (`hdl/fpga/ecp5.md`, checked against the committed Verilog by `tests/hardware.rs`;
+//! PERFORMANCE.md).
 //!
 //! # Models
 //!
@@ -128,7 +129,7 @@
 use crate::cache::{PatchCache, CACHE_BITS};
 use crate::intersection::IntersectionUnit;
 use crate::loader::PatchLoader;
-use crate::prim::Fifo;
+use crate::prim::{Fifo, FifoControl, FifoRam};
 use crate::queue::JobQueue;
 use crate::screener::Screener;
 use crate::slice::PatchSlice;
@@ -219,9 +220,17 @@ pub struct ProcessingElement {
     new_tag: Signal<Local, Bits<TAG_WIDTH>>,
     // Sectors: two banks, a pending sector command, the jobs of each bank before the
     // screener's sector read.
-    /// The bank of every job in the loader, in order: pushed as the loader takes the id,
-    /// popped as the screener takes the patch.
-    job_banks: Fifo<1, 4, 5>,
+    /// The bank of every job in the loader and that bank's origin, in order (three lanes under
+    /// one control): pushed as the loader takes the id, popped as the screener takes the patch.
+    /// The origin is the bank's when the job is accepted, which it stays while the job is in
+    /// the loader (a bank is rewritten only when none of its jobs is before the screener's
+    /// stage 3), so the screener's stage 0 reads it from the lanes' head registers instead of
+    /// through a bank multiplexer.
+    job_banks: FifoControl<4, 5>,
+    job_bank: FifoRam<1, 4>,
+    job_origin_x: FifoRam<17, 4>,
+    job_origin_y: FifoRam<17, 4>,
+    job_pop: Signal<Local, bool>,
     room: Signal<Local, bool>,
     job: Signal<Local, bool>,
     /// The bank the jobs accepted now belong to: the last sector command's.
@@ -356,6 +365,10 @@ impl Default for ProcessingElement {
             head_count: Default::default(),
             new_tag: Default::default(),
             job_banks: Default::default(),
+            job_bank: Default::default(),
+            job_origin_x: Default::default(),
+            job_origin_y: Default::default(),
+            job_pop: Default::default(),
             room: Default::default(),
             job: Default::default(),
             bank: Default::default(),
@@ -457,6 +470,9 @@ impl Logic for ProcessingElement {
             stall
         );
         self.job_banks.clock.next = self.clock.val();
+        self.job_bank.clock.next = self.clock.val();
+        self.job_origin_x.clock.next = self.clock.val();
+        self.job_origin_y.clock.next = self.clock.val();
         self.loader.clock.next = self.clock.val();
         self.cache.clock.next = self.clock.val();
         self.screener.clock.next = self.clock.val();
@@ -477,14 +493,11 @@ impl Logic for ProcessingElement {
         self.res_key.next = self.unit.res_key.val();
 
         // The source, from the bank of the patch the screener reads it for: the origin that of
-        // the patch it takes (stage 0), the normal that of the patch in its stage 1. The
-        // sector: the bank of the patch in the screener's stage 3.
-        self.screener.origin_x.next = self.origin0_x.q.val();
-        self.screener.origin_y.next = self.origin0_y.q.val();
-        if self.screener.in_bank.val() {
-            self.screener.origin_x.next = self.origin1_x.q.val();
-            self.screener.origin_y.next = self.origin1_y.q.val();
-        }
+        // the patch it takes (stage 0, carried beside the job's bank in `job_banks`), the
+        // normal that of the patch in its stage 1. The sector: the bank of the patch in the
+        // screener's stage 3.
+        self.screener.origin_x.next = self.job_origin_x.read_data.val();
+        self.screener.origin_y.next = self.job_origin_y.read_data.val();
         self.screener.normal_x.next = self.normal0_x.q.val();
         self.screener.normal_y.next = self.normal0_y.q.val();
         if self.screener.normal_bank.val() {
@@ -511,12 +524,32 @@ impl Logic for ProcessingElement {
         self.loader.id_valid.next = self.job.val();
         self.loader.id.next = self.cmd_id.val();
         self.job_banks.push.next = self.job.val();
-        self.job_banks.data_in.next = self.zero1.val();
+        self.job_pop.next = self.loader.out_valid.val() & self.screener.in_ready.val();
+        self.job_banks.pop.next = self.job_pop.val();
+        self.job_bank.write_data.next = self.zero1.val();
+        self.job_origin_x.write_data.next = self.origin0_x.q.val();
+        self.job_origin_y.write_data.next = self.origin0_y.q.val();
         if self.bank.q.val() {
-            self.job_banks.data_in.next = self.one1.val();
+            self.job_bank.write_data.next = self.one1.val();
+            self.job_origin_x.write_data.next = self.origin1_x.q.val();
+            self.job_origin_y.write_data.next = self.origin1_y.q.val();
         }
-        self.job_banks.pop.next = self.loader.out_valid.val() & self.screener.in_ready.val();
-        self.screener.in_bank.next = self.job_banks.data_out.val() == self.one1.val();
+        self.job_bank.write_address.next = self.job_banks.tail_address.val();
+        self.job_bank.write_enable.next = self.job.val();
+        self.job_bank.head_address.next = self.job_banks.head_address.val();
+        self.job_bank.next_address.next = self.job_banks.next_address.val();
+        self.job_bank.pop.next = self.job_pop.val();
+        self.job_origin_x.write_address.next = self.job_banks.tail_address.val();
+        self.job_origin_x.write_enable.next = self.job.val();
+        self.job_origin_x.head_address.next = self.job_banks.head_address.val();
+        self.job_origin_x.next_address.next = self.job_banks.next_address.val();
+        self.job_origin_x.pop.next = self.job_pop.val();
+        self.job_origin_y.write_address.next = self.job_banks.tail_address.val();
+        self.job_origin_y.write_enable.next = self.job.val();
+        self.job_origin_y.head_address.next = self.job_banks.head_address.val();
+        self.job_origin_y.next_address.next = self.job_banks.next_address.val();
+        self.job_origin_y.pop.next = self.job_pop.val();
+        self.screener.in_bank.next = self.job_bank.read_data.val() == self.one1.val();
 
         // A sector takes the bank the jobs do not use (the other one) as soon as that bank
         // holds no job before the sector read: at once if it is free when the command is

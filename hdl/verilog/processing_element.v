@@ -231,11 +231,36 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  [6:0] tags$count;
     reg  job_banks$clock;
     reg  job_banks$push;
-    reg  job_banks$data_in;
     reg  job_banks$pop;
+    wire  [3:0] job_banks$tail_address;
+    wire  [3:0] job_banks$head_address;
+    wire  [3:0] job_banks$next_address;
     wire  job_banks$valid;
-    wire  job_banks$data_out;
     wire  [4:0] job_banks$count;
+    reg  job_bank$clock;
+    reg  [3:0] job_bank$write_address;
+    reg  job_bank$write_data;
+    reg  job_bank$write_enable;
+    reg  [3:0] job_bank$head_address;
+    reg  [3:0] job_bank$next_address;
+    reg  job_bank$pop;
+    wire  job_bank$read_data;
+    reg  job_origin_x$clock;
+    reg  [3:0] job_origin_x$write_address;
+    reg  [16:0] job_origin_x$write_data;
+    reg  job_origin_x$write_enable;
+    reg  [3:0] job_origin_x$head_address;
+    reg  [3:0] job_origin_x$next_address;
+    reg  job_origin_x$pop;
+    wire  [16:0] job_origin_x$read_data;
+    reg  job_origin_y$clock;
+    reg  [3:0] job_origin_y$write_address;
+    reg  [16:0] job_origin_y$write_data;
+    reg  job_origin_y$write_enable;
+    reg  [3:0] job_origin_y$head_address;
+    reg  [3:0] job_origin_y$next_address;
+    reg  job_origin_y$pop;
+    wire  [16:0] job_origin_y$read_data;
     reg  bank$d;
     wire  bank$q;
     reg  bank$clock;
@@ -341,6 +366,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [10:0] head_first;
     reg  [10:0] head_count;
     reg  [22:0] new_tag;
+    reg  job_pop;
     reg  room;
     reg  job;
     reg  tags_full_next;
@@ -546,11 +572,42 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     processing_element$job_banks job_banks(
         .clock(job_banks$clock),
         .push(job_banks$push),
-        .data_in(job_banks$data_in),
         .pop(job_banks$pop),
+        .tail_address(job_banks$tail_address),
+        .head_address(job_banks$head_address),
+        .next_address(job_banks$next_address),
         .valid(job_banks$valid),
-        .data_out(job_banks$data_out),
         .count(job_banks$count)
+    );
+    processing_element$job_bank job_bank(
+        .clock(job_bank$clock),
+        .write_address(job_bank$write_address),
+        .write_data(job_bank$write_data),
+        .write_enable(job_bank$write_enable),
+        .head_address(job_bank$head_address),
+        .next_address(job_bank$next_address),
+        .pop(job_bank$pop),
+        .read_data(job_bank$read_data)
+    );
+    processing_element$job_origin_x job_origin_x(
+        .clock(job_origin_x$clock),
+        .write_address(job_origin_x$write_address),
+        .write_data(job_origin_x$write_data),
+        .write_enable(job_origin_x$write_enable),
+        .head_address(job_origin_x$head_address),
+        .next_address(job_origin_x$next_address),
+        .pop(job_origin_x$pop),
+        .read_data(job_origin_x$read_data)
+    );
+    processing_element$job_origin_y job_origin_y(
+        .clock(job_origin_y$clock),
+        .write_address(job_origin_y$write_address),
+        .write_data(job_origin_y$write_data),
+        .write_enable(job_origin_y$write_enable),
+        .head_address(job_origin_y$head_address),
+        .next_address(job_origin_y$next_address),
+        .pop(job_origin_y$pop),
+        .read_data(job_origin_y$read_data)
     );
     processing_element$bank bank(
         .d(bank$d),
@@ -780,6 +837,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         tags_full$d = tags_full$q;
         stall$d = stall$q;
         job_banks$clock = clock;
+        job_bank$clock = clock;
+        job_origin_x$clock = clock;
+        job_origin_y$clock = clock;
         loader$clock = clock;
         cache$clock = clock;
         screener$clock = clock;
@@ -796,12 +856,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         res_hit = unit$res_hit;
         res_id = unit$res_id;
         res_key = unit$res_key;
-        screener$origin_x = origin0_x$q;
-        screener$origin_y = origin0_y$q;
-        if (screener$in_bank) begin
-            screener$origin_x = origin1_x$q;
-            screener$origin_y = origin1_y$q;
-        end
+        screener$origin_x = job_origin_x$read_data;
+        screener$origin_y = job_origin_y$read_data;
         screener$normal_x = normal0_x$q;
         screener$normal_y = normal0_y$q;
         if (screener$normal_bank) begin
@@ -825,12 +881,32 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         loader$id_valid = job;
         loader$id = cmd_id;
         job_banks$push = job;
-        job_banks$data_in = zero1;
+        job_pop = loader$out_valid & screener$in_ready;
+        job_banks$pop = job_pop;
+        job_bank$write_data = zero1;
+        job_origin_x$write_data = origin0_x$q;
+        job_origin_y$write_data = origin0_y$q;
         if (bank$q) begin
-            job_banks$data_in = one1;
+            job_bank$write_data = one1;
+            job_origin_x$write_data = origin1_x$q;
+            job_origin_y$write_data = origin1_y$q;
         end
-        job_banks$pop = loader$out_valid & screener$in_ready;
-        screener$in_bank = job_banks$data_out == one1;
+        job_bank$write_address = job_banks$tail_address;
+        job_bank$write_enable = job;
+        job_bank$head_address = job_banks$head_address;
+        job_bank$next_address = job_banks$next_address;
+        job_bank$pop = job_pop;
+        job_origin_x$write_address = job_banks$tail_address;
+        job_origin_x$write_enable = job;
+        job_origin_x$head_address = job_banks$head_address;
+        job_origin_x$next_address = job_banks$next_address;
+        job_origin_x$pop = job_pop;
+        job_origin_y$write_address = job_banks$tail_address;
+        job_origin_y$write_enable = job;
+        job_origin_y$head_address = job_banks$head_address;
+        job_origin_y$next_address = job_banks$next_address;
+        job_origin_y$pop = job_pop;
+        screener$in_bank = job_bank$read_data == one1;
         other_free = ~used1$q;
         if (bank$q) begin
             other_free = ~used0$q;
@@ -5254,276 +5330,7 @@ module processing_element$first1_y(d,q,clock);
 endmodule // processing_element$first1_y
 
 
-module processing_element$job_banks(clock,push,data_in,pop,valid,data_out,count);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  push;
-    input wire  data_in;
-    input wire  pop;
-    output reg  valid;
-    output reg  data_out;
-    output reg  [4:0] count;
-    
-    // Stub signals
-    reg  control$clock;
-    reg  control$push;
-    reg  control$pop;
-    wire  [3:0] control$tail_address;
-    wire  [3:0] control$head_address;
-    wire  [3:0] control$next_address;
-    wire  control$valid;
-    wire  [4:0] control$count;
-    reg  lane$clock;
-    reg  [3:0] lane$write_address;
-    reg  lane$write_data;
-    reg  lane$write_enable;
-    reg  [3:0] lane$head_address;
-    reg  [3:0] lane$next_address;
-    reg  lane$pop;
-    wire  lane$read_data;
-    
-    // Sub module instances
-    processing_element$job_banks$control control(
-        .clock(control$clock),
-        .push(control$push),
-        .pop(control$pop),
-        .tail_address(control$tail_address),
-        .head_address(control$head_address),
-        .next_address(control$next_address),
-        .valid(control$valid),
-        .count(control$count)
-    );
-    processing_element$job_banks$lane lane(
-        .clock(lane$clock),
-        .write_address(lane$write_address),
-        .write_data(lane$write_data),
-        .write_enable(lane$write_enable),
-        .head_address(lane$head_address),
-        .next_address(lane$next_address),
-        .pop(lane$pop),
-        .read_data(lane$read_data)
-    );
-    
-    // Update code
-    always @(*) begin
-        control$clock = clock;
-        lane$clock = clock;
-        control$push = push;
-        control$pop = pop;
-        lane$write_address = control$tail_address;
-        lane$write_data = data_in;
-        lane$write_enable = push;
-        lane$head_address = control$head_address;
-        lane$next_address = control$next_address;
-        lane$pop = pop;
-        valid = control$valid;
-        data_out = lane$read_data;
-        count = control$count;
-    end
-    
-endmodule // processing_element$job_banks
-
-
-module processing_element$job_banks$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  push;
-    input wire  pop;
-    output reg  [3:0] tail_address;
-    output reg  [3:0] head_address;
-    output reg  [3:0] next_address;
-    output reg  valid;
-    output reg  [4:0] count;
-    
-    // Constant declarations
-    localparam  one_a = 4'h1;
-    localparam  one_c = 5'b1;
-    localparam  zero_c = 5'b0;
-    
-    // Stub signals
-    reg  [3:0] tail_ptr$d;
-    wire  [3:0] tail_ptr$q;
-    reg  tail_ptr$clock;
-    reg  [3:0] rd_ptr$d;
-    wire  [3:0] rd_ptr$q;
-    reg  rd_ptr$clock;
-    reg  [3:0] rd_inc_x$d;
-    wire  [3:0] rd_inc_x$q;
-    reg  rd_inc_x$clock;
-    reg  [4:0] words$d;
-    wire  [4:0] words$q;
-    reg  words$clock;
-    reg  head_valid$d;
-    wire  head_valid$q;
-    reg  head_valid$clock;
-    
-    // Local signals
-    reg  [3:0] rd_inc;
-    reg  [3:0] rd_inc2;
-    
-    // Sub module instances
-    processing_element$job_banks$control$tail_ptr tail_ptr(
-        .d(tail_ptr$d),
-        .q(tail_ptr$q),
-        .clock(tail_ptr$clock)
-    );
-    processing_element$job_banks$control$rd_ptr rd_ptr(
-        .d(rd_ptr$d),
-        .q(rd_ptr$q),
-        .clock(rd_ptr$clock)
-    );
-    processing_element$job_banks$control$rd_inc_x rd_inc_x(
-        .d(rd_inc_x$d),
-        .q(rd_inc_x$q),
-        .clock(rd_inc_x$clock)
-    );
-    processing_element$job_banks$control$words words(
-        .d(words$d),
-        .q(words$q),
-        .clock(words$clock)
-    );
-    processing_element$job_banks$control$head_valid head_valid(
-        .d(head_valid$d),
-        .q(head_valid$q),
-        .clock(head_valid$clock)
-    );
-    
-    // Update code
-    always @(*) begin
-        tail_ptr$clock = clock;
-        rd_ptr$clock = clock;
-        rd_inc_x$clock = clock;
-        words$clock = clock;
-        head_valid$clock = clock;
-        tail_ptr$d = tail_ptr$q;
-        rd_ptr$d = rd_ptr$q;
-        rd_inc_x$d = rd_inc_x$q;
-        words$d = words$q;
-        head_valid$d = head_valid$q;
-        tail_address = tail_ptr$q;
-        if (push) begin
-            tail_ptr$d = tail_ptr$q + one_a;
-        end
-        rd_inc = rd_inc_x$q ^ one_a;
-        rd_inc2 = rd_inc + one_a;
-        head_address = rd_ptr$q;
-        next_address = rd_inc;
-        if (pop) begin
-            rd_ptr$d = rd_inc;
-            rd_inc_x$d = rd_inc2 ^ one_a;
-        end
-        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
-        valid = head_valid$q;
-        if (push & ~pop) begin
-            words$d = words$q + one_c;
-        end
-        if (~push & pop) begin
-            words$d = words$q - one_c;
-        end
-        count = words$q;
-    end
-    
-endmodule // processing_element$job_banks$control
-
-
-module processing_element$job_banks$control$head_valid(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$job_banks$control$head_valid
-
-
-module processing_element$job_banks$control$rd_inc_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$job_banks$control$rd_inc_x
-
-
-module processing_element$job_banks$control$rd_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$job_banks$control$rd_ptr
-
-
-module processing_element$job_banks$control$tail_ptr(d,q,clock);
-    
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$job_banks$control$tail_ptr
-
-
-module processing_element$job_banks$control$words(d,q,clock);
-    
-    // Module arguments
-    input wire  [4:0] d;
-    output reg  [4:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 5'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$job_banks$control$words
-
-
-module processing_element$job_banks$lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+module processing_element$job_bank(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
@@ -5568,7 +5375,301 @@ module processing_element$job_banks$lane(clock,write_address,write_data,write_en
        end
     end
     always @(*) read_data = popped ? next_r : head_r;
-endmodule // processing_element$job_banks$lane
+endmodule // processing_element$job_bank
+
+
+module processing_element$job_banks(clock,push,pop,tail_address,head_address,next_address,valid,count);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  push;
+    input wire  pop;
+    output reg  [3:0] tail_address;
+    output reg  [3:0] head_address;
+    output reg  [3:0] next_address;
+    output reg  valid;
+    output reg  [4:0] count;
+    
+    // Constant declarations
+    localparam  one_a = 4'h1;
+    localparam  one_c = 5'b1;
+    localparam  zero_c = 5'b0;
+    
+    // Stub signals
+    reg  [3:0] tail_ptr$d;
+    wire  [3:0] tail_ptr$q;
+    reg  tail_ptr$clock;
+    reg  [3:0] rd_ptr$d;
+    wire  [3:0] rd_ptr$q;
+    reg  rd_ptr$clock;
+    reg  [3:0] rd_inc_x$d;
+    wire  [3:0] rd_inc_x$q;
+    reg  rd_inc_x$clock;
+    reg  [4:0] words$d;
+    wire  [4:0] words$q;
+    reg  words$clock;
+    reg  head_valid$d;
+    wire  head_valid$q;
+    reg  head_valid$clock;
+    
+    // Local signals
+    reg  [3:0] rd_inc;
+    reg  [3:0] rd_inc2;
+    
+    // Sub module instances
+    processing_element$job_banks$tail_ptr tail_ptr(
+        .d(tail_ptr$d),
+        .q(tail_ptr$q),
+        .clock(tail_ptr$clock)
+    );
+    processing_element$job_banks$rd_ptr rd_ptr(
+        .d(rd_ptr$d),
+        .q(rd_ptr$q),
+        .clock(rd_ptr$clock)
+    );
+    processing_element$job_banks$rd_inc_x rd_inc_x(
+        .d(rd_inc_x$d),
+        .q(rd_inc_x$q),
+        .clock(rd_inc_x$clock)
+    );
+    processing_element$job_banks$words words(
+        .d(words$d),
+        .q(words$q),
+        .clock(words$clock)
+    );
+    processing_element$job_banks$head_valid head_valid(
+        .d(head_valid$d),
+        .q(head_valid$q),
+        .clock(head_valid$clock)
+    );
+    
+    // Update code
+    always @(*) begin
+        tail_ptr$clock = clock;
+        rd_ptr$clock = clock;
+        rd_inc_x$clock = clock;
+        words$clock = clock;
+        head_valid$clock = clock;
+        tail_ptr$d = tail_ptr$q;
+        rd_ptr$d = rd_ptr$q;
+        rd_inc_x$d = rd_inc_x$q;
+        words$d = words$q;
+        head_valid$d = head_valid$q;
+        tail_address = tail_ptr$q;
+        if (push) begin
+            tail_ptr$d = tail_ptr$q + one_a;
+        end
+        rd_inc = rd_inc_x$q ^ one_a;
+        rd_inc2 = rd_inc + one_a;
+        head_address = rd_ptr$q;
+        next_address = rd_inc;
+        if (pop) begin
+            rd_ptr$d = rd_inc;
+            rd_inc_x$d = rd_inc2 ^ one_a;
+        end
+        head_valid$d = (words$q != zero_c) & ~(pop & (words$q == one_c));
+        valid = head_valid$q;
+        if (push & ~pop) begin
+            words$d = words$q + one_c;
+        end
+        if (~push & pop) begin
+            words$d = words$q - one_c;
+        end
+        count = words$q;
+    end
+    
+endmodule // processing_element$job_banks
+
+
+module processing_element$job_banks$head_valid(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$head_valid
+
+
+module processing_element$job_banks$rd_inc_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$rd_inc_x
+
+
+module processing_element$job_banks$rd_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$rd_ptr
+
+
+module processing_element$job_banks$tail_ptr(d,q,clock);
+    
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$tail_ptr
+
+
+module processing_element$job_banks$words(d,q,clock);
+    
+    // Module arguments
+    input wire  [4:0] d;
+    output reg  [4:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 5'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$job_banks$words
+
+
+module processing_element$job_origin_x(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$job_origin_x
+
+
+module processing_element$job_origin_y(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] write_address;
+    input wire  [16:0] write_data;
+    input wire  write_enable;
+    input wire  [3:0] head_address;
+    input wire  [3:0] next_address;
+    input wire  pop;
+    output reg  [16:0] read_data;
+    
+    // Update code (custom)
+    reg [16:0] mem [0:15];
+    reg [16:0] head_r;
+    reg [16:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [16:0] mem_n [0:15];
+    initial for (i = 0; i <= 15; i = i + 1) mem_n[i] = 17'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
+    end
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 15; i = i + 1) mem[i] = 17'd0;
+       head_r = 17'd0;
+       next_r = 17'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$job_origin_y
 
 
 module processing_element$jobs0(d,q,clock);
@@ -8995,7 +9096,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
-    localparam  zero18 = 18'b0;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  msb32 = 32'h80000000;
@@ -9577,6 +9677,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [2:0] divider$tag;
     wire  [16:0] divider$qx;
     wire  [16:0] divider$qy;
+    wire  [17:0] divider$wx;
+    wire  [17:0] divider$wy;
     wire  [2:0] divider$tag_out;
     reg  [31:0] c_passed$d;
     wire  [31:0] c_passed$q;
@@ -9686,10 +9788,6 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     reg  [2:0] tag_p;
     reg  [2:0] tag_x;
     reg  [2:0] tag_y;
-    reg  [17:0] qx18;
-    reg  [17:0] qy18;
-    reg  [17:0] wx_neg;
-    reg  [17:0] wy_neg;
     
     // Sub module instances
     processing_element$screener$used used(
@@ -10562,6 +10660,8 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
         .tag(divider$tag),
         .qx(divider$qx),
         .qy(divider$qy),
+        .wx(divider$wx),
+        .wy(divider$wy),
         .tag_out(divider$tag_out)
     );
     processing_element$screener$c_passed c_passed(
@@ -11295,20 +11395,10 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
             res_ptr$d = res_inc;
         end
         fill = divider$tag_out[32'h0];
-        qx18 = ((divider$qx) & 18'h3ffff);
-        qy18 = ((divider$qy) & 18'h3ffff);
-        wx_neg = zero18 - qx18;
-        wy_neg = zero18 - qy18;
         lane_wx$write_address = fifo$tail_address;
         lane_wy$write_address = fifo$tail_address;
-        lane_wx$write_data = qx18;
-        if (divider$tag_out[32'h1]) begin
-            lane_wx$write_data = wx_neg;
-        end
-        lane_wy$write_data = qy18;
-        if (divider$tag_out[32'h2]) begin
-            lane_wy$write_data = wy_neg;
-        end
+        lane_wx$write_data = divider$wx;
+        lane_wy$write_data = divider$wy;
         lane_wx$write_enable = fill;
         lane_wy$write_enable = fill;
         fifo$push = fill;
@@ -12694,7 +12784,7 @@ module processing_element$screener$clz_n7(d,q,clock);
 endmodule // processing_element$screener$clz_n7
 
 
-module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
+module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_out);
     
     // Module arguments
     input wire  clock;
@@ -12706,6 +12796,8 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out
     input wire  [2:0] tag;
     output reg  [16:0] qx;
     output reg  [16:0] qy;
+    output reg  [17:0] wx;
+    output reg  [17:0] wy;
     output reg  [2:0] tag_out;
     
     // Update code (custom)
@@ -12718,6 +12810,8 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out
     reg [17*(N+1)-1:0] qxp;
     reg [17*(N+1)-1:0] qyp;
     reg [3*(N+1)-1:0] tgp;
+    reg [16:0] nhx;
+    reg [16:0] nhy;
     initial begin
        kp = 0;
        rxp = 0;
@@ -12727,6 +12821,8 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out
        qxp = 0;
        qyp = 0;
        tgp = 0;
+       nhx = 0;
+       nhy = 0;
     end
     always @(posedge clock) begin
        kp[31:0] <= k;
@@ -12762,10 +12858,16 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out
           end
        end
     endgenerate
+    always @(posedge clock) begin
+       nhx <= 17'd0 - qxp[17*(N-1) +: 17];
+       nhy <= 17'd0 - qyp[17*(N-1) +: 17];
+    end
     always @(*) begin
        qx = qxp[17*N +: 17];
        qy = qyp[17*N +: 17];
        tag_out = tgp[3*N +: 3];
+       wx = !tag_out[1] ? {1'b0, qx} : qx[0] ? {1'b1, ~qx[16:1], 1'b1} : {nhx, 1'b0};
+       wy = !tag_out[2] ? {1'b0, qy} : qy[0] ? {1'b1, ~qy[16:1], 1'b1} : {nhy, 1'b0};
     end
 endmodule // processing_element$screener$divider
 

@@ -47,7 +47,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
-    localparam  zero18 = 18'b0;
     localparam  zero32 = 32'h0;
     localparam  one32 = 32'h1;
     localparam  msb32 = 32'h80000000;
@@ -629,6 +628,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [2:0] divider$tag;
     wire  [16:0] divider$qx;
     wire  [16:0] divider$qy;
+    wire  [17:0] divider$wx;
+    wire  [17:0] divider$wy;
     wire  [2:0] divider$tag_out;
     reg  [31:0] c_passed$d;
     wire  [31:0] c_passed$q;
@@ -738,10 +739,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [2:0] tag_p;
     reg  [2:0] tag_x;
     reg  [2:0] tag_y;
-    reg  [17:0] qx18;
-    reg  [17:0] qy18;
-    reg  [17:0] wx_neg;
-    reg  [17:0] wy_neg;
     
     // Sub module instances
     screener$used used(
@@ -1614,6 +1611,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .tag(divider$tag),
         .qx(divider$qx),
         .qy(divider$qy),
+        .wx(divider$wx),
+        .wy(divider$wy),
         .tag_out(divider$tag_out)
     );
     screener$c_passed c_passed(
@@ -2347,20 +2346,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             res_ptr$d = res_inc;
         end
         fill = divider$tag_out[32'h0];
-        qx18 = ((divider$qx) & 18'h3ffff);
-        qy18 = ((divider$qy) & 18'h3ffff);
-        wx_neg = zero18 - qx18;
-        wy_neg = zero18 - qy18;
         lane_wx$write_address = fifo$tail_address;
         lane_wy$write_address = fifo$tail_address;
-        lane_wx$write_data = qx18;
-        if (divider$tag_out[32'h1]) begin
-            lane_wx$write_data = wx_neg;
-        end
-        lane_wy$write_data = qy18;
-        if (divider$tag_out[32'h2]) begin
-            lane_wy$write_data = wy_neg;
-        end
+        lane_wx$write_data = divider$wx;
+        lane_wy$write_data = divider$wy;
         lane_wx$write_enable = fill;
         lane_wy$write_enable = fill;
         fifo$push = fill;
@@ -3746,7 +3735,7 @@ module screener$clz_n7(d,q,clock);
 endmodule // screener$clz_n7
 
 
-module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
+module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_out);
     
     // Module arguments
     input wire  clock;
@@ -3758,6 +3747,8 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
     input wire  [2:0] tag;
     output reg  [16:0] qx;
     output reg  [16:0] qy;
+    output reg  [17:0] wx;
+    output reg  [17:0] wy;
     output reg  [2:0] tag_out;
     
     // Update code (custom)
@@ -3770,6 +3761,8 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
     reg [17*(N+1)-1:0] qxp;
     reg [17*(N+1)-1:0] qyp;
     reg [3*(N+1)-1:0] tgp;
+    reg [16:0] nhx;
+    reg [16:0] nhy;
     initial begin
        kp = 0;
        rxp = 0;
@@ -3779,6 +3772,8 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
        qxp = 0;
        qyp = 0;
        tgp = 0;
+       nhx = 0;
+       nhy = 0;
     end
     always @(posedge clock) begin
        kp[31:0] <= k;
@@ -3814,10 +3809,16 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,tag_out);
           end
        end
     endgenerate
+    always @(posedge clock) begin
+       nhx <= 17'd0 - qxp[17*(N-1) +: 17];
+       nhy <= 17'd0 - qyp[17*(N-1) +: 17];
+    end
     always @(*) begin
        qx = qxp[17*N +: 17];
        qy = qyp[17*N +: 17];
        tag_out = tgp[3*N +: 3];
+       wx = !tag_out[1] ? {1'b0, qx} : qx[0] ? {1'b1, ~qx[16:1], 1'b1} : {nhx, 1'b0};
+       wy = !tag_out[2] ? {1'b0, qy} : qy[0] ? {1'b1, ~qy[16:1], 1'b1} : {nhy, 1'b0};
     end
 endmodule // screener$divider
 

@@ -50,6 +50,8 @@ struct DivStage {
     r: [u32; 2],
     f: [u32; 2],
     q: [u32; 2],
+    /// `−q >> 1` of the stage before, 17 bits: kept by the last stage only.
+    nh: [u32; 2],
     tag: u32,
 }
 
@@ -58,8 +60,12 @@ struct DivStage {
 /// [`restoring_quotient`]`(rx, fx, k)` and `(ry, fy, k)` of the inputs presented
 /// [`DIV_LATENCY`] clocks earlier, and `tag_out` is the `tag` presented with them (a side band
 /// the divider carries unchanged: valid bit, signs). All registers power up as zero, so the
-/// first [`DIV_LATENCY`] outputs carry a zero tag and meaningless quotients. The Rust model
-/// steps the same registers as the Verilog, stage by stage.
+/// first [`DIV_LATENCY`] outputs carry a zero tag and meaningless quotients. `wx`, `wy` are
+/// the quotients with the signs of `tag_out`'s bits 1 and 2 (18 bits, two's complement: `W =
+/// sign(n)·q`). The negation has no carry chain after the last stage's registers: with
+/// `q = 2·h + b`, `−q` is `2·(−h)` when `b = 0` (the last stage registers `−h` from the stage
+/// before's `h`, beside its own subtraction) and `2·!h + 1` when `b = 1`. The Rust model steps
+/// the same registers as the Verilog, stage by stage.
 #[derive(LogicBlock)]
 pub struct PipeDivider {
     pub clock: Signal<In, Clock>,
@@ -71,6 +77,8 @@ pub struct PipeDivider {
     pub tag: Signal<In, Bits<3>>,
     pub qx: Signal<Out, Bits<17>>,
     pub qy: Signal<Out, Bits<17>>,
+    pub wx: Signal<Out, Bits<18>>,
+    pub wy: Signal<Out, Bits<18>>,
     pub tag_out: Signal<Out, Bits<3>>,
     /// Stage 0 (the input registers) to stage 17, as in the Verilog, from power-up on.
     _stages: [DivStage; DIV_STEPS + 1],
@@ -88,6 +96,8 @@ impl Default for PipeDivider {
             tag: Default::default(),
             qx: Default::default(),
             qy: Default::default(),
+            wx: Default::default(),
+            wy: Default::default(),
             tag_out: Default::default(),
             _stages: [DivStage::default(); DIV_STEPS + 1],
         }
@@ -108,6 +118,9 @@ impl Logic for PipeDivider {
                     next.r[c] = r;
                     next.f[c] = f;
                     next.q[c] = ((prev.q[c] << 1) | ge as u32) & ((1 << DIV_STEPS) - 1);
+                    if s == DIV_STEPS {
+                        next.nh[c] = prev.q[c].wrapping_neg() & ((1 << DIV_STEPS) - 1);
+                    }
                 }
                 self._stages[s] = next;
             }
@@ -116,11 +129,25 @@ impl Logic for PipeDivider {
                 r: [self.rx.val().to_u32(), self.ry.val().to_u32()],
                 f: [self.fx.val().to_u32(), self.fy.val().to_u32()],
                 q: [0, 0],
+                nh: [0, 0],
                 tag: self.tag.val().to_u32(),
             };
             let last = &self._stages[DIV_STEPS];
             self.qx.next = Bits::from(last.q[0] as u64);
             self.qy.next = Bits::from(last.q[1] as u64);
+            let signed = |c: usize| {
+                let (q, h) = (last.q[c], last.q[c] >> 1);
+                let w = if last.tag >> (c + 1) & 1 == 0 {
+                    q
+                } else if q & 1 == 1 {
+                    (!h & ((1 << DIV_STEPS) - 1)) << 1 | 1
+                } else {
+                    last.nh[c] << 1
+                };
+                Bits::from(w as u64)
+            };
+            self.wx.next = signed(0);
+            self.wy.next = signed(1);
             self.tag_out.next = Bits::from(last.tag as u64);
         }
     }
@@ -128,6 +155,8 @@ impl Logic for PipeDivider {
     fn connect(&mut self) {
         self.qx.connect();
         self.qy.connect();
+        self.wx.connect();
+        self.wy.connect();
         self.tag_out.connect();
     }
 
@@ -147,6 +176,8 @@ reg [3*(N+1)-1:0] fyp;
 reg [17*(N+1)-1:0] qxp;
 reg [17*(N+1)-1:0] qyp;
 reg [3*(N+1)-1:0] tgp;
+reg [16:0] nhx;
+reg [16:0] nhy;
 initial begin
    kp = 0;
    rxp = 0;
@@ -156,6 +187,8 @@ initial begin
    qxp = 0;
    qyp = 0;
    tgp = 0;
+   nhx = 0;
+   nhy = 0;
 end
 always @(posedge clock) begin
    kp[31:0] <= k;
@@ -191,10 +224,16 @@ generate
       end
    end
 endgenerate
+always @(posedge clock) begin
+   nhx <= 17'd0 - qxp[17*(N-1) +: 17];
+   nhy <= 17'd0 - qyp[17*(N-1) +: 17];
+end
 always @(*) begin
    qx = qxp[17*N +: 17];
    qy = qyp[17*N +: 17];
    tag_out = tgp[3*N +: 3];
+   wx = !tag_out[1] ? {{1'b0, qx}} : qx[0] ? {{1'b1, ~qx[16:1], 1'b1}} : {{nhx, 1'b0}};
+   wy = !tag_out[2] ? {{1'b0, qy}} : qy[0] ? {{1'b1, ~qy[16:1], 1'b1}} : {{nhy, 1'b0}};
 end
 ",
             n = DIV_STEPS
@@ -202,7 +241,7 @@ end
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
-        clocked("pipe_divider", &["rx", "ry", "fx", "fy", "k", "tag"], &["qx", "qy", "tag_out"])
+        clocked("pipe_divider", &["rx", "ry", "fx", "fy", "k", "tag"], &["qx", "qy", "wx", "wy", "tag_out"])
     }
 }
 

@@ -93,7 +93,8 @@
 //! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
 //!   `K`, one stage per quotient bit ([`DIV_STEPS`](divider::DIV_STEPS) = 17 steps of a
 //!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 26
-//!   `W = sign(n)·q` completes the patch's slot;
+//!   `W = sign(n)·q` (signed by the divider, no carry chain after its last registers)
+//!   completes the patch's slot;
 //! * stages 27–28: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
 //!   (28) and leaves then if `out_ready` is high.
 //!
@@ -625,10 +626,6 @@ pub struct Screener {
     tag_y: Signal<Local, Bits<3>>,
     // Stages 9–26: the divider; stage 26 writes W into the patch's slot.
     divider: PipeDivider,
-    qx18: Signal<Local, Bits<18>>,
-    qy18: Signal<Local, Bits<18>>,
-    wx_neg: Signal<Local, Bits<18>>,
-    wy_neg: Signal<Local, Bits<18>>,
     // Counters.
     c_passed: DFF<Bits<32>>,
     c_backward: DFF<Bits<32>>,
@@ -640,7 +637,6 @@ pub struct Screener {
     zero6: Constant<Bits<6>>,
     one6: Constant<Bits<6>>,
     one5: Constant<Bits<5>>,
-    zero18: Constant<Bits<18>>,
     zero32: Constant<Bits<32>>,
     one32: Constant<Bits<32>>,
     msb32: Constant<Bits<32>>,
@@ -970,10 +966,6 @@ impl Default for Screener {
             tag_x: Default::default(),
             tag_y: Default::default(),
             divider: Default::default(),
-            qx18: Default::default(),
-            qy18: Default::default(),
-            wx_neg: Default::default(),
-            wy_neg: Default::default(),
             c_passed: Default::default(),
             c_backward: Default::default(),
             c_back_facing: Default::default(),
@@ -983,7 +975,6 @@ impl Default for Screener {
             zero6: Constant::new(0u64.into()),
             one6: Constant::new(1u64.into()),
             one5: Constant::new(1u64.into()),
-            zero18: Constant::new(0u64.into()),
             zero32: Constant::new(0u64.into()),
             one32: Constant::new(1u64.into()),
             msb32: Constant::new(SIGN32.into()),
@@ -1667,22 +1658,13 @@ impl Logic for Screener {
         }
 
         // Stage 26: the quotients of a patch arrive (slots fill in the order they were
-        // taken: the divider's latency is fixed); W = sign(n)·q completes the slot.
+        // taken: the divider's latency is fixed); W = sign(n)·q, signed by the divider,
+        // completes the slot.
         self.fill.next = self.divider.tag_out.val().get_bit(0);
-        self.qx18.next = bit_cast::<18, 17>(self.divider.qx.val());
-        self.qy18.next = bit_cast::<18, 17>(self.divider.qy.val());
-        self.wx_neg.next = self.zero18.val() - self.qx18.val();
-        self.wy_neg.next = self.zero18.val() - self.qy18.val();
         self.lane_wx.write_address.next = self.fifo.tail_address.val();
         self.lane_wy.write_address.next = self.fifo.tail_address.val();
-        self.lane_wx.write_data.next = self.qx18.val();
-        if self.divider.tag_out.val().get_bit(1) {
-            self.lane_wx.write_data.next = self.wx_neg.val();
-        }
-        self.lane_wy.write_data.next = self.qy18.val();
-        if self.divider.tag_out.val().get_bit(2) {
-            self.lane_wy.write_data.next = self.wy_neg.val();
-        }
+        self.lane_wx.write_data.next = self.divider.wx.val();
+        self.lane_wy.write_data.next = self.divider.wy.val();
         self.lane_wx.write_enable.next = self.fill.val();
         self.lane_wy.write_enable.next = self.fill.val();
         self.fifo.push.next = self.fill.val();
