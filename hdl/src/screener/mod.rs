@@ -44,7 +44,8 @@
 //! user that changes the source or the sector while patches stream tags each patch with
 //! `in_bank` and presents, in each cycle, the origin of the bank on `in_bank`, the normal of the
 //! bank `normal_bank` shows and the sector of the bank `sector_bank` shows (the processing
-//! element keeps two banks and multiplexes them; with `in_bank` held low and the setup held
+//! element keeps two banks: each job carries its bank's origin, the normal and the sector are
+//! multiplexed; with `in_bank` held low and the setup held
 //! constant the screener is the one-sector block). A transfer happens
 //! in a cycle where `valid && ready` holds before the rising edge. `in_ready` depends only on
 //! registers (not on `in_valid` or `out_ready`); `out_valid` is a register and the `out_*` data
@@ -106,7 +107,8 @@
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 155.1 MHz (150.4–165.4; 158.6, 150.0–163.6, before the normal was read in stage
+//! median of 152.9 MHz (150.6–160.7; 155.1, 150.4–165.4, before the divider signed `W`
+//! itself; 158.6, 150.0–163.6, before the normal was read in stage
 //! 1 only, for the processing element's banks; 150.4 before stage 7 registered the exponent's
 //! flags and split the outside compare, 125 at seed 1 before the DSP registers;
 //! `hdl/fpga/ecp5.md`).
@@ -142,8 +144,8 @@
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
 //! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 144 `TRELLIS_DPR16X4` (the
-//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5684 LUT4s (LUT RAM
-//! included) and 4252 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
+//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5664 LUT4s (LUT RAM
+//! included) and 4286 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
 use crate::formats::{cross, dot, PatchSetup, SECTOR_MARGIN, SH_MAX, SH_MIN};
