@@ -7,6 +7,8 @@
 //!    register; `synth_ice40 -dsp` with `SHELLING_ICE40` defined, which gives each FIFO's second
 //!    read its own memory copy) and placed and routed by nextpnr with a fixed seed, a target frequency
 //!    and `--timing-allow-fail`, so that a missed target is measured rather than refused.
+//!    A machine of two or more PEs on ECP5 is floorplanned first (see [`floorplan`], `--floorplan`):
+//!    each PE's block RAMs and multipliers pinned to its own region of the die.
 //! 3. The counts come from nextpnr's report (its log's utilisation table for a design that does
 //!    not fit), less the wrapper's flip-flops, which the netlist tells apart; fmax and the
 //!    critical path come from the report.
@@ -16,6 +18,7 @@
 //! result (`"fits": false`, the bel types over capacity named, no fmax); a tool that fails is an
 //! error row, and the command then exits non-zero after writing everything else.
 
+mod floorplan;
 mod netlist;
 mod report;
 mod tools;
@@ -107,11 +110,25 @@ pub struct FpgaArgs {
     /// $SHELLING_FPGA_VENV (default .venv-fpga at the repository root) first.
     #[arg(long)]
     pub install: bool,
+    /// The machine's floorplan on ECP5 (`machine_N`, N >= 2; every other block and iCE40 are
+    /// placed freely): `regions` pins each PE's block RAMs and multipliers to the sites of its own
+    /// region of the die (a grid of ceil(N/2) columns by 2 rows), `none` leaves them to the placer.
+    #[arg(long, value_enum, default_value = "regions")]
+    pub floorplan: Floorplan,
     /// Resume an interrupted run in the same --out: a block whose Verilog is the one already
     /// synthesized there is not synthesized again, and a seed whose nextpnr report is there is
     /// not placed again (its row is read from that report and log).
     #[arg(long)]
     pub resume: bool,
+}
+
+/// How the machine is floorplanned (`--floorplan`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Floorplan {
+    /// Each PE's DP16KD and MULT18X18D pinned to its own region of the die.
+    Regions,
+    /// No cell pinned.
+    None,
 }
 
 /// One block on one family, as `fpga.json` records it.
@@ -143,6 +160,9 @@ pub struct Row {
     pub yosys_s: Option<f64>,
     pub nextpnr_s: Option<f64>,
     pub critical_path: Option<PathSummary>,
+    /// The cells pinned before placement (`floorplan::describe`); `null`: none.
+    #[serde(default)]
+    pub floorplan: Option<String>,
     pub tool_versions: BTreeMap<String, String>,
 }
 
@@ -212,6 +232,7 @@ struct Flow {
     tools: BTreeMap<ToolKind, Tool>,
     seeds: Vec<u64>,
     resume: bool,
+    floorplan: Floorplan,
 }
 
 /// Runs `cargo xtask fpga`.
@@ -286,7 +307,7 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         bail!("--seeds lists {} seeds: at most 16", seeds.len());
     }
     let (rows, ctx) = if args.merge.is_empty() {
-        let ctx = Flow { out: out.clone(), tools, seeds, resume: args.resume };
+        let ctx = Flow { out: out.clone(), tools, seeds, resume: args.resume, floorplan: args.floorplan };
         // Every (block, target), reported in this order; run longest first (the whole PE).
         let jobs: Vec<(String, Target)> =
             blocks.iter().flat_map(|b| targets.iter().map(move |t| (b.clone(), t.clone()))).collect();
@@ -309,10 +330,24 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         if rows.is_empty() {
             bail!("--merge: no rows of the blocks and families asked for");
         }
+        for pair in rows.windows(2) {
+            let (a, b) = (&pair[0], &pair[1]);
+            if (&a.block, a.family) == (&b.block, b.family) && a.floorplan != b.floorplan {
+                bail!(
+                    "--merge: {} on {} was placed with two floorplans (seeds {} and {}): {} / {}",
+                    a.block,
+                    a.family.name(),
+                    a.seed,
+                    b.seed,
+                    a.floorplan.as_deref().unwrap_or("none"),
+                    b.floorplan.as_deref().unwrap_or("none")
+                );
+            }
+        }
         let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
         seeds.sort();
         seeds.dedup();
-        (rows, Flow { out: out.clone(), tools, seeds, resume: false })
+        (rows, Flow { out: out.clone(), tools, seeds, resume: false, floorplan: args.floorplan })
     };
     let spreads = spreads(&rows, &block_hashes);
 
@@ -430,12 +465,16 @@ fn run_job(ctx: &Flow, block: &str, target: &Target) -> Vec<Row> {
         yosys_s: None,
         nextpnr_s: None,
         critical_path: None,
+        floorplan: None,
         tool_versions: BTreeMap::from([
             ("yosys".to_string(), yosys.version.clone()),
             ("nextpnr".to_string(), nextpnr.version.clone()),
         ]),
     };
-    let synthesized = synthesize(ctx, block, target, &mut row);
+    let synthesized = synthesize(ctx, block, target, &mut row).and_then(|mut s| {
+        pin(ctx, block, target, &mut s, &mut row)?;
+        Ok(s)
+    });
     ctx.seeds
         .iter()
         .map(|&seed| {
@@ -459,6 +498,8 @@ struct Synthesized {
     wrapper_ffs: u64,
     /// The netlist was already there (`--resume`).
     resumed: bool,
+    /// The netlist nextpnr reads: Yosys' own, or the floorplanned copy.
+    placed_json: &'static str,
 }
 
 /// Yosys on one block in its wrapper; fills the flip-flop counts of `row`.
@@ -487,7 +528,7 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
         let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
         row.wrapper_ffs = Some(cells.wrapper_ffs);
         row.ffs = Some(cells.ffs - cells.wrapper_ffs);
-        return Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: true });
+        return Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: true, placed_json: NETLIST_JSON });
     }
     // The netlist is about to be made again: an older one must not be taken for it by a later
     // --resume if this synthesis fails (a stale report is removed by `place`, seed by seed).
@@ -511,23 +552,50 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
     let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
     row.wrapper_ffs = Some(cells.wrapper_ffs);
     row.ffs = Some(cells.ffs - cells.wrapper_ffs);
-    Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: false })
+    Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: false, placed_json: NETLIST_JSON })
 }
 
 /// The netlist Yosys writes in a job's directory.
 const NETLIST_JSON: &str = "synth.json";
+/// Yosys' netlist with the floorplan's `BEL` attributes, beside it.
+const FLOORPLANNED_JSON: &str = "floorplanned.json";
+/// In a job's directory, the floorplan a seed's report was placed with (`none` or the description).
+fn floorplan_file(seed: u64) -> String {
+    format!("floorplan-seed{seed}.txt")
+}
+
+/// Floorplans a synthesized machine of two or more PEs on ECP5 (see [`floorplan`]) unless
+/// `--floorplan none`: writes the pinned netlist beside Yosys' and records it in `row`.
+fn pin(ctx: &Flow, block: &str, target: &Target, s: &mut Synthesized, row: &mut Row) -> Result<()> {
+    let pes = machine_block_pes(block).unwrap_or(0);
+    if ctx.floorplan == Floorplan::None || target.family != Family::Ecp5 || pes < 2 {
+        return Ok(());
+    }
+    let _ = std::fs::remove_file(s.dir.join(FLOORPLANNED_JSON));
+    let plan = floorplan::apply(&s.dir.join(NETLIST_JSON), &s.dir.join(FLOORPLANNED_JSON), pes)?;
+    eprintln!("{}: floorplan {plan}", s.job);
+    s.placed_json = FLOORPLANNED_JSON;
+    row.floorplan = Some(plan);
+    Ok(())
+}
 
 /// nextpnr on a synthesized block with one seed; fills `row` as it goes.
 fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row) -> Result<()> {
-    let (dir, netlist_json) = (&s.dir, NETLIST_JSON);
+    let (dir, netlist_json) = (&s.dir, s.placed_json);
     let job = format!("{}-seed{seed}", s.job);
     let report_json = format!("report-seed{seed}.json");
     let report_json = report_json.as_str();
     let log = ctx.out.join("logs").join(format!("{job}-nextpnr.log"));
-    let resumed = s.resumed && dir.join(report_json).is_file() && log.is_file();
+    let plan = row.floorplan.clone().unwrap_or_else(|| "none".into());
+    let plan_file = dir.join(floorplan_file(seed));
+    let resumed = s.resumed
+        && dir.join(report_json).is_file()
+        && log.is_file()
+        && std::fs::read_to_string(&plan_file).is_ok_and(|p| p == plan);
     if !resumed {
-        // A stale report from an earlier run must not be read as this one's.
+        // A stale report from an earlier run (or of another floorplan) must not be read as this one's.
         let _ = std::fs::remove_file(dir.join(report_json));
+        std::fs::write(&plan_file, &plan).with_context(|| format!("writing {}", plan_file.display()))?;
     }
     let mut args = target.nextpnr_device.clone();
     args.extend([
@@ -686,6 +754,8 @@ pub struct Spread {
     /// value for an even count).
     pub median_mhz: Option<f64>,
     pub max_mhz: Option<f64>,
+    /// The floorplan every seed was placed with (`Row::floorplan`; `--merge` refuses to mix two).
+    pub floorplan: Option<String>,
 }
 
 /// `fpga-seeds.json`: the hash of the whole export measured and every block's spread with the
@@ -713,6 +783,7 @@ fn spreads(rows: &[Row], block_hashes: &BTreeMap<String, String>) -> Vec<Spread>
                     min_mhz: None,
                     median_mhz: None,
                     max_mhz: None,
+                    floorplan: r.floorplan.clone(),
                 });
                 out.len() - 1
             }
@@ -801,6 +872,21 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
          wrapper's flip-flops are not counted. Seeds {seeds}; the LUT and FF counts are of each \
          seed's placement (Yosys runs once per block).\n"
     );
+    let mut plans: Vec<(&str, &str)> =
+        rows.iter().filter_map(|r| Some((r.block.as_str(), r.floorplan.as_deref()?))).collect();
+    plans.dedup();
+    if !plans.is_empty() {
+        let _ = writeln!(
+            md,
+            "Floorplans (`--floorplan regions`: each PE's block RAMs and multipliers pinned to the \
+             sites of its own region of the die nearest the region's centre, a sub-block's side by \
+             side along a row; every other cell placed by nextpnr; `--floorplan none`: none):\n"
+        );
+        for (block, plan) in plans {
+            let _ = writeln!(md, "- {block}: {plan}");
+        }
+        let _ = writeln!(md);
+    }
     let _ = writeln!(md, "Tools:\n");
     for t in ctx.tools.values() {
         let _ = writeln!(md, "- {}: {} ({})", t.kind.native(), t.version, t.found_as);
@@ -868,6 +954,7 @@ mod tests {
             yosys_s: None,
             nextpnr_s: None,
             critical_path: None,
+            floorplan: None,
             tool_versions: BTreeMap::new(),
         }
     }
