@@ -50,17 +50,16 @@
 //!
 //! N times the PE's (17 `DP16KD` each), plus the arbiter and the port registers. On the
 //! LFE5U-85F-6 four PEs take 44,321 LUT4s (53 %), 31,993 FFs, 68 of 208 `DP16KD`s and 64
-//! `MULT18X18D`s and route at 124.6 MHz, the median of placement seeds 2 to 6 (112.5–127.7;
-//! seed 1 did not finish routing in 45 minutes; `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga
-//! --blocks machine_4`). Their critical paths are inside one PE but cross the die: the placer
-//! spreads a PE over half its width (seed 3: the tag FIFO's head through `head_retire` into
-//! the slice's `load_main`, a clock enable, 7.7 ns of routing from column 98 to 44 to 109),
-//! besides the divider's 33-bit step and a merge verdict into a ray-memory tile. On the
-//! netlist before the origin's FIFO lanes and the divider's signed `W` they routed at 131.5
-//! (seeds 1, 2, 4): the seeds' spread is larger than either change.
+//! `MULT18X18D`s and route at 133.0 MHz, the median of placement seeds 1 to 5 (122.2–135.4;
+//! `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga --blocks machine_4`), with each PE's block RAMs
+//! and multipliers pinned to its own quadrant of the die by the flow's floorplan (left to the
+//! placer, one PE spread over half the die and the same netlist routed at 124.6 MHz, 112.5–127.7,
+//! one seed not at all). At every seed the critical path is now the `cfg_cache_enable` input's
+//! fan-out from the centre of the die to a PE's loader or cache, 6.2–7.0 ns of wire: a register
+//! per PE on the cache's settings (held during a run) would cut it.
 //! Six PEs, the most whose LUTs fit, take 64,744 LUT4s (77 %), 47,940 FFs, 102 `DP16KD`s and
-//! 96 `MULT18X18D`s and route at 112.1 MHz (110.5–120.7, seeds 1–3, `--blocks machine_6`;
-//! 110.5 on the netlist before); their critical paths are wires into far PEs as well.
+//! 96 `MULT18X18D`s and route at 112.1 MHz (110.5–120.7, seeds 1–3, `--blocks machine_6`,
+//! placed without the floorplan); their critical paths are wires into far PEs.
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
