@@ -151,8 +151,10 @@ pub fn assign(cells: &[(String, String)], pes: usize) -> Result<BTreeMap<String,
     for ((k, kind), mut mine) in need {
         mine.sort_unstable();
         let r = region(k, pes);
-        let mut free: Vec<&Site> =
-            all.iter().filter(|s| s.kind == kind && r.contains(s) && !used.contains(s.name.as_str())).collect();
+        let mut free: Vec<&Site> = all
+            .iter()
+            .filter(|s| s.kind == kind && r.contains(s) && !used.contains(s.name.as_str()))
+            .collect();
         // Nearest the centre first; ties by name, so that the plan does not depend on the list's order.
         free.sort_by(|a, b| r.distance2(a).total_cmp(&r.distance2(b)).then_with(|| a.name.cmp(&b.name)));
         if free.len() < mine.len() {
@@ -192,7 +194,8 @@ pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], pes
             _ => e.1 += 1,
         }
     }
-    let mut s = format!("regions: {cols} x {rows} grid of the die, the sites nearest each centre in row order");
+    let mut s =
+        format!("regions: {cols} x {rows} grid of the die, the sites nearest each centre in row order");
     for (k, (b, m)) in per {
         let r = region(k, pes);
         s += &format!(

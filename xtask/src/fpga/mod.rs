@@ -333,19 +333,8 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         if rows.is_empty() {
             bail!("--merge: no rows of the blocks and families asked for");
         }
-        for pair in rows.windows(2) {
-            let (a, b) = (&pair[0], &pair[1]);
-            if (&a.block, a.family) == (&b.block, b.family) && a.floorplan != b.floorplan {
-                bail!(
-                    "--merge: {} on {} was placed with two floorplans (seeds {} and {}): {} / {}",
-                    a.block,
-                    a.family.name(),
-                    a.seed,
-                    b.seed,
-                    a.floorplan.as_deref().unwrap_or("none"),
-                    b.floorplan.as_deref().unwrap_or("none")
-                );
-            }
+        if let Some(e) = mixed_floorplans(&rows) {
+            bail!("--merge: {e}");
         }
         let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
         seeds.sort();
@@ -531,7 +520,13 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
         let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
         row.wrapper_ffs = Some(cells.wrapper_ffs);
         row.ffs = Some(cells.ffs - cells.wrapper_ffs);
-        return Ok(Synthesized { job, dir, wrapper_ffs: cells.wrapper_ffs, resumed: true, placed_json: NETLIST_JSON });
+        return Ok(Synthesized {
+            job,
+            dir,
+            wrapper_ffs: cells.wrapper_ffs,
+            resumed: true,
+            placed_json: NETLIST_JSON,
+        });
     }
     // The netlist is about to be made again: an older one must not be taken for it by a later
     // --resume if this synthesis fails (a stale report is removed by `place`, seed by seed).
@@ -734,6 +729,25 @@ fn tool_run(dir: &Path, tool: &Tool, args: &[String], log: &Path) -> Result<Stat
         command,
         log: log.to_path_buf(),
         code: status.to_string(),
+    })
+}
+
+/// Two rows of one block and family placed with different floorplans, said (`rows` sorted by
+/// block, family and seed): their seeds are not one experiment's.
+fn mixed_floorplans(rows: &[Row]) -> Option<String> {
+    rows.windows(2).find_map(|pair| {
+        let (a, b) = (&pair[0], &pair[1]);
+        ((&a.block, a.family) == (&b.block, b.family) && a.floorplan != b.floorplan).then(|| {
+            format!(
+                "{} on {} was placed with two floorplans (seeds {} and {}): {} / {}",
+                a.block,
+                a.family.name(),
+                a.seed,
+                b.seed,
+                a.floorplan.as_deref().unwrap_or("none"),
+                b.floorplan.as_deref().unwrap_or("none")
+            )
+        })
     })
 }
 
@@ -981,5 +995,17 @@ mod tests {
         assert_eq!((s[1].min_mhz, s[1].median_mhz, s[1].max_mhz), (Some(200.0), Some(200.0), Some(200.0)));
         let none = spreads(&[row("c", 1, None)], &hashes);
         assert_eq!(none[0].median_mhz, None);
+    }
+
+    #[test]
+    fn seeds_of_one_block_placed_with_two_floorplans_are_not_merged() {
+        let planned =
+            |block: &str, seed: u64| Row { floorplan: Some("regions".into()), ..row(block, seed, None) };
+        assert_eq!(mixed_floorplans(&[planned("a", 1), planned("a", 2), row("b", 1, None)]), None);
+        let e = mixed_floorplans(&[planned("a", 1), row("a", 2, None)]).expect("two floorplans");
+        assert!(
+            e.contains("a on ecp5") && e.contains("seeds 1 and 2") && e.contains("regions / none"),
+            "{e}"
+        );
     }
 }
