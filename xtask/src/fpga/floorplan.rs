@@ -187,8 +187,8 @@ pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], pes
     let (cols, rows) = grid(pes);
     let types: BTreeMap<&str, &str> = cells.iter().map(|(n, t)| (n.as_str(), t.as_str())).collect();
     let mut per: BTreeMap<usize, (usize, usize)> = BTreeMap::new();
-    for cell in pins.keys() {
-        let e = per.entry(pe_of(cell).unwrap_or(usize::MAX)).or_default();
+    for (cell, k) in pins.keys().filter_map(|c| Some((c, pe_of(c)?))) {
+        let e = per.entry(k).or_default();
         match types.get(cell.as_str()).copied().and_then(Kind::of_cell) {
             Some(Kind::Bram) => e.0 += 1,
             _ => e.1 += 1,

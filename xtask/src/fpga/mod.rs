@@ -113,9 +113,7 @@ pub struct FpgaArgs {
     /// The machine's floorplan on ECP5 (`machine_N`, N >= 2; every other block and iCE40 are
     /// placed freely): `regions` pins each PE's block RAMs and multipliers to the sites of its own
     /// region of the die (a grid of ceil(N/2) columns by 2 rows), `none` leaves them to the placer.
-    /// Measured (PERFORMANCE.md): four PEs 133.0 MHz at the median of five seeds against 124.6
-    /// unpinned; six PEs lower than unpinned (101.1, 107.3 at seeds 1, 3 against 112.1), their
-    /// critical path a PE's command input (the wrapper's flip-flop) into that PE in a corner.
+    /// What it does to the machines' clock rates, seed by seed, is in PERFORMANCE.md.
     #[arg(long, value_enum, default_value = "regions")]
     pub floorplan: Floorplan,
     /// Resume an interrupted run in the same --out: a block whose Verilog is the one already
