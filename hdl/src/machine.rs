@@ -14,7 +14,7 @@
 //! | `clock` | in | 1 | rising-edge clock of every PE and the arbiter |
 //! | `dir_we$i` … `res_addr$i` | in | as the PE's | PE `i`'s host ports: directions, source, sectors, commands, readout (`pe.rs`) |
 //! | `cmd_ready$i` … `marks$i` | out | as the PE's | PE `i`'s outputs: command ready, readout, `busy`, its counters and its markers |
-//! | `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush` | in | 1, 10, 1 | every PE's cache setting (one scene, one size) |
+//! | `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush` | in | 1, 10, 1 | every PE's cache setting (one scene, one size), taken by each PE's copy of them in a clock after one when that PE was not `busy` (raise a flush when every PE has been idle a clock: one raised while a PE is busy is lost to it; a PE's `busy` rises two clocks after the flush) |
 //! | `host_req`, `host_addr` | out | 1, 16 | the shared host memory's request: one per clock at most |
 //! | `host_valid`, `host_ax` … `host_by` | in | 1, 17 each | its answers, in request order |
 //! | `requests` | out | 32 | requests sent to the host since power-up (wrapping) |
@@ -30,7 +30,11 @@
 //! The port registers are there for the clock: without them the arbiter's answer register
 //! drove every PE's loader across the die through the cache's pass-through multiplexer, the
 //! machine's critical path. Each PE's copy of the patch is loaded only on that PE's answers,
-//! so synthesis cannot merge the copies into one register.
+//! so synthesis cannot merge the copies into one register. For the same reason each PE has its
+//! own copy of the cache settings, loaded while that PE was idle (its `busy` of the clock before
+//! low, a register, so that the PE's `busy` logic does not reach them): one register
+//! driving every PE's cache from the middle of the die was the critical path once the PEs had
+//! their own regions.
 //!
 //! # Formats
 //!
@@ -49,17 +53,15 @@
 //! # Resources
 //!
 //! N times the PE's (17 `DP16KD` each), plus the arbiter and the port registers. On the
-//! LFE5U-85F-6 four PEs take 44,321 LUT4s (53 %), 31,993 FFs, 68 of 208 `DP16KD`s and 64
-//! `MULT18X18D`s and route at 133.0 MHz, the median of placement seeds 1 to 5 (122.2–135.4;
+//! LFE5U-85F-6 four PEs take 44,130 LUT4s (53 %), 32,045 FFs, 68 of 208 `DP16KD`s and 64
+//! `MULT18X18D`s and route at 141.0 MHz, the median of placement seeds 1 to 5 (134.8–148.4;
 //! `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga --blocks machine_4`), with each PE's block RAMs
-//! and multipliers pinned to its own quadrant of the die by the flow's floorplan (left to the
-//! placer, one PE spread over half the die and the same netlist routed at 124.6 MHz, 112.5–127.7,
-//! one seed not at all). At every seed the critical path is now the `cfg_cache_enable` input's
-//! fan-out from the centre of the die to a PE's loader or cache, 6.2–7.0 ns of wire: a register
-//! per PE on the cache's settings (held during a run) would cut it.
-//! Six PEs, the most whose LUTs fit, take 64,744 LUT4s (77 %), 47,940 FFs, 102 `DP16KD`s and
-//! 96 `MULT18X18D`s and route at 112.1 MHz (110.5–120.7, seeds 1–3, `--blocks machine_6`,
-//! placed without the floorplan); their critical paths are wires into far PEs.
+//! and multipliers pinned to its own quadrant of the die by the flow's floorplan and each PE's
+//! inputs in its own stretch of the register wrapper's chain. Every seed's critical path is
+//! inside one PE (its stall, the screener's divider or normaliser, the unit's sequencer).
+//! Six PEs, the most whose LUTs fit, take 64,744 LUT4s (77 %), 102 `DP16KD`s and 96
+//! `MULT18X18D`s (measured on the Verilog before the settings' registers, at 112.1 MHz placed
+//! freely; not yet measured on this one).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
@@ -75,19 +77,39 @@ pub mod model {
     use crate::arbiter::model::Outputs;
 
     /// A PE's port registers: the request on its way to the arbiter (`request`, the PE's
-    /// `mem_req` with `mem_addr` one clock later), and the answer the PE sees: `valid` (its
-    /// `mem_valid`) and the patch (its `mem_ax` … `mem_by`), the last one answered to it.
+    /// `mem_req` with `mem_addr` one clock later), the answer the PE sees: `valid` (its
+    /// `mem_valid`) and the patch (its `mem_ax` … `mem_by`), the last one answered to it, and
+    /// its copy of the machine's cache settings (`cache`, what its `cfg_cache_*` see), taken
+    /// when the PE's `busy` of the clock before (`was_busy`) is low.
     #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
     pub struct Port {
         pub request: Option<u16>,
         pub valid: bool,
         pub patch: [u32; 4],
+        pub cache: Settings,
+        pub was_busy: bool,
+    }
+
+    /// The cache settings a PE sees: `cfg_cache_enable`, `cfg_cache_mask`, `cfg_cache_flush`.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct Settings {
+        pub enable: bool,
+        pub mask: u16,
+        pub flush: bool,
     }
 
     impl Port {
-        /// One rising edge of PE `p`'s port registers, with the PE's request `request` and the
-        /// arbiter's outputs `a` before it.
-        pub fn step(&mut self, p: usize, request: Option<u16>, a: &Outputs) {
+        /// One rising edge of PE `p`'s port registers, with the PE's request `request` and its
+        /// `busy`, the arbiter's outputs `a` and the machine's cache settings `host` before it.
+        pub fn step(&mut self, p: usize, request: Option<u16>, busy: bool, a: &Outputs, host: Settings) {
+            // The settings are taken while the PE was idle in the clock before; a flush is a
+            // pulse.
+            if !self.was_busy {
+                self.cache = host;
+            } else {
+                self.cache.flush = false;
+            }
+            self.was_busy = busy;
             self.request = request;
             self.valid = a.answer == Some(p);
             if self.valid {
@@ -137,6 +159,13 @@ macro_rules! machine {
             port_ay: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
             port_bx: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
             port_by: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
+            // Each PE's copy of the cache settings, taken while it was idle in the clock before
+            // (`was_busy`, its `busy` a clock late: so that no two copies are the same register and synthesis keeps one
+            // beside each PE, and no path runs from the PE's `busy` logic into them).
+            was_busy: [DFF<bool>; N],
+            cfg_enable: [DFF<bool>; N],
+            cfg_mask: [DFF<Bits<{ crate::cache::CACHE_BITS }>>; N],
+            cfg_flush: [DFF<bool>; N],
         }
 
         impl<const N: usize> Default for Machine<N> {
@@ -165,6 +194,10 @@ macro_rules! machine {
                     port_ay: std::array::from_fn(|_| Default::default()),
                     port_bx: std::array::from_fn(|_| Default::default()),
                     port_by: std::array::from_fn(|_| Default::default()),
+                    was_busy: std::array::from_fn(|_| Default::default()),
+                    cfg_enable: std::array::from_fn(|_| Default::default()),
+                    cfg_mask: std::array::from_fn(|_| Default::default()),
+                    cfg_flush: std::array::from_fn(|_| Default::default()),
                 }
             }
         }
@@ -177,9 +210,22 @@ macro_rules! machine {
                     self.pes[i].clock.next = self.clock.val();
                     $(self.pes[i].$i.next = self.$i[i].val();)+
                     $(self.$o[i].next = self.pes[i].$o.val();)+
-                    self.pes[i].cfg_cache_enable.next = self.cfg_cache_enable.val();
-                    self.pes[i].cfg_cache_mask.next = self.cfg_cache_mask.val();
-                    self.pes[i].cfg_cache_flush.next = self.cfg_cache_flush.val();
+                    self.was_busy[i].clock.next = self.clock.val();
+                    self.was_busy[i].d.next = self.pes[i].busy.val();
+                    self.cfg_enable[i].clock.next = self.clock.val();
+                    self.cfg_mask[i].clock.next = self.clock.val();
+                    self.cfg_flush[i].clock.next = self.clock.val();
+                    self.cfg_enable[i].d.next = self.cfg_enable[i].q.val();
+                    self.cfg_mask[i].d.next = self.cfg_mask[i].q.val();
+                    self.cfg_flush[i].d.next = false;
+                    if !self.was_busy[i].q.val() {
+                        self.cfg_enable[i].d.next = self.cfg_cache_enable.val();
+                        self.cfg_mask[i].d.next = self.cfg_cache_mask.val();
+                        self.cfg_flush[i].d.next = self.cfg_cache_flush.val();
+                    }
+                    self.pes[i].cfg_cache_enable.next = self.cfg_enable[i].q.val();
+                    self.pes[i].cfg_cache_mask.next = self.cfg_mask[i].q.val();
+                    self.pes[i].cfg_cache_flush.next = self.cfg_flush[i].q.val();
                     self.port_req[i].clock.next = self.clock.val();
                     self.port_addr[i].clock.next = self.clock.val();
                     self.port_req[i].d.next = self.pes[i].mem_req.val();

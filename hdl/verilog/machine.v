@@ -241,6 +241,30 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
     reg  [16:0] port_by$1$d;
     wire  [16:0] port_by$1$q;
     reg  port_by$1$clock;
+    reg  was_busy$0$d;
+    wire  was_busy$0$q;
+    reg  was_busy$0$clock;
+    reg  was_busy$1$d;
+    wire  was_busy$1$q;
+    reg  was_busy$1$clock;
+    reg  cfg_enable$0$d;
+    wire  cfg_enable$0$q;
+    reg  cfg_enable$0$clock;
+    reg  cfg_enable$1$d;
+    wire  cfg_enable$1$q;
+    reg  cfg_enable$1$clock;
+    reg  [9:0] cfg_mask$0$d;
+    wire  [9:0] cfg_mask$0$q;
+    reg  cfg_mask$0$clock;
+    reg  [9:0] cfg_mask$1$d;
+    wire  [9:0] cfg_mask$1$q;
+    reg  cfg_mask$1$clock;
+    reg  cfg_flush$0$d;
+    wire  cfg_flush$0$q;
+    reg  cfg_flush$0$clock;
+    reg  cfg_flush$1$d;
+    wire  cfg_flush$1$q;
+    reg  cfg_flush$1$clock;
     
     // Sub module instances
     machine$pes$0 pes$0(
@@ -430,6 +454,46 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         .q(port_by$1$q),
         .clock(port_by$1$clock)
     );
+    machine$was_busy$0 was_busy$0(
+        .d(was_busy$0$d),
+        .q(was_busy$0$q),
+        .clock(was_busy$0$clock)
+    );
+    machine$was_busy$1 was_busy$1(
+        .d(was_busy$1$d),
+        .q(was_busy$1$q),
+        .clock(was_busy$1$clock)
+    );
+    machine$cfg_enable$0 cfg_enable$0(
+        .d(cfg_enable$0$d),
+        .q(cfg_enable$0$q),
+        .clock(cfg_enable$0$clock)
+    );
+    machine$cfg_enable$1 cfg_enable$1(
+        .d(cfg_enable$1$d),
+        .q(cfg_enable$1$q),
+        .clock(cfg_enable$1$clock)
+    );
+    machine$cfg_mask$0 cfg_mask$0(
+        .d(cfg_mask$0$d),
+        .q(cfg_mask$0$q),
+        .clock(cfg_mask$0$clock)
+    );
+    machine$cfg_mask$1 cfg_mask$1(
+        .d(cfg_mask$1$d),
+        .q(cfg_mask$1$q),
+        .clock(cfg_mask$1$clock)
+    );
+    machine$cfg_flush$0 cfg_flush$0(
+        .d(cfg_flush$0$d),
+        .q(cfg_flush$0$q),
+        .clock(cfg_flush$0$clock)
+    );
+    machine$cfg_flush$1 cfg_flush$1(
+        .d(cfg_flush$1$d),
+        .q(cfg_flush$1$q),
+        .clock(cfg_flush$1$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -470,9 +534,22 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         near$0 = pes$0$near;
         tests$0 = pes$0$tests;
         marks$0 = pes$0$marks;
-        pes$0$cfg_cache_enable = cfg_cache_enable;
-        pes$0$cfg_cache_mask = cfg_cache_mask;
-        pes$0$cfg_cache_flush = cfg_cache_flush;
+        was_busy$0$clock = clock;
+        was_busy$0$d = pes$0$busy;
+        cfg_enable$0$clock = clock;
+        cfg_mask$0$clock = clock;
+        cfg_flush$0$clock = clock;
+        cfg_enable$0$d = cfg_enable$0$q;
+        cfg_mask$0$d = cfg_mask$0$q;
+        cfg_flush$0$d = 1'b0;
+        if (~was_busy$0$q) begin
+            cfg_enable$0$d = cfg_cache_enable;
+            cfg_mask$0$d = cfg_cache_mask;
+            cfg_flush$0$d = cfg_cache_flush;
+        end
+        pes$0$cfg_cache_enable = cfg_enable$0$q;
+        pes$0$cfg_cache_mask = cfg_mask$0$q;
+        pes$0$cfg_cache_flush = cfg_flush$0$q;
         port_req$0$clock = clock;
         port_addr$0$clock = clock;
         port_req$0$d = pes$0$mem_req;
@@ -536,9 +613,22 @@ module machine(clock,dir_we$0,dir_we$1,dir_addr$0,dir_addr$1,dir_x$0,dir_x$1,dir
         near$1 = pes$1$near;
         tests$1 = pes$1$tests;
         marks$1 = pes$1$marks;
-        pes$1$cfg_cache_enable = cfg_cache_enable;
-        pes$1$cfg_cache_mask = cfg_cache_mask;
-        pes$1$cfg_cache_flush = cfg_cache_flush;
+        was_busy$1$clock = clock;
+        was_busy$1$d = pes$1$busy;
+        cfg_enable$1$clock = clock;
+        cfg_mask$1$clock = clock;
+        cfg_flush$1$clock = clock;
+        cfg_enable$1$d = cfg_enable$1$q;
+        cfg_mask$1$d = cfg_mask$1$q;
+        cfg_flush$1$d = 1'b0;
+        if (~was_busy$1$q) begin
+            cfg_enable$1$d = cfg_cache_enable;
+            cfg_mask$1$d = cfg_cache_mask;
+            cfg_flush$1$d = cfg_cache_flush;
+        end
+        pes$1$cfg_cache_enable = cfg_enable$1$q;
+        pes$1$cfg_cache_mask = cfg_mask$1$q;
+        pes$1$cfg_cache_flush = cfg_flush$1$q;
         port_req$1$clock = clock;
         port_addr$1$clock = clock;
         port_req$1$d = pes$1$mem_req;
@@ -1967,6 +2057,120 @@ module machine$arbiter$valid_r$1(d,q,clock);
     end
           
 endmodule // machine$arbiter$valid_r$1
+
+
+module machine$cfg_enable$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$cfg_enable$0
+
+
+module machine$cfg_enable$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$cfg_enable$1
+
+
+module machine$cfg_flush$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$cfg_flush$0
+
+
+module machine$cfg_flush$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$cfg_flush$1
+
+
+module machine$cfg_mask$0(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$cfg_mask$0
+
+
+module machine$cfg_mask$1(d,q,clock);
+    
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$cfg_mask$1
 
 
 module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x,last_y,cmd_valid,cmd_ready,cmd_retire,cmd_sector,cmd_id,cmd_first,cmd_count,cfg_cache_enable,cfg_cache_mask,cfg_cache_flush,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,res_re,res_addr,res_hit,res_id,res_key,busy,loads,cache_hits,cache_misses,passed,backward,back_facing,outside,near,tests,marks);
@@ -39553,3 +39757,41 @@ module machine$port_valid$1(d,q,clock);
     end
           
 endmodule // machine$port_valid$1
+
+
+module machine$was_busy$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$was_busy$0
+
+
+module machine$was_busy$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$was_busy$1

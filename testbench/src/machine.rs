@@ -34,7 +34,7 @@ pub use shelling_hdl::arbiter::model::Arbiter;
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_hdl::formats::Nearest;
 use shelling_hdl::intersection::READOUT_LATENCY;
-use shelling_hdl::machine::model::Port;
+use shelling_hdl::machine::model::{Port, Settings};
 use shelling_hdl::machine::Machine;
 
 /// A machine simulated one clock cycle at a time from power-up: `pes()` PEs and their memory
@@ -66,6 +66,9 @@ pub struct Composed<S: PeSim> {
     sims: Vec<S>,
     arbiter: Arbiter,
     ports: Vec<Port>,
+    /// Each PE's inputs as the host drives them, and as the PE sees them (through its port
+    /// registers).
+    host: Vec<PeInputs>,
     inputs: Vec<PeInputs>,
     lockstep: Option<Lockstep<S>>,
 }
@@ -78,7 +81,7 @@ impl<S: PeSim> Composed<S> {
         let arbiter = Arbiter::new(sims.len());
         let inputs = vec![PeInputs::default(); sims.len()];
         let ports = vec![Port::default(); sims.len()];
-        Ok(Self { sims, arbiter, ports, inputs, lockstep: None })
+        Ok(Self { sims, arbiter, ports, host: inputs.clone(), inputs, lockstep: None })
     }
 }
 
@@ -112,10 +115,14 @@ impl<S: PeSim> MachineSim for Composed<S> {
     }
 
     fn drive(&mut self, mut set: impl FnMut(usize, &mut PeInputs)) -> Result<()> {
-        for (p, (i, port)) in self.inputs.iter_mut().zip(&self.ports).enumerate() {
-            set(p, i);
+        for (p, ((i, host), port)) in self.inputs.iter_mut().zip(&mut self.host).zip(&self.ports).enumerate()
+        {
+            set(p, host);
+            *i = *host;
             i.mem_valid = port.valid;
             [i.mem_ax, i.mem_ay, i.mem_bx, i.mem_by] = port.patch.map(|w| w as i32);
+            (i.cfg_cache_enable, i.cfg_cache_mask, i.cfg_cache_flush) =
+                (port.cache.enable, port.cache.mask, port.cache.flush);
         }
         Ok(())
     }
@@ -131,10 +138,14 @@ impl<S: PeSim> MachineSim for Composed<S> {
     fn tick(&mut self, answer: Option<[i32; 4]>) -> Result<()> {
         let mut requests = [None; MAX_PES];
         let a = self.arbiter.outputs();
-        for (p, ((r, port), sim)) in requests.iter_mut().zip(&mut self.ports).zip(&self.sims).enumerate() {
+        for (p, ((r, port), (sim, h))) in
+            requests.iter_mut().zip(&mut self.ports).zip(self.sims.iter().zip(&self.host)).enumerate()
+        {
             *r = port.request;
             let o = sim.outputs();
-            port.step(p, o.mem_req.then_some(o.mem_addr), &a);
+            let host =
+                Settings { enable: h.cfg_cache_enable, mask: h.cfg_cache_mask, flush: h.cfg_cache_flush };
+            port.step(p, o.mem_req.then_some(o.mem_addr), o.busy, &a, host);
         }
         self.arbiter
             .step(&requests[..self.sims.len()], answer.map(|m| m.map(|c| c as u32)))

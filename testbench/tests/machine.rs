@@ -356,3 +356,34 @@ fn the_machine_replays_bit_exactly_under_verilator() -> Result<()> {
     assert!(report.cycles > 200, "seed {seed:#x}: only {} cycles recorded", report.cycles);
     Ok(())
 }
+
+/// The machine's cache settings reach each PE through its own register, taken while the PE was
+/// idle in the clock before: a flush raised for one clock on the machine's port makes every
+/// idle PE busy two clocks later for the cache's [`LINES`] clocks, in the RTL and in the
+/// composition alike.
+#[test]
+fn a_flush_reaches_every_pe_through_its_own_register() -> Result<()> {
+    use shelling_hdl::cache::LINES;
+    fn trace<M: MachineSim>(m: &mut M) -> Result<Vec<Vec<bool>>> {
+        let mut busy = Vec::new();
+        for cycle in 0..LINES + 8 {
+            m.drive(|_, i| {
+                i.cfg_cache_enable = true;
+                i.cfg_cache_mask = (LINES - 1) as u16;
+                i.cfg_cache_flush = cycle == 3;
+            })?;
+            busy.push((0..m.pes()).map(|p| m.outputs(p).busy).collect());
+            m.tick(None)?;
+        }
+        Ok(busy)
+    }
+    let rtl = trace(&mut Driver::new(Machine::<2>::default())?)?;
+    let pes = (0..2).map(|_| Driver::new(ProcessingElement::default())).collect::<Result<Vec<_>>>()?;
+    let composed = trace(&mut Composed::new(pes)?)?;
+    assert_eq!(rtl, composed, "the machine's RTL, then its composition");
+    for (cycle, busy) in rtl.iter().enumerate() {
+        let want = (5..5 + LINES).contains(&cycle);
+        assert_eq!(busy, &vec![want; 2], "cycle {cycle}: the flush raised in cycle 3");
+    }
+    Ok(())
+}

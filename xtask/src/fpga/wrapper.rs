@@ -5,7 +5,12 @@
 //! in a top module with six pins: `clock`, `sin`, `en_in`, `en_a`, `en_b` and `sout`.
 //!
 //! - Every input bit is a stage of one shift register (`shelling_fpga_in`, loaded from `sin`,
-//!   its last stage on `sout`, so none is unobserved);
+//!   its last stage on `sout`, so none is unobserved). The inputs of an array entry (`cmd_id$2`,
+//!   the machine's PE 2) are consecutive stages, entry after entry, then the plain ports: a
+//!   machine's PE has its own stretch of the chain, which the placer can put beside the PE,
+//!   as a PE's host interface would be; in the ports' order (`dir_we$0`, `dir_we$1`, …) every
+//!   link of the chain would join two PEs and hold all the input flip-flops in the die's
+//!   centre, far from every PE;
 //! - every output bit is captured by two registers (`shelling_fpga_cap_a`, `shelling_fpga_cap_b`,
 //!   kept).
 //!
@@ -86,6 +91,11 @@ pub fn ports(verilog: &str, module: &str) -> Result<Vec<Port>> {
     Ok(ports)
 }
 
+/// The index of an array port's entry (`dir_we$2`: 2), `usize::MAX` for a plain port.
+fn array_index(name: &str) -> usize {
+    name.rsplit_once('$').and_then(|(_, i)| i.parse().ok()).unwrap_or(usize::MAX)
+}
+
 /// A generated wrapper around one block.
 #[derive(Clone, Debug)]
 pub struct Wrapper {
@@ -100,7 +110,10 @@ pub struct Wrapper {
 
 /// The wrapper of `module` with these `ports` (see the module documentation).
 pub fn wrap(module: &str, ports: &[Port]) -> Wrapper {
-    let inputs: Vec<&Port> = ports.iter().filter(|p| p.dir == Dir::In && p.name != "clock").collect();
+    let mut inputs: Vec<&Port> = ports.iter().filter(|p| p.dir == Dir::In && p.name != "clock").collect();
+    // A machine's PEs each in their own stretch of the shift register (see the module
+    // documentation); a stable sort, so a block without arrays keeps its port order.
+    inputs.sort_by_key(|p| array_index(&p.name));
     let outputs: Vec<&Port> = ports.iter().filter(|p| p.dir == Dir::Out).collect();
     let ni: usize = inputs.iter().map(|p| p.width).sum();
     let no: usize = outputs.iter().map(|p| p.width).sum();
@@ -175,5 +188,25 @@ mod tests {
             w.verilog.contains(".y(block_out[17:0])")
                 && w.verilog.contains("(* keep *) reg [17:0] shelling_fpga_cap_b;")
         );
+    }
+
+    #[test]
+    fn an_array_entrys_inputs_are_one_stretch_of_the_chain() {
+        let port = |name: &str, width| Port { name: name.into(), dir: Dir::In, width };
+        let ports = [
+            port("clock", 1),
+            port("a$0", 2),
+            port("a$1", 2),
+            port("b$0", 3),
+            port("b$1", 3),
+            port("cfg", 1),
+        ];
+        let w = wrap("m", &ports);
+        for conn in
+            [".a$0(shelling_fpga_in[1:0])", ".b$0(shelling_fpga_in[4:2])", ".a$1(shelling_fpga_in[6:5])"]
+        {
+            assert!(w.verilog.contains(conn), "{conn} in {}", w.verilog);
+        }
+        assert!(w.verilog.contains(".cfg(shelling_fpga_in[10:10])"), "{}", w.verilog);
     }
 }
