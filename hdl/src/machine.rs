@@ -160,8 +160,8 @@ macro_rules! machine {
             port_bx: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
             port_by: [DFF<Bits<{ crate::arbiter::WORD_BITS }>>; N],
             // Each PE's copy of the cache settings, taken while it was idle in the clock before
-            // (`was_busy`, its `busy` a clock late: so that no two copies are the same register and synthesis keeps one
-            // beside each PE, and no path runs from the PE's `busy` logic into them).
+            // (`was_busy`, its `busy` a clock late): no two copies are the same register, so
+            // synthesis keeps one beside each PE, and no path runs from `busy`'s logic into them.
             was_busy: [DFF<bool>; N],
             cfg_enable: [DFF<bool>; N],
             cfg_mask: [DFF<Bits<{ crate::cache::CACHE_BITS }>>; N],
