@@ -7,8 +7,9 @@
 //!   model ([`Arbiter`], checked against the RTL in every cycle by
 //!   `testbench/tests/arbiter.rs`) and each PE's port register (`shelling_hdl::machine::model`)
 //!   stepped in lockstep: in each cycle every PE sees its port register (the arbiter's answer
-//!   of the cycle before, if it was its own, and the last patch answered to it), the arbiter
-//!   every PE's request of the cycle before (its port's request register). All those outputs
+//!   of the cycle before, if it was its own, the last patch answered to it, and its copy of the
+//!   cache settings), the arbiter every PE's request of the cycle before (its port's request
+//!   register). All those outputs
 //!   are registers, so this is the cycle behaviour of the blocks wired together; it runs at the
 //!   compiled PE's speed, and [`Composed::threaded`] steps half the PEs on a second thread
 //!   ([`Lockstep`]);
@@ -58,7 +59,8 @@ pub trait MachineSim {
 /// `N` PE simulators and the arbiter's cycle model, in lockstep (see the module documentation).
 ///
 /// Every output of the PE is a register, so [`MachineSim::drive`] only records each PE's
-/// inputs (the outputs it shows are those of the last edge, as a settled simulation's would
+/// inputs, the host's with its port registers' in place of the memory port and the cache
+/// settings (the outputs it shows are those of the last edge, as a settled simulation's would
 /// be: `testbench/tests/machine.rs` checks this composition against the machine's own RTL
 /// cycle for cycle), and [`MachineSim::tick`] gives every PE its inputs and its edge at once:
 /// on two threads when made by [`Composed::threaded`].
