@@ -114,7 +114,7 @@ fn main() {
 fn machine(rounds: usize) {
     use shelling::cosim::Engine;
     use shelling::grid::GridParams;
-    use shelling::machine::{self, Deal, MachineConfig};
+    use shelling::machine::{self, Deal, MachineConfig, Placement};
     use shelling::rays::RaySet;
     use shelling::run::GriddedScene;
     use shelling::scene::{self, PAPER_WORLD};
@@ -134,6 +134,7 @@ fn machine(rounds: usize) {
         tc: 16,
         cache: Some(256),
         deal: Deal::Blocks,
+        place: Placement::Index,
         engine: Engine::Verilator,
         vcd: None,
     };

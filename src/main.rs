@@ -519,6 +519,11 @@ struct MachineArgs {
     /// different cache lines) or in the file's order. --first and --count are the file's indices.
     #[arg(long, value_enum, default_value_t = machine::Layout::Hilbert)]
     layout: machine::Layout,
+    /// Where the host memory puts the patches for the caches: in the line where the same and the
+    /// next work items on a PE use the fewest others (lines), or patch k in slot k of the
+    /// layout (index). No effect without --cache.
+    #[arg(long, value_enum, default_value_t = machine::Placement::Lines)]
+    place: machine::Placement,
     /// Technique: conventional, stochastic or deterministic.
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
     method: Method,
@@ -1179,7 +1184,15 @@ fn machine_cmd(a: MachineArgs) -> Result<()> {
     let schedules =
         machine::schedule_sources(&prepared, &order, a.method, a.ray_set, a.rays, &params, parts)?;
     let (vcd, engine) = a.vcd.window(a.engine)?;
-    let config = machine::MachineConfig { pes: a.pes, tc: a.tc, cache: a.cache, deal: a.deal, engine, vcd };
+    let config = machine::MachineConfig {
+        pes: a.pes,
+        tc: a.tc,
+        cache: a.cache,
+        deal: a.deal,
+        place: a.place,
+        engine,
+        vcd,
+    };
     let bar = progress_bar(schedules.len() as u64, "{bar:40} {pos}/{len} work items {elapsed}");
     let run = machine::run(&schedules, &config, |done, _| bar.set_position(done as u64));
     bar.finish_and_clear();
@@ -1212,7 +1225,7 @@ fn report_machine(
         run.pes,
         config.engine.name(),
         config.tc,
-        config.cache.map_or("off".to_string(), |c| format!("of {c} patches")),
+        config.cache.map_or("off".to_string(), |c| format!("of {c} patches, placed by {}", config.place.name())),
         layout,
         config.deal.name(),
         if parts > 1 { format!(" ({parts} per source)") } else { String::new() }
@@ -1259,6 +1272,8 @@ fn cosim_machine(
         tc: a.tc,
         cache: a.cache,
         deal: machine::Deal::Sectors,
+        // One source: patch k at address k, as `cosim` on one PE.
+        place: machine::Placement::Index,
         engine,
         vcd,
     };

@@ -723,6 +723,8 @@ fn cli_cosim_runs_a_source_on_several_pes() {
         "sectors",
         "--layout",
         "file",
+        "--place",
+        "index",
     ];
     assert_eq!(parse_json(&ok(&machine), "machine"), three, "`machine --deal sectors` on the one source");
     let text = ok(&["cosim", "--scene", path_arg(&scene), "--source", "7", "--rays", "32", "--pes", "2"]);
@@ -759,7 +761,7 @@ fn cli_cosim_rejects_bad_options() {
 fn cli_machine_runs_sources_on_several_pes() {
     let dir = TempDir::new("machine");
     let scene = gen_scene(&dir, "s.json", 200, 32.0, 6);
-    let run = |pes: &str, engine: &str, deal: &str| {
+    let run = |pes: &str, engine: &str, deal: &str, place: &str| {
         let args = [
             "machine",
             "--scene",
@@ -778,17 +780,19 @@ fn cli_machine_runs_sources_on_several_pes() {
             "64",
             "--deal",
             deal,
+            "--place",
+            place,
             "--engine",
             engine,
             "--json",
         ];
         parse_json(&ok(&args), "machine")
     };
-    let one = run("1", "verilator", "blocks");
-    let three = run("3", "verilator", "blocks");
+    let one = run("1", "verilator", "blocks", "lines");
+    let three = run("3", "verilator", "blocks", "lines");
     assert_eq!((one["sources"].as_u64(), one["parts"].as_u64()), (Some(6), Some(1)));
     assert_eq!((three["sources"].as_u64(), three["parts"].as_u64()), (Some(6), Some(1)));
-    let sectors = run("3", "verilator", "sectors");
+    let sectors = run("3", "verilator", "sectors", "lines");
     assert_eq!((sectors["sources"].as_u64(), sectors["parts"].as_u64()), (Some(6), Some(3)));
     assert_eq!(sectors["rays"], one["rays"], "the sectors of a source are its rays");
     assert_eq!(sectors["source_cycles"].as_array().map(Vec::len), Some(6));
@@ -799,7 +803,9 @@ fn cli_machine_runs_sources_on_several_pes() {
     // Two sources a PE: its first setup and its last readout overlap no commands of its own, so
     // three PEs are well under 3x one here (1.49x).
     assert!(cycles(&three) * 4 < cycles(&one) * 3, "3 PEs {} cycles, 1 PE {}", cycles(&three), cycles(&one));
-    assert_eq!(run("3", "rust-hdl", "blocks"), three, "rust-hdl's PEs, then the compiled ones");
+    assert_eq!(run("3", "rust-hdl", "blocks", "lines"), three, "rust-hdl's PEs, then the compiled ones");
+    let index = run("3", "verilator", "blocks", "index");
+    assert_eq!(index["tests"], three["tests"], "where the patches are changes no test");
     let text = ok(&["machine", "--scene", path_arg(&scene), "--pes", "2", "--count", "3", "--rays", "32"]);
     assert!(text.contains("every hit equals the bit-true model's") && text.contains("host memory"), "{text}");
 }
@@ -821,6 +827,7 @@ fn cli_machine_rejects_bad_options() {
     fails(&with(&["--tc", "0"]), &["--tc", "0"]);
     fails(&with(&["--rays", "2048"]), &["2048", "1024"]);
     fails(&with(&["--deal", "random"]), &["random", "blocks", "interleaved", "sectors"]);
+    fails(&with(&["--place", "random"]), &["random", "index", "lines"]);
     fails(
         &with(&["--deal", "sectors", "--pes", "4", "--rays", "3"]),
         &["--rays 3", "--pes 4", "one ray a PE"],

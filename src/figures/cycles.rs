@@ -33,7 +33,7 @@
 use super::plot::{method_marker, render, tick_label, Chart, Marker, Series, XAxis};
 use super::{csv_num, scene_seed, source_patches, FigureOptions, METHODS};
 use crate::cosim::{self, CosimConfig};
-use crate::machine::{self, Deal, MachineConfig, MachineRun};
+use crate::machine::{self, Deal, MachineConfig, MachineRun, Placement};
 use crate::run::{GriddedScene, Scheduled};
 use crate::scene;
 use crate::trace::Method;
@@ -531,8 +531,15 @@ pub(super) fn measure_runs(opts: &FigureOptions) -> Result<(Vec<CycleRow>, usize
             Run::Queue(i) => {
                 let work: Vec<Scheduled> =
                     of_length[i].iter().map(|&k| schedules[k][j.method].clone()).collect();
-                let config =
-                    MachineConfig { pes: 1, tc: j.tc, cache: j.cache, deal: Deal::Blocks, engine, vcd: None };
+                let config = MachineConfig {
+                    pes: 1,
+                    tc: j.tc,
+                    cache: j.cache,
+                    deal: Deal::Blocks,
+                    place: Placement::Index,
+                    engine,
+                    vcd: None,
+                };
                 machine::run(&work, &config, &mut *report)
                     .map(|r| Outcome::Queue(queue_totals(&r, j.tc)))
                     .map_err(|e| {

@@ -27,7 +27,7 @@ use super::plot::{method_marker, render, Chart, Series, XAxis};
 use super::{csv_num, scene_seed, METHODS};
 use crate::cosim::Engine;
 use crate::grid::GridParams;
-use crate::machine::{self, Deal, Layout, MachineConfig, MachineRun};
+use crate::machine::{self, Deal, Layout, MachineConfig, MachineRun, Placement};
 use crate::rays::RaySet;
 use crate::run::{GriddedScene, Scheduled};
 use crate::scene;
@@ -200,7 +200,7 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
         .map(|(done, &(li, m, tc, cache, pes, deal, layout))| {
             let (_, [whole, parts, file]) =
                 schedules[li].iter().find(|s| s.0 == m).expect("every technique scheduled");
-            let config = MachineConfig { pes, tc, cache, deal, engine, vcd: None };
+            let config = MachineConfig { pes, tc, cache, deal, place: Placement::Index, engine, vcd: None };
             let work = match (deal, layout) {
                 (_, Layout::File) => file,
                 (Deal::Sectors, _) => parts,
@@ -500,6 +500,7 @@ pub fn headline_run(method: Method, pes: usize, engine: Engine) -> Result<Machin
         tc: HEADLINE_TC,
         cache: Some(HEADLINE_CACHE),
         deal: Deal::Blocks,
+        place: Placement::Lines,
         engine: engine.resolve(false),
         vcd: None,
     };

@@ -226,9 +226,14 @@ impl CacheConfig {
 /// patches: a per-PE cache of exactly a quarter of a 1000-patch scene is a cache of 250 lines.
 /// The PE is checked against the model of what it is given (mapped commands and memory);
 /// [`MemoryMap::patch`] turns its hits' addresses back into patch numbers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+///
+/// A placed map ([`MemoryMap::placed`]) puts patch `k` in slot `slot[k]` instead of slot `k`
+/// (the address of slot `s` as above): the host chooses which patches share a cache line.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct MemoryMap {
     lines: Option<u32>,
+    /// Each patch's slot and each slot's patch, for a placed map.
+    placement: Option<(Vec<u32>, Vec<u32>)>,
 }
 
 impl MemoryMap {
@@ -239,7 +244,7 @@ impl MemoryMap {
         if let Some(n) = lines.filter(|&n| n == 0 || n as usize > LINES) {
             return Err(Error::new(format!("the patch cache holds 1 to {LINES} patches, got {n}")));
         }
-        let map = MemoryMap { lines };
+        let map = MemoryMap { lines, placement: None };
         if let (Some(_), Some(last)) = (map.spread(), patches.checked_sub(1)) {
             let top = map.address_of(last);
             if top >= 1 << 16 {
@@ -254,15 +259,42 @@ impl MemoryMap {
         Ok(map)
     }
 
+    /// The map for a cache of `lines` lines with patch `k` in slot `slot[k]` (its line
+    /// `slot[k] mod C`). Fails as [`MemoryMap::new`] does, and when `slot` is not a permutation
+    /// of `0 … slot.len() − 1`.
+    pub fn placed(lines: Option<u32>, slot: Vec<u32>) -> Result<Self> {
+        let mut patch = vec![u32::MAX; slot.len()];
+        for (k, &s) in slot.iter().enumerate() {
+            match patch.get_mut(s as usize) {
+                Some(p) if *p == u32::MAX => *p = k as u32,
+                _ => {
+                    return Err(Error::new(format!(
+                        "patch {k}'s slot {s}: the slots of {} patches are a permutation of 0 to {}",
+                        slot.len(),
+                        slot.len().saturating_sub(1)
+                    )))
+                }
+            }
+        }
+        let map = MemoryMap::new(lines, slot.len())?;
+        Ok(MemoryMap { placement: Some((slot, patch)), ..map })
+    }
+
+    /// Patch `k`'s slot.
+    fn slot(&self, k: usize) -> usize {
+        self.placement.as_ref().map_or(k, |(slot, _)| slot[k] as usize)
+    }
+
     /// `(C, S)` for a spread map, `None` for the identity.
     fn spread(&self) -> Option<(u32, u32)> {
         self.lines.filter(|n| !n.is_power_of_two()).map(|n| (n, n.next_power_of_two()))
     }
 
     fn address_of(&self, k: usize) -> usize {
+        let slot = self.slot(k);
         match self.spread() {
-            Some((c, s)) => s as usize * (k / c as usize) + k % c as usize,
-            None => k,
+            Some((c, s)) => s as usize * (slot / c as usize) + slot % c as usize,
+            None => slot,
         }
     }
 
@@ -273,7 +305,7 @@ impl MemoryMap {
 
     /// The host memory's contents: `patches` at their addresses, zero in the holes.
     pub fn memory(&self, patches: &[[i32; 4]]) -> Vec<[i32; 4]> {
-        let len = patches.len().checked_sub(1).map_or(0, |l| self.address_of(l) + 1);
+        let len = (0..patches.len()).map(|k| self.address_of(k) + 1).max().unwrap_or(0);
         let mut out = vec![[0; 4]; len];
         for (k, p) in patches.iter().enumerate() {
             out[self.address_of(k)] = *p;
@@ -296,12 +328,16 @@ impl MemoryMap {
 
     /// The patch at `address`, or `None` for a hole.
     pub fn patch(&self, address: u16) -> Option<u16> {
-        match self.spread() {
+        let slot = match self.spread() {
             Some((c, s)) => {
                 let (block, line) = (address as u32 / s, address as u32 % s);
-                (line < c).then(|| (block * c + line) as u16)
+                (line < c).then_some(block * c + line)?
             }
-            None => Some(address),
+            None => address as u32,
+        };
+        match &self.placement {
+            Some((_, patch)) => patch.get(slot as usize).map(|&k| k as u16),
+            None => Some(slot as u16),
         }
     }
 }
@@ -780,6 +816,35 @@ mod tests {
             let map = MemoryMap::new(lines, 70_000).unwrap();
             assert_eq!(map.cache(), CacheConfig { lines });
             assert_eq!((map.patch(777), map.memory(&[[1; 4]; 3]).len()), (Some(777), 3));
+        }
+    }
+
+    #[test]
+    fn a_placed_map_puts_each_patch_in_its_slot_and_inverts() {
+        let slot: Vec<u32> = (0..10).map(|k| (k * 3) % 10).collect();
+        let patches: Vec<[i32; 4]> = (0..10).map(|k| [k; 4]).collect();
+        for lines in [None, Some(4), Some(3)] {
+            let map = MemoryMap::placed(lines, slot.clone()).unwrap();
+            let plain = MemoryMap::new(lines, 10).unwrap();
+            let memory = map.memory(&patches);
+            assert_eq!(memory.len(), plain.memory(&patches).len());
+            for k in 0..10u16 {
+                let [Command::Job { id, .. }] =
+                    map.commands(&[Command::Job { id: k, first: 0, count: 1 }])[..]
+                else {
+                    unreachable!()
+                };
+                let [Command::Job { id: at, .. }] =
+                    plain.commands(&[Command::Job { id: slot[k as usize] as u16, first: 0, count: 1 }])[..]
+                else {
+                    unreachable!()
+                };
+                assert_eq!((id, map.patch(id), memory[id as usize]), (at, Some(k), patches[k as usize]));
+            }
+        }
+        for bad in [vec![0, 0], vec![0, 2]] {
+            let e = MemoryMap::placed(Some(4), bad).unwrap_err();
+            assert!(e.message().contains("a permutation of 0 to 1"), "{e}");
         }
     }
 
