@@ -11,7 +11,8 @@
 //! - Machine: the same sources co-simulated cycle by cycle on N PEs (every hit checked against
 //!   the bit-true model), `T_c` = 16 shared by all PEs, 250-patch caches per PE (a quarter of
 //!   the scene: the cache's 256-line index, the host memory map leaving lines 250 … 255 unused),
-//!   dealt in blocks of even work (the bit-true model's tests); rays per second = rays × clock
+//!   dealt in blocks of even work (the bit-true model's tests), the patches placed in the caches'
+//!   lines by the host ([`shelling::machine::Placement::Lines`]); rays per second = rays × clock
 //!   / cycles, the clock the median post-route rate of the machine of that N on ECP5
 //!   (`hdl/fpga/ecp5-machine-seeds.json`) where it was measured, else the PE's alone (`hdl/fpga/ecp5-seeds.json`, said so). N is 1,
 //!   4, 6 (the most PEs whose block RAMs fit the LFE5U-85F) and 8.
@@ -89,7 +90,8 @@ fn main() {
         "The paper's workload: 1000 segments of length 32, seed 7, every source, R = 1024 (`cargo bench --bench \
          machine`). Machine: `T_c` = {HEADLINE_TC} cycles per patch on one host memory shared by all PEs, a \
          {HEADLINE_CACHE}-patch cache per PE (a quarter of the scene), the sources in Hilbert order dealt in blocks of \
-         even work, every hit checked against the bit-true model; software: the stochastic and deterministic \
+         even work, the patches placed in the caches' lines by the host (`--place lines`), every hit checked against \
+         the bit-true model; software: the stochastic and deterministic \
          tracers, median of {rounds} rounds on this machine ({threads} cores; the one-core rounds first), the \
          ratios against the faster of them on one core and on all cores. The machine's clock: the median \
          post-route rate on the LFE5U-85F-6 of the machine of that many PEs where it was measured, else the \

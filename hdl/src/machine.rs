@@ -59,9 +59,11 @@
 //! and multipliers pinned to its own quadrant of the die by the flow's floorplan and each PE's
 //! inputs in its own stretch of the register wrapper's chain. Every seed's critical path is
 //! inside one PE (its stall, the screener's divider or normaliser, the unit's sequencer).
-//! Six PEs, the most whose LUTs fit, take 64,744 LUT4s (77 %), 102 `DP16KD`s and 96
-//! `MULT18X18D`s (measured on the Verilog before the settings' registers, at 112.1 MHz placed
-//! freely; not yet measured on this one).
+//! Six PEs, the most whose LUTs fit, take 64,873 LUT4s (78 %), 48,018 FFs, 102 `DP16KD`s and 96
+//! `MULT18X18D`s and route at 123.9 MHz, the median of seeds 1 to 3 (123.2–125.1), floorplanned
+//! in a 3 × 2 grid of regions; two of the three critical paths are in the arbiter (its
+//! round-robin's last grant into a request queue's `head_valid`, that flag into the queue's
+//! word registers), which serves all six regions from one place.
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;

@@ -470,7 +470,8 @@ pub fn write(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
 /// Hilbert order, R = 1024 rays (angle set), `T_c` = [`HEADLINE_TC`] shared by all PEs, a cache of
 /// [`HEADLINE_CACHE`] patches per PE (a quarter of the scene: the cache's 256-line index with
 /// the host memory map that leaves lines 250 … 255 unused, `shelling_testbench::pe::MemoryMap`),
-/// sources dealt in blocks of even work ([`Deal::Blocks`]).
+/// sources dealt in blocks of even work ([`Deal::Blocks`]), the patches placed in the caches'
+/// lines by the host ([`Placement::Lines`]).
 pub const HEADLINE_TC: u32 = 16;
 pub const HEADLINE_CACHE: u32 = 250;
 
