@@ -204,7 +204,7 @@ pub(crate) fn memory_map(lines: Option<u32>, patches: usize) -> Result<MemoryMap
 
 /// Hits checked against the model of the mapped commands, with their addresses turned back into
 /// patch numbers (the model names only addresses that hold a patch).
-fn patch_numbers(map: &MemoryMap, hits: Vec<Option<Nearest>>) -> Vec<Option<Nearest>> {
+pub(crate) fn patch_numbers(map: &MemoryMap, hits: Vec<Option<Nearest>>) -> Vec<Option<Nearest>> {
     hits.into_iter()
         .map(|h| h.map(|n| Nearest { id: map.patch(n.id).expect("a checked hit names a patch"), ..n }))
         .collect()

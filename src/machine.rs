@@ -25,7 +25,9 @@
 //! A part sees the patches of its own angular range, so each PE's cache holds a slice of the
 //! scene's directions rather than a region of it.
 
-use crate::cosim::{check_counts, check_hits, memory_map, with_vcd, CosimError, Engine, VcdWindow};
+use crate::cosim::{
+    check_counts, check_hits, memory_map, patch_numbers, with_vcd, CosimError, Engine, VcdWindow,
+};
 use crate::geom::Segment;
 use crate::limits::{check_range, MAX_TC};
 use crate::rays::{Bundle, RaySet};
@@ -35,6 +37,7 @@ use crate::trace::{Method, ShellParams};
 use crate::workstream::commands;
 use serde::Serialize;
 use shelling_hdl::arbiter::MAX_PES;
+use shelling_hdl::formats::Nearest;
 use shelling_hdl::machine::Machine;
 use shelling_testbench::machine::{run_queues, Composed, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
@@ -418,6 +421,10 @@ pub struct MachineRun {
     /// Each source's latency: from its first part's setup to its last part's readout, in the
     /// order given.
     pub source_cycles: Vec<u64>,
+    /// Every work item's hits, in the order given, each ray's nearest patch by its number in the
+    /// scene (not in the JSON).
+    #[serde(skip)]
+    pub hits: Vec<Vec<Option<Nearest>>>,
 }
 
 impl MachineRun {
@@ -560,6 +567,7 @@ fn run_on<M: MachineSim>(
         memory_loads: memory.loads(),
         memory_busy_cycles: memory.busy_cycles(),
         source_cycles: vec![0; sources],
+        hits: vec![Vec::new(); items.len()],
         ..Default::default()
     };
     let mut span = vec![(u64::MAX, 0u64); sources];
@@ -574,6 +582,7 @@ fn run_on<M: MachineSim>(
                 CosimError::Mismatch(format!("source {} part {} on PE {p}: {e}", i / parts, i % parts))
             })?;
             queue_model = queue_model.plus(model);
+            m.hits[i] = patch_numbers(&map, t.hits.clone());
             let c = &t.counters;
             let s = &mut span[i / parts];
             *s = (s.0.min(t.start), s.1.max(t.end));

@@ -6,6 +6,7 @@ use clap::{ArgGroup, Args, ValueEnum};
 use shelling::arith::Arith;
 use shelling::cosim::{CosimConfig, Engine};
 use shelling::limits::{self, check_range, check_range_for};
+use shelling::machine::{Deal, MachineConfig, Placement};
 use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
 use shelling::radiosity::matrix::{self, MatrixFile};
 use shelling::radiosity::on_pe::{self, PeTotals, PE_RAY_MEMORY};
@@ -15,6 +16,7 @@ use shelling::run::GriddedScene;
 use shelling::scene::{self, RoomSpec, Scene};
 use shelling::staged::Staged;
 use shelling::trace::Method;
+use shelling_hdl::arbiter::MAX_PES;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
@@ -324,10 +326,16 @@ pub struct RadiosityArgs {
     /// With --on-pe: the PE's simulator (auto: Verilator where installed).
     #[arg(long, value_enum, default_value_t = Engine::Auto, requires = "on_pe")]
     engine: Engine,
-    /// With --on-pe: the clock rate of the solve's time, in MHz (default: the PE's median
-    /// post-route rate on ECP5 over the placement seeds of hdl/fpga/ecp5.md).
-    #[arg(long, default_value_t = on_pe::pe_clock_mhz(), requires = "on_pe")]
-    clock_mhz: f64,
+    /// With --on-pe and --solver full: compute the whole matrix on the parallel machine of this
+    /// many PEs (1 to 8), the bundles back to back on each PE, its cache warm between them, the
+    /// PEs sharing one host memory; without it, each bundle on a fresh PE.
+    #[arg(long, requires = "on_pe", allow_negative_numbers = true)]
+    pes: Option<usize>,
+    /// With --on-pe: the clock rate of the solve's time, in MHz (default: the median post-route
+    /// rate on ECP5 of the PE, hdl/fpga/ecp5.md, or with --pes of the machine of that many PEs
+    /// where it was measured, hdl/fpga/ecp5-machine.md, else the PE's).
+    #[arg(long, requires = "on_pe")]
+    clock_mhz: Option<f64>,
     /// Print the solution as JSON.
     #[arg(long)]
     json: bool,
@@ -357,8 +365,10 @@ struct HardwareJson {
     cache: Option<u32>,
     #[serde(flatten)]
     totals: PeTotals,
+    /// The machine's PEs (`--pes`), or none: each bundle on a fresh PE.
+    pes: Option<usize>,
     clock_mhz: f64,
-    /// The PE's cycles at `clock_mhz`.
+    /// The PE's (the machine's) cycles at `clock_mhz`.
     seconds: f64,
 }
 
@@ -392,8 +402,16 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         if let Some(c) = a.cache {
             limits::check_cache("--cache", c).map_err(anyhow::Error::msg)?;
         }
-        if !(a.clock_mhz.is_finite() && a.clock_mhz > 0.0 && a.clock_mhz <= 10_000.0) {
-            bail!("--clock-mhz must be a positive number up to 10000, got {}", a.clock_mhz);
+        if let Some(c) = a.clock_mhz.filter(|c| !(c.is_finite() && *c > 0.0 && *c <= 10_000.0)) {
+            bail!("--clock-mhz must be a positive number up to 10000, got {c}");
+        }
+        if let Some(n) = a.pes {
+            check_range("--pes", n, 1, MAX_PES).map_err(anyhow::Error::msg)?;
+            if a.solver != Solver::Full {
+                bail!(
+                    "--pes {n} needs --solver full: the machine computes the whole matrix before the solve"
+                );
+            }
         }
     }
     if let Some(p) = a.scene.as_deref() {
@@ -415,6 +433,8 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     check_depth(&a.tune, &prepared)?;
     let engine = a.engine.resolve(false);
     let config = CosimConfig { tc: a.tc, cache: a.cache, vcd: None, engine };
+    let clock_mhz =
+        a.clock_mhz.or_else(|| a.pes.and_then(on_pe::machine_clock_mhz)).unwrap_or_else(on_pe::pe_clock_mhz);
     let mut totals = PeTotals::default();
     let mut row = |k: usize| -> Result<Row> {
         Ok(if a.on_pe {
@@ -457,6 +477,29 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
                     }
                     m.rows
                 }
+                None if a.on_pe && a.pes.is_some() => {
+                    let machine = MachineConfig {
+                        pes: a.pes.unwrap_or(1),
+                        tc: a.tc,
+                        cache: a.cache,
+                        deal: Deal::Blocks,
+                        place: Placement::Index,
+                        engine,
+                        vcd: None,
+                    };
+                    let bar = progress_bar(
+                        prepared.scene.len() * params.origins,
+                        "bundles on the machine",
+                        a.quiet,
+                    );
+                    let done = on_pe::all_rows_on_machine(&prepared, &params, &machine, |k, _| {
+                        bar.set_position(k as u64)
+                    });
+                    bar.finish_and_clear();
+                    let (rows, t) = done?;
+                    totals = t;
+                    rows
+                }
                 None if a.on_pe => {
                     let bar = progress_bar(prepared.scene.len(), "rows on the PE", a.quiet);
                     let done = on_pe::all_rows(&prepared, &params, &config, |k| bar.set_position(k as u64));
@@ -482,8 +525,9 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         tc: a.tc,
         cache: a.cache,
         totals,
-        clock_mhz: a.clock_mhz,
-        seconds: totals.cycles as f64 / (a.clock_mhz * 1e6),
+        pes: a.pes,
+        clock_mhz,
+        seconds: totals.cycles as f64 / (clock_mhz * 1e6),
     });
     if let Some(path) = &a.svg {
         let what = match a.solver {
@@ -539,7 +583,8 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     if let Some(h) = &hardware {
         say!(
             out,
-            "on the PE ({} simulation, T_c = {}, cache {}): {} bundles, {} PE cycles = {:.3} ms at {} MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's (the rest within the documented bound)",
+            "on {} ({} simulation, T_c = {}, cache {}): {} bundles, {} cycles = {:.3} ms at {} MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's (the rest within the documented bound)",
+            h.pes.map_or("the PE, each bundle on a fresh one".to_string(), |n| format!("the machine of {n} PE{}", if n == 1 { "" } else { "s" })),
             h.engine,
             h.tc,
             h.cache.map_or("off".to_string(), |c| format!("{c} patches")),

@@ -502,6 +502,44 @@ fn the_commands() {
     assert!(h["cycles"].as_u64().unwrap() > 0 && h["rows"].as_u64() == on_pe["rows"].as_u64(), "{h}");
     assert_eq!(h["tc"].as_u64(), Some(4));
 
+    // The whole matrix on the machine: the same rows (every hit the bit-true trace's), so the same
+    // solution, as each bundle on a fresh PE; the same tests; fewer cycles on three PEs sharing the
+    // memory, their caches warm from bundle to bundle.
+    let full = |pes: Option<&'static str>| {
+        let mut args = vec![
+            "radiosity",
+            "--scene",
+            scene,
+            "--solver",
+            "full",
+            "--rays",
+            "64",
+            "--origins",
+            "2",
+            "--on-pe",
+            "--tc",
+            "4",
+            "--cache",
+            "8",
+            "--json",
+            "--quiet",
+        ];
+        args.extend(pes.map(|n| ["--pes", n]).iter().flatten());
+        parse_json(&ok(&args), "radiosity --on-pe --solver full")
+    };
+    let (fresh, machine) = (full(None), full(Some("3")));
+    assert_eq!(
+        fresh["patches"], machine["patches"],
+        "the machine's solution, then each bundle's on a fresh PE"
+    );
+    let (hf, hm) = (&fresh["hardware"], &machine["hardware"]);
+    assert_eq!(
+        (hf["tests"].clone(), hf["golden_agree"].clone()),
+        (hm["tests"].clone(), hm["golden_agree"].clone())
+    );
+    assert_eq!((hf["pes"].as_u64(), hm["pes"].as_u64(), hm["bundles"].as_u64()), (None, Some(3), Some(32)));
+    assert!(hm["cycles"].as_u64() < hf["cycles"].as_u64(), "machine {hm}, fresh PEs {hf}");
+
     // Errors name the option or the file.
     fails(&["scene", "gen", "--kind", "paper", "--width", "10"], &["--width", "--kind room"]);
     fails(&["scene", "gen", "--kind", "room", "--count", "10"], &["--count", "--kind paper"]);
@@ -512,6 +550,12 @@ fn the_commands() {
     );
     fails(&["radiosity", "--scene", scene, "--tolerance", "0"], &["--tolerance"]);
     fails(&["radiosity", "--scene", scene, "--on-pe", "--method", "brute"], &["--method brute"]);
+    fails(
+        &["radiosity", "--scene", scene, "--on-pe", "--solver", "full", "--pes", "9"],
+        &["--pes", "9", "1 and 8"],
+    );
+    fails(&["radiosity", "--scene", scene, "--on-pe", "--pes", "2"], &["--pes 2", "--solver full"]);
+    fails(&["radiosity", "--scene", scene, "--solver", "full", "--pes", "2"], &["--on-pe"]);
     fails(&["form-factors", "--scene", scene, "--source", "99"], &["99"]);
     fails(&["form-factors", "--scene", scene, "--source", "0", "--origins", "0"], &["--origins"]);
     fails(&["form-factors", "--scene", scene, "--rows", "5..3", "--out", path_arg(&a)], &["--rows 5..3"]);

@@ -4,9 +4,10 @@
 //! (rung 2, [`crate::agreement`]), and the row built from the PE's own hits. The PE's cycles add
 //! up over the solve.
 //!
-//! Each bundle runs on a fresh PE, so a patch cache starts cold for every bundle (a whole solve
-//! on one PE would keep it warm between the bundles of a row; the figures here are the upper
-//! bound).
+//! [`row`] and [`all_rows`] run each bundle on a fresh PE, so a patch cache starts cold for
+//! every bundle (the figures are an upper bound). [`all_rows_on_machine`] runs the whole matrix
+//! on the parallel machine of N PEs ([`crate::machine`]): the bundles back to back on each PE,
+//! its cache warm from one to the next, the PEs sharing one host memory.
 
 use super::form_factors::{bundles, FfError, FfParams, Row, RowBuilder};
 use crate::agreement;
@@ -33,6 +34,20 @@ pub fn pe_clock_mhz() -> f64 {
         .expect("hdl/fpga/ecp5-seeds.json holds the PE's median fmax on ECP5")
 }
 
+/// The committed post-route results of the machines (`cargo xtask fpga --blocks machine_N`).
+const MACHINE_FPGA_RESULTS: &str = include_str!("../../hdl/fpga/ecp5-machine-seeds.json");
+
+/// The median post-route clock rate of the machine of `pes` PEs on ECP5 LFE5U-85F-6 in
+/// `hdl/fpga/ecp5-machine-seeds.json`, if it was measured.
+pub fn machine_clock_mhz(pes: usize) -> Option<f64> {
+    let json: serde_json::Value = serde_json::from_str(MACHINE_FPGA_RESULTS).ok()?;
+    json["blocks"]
+        .as_array()?
+        .iter()
+        .find(|b| b["block"] == format!("machine_{pes}").as_str() && b["family"] == "ecp5")?["median_mhz"]
+        .as_f64()
+}
+
 /// The hardware's side of a solve: the sums over every bundle co-simulated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct PeTotals {
@@ -42,7 +57,8 @@ pub struct PeTotals {
     pub bundles: usize,
     /// Rays traced.
     pub rays: usize,
-    /// PE cycles, summed over the bundles.
+    /// PE cycles, summed over the bundles; on the machine, from its first setup to its last
+    /// readout.
     pub cycles: u64,
     /// Cycles the intersection unit tested a live ray.
     pub intersection_busy_cycles: u64,
@@ -81,6 +97,35 @@ impl From<TraceError> for OnPeError {
     }
 }
 
+/// `p` maps onto the PE: a technique with a hardware mapping, a bundle in its ray memory.
+fn check_params(p: &FfParams) -> Result<(), OnPeError> {
+    if p.method == Method::Brute {
+        return Err(OnPeError::Brute);
+    }
+    if p.rays > PE_RAY_MEMORY {
+        return Err(OnPeError::TooManyRays(p.rays));
+    }
+    Ok(())
+}
+
+/// `bundle` of source patch `k` scheduled by `p.method` on the bit-true backend, its trace
+/// checked against the `f64` golden model within the documented bound (rung 2); with the rays
+/// whose hit is the golden model's.
+fn scheduled_within_bound(
+    prepared: &GriddedScene,
+    k: usize,
+    bundle: &crate::rays::Bundle,
+    p: &FfParams,
+) -> Result<(crate::run::Scheduled, usize), OnPeError> {
+    let scheduled = prepared.schedule(p.method, bundle, &p.shells)?;
+    let golden = prepared.trace(p.method, bundle, &p.shells)?;
+    let rung2 = agreement::compare(&prepared.scene.segments, bundle, &golden, &scheduled.trace);
+    match rung2.beyond_bound().count() {
+        0 => Ok((scheduled, rung2.agree)),
+        rays => Err(OnPeError::BeyondBound { source_patch: k, rays }),
+    }
+}
+
 /// The row of source patch `k` from the PE's hits (`p.arith` is not read: the PE's arithmetic is
 /// the fixed point); the hardware's counts are added to `totals`.
 pub fn row(
@@ -90,22 +135,11 @@ pub fn row(
     config: &CosimConfig,
     totals: &mut PeTotals,
 ) -> Result<Row, OnPeError> {
-    if p.method == Method::Brute {
-        return Err(OnPeError::Brute);
-    }
-    if p.rays > PE_RAY_MEMORY {
-        return Err(OnPeError::TooManyRays(p.rays));
-    }
+    check_params(p)?;
     let mut builder = RowBuilder::new(prepared.scene.len(), p);
     for bundle in bundles(prepared, k, p)? {
-        let scheduled = prepared.schedule(p.method, &bundle, &p.shells)?;
+        let (scheduled, agree) = scheduled_within_bound(prepared, k, &bundle, p)?;
         let run = cosim::run(&scheduled, config, |_, _| {})?;
-        let golden = prepared.trace(p.method, &bundle, &p.shells)?;
-        let rung2 = agreement::compare(&prepared.scene.segments, &bundle, &golden, &scheduled.trace);
-        let beyond = rung2.beyond_bound().count();
-        if beyond > 0 {
-            return Err(OnPeError::BeyondBound { source_patch: k, rays: beyond });
-        }
         builder.add_patches(run.hits.iter().map(|h| h.map(|n| n.id as usize)));
         let h = &run.hardware;
         totals.bundles += 1;
@@ -115,10 +149,63 @@ pub fn row(
         totals.patch_loads += h.patch_loads;
         totals.cache_hits += h.cache_hits;
         totals.tests += h.tests;
-        totals.golden_agree += rung2.agree;
+        totals.golden_agree += agree;
     }
     totals.rows += 1;
     Ok(builder.finish(k))
+}
+
+/// Every row of the scene computed on the parallel machine of `config.pes` PEs: the rows'
+/// bundles, source after source in the scene's order, dealt as `config.deal` says to PEs that
+/// share one host memory, each PE's cache (if any) warm from bundle to bundle. Each bundle is
+/// checked as [`row`] checks it (the bit-true model by the machine's co-simulation, rung 2
+/// against the `f64` golden model on its bit-true trace), and the machine's hits must be that
+/// trace's: with `config.place` [`Placement::Lines`](crate::machine::Placement) two patches hit
+/// at one distance could come back as the other of the two, so a solve on the machine keeps each
+/// patch in its own slot (`config.place` is not read). `totals.cycles` is the machine's time;
+/// `progress(bundles done, bundles)`.
+pub fn all_rows_on_machine(
+    prepared: &GriddedScene,
+    p: &FfParams,
+    config: &crate::machine::MachineConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<(Vec<Row>, PeTotals), OnPeError> {
+    use crate::machine::{self, MachineConfig, Placement};
+    check_params(p)?;
+    let mut totals = PeTotals::default();
+    let mut work = Vec::new();
+    let mut of_row = Vec::new();
+    for k in 0..prepared.scene.len() {
+        for bundle in bundles(prepared, k, p)? {
+            let (scheduled, agree) = scheduled_within_bound(prepared, k, &bundle, p)?;
+            totals.bundles += 1;
+            totals.rays += bundle.len();
+            totals.golden_agree += agree;
+            work.push(scheduled);
+            of_row.push(k);
+        }
+    }
+    let config = MachineConfig { place: Placement::Index, vcd: None, ..config.clone() };
+    let run = machine::run(&work, &config, progress)?;
+    let mut builders: Vec<RowBuilder> =
+        (0..prepared.scene.len()).map(|_| RowBuilder::new(prepared.scene.len(), p)).collect();
+    for ((scheduled, hits), &k) in work.iter().zip(&run.hits).zip(&of_row) {
+        let traced = scheduled.trace.hits.iter().map(|h| h.map(|h| h.segment as usize));
+        if !hits.iter().map(|h| h.map(|n| n.id as usize)).eq(traced) {
+            return Err(OnPeError::Cosim(CosimError::Mismatch(format!(
+                "source patch {k}: the machine's hits are not the bit-true trace's"
+            ))));
+        }
+        builders[k].add_patches(hits.iter().map(|h| h.map(|n| n.id as usize)));
+    }
+    totals.rows = prepared.scene.len();
+    totals.cycles = run.cycles;
+    totals.intersection_busy_cycles = run.intersection_busy_cycles;
+    totals.patch_loads = run.patch_loads;
+    totals.cache_hits = run.cache_hits;
+    totals.tests = run.tests;
+    let rows = builders.into_iter().enumerate().map(|(k, b)| b.finish(k)).collect();
+    Ok((rows, totals))
 }
 
 /// Every row of the scene computed on the PE, in order, with the hardware's sums.
