@@ -331,6 +331,9 @@ pub struct RadiosityArgs {
     /// PEs sharing one host memory; without it, each bundle on a fresh PE.
     #[arg(long, requires = "on_pe", allow_negative_numbers = true)]
     pes: Option<usize>,
+    /// With --pes: where the host memory puts the patches for the caches (as `machine --place`).
+    #[arg(long, value_enum, default_value_t = Placement::Lines, requires = "pes")]
+    place: Placement,
     /// With --on-pe: the clock rate of the solve's time, in MHz (default: the median post-route
     /// rate on ECP5 of the PE, hdl/fpga/ecp5.md, or with --pes of the machine of that many PEs
     /// where it was measured, hdl/fpga/ecp5-machine.md, else the PE's).
@@ -483,7 +486,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
                         tc: a.tc,
                         cache: a.cache,
                         deal: Deal::Blocks,
-                        place: Placement::Index,
+                        place: a.place,
                         engine,
                         vcd: None,
                     };

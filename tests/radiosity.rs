@@ -502,9 +502,10 @@ fn the_commands() {
     assert!(h["cycles"].as_u64().unwrap() > 0 && h["rows"].as_u64() == on_pe["rows"].as_u64(), "{h}");
     assert_eq!(h["tc"].as_u64(), Some(4));
 
-    // The whole matrix on the machine: the same rows (every hit the bit-true trace's), so the same
-    // solution, as each bundle on a fresh PE; the same tests; fewer cycles on three PEs sharing the
-    // memory, their caches warm from bundle to bundle.
+    // The whole matrix on the machine: the same rows (here no tie between two patches at one
+    // distance goes to the other of the two under the placement), so the same solution, as each
+    // bundle on a fresh PE; the same tests; fewer cycles on three PEs sharing the memory, their
+    // caches warm from bundle to bundle.
     let full = |pes: Option<&'static str>| {
         let mut args = vec![
             "radiosity",
@@ -556,6 +557,7 @@ fn the_commands() {
     );
     fails(&["radiosity", "--scene", scene, "--on-pe", "--pes", "2"], &["--pes 2", "--solver full"]);
     fails(&["radiosity", "--scene", scene, "--solver", "full", "--pes", "2"], &["--on-pe"]);
+    fails(&["radiosity", "--scene", scene, "--on-pe", "--solver", "full", "--place", "index"], &["--pes"]);
     fails(&["form-factors", "--scene", scene, "--source", "99"], &["99"]);
     fails(&["form-factors", "--scene", scene, "--source", "0", "--origins", "0"], &["--origins"]);
     fails(&["form-factors", "--scene", scene, "--rows", "5..3", "--out", path_arg(&a)], &["--rows 5..3"]);

@@ -158,11 +158,11 @@ pub fn row(
 /// Every row of the scene computed on the parallel machine of `config.pes` PEs: the rows'
 /// bundles, source after source in the scene's order, dealt as `config.deal` says to PEs that
 /// share one host memory, each PE's cache (if any) warm from bundle to bundle. Each bundle is
-/// checked as [`row`] checks it (the bit-true model by the machine's co-simulation, rung 2
-/// against the `f64` golden model on its bit-true trace), and the machine's hits must be that
-/// trace's: with `config.place` [`Placement::Lines`](crate::machine::Placement) two patches hit
-/// at one distance could come back as the other of the two, so a solve on the machine keeps each
-/// patch in its own slot (`config.place` is not read). `totals.cycles` is the machine's time;
+/// checked as [`row`] checks it: the bit-true model by the machine's co-simulation, rung 2
+/// against the `f64` golden model on its bit-true trace. The machine's hits are that trace's but
+/// where `config.place` ([`Placement::Lines`](crate::machine::Placement)) gave the lower address
+/// to the other of two patches hit at one distance; such a bundle's hits, the machine's patches
+/// at the trace's distances, are checked by rung 2 again. `totals.cycles` is the machine's time;
 /// `progress(bundles done, bundles)`.
 pub fn all_rows_on_machine(
     prepared: &GriddedScene,
@@ -170,31 +170,45 @@ pub fn all_rows_on_machine(
     config: &crate::machine::MachineConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<(Vec<Row>, PeTotals), OnPeError> {
-    use crate::machine::{self, MachineConfig, Placement};
+    use crate::machine;
     check_params(p)?;
     let mut totals = PeTotals::default();
-    let mut work = Vec::new();
-    let mut of_row = Vec::new();
+    let (mut work, mut agrees, mut of_row) = (Vec::new(), Vec::new(), Vec::new());
     for k in 0..prepared.scene.len() {
-        for bundle in bundles(prepared, k, p)? {
+        for (j, bundle) in bundles(prepared, k, p)?.into_iter().enumerate() {
             let (scheduled, agree) = scheduled_within_bound(prepared, k, &bundle, p)?;
             totals.bundles += 1;
             totals.rays += bundle.len();
             totals.golden_agree += agree;
             work.push(scheduled);
-            of_row.push(k);
+            agrees.push(agree);
+            of_row.push((k, j));
         }
     }
-    let config = MachineConfig { place: Placement::Index, vcd: None, ..config.clone() };
-    let run = machine::run(&work, &config, progress)?;
+    let run = machine::run(&work, &crate::machine::MachineConfig { vcd: None, ..config.clone() }, progress)?;
     let mut builders: Vec<RowBuilder> =
         (0..prepared.scene.len()).map(|_| RowBuilder::new(prepared.scene.len(), p)).collect();
-    for ((scheduled, hits), &k) in work.iter().zip(&run.hits).zip(&of_row) {
-        let traced = scheduled.trace.hits.iter().map(|h| h.map(|h| h.segment as usize));
-        if !hits.iter().map(|h| h.map(|n| n.id as usize)).eq(traced) {
-            return Err(OnPeError::Cosim(CosimError::Mismatch(format!(
-                "source patch {k}: the machine's hits are not the bit-true trace's"
-            ))));
+    for (((scheduled, &agree), hits), &(k, j)) in work.iter().zip(&agrees).zip(&run.hits).zip(&of_row) {
+        let mut own = scheduled.trace.clone();
+        for (h, m) in own.hits.iter_mut().zip(hits) {
+            *h = match (*h, m) {
+                (Some(h), Some(m)) => Some(crate::geom::Hit { segment: u32::from(m.id), ..h }),
+                (None, None) => None,
+                _ => {
+                    return Err(OnPeError::Cosim(CosimError::Mismatch(format!(
+                        "source patch {k}: the machine hit a patch where the bit-true trace hit none, or none where it hit one"
+                    ))))
+                }
+            };
+        }
+        if own.hits != scheduled.trace.hits {
+            let bundle = &bundles(prepared, k, p)?[j];
+            let golden = prepared.trace(p.method, bundle, &p.shells)?;
+            let rung2 = agreement::compare(&prepared.scene.segments, bundle, &golden, &own);
+            if rung2.beyond_bound().count() > 0 {
+                return Err(OnPeError::BeyondBound { source_patch: k, rays: rung2.beyond_bound().count() });
+            }
+            totals.golden_agree = totals.golden_agree + rung2.agree - agree;
         }
         builders[k].add_patches(hits.iter().map(|h| h.map(|n| n.id as usize)));
     }
