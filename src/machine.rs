@@ -532,12 +532,7 @@ fn run_on<M: MachineSim>(
     let dealt = deal(&work, config.pes, config.deal);
     let map = match (config.cache, config.place) {
         (Some(lines), Placement::Lines) => {
-            let jobs = |i: usize| {
-                items[i]
-                    .1
-                    .iter()
-                    .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
-            };
+            let jobs = |i: usize| items[i].1.iter().filter_map(Command::job_id);
             let queues: Vec<Vec<Vec<u16>>> =
                 dealt.iter().map(|q| q.iter().map(|&i| jobs(i).collect()).collect()).collect();
             MemoryMap::placed(Some(lines), place_for_caches(patches.len(), lines as usize, &queues))
@@ -705,9 +700,7 @@ mod tests {
             .iter()
             .map(|s| {
                 let (_, _, cmds) = commands(&s.stream, &s.fixed).unwrap();
-                cmds.iter()
-                    .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
-                    .collect()
+                cmds.iter().filter_map(Command::job_id).collect()
             })
             .collect();
         for (pes, lines) in [(1, 64), (2, 100), (3, 128)] {

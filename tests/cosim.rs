@@ -174,7 +174,7 @@ fn a_cache_of_any_size_is_direct_mapped_on_the_patch_number_modulo_its_lines() {
         let mut cache = vec![None; lines as usize];
         let misses = cmds
             .iter()
-            .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
+            .filter_map(Command::job_id)
             .filter(|&id| cache[id as usize % lines as usize].replace(id) != Some(id))
             .count() as u64;
         let config = CosimConfig {

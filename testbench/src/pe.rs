@@ -35,6 +35,16 @@ pub enum Command {
     Retire { first: u16, count: u16 },
 }
 
+impl Command {
+    /// The patch a job loads; `None` for a sector or a retire.
+    pub fn job_id(&self) -> Option<u16> {
+        match *self {
+            Command::Job { id, .. } => Some(id),
+            _ => None,
+        }
+    }
+}
+
 /// The source: ray origin (Q11.6 world coordinates), normal and ray directions (Q2.16).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct PeSetup {

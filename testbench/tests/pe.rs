@@ -254,10 +254,7 @@ fn a_cache_flush_forgets_the_last_scene() -> Result<()> {
     board.check_all(fresh.into_iter().enumerate().map(|(i, h)| (i as u64, h)))?;
     board.finish()?;
     // Every id's first load after the flush misses.
-    let mut ids = cmds
-        .iter()
-        .filter_map(|c| if let Command::Job { id, .. } = c { Some(*id) } else { None })
-        .collect::<Vec<_>>();
+    let mut ids = cmds.iter().filter_map(Command::job_id).collect::<Vec<_>>();
     ids.sort_unstable();
     ids.dedup();
     assert!(k.memory_loads >= ids.len() as u64, "seed {seed:#x}: {k:?}");
