@@ -642,24 +642,48 @@ struct SolutionJson3 {
     ray_set: RaySet,
     method: &'static str,
     channels: Vec<ChannelJson>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    hardware: Option<Hardware3Json>,
+}
+
+/// `radiosity --on-pe --json` on an OBJ scene: the PE's side of the solve.
+#[derive(serde::Serialize)]
+struct Hardware3Json {
+    engine: &'static str,
+    /// The 2D technique of every sweep plane.
+    plane_method: Method,
+    tc: u32,
+    cache: Option<u32>,
+    #[serde(flatten)]
+    totals: shelling::d3::on_pe::Pe3Totals,
+    clock_mhz: f64,
+    /// The PE's cycles at `clock_mhz`.
+    seconds: f64,
 }
 
 /// `radiosity` on an OBJ scene (RADIOSITY.md, "In 3D"): the 3D form factors of every polygon
 /// and the 2D solvers in each colour channel; the options of 2D scenes only refused by name.
 fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
     use shelling::d3::form_factors::{self as ff3, Ff3Params};
+    use shelling::d3::on_pe as on_pe3;
     use shelling::d3::radiosity::{self as rad3, CHANNELS};
     use shelling::d3::trace::Method3;
     let two_d = [
-        ("--on-pe", a.on_pe),
         ("--matrix", a.matrix.is_some()),
         ("--arith fixed", a.ff.arith != Arith::Float),
         ("--svg", a.svg.is_some()),
     ];
     if let Some((option, _)) = two_d.iter().find(|(_, given)| *given) {
-        bail!("{option} belongs to 2D scenes: in 3D, radiosity traces every row with the 3D tracers in f64");
+        bail!(
+            "{option} belongs to 2D scenes: in 3D, radiosity traces every row with the 3D tracers in f64 \
+             (or, with --on-pe, its sweep planes on the PE)"
+        );
     }
-    let method = super::d3_cli::MethodArg::three_d(a.ff.method.as_ref(), Method3::Conventional)?;
+    if let Some(n) = a.pes {
+        bail!("--pes {n} belongs to 2D scenes: in 3D, --on-pe traces every sweep plane on a fresh PE");
+    }
+    let default_method = if a.on_pe { Method3::Sweep } else { Method3::Conventional };
+    let method = super::d3_cli::MethodArg::three_d(a.ff.method.as_ref(), default_method)?;
     let rays = a.ff.rays.unwrap_or(ff3::DEFAULT_RAYS);
     check_range("--rays", rays, 1, shelling::d3::hemisphere::MAX_HEMISPHERE_RAYS)
         .map_err(anyhow::Error::msg)?;
@@ -673,15 +697,25 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         method,
         shells: super::d3_cli::polar_params(&a.tune)?,
     };
+    if a.on_pe {
+        on_pe3::check_params(&params)?;
+    }
+    let config = CosimConfig { tc: a.tc, cache: a.cache, vcd: None, engine: a.engine.resolve(false) };
     let name = path.display().to_string();
     // A scene that cannot be solved is refused before any row is traced.
     rad3::check(&scene, &name)?;
     let n = scene.polygons.len();
+    let mut totals = on_pe3::Pe3Totals::default();
     let solution = match a.solver {
         Solver::Progressive => {
             let bar = progress_bar(n, "rows", a.quiet);
             let s = rad3::progressive(&scene, &name, a.tolerance, a.max_steps, |k| {
-                let r = ff3::row(&scene, &grid, k, &params).map_err(anyhow::Error::from);
+                let r = match a.on_pe {
+                    true => {
+                        on_pe3::row(&scene, k, &params, &config, &mut totals).map_err(anyhow::Error::from)
+                    }
+                    false => ff3::row(&scene, &grid, k, &params).map_err(anyhow::Error::from),
+                };
                 bar.inc(1);
                 r
             });
@@ -690,11 +724,27 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         }
         Solver::Full => {
             let bar = progress_bar(n, "rows", a.quiet);
-            let rows = ff3::rows(&scene, &grid, 0..n, &params, || bar.inc(1));
+            let rows = match a.on_pe {
+                true => on_pe3::rows(&scene, 0..n, &params, &config, || bar.inc(1)).map(|(rows, t)| {
+                    totals = t;
+                    rows
+                })?,
+                false => ff3::rows(&scene, &grid, 0..n, &params, || bar.inc(1))?,
+            };
             bar.finish_and_clear();
-            rad3::full(&scene, &name, &rows?, a.tolerance, a.max_steps)?
+            rad3::full(&scene, &name, &rows, a.tolerance, a.max_steps)?
         }
     };
+    let clock_mhz = a.clock_mhz.unwrap_or_else(on_pe::pe_clock_mhz);
+    let hardware = a.on_pe.then(|| Hardware3Json {
+        engine: config.engine.name(),
+        plane_method: on_pe3::PLANE_METHOD,
+        tc: a.tc,
+        cache: a.cache,
+        totals,
+        clock_mhz,
+        seconds: totals.pe.cycles as f64 / (clock_mhz * 1e6),
+    });
     let mut out = Out::new();
     if a.json {
         let json = SolutionJson3 {
@@ -725,6 +775,7 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
                     escaped: s.escaped,
                 })
                 .collect(),
+            hardware,
         };
         say!(out, "{}", serde_json::to_string_pretty(&json)?);
         return out.flush();
@@ -746,6 +797,29 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
             s.emitted,
             s.absorbed,
             s.escaped
+        );
+    }
+    if let Some(h) = &hardware {
+        let t = &h.totals;
+        say!(
+            out,
+            "on the PE, each sweep plane on a fresh one ({} simulation, T_c = {}, cache {}): {} planes of {} \
+             bundles, {} cycles = {:.3} ms at {} MHz; every hit equals the bit-true model's, {} of {} rays the \
+             f64 golden model's of the slices; {} host tests of polygons parallel to a plane; {} of {} rays hit \
+             the 3D brute force's polygon",
+            h.engine,
+            h.tc,
+            h.cache.map_or("off".to_string(), |c| format!("{c} patches")),
+            t.pe.bundles,
+            t.origins,
+            t.pe.cycles,
+            h.seconds * 1e3,
+            h.clock_mhz,
+            t.pe.golden_agree,
+            t.pe.rays,
+            t.host_tests,
+            t.brute_agree,
+            t.origins * rays
         );
     }
     say!(out, "{:>8}{:>14}{:>14}{:>14}{:>14}", "polygon", "B", "r", "g", "b");

@@ -156,7 +156,16 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     f(&["--rows", "0..2", "--out", "x.json"], &["--rows", "2D"]);
     f(&["--source", "1", "--method", "deterministic"], &["--method deterministic", "2D"]);
     fails(&["cosim", "--scene", CORNELL, "--source", "1"], &["--scene", "3D", "2D"]);
-    fails(&["radiosity", "--scene", CORNELL, "--on-pe"], &["--on-pe", "2D scenes"]);
+    fails(
+        &["radiosity", "--scene", CORNELL, "--on-pe", "--method", "polar"],
+        &["--method polar", "--method sweep"],
+    );
+    fails(
+        &["radiosity", "--scene", CORNELL, "--on-pe", "--solver", "full", "--pes", "2"],
+        &["--pes 2", "2D scenes"],
+    );
+    fails(&["radiosity", "--scene", CORNELL, "--on-pe", "--tc", "0"], &["--tc", "between 1 and 1024"]);
+    fails(&["radiosity", "--scene", CORNELL, "--svg", "x.svg"], &["--svg", "2D scenes"]);
     fails(&["radiosity", "--scene", CORNELL, "--origins", "0"], &["--origins", "between 1 and 4096"]);
     // And the other way: a 3D value on a 2D scene.
     let dir = TempDir::new("cli3d-2d");
@@ -197,4 +206,31 @@ fn the_polar_sectors_height_changes_the_work_not_the_hits() {
     let (all, loads_all) = run("1048576");
     assert!(one == four && four == all, "the height of a polar sector changed a hit");
     assert!(loads_one != loads_four || loads_four != loads_all, "--phi-cells changed nothing: {loads_one}");
+}
+
+#[test]
+fn radiosity_of_an_obj_scene_on_the_pe() {
+    // The closed room, one origin per polygon and 256 rays: every sweep plane co-simulated,
+    // every hit checked; the solution is the software sweep's up to the rays that differ.
+    let args =
+        ["radiosity", "--scene", ROOM, "--origins", "1", "--rays", "256", "--solver", "full", "--json"];
+    let pe = json(&[&args[..], &["--on-pe", "--tc", "4", "--cache", "16"]].concat());
+    let sw = json(&[&args[..], &["--method", "sweep"]].concat());
+    let h = &pe["hardware"];
+    assert_eq!(h["plane_method"], "deterministic");
+    assert_eq!((h["tc"].as_u64(), h["cache"].as_u64()), (Some(4), Some(16)));
+    let polygons = pe["patches"].as_array().unwrap().len() as u64;
+    // 256 rays = 32 x 8: 16 planes of 16 rays from each polygon's one origin.
+    assert_eq!(h["origins"].as_u64(), Some(polygons));
+    assert_eq!(h["bundles"].as_u64(), Some(16 * polygons));
+    assert_eq!(h["rays"].as_u64(), Some(256 * polygons));
+    assert!(h["cycles"].as_u64().unwrap() > h["tests"].as_u64().unwrap());
+    assert!(h["brute_agree"].as_u64().unwrap() as f64 >= 0.999 * 256.0 * polygons as f64, "{h}");
+    assert!(sw.get("hardware").is_none());
+    for (a, b) in pe["patches"].as_array().unwrap().iter().zip(sw["patches"].as_array().unwrap()) {
+        let (a, b) = (a["radiosity"].as_f64().unwrap(), b["radiosity"].as_f64().unwrap());
+        assert!((a - b).abs() <= 1e-2 * b.abs().max(1e-9), "{a} against the software's {b}");
+    }
+    let text = ok(&[&args[..args.len() - 1], &["--on-pe", "--quiet"]].concat());
+    assert!(text.contains("on the PE, each sweep plane on a fresh one"), "{text}");
 }

@@ -144,3 +144,66 @@ fn every_tracer_gives_the_same_rows() {
         }
     }
 }
+
+/// `rays` cosine rays from `origins` origins by the sweep technique.
+fn sweep(rays: usize, origins: usize) -> Ff3Params {
+    Ff3Params { rays, origins, method: Method3::Sweep, ..Ff3Params::default() }
+}
+
+#[test]
+fn rows_on_the_pe_are_the_sweeps_rows() {
+    use shelling::cosim::CosimConfig;
+    use shelling::d3::on_pe::{self, Pe3Totals};
+    // The closed cube: no ray meets an edge within rounding, so every ray's polygon on the PE
+    // is the 3D brute force's and the row is the software's, bit for bit.
+    let cube = closed3d::cube();
+    let p = sweep(1024, 3);
+    let mut t = Pe3Totals::default();
+    let pe = on_pe::row(&cube, 0, &p, &CosimConfig::default(), &mut t).unwrap();
+    assert_eq!(pe, row_with(&cube, 0, &p));
+    assert!((pe.sum() - 1.0).abs() < 1e-12);
+    assert_eq!((t.origins, t.pe.bundles, t.pe.rays), (3, 3 * 32, 3 * 1024), "64 x 16 rays: 32 planes of 32");
+    assert_eq!((t.brute_agree, t.pe.golden_agree, t.pe.rows), (3 * 1024, 3 * 1024, 1));
+    assert!(t.pe.tests >= 3 * 1024 && t.pe.cycles > t.pe.tests && t.pe.patch_loads > 0, "{t:?}");
+    // The Cornell box, a light's row and a block's: where a ray's polygon differs from the
+    // software's (a ray within rounding of an edge), its weight moves from one entry to
+    // another, so the rows differ by at most twice the weight of those rays.
+    let cornell = shelling::d3::obj::load(std::path::Path::new("scenes/cornell_box.obj")).unwrap();
+    let p = sweep(4096, 2);
+    for k in [0, cornell.polygons.len() - 1] {
+        let mut t = Pe3Totals::default();
+        let pe = on_pe::row(&cornell, k, &p, &CosimConfig::default(), &mut t).unwrap();
+        let sw = row_with(&cornell, k, &p);
+        let moved = (2 * 4096 - t.brute_agree) as f64 / (2.0 * 4096.0);
+        let diff: f64 = (0..cornell.polygons.len()).map(|j| (pe.get(j) - sw.get(j)).abs()).sum();
+        assert!(t.brute_agree as f64 >= 0.999 * 2.0 * 4096.0, "row {k}: {t:?}");
+        assert!(
+            diff <= 2.0 * moved + 1e-12,
+            "row {k}: the rows differ by {diff}, {moved} of the weight moved"
+        );
+        assert!(!pe.entries.is_empty());
+    }
+}
+
+#[test]
+fn a_plane_fits_the_datapath_at_the_largest_power_of_two_scale() {
+    use shelling::d3::on_pe::plane_scale;
+    use shelling_hdl::formats::WORLD_SPAN;
+    for scene in [closed3d::cube(), closed3d::opposed(2.0, 0.5, 1.0)] {
+        for o in [glam::DVec3::ZERO, glam::DVec3::new(0.5, 0.5, 0.0)] {
+            let s = plane_scale(&scene, o);
+            let r = scene
+                .polygons
+                .iter()
+                .flat_map(|p| &p.vertices)
+                .map(|v| (*v - o).length())
+                .fold(0.0, f64::max);
+            assert_eq!(s.log2().fract(), 0.0, "{s} is a power of two");
+            assert!(r * s <= 0.45 * WORLD_SPAN && 2.0 * r * s > 0.45 * WORLD_SPAN, "r {r}, scale {s}");
+        }
+    }
+}
+
+fn row_with(scene: &Scene3, k: usize, p: &Ff3Params) -> Row {
+    form_factors::row(scene, &grid(scene), k, p).unwrap()
+}

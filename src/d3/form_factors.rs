@@ -206,7 +206,7 @@ pub fn point_row(
 }
 
 /// The row of `acc`, zeros left out.
-fn to_row(k: usize, acc: &[f64]) -> Row {
+pub(crate) fn to_row(k: usize, acc: &[f64]) -> Row {
     let entries = acc
         .iter()
         .enumerate()

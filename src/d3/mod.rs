@@ -37,6 +37,7 @@ pub mod gen;
 pub mod grid;
 pub mod hemisphere;
 pub mod obj;
+pub mod on_pe;
 pub mod polar;
 pub mod radiosity;
 pub mod scene;

@@ -94,8 +94,30 @@ pub fn slab(scene: &Scene3, o: DVec3) -> f64 {
     64.0 * f64::EPSILON * (scale + far)
 }
 
-/// The planes of `bundle` (a hemisphere set's, with an even number of Θ-bands) over `scene`.
+/// What a polygon's segment in a plane is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Slicing {
+    /// The extent of its registration polygon within the slab `|h| ≤ τ` ([`slab`]): a superset
+    /// of every point the hit rule accepts, for a tracer whose hits are decided in 3D.
+    Registration,
+    /// The polygon itself cut by the plane (`h = 0`): a ray of the plane hits the segment exactly
+    /// where it hits the polygon, so a 2D tracer's hit on the slices is the 3D hit (up to
+    /// rounding); what the 2D hardware traces ([`super::on_pe`]).
+    Exact,
+}
+
+/// The planes of `bundle` (a hemisphere set's, with an even number of Θ-bands) over `scene`,
+/// the polygons sliced by their registration polygons ([`Slicing::Registration`]).
 pub fn planes(scene: &Scene3, bundle: &Bundle3) -> Result<Vec<SweepPlane>, Trace3Error> {
+    planes_with(scene, bundle, Slicing::Registration)
+}
+
+/// The planes of `bundle` over `scene`, the polygons sliced as `slicing` says.
+pub fn planes_with(
+    scene: &Scene3,
+    bundle: &Bundle3,
+    slicing: Slicing,
+) -> Result<Vec<SweepPlane>, Trace3Error> {
     let layout = bundle.layout_for(Method3::Sweep)?;
     if !layout.n_theta.is_multiple_of(2) {
         return Err(Trace3Error::OddBands(layout.n_theta));
@@ -103,9 +125,13 @@ pub fn planes(scene: &Scene3, bundle: &Bundle3) -> Result<Vec<SweepPlane>, Trace
     let src = &bundle.source;
     let pass: Vec<usize> =
         (0..scene.polygons.len()).filter(|&k| screen(src, k, &scene.polygons[k]) == Screen3::Pass).collect();
-    let regs: Vec<RegistrationPolygon> =
-        pass.iter().map(|&k| RegistrationPolygon::new(&scene.polygons[k])).collect();
-    let tau = slab(scene, src.origin);
+    let (regs, tau): (Vec<Vec<DVec3>>, f64) = match slicing {
+        Slicing::Registration => (
+            pass.iter().map(|&k| RegistrationPolygon::new(&scene.polygons[k]).vertices).collect(),
+            slab(scene, src.origin),
+        ),
+        Slicing::Exact => (pass.iter().map(|&k| scene.polygons[k].vertices.clone()).collect(), 0.0),
+    };
     let half = layout.n_theta / 2;
     let mut out = Vec::with_capacity(half);
     for band in 0..half {
@@ -138,7 +164,7 @@ pub fn planes(scene: &Scene3, bundle: &Bundle3) -> Result<Vec<SweepPlane>, Trace
         let mut direct = Vec::new();
         for (q, &k) in pass.iter().enumerate() {
             let p = &scene.polygons[k];
-            let v = &regs[q].vertices;
+            let v = &regs[q];
             let h: Vec<f64> = v.iter().map(|x| (*x - src.origin).dot(m)).collect();
             let (hlo, hhi) =
                 h.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
@@ -150,7 +176,7 @@ pub fn planes(scene: &Scene3, bundle: &Bundle3) -> Result<Vec<SweepPlane>, Trace
                 direct.push(k);
                 continue;
             }
-            // The registration polygon within the slab |h| ≤ τ, along the line it meets.
+            // The (registration) polygon within the slab |h| ≤ τ, along the line it meets.
             let dir = crate::geom::perp(n2).normalize();
             let (mut slo, mut shi) = (f64::INFINITY, f64::NEG_INFINITY);
             let mut take = |x: DVec3| {

@@ -321,7 +321,7 @@ macro_rules! on_v3 {
 }
 
 /// [`brute`] with the scene's polygons already prepared.
-fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
+pub(crate) fn brute_with(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3 {
     on_v3!(brute_body(scene: &Scene3, facets: &Facets, bundle: &Bundle3) -> Trace3)
 }
 

@@ -70,6 +70,20 @@ pub struct PeTotals {
     pub golden_agree: usize,
 }
 
+impl std::ops::AddAssign for PeTotals {
+    fn add_assign(&mut self, o: PeTotals) {
+        self.rows += o.rows;
+        self.bundles += o.bundles;
+        self.rays += o.rays;
+        self.cycles += o.cycles;
+        self.intersection_busy_cycles += o.intersection_busy_cycles;
+        self.patch_loads += o.patch_loads;
+        self.cache_hits += o.cache_hits;
+        self.tests += o.tests;
+        self.golden_agree += o.golden_agree;
+    }
+}
+
 /// What keeps a row from being computed on the PE.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum OnPeError {
