@@ -437,10 +437,17 @@ impl MachineRun {
     }
 }
 
+/// Most patches the host memory of a machine run holds, the scenes of its work items together:
+/// the 16-bit patch ids (a cache of lines not a power of two spreads them further, [`MemoryMap`]).
+pub const MAX_HOST_PATCHES: usize = 1 << shelling_hdl::formats::ID_BITS;
+
 /// Runs `schedules` (work items of one scene, as [`schedule_sources`] makes them for
 /// `config.deal`: sources in the order to deal them, each in [`Deal::parts`] parts) on the
 /// machine of `config`; `progress(items done, items)` after each item's readout. Every item's
-/// hits and counters are checked against the bit-true model of its commands.
+/// hits and counters are checked against the bit-true model of its commands. Items of other
+/// scenes (a 3D bundle's sweep planes, [`crate::d3::on_pe`]) are each a whole source: their
+/// scenes follow the first item's in the host memory, at most [`MAX_HOST_PATCHES`] patches in
+/// all, and each item's hits name its own scene's patches.
 pub fn run(
     schedules: &[Scheduled],
     config: &MachineConfig,
@@ -510,18 +517,39 @@ fn run_on<M: MachineSim>(
         )));
     }
     let mut items: Vec<(PeSetup, Vec<Command>)> = Vec::with_capacity(schedules.len());
-    let (_, patches, _) = commands(&first.stream, &first.fixed)?;
-    // Checked before the work is modelled: a bad size is named at once.
-    let plain = memory_map(config.cache, patches.len())?;
+    // The host memory: the first item's scene, and after it every other scene an item names
+    // (the planes of a 3D bundle, `crate::d3::on_pe`), each item's patch numbers offset by where
+    // its scene starts (`base`).
+    let (_, mut patches, _) = commands(&first.stream, &first.fixed)?;
+    let first_scene = patches.len();
+    let (mut base, mut last_scene) = (Vec::with_capacity(schedules.len()), 0);
     for s in schedules {
-        let (setup, p, cmds) = commands(&s.stream, &s.fixed)?;
-        if p != patches {
-            return Err(CosimError::Config(
-                "the sources' scenes differ in fixed point: a machine's host memory holds one scene".into(),
-            ));
+        let (setup, p, mut cmds) = commands(&s.stream, &s.fixed)?;
+        let at = if p[..] == patches[..first_scene] {
+            0
+        } else if p[..] == patches[last_scene..] {
+            last_scene
+        } else {
+            last_scene = patches.len();
+            patches.extend_from_slice(&p);
+            last_scene
+        };
+        if patches.len() > MAX_HOST_PATCHES {
+            return Err(CosimError::Config(format!(
+                "the work items' scenes hold {} patches together, more than the host memory's {MAX_HOST_PATCHES}",
+                patches.len()
+            )));
         }
+        for c in &mut cmds {
+            if let Command::Job { id, .. } = c {
+                *id += at as u16;
+            }
+        }
+        base.push(at);
         items.push((setup, cmds));
     }
+    // Checked before the work is modelled: a bad size is named at once.
+    let plain = memory_map(config.cache, patches.len())?;
     let sources = items.len() / parts;
     // The work that weighs each source in the deal, from the bit-true model of its commands
     // (the tests do not depend on where the patches are).
@@ -577,7 +605,10 @@ fn run_on<M: MachineSim>(
                 CosimError::Mismatch(format!("source {} part {} on PE {p}: {e}", i / parts, i % parts))
             })?;
             queue_model = queue_model.plus(model);
-            m.hits[i] = patch_numbers(&map, t.hits.clone());
+            m.hits[i] = patch_numbers(&map, t.hits.clone())
+                .into_iter()
+                .map(|h| h.map(|n| Nearest { id: n.id - base[i] as u16, ..n }))
+                .collect();
             let c = &t.counters;
             let s = &mut span[i / parts];
             *s = (s.0.min(t.start), s.1.max(t.end));

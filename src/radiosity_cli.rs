@@ -331,9 +331,11 @@ pub struct RadiosityArgs {
     /// PEs sharing one host memory; without it, each bundle on a fresh PE.
     #[arg(long, requires = "on_pe", allow_negative_numbers = true)]
     pes: Option<usize>,
-    /// With --pes: where the host memory puts the patches for the caches (as `machine --place`).
-    #[arg(long, value_enum, default_value_t = Placement::Lines, requires = "pes")]
-    place: Placement,
+    /// With --pes: where the host memory puts the patches for the caches (as `machine --place`;
+    /// default lines). 2D scenes only: a 3D solve's slices are new patches in every plane and
+    /// stay at their index.
+    #[arg(long, value_enum, requires = "pes")]
+    place: Option<Placement>,
     /// With --on-pe: the clock rate of the solve's time, in MHz (default: the median post-route
     /// rate on ECP5 of the PE, hdl/fpga/ecp5.md, or with --pes of the machine of that many PEs
     /// where it was measured, hdl/fpga/ecp5-machine.md, else the PE's).
@@ -486,7 +488,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
                         tc: a.tc,
                         cache: a.cache,
                         deal: Deal::Blocks,
-                        place: a.place,
+                        place: a.place.unwrap_or(Placement::Lines),
                         engine,
                         vcd: None,
                     };
@@ -654,6 +656,8 @@ struct Hardware3Json {
     plane_method: Method,
     tc: u32,
     cache: Option<u32>,
+    /// The machine's PEs (`--pes`), or none: each plane on a fresh PE.
+    pes: Option<usize>,
     #[serde(flatten)]
     totals: shelling::d3::on_pe::Pe3Totals,
     clock_mhz: f64,
@@ -679,8 +683,11 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
              (or, with --on-pe, its sweep planes on the PE)"
         );
     }
-    if let Some(n) = a.pes {
-        bail!("--pes {n} belongs to 2D scenes: in 3D, --on-pe traces every sweep plane on a fresh PE");
+    if let Some(p) = a.place {
+        bail!(
+            "--place {} belongs to 2D scenes: in 3D, every sweep plane's slices are new patches and stay at their index",
+            p.to_possible_value().expect("a value").get_name()
+        );
     }
     let default_method = if a.on_pe { Method3::Sweep } else { Method3::Conventional };
     let method = super::d3_cli::MethodArg::three_d(a.ff.method.as_ref(), default_method)?;
@@ -724,20 +731,40 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         }
         Solver::Full => {
             let bar = progress_bar(n, "rows", a.quiet);
-            let rows = match a.on_pe {
-                true => on_pe3::rows(&scene, 0..n, &params, &config, || bar.inc(1)).map(|(rows, t)| {
+            let rows = match (a.on_pe, a.pes) {
+                (true, Some(pes)) => {
+                    let machine = MachineConfig {
+                        pes,
+                        tc: a.tc,
+                        cache: a.cache,
+                        deal: Deal::Blocks,
+                        place: Placement::Index,
+                        engine: config.engine,
+                        vcd: None,
+                    };
+                    let done =
+                        on_pe3::rows_on_machine(&scene, &params, &machine, |k, _| bar.set_position(k as u64));
+                    let (rows, t) = done?;
                     totals = t;
                     rows
-                })?,
-                false => ff3::rows(&scene, &grid, 0..n, &params, || bar.inc(1))?,
+                }
+                (true, None) => {
+                    on_pe3::rows(&scene, 0..n, &params, &config, || bar.inc(1)).map(|(rows, t)| {
+                        totals = t;
+                        rows
+                    })?
+                }
+                (false, _) => ff3::rows(&scene, &grid, 0..n, &params, || bar.inc(1))?,
             };
             bar.finish_and_clear();
             rad3::full(&scene, &name, &rows, a.tolerance, a.max_steps)?
         }
     };
-    let clock_mhz = a.clock_mhz.unwrap_or_else(on_pe::pe_clock_mhz);
+    let clock_mhz =
+        a.clock_mhz.or_else(|| a.pes.and_then(on_pe::machine_clock_mhz)).unwrap_or_else(on_pe::pe_clock_mhz);
     let hardware = a.on_pe.then(|| Hardware3Json {
         engine: config.engine.name(),
+        pes: a.pes,
         plane_method: on_pe3::PLANE_METHOD,
         tc: a.tc,
         cache: a.cache,
@@ -803,10 +830,13 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         let t = &h.totals;
         say!(
             out,
-            "on the PE, each sweep plane on a fresh one ({} simulation, T_c = {}, cache {}): {} planes of {} \
-             bundles, {} cycles = {:.3} ms at {} MHz; every hit equals the bit-true model's, {} of {} rays the \
-             f64 golden model's of the slices; {} host tests of polygons parallel to a plane; {} of {} rays hit \
-             the 3D brute force's polygon",
+            "on {} ({} simulation, T_c = {}, cache {}): {} planes of {} bundles, {} cycles = {:.3} ms at {} \
+             MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's of the slices; {} \
+             host tests of polygons parallel to a plane; {} of {} rays hit the 3D brute force's polygon",
+            h.pes.map_or("the PE, each sweep plane on a fresh one".to_string(), |n| format!(
+                "the machine of {n} PE{}, the sweep planes its sources",
+                if n == 1 { "" } else { "s" }
+            )),
             h.engine,
             h.tc,
             h.cache.map_or("off".to_string(), |c| format!("{c} patches")),

@@ -161,9 +161,10 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
         &["--method polar", "--method sweep"],
     );
     fails(
-        &["radiosity", "--scene", CORNELL, "--on-pe", "--solver", "full", "--pes", "2"],
-        &["--pes 2", "2D scenes"],
+        &["radiosity", "--scene", CORNELL, "--on-pe", "--solver", "full", "--pes", "2", "--place", "lines"],
+        &["--place lines", "2D scenes"],
     );
+    fails(&["radiosity", "--scene", CORNELL, "--on-pe", "--pes", "2"], &["--pes 2", "--solver full"]);
     fails(&["radiosity", "--scene", CORNELL, "--on-pe", "--tc", "0"], &["--tc", "between 1 and 1024"]);
     fails(&["radiosity", "--scene", CORNELL, "--svg", "x.svg"], &["--svg", "2D scenes"]);
     fails(&["radiosity", "--scene", CORNELL, "--origins", "0"], &["--origins", "between 1 and 4096"]);
@@ -233,4 +234,10 @@ fn radiosity_of_an_obj_scene_on_the_pe() {
     }
     let text = ok(&[&args[..args.len() - 1], &["--on-pe", "--quiet"]].concat());
     assert!(text.contains("on the PE, each sweep plane on a fresh one"), "{text}");
+    // On the machine of two PEs: the same rows, so the same solution, in the machine's cycles.
+    let m = json(&[&args[..], &["--on-pe", "--tc", "4", "--cache", "16", "--pes", "2"]].concat());
+    assert_eq!(m["patches"], pe["patches"]);
+    assert_eq!(m["hardware"]["pes"].as_u64(), Some(2));
+    assert_eq!(m["hardware"]["bundles"], h["bundles"]);
+    assert_eq!(m["hardware"]["tests"], h["tests"]);
 }

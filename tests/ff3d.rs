@@ -186,6 +186,50 @@ fn rows_on_the_pe_are_the_sweeps_rows() {
 }
 
 #[test]
+fn rows_on_the_machine_are_the_rows_on_fresh_pes() {
+    use shelling::cosim::{CosimConfig, Engine};
+    use shelling::d3::on_pe::{self, On3Error};
+    use shelling::machine::{Deal, MachineConfig, Placement};
+    // Every row of the closed cube on a machine of two PEs sharing a host memory at T_c = 4, in
+    // one machine run and in batches of at most 100 slices (a bundle's 32 planes hold 96): the
+    // rows of the PEs one plane at a time, bit for bit, with as many planes, rays and agreeing
+    // rays; the machine's cycles are its own.
+    let cube = closed3d::cube();
+    let p = sweep(1024, 2);
+    let pe = CosimConfig { tc: 4, cache: Some(16), ..CosimConfig::default() };
+    let (fresh, ft) = on_pe::rows(&cube, 0..6, &p, &pe, || {}).unwrap();
+    let machine = MachineConfig {
+        pes: 2,
+        tc: 4,
+        cache: Some(16),
+        deal: Deal::Blocks,
+        place: Placement::Lines,
+        engine: Engine::Auto.resolve(false),
+        vcd: None,
+    };
+    let (whole, wt) = on_pe::rows_on_machine(&cube, &p, &machine, |_, _| {}).unwrap();
+    let (batched, bt) = on_pe::rows_on_machine_in(&cube, &p, &machine, 100, |_, _| {}).unwrap();
+    for (t, rows) in [(wt, &whole), (bt, &batched)] {
+        assert_eq!(rows, &fresh);
+        assert_eq!((t.pe.rows, t.pe.bundles, t.pe.rays, t.origins), (6, 6 * 2 * 32, 6 * 2 * 1024, 12));
+        assert_eq!(
+            (t.pe.golden_agree, t.brute_agree, t.pe.tests),
+            (ft.pe.golden_agree, ft.brute_agree, ft.pe.tests)
+        );
+        assert!(t.pe.cycles > 0 && t.pe.patch_loads >= t.pe.cache_hits);
+    }
+    assert_ne!(wt.pe.cycles, bt.pe.cycles, "the batches drain the machine between them");
+    // A bundle larger than the batch is refused, naming the way out.
+    let e = on_pe::rows_on_machine_in(&cube, &p, &machine, 50, |_, _| {}).unwrap_err();
+    assert!(matches!(e, On3Error::Cosim(_)) && e.to_string().contains("fewer --rays"), "{e}");
+    let sectors = MachineConfig { deal: Deal::Sectors, ..machine };
+    assert!(on_pe::rows_on_machine(&cube, &p, &sectors, |_, _| {})
+        .unwrap_err()
+        .to_string()
+        .contains("--deal sectors"));
+}
+
+#[test]
 fn a_plane_fits_the_datapath_at_the_largest_power_of_two_scale() {
     use shelling::d3::on_pe::plane_scale;
     use shelling_hdl::formats::WORLD_SPAN;

@@ -40,14 +40,15 @@ use super::sweep::{planes_with, Slicing, SweepPlane};
 use super::trace::{self, offer, Bundle3, Method3, Trace3Error};
 use crate::agreement;
 use crate::cosim::{self, CosimConfig, CosimError};
+use crate::geom::Segment;
 use crate::grid::GridParams;
 use crate::radiosity::form_factors::Row;
 use crate::radiosity::on_pe::{PeTotals, PE_RAY_MEMORY};
-use crate::run::{GriddedScene, RunError};
+use crate::run::{GriddedScene, RunError, Scheduled};
 use crate::scene::Scene;
 use crate::trace::{Method, TraceError};
 use glam::DVec3;
-use shelling_hdl::formats::WORLD_SPAN;
+use shelling_hdl::formats::{Nearest, WORLD_SPAN};
 
 /// The 2D technique that traces every plane on the PE: the deterministic one, which derives each
 /// slice's actual degree of local coherence by sorting, as §3.2 says the sweep must.
@@ -123,78 +124,117 @@ pub fn plane_scale(scene: &Scene3, o: DVec3) -> f64 {
     }
 }
 
-/// One plane on the PE: its rays' hits `(polygon, t)` offered into `best`.
-fn plane_on_pe(
-    scene: &Scene3,
-    bundle: &Bundle3,
-    plane: &SweepPlane,
+/// A bundle's planes: what every plane shares.
+struct Planes<'a> {
+    scene: &'a Scene3,
+    bundle: &'a Bundle3,
+    /// [`plane_scale`] of the bundle's origin.
     scale: f64,
-    p: &Ff3Params,
-    config: &CosimConfig,
-    totals: &mut Pe3Totals,
-    best: &mut [Option<Hit>],
-) -> Result<(), On3Error> {
-    let source_polygon = bundle.source.patch.unwrap_or(usize::MAX);
-    if let Some((slices, _)) = &plane.slices {
+    p: &'a Ff3Params,
+}
+
+impl Planes<'_> {
+    fn source_polygon(&self) -> usize {
+        self.bundle.source.patch.unwrap_or(usize::MAX)
+    }
+
+    /// `plane`'s slices scheduled for the PE (`None` when no polygon meets it), checked against
+    /// the `f64` trace of the slices (rung 2); the plane's rays and agreeing rays counted.
+    fn schedule(&self, plane: &SweepPlane, totals: &mut PeTotals) -> Result<Option<Scheduled>, On3Error> {
+        let Some((slices, _)) = &plane.slices else { return Ok(None) };
+        let scale = self.scale;
         let scaled = Scene {
-            segments: slices
-                .segments
-                .iter()
-                .map(|g| crate::geom::Segment::new(g.a * scale, g.b * scale))
-                .collect(),
+            segments: slices.segments.iter().map(|g| Segment::new(g.a * scale, g.b * scale)).collect(),
             materials: slices.materials.clone(),
             world: None,
         };
         let prepared = GriddedScene::new(scaled, GridParams::default());
-        let scheduled = prepared.schedule(PLANE_METHOD, &plane.bundle, &p.shells)?;
-        let golden = prepared.trace(PLANE_METHOD, &plane.bundle, &p.shells)?;
+        let scheduled = prepared.schedule(PLANE_METHOD, &plane.bundle, &self.p.shells)?;
+        let golden = prepared.trace(PLANE_METHOD, &plane.bundle, &self.p.shells)?;
         let rung2 = agreement::compare(&prepared.scene.segments, &plane.bundle, &golden, &scheduled.trace);
         if rung2.beyond_bound().count() > 0 {
-            return Err(On3Error::BeyondBound { source_polygon, rays: rung2.beyond_bound().count() });
+            let (source_polygon, rays) = (self.source_polygon(), rung2.beyond_bound().count());
+            return Err(On3Error::BeyondBound { source_polygon, rays });
         }
-        let run = cosim::run(&scheduled, config, |_, _| {})?;
-        for (i, (pe, traced)) in run.hits.iter().zip(&scheduled.trace.hits).enumerate() {
+        totals.bundles += 1;
+        totals.rays += plane.bundle.len();
+        totals.golden_agree += rung2.agree;
+        Ok(Some(scheduled))
+    }
+
+    /// The hardware's hits of `plane` (`hits`, patch numbers of its slices), which must be the
+    /// bit-true trace's (`scheduled`), offered into `best` as their polygons.
+    fn offer_hits(
+        &self,
+        plane: &SweepPlane,
+        scheduled: &Scheduled,
+        hits: &[Option<Nearest>],
+        best: &mut [Option<Hit>],
+    ) -> Result<(), On3Error> {
+        for (i, (pe, traced)) in hits.iter().zip(&scheduled.trace.hits).enumerate() {
             let ray = plane.rays[i];
             match (pe, traced) {
                 (Some(n), Some(h)) if u32::from(n.id) == h.segment => {
                     let k = plane.polygons[h.segment as usize];
-                    let front = bundle.directions[ray].dot(scene.polygons[k].normal) < 0.0;
-                    offer(&mut best[ray], k, h.t / scale, front);
+                    let front = self.bundle.directions[ray].dot(self.scene.polygons[k].normal) < 0.0;
+                    offer(&mut best[ray], k, h.t / self.scale, front);
                 }
                 (None, None) => {}
-                _ => return Err(On3Error::Cosim(CosimError::Mismatch(format!(
-                    "source polygon {source_polygon}, plane {}: ray {i}'s hit is not the bit-true trace's",
-                    plane.band
-                )))),
+                _ => {
+                    return Err(On3Error::Cosim(CosimError::Mismatch(format!(
+                        "source polygon {}, plane {}: ray {i}'s hit is not the bit-true trace's",
+                        self.source_polygon(),
+                        plane.band
+                    ))))
+                }
             }
         }
-        let (h, t) = (&run.hardware, &mut totals.pe);
-        t.bundles += 1;
-        t.rays += plane.bundle.len();
-        t.cycles += h.cycles;
-        t.intersection_busy_cycles += h.intersection_busy_cycles;
-        t.patch_loads += h.patch_loads;
-        t.cache_hits += h.cache_hits;
-        t.tests += h.tests;
-        t.golden_agree += rung2.agree;
+        Ok(())
     }
-    let o = bundle.source.origin;
-    for &k in &plane.direct {
-        let polygon = &scene.polygons[k];
-        for &ray in &plane.rays {
-            let d = bundle.directions[ray];
-            totals.host_tests += 1;
-            if let Some(t) = super::brute::intersect(o, d, polygon) {
-                offer(&mut best[ray], k, t, d.dot(polygon.normal) < 0.0);
+
+    /// The polygons `plane` tests directly, tested by the host in `f64` and offered into `best`.
+    fn host_tests(&self, plane: &SweepPlane, totals: &mut Pe3Totals, best: &mut [Option<Hit>]) {
+        let o = self.bundle.source.origin;
+        for &k in &plane.direct {
+            let polygon = &self.scene.polygons[k];
+            for &ray in &plane.rays {
+                let d = self.bundle.directions[ray];
+                totals.host_tests += 1;
+                if let Some(t) = super::brute::intersect(o, d, polygon) {
+                    offer(&mut best[ray], k, t, d.dot(polygon.normal) < 0.0);
+                }
             }
         }
     }
-    Ok(())
+}
+
+/// Adds a PE's or the machine's counts to `totals`.
+fn add_hardware(totals: &mut PeTotals, cycles: u64, busy: u64, loads: u64, cache_hits: u64, tests: u64) {
+    totals.cycles += cycles;
+    totals.intersection_busy_cycles += busy;
+    totals.patch_loads += loads;
+    totals.cache_hits += cache_hits;
+    totals.tests += tests;
+}
+
+/// `bundle`'s hits `best` against the 3D brute force's (over `facets`): the agreeing rays
+/// counted in `totals`, the bundle too.
+fn against_brute(
+    scene: &Scene3,
+    facets: &Facets,
+    bundle: &Bundle3,
+    best: &[Option<Hit>],
+    totals: &mut Pe3Totals,
+) {
+    let brute = trace::brute_with(scene, facets, bundle);
+    totals.origins += 1;
+    totals.brute_agree +=
+        best.iter().zip(&brute.hits).filter(|(a, b)| a.map(|h| h.polygon) == b.map(|h| h.polygon)).count();
 }
 
 /// The nearest hit of every ray of `bundle` (a hemisphere set's, `n_theta` even), its sweep
-/// planes traced on the PE (module docs); the rays that agree with the 3D brute force (over
-/// `facets`, the scene's) are counted.
+/// planes traced each on a fresh PE (module docs); the rays that agree with the 3D brute force
+/// (over `facets`, the scene's) are counted.
 pub fn bundle_on_pe(
     scene: &Scene3,
     facets: &Facets,
@@ -203,15 +243,25 @@ pub fn bundle_on_pe(
     config: &CosimConfig,
     totals: &mut Pe3Totals,
 ) -> Result<Vec<Option<Hit>>, On3Error> {
-    let scale = plane_scale(scene, bundle.source.origin);
+    let at = Planes { scene, bundle, scale: plane_scale(scene, bundle.source.origin), p };
     let mut best = vec![None; bundle.len()];
     for plane in planes_with(scene, bundle, Slicing::Exact)? {
-        plane_on_pe(scene, bundle, &plane, scale, p, config, totals, &mut best)?;
+        at.host_tests(&plane, totals, &mut best);
+        if let Some(scheduled) = at.schedule(&plane, &mut totals.pe)? {
+            let run = cosim::run(&scheduled, config, |_, _| {})?;
+            at.offer_hits(&plane, &scheduled, &run.hits, &mut best)?;
+            let h = &run.hardware;
+            add_hardware(
+                &mut totals.pe,
+                h.cycles,
+                h.intersection_busy_cycles,
+                h.patch_loads,
+                h.cache_hits,
+                h.tests,
+            );
+        }
     }
-    let brute = trace::brute_with(scene, facets, bundle);
-    totals.origins += 1;
-    totals.brute_agree +=
-        best.iter().zip(&brute.hits).filter(|(a, b)| a.map(|h| h.polygon) == b.map(|h| h.polygon)).count();
+    against_brute(scene, facets, bundle, &best, totals);
     Ok(best)
 }
 
@@ -270,4 +320,133 @@ pub fn rows(
         Ok::<_, On3Error>(r)
     })?;
     Ok((rows, sum.into_inner().expect("no row panics holding the sums")))
+}
+
+/// Most slices of one machine run in 3D: half the host memory's patches, so that a cache of
+/// any size can spread them ([`crate::machine::MAX_HOST_PATCHES`]). Whole bundles are run
+/// together until the next would pass it.
+pub const BATCH_PATCHES: usize = crate::machine::MAX_HOST_PATCHES / 2;
+
+/// A bundle whose planes are on the machine: where its rays' hits go.
+struct OpenBundle {
+    k: usize,
+    bundle: Bundle3,
+    /// Each ray's weight in row `k` (the ray's, over the origins).
+    weights: Vec<f64>,
+    scale: f64,
+    best: Vec<Option<Hit>>,
+}
+
+/// The planes of a batch, and the bundles they belong to.
+#[derive(Default)]
+struct Batch {
+    open: Vec<OpenBundle>,
+    /// Each plane: its bundle (in `open`) and the plane.
+    planes: Vec<(usize, SweepPlane)>,
+    /// Each plane's schedule: the machine's work.
+    work: Vec<Scheduled>,
+    slices: usize,
+}
+
+/// Every row of `scene` on the parallel machine of `config.pes` PEs: every origin's sweep planes
+/// scheduled and checked as [`bundle_on_pe`] does, each plane a whole source of the machine (its
+/// slices a scene of their own in the shared host memory), dealt as `config.deal` says in batches
+/// of whole bundles of at most [`BATCH_PATCHES`] slices, one machine run each (its cycles the
+/// batches' sum). The patches stay at their index (`Placement::Index`): two slices hit at one
+/// distance go to the lower, as in the bit-true trace. `progress(rows done, rows)`.
+pub fn rows_on_machine(
+    scene: &Scene3,
+    p: &Ff3Params,
+    config: &crate::machine::MachineConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<(Vec<Row>, Pe3Totals), On3Error> {
+    rows_on_machine_in(scene, p, config, BATCH_PATCHES, progress)
+}
+
+/// [`rows_on_machine`] in batches of at most `batch_patches` slices (1 to [`BATCH_PATCHES`]).
+pub fn rows_on_machine_in(
+    scene: &Scene3,
+    p: &Ff3Params,
+    config: &crate::machine::MachineConfig,
+    batch_patches: usize,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<(Vec<Row>, Pe3Totals), On3Error> {
+    use crate::machine::{self, MachineConfig, Placement};
+    check_params(p)?;
+    let batch_patches = batch_patches.clamp(1, BATCH_PATCHES);
+    if config.deal.parts(config.pes) != 1 {
+        return Err(On3Error::Cosim(CosimError::Config(
+            "--deal sectors cuts a source into parts; a sweep plane is dealt whole (blocks or interleaved)"
+                .into(),
+        )));
+    }
+    let config = MachineConfig { place: Placement::Index, vcd: None, ..config.clone() };
+    let n = scene.polygons.len();
+    let facets = Facets::new(scene);
+    let mut acc = vec![vec![0.0f64; n]; n];
+    let mut totals = Pe3Totals::default();
+    let mut flush = |batch: &mut Batch, totals: &mut Pe3Totals| -> Result<(), On3Error> {
+        let batch = std::mem::take(batch);
+        let mut open = batch.open;
+        if !batch.work.is_empty() {
+            let run = machine::run(&batch.work, &config, |_, _| {})?;
+            for (((b, plane), scheduled), hits) in batch.planes.iter().zip(&batch.work).zip(&run.hits) {
+                let o = &mut open[*b];
+                let at = Planes { scene, bundle: &o.bundle, scale: o.scale, p };
+                at.offer_hits(plane, scheduled, hits, &mut o.best)?;
+            }
+            let (r, t) = (&run, &mut totals.pe);
+            add_hardware(t, r.cycles, r.intersection_busy_cycles, r.patch_loads, r.cache_hits, r.tests);
+        }
+        for o in &open {
+            against_brute(scene, &facets, &o.bundle, &o.best, totals);
+            for (hit, w) in o.best.iter().zip(&o.weights) {
+                if let Some(h) = hit {
+                    acc[o.k][h.polygon] += w;
+                }
+            }
+        }
+        Ok(())
+    };
+    let mut batch = Batch::default();
+    for k in 0..n {
+        let (mut set, origins) = ray_set(scene, k, p)?;
+        let weight = 1.0 / origins.len() as f64;
+        for origin in origins {
+            set.origin = origin;
+            let bundle = Bundle3::from_hemisphere(&set, Some(k));
+            let scale = plane_scale(scene, origin);
+            let at = Planes { scene, bundle: &bundle, scale, p };
+            let mut best = vec![None; bundle.len()];
+            let mut mine = Vec::new();
+            for plane in planes_with(scene, &bundle, Slicing::Exact)? {
+                at.host_tests(&plane, &mut totals, &mut best);
+                if let Some(scheduled) = at.schedule(&plane, &mut totals.pe)? {
+                    mine.push((plane, scheduled));
+                }
+            }
+            let slices: usize = mine.iter().map(|(plane, _)| plane.polygons.len()).sum();
+            if slices > batch_patches {
+                return Err(On3Error::Cosim(CosimError::Config(format!(
+                    "source polygon {k}: a bundle's sweep planes hold {slices} slices, more than a machine run's \
+                     {batch_patches}: use fewer --rays (fewer planes)"
+                ))));
+            }
+            if batch.slices + slices > batch_patches {
+                flush(&mut batch, &mut totals)?;
+            }
+            let weights = set.rays.iter().map(|r| r.weight * weight).collect();
+            batch.open.push(OpenBundle { k, bundle, weights, scale, best });
+            let b = batch.open.len() - 1;
+            for (plane, scheduled) in mine {
+                batch.planes.push((b, plane));
+                batch.work.push(scheduled);
+            }
+            batch.slices += slices;
+        }
+        progress(k + 1, n);
+    }
+    flush(&mut batch, &mut totals)?;
+    totals.pe.rows = n;
+    Ok((acc.iter().enumerate().map(|(k, a)| to_row(k, a)).collect(), totals))
 }
