@@ -20,6 +20,9 @@
 //! Run: `cargo bench --bench machine` (`-- --rounds N`; `-- --write FILE` writes the table as
 //! Markdown, as `figures/headline.md` is written).
 
+#[path = "support/headline.rs"]
+mod headline;
+
 use rayon::prelude::*;
 use shelling::cosim::Engine;
 use shelling::figures::machine::{headline_run, headline_scene, HEADLINE_CACHE, HEADLINE_TC};
@@ -70,15 +73,10 @@ fn main() {
             }
         }
     }
-    let median = |v: &mut Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        v[v.len() / 2]
-    };
-    let rates: Vec<[f64; 2]> =
-        times.iter_mut().map(|[a, b]| [rays as f64 / median(a), rays as f64 / median(b)]).collect();
-    // The baselines: the faster technique on one core, and the faster on all cores.
-    let best = |j: usize| rates.iter().map(|r| r[j]).fold(0.0, f64::max);
-    let (core, cores) = (best(0), best(1));
+    let rates: Vec<[f64; 2]> = times
+        .iter_mut()
+        .map(|[a, b]| [rays as f64 / headline::median(a), rays as f64 / headline::median(b)])
+        .collect();
 
     // The machine of 1, 4, 6 (the most that fit the LFE5U-85F: 31 of its 208 block RAMs a PE) and
     // 8 PEs, each at its own measured clock where there is one.
@@ -97,23 +95,10 @@ fn main() {
          post-route rate on the LFE5U-85F-6 of the machine of that many PEs where it was measured, else the \
          PE's alone (`hdl/fpga/`).\n"
     );
-    let _ = writeln!(
-        md,
-        "| | technique | cycles | host loads | rays per cycle | clock (MHz) | rays/s | × one core | × all cores |"
-    );
-    let _ = writeln!(md, "|---|---|--:|--:|--:|--:|--:|--:|--:|");
-    for (i, &m) in software.iter().enumerate() {
-        for (j, who) in ["1 core".to_string(), format!("{threads} cores")].iter().enumerate() {
-            let r = rates[i][j];
-            let _ = writeln!(
-                md,
-                "| software, {who} | {m} | | | | | {:.1} M | {:.2} | {:.2} |",
-                r / 1e6,
-                r / core,
-                r / cores
-            );
-        }
-    }
+    // The baselines: the faster technique on one core, and the faster on all cores.
+    let names: Vec<String> = software.iter().map(|m| m.to_string()).collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let (core, cores) = headline::software_rows(&mut md, &names, &rates, threads);
     for &n in &pes {
         for &m in &software {
             let run = headline_run(m, n, Engine::Auto).expect("the machine co-simulates the headline");

@@ -279,4 +279,5 @@ fn the_documents_hold_the_committed_tables() {
     holds_block("FIGURES.md", "cycles-table", "figures/cycles.md");
     holds_block("FIGURES.md", "cycles-queue-table", "figures/cycles_queue.md");
     holds_block("README.md", "headline", "figures/headline.md");
+    holds_block("README.md", "headline3d", "figures/headline3d.md");
 }

@@ -425,3 +425,47 @@ mod tests {
         assert!(e.contains("got 1;") && e.contains("the smallest is 4"), "{e}");
     }
 }
+
+/// The 3D headline's rays per origin (`cargo bench --bench machine3d`, `figures/headline3d.md`).
+pub const HEADLINE3D_RAYS: usize = 4096;
+/// The 3D headline's origins per polygon.
+pub const HEADLINE3D_ORIGINS: usize = 16;
+
+/// The 3D headline's scene: the shipped Cornell box (`scenes/cornell_box.obj`, embedded).
+pub fn headline3d_scene() -> Result<crate::d3::scene::Scene3> {
+    const OBJ: &str = include_str!("../../scenes/cornell_box.obj");
+    const MTL: &str = include_str!("../../scenes/cornell_box.mtl");
+    let mtl = |_: &std::path::Path| Ok(MTL.to_string());
+    Ok(crate::d3::obj::load_str("scenes/cornell_box.obj", OBJ, &mtl)?)
+}
+
+/// The 3D headline's estimate, by `method`: [`HEADLINE3D_RAYS`] cosine rays from each of
+/// [`HEADLINE3D_ORIGINS`] origins.
+pub fn headline3d_params(method: Method3) -> crate::d3::form_factors::Ff3Params {
+    crate::d3::form_factors::Ff3Params {
+        rays: HEADLINE3D_RAYS,
+        origins: HEADLINE3D_ORIGINS,
+        method,
+        ..Default::default()
+    }
+}
+
+/// The 3D headline's machine run: every row of [`headline3d_scene`] on `pes` PEs
+/// ([`crate::d3::on_pe::rows_on_machine`]), `T_c` = [`super::machine::HEADLINE_TC`] shared by all
+/// PEs, each PE's cache a quarter of the polygons, every hit checked.
+pub fn headline3d_run(pes: usize, engine: crate::cosim::Engine) -> Result<crate::d3::on_pe::Pe3Totals> {
+    use crate::machine::{Deal, MachineConfig, Placement};
+    let scene = headline3d_scene()?;
+    let config = MachineConfig {
+        pes,
+        tc: super::machine::HEADLINE_TC,
+        cache: Some((scene.polygons.len() / 4) as u32),
+        deal: Deal::Blocks,
+        place: Placement::Index,
+        engine: engine.resolve(false),
+        vcd: None,
+    };
+    let (_, totals) =
+        crate::d3::on_pe::rows_on_machine(&scene, &headline3d_params(Method3::Sweep), &config, |_, _| {})?;
+    Ok(totals)
+}

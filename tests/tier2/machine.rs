@@ -2,7 +2,8 @@
 //! rows of 1 and 8 PEs at T_c 16 with caches off and of 128 patches, and the deal rows, recomputed
 //! with the command FIGURES.md quotes (cycle counts are exact, so any change to the RTL, the
 //! scheduler or the host shows), and the machine rows of the README's
-//! headline (`figures/headline.md`, from `cargo bench --bench machine`) co-simulated again.
+//! headline (`figures/headline.md`, from `cargo bench --bench machine`) and of the 3D headline
+//! (`figures/headline3d.md`, `cargo bench --bench machine3d`) co-simulated again.
 
 use shelling::cosim::Engine;
 use shelling::figures::machine::headline_run;
@@ -74,4 +75,34 @@ fn the_readmes_headline_cycles_are_those_of_the_current_code() {
         checked += 1;
     }
     assert!(checked >= 4, "figures/headline.md has {checked} machine rows");
+}
+
+#[test]
+fn the_3d_headline_cycles_are_those_of_the_current_code() {
+    assert!(shelling_testbench::verilated::available(), "the headline needs Verilator (see .ci/run)");
+    let table = committed("headline3d.md");
+    let mut checked = 0;
+    for line in table.lines().filter(|l| l.starts_with("| machine, ")) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        let pes: usize = cells[1]
+            .trim_start_matches("machine, ")
+            .split(' ')
+            .next()
+            .and_then(|n| n.parse().ok())
+            .unwrap_or_else(|| panic!("no PE count in {line:?}"));
+        let (cycles, loads): (u64, u64) = match (cells[3].parse(), cells[4].parse()) {
+            (Ok(c), Ok(l)) => (c, l),
+            _ => panic!("no cycles or host loads in {line:?}"),
+        };
+        let t =
+            shelling::figures::d3::headline3d_run(pes, Engine::Verilator).unwrap_or_else(|e| panic!("{e:#}"));
+        assert_eq!(
+            (t.pe.cycles, t.pe.patch_loads - t.pe.cache_hits),
+            (cycles, loads),
+            "figures/headline3d.md is stale ({pes} PEs): run `cargo bench --bench machine3d -- --write \
+             figures/headline3d.md` and update the README"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 4, "figures/headline3d.md has {checked} machine rows");
 }
