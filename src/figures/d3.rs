@@ -411,21 +411,6 @@ pub fn run(opts: &Figure3Options) -> Result<Figure3Report> {
     Ok(Figure3Report { options: opts.clone(), rows, files, scenes, jobs, disagreements, elapsed })
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_stratification_takes_4k2_rays_and_names_the_nearest_otherwise() {
-        assert_eq!(stratification("--rays", 1024).unwrap(), (64, 16));
-        assert_eq!(stratification("--rays", 4).unwrap(), (4, 1));
-        let e = stratification("--rays", 1000).unwrap_err().to_string();
-        assert!(e.contains("--rays must be 4·k²") && e.contains("900 and 1024"), "{e}");
-        let e = stratification("--rays", 1).unwrap_err().to_string();
-        assert!(e.contains("got 1;") && e.contains("the smallest is 4"), "{e}");
-    }
-}
-
 /// The 3D headline's rays per origin (`cargo bench --bench machine3d`, `figures/headline3d.md`).
 pub const HEADLINE3D_RAYS: usize = 4096;
 /// The 3D headline's origins per polygon.
@@ -468,4 +453,19 @@ pub fn headline3d_run(pes: usize, engine: crate::cosim::Engine) -> Result<crate:
     let (_, totals) =
         crate::d3::on_pe::rows_on_machine(&scene, &headline3d_params(Method3::Sweep), &config, |_, _| {})?;
     Ok(totals)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_stratification_takes_4k2_rays_and_names_the_nearest_otherwise() {
+        assert_eq!(stratification("--rays", 1024).unwrap(), (64, 16));
+        assert_eq!(stratification("--rays", 4).unwrap(), (4, 1));
+        let e = stratification("--rays", 1000).unwrap_err().to_string();
+        assert!(e.contains("--rays must be 4·k²") && e.contains("900 and 1024"), "{e}");
+        let e = stratification("--rays", 1).unwrap_err().to_string();
+        assert!(e.contains("got 1;") && e.contains("the smallest is 4"), "{e}");
+    }
 }
