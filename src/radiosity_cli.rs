@@ -5,6 +5,7 @@ use anyhow::{bail, Context, Result};
 use clap::{ArgGroup, Args, ValueEnum};
 use shelling::arith::Arith;
 use shelling::cosim::{CosimConfig, Engine};
+use shelling::d3::trace::Method3;
 use shelling::limits::{self, check_range, check_range_for};
 use shelling::machine::{Deal, MachineConfig, Placement};
 use shelling::radiosity::form_factors::{self, FfParams, Row, DEFAULT_ORIGINS, DEFAULT_RAYS, MAX_ORIGINS};
@@ -260,15 +261,11 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
 
 /// `form-factors` on an OBJ scene: the options of 2D scenes only refused by name.
 fn form_factors_3d(a: &FormFactorsArgs, path: &Path) -> Result<()> {
-    let two_d = [
-        ("--rows", a.rows.is_some()),
-        ("--out", a.out.is_some()),
-        ("--arith fixed", a.ff.arith != Arith::Float),
-    ];
-    if let Some((option, _)) = two_d.iter().find(|(_, given)| *given) {
-        bail!(
-            "{option} belongs to 2D scenes: in 3D, form-factors takes --source K or --origin with --normal"
-        );
+    if a.ff.arith != Arith::Float {
+        bail!("--arith fixed belongs to 2D scenes: in 3D, form-factors traces in f64");
+    }
+    if let Some(rows) = a.rows {
+        return matrix_3d(a, path, rows);
     }
     super::d3_cli::form_factors_cmd(super::d3_cli::FormFactors3 {
         scene: path,
@@ -281,6 +278,57 @@ fn form_factors_3d(a: &FormFactorsArgs, path: &Path) -> Result<()> {
         method: a.ff.method.as_ref(),
         json: a.json,
         tune: &a.tune,
+    })
+}
+
+/// `form-factors --rows A..B --out FILE` on an OBJ scene: the slice of the 3D matrix, as in 2D.
+fn matrix_3d(a: &FormFactorsArgs, path: &Path, rows: RowsArg) -> Result<()> {
+    use shelling::d3::form_factors as ff3;
+    if a.origin.is_some() || a.source.is_some() {
+        bail!("--rows is a slice of the matrix: not with --source or --origin");
+    }
+    let params = params_3d(&a.ff, &a.tune, Method3::Conventional)?;
+    let (scene, grid) = super::d3_cli::load(path, &a.tune)?;
+    let range = rows.resolve(scene.polygons.len())?;
+    let bar = progress_bar(range.len(), "rows", a.quiet);
+    let done = ff3::rows(&scene, &grid, range.clone(), &params, || bar.inc(1));
+    bar.finish_and_clear();
+    let file = MatrixFile::new3(&scene, &params, a.ff.ray_set, range.start, done?);
+    let target = a.out.as_deref().expect("clap requires --out");
+    write_file(target, &file.to_json())?;
+    let mut out = Out::new();
+    say!(
+        out,
+        "{}: rows {}..{} of {} ({} form factors)",
+        target.display(),
+        file.rows_from,
+        file.rows_to,
+        file.scene.patches,
+        file.rows.iter().map(|r| r.entries.len()).sum::<usize>()
+    );
+    out.flush()
+}
+
+/// The 3D estimate's parameters from the options: `--rays` (default 4096), `--origins` (256),
+/// `--ray-set`, `--method` (a 3D technique, default `default`) and the polar sectors.
+fn params_3d(
+    ff: &FfArgs,
+    tune: &TuneArgs,
+    default: Method3,
+) -> Result<shelling::d3::form_factors::Ff3Params> {
+    use shelling::d3::form_factors as ff3;
+    let method = super::d3_cli::MethodArg::three_d(ff.method.as_ref(), default)?;
+    let rays = ff.rays.unwrap_or(ff3::DEFAULT_RAYS);
+    check_range("--rays", rays, 1, shelling::d3::hemisphere::MAX_HEMISPHERE_RAYS)
+        .map_err(anyhow::Error::msg)?;
+    let origins = ff.origins.unwrap_or(ff3::DEFAULT_ORIGINS);
+    check_range("--origins", origins, 1, MAX_ORIGINS).map_err(anyhow::Error::msg)?;
+    Ok(ff3::Ff3Params {
+        rays,
+        origins,
+        strata: super::d3_cli::strata(ff.ray_set),
+        method,
+        shells: super::d3_cli::polar_params(tune)?,
     })
 }
 
@@ -668,15 +716,10 @@ struct Hardware3Json {
 /// `radiosity` on an OBJ scene (RADIOSITY.md, "In 3D"): the 3D form factors of every polygon
 /// and the 2D solvers in each colour channel; the options of 2D scenes only refused by name.
 fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
-    use shelling::d3::form_factors::{self as ff3, Ff3Params};
+    use shelling::d3::form_factors as ff3;
     use shelling::d3::on_pe as on_pe3;
     use shelling::d3::radiosity::{self as rad3, CHANNELS};
-    use shelling::d3::trace::Method3;
-    let two_d = [
-        ("--matrix", a.matrix.is_some()),
-        ("--arith fixed", a.ff.arith != Arith::Float),
-        ("--svg", a.svg.is_some()),
-    ];
+    let two_d = [("--arith fixed", a.ff.arith != Arith::Float), ("--svg", a.svg.is_some())];
     if let Some((option, _)) = two_d.iter().find(|(_, given)| *given) {
         bail!(
             "{option} belongs to 2D scenes: in 3D, radiosity traces every row with the 3D tracers in f64 \
@@ -690,20 +733,9 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         );
     }
     let default_method = if a.on_pe { Method3::Sweep } else { Method3::Conventional };
-    let method = super::d3_cli::MethodArg::three_d(a.ff.method.as_ref(), default_method)?;
-    let rays = a.ff.rays.unwrap_or(ff3::DEFAULT_RAYS);
-    check_range("--rays", rays, 1, shelling::d3::hemisphere::MAX_HEMISPHERE_RAYS)
-        .map_err(anyhow::Error::msg)?;
-    let origins = a.ff.origins.unwrap_or(ff3::DEFAULT_ORIGINS);
-    check_range("--origins", origins, 1, MAX_ORIGINS).map_err(anyhow::Error::msg)?;
+    let params = params_3d(&a.ff, &a.tune, default_method)?;
+    let (rays, origins, method) = (params.rays, params.origins, params.method);
     let (scene, grid) = super::d3_cli::load(path, &a.tune)?;
-    let params = Ff3Params {
-        rays,
-        origins,
-        strata: super::d3_cli::strata(a.ff.ray_set),
-        method,
-        shells: super::d3_cli::polar_params(&a.tune)?,
-    };
     if a.on_pe {
         on_pe3::check_params(&params)?;
     }
@@ -732,6 +764,21 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         Solver::Full => {
             let bar = progress_bar(n, "rows", a.quiet);
             let rows = match (a.on_pe, a.pes) {
+                _ if a.matrix.is_some() => {
+                    let path = a.matrix.as_deref().expect("matched");
+                    let m = MatrixFile::load(path)?;
+                    m.check_scene3(&scene, &path.display().to_string(), &name)?;
+                    if !m.is_whole() {
+                        bail!(
+                            "{}: holds rows {}..{} of {}: merge the slices first (form-factors --merge)",
+                            path.display(),
+                            m.rows_from,
+                            m.rows_to,
+                            m.scene.patches
+                        );
+                    }
+                    m.rows
+                }
                 (true, Some(pes)) => {
                     let machine = MachineConfig {
                         pes,

@@ -153,7 +153,6 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     f(&["--source", "1", "--origins", "0"], &["--origins", "between 1 and 4096", "got 0"]);
     f(&["--origin", "1,2,3", "--normal", "0,1,0", "--origins", "4"], &["--origins", "--source"]);
     f(&["--source", "1", "--arith", "fixed"], &["--arith fixed", "2D"]);
-    f(&["--rows", "0..2", "--out", "x.json"], &["--rows", "2D"]);
     f(&["--source", "1", "--method", "deterministic"], &["--method deterministic", "2D"]);
     fails(&["cosim", "--scene", CORNELL, "--source", "1"], &["--scene", "3D", "2D"]);
     fails(
@@ -240,4 +239,55 @@ fn radiosity_of_an_obj_scene_on_the_pe() {
     assert_eq!(m["hardware"]["pes"].as_u64(), Some(2));
     assert_eq!(m["hardware"]["bundles"], h["bundles"]);
     assert_eq!(m["hardware"]["tests"], h["tests"]);
+}
+
+#[test]
+fn the_3d_matrix_in_slices_merged_and_solved() {
+    // Two slices of the Cornell box's matrix and their merge are the matrix of one run; the
+    // full solve from it is the traced solve; a 3D matrix fits no other scene.
+    let dir = TempDir::new("cli3d-matrix");
+    let (a, b, m, w) = (dir.join("a.json"), dir.join("b.json"), dir.join("m.json"), dir.join("w.json"));
+    let ff = ["--rays", "256", "--origins", "2", "--method", "polar", "--quiet"];
+    ok(&[&["form-factors", "--scene", CORNELL, "--rows", "0..11", "--out", path_arg(&a)][..], &ff].concat());
+    ok(&[&["form-factors", "--scene", CORNELL, "--rows", "11..", "--out", path_arg(&b)][..], &ff].concat());
+    ok(&[&["form-factors", "--scene", CORNELL, "--rows", "..", "--out", path_arg(&w)][..], &ff].concat());
+    let merge = format!("{},{}", path_arg(&b), path_arg(&a));
+    ok(&["form-factors", "--merge", &merge, "--out", path_arg(&m)]);
+    let whole = std::fs::read_to_string(&w).unwrap();
+    assert_eq!(std::fs::read_to_string(&m).unwrap(), whole);
+    let file: Value = serde_json::from_str(&whole).unwrap();
+    assert_eq!((file["dim"].as_u64(), file["method"].as_str()), (Some(3), Some("polar")));
+    assert_eq!(
+        (file["scene"]["patches"].as_u64(), file["rows"].as_array().map(Vec::len)),
+        (Some(26), Some(26))
+    );
+    let solve = ["radiosity", "--scene", CORNELL, "--solver", "full", "--json"];
+    let from_matrix = json(&[&solve[..], &["--matrix", path_arg(&m)]].concat());
+    let traced = json(&[&solve[..], &ff].concat());
+    assert_eq!(from_matrix["patches"], traced["patches"]);
+    // Not the matrix of another scene, nor a slice, nor of a 2D scene.
+    fails(&["radiosity", "--scene", ROOM, "--solver", "full", "--matrix", path_arg(&m)], &["do not match"]);
+    fails(
+        &["radiosity", "--scene", CORNELL, "--solver", "full", "--matrix", path_arg(&a)],
+        &["rows 0..11", "--merge"],
+    );
+    let scene2 = dir.join("room.json");
+    ok(&["scene", "gen", "--kind", "room", "--out", path_arg(&scene2)]);
+    fails(
+        &["radiosity", "--scene", path_arg(&scene2), "--solver", "full", "--matrix", path_arg(&m)],
+        &["3D scene", "the scene is 2D"],
+    );
+    fails(
+        &["form-factors", "--scene", CORNELL, "--rows", "0..2", "--source", "1", "--out", path_arg(&a)],
+        &["--source"],
+    );
+    // A file claiming an unknown dimension or a 2D technique in 3D is refused by name.
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, whole.replace("\"dim\":3", "\"dim\":4")).unwrap();
+    fails(&["form-factors", "--merge", path_arg(&bad), "--out", path_arg(&w)], &["dim is 4"]);
+    std::fs::write(&bad, whole.replace("\"polar\"", "\"stochastic\"")).unwrap();
+    fails(
+        &["form-factors", "--merge", path_arg(&bad), "--out", path_arg(&w)],
+        &["\"stochastic\"", "3D technique"],
+    );
 }

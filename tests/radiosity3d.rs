@@ -609,9 +609,8 @@ fn the_command_on_obj_scenes() {
         &["radiosity", "--scene", room, "--rays", "64", "--origins", "1", "--max-steps", "3"],
         &["--max-steps", "3 steps"],
     );
-    for option in
-        [&["--svg", "x.svg"][..], &["--arith", "fixed"], &["--matrix", "m.json", "--solver", "full"]]
-    {
+    for option in [&["--svg", "x.svg"][..], &["--arith", "fixed"]] {
         fails(&[&["radiosity", "--scene", room][..], option].concat(), &[option[0], "2D scenes"]);
     }
+    fails(&["radiosity", "--scene", room, "--matrix", "no-such.json", "--solver", "full"], &["no-such.json"]);
 }

@@ -15,12 +15,19 @@
 //! ```
 //!
 //! `scene.hash` is the FNV-1a hash of the scene as written by `Scene::to_json`, so a matrix is
-//! only ever used with the scene it was computed for. `rows` holds one row per source of
+//! only ever used with the scene it was computed for.
+//!
+//! A matrix of a 3D (OBJ) scene has `"dim": 3` (absent: 2), `scene.patches` its polygons,
+//! `scene.hash` the hash of the scene as `crate::d3::obj::to_obj` writes it (OBJ then MTL), a 3D
+//! technique in `method` and `"arith": "float"`. `rows` holds one row per source of
 //! `rows_from..rows_to`, in order; each row's entries ascend in `patch` and leave out zeros.
 //! Unknown fields are errors.
 
 use super::form_factors::{FfParams, Row};
 use crate::arith::Arith;
+use crate::d3::form_factors::Ff3Params;
+use crate::d3::scene::Scene3;
+use crate::d3::trace::Method3;
 use crate::rays::RaySet;
 use crate::scene::Scene;
 use crate::trace::Method;
@@ -46,6 +53,21 @@ impl SceneId {
         let h = shelling_testbench::export::fnv1a64(scene.to_json().bytes());
         SceneId { patches: scene.len(), hash: format!("{h:016x}") }
     }
+
+    /// The id of a 3D scene: its polygons, and the hash of its OBJ and MTL text.
+    pub fn of3(scene: &Scene3) -> SceneId {
+        let (obj, mtl) = crate::d3::obj::to_obj(scene, "scene.mtl", "");
+        let h = shelling_testbench::export::fnv1a64(obj.bytes().chain(mtl.bytes()));
+        SceneId { patches: scene.polygons.len(), hash: format!("{h:016x}") }
+    }
+}
+
+fn two() -> u8 {
+    2
+}
+
+fn is_two(d: &u8) -> bool {
+    *d == 2
 }
 
 /// A slice of the form-factor matrix, or the whole of it.
@@ -54,11 +76,15 @@ impl SceneId {
 pub struct MatrixFile {
     pub format: String,
     pub version: u32,
+    /// 2 (a 2D scene of segments) or 3 (an OBJ scene of polygons).
+    #[serde(default = "two", skip_serializing_if = "is_two")]
+    pub dim: u8,
     pub scene: SceneId,
     pub rays: usize,
     pub origins: usize,
     pub ray_set: RaySet,
-    pub method: Method,
+    /// The technique's name: a 2D one ([`Method`]) or, in 3D, a 3D one ([`Method3`]).
+    pub method: String,
     pub arith: Arith,
     pub rows_from: usize,
     pub rows_to: usize,
@@ -88,12 +114,38 @@ impl MatrixFile {
         MatrixFile {
             format: FORMAT.to_string(),
             version: VERSION,
+            dim: 2,
             scene: SceneId::of(scene),
             rays: p.rays,
             origins: p.origins,
             ray_set: p.ray_set,
-            method: p.method,
+            method: p.method.name().to_string(),
             arith: p.arith,
+            rows_from,
+            rows_to: rows_from + rows.len(),
+            rows,
+        }
+    }
+
+    /// The slice `rows_from..rows_to` of `rows` computed for the 3D `scene` with `p`, its rays
+    /// the set `ray_set` names.
+    pub fn new3(
+        scene: &Scene3,
+        p: &Ff3Params,
+        ray_set: RaySet,
+        rows_from: usize,
+        rows: Vec<Row>,
+    ) -> MatrixFile {
+        MatrixFile {
+            format: FORMAT.to_string(),
+            version: VERSION,
+            dim: 3,
+            scene: SceneId::of3(scene),
+            rays: p.rays,
+            origins: p.origins,
+            ray_set,
+            method: p.method.name().to_string(),
+            arith: Arith::Float,
             rows_from,
             rows_to: rows_from + rows.len(),
             rows,
@@ -132,6 +184,17 @@ impl MatrixFile {
                 "version {} is not supported (this build reads version {VERSION})",
                 self.version
             ));
+        }
+        let known = match self.dim {
+            2 => Method::ALL.iter().any(|m| m.name() == self.method),
+            3 => Method3::ALL.iter().any(|m| m.name() == self.method),
+            d => return invalid(format!("dim is {d}: a matrix is of a 2D (2) or a 3D (3) scene")),
+        };
+        if !known {
+            return invalid(format!("method {:?} is not a {}D technique", self.method, self.dim));
+        }
+        if self.dim == 3 && self.arith != Arith::Float {
+            return invalid("a 3D matrix is traced in f64: arith must be \"float\"".to_string());
         }
         if self.rows_from > self.rows_to || self.rows_to > self.scene.patches {
             return invalid(format!(
@@ -173,8 +236,23 @@ impl MatrixFile {
 
     /// Checks that the matrix was computed for `scene` (named `name`).
     pub fn check_scene(&self, scene: &Scene, matrix: &str, name: &str) -> Result<(), MatrixError> {
-        let id = SceneId::of(scene);
-        if id != self.scene {
+        self.check_id(2, &SceneId::of(scene), matrix, name)
+    }
+
+    /// Checks that the matrix was computed for the 3D `scene` (named `name`).
+    pub fn check_scene3(&self, scene: &Scene3, matrix: &str, name: &str) -> Result<(), MatrixError> {
+        self.check_id(3, &SceneId::of3(scene), matrix, name)
+    }
+
+    fn check_id(&self, dim: u8, id: &SceneId, matrix: &str, name: &str) -> Result<(), MatrixError> {
+        if dim != self.dim {
+            return Err(MatrixError::Mismatch {
+                name: matrix.to_string(),
+                other: name.to_string(),
+                problem: format!("do not match: the matrix is of a {}D scene, the scene is {dim}D", self.dim),
+            });
+        }
+        if *id != self.scene {
             return Err(MatrixError::Mismatch {
                 name: matrix.to_string(),
                 other: name.to_string(),
@@ -196,7 +274,8 @@ pub fn merge(mut slices: Vec<(String, MatrixFile)>) -> Result<MatrixFile, Matrix
     }
     slices.sort_by_key(|(_, m)| m.rows_from);
     let (first_name, first) = &slices[0];
-    let header = |m: &MatrixFile| (m.scene.clone(), m.rays, m.origins, m.ray_set, m.method, m.arith);
+    let header =
+        |m: &MatrixFile| (m.dim, m.scene.clone(), m.rays, m.origins, m.ray_set, m.method.clone(), m.arith);
     let mut next = 0;
     let mut prev_name = String::new();
     for (name, m) in &slices {
