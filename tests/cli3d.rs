@@ -165,6 +165,7 @@ fn bad_3d_values_and_2d_only_options_are_refused_by_name() {
     );
     fails(&["radiosity", "--scene", CORNELL, "--on-pe", "--pes", "2"], &["--pes 2", "--solver full"]);
     fails(&["radiosity", "--scene", CORNELL, "--on-pe", "--tc", "0"], &["--tc", "between 1 and 1024"]);
+    fails(&["radiosity", "--scene", CORNELL, "--on-pe", "--rays", "3"], &["--rays 3", "3 x 1", "even"]);
     fails(&["radiosity", "--scene", CORNELL, "--svg", "x.svg"], &["--svg", "2D scenes"]);
     fails(&["radiosity", "--scene", CORNELL, "--origins", "0"], &["--origins", "between 1 and 4096"]);
     // And the other way: a 3D value on a 2D scene.

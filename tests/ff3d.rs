@@ -251,3 +251,22 @@ fn a_plane_fits_the_datapath_at_the_largest_power_of_two_scale() {
 fn row_with(scene: &Scene3, k: usize, p: &Ff3Params) -> Row {
     form_factors::row(scene, &grid(scene), k, p).unwrap()
 }
+
+#[test]
+fn rows_on_the_pe_of_the_3d_workload() {
+    use shelling::cosim::CosimConfig;
+    use shelling::d3::on_pe::{self, Pe3Totals};
+    // Random squares of three sizes (most planes meet none, a few meet many): every ray on the
+    // brute force's polygon, so the rows are the software sweep's, bit for bit.
+    for (size, seed) in [(2.0, 3u64), (8.0, 1), (64.0, 2)] {
+        let scene = shelling::d3::gen::generate(300, size, seed).unwrap();
+        let p = sweep(1024, 2);
+        for k in [0, 150] {
+            let mut t = Pe3Totals::default();
+            let pe = on_pe::row(&scene, k, &p, &CosimConfig::default(), &mut t).unwrap();
+            assert_eq!((t.brute_agree, t.host_tests), (2 * 1024, 0), "size {size}, row {k}: {t:?}");
+            assert_eq!(pe, row_with(&scene, k, &p), "size {size}, row {k}");
+            assert!(t.pe.bundles > 0 && t.pe.golden_agree == t.pe.rays, "size {size}, row {k}: {t:?}");
+        }
+    }
+}

@@ -78,6 +78,11 @@ pub enum On3Error {
         "--rays {rays}: a sweep plane holds 2 x {n_phi} rays, the PE at most {PE_RAY_MEMORY} rays per bundle"
     )]
     TooManyRays { rays: usize, n_phi: usize },
+    #[error(
+        "--rays {rays} splits into {n_theta} x {n_phi} (n_theta x n_phi): the sweep planes hold two opposite \
+         Θ-bands each, so n_theta must be even (e.g. --rays 1024 or 4096)"
+    )]
+    OddBands { rays: usize, n_theta: usize, n_phi: usize },
     #[error(transparent)]
     Ff3(#[from] Ff3Error),
     #[error("a sweep plane does not map onto the PE: {0}")]
@@ -100,12 +105,16 @@ impl From<TraceError> for On3Error {
     }
 }
 
-/// `p` maps onto the PE: the sweep technique, and each plane's `2·n_phi` rays in its ray memory.
+/// `p` maps onto the PE: the sweep technique, an even number of Θ-bands (two a plane), and each
+/// plane's `2·n_phi` rays in its ray memory.
 pub fn check_params(p: &Ff3Params) -> Result<(), On3Error> {
     if p.method != Method3::Sweep {
         return Err(On3Error::NotSweep(p.method.name()));
     }
-    let (_, n_phi) = super::form_factors::split_rays(p.rays)?;
+    let (n_theta, n_phi) = super::form_factors::split_rays(p.rays)?;
+    if !n_theta.is_multiple_of(2) {
+        return Err(On3Error::OddBands { rays: p.rays, n_theta, n_phi });
+    }
     if 2 * n_phi > PE_RAY_MEMORY {
         return Err(On3Error::TooManyRays { rays: p.rays, n_phi });
     }
