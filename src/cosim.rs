@@ -14,7 +14,7 @@
 use crate::limits::{check_range, MAX_TC, MAX_VCD_WINDOW};
 use crate::run::Scheduled;
 use crate::staged::Staged;
-use crate::workstream::{commands, StreamError};
+use crate::workstream::{commands, PeWork, StreamError};
 use serde::Serialize;
 use shelling_hdl::formats::Nearest;
 use shelling_testbench::memory::HostMemory;
@@ -133,10 +133,24 @@ pub fn run(
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
+    run_work(commands(&scheduled.stream, &scheduled.fixed)?, config, progress)
+}
+
+/// Co-simulates the source `work` (the host's setup, patches and commands, e.g. a
+/// [`crate::workstream::pack`] of several bundles) on a new PE of `config.engine`, every hit and
+/// counter checked against the bit-true model of the same work.
+pub fn run_work(
+    work: PeWork,
+    config: &CosimConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<Cosim, CosimError> {
     match config.engine.resolve(config.vcd.is_some()) {
         Engine::RustHdl | Engine::Auto => {
             let mut drv = rust_hdl_pe().map_err(sim)?;
-            run_on(&mut drv, scheduled, config, progress)
+            match &config.vcd {
+                None => sim_work(&mut drv, work, config, progress),
+                Some(v) => with_vcd(&mut drv, v, |drv| sim_work(drv, work, config, progress)),
+            }
         }
         Engine::Verilator => {
             if config.vcd.is_some() {
@@ -147,7 +161,7 @@ pub fn run(
             let mut pe = VerilatedPe::new().map_err(|e| {
                 CosimError::Sim(format!("{}; the rust-hdl engine needs no Verilator", e.message()))
             })?;
-            run_sim(&mut pe, scheduled, config, progress)
+            sim_work(&mut pe, work, config, progress)
         }
     }
 }
@@ -275,8 +289,17 @@ pub fn run_sim<S: PeSim>(
     config: &CosimConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<Cosim, CosimError> {
+    sim_work(sim_pe, commands(&scheduled.stream, &scheduled.fixed)?, config, progress)
+}
+
+/// [`run_sim`] of the host's `work`.
+fn sim_work<S: PeSim>(
+    sim_pe: &mut S,
+    (setup, patches, cmds): PeWork,
+    config: &CosimConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<Cosim, CosimError> {
     check_range("--tc", config.tc, 1, MAX_TC).map_err(CosimError::Config)?;
-    let (setup, patches, cmds) = commands(&scheduled.stream, &scheduled.fixed)?;
     let map = memory_map(config.cache, patches.len())?;
     let (patches, cmds) = (map.memory(&patches), map.commands(&cmds));
     let (want, model) = pe::model(&setup, &patches, &cmds);

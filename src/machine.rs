@@ -34,7 +34,7 @@ use crate::rays::{Bundle, RaySet};
 use crate::run::{GriddedScene, Scheduled};
 use crate::scene::Scene;
 use crate::trace::{Method, ShellParams};
-use crate::workstream::commands;
+use crate::workstream::{commands, PeWork};
 use serde::Serialize;
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_hdl::formats::Nearest;
@@ -453,6 +453,17 @@ pub fn run(
     config: &MachineConfig,
     progress: impl FnMut(usize, usize),
 ) -> Result<MachineRun, CosimError> {
+    let works = schedules.iter().map(|s| commands(&s.stream, &s.fixed)).collect::<Result<Vec<_>, _>>()?;
+    run_works(works, config, progress)
+}
+
+/// [`run`] of the host's work items as they are handed to the PEs (setup, patches, commands;
+/// e.g. [`crate::workstream::pack`]s of several bundles).
+pub fn run_works(
+    schedules: Vec<PeWork>,
+    config: &MachineConfig,
+    progress: impl FnMut(usize, usize),
+) -> Result<MachineRun, CosimError> {
     if !(1..=MAX_PES).contains(&config.pes) {
         return Err(CosimError::Config(format!("--pes {}: the machine has 1 to {MAX_PES} PEs", config.pes)));
     }
@@ -463,7 +474,7 @@ pub fn run(
                 match config.pes {
                     $($n => {
                         let mut drv = Driver::new(Machine::<$n>::default()).map_err(sim)?;
-                        with_vcd(&mut drv, v, |drv| run_on(drv, schedules, config, progress))
+                        with_vcd(&mut drv, v, |drv| run_on(drv, &schedules, config, progress))
                     })*
                     _ => unreachable!("checked above"),
                 }
@@ -478,11 +489,11 @@ pub fn run(
                 (0..config.pes).map(|_| VerilatedPe::new()).collect::<Result<Vec<_>, _>>().map_err(|e| {
                     CosimError::Sim(format!("{}; the rust-hdl engine needs no Verilator", e.message()))
                 })?;
-            run_on(&mut Composed::threaded(sims).map_err(sim)?, schedules, config, progress)
+            run_on(&mut Composed::threaded(sims).map_err(sim)?, &schedules, config, progress)
         }
         _ => {
             let sims = (0..config.pes).map(|_| rust_hdl_pe()).collect::<Result<Vec<_>, _>>().map_err(sim)?;
-            run_on(&mut Composed::new(sims).map_err(sim)?, schedules, config, progress)
+            run_on(&mut Composed::new(sims).map_err(sim)?, &schedules, config, progress)
         }
     }
 }
@@ -502,7 +513,7 @@ fn sim(e: shelling_testbench::Error) -> CosimError {
 
 fn run_on<M: MachineSim>(
     machine: &mut M,
-    schedules: &[Scheduled],
+    schedules: &[PeWork],
     config: &MachineConfig,
     mut progress: impl FnMut(usize, usize),
 ) -> Result<MachineRun, CosimError> {
@@ -520,11 +531,11 @@ fn run_on<M: MachineSim>(
     // The host memory: the first item's scene, and after it every other scene an item names
     // (the planes of a 3D bundle, `crate::d3::on_pe`), each item's patch numbers offset by where
     // its scene starts (`base`).
-    let (_, mut patches, _) = commands(&first.stream, &first.fixed)?;
+    let mut patches = first.1.clone();
     let first_scene = patches.len();
     let (mut base, mut last_scene) = (Vec::with_capacity(schedules.len()), 0);
-    for s in schedules {
-        let (setup, p, mut cmds) = commands(&s.stream, &s.fixed)?;
+    for (setup, p, cmds) in schedules {
+        let (setup, mut cmds) = (setup.clone(), cmds.clone());
         let at = if p[..] == patches[..first_scene] {
             0
         } else if p[..] == patches[last_scene..] {

@@ -704,7 +704,7 @@ struct Hardware3Json {
     plane_method: Method,
     tc: u32,
     cache: Option<u32>,
-    /// The machine's PEs (`--pes`), or none: each plane on a fresh PE.
+    /// The machine's PEs (`--pes`), or none: each pack of planes on a fresh PE.
     pes: Option<usize>,
     #[serde(flatten)]
     totals: shelling::d3::on_pe::Pe3Totals,
@@ -877,11 +877,11 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
         let t = &h.totals;
         say!(
             out,
-            "on {} ({} simulation, T_c = {}, cache {}): {} planes of {} bundles, {} cycles = {:.3} ms at {} \
-             MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's of the slices; {} \
+            "on {} ({} simulation, T_c = {}, cache {}): {} planes of {} bundles in {} packs, {} cycles = {:.3} ms \
+             at {} MHz; every hit equals the bit-true model's, {} of {} rays the f64 golden model's of the slices; {} \
              host tests of polygons parallel to a plane; {} of {} rays hit the 3D brute force's polygon",
-            h.pes.map_or("the PE, each sweep plane on a fresh one".to_string(), |n| format!(
-                "the machine of {n} PE{}, the sweep planes its sources",
+            h.pes.map_or("the PE, each pack of sweep planes on a fresh one".to_string(), |n| format!(
+                "the machine of {n} PE{}, the packs of sweep planes its sources",
                 if n == 1 { "" } else { "s" }
             )),
             h.engine,
@@ -889,6 +889,7 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
             h.cache.map_or("off".to_string(), |c| format!("{c} patches")),
             t.pe.bundles,
             t.origins,
+            t.packs,
             t.pe.cycles,
             h.seconds * 1e3,
             h.clock_mhz,

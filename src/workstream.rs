@@ -252,6 +252,68 @@ pub fn commands(
     Ok((setup, patches, cmds))
 }
 
+/// What the host hands a processing element for one source: the setup, the host memory's patches
+/// (`[ax, ay, bx, by]`, Q11.6 after the quantiser's offset) and the commands.
+pub type PeWork = (PeSetup, Vec<[i32; 4]>, Vec<Command>);
+
+/// The work of several bundles shot from one ray origin with one source normal (the sweep planes
+/// of a 3D bundle, `crate::d3::on_pe`) as one source of the PE: their directions one after
+/// another, their patches one after another in the host memory, each bundle's commands with its
+/// rays and patches moved past those before it (its jobs then test only its own rays against its
+/// own patches, so every ray's hit is the one it has alone). Each bundle's coordinates are moved
+/// onto the lowest of the bundles' quantiser offsets by whole world units, exactly (the datapath's
+/// coordinates relative to the origin do not depend on the offset). Fails when the bundles'
+/// origins or normals differ, when the directions exceed the PE's ray memory or a moved
+/// coordinate its window.
+pub fn pack(parts: &[(&WorkStream, &FixedBundle)]) -> Result<PeWork, StreamError> {
+    let bad = |what: String| Err(StreamError::Invalid { item: 0, what });
+    let lowest = |k: usize| parts.iter().map(|(_, f)| f.quantizer.offset[k]).fold(f64::INFINITY, f64::min);
+    let offset = [lowest(0), lowest(1)];
+    let scale = f64::from(1u32 << shelling_hdl::formats::COORD_FRAC);
+    let top = (shelling_hdl::formats::WORLD_SPAN * scale) as i64;
+    let (mut setup, mut patches, mut cmds) = (None::<PeSetup>, Vec::new(), Vec::new());
+    for (i, (stream, fixed)) in parts.iter().enumerate() {
+        let (s, p, c) = commands(stream, fixed)?;
+        let shift = [0, 1].map(|k| ((fixed.quantizer.offset[k] - offset[k]) * scale) as i32);
+        let moved = |x: i32, k: usize| x + shift[k];
+        let origin = [moved(s.origin[0], 0), moved(s.origin[1], 1)];
+        let (rays, base, count) = (setup.as_ref().map_or(0, |s| s.dirs.len()), patches.len(), s.dirs.len());
+        match &mut setup {
+            None => setup = Some(PeSetup { origin, ..s }),
+            Some(t) if t.origin == origin && t.normal == s.normal => t.dirs.extend_from_slice(&s.dirs),
+            Some(_) => {
+                return bad(format!("bundle {i} of a pack has another ray origin or normal than bundle 0"))
+            }
+        }
+        for q in p {
+            let q = [moved(q[0], 0), moved(q[1], 1), moved(q[2], 0), moved(q[3], 1)];
+            if q.iter().any(|&x| i64::from(x) >= top) {
+                return bad(format!(
+                    "bundle {i}'s patches lie beyond the datapath's window from bundle 0's origin"
+                ));
+            }
+            patches.push(q);
+        }
+        if rays + count > PE_RAY_MEMORY {
+            return Err(StreamError::TooManyRays(rays + count));
+        }
+        if patches.len() > 1 << shelling_hdl::formats::ID_BITS {
+            return bad(format!("a pack of {} patches: the patch ids are 16 bits", patches.len()));
+        }
+        cmds.extend(c.into_iter().map(|c| match c {
+            Command::Job { id, first, count } => {
+                Command::Job { id: id + base as u16, first: first + rays as u16, count }
+            }
+            Command::Retire { first, count } => Command::Retire { first: first + rays as u16, count },
+            sector => sector,
+        }));
+    }
+    match setup {
+        Some(setup) => Ok((setup, patches, cmds)),
+        None => bad("a pack of no bundle".to_string()),
+    }
+}
+
 /// The part of `rays` from its first live ray to its last (empty, at `rays.start`, if none is
 /// live): a job's range as the host sends it, so that the intersection unit spends no slot on the
 /// retired rays at either end of it (those between, it still issues: `ModelCounts::live_runs`

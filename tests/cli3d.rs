@@ -233,7 +233,7 @@ fn radiosity_of_an_obj_scene_on_the_pe() {
         assert!((a - b).abs() <= 1e-2 * b.abs().max(1e-9), "{a} against the software's {b}");
     }
     let text = ok(&[&args[..args.len() - 1], &["--on-pe", "--quiet"]].concat());
-    assert!(text.contains("on the PE, each sweep plane on a fresh one"), "{text}");
+    assert!(text.contains("on the PE, each pack of sweep planes on a fresh one"), "{text}");
     // On the machine of two PEs: the same rows, so the same solution, in the machine's cycles.
     let m = json(&[&args[..], &["--on-pe", "--tc", "4", "--cache", "16", "--pes", "2"]].concat());
     assert_eq!(m["patches"], pe["patches"]);

@@ -164,6 +164,7 @@ fn rows_on_the_pe_are_the_sweeps_rows() {
     assert!((pe.sum() - 1.0).abs() < 1e-12);
     assert_eq!((t.origins, t.pe.bundles, t.pe.rays), (3, 3 * 32, 3 * 1024), "64 x 16 rays: 32 planes of 32");
     assert_eq!((t.brute_agree, t.pe.golden_agree, t.pe.rows), (3 * 1024, 3 * 1024, 1));
+    assert_eq!(t.packs, 3, "a bundle's 32 planes of 32 rays are one source of the PE");
     assert!(t.pe.tests >= 3 * 1024 && t.pe.cycles > t.pe.tests && t.pe.patch_loads > 0, "{t:?}");
     // The Cornell box, a light's row and a block's: where a ray's polygon differs from the
     // software's (a ray within rounding of an edge), its weight moves from one entry to

@@ -9,7 +9,7 @@ use shelling::run::GriddedScene;
 use shelling::scene::{self, PAPER_WORLD};
 use shelling::trace::{Method, ShellParams};
 use shelling::workstream::{commands, execute, Item};
-use shelling_hdl::formats::key_distance;
+use shelling_hdl::formats::{key_distance, Nearest};
 use shelling_testbench::pe::{model, Command};
 
 const METHODS: [Method; 3] = [Method::Conventional, Method::Stochastic, Method::Deterministic];
@@ -108,4 +108,40 @@ fn the_host_trims_each_jobs_range_and_retires_late_and_loses_no_test() {
             full.ray_slots, late.ray_slots, late.tests, late.live_runs, late.retires, full.retires
         );
     }
+}
+
+#[test]
+fn a_pack_of_bundles_from_one_origin_gives_each_bundles_hits() {
+    // Two bundles from one source of a scene packed into one source of the PE: the bit-true
+    // model of the pack gives each bundle's own hits, the second's patches numbered after the
+    // first's. Bundles from two origins, or more rays than the PE holds, are refused.
+    use shelling::workstream::pack;
+    let params = ShellParams::default();
+    let scene = scene::generate(300, 16.0, 5, PAPER_WORLD).expect("scene");
+    let prepared = GriddedScene::new(scene, GridParams::default());
+    let a = prepared.patch_bundle(3, RaySet::Angle, 512).expect("source");
+    let b = prepared.patch_bundle(3, RaySet::Angle, 256).expect("source");
+    let (sa, sb) = (
+        prepared.schedule(Method::Deterministic, &a, &params).unwrap(),
+        prepared.schedule(Method::Stochastic, &b, &params).unwrap(),
+    );
+    let (setup, patches, cmds) = pack(&[(&sa.stream, &sa.fixed), (&sb.stream, &sb.fixed)]).unwrap();
+    assert_eq!((setup.dirs.len(), patches.len()), (768, 600));
+    let (hits, _) = model(&setup, &patches, &cmds);
+    let mut want = Vec::new();
+    for (s, base) in [(&sa, 0u16), (&sb, 300)] {
+        let (setup, patches, cmds) = commands(&s.stream, &s.fixed).unwrap();
+        want.extend(
+            model(&setup, &patches, &cmds).0.into_iter().map(|h| h.map(|n| Nearest { id: n.id + base, ..n })),
+        );
+    }
+    assert_eq!(hits, want);
+    assert!(hits.iter().flatten().count() > 300, "the bundles hit too little to tell");
+    let other = prepared
+        .schedule(Method::Deterministic, &prepared.patch_bundle(4, RaySet::Angle, 64).unwrap(), &params)
+        .unwrap();
+    let e = pack(&[(&sa.stream, &sa.fixed), (&other.stream, &other.fixed)]).unwrap_err().to_string();
+    assert!(e.contains("another ray origin"), "{e}");
+    let e = pack(&[(&sa.stream, &sa.fixed), (&sa.stream, &sa.fixed), (&sb.stream, &sb.fixed)]).unwrap_err();
+    assert!(e.to_string().contains("1280 rays"), "{e}");
 }

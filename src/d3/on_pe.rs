@@ -20,9 +20,14 @@
 //!   window ([`WORLD_SPAN`] = 2048 units at 2⁻⁶): exact in `f64`, so no hit changes, and the
 //!   scene uses the datapath's resolution whatever its units.
 //! * **Schedule.** Each plane's bundle (its `2·n_phi` rays, by increasing 2D angle) is scheduled
-//!   by the 2D technique `method` on the bit-true backend, checked against the `f64` golden
-//!   model on the same slices within the documented bound (rung 2) and co-simulated on a fresh
-//!   PE ([`crate::cosim`], hits checked against the bit-true model).
+//!   by the 2D deterministic technique ([`PLANE_METHOD`]) on the bit-true backend and checked
+//!   against the `f64` golden model on the same slices within the documented bound (rung 2).
+//! * **Packs.** A plane is short work (64 rays at the defaults), so the planes of one bundle are
+//!   packed as many as the PE's ray memory holds (16 of 64 rays) into one source of the PE
+//!   ([`crate::workstream::pack`]: the directions one after another, the slices one after
+//!   another in the host memory, each plane's jobs on its own rays and slices): one setup, drain
+//!   and readout for the pack. A pack is co-simulated on a fresh PE ([`crate::cosim`], hits
+//!   checked against the bit-true model), or is a source of the machine ([`rows_on_machine`]).
 //!
 //! # Checks
 //!
@@ -47,6 +52,7 @@ use crate::radiosity::on_pe::{PeTotals, PE_RAY_MEMORY};
 use crate::run::{GriddedScene, RunError, Scheduled};
 use crate::scene::Scene;
 use crate::trace::{Method, TraceError};
+use crate::workstream::PeWork;
 use glam::DVec3;
 use shelling_hdl::formats::{Nearest, WORLD_SPAN};
 
@@ -65,6 +71,8 @@ pub struct Pe3Totals {
     pub origins: usize,
     /// Ray–polygon tests the host made for the polygons the sweep tests directly.
     pub host_tests: u64,
+    /// Sources of the PE: the planes packed as many as its ray memory holds.
+    pub packs: usize,
     /// Rays whose polygon is the 3D brute force's.
     pub brute_agree: usize,
 }
@@ -201,6 +209,29 @@ impl Planes<'_> {
         Ok(())
     }
 
+    /// The hardware's hits of a pack's source (`hits`: its planes' rays one after another, their
+    /// slices numbered one after another), each plane's offered as [`Planes::offer_hits`] does.
+    fn offer_pack(
+        &self,
+        pack: &Pack,
+        hits: &[Option<Nearest>],
+        best: &mut [Option<Hit>],
+    ) -> Result<(), On3Error> {
+        let (mut ray, mut patch) = (0usize, 0u16);
+        for (plane, scheduled) in pack {
+            let n = plane.bundle.len();
+            // A hit on another plane's slice wraps to a number the check below refuses.
+            let own: Vec<Option<Nearest>> = hits[ray..ray + n]
+                .iter()
+                .map(|h| h.map(|x| Nearest { id: x.id.wrapping_sub(patch), ..x }))
+                .collect();
+            self.offer_hits(plane, scheduled, &own, best)?;
+            ray += n;
+            patch += scheduled.fixed.patches.len() as u16;
+        }
+        Ok(())
+    }
+
     /// The polygons `plane` tests directly, tested by the host in `f64` and offered into `best`.
     fn host_tests(&self, plane: &SweepPlane, totals: &mut Pe3Totals, best: &mut [Option<Hit>]) {
         let o = self.bundle.source.origin;
@@ -215,6 +246,30 @@ impl Planes<'_> {
             }
         }
     }
+}
+
+/// One source of the PE: scheduled sweep planes of one bundle, packed one after another
+/// ([`crate::workstream::pack`]).
+type Pack = Vec<(SweepPlane, Scheduled)>;
+
+/// A bundle's scheduled planes in packs of as many planes as the PE's ray memory holds (every
+/// plane of a bundle has `2·n_phi` rays), in order.
+fn packs(planes: Vec<(SweepPlane, Scheduled)>) -> Vec<Pack> {
+    let per = planes.first().map_or(1, |(plane, _)| (PE_RAY_MEMORY / plane.bundle.len().max(1)).max(1));
+    let mut out: Vec<Pack> = Vec::new();
+    for (k, plane) in planes.into_iter().enumerate() {
+        if k % per == 0 {
+            out.push(Vec::with_capacity(per));
+        }
+        out.last_mut().expect("pushed above").push(plane);
+    }
+    out
+}
+
+/// What the host hands the PE for `pack`.
+fn pack_work(pack: &Pack) -> Result<PeWork, On3Error> {
+    let parts: Vec<_> = pack.iter().map(|(_, s)| (&s.stream, &s.fixed)).collect();
+    Ok(crate::workstream::pack(&parts).map_err(CosimError::from)?)
 }
 
 /// Adds a PE's or the machine's counts to `totals`.
@@ -242,7 +297,7 @@ fn against_brute(
 }
 
 /// The nearest hit of every ray of `bundle` (a hemisphere set's, `n_theta` even), its sweep
-/// planes traced each on a fresh PE (module docs); the rays that agree with the 3D brute force
+/// planes traced in packs, each on a fresh PE (module docs); the rays that agree with the 3D brute force
 /// (over `facets`, the scene's) are counted.
 pub fn bundle_on_pe(
     scene: &Scene3,
@@ -254,21 +309,26 @@ pub fn bundle_on_pe(
 ) -> Result<Vec<Option<Hit>>, On3Error> {
     let at = Planes { scene, bundle, scale: plane_scale(scene, bundle.source.origin), p };
     let mut best = vec![None; bundle.len()];
+    let mut scheduled = Vec::new();
     for plane in planes_with(scene, bundle, Slicing::Exact)? {
         at.host_tests(&plane, totals, &mut best);
-        if let Some(scheduled) = at.schedule(&plane, &mut totals.pe)? {
-            let run = cosim::run(&scheduled, config, |_, _| {})?;
-            at.offer_hits(&plane, &scheduled, &run.hits, &mut best)?;
-            let h = &run.hardware;
-            add_hardware(
-                &mut totals.pe,
-                h.cycles,
-                h.intersection_busy_cycles,
-                h.patch_loads,
-                h.cache_hits,
-                h.tests,
-            );
+        if let Some(s) = at.schedule(&plane, &mut totals.pe)? {
+            scheduled.push((plane, s));
         }
+    }
+    for pack in packs(scheduled) {
+        let run = cosim::run_work(pack_work(&pack)?, config, |_, _| {})?;
+        at.offer_pack(&pack, &run.hits, &mut best)?;
+        totals.packs += 1;
+        let h = &run.hardware;
+        add_hardware(
+            &mut totals.pe,
+            h.cycles,
+            h.intersection_busy_cycles,
+            h.patch_loads,
+            h.cache_hits,
+            h.tests,
+        );
     }
     against_brute(scene, facets, bundle, &best, totals);
     Ok(best)
@@ -306,11 +366,12 @@ impl std::ops::AddAssign for Pe3Totals {
         self.pe += o.pe;
         self.origins += o.origins;
         self.host_tests += o.host_tests;
+        self.packs += o.packs;
         self.brute_agree += o.brute_agree;
     }
 }
 
-/// The rows of the sources `range` on the PE, computed on all cores (each plane on its own fresh
+/// The rows of the sources `range` on the PE, computed on all cores (each pack on its own fresh
 /// PE, so the order does not change the cycles), in order, with the hardware's sums; `progress`
 /// is called once per finished row.
 pub fn rows(
@@ -346,20 +407,18 @@ struct OpenBundle {
     best: Vec<Option<Hit>>,
 }
 
-/// The planes of a batch, and the bundles they belong to.
+/// The packs of a batch, and the bundles they belong to.
 #[derive(Default)]
 struct Batch {
     open: Vec<OpenBundle>,
-    /// Each plane: its bundle (in `open`) and the plane.
-    planes: Vec<(usize, SweepPlane)>,
-    /// Each plane's schedule: the machine's work.
-    work: Vec<Scheduled>,
+    /// Each pack (a source of the machine) and its bundle (in `open`).
+    packs: Vec<(usize, Pack)>,
     slices: usize,
 }
 
 /// Every row of `scene` on the parallel machine of `config.pes` PEs: every origin's sweep planes
-/// scheduled and checked as [`bundle_on_pe`] does, each plane a whole source of the machine (its
-/// slices a scene of their own in the shared host memory), dealt as `config.deal` says in batches
+/// scheduled, checked and packed as [`bundle_on_pe`] does, each pack a whole source of the
+/// machine (its slices a scene of their own in the shared host memory), dealt as `config.deal` says in batches
 /// of whole bundles of at most [`BATCH_PATCHES`] slices, one machine run each (its cycles the
 /// batches' sum). The patches stay at their index (`Placement::Index`): two slices hit at one
 /// distance go to the lower, as in the bit-true trace. `progress(rows done, rows)`.
@@ -397,12 +456,14 @@ pub fn rows_on_machine_in(
     let mut flush = |batch: &mut Batch, totals: &mut Pe3Totals| -> Result<(), On3Error> {
         let batch = std::mem::take(batch);
         let mut open = batch.open;
-        if !batch.work.is_empty() {
-            let run = machine::run(&batch.work, &config, |_, _| {})?;
-            for (((b, plane), scheduled), hits) in batch.planes.iter().zip(&batch.work).zip(&run.hits) {
+        if !batch.packs.is_empty() {
+            let works = batch.packs.iter().map(|(_, pack)| pack_work(pack)).collect::<Result<Vec<_>, _>>()?;
+            let run = machine::run_works(works, &config, |_, _| {})?;
+            totals.packs += batch.packs.len();
+            for ((b, pack), hits) in batch.packs.iter().zip(&run.hits) {
                 let o = &mut open[*b];
                 let at = Planes { scene, bundle: &o.bundle, scale: o.scale, p };
-                at.offer_hits(plane, scheduled, hits, &mut o.best)?;
+                at.offer_pack(pack, hits, &mut o.best)?;
             }
             let (r, t) = (&run, &mut totals.pe);
             add_hardware(t, r.cycles, r.intersection_busy_cycles, r.patch_loads, r.cache_hits, r.tests);
@@ -447,10 +508,7 @@ pub fn rows_on_machine_in(
             let weights = set.rays.iter().map(|r| r.weight * weight).collect();
             batch.open.push(OpenBundle { k, bundle, weights, scale, best });
             let b = batch.open.len() - 1;
-            for (plane, scheduled) in mine {
-                batch.planes.push((b, plane));
-                batch.work.push(scheduled);
-            }
+            batch.packs.extend(packs(mine).into_iter().map(|pack| (b, pack)));
             batch.slices += slices;
         }
         progress(k + 1, n);
