@@ -120,9 +120,5 @@ fn main() {
             );
         }
     }
-    print!("{md}");
-    if let Some(path) = arg("--write") {
-        std::fs::write(&path, &md).unwrap_or_else(|e| panic!("writing {path}: {e}"));
-        eprintln!("written to {path}");
-    }
+    headline::finish(&md, arg("--write"));
 }

@@ -99,9 +99,5 @@ fn main() {
             rate / cores
         );
     }
-    print!("{md}");
-    if let Some(path) = arg("--write") {
-        std::fs::write(&path, &md).unwrap_or_else(|e| panic!("writing {path}: {e}"));
-        eprintln!("written to {path}");
-    }
+    headline::finish(&md, arg("--write"));
 }

@@ -245,8 +245,14 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
     let rows = form_factors::rows(&prepared, range.clone(), &params, || bar.inc(1));
     bar.finish_and_clear();
     let file = MatrixFile::new(&prepared.scene, &params, range.start, rows?);
+    write_matrix(&a, &file)
+}
+
+/// Writes the matrix slice `file` to `--out` and says what it holds.
+fn write_matrix(a: &FormFactorsArgs, file: &MatrixFile) -> Result<()> {
     let target = a.out.as_deref().expect("clap requires --out");
     write_file(target, &file.to_json())?;
+    let mut out = Out::new();
     say!(
         out,
         "{}: rows {}..{} of {} ({} form factors)",
@@ -293,20 +299,7 @@ fn matrix_3d(a: &FormFactorsArgs, path: &Path, rows: RowsArg) -> Result<()> {
     let bar = progress_bar(range.len(), "rows", a.quiet);
     let done = ff3::rows(&scene, &grid, range.clone(), &params, || bar.inc(1));
     bar.finish_and_clear();
-    let file = MatrixFile::new3(&scene, &params, a.ff.ray_set, range.start, done?);
-    let target = a.out.as_deref().expect("clap requires --out");
-    write_file(target, &file.to_json())?;
-    let mut out = Out::new();
-    say!(
-        out,
-        "{}: rows {}..{} of {} ({} form factors)",
-        target.display(),
-        file.rows_from,
-        file.rows_to,
-        file.scene.patches,
-        file.rows.iter().map(|r| r.entries.len()).sum::<usize>()
-    );
-    out.flush()
+    write_matrix(a, &MatrixFile::new3(&scene, &params, a.ff.ray_set, range.start, done?))
 }
 
 /// The 3D estimate's parameters from the options: `--rays` (default 4096), `--origins` (256),

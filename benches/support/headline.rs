@@ -33,3 +33,12 @@ pub fn software_rows(md: &mut String, names: &[&str], rates: &[[f64; 2]], thread
     }
     (core, cores)
 }
+
+/// Prints the table `md`, and writes it to `path` if given (`--write`).
+pub fn finish(md: &str, path: Option<String>) {
+    print!("{md}");
+    if let Some(path) = path {
+        std::fs::write(&path, md).unwrap_or_else(|e| panic!("writing {path}: {e}"));
+        eprintln!("written to {path}");
+    }
+}

@@ -15,6 +15,24 @@ fn committed(name: &str) -> String {
     std::fs::read_to_string(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
 }
 
+/// The machine rows of a headline table: each line, its PE count and its cells.
+fn machine_rows(table: &str) -> Vec<(&str, usize, Vec<&str>)> {
+    table
+        .lines()
+        .filter(|l| l.starts_with("| machine, "))
+        .map(|line| {
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            let pes: usize = cells[1]
+                .trim_start_matches("machine, ")
+                .split(' ')
+                .next()
+                .and_then(|n| n.parse().ok())
+                .unwrap_or_else(|| panic!("no PE count in {line:?}"));
+            (line, pes, cells)
+        })
+        .collect()
+}
+
 #[test]
 fn the_committed_machine_figures_are_those_of_the_current_code() {
     assert!(shelling_testbench::verilated::available(), "the machine figures need Verilator (see .ci/run)");
@@ -52,14 +70,7 @@ fn the_readmes_headline_cycles_are_those_of_the_current_code() {
     assert!(shelling_testbench::verilated::available(), "the headline needs Verilator (see .ci/run)");
     let table = committed("headline.md");
     let mut checked = 0;
-    for line in table.lines().filter(|l| l.starts_with("| machine, ")) {
-        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-        let pes: usize = cells[1]
-            .trim_start_matches("machine, ")
-            .split(' ')
-            .next()
-            .and_then(|n| n.parse().ok())
-            .unwrap_or_else(|| panic!("no PE count in {line:?}"));
+    for (line, pes, cells) in machine_rows(&table) {
         let method = match cells[2] {
             "stochastic" => Method::Stochastic,
             "deterministic" => Method::Deterministic,
@@ -82,14 +93,7 @@ fn the_3d_headline_cycles_are_those_of_the_current_code() {
     assert!(shelling_testbench::verilated::available(), "the headline needs Verilator (see .ci/run)");
     let table = committed("headline3d.md");
     let mut checked = 0;
-    for line in table.lines().filter(|l| l.starts_with("| machine, ")) {
-        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-        let pes: usize = cells[1]
-            .trim_start_matches("machine, ")
-            .split(' ')
-            .next()
-            .and_then(|n| n.parse().ok())
-            .unwrap_or_else(|| panic!("no PE count in {line:?}"));
+    for (line, pes, cells) in machine_rows(&table) {
         let (cycles, loads): (u64, u64) = match (cells[3].parse(), cells[4].parse()) {
             (Ok(c), Ok(l)) => (c, l),
             _ => panic!("no cycles or host loads in {line:?}"),
