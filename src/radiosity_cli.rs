@@ -248,6 +248,26 @@ pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
     write_matrix(&a, &file)
 }
 
+/// The rows of the whole matrix file at `path`, which `of_scene` checks is of the scene solved
+/// (it is given the file and its name).
+fn whole_matrix(
+    path: &Path,
+    of_scene: impl Fn(&MatrixFile, &str) -> Result<(), matrix::MatrixError>,
+) -> Result<Vec<Row>> {
+    let m = MatrixFile::load(path)?;
+    of_scene(&m, &path.display().to_string())?;
+    if !m.is_whole() {
+        bail!(
+            "{}: holds rows {}..{} of {}: merge the slices first (form-factors --merge)",
+            path.display(),
+            m.rows_from,
+            m.rows_to,
+            m.scene.patches
+        );
+    }
+    Ok(m.rows)
+}
+
 /// Writes the matrix slice `file` to `--out` and says what it holds.
 fn write_matrix(a: &FormFactorsArgs, file: &MatrixFile) -> Result<()> {
     let target = a.out.as_deref().expect("clap requires --out");
@@ -509,20 +529,7 @@ pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
         }
         Solver::Full => {
             let rows: Vec<Row> = match &a.matrix {
-                Some(path) => {
-                    let m = MatrixFile::load(path)?;
-                    m.check_scene(&prepared.scene, &path.display().to_string(), &name)?;
-                    if !m.is_whole() {
-                        bail!(
-                            "{}: holds rows {}..{} of {}: merge the slices first (form-factors --merge)",
-                            path.display(),
-                            m.rows_from,
-                            m.rows_to,
-                            m.scene.patches
-                        );
-                    }
-                    m.rows
-                }
+                Some(path) => whole_matrix(path, |m, p| m.check_scene(&prepared.scene, p, &name))?,
                 None if a.on_pe && a.pes.is_some() => {
                     let machine = MachineConfig {
                         pes: a.pes.unwrap_or(1),
@@ -759,18 +766,7 @@ fn radiosity_3d(a: &RadiosityArgs, path: &Path) -> Result<()> {
             let rows = match (a.on_pe, a.pes) {
                 _ if a.matrix.is_some() => {
                     let path = a.matrix.as_deref().expect("matched");
-                    let m = MatrixFile::load(path)?;
-                    m.check_scene3(&scene, &path.display().to_string(), &name)?;
-                    if !m.is_whole() {
-                        bail!(
-                            "{}: holds rows {}..{} of {}: merge the slices first (form-factors --merge)",
-                            path.display(),
-                            m.rows_from,
-                            m.rows_to,
-                            m.scene.patches
-                        );
-                    }
-                    m.rows
+                    whole_matrix(path, |m, p| m.check_scene3(&scene, p, &name))?
                 }
                 (true, Some(pes)) => {
                     let machine = MachineConfig {
