@@ -70,7 +70,7 @@ fn main() {
         md,
         "The Cornell box (`scenes/cornell_box.obj`, {n} polygons): every polygon's form-factor row, {RAYS} cosine \
          rays from each of {ORIGINS} origins (`cargo bench --bench machine3d`). Machine: every row's sweep planes \
-         (64 planes of 64 rays an origin) a source, `T_c` = {TC} cycles per patch on one host memory shared by all \
+         (64 planes of 64 rays an origin), packed 16 planes a source of the PEs, `T_c` = {TC} cycles per patch on one host memory shared by all \
          PEs, a {}-patch cache per PE (a quarter of the polygons), every hit checked against the bit-true \
          model; software: the four 3D techniques (the same rows), median of {rounds} rounds on this machine \
          ({threads} cores; the one-core rounds first), the ratios against the fastest on one core and on all \
