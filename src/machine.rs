@@ -542,7 +542,7 @@ fn run_on<M: MachineSim>(
             last_scene
         } else {
             last_scene = patches.len();
-            patches.extend_from_slice(&p);
+            patches.extend_from_slice(p);
             last_scene
         };
         if patches.len() > MAX_HOST_PATCHES {
