@@ -445,7 +445,7 @@ pub const MAX_HOST_PATCHES: usize = 1 << shelling_hdl::formats::ID_BITS;
 /// `config.deal`: sources in the order to deal them, each in [`Deal::parts`] parts) on the
 /// machine of `config`; `progress(items done, items)` after each item's readout. Every item's
 /// hits and counters are checked against the bit-true model of its commands. Items of other
-/// scenes (a 3D bundle's sweep planes, [`crate::d3::on_pe`]) are each a whole source: their
+/// scenes (a 3D bundle's packed sweep planes, [`crate::d3::on_pe`]) are each a whole source: their
 /// scenes follow the first item's in the host memory, at most [`MAX_HOST_PATCHES`] patches in
 /// all, and each item's hits name its own scene's patches.
 pub fn run(
@@ -529,7 +529,7 @@ fn run_on<M: MachineSim>(
     }
     let mut items: Vec<(PeSetup, Vec<Command>)> = Vec::with_capacity(schedules.len());
     // The host memory: the first item's scene, and after it every other scene an item names
-    // (the planes of a 3D bundle, `crate::d3::on_pe`), each item's patch numbers offset by where
+    // (the packed planes of a 3D bundle, `crate::d3::on_pe`), each item's patch numbers offset by where
     // its scene starts (`base`).
     let mut patches = first.1.clone();
     let first_scene = patches.len();

@@ -272,15 +272,6 @@ fn pack_work(pack: &Pack) -> Result<PeWork, On3Error> {
     Ok(crate::workstream::pack(&parts).map_err(CosimError::from)?)
 }
 
-/// Adds a PE's or the machine's counts to `totals`.
-fn add_hardware(totals: &mut PeTotals, cycles: u64, busy: u64, loads: u64, cache_hits: u64, tests: u64) {
-    totals.cycles += cycles;
-    totals.intersection_busy_cycles += busy;
-    totals.patch_loads += loads;
-    totals.cache_hits += cache_hits;
-    totals.tests += tests;
-}
-
 /// `bundle`'s hits `best` against the 3D brute force's (over `facets`): the agreeing rays
 /// counted in `totals`, the bundle too.
 fn against_brute(
@@ -320,15 +311,7 @@ pub fn bundle_on_pe(
         let run = cosim::run_work(pack_work(&pack)?, config, |_, _| {})?;
         at.offer_pack(&pack, &run.hits, &mut best)?;
         totals.packs += 1;
-        let h = &run.hardware;
-        add_hardware(
-            &mut totals.pe,
-            h.cycles,
-            h.intersection_busy_cycles,
-            h.patch_loads,
-            h.cache_hits,
-            h.tests,
-        );
+        totals.pe.add_pe(&run.hardware);
     }
     against_brute(scene, facets, bundle, &best, totals);
     Ok(best)
@@ -465,8 +448,7 @@ pub fn rows_on_machine_in(
                 let at = Planes { scene, bundle: &o.bundle, scale: o.scale, p };
                 at.offer_pack(pack, hits, &mut o.best)?;
             }
-            let (r, t) = (&run, &mut totals.pe);
-            add_hardware(t, r.cycles, r.intersection_busy_cycles, r.patch_loads, r.cache_hits, r.tests);
+            totals.pe.add_machine(&run);
         }
         for o in &open {
             against_brute(scene, &facets, &o.bundle, &o.best, totals);

@@ -70,6 +70,26 @@ pub struct PeTotals {
     pub golden_agree: usize,
 }
 
+impl PeTotals {
+    /// Adds a fresh PE's counts of one source.
+    pub fn add_pe(&mut self, h: &shelling_testbench::pe::PeCounters) {
+        self.add_counts(h.cycles, h.intersection_busy_cycles, h.patch_loads, h.cache_hits, h.tests);
+    }
+
+    /// Adds a machine run's counts (its cycles the run's time).
+    pub fn add_machine(&mut self, r: &crate::machine::MachineRun) {
+        self.add_counts(r.cycles, r.intersection_busy_cycles, r.patch_loads, r.cache_hits, r.tests);
+    }
+
+    fn add_counts(&mut self, cycles: u64, busy: u64, loads: u64, cache_hits: u64, tests: u64) {
+        self.cycles += cycles;
+        self.intersection_busy_cycles += busy;
+        self.patch_loads += loads;
+        self.cache_hits += cache_hits;
+        self.tests += tests;
+    }
+}
+
 impl std::ops::AddAssign for PeTotals {
     fn add_assign(&mut self, o: PeTotals) {
         self.rows += o.rows;
@@ -155,14 +175,9 @@ pub fn row(
         let (scheduled, agree) = scheduled_within_bound(prepared, k, &bundle, p)?;
         let run = cosim::run(&scheduled, config, |_, _| {})?;
         builder.add_patches(run.hits.iter().map(|h| h.map(|n| n.id as usize)));
-        let h = &run.hardware;
         totals.bundles += 1;
         totals.rays += bundle.len();
-        totals.cycles += h.cycles;
-        totals.intersection_busy_cycles += h.intersection_busy_cycles;
-        totals.patch_loads += h.patch_loads;
-        totals.cache_hits += h.cache_hits;
-        totals.tests += h.tests;
+        totals.add_pe(&run.hardware);
         totals.golden_agree += agree;
     }
     totals.rows += 1;
@@ -227,11 +242,7 @@ pub fn all_rows_on_machine(
         builders[k].add_patches(hits.iter().map(|h| h.map(|n| n.id as usize)));
     }
     totals.rows = prepared.scene.len();
-    totals.cycles = run.cycles;
-    totals.intersection_busy_cycles = run.intersection_busy_cycles;
-    totals.patch_loads = run.patch_loads;
-    totals.cache_hits = run.cache_hits;
-    totals.tests = run.tests;
+    totals.add_machine(&run);
     let rows = builders.into_iter().enumerate().map(|(k, b)| b.finish(k)).collect();
     Ok((rows, totals))
 }
