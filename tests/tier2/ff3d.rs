@@ -1,6 +1,6 @@
 //! Tier 2 of the 3D form factors: the closed-form cases of `tests/ff3d.rs` at the defaults and at
 //! four times the rays, the origins or both, the table of relative errors
-//! printed (SCENES3D.md quotes it: `cargo test --features tier2 --test tier2 ff3d:: --
+//! printed (SCENES3D.md quotes it: `cargo test --release --features tier2 --test tier2 ff3d:: --
 //! --nocapture`), and the largest settings held to 0.3 %.
 
 use crate::support::closed3d::{self, c11, c14, rel};

@@ -32,7 +32,7 @@ fn the_committed_cycle_figures_are_those_of_the_current_code() {
         assert!(
             old == fresh,
             "figures/{name} is stale: run `cargo run --release -- figures --out figures` (or \
-             SHELLING_BLESS=1 cargo test --features tier2 --test tier2 figures) and update FIGURES.md"
+             SHELLING_BLESS=1 cargo test --release --features tier2 --test tier2 figures) and update FIGURES.md"
         );
     }
 }

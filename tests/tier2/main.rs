@@ -1,4 +1,4 @@
-//! Tier 2 of the tests (`cargo test --workspace --features tier2 --test tier2`): the long
+//! Tier 2 of the tests (`cargo test --release --workspace --features tier2 --test tier2`): the long
 //! equivalence checks, which tier 1 (`tests/tests.rs`) represents with short vectors.
 
 // Each tier uses its own part of the shared helpers.

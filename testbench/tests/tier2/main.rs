@@ -1,4 +1,4 @@
-//! Tier 2 of the block tests (`cargo test --workspace --features tier2 --test tier2`): the
+//! Tier 2 of the block tests (`cargo test --release --workspace --features tier2 --test tier2`): the
 //! formal tasks, which take minutes each.
 
 mod formal;
