@@ -120,7 +120,7 @@ enum SceneKind {
 struct GenArgs {
     /// The dimension: 2 (a JSON scene of segments) or 3 (an OBJ scene of polygons, SCENES3D.md:
     /// --count random squares of side --size in [0, 1024)³; needs --out).
-    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3))]
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3), allow_negative_numbers = true)]
     dim: u8,
     /// 3D: side of every square patch, greater than 0 and less than 1024/√3 (default 32).
     #[arg(long, allow_negative_numbers = true)]
@@ -365,16 +365,16 @@ struct CosimArgs {
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
     method: Method,
     /// Cycles the host memory takes to deliver one patch (T_c), 1 to 1024.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     tc: u32,
     /// Give the PE a patch cache of this many patches (1 to 1024): a patch
     /// loaded before costs one clock instead of T_c. Without it every load goes to the host.
-    #[arg(long, value_name = "PATCHES")]
+    #[arg(long, value_name = "PATCHES", allow_negative_numbers = true)]
     cache: Option<u32>,
     /// Co-simulate the source on the parallel machine of this many PEs (1 to 8) sharing the
     /// host memory: its rays cut into as many contiguous sectors, one a PE (a ray always on
     /// one PE), each PE with its own cache; prints the machine's report (`machine`'s).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     pes: usize,
     #[command(flatten)]
     vcd: VcdArgs,
@@ -400,11 +400,11 @@ struct VcdArgs {
     #[arg(long, value_name = "FILE")]
     vcd: Option<PathBuf>,
     /// First cycle (from power-up) written to the VCD: it must fall within the run.
-    #[arg(long, requires = "vcd", default_value_t = 0)]
+    #[arg(long, requires = "vcd", default_value_t = 0, allow_negative_numbers = true)]
     vcd_from: u64,
     /// End (exclusive) of the VCD window, 1 to 1000000 cycles after --vcd-from; default 2000
     /// cycles after --vcd-from.
-    #[arg(long, requires = "vcd")]
+    #[arg(long, requires = "vcd", allow_negative_numbers = true)]
     vcd_to: Option<u64>,
 }
 
@@ -528,10 +528,10 @@ struct MachineArgs {
     #[arg(long, value_enum, default_value_t = Method::Stochastic)]
     method: Method,
     /// Cycles the shared host memory takes to deliver one patch (T_c), 1 to 1024.
-    #[arg(long, default_value_t = 16)]
+    #[arg(long, default_value_t = 16, allow_negative_numbers = true)]
     tc: u32,
     /// Give each PE a patch cache of this many patches (1 to 1024).
-    #[arg(long, value_name = "PATCHES")]
+    #[arg(long, value_name = "PATCHES", allow_negative_numbers = true)]
     cache: Option<u32>,
     /// Rays per source over its half-circle: 1 to 1024 (the processing element's ray memory).
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
@@ -586,7 +586,7 @@ struct DemoArgs {
     #[arg(long, default_value_t = 1024, allow_negative_numbers = true)]
     rays: usize,
     /// Host memory cycles per patch (T_c) of the co-simulation, 1 to 1024.
-    #[arg(long, default_value_t = 16)]
+    #[arg(long, default_value_t = 16, allow_negative_numbers = true)]
     tc: u32,
     /// VCD of the stochastic co-simulation's cycles 1000..1600, or of its last 600 cycles when
     /// it ends before cycle 1000 (written whole or not at all).
@@ -606,7 +606,7 @@ struct FiguresArgs {
     /// The dimension: 2 (the paper's segments: conventional, stochastic and deterministic) or 3
     /// (the 3D workload of --count squares per --sizes: conventional, polar and sweep; --rays
     /// must be 4·k², --ray-set angle or sine picks equal-angle or cosine-weighted cells).
-    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3))]
+    #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3), allow_negative_numbers = true)]
     dim: u8,
     /// 3D: the squares' sides, comma separated: 1 to 64 distinct sizes, each greater than 0 and
     /// less than 1024/√3 (default 2,4,8,16,32,64,128,256).

@@ -28,7 +28,8 @@ const MAX_STEPS: usize = 10_000_000;
 #[derive(Args, Clone)]
 pub struct FfArgs {
     /// Rays per origin, 1 to 1048576 (default 2048, 3D 4096 as n_theta × n_phi; with
-    /// `radiosity --on-pe` at most and by default 1024, the PE's ray memory).
+    /// `radiosity --on-pe` in 2D at most and by default 1024, the PE's ray memory; in 3D an
+    /// even n_theta with 2·n_phi ≤ 1024).
     #[arg(long, allow_negative_numbers = true)]
     rays: Option<usize>,
     /// Origins per source patch, stratified along it (1 to 4096; default 16, 3D 256, spread
@@ -356,7 +357,8 @@ pub enum Solver {
 
 #[derive(Args)]
 pub struct RadiosityArgs {
-    /// Scene file (JSON, see SCENES.md); default: the default room of `scene gen --kind room`.
+    /// Scene file: JSON segments (SCENES.md) or an OBJ scene (SCENES3D.md); default: the
+    /// default room of `scene gen --kind room`.
     #[arg(long)]
     scene: Option<PathBuf>,
     /// The solver.
@@ -379,10 +381,10 @@ pub struct RadiosityArgs {
     #[arg(long, conflicts_with = "arith")]
     on_pe: bool,
     /// With --on-pe: host memory cycles per patch (T_c, 1 to 1024).
-    #[arg(long, default_value_t = 1, requires = "on_pe")]
+    #[arg(long, default_value_t = 1, requires = "on_pe", allow_negative_numbers = true)]
     tc: u32,
     /// With --on-pe: the PE's patch cache, in patches (1 to 1024).
-    #[arg(long, value_name = "PATCHES", requires = "on_pe")]
+    #[arg(long, value_name = "PATCHES", requires = "on_pe", allow_negative_numbers = true)]
     cache: Option<u32>,
     /// With --on-pe: the PE's simulator (auto: Verilator where installed).
     #[arg(long, value_enum, default_value_t = Engine::Auto, requires = "on_pe")]
@@ -400,7 +402,7 @@ pub struct RadiosityArgs {
     /// With --on-pe: the clock rate of the solve's time, in MHz (default: the median post-route
     /// rate on ECP5 of the PE, hdl/fpga/ecp5.md, or with --pes of the machine of that many PEs
     /// where it was measured, hdl/fpga/ecp5-machine.md, else the PE's).
-    #[arg(long, requires = "on_pe")]
+    #[arg(long, requires = "on_pe", allow_negative_numbers = true)]
     clock_mhz: Option<f64>,
     /// Print the solution as JSON.
     #[arg(long)]

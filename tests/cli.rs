@@ -752,6 +752,29 @@ fn cli_cosim_rejects_bad_options() {
     fails(&with(&["--engine", "icarus"]), &["icarus", "rust-hdl", "verilator"]);
 }
 
+/// A negative number given to an unsigned option is refused naming that option, on every
+/// command (without `allow_negative_numbers` the parser took `-1` for an unknown flag and named
+/// no option).
+#[test]
+fn cli_negative_numbers_are_refused_by_their_option() {
+    let dir = TempDir::new("negative");
+    let scene = gen_scene(&dir, "s.json", 100, 16.0, 5);
+    let s = path_arg(&scene);
+    for (args, option) in [
+        (vec!["cosim", "--scene", s, "--source", "3", "--tc", "-1"], "'--tc <TC>'"),
+        (vec!["cosim", "--scene", s, "--source", "3", "--cache", "-4"], "'--cache <PATCHES>'"),
+        (vec!["cosim", "--scene", s, "--source", "3", "--pes", "-2"], "'--pes <PES>'"),
+        (vec!["cosim", "--scene", s, "--source", "3", "--vcd-from", "-1"], "'--vcd-from <VCD_FROM>'"),
+        (vec!["machine", "--scene", s, "--tc", "-16"], "'--tc <TC>'"),
+        (vec!["demo", "--tc", "-1"], "'--tc <TC>'"),
+        (vec!["radiosity", "--scene", s, "--on-pe", "--tc", "-1"], "'--tc <TC>'"),
+        (vec!["radiosity", "--scene", s, "--on-pe", "--clock-mhz", "-5"], "--clock-mhz"),
+        (vec!["scene", "gen", "--dim", "-3"], "'--dim <DIM>'"),
+    ] {
+        fails(&args, &[option, "-"]);
+    }
+}
+
 // ----- machine -----
 
 /// The machine's JSON: sources, parts and counts consistent with the options; more PEs take

@@ -452,16 +452,20 @@ pub fn svgs(o: &MachineFigureOptions, rows: &[MachineRow], l: f64) -> Result<Vec
 /// Runs the sweep and writes `machine.csv`, `machine.md` and the charts (at L = 32 if swept,
 /// else the first length) into `o.out`. Returns the rows.
 pub fn write(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
+    // Written under a temporary name beside `out` and moved into place at the end, as
+    // `figures --out`: a failed run leaves no partial figures.
+    let staged = crate::staged::Staged::dir(&o.out)
+        .with_context(|| format!("creating the output directory {}", o.out.display()))?;
     let rows = run(o)?;
-    std::fs::create_dir_all(&o.out).with_context(|| format!("creating {}", o.out.display()))?;
     let l = if o.lengths.contains(&32.0) { 32.0 } else { o.lengths[0] };
     let mut files =
         vec![("machine.csv".to_string(), csv(&rows)), ("machine.md".to_string(), markdown(o, &rows))];
     files.extend(svgs(o, &rows, l)?);
     for (name, text) in files {
-        let p = o.out.join(&name);
-        std::fs::write(&p, text).with_context(|| format!("writing {}", p.display()))?;
+        std::fs::write(staged.path().join(&name), text)
+            .with_context(|| format!("writing {}", o.out.join(&name).display()))?;
     }
+    staged.commit().with_context(|| format!("moving the figures into {}", o.out.display()))?;
     Ok(rows)
 }
 
