@@ -7,6 +7,7 @@
 //! costs that grow without bound (cycles per patch, VCD windows, workload products).
 
 use std::fmt::Display;
+use std::path::Path;
 
 pub use crate::rays::MAX_BUNDLE_RAYS;
 pub use crate::scene::COORD_LIMIT;
@@ -172,6 +173,20 @@ pub fn check_point(option: &str, x: f64, y: f64) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// An output file's target can be written: its directory exists and the path is not a
+/// directory. Checked before any work, so that a long run does not end in an error it could
+/// have given at once; `option` is named as typed.
+pub fn check_output_file(option: &str, path: &Path) -> Result<(), String> {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    if path.is_dir() {
+        Err(format!("{option} {}: is a directory, not a file", path.display()))
+    } else if !dir.is_dir() {
+        Err(format!("{option} {}: the directory {} does not exist", path.display(), dir.display()))
+    } else {
+        Ok(())
+    }
 }
 
 #[cfg(test)]

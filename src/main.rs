@@ -419,6 +419,7 @@ impl VcdArgs {
         });
         if let Some(v) = &vcd {
             cosim::check_vcd_window(v.from, v.to)?;
+            shelling::limits::check_output_file("--vcd", &v.path).map_err(anyhow::Error::msg)?;
         }
         if engine == Engine::Verilator && vcd.is_some() {
             bail!("--vcd needs --engine rust-hdl (or auto): the compiled simulation writes no waveforms");
@@ -1307,6 +1308,7 @@ fn demo(a: DemoArgs) -> Result<()> {
     check_range_for("--rays", a.rays, 1, limits::PE_RAY_MEMORY, "(the processing element's ray memory)")
         .map_err(m)?;
     check_range("--tc", a.tc, 1, limits::MAX_TC).map_err(m)?;
+    limits::check_output_file("--vcd", &a.vcd).map_err(m)?;
     let scene = scene::generate(1000, a.length, a.seed, scene::PAPER_WORLD)?;
     let prepared = GriddedScene::new(scene, GridParams::default());
     let bundle = prepared.patch_bundle(a.source, RaySet::Angle, a.rays)?;

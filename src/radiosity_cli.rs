@@ -181,6 +181,9 @@ fn check_depth(tune: &TuneArgs, prepared: &GriddedScene) -> Result<()> {
 
 pub fn form_factors_cmd(a: FormFactorsArgs) -> Result<()> {
     let mut out = Out::new();
+    if let Some(target) = &a.out {
+        limits::check_output_file("--out", target).map_err(anyhow::Error::msg)?;
+    }
     if !a.merge.is_empty() {
         let slices = a
             .merge
@@ -457,6 +460,9 @@ struct SolutionJson {
 
 pub fn radiosity_cmd(a: RadiosityArgs) -> Result<()> {
     let mut out = Out::new();
+    if let Some(svg) = &a.svg {
+        limits::check_output_file("--svg", svg).map_err(anyhow::Error::msg)?;
+    }
     solve::check_tolerance(a.tolerance)?;
     check_range("--max-steps", a.max_steps, 1, MAX_STEPS).map_err(anyhow::Error::msg)?;
     if a.matrix.is_some() && a.solver != Solver::Full {

@@ -775,6 +775,23 @@ fn cli_negative_numbers_are_refused_by_their_option() {
     }
 }
 
+/// An output file whose directory is missing, or which is a directory, is refused before any
+/// work, naming the option and the path (a long solve used to end in the write's error).
+#[test]
+fn cli_output_files_are_checked_before_any_work() {
+    let dir = TempDir::new("outputs");
+    let scene = gen_scene(&dir, "s.json", 100, 16.0, 5);
+    let s = path_arg(&scene);
+    let missing = dir.join("no-such-dir").join("x.svg");
+    let missing = path_arg(&missing);
+    let is_dir = path_arg(&dir.0);
+    fails(&["radiosity", "--scene", s, "--svg", missing], &["--svg", "no-such-dir", "does not exist"]);
+    fails(&["radiosity", "--scene", s, "--svg", is_dir], &["--svg", "is a directory"]);
+    fails(&["form-factors", "--scene", s, "--rows", "0..2", "--out", missing], &["--out", "does not exist"]);
+    fails(&["cosim", "--scene", s, "--source", "3", "--vcd", missing], &["--vcd", "does not exist"]);
+    fails(&["demo", "--vcd", missing], &["--vcd", "does not exist"]);
+}
+
 // ----- machine -----
 
 /// The machine's JSON: sources, parts and counts consistent with the options; more PEs take
