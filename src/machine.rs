@@ -38,12 +38,10 @@ use crate::workstream::{commands, PeWork};
 use serde::Serialize;
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_hdl::formats::Nearest;
-use shelling_hdl::machine::Machine;
 use shelling_testbench::machine::{run_queues, Composed, MachineSim, Work};
 use shelling_testbench::memory::HostMemory;
 use shelling_testbench::pe::{self, rust_hdl_pe, Command, MemoryMap, PeSetup};
 use shelling_testbench::verilated::VerilatedPe;
-use shelling_testbench::Driver;
 
 /// How the sources, in their order, are dealt to the PEs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
@@ -473,7 +471,7 @@ pub fn run_works(
             ($($n:literal)*) => {
                 match config.pes {
                     $($n => {
-                        let mut drv = Driver::new(Machine::<$n>::default()).map_err(sim)?;
+                        let mut drv = shelling_testbench::machine::rtl::<$n>().map_err(sim)?;
                         with_vcd(&mut drv, v, |drv| run_on(drv, &schedules, config, progress))
                     })*
                     _ => unreachable!("checked above"),

@@ -168,6 +168,12 @@ impl<const N: usize> Clocked for Machine<N> {
     }
 }
 
+/// The machine of `N` PEs in RTL under rust-hdl, at power-up: the engine that writes the
+/// machine's VCD (the composition of PE simulators has no waveform of the arbiter).
+pub fn rtl<const N: usize>() -> Result<Driver<Machine<N>>> {
+    Driver::new(Machine::<N>::default())
+}
+
 impl<const N: usize> MachineSim for Driver<Machine<N>> {
     fn pes(&self) -> usize {
         N
