@@ -833,7 +833,8 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
     let seeds = ctx.seeds.iter().map(u64::to_string).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
         md,
-        "Post-route fmax over the placement seeds {seeds} (median: the lower middle value of the seeds that routed):\n\n\
+        "Post-route fmax over placement seeds {seeds} (the `seeds` column counts a block's own, listed in \
+         the second table; median: the lower middle value of the seeds that routed):\n\n\
          | block | family | seeds | min (MHz) | median (MHz) | max (MHz) | target (MHz) | Verilog hash |\n\
          |---|---|--:|--:|--:|--:|--:|---|"
     );
@@ -884,7 +885,8 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
         "\nLUTs: ECP5 LUT4s (logic, carry and LUT RAM); iCE40 logic cells. LUT RAMs: ECP5 16x4 \
          distributed RAMs (6 LUT4s each, counted in LUTs). BRAMs: DP16KD (18 Kbit) / SB_RAM40_4K \
          (4 Kbit). Each block is placed in a register wrapper (every port bit a flip-flop); the \
-         wrapper's flip-flops are not counted. Seeds {seeds}; the LUT and FF counts are of each \
+         wrapper's flip-flops are not counted. Seeds {seeds} in all, each block's in its rows; the LUT \
+         and FF counts are of each \
          seed's placement (Yosys runs once per block).\n"
     );
     let mut plans: Vec<(&str, &str)> =
