@@ -32,33 +32,39 @@ pub mod workstream;
 
 #[cfg(test)]
 mod layering {
-    use std::path::Path;
+    use std::path::{Path, PathBuf};
+
+    /// Every `.rs` file under `dir` (relative to the crate's root), recursively.
+    fn rs_files(dir: &str) -> Vec<PathBuf> {
+        let (mut files, mut dirs) = (vec![], vec![Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)]);
+        while let Some(dir) = dirs.pop() {
+            for entry in std::fs::read_dir(&dir).expect("a source directory reads") {
+                let path = entry.expect("a source directory reads").path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs") {
+                    files.push(path);
+                }
+            }
+        }
+        files
+    }
 
     /// The rust-hdl blocks of `shelling-hdl`: every `pub struct` under `#[derive(LogicBlock…)]`.
     fn hdl_blocks() -> Vec<String> {
         let mut names = vec![];
-        let mut dirs = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("hdl").join("src")];
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(&dir).expect("hdl/src reads") {
-                let path = entry.expect("hdl/src reads").path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    let text = std::fs::read_to_string(&path).expect("a source file reads");
-                    let mut derive = false;
-                    for line in text.lines().map(str::trim) {
-                        if line.starts_with("#[derive(") && line.contains("LogicBlock") {
-                            derive = true;
-                        } else if derive && line.starts_with("pub struct ") {
-                            let name = &line["pub struct ".len()..];
-                            names.push(
-                                name.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect(),
-                            );
-                            derive = false;
-                        } else if !line.starts_with("#[") && !line.starts_with("///") {
-                            derive = false;
-                        }
-                    }
+        for path in rs_files("hdl/src") {
+            let text = std::fs::read_to_string(&path).expect("a source file reads");
+            let mut derive = false;
+            for line in text.lines().map(str::trim) {
+                if line.starts_with("#[derive(") && line.contains("LogicBlock") {
+                    derive = true;
+                } else if derive && line.starts_with("pub struct ") {
+                    let name = &line["pub struct ".len()..];
+                    names.push(name.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect());
+                    derive = false;
+                } else if !line.starts_with("#[") && !line.starts_with("///") {
+                    derive = false;
                 }
             }
         }
@@ -72,27 +78,18 @@ mod layering {
     fn src_names_no_rtl_block() {
         let blocks = hdl_blocks();
         assert!(blocks.len() >= 10 && blocks.iter().any(|b| b == "Machine"), "blocks found: {blocks:?}");
-        let (mut bad, mut seen) = (vec![], 0);
-        let mut dirs = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("src")];
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(&dir).expect("src reads") {
-                let path = entry.expect("src reads").path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    seen += 1;
-                    let text = std::fs::read_to_string(&path).expect("a source file reads");
-                    for line in text.lines().filter(|l| l.contains("shelling_hdl::")) {
-                        let words: Vec<&str> =
-                            line.split(|c: char| !(c.is_alphanumeric() || c == '_')).collect();
-                        if let Some(b) = blocks.iter().find(|b| words.contains(&b.as_str())) {
-                            bad.push(format!("{}: {b}: {}", path.display(), line.trim()));
-                        }
-                    }
+        let files = rs_files("src");
+        assert!(files.len() >= 40, "only {} source files found under src/", files.len());
+        let mut bad = vec![];
+        for path in files {
+            let text = std::fs::read_to_string(&path).expect("a source file reads");
+            for line in text.lines().filter(|l| l.contains("shelling_hdl::")) {
+                let words: Vec<&str> = line.split(|c: char| !(c.is_alphanumeric() || c == '_')).collect();
+                if let Some(b) = blocks.iter().find(|b| words.contains(&b.as_str())) {
+                    bad.push(format!("{}: {b}: {}", path.display(), line.trim()));
                 }
             }
         }
-        assert!(seen >= 40, "only {seen} source files found under src/");
         assert!(bad.is_empty(), "src/ names RTL blocks of shelling-hdl:\n{}", bad.join("\n"));
     }
 }
