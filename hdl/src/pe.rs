@@ -278,7 +278,14 @@ pub struct ProcessingElement {
     stall: DFF<bool>,
     /// The bank a pending sector overwrites (not `bank`) holds no job before its sector read.
     other_free: Signal<Local, bool>,
-    in0: Signal<Local, bool>,
+    /// A job accepted into bank 0 (1) the clock before: the bank counters count it one clock
+    /// late, so that the command handshake (`stall`, `accept`) reaches one flip-flop here, not
+    /// the counters' and `used` flags' enables. No decision changes: a sector reads the count
+    /// of the bank the jobs are not accepted into, and the job accepted the clock before went
+    /// into the bank of this clock (a flip takes a clock with no job: a sector command, or
+    /// `pend` with `cmd_ready` low); a job reaches the sector read several clocks after.
+    in0: DFF<bool>,
+    in1: DFF<bool>,
     sector_in: Signal<Local, bool>,
     new_first_x: Signal<Local, Bits<18>>,
     new_first_y: Signal<Local, Bits<18>>,
@@ -288,7 +295,6 @@ pub struct ProcessingElement {
     new_origin_y: Signal<Local, Bits<17>>,
     new_normal_x: Signal<Local, Bits<18>>,
     new_normal_y: Signal<Local, Bits<18>>,
-    in1: Signal<Local, bool>,
     out0: Signal<Local, bool>,
     out1: Signal<Local, bool>,
     pend_next: Signal<Local, bool>,
@@ -466,6 +472,8 @@ impl Logic for ProcessingElement {
             jobs1,
             used0,
             used1,
+            in0,
+            in1,
             tags_full,
             stall
         );
@@ -614,36 +622,36 @@ impl Logic for ProcessingElement {
         }
         self.pend.d.next = self.pend_next.val();
         // Each bank's jobs: counted in as accepted, out as they pass the sector read.
-        self.in0.next = self.job.val() & !self.bank.q.val();
-        self.in1.next = self.job.val() & self.bank.q.val();
+        self.in0.d.next = self.job.val() & !self.bank.q.val();
+        self.in1.d.next = self.job.val() & self.bank.q.val();
         self.out0.next = self.screener.sector_read.val() & !self.screener.sector_bank.val();
         self.out1.next = self.screener.sector_read.val() & self.screener.sector_bank.val();
-        if self.in0.val() & !self.out0.val() {
+        if self.in0.q.val() & !self.out0.val() {
             self.jobs0.d.next = self.jobs0.q.val() + self.one7.val();
         }
-        if self.out0.val() & !self.in0.val() & (self.jobs0.q.val() != self.zero7.val()) {
+        if self.out0.val() & !self.in0.q.val() & (self.jobs0.q.val() != self.zero7.val()) {
             self.jobs0.d.next = self.jobs0.q.val() - self.one7.val();
         }
-        if self.in1.val() & !self.out1.val() {
+        if self.in1.q.val() & !self.out1.val() {
             self.jobs1.d.next = self.jobs1.q.val() + self.one7.val();
         }
-        if self.out1.val() & !self.in1.val() & (self.jobs1.q.val() != self.zero7.val()) {
+        if self.out1.val() & !self.in1.q.val() & (self.jobs1.q.val() != self.zero7.val()) {
             self.jobs1.d.next = self.jobs1.q.val() - self.one7.val();
         }
         // `used`: the counter's next value is not zero (it leaves zero on a job in alone, and
         // reaches zero from one on a job out alone).
         self.used0.d.next = self.used0.q.val();
-        if self.in0.val() & !self.out0.val() {
+        if self.in0.q.val() & !self.out0.val() {
             self.used0.d.next = true;
         }
-        if self.out0.val() & !self.in0.val() & (self.jobs0.q.val() == self.one7.val()) {
+        if self.out0.val() & !self.in0.q.val() & (self.jobs0.q.val() == self.one7.val()) {
             self.used0.d.next = false;
         }
         self.used1.d.next = self.used1.q.val();
-        if self.in1.val() & !self.out1.val() {
+        if self.in1.q.val() & !self.out1.val() {
             self.used1.d.next = true;
         }
-        if self.out1.val() & !self.in1.val() & (self.jobs1.q.val() == self.one7.val()) {
+        if self.out1.val() & !self.in1.q.val() & (self.jobs1.q.val() == self.one7.val()) {
             self.used1.d.next = false;
         }
         self.new_tag.next = (bit_cast::<TAG_WIDTH, 11>(self.cmd_first.val()) << 11)

@@ -2392,9 +2392,10 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
     reg [17:0] p_by;
     reg [17:0] p_wx;
     reg [17:0] p_wy;
-    wire issue = remaining != 11'd0;
+    reg issue;
     initial begin
        remaining = 11'd0;
+       issue = 1'b0;
        p_retire = 1'b0;
        p_sh = 6'd0;
        p_id = 16'd0;
@@ -2432,6 +2433,7 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
        o_wy <= p_wy;
        if (patch_valid && !full) begin
           remaining <= patch_count;
+          issue <= patch_count != 11'd0;
           full <= patch_count[10:1] != 10'd0;
           cur <= patch_first;
           p_ax <= patch_ax;
@@ -2445,6 +2447,7 @@ module intersection_unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch_
           p_retire <= patch_retire;
        end else if (issue) begin
           remaining <= remaining - 11'd1;
+          issue <= full;
           full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
           cur <= {cur[10], cur[9:0] + 10'd1};
        end

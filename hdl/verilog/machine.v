@@ -695,6 +695,7 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     // Constant declarations
     localparam  zero_id = 16'h0;
     localparam  one = 32'h1;
+    localparam  one_count = 5'b1;
     
     // Stub signals
     reg  queues$0$clock;
@@ -716,6 +717,18 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     reg  rr$request$1;
     wire  rr$found;
     wire  [2:0] rr$pick;
+    reg  grant$0$d;
+    wire  grant$0$q;
+    reg  grant$0$clock;
+    reg  grant$1$d;
+    wire  grant$1$q;
+    reg  grant$1$clock;
+    reg  [2:0] grant_pe$d;
+    wire  [2:0] grant_pe$q;
+    reg  grant_pe$clock;
+    reg  grant_any$d;
+    wire  grant_any$q;
+    reg  grant_any$clock;
     reg  req_r$d;
     wire  req_r$q;
     reg  req_r$clock;
@@ -780,6 +793,26 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         .found(rr$found),
         .pick(rr$pick)
     );
+    machine$arbiter$grant$0 grant$0(
+        .d(grant$0$d),
+        .q(grant$0$q),
+        .clock(grant$0$clock)
+    );
+    machine$arbiter$grant$1 grant$1(
+        .d(grant$1$d),
+        .q(grant$1$q),
+        .clock(grant$1$clock)
+    );
+    machine$arbiter$grant_pe grant_pe(
+        .d(grant_pe$d),
+        .q(grant_pe$q),
+        .clock(grant_pe$clock)
+    );
+    machine$arbiter$grant_any grant_any(
+        .d(grant_any$d),
+        .q(grant_any$q),
+        .clock(grant_any$clock)
+    );
     machine$arbiter$req_r req_r(
         .d(req_r$d),
         .q(req_r$q),
@@ -837,6 +870,8 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     
     // Update code
     always @(*) begin
+        grant_pe$clock = clock;
+        grant_any$clock = clock;
         req_r$clock = clock;
         addr_r$clock = clock;
         count$clock = clock;
@@ -844,6 +879,8 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         ay_r$clock = clock;
         bx_r$clock = clock;
         by_r$clock = clock;
+        grant_pe$d = grant_pe$q;
+        grant_any$d = grant_any$q;
         req_r$d = req_r$q;
         addr_r$d = addr_r$q;
         count$d = count$q;
@@ -857,26 +894,30 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         queues$0$clock = clock;
         queues$0$push = pe_req$0;
         queues$0$data_in = pe_addr$0;
-        rr$request$0 = queues$0$valid;
-        queues$0$pop = 1'b0;
-        if (rr$pick == 0) begin
-            queues$0$pop = rr$found;
+        rr$request$0 = queues$0$valid & ~(grant$0$q & (queues$0$count == one_count));
+        grant$0$clock = clock;
+        grant$0$d = rr$found & (rr$pick == 0);
+        queues$0$pop = grant$0$q;
+        if (grant$0$q) begin
             granted = queues$0$data_out;
         end
         queues$1$clock = clock;
         queues$1$push = pe_req$1;
         queues$1$data_in = pe_addr$1;
-        rr$request$1 = queues$1$valid;
-        queues$1$pop = 1'b0;
-        if (rr$pick == 1) begin
-            queues$1$pop = rr$found;
+        rr$request$1 = queues$1$valid & ~(grant$1$q & (queues$1$count == one_count));
+        grant$1$clock = clock;
+        grant$1$d = rr$found & (rr$pick == 1);
+        queues$1$pop = grant$1$q;
+        if (grant$1$q) begin
             granted = queues$1$data_out;
         end
-        req_r$d = rr$found;
+        grant_any$d = rr$found;
+        grant_pe$d = rr$pick;
+        req_r$d = grant_any$q;
         addr_r$d = granted;
-        route$push = rr$found;
-        route$data_in = rr$pick;
-        if (rr$found) begin
+        route$push = grant_any$q;
+        route$data_in = grant_pe$q;
+        if (grant_any$q) begin
             count$d = count$q + one;
         end
         host_req = req_r$q;
@@ -1022,6 +1063,82 @@ module machine$arbiter$count(d,q,clock);
     end
           
 endmodule // machine$arbiter$count
+
+
+module machine$arbiter$grant$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$arbiter$grant$0
+
+
+module machine$arbiter$grant$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$arbiter$grant$1
+
+
+module machine$arbiter$grant_any(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$arbiter$grant_any
+
+
+module machine$arbiter$grant_pe(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$arbiter$grant_pe
 
 
 module machine$arbiter$queues$0(clock,push,data_in,pop,valid,data_out,count);
@@ -2529,6 +2646,12 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  stall$d;
     wire  stall$q;
     reg  stall$clock;
+    reg  in0$d;
+    wire  in0$q;
+    reg  in0$clock;
+    reg  in1$d;
+    wire  in1$q;
+    reg  in1$clock;
     
     // Local signals
     reg  accept;
@@ -2543,7 +2666,6 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  job;
     reg  tags_full_next;
     reg  other_free;
-    reg  in0;
     reg  sector_in;
     reg  [17:0] new_first_x;
     reg  [17:0] new_first_y;
@@ -2553,7 +2675,6 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [16:0] new_origin_y;
     reg  [17:0] new_normal_x;
     reg  [17:0] new_normal_y;
-    reg  in1;
     reg  out0;
     reg  out1;
     reg  pend_next;
@@ -2941,6 +3062,16 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .q(stall$q),
         .clock(stall$clock)
     );
+    machine$pes$0$in0 in0(
+        .d(in0$d),
+        .q(in0$q),
+        .clock(in0$clock)
+    );
+    machine$pes$0$in1 in1(
+        .d(in1$d),
+        .q(in1$q),
+        .clock(in1$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2974,6 +3105,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         jobs1$clock = clock;
         used0$clock = clock;
         used1$clock = clock;
+        in0$clock = clock;
+        in1$clock = clock;
         tags_full$clock = clock;
         stall$clock = clock;
         bank$d = bank$q;
@@ -3006,6 +3139,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         jobs1$d = jobs1$q;
         used0$d = used0$q;
         used1$d = used1$q;
+        in0$d = in0$q;
+        in1$d = in1$q;
         tags_full$d = tags_full$q;
         stall$d = stall$q;
         job_banks$clock = clock;
@@ -3139,34 +3274,34 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             end
         end
         pend$d = pend_next;
-        in0 = job & ~bank$q;
-        in1 = job & bank$q;
+        in0$d = job & ~bank$q;
+        in1$d = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
         out1 = screener$sector_read & screener$sector_bank;
-        if (in0 & ~out0) begin
+        if (in0$q & ~out0) begin
             jobs0$d = jobs0$q + one7;
         end
-        if (out0 & ~in0 & (jobs0$q != zero7)) begin
+        if (out0 & ~in0$q & (jobs0$q != zero7)) begin
             jobs0$d = jobs0$q - one7;
         end
-        if (in1 & ~out1) begin
+        if (in1$q & ~out1) begin
             jobs1$d = jobs1$q + one7;
         end
-        if (out1 & ~in1 & (jobs1$q != zero7)) begin
+        if (out1 & ~in1$q & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
         end
         used0$d = used0$q;
-        if (in0 & ~out0) begin
+        if (in0$q & ~out0) begin
             used0$d = 1'b1;
         end
-        if (out0 & ~in0 & (jobs0$q == one7)) begin
+        if (out0 & ~in0$q & (jobs0$q == one7)) begin
             used0$d = 1'b0;
         end
         used1$d = used1$q;
-        if (in1 & ~out1) begin
+        if (in1$q & ~out1) begin
             used1$d = 1'b1;
         end
-        if (out1 & ~in1 & (jobs1$q == one7)) begin
+        if (out1 & ~in1$q & (jobs1$q == one7)) begin
             used1$d = 1'b0;
         end
         new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
@@ -7500,6 +7635,44 @@ module machine$pes$0$first1_y(d,q,clock);
     end
           
 endmodule // machine$pes$0$first1_y
+
+
+module machine$pes$0$in0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$in0
+
+
+module machine$pes$0$in1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$in1
 
 
 module machine$pes$0$job_bank(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -20735,9 +20908,10 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
     reg [17:0] p_by;
     reg [17:0] p_wx;
     reg [17:0] p_wy;
-    wire issue = remaining != 11'd0;
+    reg issue;
     initial begin
        remaining = 11'd0;
+       issue = 1'b0;
        p_retire = 1'b0;
        p_sh = 6'd0;
        p_id = 16'd0;
@@ -20775,6 +20949,7 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        o_wy <= p_wy;
        if (patch_valid && !full) begin
           remaining <= patch_count;
+          issue <= patch_count != 11'd0;
           full <= patch_count[10:1] != 10'd0;
           cur <= patch_first;
           p_ax <= patch_ax;
@@ -20788,6 +20963,7 @@ module machine$pes$0$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
           p_retire <= patch_retire;
        end else if (issue) begin
           remaining <= remaining - 11'd1;
+          issue <= full;
           full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
           cur <= {cur[10], cur[9:0] + 10'd1};
        end
@@ -21189,6 +21365,12 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  stall$d;
     wire  stall$q;
     reg  stall$clock;
+    reg  in0$d;
+    wire  in0$q;
+    reg  in0$clock;
+    reg  in1$d;
+    wire  in1$q;
+    reg  in1$clock;
     
     // Local signals
     reg  accept;
@@ -21203,7 +21385,6 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  job;
     reg  tags_full_next;
     reg  other_free;
-    reg  in0;
     reg  sector_in;
     reg  [17:0] new_first_x;
     reg  [17:0] new_first_y;
@@ -21213,7 +21394,6 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [16:0] new_origin_y;
     reg  [17:0] new_normal_x;
     reg  [17:0] new_normal_y;
-    reg  in1;
     reg  out0;
     reg  out1;
     reg  pend_next;
@@ -21601,6 +21781,16 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .q(stall$q),
         .clock(stall$clock)
     );
+    machine$pes$1$in0 in0(
+        .d(in0$d),
+        .q(in0$q),
+        .clock(in0$clock)
+    );
+    machine$pes$1$in1 in1(
+        .d(in1$d),
+        .q(in1$q),
+        .clock(in1$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -21634,6 +21824,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         jobs1$clock = clock;
         used0$clock = clock;
         used1$clock = clock;
+        in0$clock = clock;
+        in1$clock = clock;
         tags_full$clock = clock;
         stall$clock = clock;
         bank$d = bank$q;
@@ -21666,6 +21858,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         jobs1$d = jobs1$q;
         used0$d = used0$q;
         used1$d = used1$q;
+        in0$d = in0$q;
+        in1$d = in1$q;
         tags_full$d = tags_full$q;
         stall$d = stall$q;
         job_banks$clock = clock;
@@ -21799,34 +21993,34 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             end
         end
         pend$d = pend_next;
-        in0 = job & ~bank$q;
-        in1 = job & bank$q;
+        in0$d = job & ~bank$q;
+        in1$d = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
         out1 = screener$sector_read & screener$sector_bank;
-        if (in0 & ~out0) begin
+        if (in0$q & ~out0) begin
             jobs0$d = jobs0$q + one7;
         end
-        if (out0 & ~in0 & (jobs0$q != zero7)) begin
+        if (out0 & ~in0$q & (jobs0$q != zero7)) begin
             jobs0$d = jobs0$q - one7;
         end
-        if (in1 & ~out1) begin
+        if (in1$q & ~out1) begin
             jobs1$d = jobs1$q + one7;
         end
-        if (out1 & ~in1 & (jobs1$q != zero7)) begin
+        if (out1 & ~in1$q & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
         end
         used0$d = used0$q;
-        if (in0 & ~out0) begin
+        if (in0$q & ~out0) begin
             used0$d = 1'b1;
         end
-        if (out0 & ~in0 & (jobs0$q == one7)) begin
+        if (out0 & ~in0$q & (jobs0$q == one7)) begin
             used0$d = 1'b0;
         end
         used1$d = used1$q;
-        if (in1 & ~out1) begin
+        if (in1$q & ~out1) begin
             used1$d = 1'b1;
         end
-        if (out1 & ~in1 & (jobs1$q == one7)) begin
+        if (out1 & ~in1$q & (jobs1$q == one7)) begin
             used1$d = 1'b0;
         end
         new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
@@ -26160,6 +26354,44 @@ module machine$pes$1$first1_y(d,q,clock);
     end
           
 endmodule // machine$pes$1$first1_y
+
+
+module machine$pes$1$in0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$in0
+
+
+module machine$pes$1$in1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$in1
 
 
 module machine$pes$1$job_bank(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -39395,9 +39627,10 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
     reg [17:0] p_by;
     reg [17:0] p_wx;
     reg [17:0] p_wy;
-    wire issue = remaining != 11'd0;
+    reg issue;
     initial begin
        remaining = 11'd0;
+       issue = 1'b0;
        p_retire = 1'b0;
        p_sh = 6'd0;
        p_id = 16'd0;
@@ -39435,6 +39668,7 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
        o_wy <= p_wy;
        if (patch_valid && !full) begin
           remaining <= patch_count;
+          issue <= patch_count != 11'd0;
           full <= patch_count[10:1] != 10'd0;
           cur <= patch_first;
           p_ax <= patch_ax;
@@ -39448,6 +39682,7 @@ module machine$pes$1$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,patch
           p_retire <= patch_retire;
        end else if (issue) begin
           remaining <= remaining - 11'd1;
+          issue <= full;
           full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
           cur <= {cur[10], cur[9:0] + 10'd1};
        end

@@ -33,6 +33,7 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     // Constant declarations
     localparam  zero_id = 16'h0;
     localparam  one = 32'h1;
+    localparam  one_count = 5'b1;
     
     // Stub signals
     reg  queues$0$clock;
@@ -70,6 +71,24 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     reg  rr$request$3;
     wire  rr$found;
     wire  [2:0] rr$pick;
+    reg  grant$0$d;
+    wire  grant$0$q;
+    reg  grant$0$clock;
+    reg  grant$1$d;
+    wire  grant$1$q;
+    reg  grant$1$clock;
+    reg  grant$2$d;
+    wire  grant$2$q;
+    reg  grant$2$clock;
+    reg  grant$3$d;
+    wire  grant$3$q;
+    reg  grant$3$clock;
+    reg  [2:0] grant_pe$d;
+    wire  [2:0] grant_pe$q;
+    reg  grant_pe$clock;
+    reg  grant_any$d;
+    wire  grant_any$q;
+    reg  grant_any$clock;
     reg  req_r$d;
     wire  req_r$q;
     reg  req_r$clock;
@@ -160,6 +179,36 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         .found(rr$found),
         .pick(rr$pick)
     );
+    memory_arbiter$grant$0 grant$0(
+        .d(grant$0$d),
+        .q(grant$0$q),
+        .clock(grant$0$clock)
+    );
+    memory_arbiter$grant$1 grant$1(
+        .d(grant$1$d),
+        .q(grant$1$q),
+        .clock(grant$1$clock)
+    );
+    memory_arbiter$grant$2 grant$2(
+        .d(grant$2$d),
+        .q(grant$2$q),
+        .clock(grant$2$clock)
+    );
+    memory_arbiter$grant$3 grant$3(
+        .d(grant$3$d),
+        .q(grant$3$q),
+        .clock(grant$3$clock)
+    );
+    memory_arbiter$grant_pe grant_pe(
+        .d(grant_pe$d),
+        .q(grant_pe$q),
+        .clock(grant_pe$clock)
+    );
+    memory_arbiter$grant_any grant_any(
+        .d(grant_any$d),
+        .q(grant_any$q),
+        .clock(grant_any$clock)
+    );
     memory_arbiter$req_r req_r(
         .d(req_r$d),
         .q(req_r$q),
@@ -227,6 +276,8 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     
     // Update code
     always @(*) begin
+        grant_pe$clock = clock;
+        grant_any$clock = clock;
         req_r$clock = clock;
         addr_r$clock = clock;
         count$clock = clock;
@@ -234,6 +285,8 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         ay_r$clock = clock;
         bx_r$clock = clock;
         by_r$clock = clock;
+        grant_pe$d = grant_pe$q;
+        grant_any$d = grant_any$q;
         req_r$d = req_r$q;
         addr_r$d = addr_r$q;
         count$d = count$q;
@@ -247,44 +300,50 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         queues$0$clock = clock;
         queues$0$push = pe_req$0;
         queues$0$data_in = pe_addr$0;
-        rr$request$0 = queues$0$valid;
-        queues$0$pop = 1'b0;
-        if (rr$pick == 0) begin
-            queues$0$pop = rr$found;
+        rr$request$0 = queues$0$valid & ~(grant$0$q & (queues$0$count == one_count));
+        grant$0$clock = clock;
+        grant$0$d = rr$found & (rr$pick == 0);
+        queues$0$pop = grant$0$q;
+        if (grant$0$q) begin
             granted = queues$0$data_out;
         end
         queues$1$clock = clock;
         queues$1$push = pe_req$1;
         queues$1$data_in = pe_addr$1;
-        rr$request$1 = queues$1$valid;
-        queues$1$pop = 1'b0;
-        if (rr$pick == 1) begin
-            queues$1$pop = rr$found;
+        rr$request$1 = queues$1$valid & ~(grant$1$q & (queues$1$count == one_count));
+        grant$1$clock = clock;
+        grant$1$d = rr$found & (rr$pick == 1);
+        queues$1$pop = grant$1$q;
+        if (grant$1$q) begin
             granted = queues$1$data_out;
         end
         queues$2$clock = clock;
         queues$2$push = pe_req$2;
         queues$2$data_in = pe_addr$2;
-        rr$request$2 = queues$2$valid;
-        queues$2$pop = 1'b0;
-        if (rr$pick == 2) begin
-            queues$2$pop = rr$found;
+        rr$request$2 = queues$2$valid & ~(grant$2$q & (queues$2$count == one_count));
+        grant$2$clock = clock;
+        grant$2$d = rr$found & (rr$pick == 2);
+        queues$2$pop = grant$2$q;
+        if (grant$2$q) begin
             granted = queues$2$data_out;
         end
         queues$3$clock = clock;
         queues$3$push = pe_req$3;
         queues$3$data_in = pe_addr$3;
-        rr$request$3 = queues$3$valid;
-        queues$3$pop = 1'b0;
-        if (rr$pick == 3) begin
-            queues$3$pop = rr$found;
+        rr$request$3 = queues$3$valid & ~(grant$3$q & (queues$3$count == one_count));
+        grant$3$clock = clock;
+        grant$3$d = rr$found & (rr$pick == 3);
+        queues$3$pop = grant$3$q;
+        if (grant$3$q) begin
             granted = queues$3$data_out;
         end
-        req_r$d = rr$found;
+        grant_any$d = rr$found;
+        grant_pe$d = rr$pick;
+        req_r$d = grant_any$q;
         addr_r$d = granted;
-        route$push = rr$found;
-        route$data_in = rr$pick;
-        if (rr$found) begin
+        route$push = grant_any$q;
+        route$data_in = grant_pe$q;
+        if (grant_any$q) begin
             count$d = count$q + one;
         end
         host_req = req_r$q;
@@ -442,6 +501,120 @@ module memory_arbiter$count(d,q,clock);
     end
           
 endmodule // memory_arbiter$count
+
+
+module memory_arbiter$grant$0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$grant$0
+
+
+module memory_arbiter$grant$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$grant$1
+
+
+module memory_arbiter$grant$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$grant$2
+
+
+module memory_arbiter$grant$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$grant$3
+
+
+module memory_arbiter$grant_any(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$grant_any
+
+
+module memory_arbiter$grant_pe(d,q,clock);
+    
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$grant_pe
 
 
 module memory_arbiter$queues$0(clock,push,data_in,pop,valid,data_out,count);

@@ -357,6 +357,12 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  stall$d;
     wire  stall$q;
     reg  stall$clock;
+    reg  in0$d;
+    wire  in0$q;
+    reg  in0$clock;
+    reg  in1$d;
+    wire  in1$q;
+    reg  in1$clock;
     
     // Local signals
     reg  accept;
@@ -371,7 +377,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  job;
     reg  tags_full_next;
     reg  other_free;
-    reg  in0;
     reg  sector_in;
     reg  [17:0] new_first_x;
     reg  [17:0] new_first_y;
@@ -381,7 +386,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  [16:0] new_origin_y;
     reg  [17:0] new_normal_x;
     reg  [17:0] new_normal_y;
-    reg  in1;
     reg  out0;
     reg  out1;
     reg  pend_next;
@@ -769,6 +773,16 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .q(stall$q),
         .clock(stall$clock)
     );
+    processing_element$in0 in0(
+        .d(in0$d),
+        .q(in0$q),
+        .clock(in0$clock)
+    );
+    processing_element$in1 in1(
+        .d(in1$d),
+        .q(in1$q),
+        .clock(in1$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -802,6 +816,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         jobs1$clock = clock;
         used0$clock = clock;
         used1$clock = clock;
+        in0$clock = clock;
+        in1$clock = clock;
         tags_full$clock = clock;
         stall$clock = clock;
         bank$d = bank$q;
@@ -834,6 +850,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         jobs1$d = jobs1$q;
         used0$d = used0$q;
         used1$d = used1$q;
+        in0$d = in0$q;
+        in1$d = in1$q;
         tags_full$d = tags_full$q;
         stall$d = stall$q;
         job_banks$clock = clock;
@@ -967,34 +985,34 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             end
         end
         pend$d = pend_next;
-        in0 = job & ~bank$q;
-        in1 = job & bank$q;
+        in0$d = job & ~bank$q;
+        in1$d = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
         out1 = screener$sector_read & screener$sector_bank;
-        if (in0 & ~out0) begin
+        if (in0$q & ~out0) begin
             jobs0$d = jobs0$q + one7;
         end
-        if (out0 & ~in0 & (jobs0$q != zero7)) begin
+        if (out0 & ~in0$q & (jobs0$q != zero7)) begin
             jobs0$d = jobs0$q - one7;
         end
-        if (in1 & ~out1) begin
+        if (in1$q & ~out1) begin
             jobs1$d = jobs1$q + one7;
         end
-        if (out1 & ~in1 & (jobs1$q != zero7)) begin
+        if (out1 & ~in1$q & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
         end
         used0$d = used0$q;
-        if (in0 & ~out0) begin
+        if (in0$q & ~out0) begin
             used0$d = 1'b1;
         end
-        if (out0 & ~in0 & (jobs0$q == one7)) begin
+        if (out0 & ~in0$q & (jobs0$q == one7)) begin
             used0$d = 1'b0;
         end
         used1$d = used1$q;
-        if (in1 & ~out1) begin
+        if (in1$q & ~out1) begin
             used1$d = 1'b1;
         end
-        if (out1 & ~in1 & (jobs1$q == one7)) begin
+        if (out1 & ~in1$q & (jobs1$q == one7)) begin
             used1$d = 1'b0;
         end
         new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
@@ -5328,6 +5346,44 @@ module processing_element$first1_y(d,q,clock);
     end
           
 endmodule // processing_element$first1_y
+
+
+module processing_element$in0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$in0
+
+
+module processing_element$in1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$in1
 
 
 module processing_element$job_bank(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -18563,9 +18619,10 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
     reg [17:0] p_by;
     reg [17:0] p_wx;
     reg [17:0] p_wy;
-    wire issue = remaining != 11'd0;
+    reg issue;
     initial begin
        remaining = 11'd0;
+       issue = 1'b0;
        p_retire = 1'b0;
        p_sh = 6'd0;
        p_id = 16'd0;
@@ -18603,6 +18660,7 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
        o_wy <= p_wy;
        if (patch_valid && !full) begin
           remaining <= patch_count;
+          issue <= patch_count != 11'd0;
           full <= patch_count[10:1] != 10'd0;
           cur <= patch_first;
           p_ax <= patch_ax;
@@ -18616,6 +18674,7 @@ module processing_element$unit$seq(clock,patch_valid,patch_ax,patch_ay,patch_bx,
           p_retire <= patch_retire;
        end else if (issue) begin
           remaining <= remaining - 11'd1;
+          issue <= full;
           full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;
           cur <= {cur[10], cur[9:0] + 10'd1};
        end

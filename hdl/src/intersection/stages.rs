@@ -275,6 +275,8 @@ struct IssueRegs {
     remaining: u32,
     /// `remaining > 1`, kept in a register of its own.
     full: bool,
+    /// `remaining ≠ 0` (a ray issues), kept in a register of its own.
+    issue: bool,
     cur: u32,
     /// The current patch: ax, ay, bx, by, wx, wy.
     p: [u32; 6],
@@ -298,7 +300,7 @@ struct IssueRegs {
 /// `cur` (11), `v1`, `tag1` (33), `mark1`, `o_ax` … `o_wy` (18 each).
 ///
 /// Registers: `remaining` (rays of the current patch still to issue), `full` (`remaining > 1`:
-/// no patch can be taken), `cur` (the ray issued in this clock while `remaining ≠ 0`), the
+/// no patch can be taken), `issue` (`remaining ≠ 0`: after an issue, `full` before it), `cur` (the ray issued in this clock while `remaining ≠ 0`), the
 /// current patch `p_*` and stage 1: `v1` (a ray of a test job was issued in the clock before),
 /// `tag1` = `{ray (32…22), sh (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
 /// patch is taken at the rising edge when `patch_valid && !full`; otherwise a ray issues when
@@ -307,7 +309,9 @@ struct IssueRegs {
 /// beside stage 1's last ray before it. `full` is updated beside
 /// `remaining` from shallow tests (`patch_count > 1` on a take, `remaining > 2` on an issue),
 /// so that the unit's `patch_ready`, its complement, is a register: in the processing element
-/// it feeds the slice in front of the unit, whose pop decides the take.
+/// it feeds the slice in front of the unit, whose pop decides the take. `issue` likewise, so
+/// that `kill` into the live bits' write enables is one gate of registers, not a compare of
+/// `remaining`.
 ///
 /// Outputs, all functions of the registers only (so the leaf has no combinational path from an
 /// input): `full` (the register), `busy` = a ray issues, `v1` or `mark1`, `kill` = a ray of a
@@ -350,7 +354,7 @@ impl Logic for IssueSequencer {
     fn update(&mut self) {
         if self.clock.pos_edge() {
             let s = self._r;
-            let issue = s.remaining != 0;
+            let issue = s.issue;
             let mut n = s;
             n.v1 = issue && !s.p_retire;
             n.tag1 = ((s.cur as u64) << 22) | ((s.p_sh as u64) << 16) | s.p_id as u64;
@@ -360,6 +364,7 @@ impl Logic for IssueSequencer {
             if take {
                 n.remaining = self.patch_count.val().to_u32();
                 n.full = n.remaining > 1;
+                n.issue = n.remaining != 0;
                 n.cur = self.patch_first.val().to_u32();
                 n.p = [
                     self.patch_ax.val().to_u32(),
@@ -375,11 +380,13 @@ impl Logic for IssueSequencer {
             } else if issue {
                 n.remaining = s.remaining - 1;
                 n.full = s.remaining > 2;
+                n.issue = s.full;
                 n.cur = (s.cur & 0x400) | ((s.cur + 1) & 0x3ff);
             }
             debug_assert_eq!(n.full, n.remaining > 1);
+            debug_assert_eq!(n.issue, n.remaining != 0);
             self._r = n;
-            let issue = n.remaining != 0;
+            let issue = n.issue;
             self.full.next = n.full;
             self.busy.next = issue || n.v1 || n.mark1;
             self.kill.next = issue && n.p_retire;
@@ -418,8 +425,8 @@ impl Logic for IssueSequencer {
         for o in ops {
             v += &format!("reg [17:0] p_{o};\n");
         }
-        v += "wire issue = remaining != 11'd0;\n";
-        v += "initial begin\n   remaining = 11'd0;\n   p_retire = 1'b0;\n   p_sh = 6'd0;\n   p_id = 16'd0;\n";
+        v += "reg issue;\n";
+        v += "initial begin\n   remaining = 11'd0;\n   issue = 1'b0;\n   p_retire = 1'b0;\n   p_sh = 6'd0;\n   p_id = 16'd0;\n";
         v += "   full = 1'b0;\n   cur = 11'd0;\n   v1 = 1'b0;\n   tag1 = 33'd0;\n   mark1 = 1'b0;\n";
         for o in ops {
             v += &format!("   p_{o} = 18'd0;\n   o_{o} = 18'd0;\n");
@@ -432,12 +439,13 @@ impl Logic for IssueSequencer {
             v += &format!("   o_{o} <= p_{o};\n");
         }
         v += "   if (patch_valid && !full) begin\n      remaining <= patch_count;\n";
+        v += "      issue <= patch_count != 11'd0;\n";
         v += "      full <= patch_count[10:1] != 10'd0;\n      cur <= patch_first;\n";
         for o in ops {
             v += &format!("      p_{o} <= patch_{o};\n");
         }
         v += "      p_sh <= patch_sh;\n      p_id <= patch_id;\n      p_retire <= patch_retire;\n";
-        v += "   end else if (issue) begin\n      remaining <= remaining - 11'd1;\n";
+        v += "   end else if (issue) begin\n      remaining <= remaining - 11'd1;\n      issue <= full;\n";
         v += "      full <= remaining[10:2] != 9'd0 || remaining[1:0] == 2'b11;\n";
         v += "      cur <= {cur[10], cur[9:0] + 10'd1};\n   end\nend\n";
         Verilog::Custom(v)
