@@ -85,10 +85,12 @@
 //!   values;
 //! * stage 7: the exponent's two candidates (from the two leading-zero counts) and the
 //!   comparison of the normalised values that chooses between them, each registered; the
-//!   outside-the-sector screen;
-//! * stage 8 ([`VERDICT_LATENCY`]): the exponent `sh` chosen; the near screen and the
-//!   verdict. The patch takes the next slot of the output FIFO (id, `a`, `b`, `sh` and the
-//!   verdict written) and enters the divider with its initial remainders `floor(|n_c|·2^sh)`;
+//!   outside-the-sector screen's compares by 16-bit halves, registered;
+//! * stage 8 ([`VERDICT_LATENCY`]): the exponent `sh` chosen; the outside and near screens and
+//!   the verdict. The patch takes the next slot of the output FIFO (id, `a`, `b`, `sh` and the
+//!   verdict written) and enters the divider with its initial remainders `floor(|n_c|·2^sh)`
+//!   (one shifter by `s0 + 3`, a register, then a shift right by one when `sh = s0 − 1`: the
+//!   exponent's choice is the last multiplexer before the divider);
 //! * stage 9 ([`COUNT_LATENCY`]), beside the divider's first: the verdict, registered as one
 //!   flag per counter, is counted;
 //! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
@@ -111,7 +113,8 @@
 //! itself; 158.6, 150.0–163.6, before the normal was read in stage
 //! 1 only, for the processing element's banks; 150.4 before stage 7 registered the exponent's
 //! flags and split the outside compare, 125 at seed 1 before the DSP registers;
-//! `hdl/fpga/ecp5.md`).
+//! `hdl/fpga/ecp5.md`; not yet measured with the outside compare's halves registered and the
+//! dividend's single shifter).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
@@ -294,6 +297,10 @@ pub const LATENCY: u64 = VERDICT_LATENCY + DIV_LATENCY + 2;
 pub const DEPTH: usize = 32;
 /// Address width of the output FIFO's lanes: `2^ADDR_BITS == DEPTH`.
 pub const ADDR_BITS: usize = 5;
+
+/// Bits of the divider's dividend as stage 8 forms it: the 32-bit initial remainder
+/// `floor(|n_c|·2^sh)` above the three bits a shift right (`sh` = −1, −2, −3) moves out of it.
+const DIVIDEND_BITS: usize = 35;
 
 /// The sign bit of a 32-bit side value. The sector screen flips it, so that an unsigned compare
 /// orders the signed values, and compares with `2³¹ ∓ SECTOR_MARGIN`.
@@ -566,11 +573,17 @@ pub struct Screener {
     n_below_e: Signal<Local, bool>,
     side_f_x: Signal<Local, Bits<32>>,
     side_l_x: Signal<Local, Bits<32>>,
-    /// The two outside compares by 16-bit halves, side by side: two short carry chains and a
-    /// gate instead of one 32-bit chain.
-    f_lt: Signal<Local, bool>,
-    l_gt: Signal<Local, bool>,
-    is_outside: Signal<Local, bool>,
+    /// The two outside compares by 16-bit halves, side by side: short carry chains into
+    /// registers (the high halves' order and equality, the low halves' order), combined with
+    /// the gates in stage 8 (`outside8`), instead of one 32-bit chain and the gates after it.
+    f_hi_lt8: DFF<bool>,
+    f_hi_eq8: DFF<bool>,
+    f_lo_lt8: DFF<bool>,
+    l_hi_gt8: DFF<bool>,
+    l_hi_eq8: DFF<bool>,
+    l_lo_gt8: DFF<bool>,
+    ha_open8: DFF<bool>,
+    hb_open8: DFF<bool>,
     // Stage 8: the verdict, the divider's inputs; the patch takes a slot.
     v8: DFF<bool>,
     id8: DFF<Bits<16>>,
@@ -590,27 +603,21 @@ pub struct Screener {
     below8: DFF<bool>,
     /// What stage 8 asks of the exponent, for each candidate, from compares of the two
     /// leading-zero counts (no adder before them; both counts lie in 0…31, so `d = clz_n −
-    /// clz_e` in −31…31): `e_k` is `d = −k`, `near_a` is `s0 = d` near (below [`SH_MIN`]:
-    /// `d ≤ −4`), `near_b` is `s0 − 1` near (`d ≤ −3`). Stage 8 chooses with `below8`.
+    /// clz_e` in −31…31): `near_a` is `s0 = d` near (below [`SH_MIN`]: `d ≤ −4`), `near_b` is
+    /// `s0 − 1` near (`d ≤ −3`). Stage 8 chooses with `below8`.
     near_a8: DFF<bool>,
     near_b8: DFF<bool>,
-    e0_8: DFF<bool>,
-    e1_8: DFF<bool>,
-    e2_8: DFF<bool>,
-    e3_8: DFF<bool>,
-    /// `clz_n + 1`, `+ 2`, `+ 3`, registered beside `clz_n7`.
-    clz_n1_7: DFF<Bits<6>>,
+    /// `s0 + 3`, the dividend's shift into [`DIVIDEND_BITS`] bits (see stage 8), from the
+    /// registered `clz_n + 3`: one adder, beside `s0`'s.
+    sp3_8: DFF<Bits<6>>,
+    /// `clz_n + 2`, `+ 3`, registered beside `clz_n7`.
     clz_n2_7: DFF<Bits<6>>,
     clz_n3_7: DFF<Bits<6>>,
     exp8: Signal<Local, Bits<6>>,
     near8: Signal<Local, bool>,
-    is_m1: Signal<Local, bool>,
-    is_m2: Signal<Local, bool>,
-    is_lo: Signal<Local, bool>,
     backward8: DFF<bool>,
     back_facing8: DFF<bool>,
-    outside8: DFF<bool>,
-    sh5: Signal<Local, Bits<5>>,
+    outside8: Signal<Local, bool>,
     is_near: Signal<Local, bool>,
     is_pass: Signal<Local, bool>,
     // Stage 9 (COUNT_LATENCY): the verdict of a valid patch, one flag per counter.
@@ -619,10 +626,12 @@ pub struct Screener {
     back_facing9: DFF<bool>,
     outside9: DFF<bool>,
     near9: DFF<bool>,
-    absnx32: Signal<Local, Bits<32>>,
-    absny32: Signal<Local, Bits<32>>,
-    low_nx: Signal<Local, Bits<3>>,
-    low_ny: Signal<Local, Bits<3>>,
+    /// `|n_c|·2^(s0 + 3)` in [`DIVIDEND_BITS`] + 1 bits, then `|n_c|·2^(sh + 3)` (`sh` is `s0`
+    /// or `s0 − 1`: a shift right by one when not `below8`).
+    wide_x: Signal<Local, Bits<{ DIVIDEND_BITS + 1 }>>,
+    wide_y: Signal<Local, Bits<{ DIVIDEND_BITS + 1 }>>,
+    dividend_x: Signal<Local, Bits<DIVIDEND_BITS>>,
+    dividend_y: Signal<Local, Bits<DIVIDEND_BITS>>,
     tag_p: Signal<Local, Bits<3>>,
     tag_x: Signal<Local, Bits<3>>,
     tag_y: Signal<Local, Bits<3>>,
@@ -636,6 +645,7 @@ pub struct Screener {
     c_near: DFF<Bits<32>>,
     // Constants.
     depth6: Constant<Bits<6>>,
+    depth_m1_6: Constant<Bits<6>>,
     zero6: Constant<Bits<6>>,
     one6: Constant<Bits<6>>,
     one5: Constant<Bits<5>>,
@@ -658,9 +668,6 @@ pub struct Screener {
     sh4: Constant<Bits<32>>,
     sh2: Constant<Bits<32>>,
     sh1: Constant<Bits<32>>,
-    sh3: Constant<Bits<32>>,
-    sh1_3: Constant<Bits<3>>,
-    sh2_3: Constant<Bits<3>>,
     c24_6: Constant<Bits<6>>,
     c16_6: Constant<Bits<6>>,
     c8_6: Constant<Bits<6>>,
@@ -918,9 +925,14 @@ impl Default for Screener {
             n_below_e: Default::default(),
             side_f_x: Default::default(),
             side_l_x: Default::default(),
-            f_lt: Default::default(),
-            l_gt: Default::default(),
-            is_outside: Default::default(),
+            f_hi_lt8: Default::default(),
+            f_hi_eq8: Default::default(),
+            f_lo_lt8: Default::default(),
+            l_hi_gt8: Default::default(),
+            l_hi_eq8: Default::default(),
+            l_lo_gt8: Default::default(),
+            ha_open8: Default::default(),
+            hb_open8: Default::default(),
             v8: Default::default(),
             id8: Default::default(),
             ax8: Default::default(),
@@ -937,22 +949,18 @@ impl Default for Screener {
             below8: Default::default(),
             near_a8: Default::default(),
             near_b8: Default::default(),
-            e0_8: Default::default(),
-            e1_8: Default::default(),
-            e2_8: Default::default(),
-            e3_8: Default::default(),
-            clz_n1_7: Default::default(),
+            sp3_8: Default::default(),
+            wide_x: Default::default(),
+            wide_y: Default::default(),
+            dividend_x: Default::default(),
+            dividend_y: Default::default(),
             clz_n2_7: Default::default(),
             clz_n3_7: Default::default(),
             near8: Default::default(),
-            is_m1: Default::default(),
-            is_m2: Default::default(),
-            is_lo: Default::default(),
             exp8: Default::default(),
             backward8: Default::default(),
             back_facing8: Default::default(),
             outside8: Default::default(),
-            sh5: Default::default(),
             is_near: Default::default(),
             is_pass: Default::default(),
             pass9: Default::default(),
@@ -960,10 +968,6 @@ impl Default for Screener {
             back_facing9: Default::default(),
             outside9: Default::default(),
             near9: Default::default(),
-            absnx32: Default::default(),
-            absny32: Default::default(),
-            low_nx: Default::default(),
-            low_ny: Default::default(),
             tag_p: Default::default(),
             tag_x: Default::default(),
             tag_y: Default::default(),
@@ -974,6 +978,7 @@ impl Default for Screener {
             c_outside: Default::default(),
             c_near: Default::default(),
             depth6: Constant::new((DEPTH as u64).into()),
+            depth_m1_6: Constant::new((DEPTH as u64 - 1).into()),
             zero6: Constant::new(0u64.into()),
             one6: Constant::new(1u64.into()),
             one5: Constant::new(1u64.into()),
@@ -996,9 +1001,6 @@ impl Default for Screener {
             sh4: Constant::new(4u64.into()),
             sh2: Constant::new(2u64.into()),
             sh1: Constant::new(1u64.into()),
-            sh3: Constant::new(3u64.into()),
-            sh1_3: Constant::new(1u64.into()),
-            sh2_3: Constant::new(2u64.into()),
             c24_6: Constant::new(24u64.into()),
             c16_6: Constant::new(16u64.into()),
             c8_6: Constant::new(8u64.into()),
@@ -1161,16 +1163,19 @@ impl Logic for Screener {
             below8,
             near_a8,
             near_b8,
-            e0_8,
-            e1_8,
-            e2_8,
-            e3_8,
-            clz_n1_7,
+            sp3_8,
             clz_n2_7,
             clz_n3_7,
             backward8,
             back_facing8,
-            outside8,
+            f_hi_lt8,
+            f_hi_eq8,
+            f_lo_lt8,
+            l_hi_gt8,
+            l_hi_eq8,
+            l_lo_gt8,
+            ha_open8,
+            hb_open8,
             pass9,
             backward9,
             back_facing9,
@@ -1468,7 +1473,6 @@ impl Logic for Screener {
         self.negy7.d.next = self.negy6.q.val();
         self.k7.d.next = self.k6.q.val();
         self.clz_n7.d.next = self.clz_n6.q.val();
-        self.clz_n1_7.d.next = self.clz_n6.q.val() + self.c1_6.val();
         self.clz_n2_7.d.next = self.clz_n6.q.val() + self.c2_6.val();
         self.clz_n3_7.d.next = self.clz_n6.q.val() + self.c3_6.val();
         self.norm_n7.d.next = self.norm_n6.q.val();
@@ -1505,14 +1509,14 @@ impl Logic for Screener {
             (self.n_hi.val() < self.e_hi.val()) | ((self.n_hi.val() == self.e_hi.val()) & self.e_lo_nz.val());
         self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
         self.side_l_x.next = self.side_l7.q.val() ^ self.msb32.val();
-        self.f_lt.next = (self.side_f_x.val().get_bits::<16>(16) < self.thr_f_hi.val())
-            | ((self.side_f_x.val().get_bits::<16>(16) == self.thr_f_hi.val())
-                & (self.side_f_x.val().get_bits::<16>(0) < self.thr_f_lo.val()));
-        self.l_gt.next = (self.side_l_x.val().get_bits::<16>(16) > self.thr_l_hi.val())
-            | ((self.side_l_x.val().get_bits::<16>(16) == self.thr_l_hi.val())
-                & (self.side_l_x.val().get_bits::<16>(0) > self.thr_l_lo.val()));
-        self.is_outside.next =
-            (self.hb_open7.q.val() & self.f_lt.val()) | (self.ha_open7.q.val() & self.l_gt.val());
+        self.f_hi_lt8.d.next = self.side_f_x.val().get_bits::<16>(16) < self.thr_f_hi.val();
+        self.f_hi_eq8.d.next = self.side_f_x.val().get_bits::<16>(16) == self.thr_f_hi.val();
+        self.f_lo_lt8.d.next = self.side_f_x.val().get_bits::<16>(0) < self.thr_f_lo.val();
+        self.l_hi_gt8.d.next = self.side_l_x.val().get_bits::<16>(16) > self.thr_l_hi.val();
+        self.l_hi_eq8.d.next = self.side_l_x.val().get_bits::<16>(16) == self.thr_l_hi.val();
+        self.l_lo_gt8.d.next = self.side_l_x.val().get_bits::<16>(0) > self.thr_l_lo.val();
+        self.ha_open8.d.next = self.ha_open7.q.val();
+        self.hb_open8.d.next = self.hb_open7.q.val();
         self.v8.d.next = self.v7.q.val();
         self.id8.d.next = self.id7.q.val();
         self.ax8.d.next = self.ax7.q.val();
@@ -1526,46 +1530,38 @@ impl Logic for Screener {
         self.k8.d.next = self.k7.q.val();
         self.backward8.d.next = self.backward7.q.val();
         self.back_facing8.d.next = self.back_facing7.q.val();
-        self.outside8.d.next = self.is_outside.val();
         self.s0_8.d.next = self.s0.val();
         self.s0_m1_8.d.next = self.s0_m1.val();
         self.below8.d.next = self.n_below_e.val();
-        self.e0_8.d.next = self.clz_n7.q.val() == self.clz_e7.q.val();
-        self.e1_8.d.next = self.clz_n1_7.q.val() == self.clz_e7.q.val();
-        self.e2_8.d.next = self.clz_n2_7.q.val() == self.clz_e7.q.val();
-        self.e3_8.d.next = self.clz_n3_7.q.val() == self.clz_e7.q.val();
+        self.sp3_8.d.next = self.clz_n3_7.q.val() - self.clz_e7.q.val();
         self.near_a8.d.next = self.clz_n3_7.q.val() < self.clz_e7.q.val();
         self.near_b8.d.next = self.clz_n2_7.q.val() < self.clz_e7.q.val();
 
-        // Stage 8 (VERDICT_LATENCY): the near screen and the verdict, counted; the patch takes
-        // the next slot of the output FIFO and enters the divider.
+        // Stage 8 (VERDICT_LATENCY): the outside and near screens and the verdict, counted; the
+        // patch takes the next slot of the output FIFO and enters the divider.
+        self.outside8.next = (self.hb_open8.q.val()
+            & (self.f_hi_lt8.q.val() | (self.f_hi_eq8.q.val() & self.f_lo_lt8.q.val())))
+            | (self.ha_open8.q.val() & (self.l_hi_gt8.q.val() | (self.l_hi_eq8.q.val() & self.l_lo_gt8.q.val())));
         self.exp8.next = self.s0_m1_8.q.val();
         if self.below8.q.val() {
             self.exp8.next = self.s0_8.q.val();
         }
-        self.sh5.next = self.exp8.val().get_bits::<5>(0);
-        // sh = s0 − 1 = d − 1: −1, −2, −3 at d = 0, −1, −2; sh = s0 = d: at d = −1, −2, −3.
+        // sh = s0 − 1 = d − 1: near at d ≤ −3; sh = s0 = d: near at d ≤ −4.
         self.near8.next = self.near_b8.q.val();
-        self.is_m1.next = self.e0_8.q.val();
-        self.is_m2.next = self.e1_8.q.val();
-        self.is_lo.next = self.e2_8.q.val();
         if self.below8.q.val() {
             self.near8.next = self.near_a8.q.val();
-            self.is_m1.next = self.e1_8.q.val();
-            self.is_m2.next = self.e2_8.q.val();
-            self.is_lo.next = self.e3_8.q.val();
         }
         self.is_near.next =
-            !self.backward8.q.val() & !self.back_facing8.q.val() & !self.outside8.q.val() & self.near8.val();
+            !self.backward8.q.val() & !self.back_facing8.q.val() & !self.outside8.val() & self.near8.val();
         self.is_pass.next = !self.backward8.q.val()
             & !self.back_facing8.q.val()
-            & !self.outside8.q.val()
+            & !self.outside8.val()
             & !self.is_near.val();
         self.reserve.next = self.v8.q.val();
         self.pass9.d.next = self.v8.q.val() & self.is_pass.val();
         self.backward9.d.next = self.v8.q.val() & self.backward8.q.val();
         self.back_facing9.d.next = self.v8.q.val() & self.back_facing8.q.val();
-        self.outside9.d.next = self.v8.q.val() & self.outside8.q.val();
+        self.outside9.d.next = self.v8.q.val() & self.outside8.val();
         self.near9.d.next = self.v8.q.val() & self.is_near.val();
         // Stage 9 (COUNT_LATENCY): the verdict counted, a cycle after it is decided, so that
         // the counters' 160 clock enables hang off five registers, not off the verdict's logic.
@@ -1591,30 +1587,22 @@ impl Logic for Screener {
         self.near.next = self.c_near.q.val();
         // The dividend floor(|n_c|·2^sh)·2^16 + (bits shifted out)·2^13: the initial remainder
         // (below 2K) and, for sh < 0, the bits shifted out of |n_c|, fed in MSB first.
-        self.absnx32.next = bit_cast::<32, 18>(self.absnx8.q.val());
-        self.absny32.next = bit_cast::<32, 18>(self.absny8.q.val());
-        self.low_nx.next = self.absnx8.q.val().get_bits::<3>(0);
-        self.low_ny.next = self.absny8.q.val().get_bits::<3>(0);
-        self.divider.rx.next = self.absnx32.val() << self.sh5.val();
-        self.divider.ry.next = self.absny32.val() << self.sh5.val();
-        self.divider.fx.next = self.zero3.val();
-        self.divider.fy.next = self.zero3.val();
-        if self.is_m1.val() {
-            self.divider.rx.next = self.absnx32.val() >> self.sh1.val();
-            self.divider.ry.next = self.absny32.val() >> self.sh1.val();
-            self.divider.fx.next = self.low_nx.val() << self.sh2_3.val();
-            self.divider.fy.next = self.low_ny.val() << self.sh2_3.val();
-        } else if self.is_m2.val() {
-            self.divider.rx.next = self.absnx32.val() >> self.sh2.val();
-            self.divider.ry.next = self.absny32.val() >> self.sh2.val();
-            self.divider.fx.next = self.low_nx.val() << self.sh1_3.val();
-            self.divider.fy.next = self.low_ny.val() << self.sh1_3.val();
-        } else if self.is_lo.val() {
-            self.divider.rx.next = self.absnx32.val() >> self.sh3.val();
-            self.divider.ry.next = self.absny32.val() >> self.sh3.val();
-            self.divider.fx.next = self.low_nx.val();
-            self.divider.fy.next = self.low_ny.val();
+        // For sh in −3…31 (every patch that may pass) that is |n_c|·2^(sh + 3) in
+        // DIVIDEND_BITS bits, shifted left by s0 + 3 (a register) and right by one when sh is
+        // s0 − 1: `below8` reaches the divider through one multiplexer, after the shifter, and
+        // the three short shifts right (sh = −1, −2, −3) are the same shifter's.
+        self.wide_x.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.absnx8.q.val()) << self.sp3_8.q.val();
+        self.wide_y.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.absny8.q.val()) << self.sp3_8.q.val();
+        self.dividend_x.next = self.wide_x.val().get_bits::<DIVIDEND_BITS>(1);
+        self.dividend_y.next = self.wide_y.val().get_bits::<DIVIDEND_BITS>(1);
+        if self.below8.q.val() {
+            self.dividend_x.next = self.wide_x.val().get_bits::<DIVIDEND_BITS>(0);
+            self.dividend_y.next = self.wide_y.val().get_bits::<DIVIDEND_BITS>(0);
         }
+        self.divider.rx.next = self.dividend_x.val().get_bits::<32>(3);
+        self.divider.ry.next = self.dividend_y.val().get_bits::<32>(3);
+        self.divider.fx.next = self.dividend_x.val().get_bits::<3>(0);
+        self.divider.fy.next = self.dividend_y.val().get_bits::<3>(0);
         self.divider.k.next = self.k8.q.val();
         // The tag the divider carries: a slot to complete (bit 0), the signs of n (bits 1 and 2).
         self.tag_p.next = self.zero3.val();
@@ -1725,7 +1713,17 @@ impl Logic for Screener {
             self.used_next.next = self.used_dec.val();
         }
         self.used.d.next = self.used_next.val();
-        self.full.d.next = self.used_next.val() == self.depth6.val();
+        // `used_next == DEPTH` from the register's compares, chosen by the handshakes, so that
+        // `out_ready` reaches `full` through the choice only, not through the count's adder and
+        // compare: a take alone fills it from DEPTH − 1, a pop alone empties a slot, else it
+        // stays.
+        self.full.d.next = self.full.q.val();
+        if self.take.val() & !self.pop.val() {
+            self.full.d.next = self.used.q.val() == self.depth_m1_6.val();
+        }
+        if !self.take.val() & self.pop.val() {
+            self.full.d.next = false;
+        }
     }
 }
 
@@ -1733,21 +1731,43 @@ impl Logic for Screener {
 mod tests {
     use super::*;
 
-    /// Stage 8's flags from the leading-zero counts (`near_a8` … `e3_8`) are what the exponent
-    /// itself says (near: bit 5 set and below `SH_MIN` unsigned; equal to −1, −2, `SH_MIN`) for
-    /// every pair of counts the normalisers give (0…31 each) and both candidates.
+    /// Stage 8's flags from the leading-zero counts (`near_a8`, `near_b8`) are what the exponent
+    /// itself says (near: bit 5 set and below `SH_MIN` unsigned) for every pair of counts the
+    /// normalisers give (0…31 each) and both candidates.
     #[test]
     fn exponent_flags_from_the_counts_are_the_exponents() {
         let six = |v: i64| (v & 63) as u64;
-        let (lo, m1, m2) = (six(SH_MIN as i64), six(-1), six(-2));
+        let lo = six(SH_MIN as i64);
         for n in 0..32i64 {
             for e in 0..32i64 {
                 let (s0, s0_m1) = (six(n - e), six(n - e - 1));
                 let near = |x: u64| x & 32 != 0 && x < lo;
-                let flags = |x: u64| (near(x), x == m1, x == m2, x == lo);
-                let e_k = |k: i64| n + k == e;
-                assert_eq!(flags(s0), (n + 3 < e, e_k(1), e_k(2), e_k(3)), "s0, clz {n}, {e}");
-                assert_eq!(flags(s0_m1), (n + 2 < e, e_k(0), e_k(1), e_k(2)), "s0 - 1, clz {n}, {e}");
+                assert_eq!(near(s0), n + 3 < e, "s0, clz {n}, {e}");
+                assert_eq!(near(s0_m1), n + 2 < e, "s0 - 1, clz {n}, {e}");
+            }
+        }
+    }
+
+    /// Stage 8's dividend, `|n_c|` shifted left by `s0 + 3` in `DIVIDEND_BITS + 1` bits and
+    /// right by one when `sh = s0 − 1`, is `floor(|n_c|·2^sh)` (modulo 2³²) above the bits a
+    /// shift right moves out, for every `sh` a passing patch may have (−3…31) and both
+    /// candidates.
+    #[test]
+    fn one_shifter_forms_the_dividend_for_every_exponent() {
+        let wide = (1u64 << (DIVIDEND_BITS + 1)) - 1;
+        for absn in [0u64, 1, 2, 3, 5, 7, 0x2_5a5a, 0x3_ffff, 0x2_0001] {
+            for sh in -3i64..=31 {
+                let (r, f) = if sh >= 0 {
+                    ((absn << sh) & 0xffff_ffff, 0)
+                } else {
+                    (absn >> -sh, (absn & ((1 << -sh) - 1)) << (3 + sh))
+                };
+                for below in [true, false] {
+                    let s0 = if below { sh } else { sh + 1 };
+                    let y = (absn << (s0 + 3) as u64) & wide;
+                    let z = if below { y } else { y >> 1 } & ((1 << DIVIDEND_BITS) - 1);
+                    assert_eq!((z >> 3, z & 7), (r, f), "|n_c| {absn:#x}, sh {sh}, below {below}");
+                }
             }
         }
     }
