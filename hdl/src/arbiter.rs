@@ -21,7 +21,8 @@
 //! | `host_valid`, `host_ax` … `host_by` | in | 1, 17 each | the host memory's answer, in request order |
 //! | `requests` | out | 32 | requests sent to the host since power-up (wrapping) |
 //!
-//! Every output is a register.
+//! Every output is a register but `host_addr`, the granted queue's head chosen by the grant
+//! register (registers and one multiplexer).
 //!
 //! # Structure
 //!
@@ -32,15 +33,18 @@
 //!   depths agree.
 //! * **The choice.** A [`RoundRobin`] over the queues' head-valid flags grants one queue per
 //!   clock: the first with a request after the one granted last. The grant goes into the
-//!   **grant register** (one flag per PE, and the PE's number): at the next edge the queue it
-//!   names is popped, its head id goes into the host request register and its PE number into
-//!   the **route queue** (a [`Fifo`] of [`ROUTE_DEPTH`] = `8 × 16` PE numbers: every request at
-//!   the host at once, whatever the mix). A queue in the grant register whose last word is
-//!   about to leave (its count 1) does not ask meanwhile; one with more asks on, so a PE alone
-//!   is still granted every clock. The register is there for the clock: without it the
-//!   round-robin's choice drove the granted queue's pop, its count and its head-valid flag in
-//!   the same clock, across the die from the arbiter to the queue (the six-PE machine's critical
-//!   path at two of three placement seeds).
+//!   **grant register** (one flag per PE): for the clock after the grant the granted queue's
+//!   head is on the host port (`host_req` is the register's OR), and it leaves the queue at the
+//!   next edge. Its PE number goes into the **route queue** (a [`Fifo`] of [`ROUTE_DEPTH`] =
+//!   `8 × 16` PE numbers: every request at the host at once, whatever the mix) at the grant.
+//!   Since a queue pops a clock after its grant, the round-robin does not read the queues'
+//!   `valid` but `asks`, one register per queue: the flag as the queue would show it had it
+//!   popped at the grant, set from its count less the pop still pending, as [`FifoControl`](crate::prim::FifoControl)
+//!   sets `valid` from its count and the edge's pop. So the ports behave as
+//!   with the queues popped at the grant, cycle for cycle, while the round-robin's choice
+//!   reaches only registers beside it: popped at the grant, the choice drove each queue's pop,
+//!   count and head-valid flag across the die, the six-PE machine's critical path at two of
+//!   three placement seeds.
 //! * **Answers.** The host answers in request order, so the route queue's head is the PE of the
 //!   answer arriving: `pe_valid` of that PE and the patch are registered and the head popped.
 //!
@@ -55,13 +59,12 @@
 //! # Latency and throughput
 //!
 //! A request seen on `pe_req` at edge `t` is in its queue's head register after edge `t + 1`;
-//! granted (into the grant register) at edge `t + 2` if no other PE's turn comes first; on
-//! `host_req` from edge `t + 3`. The host's answer on `host_valid` at edge `a` is on `pe_valid`
-//! after edge `a`. So against a PE wired to the memory directly, each request costs
-//! [`LATENCY`] = 5 more clocks: a patch loaded in `T_c + 5` instead of `T_c` cycles from the
-//! PE's request. One request to the host per clock and one answer per clock. A request at the
-//! head of its queue is granted within `N` clocks (each other PE granted at most once before
-//! it).
+//! granted at edge `t + 2` if no other PE's turn comes first; on `host_req` from edge `t + 2`
+//! (the cycle after). The host's answer on `host_valid` at edge `a` is on `pe_valid` after edge
+//! `a`. So against a PE wired to the memory directly, each request costs four more clocks: a
+//! patch loaded in `T_c + 4` instead of `T_c` cycles from the PE's request. One request to the
+//! host per clock and one answer per clock. A request at the head of its queue is granted
+//! within `N` clocks (each other PE granted at most once before it).
 //!
 //! # Formats
 //!
@@ -70,7 +73,8 @@
 //!
 //! # Models
 //!
-//! [`model::Arbiter`] steps the same registers on plain values; `testbench/tests/arbiter.rs`
+//! [`model::Arbiter`] steps the port behaviour on plain values (its queues pop at the grant, the
+//! block's a clock later, with the same outputs in every cycle); `testbench/tests/arbiter.rs`
 //! checks the block against it in every cycle (rung 3) and the exported Verilog against the
 //! rust-hdl simulation (rung 4). `arbiter.sby` proves, on the Verilog, that no request is lost
 //! or duplicated, that every answer goes to the PE that asked, with its patch, in its order, and
@@ -94,10 +98,10 @@ pub const ROUTE_BITS: usize = 7;
 pub const ROUTE_DEPTH: usize = 1 << ROUTE_BITS;
 /// Bits of the host memory's patch coordinates.
 pub const WORD_BITS: usize = 17;
-/// Clocks the arbiter adds to a load: a PE's request reaches the host memory four clocks
-/// after its pulse when no other PE's turn comes first (its queue, the grant register, the host
-/// request register), and the answer the PE one clock after the host's.
-pub const LATENCY: u64 = 5;
+/// Clocks the arbiter adds to a load: a PE's request reaches the host memory three clocks
+/// after its pulse when no other PE's turn comes first, and the answer the PE one clock after
+/// the host's.
+pub const LATENCY: u64 = 4;
 
 const ID: usize = ID_BITS as usize;
 
@@ -150,8 +154,6 @@ pub mod model {
         queues: Vec<Queue<u16>>,
         route: Queue<usize>,
         rr: RoundRobin,
-        /// The grant register: the PE whose queue's head goes to the host at the next edge.
-        grant: Option<usize>,
         out: Outputs,
     }
 
@@ -163,7 +165,6 @@ pub mod model {
                 queues: (0..n).map(|_| Queue::new(QUEUE_BITS)).collect(),
                 route: Queue::new(ROUTE_BITS),
                 rr: RoundRobin::default(),
-                grant: None,
                 out: Outputs::default(),
             }
         }
@@ -178,12 +179,9 @@ pub mod model {
             self.queues[i].words.len()
         }
 
-        /// Whether PE `i` asks for a turn in this cycle: its queue shows a request at its head
-        /// that the grant register is not about to take (a granted queue's last word, popped at
-        /// the next edge, asks no more).
-        pub fn asking(&self, i: usize) -> bool {
-            let q = &self.queues[i].control;
-            q.valid && !(self.grant == Some(i) && q.count == 1)
+        /// Whether PE `i`'s queue shows a request at its head (it asks for a turn).
+        pub fn head_valid(&self, i: usize) -> bool {
+            self.queues[i].control.valid
         }
 
         /// Requests at the host, not yet answered.
@@ -192,46 +190,43 @@ pub mod model {
         }
 
         /// One rising edge: `requests[i]` is PE `i`'s request in this cycle, `answer` the host's.
-        /// Returns the PE granted at this edge (its queue's head goes to the host at the next).
-        /// Fails (naming it) on what the block cannot take: a request to a full queue, an answer
-        /// with no request at the host.
+        /// Returns the PE granted at this edge. Fails (naming it) on what the block cannot take:
+        /// a request to a full queue, an answer with no request at the host.
         pub fn step(
             &mut self,
             requests: &[Option<u16>],
             answer: Option<[u32; 4]>,
         ) -> Result<Option<usize>, String> {
-            let mut asking = [false; super::MAX_PES];
-            for (i, a) in asking.iter_mut().enumerate().take(self.queues.len()) {
-                *a = self.asking(i);
+            let mut valid = [false; super::MAX_PES];
+            for (v, q) in valid.iter_mut().zip(&self.queues) {
+                *v = q.control.valid;
             }
-            let pick = self.rr.step(&asking[..self.queues.len()]);
+            let grant = self.rr.step(&valid[..self.queues.len()]);
             if answer.is_some() && self.route.head().is_none() {
                 return Err("a host answer with no request at the host".into());
             }
             let routed = answer.and_then(|_| self.route.head());
-            let granted = self.grant;
             let mut host = None;
             for (i, q) in self.queues.iter_mut().enumerate() {
                 if requests[i].is_some() && q.words.len() >= QUEUE_DEPTH {
                     return Err(format!("PE {i} has more than {QUEUE_DEPTH} requests waiting"));
                 }
-                if granted == Some(i) {
+                if grant == Some(i) {
                     host = q.head();
                 }
-                q.step(requests[i], granted == Some(i));
+                q.step(requests[i], grant == Some(i));
             }
-            if self.route.words.len() >= ROUTE_DEPTH && granted.is_some() {
+            if self.route.words.len() >= ROUTE_DEPTH && grant.is_some() {
                 return Err(format!("more than {ROUTE_DEPTH} requests at the host"));
             }
-            self.route.step(granted, answer.is_some());
-            self.grant = pick;
+            self.route.step(grant, answer.is_some());
             self.out = Outputs {
                 answer: routed,
                 patch: answer.unwrap_or(self.out.patch),
                 host,
-                requests: self.out.requests.wrapping_add(granted.is_some() as u32),
+                requests: self.out.requests.wrapping_add(grant.is_some() as u32),
             };
-            Ok(pick)
+            Ok(grant)
         }
     }
 }
@@ -260,15 +255,15 @@ pub struct MemoryArbiter<const N: usize> {
     // Requests.
     queues: [Fifo<ID, QUEUE_BITS, 5>; N],
     rr: RoundRobin<N, PE_BITS>,
-    /// The grant register, one-hot: the queue popped at the next edge, its head to the host.
+    /// Each queue's head-valid flag as it would be with the queue popped at its grant: the
+    /// round-robin's requests (see "Structure").
+    asks: [DFF<bool>; N],
+    /// The grant register, one-hot: the queue whose head is on the host port in this clock and
+    /// leaves it at the next edge.
     grant: [DFF<bool>; N],
-    /// The grant register's PE number, and whether it holds one.
-    grant_pe: DFF<Bits<PE_BITS>>,
     grant_any: DFF<bool>,
     /// The granted queue's head.
     granted: Signal<Local, Bits<ID>>,
-    req_r: DFF<bool>,
-    addr_r: DFF<Bits<ID>>,
     count: DFF<Bits<32>>,
     // Answers.
     route: Fifo<PE_BITS, ROUTE_BITS, 8>,
@@ -279,7 +274,9 @@ pub struct MemoryArbiter<const N: usize> {
     by_r: DFF<Bits<WORD_BITS>>,
     zero_id: Constant<Bits<ID>>,
     one: Constant<Bits<32>>,
+    zero_count: Constant<Bits<5>>,
     one_count: Constant<Bits<5>>,
+    two_count: Constant<Bits<5>>,
 }
 
 impl<const N: usize> Default for MemoryArbiter<N> {
@@ -305,12 +302,10 @@ impl<const N: usize> Default for MemoryArbiter<N> {
             requests: Default::default(),
             queues: std::array::from_fn(|_| Default::default()),
             rr: Default::default(),
+            asks: std::array::from_fn(|_| Default::default()),
             grant: std::array::from_fn(|_| Default::default()),
-            grant_pe: Default::default(),
             grant_any: Default::default(),
             granted: Default::default(),
-            req_r: Default::default(),
-            addr_r: Default::default(),
             count: Default::default(),
             route: Default::default(),
             valid_r: std::array::from_fn(|_| Default::default()),
@@ -320,7 +315,9 @@ impl<const N: usize> Default for MemoryArbiter<N> {
             by_r: Default::default(),
             zero_id: Constant::new(0u64.into()),
             one: Constant::new(1u64.into()),
+            zero_count: Constant::new(0u64.into()),
             one_count: Constant::new(1u64.into()),
+            two_count: Constant::new(2u64.into()),
         }
     }
 }
@@ -328,38 +325,52 @@ impl<const N: usize> Default for MemoryArbiter<N> {
 impl<const N: usize> Logic for MemoryArbiter<N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, grant_pe, grant_any, req_r, addr_r, count, ax_r, ay_r, bx_r, by_r);
+        dff_setup!(self, clock, grant_any, count, ax_r, ay_r, bx_r, by_r);
         self.rr.clock.next = self.clock.val();
         self.route.clock.next = self.clock.val();
-        // Each PE's requests into its queue; the queue's head asks for a turn unless the grant
-        // register is about to pop its last word. The round-robin's choice goes into the grant
-        // register; the queue it names is popped at the next edge, its head sent to the host.
+        // Each PE's requests into its queue. The round-robin grants among the `asks` flags; the
+        // grant goes into the grant register, and the queue it names shows its head on the host
+        // port for a clock and pops it at the next edge, a clock after the grant. `asks` is the
+        // queue's head-valid flag as it would be had the queue popped at the grant: from its
+        // count less the pop still pending (`grant`), as `FifoControl` sets `valid` from its
+        // count and this edge's pop.
         self.granted.next = self.zero_id.val();
         for i in 0..N {
             self.queues[i].clock.next = self.clock.val();
             self.queues[i].push.next = self.pe_req[i].val();
             self.queues[i].data_in.next = self.pe_addr[i].val();
-            self.rr.request[i].next = self.queues[i].valid.val()
-                & !(self.grant[i].q.val() & (self.queues[i].count.val() == self.one_count.val()));
+            self.rr.request[i].next = self.asks[i].q.val();
+            self.asks[i].clock.next = self.clock.val();
             self.grant[i].clock.next = self.clock.val();
             self.grant[i].d.next = self.rr.found.val() & (self.rr.pick.val().index() == i);
+            // Words left once the pending pop is done: none, or exactly one.
+            self.asks[i].d.next = self.queues[i].count.val() != self.zero_count.val();
+            if self.grant[i].q.val() {
+                self.asks[i].d.next = self.queues[i].count.val() != self.one_count.val();
+            }
+            if self.rr.found.val() & (self.rr.pick.val().index() == i) {
+                if self.grant[i].q.val() {
+                    if self.queues[i].count.val() == self.two_count.val() {
+                        self.asks[i].d.next = false;
+                    }
+                } else if self.queues[i].count.val() == self.one_count.val() {
+                    self.asks[i].d.next = false;
+                }
+            }
             self.queues[i].pop.next = self.grant[i].q.val();
             if self.grant[i].q.val() {
                 self.granted.next = self.queues[i].data_out.val();
             }
         }
+        // The granted request on the host port; its PE into the route queue at the grant.
         self.grant_any.d.next = self.rr.found.val();
-        self.grant_pe.d.next = self.rr.pick.val();
-        // The granted request to the host, its PE into the route queue.
-        self.req_r.d.next = self.grant_any.q.val();
-        self.addr_r.d.next = self.granted.val();
-        self.route.push.next = self.grant_any.q.val();
-        self.route.data_in.next = self.grant_pe.q.val();
-        if self.grant_any.q.val() {
+        self.route.push.next = self.rr.found.val();
+        self.route.data_in.next = self.rr.pick.val();
+        if self.rr.found.val() {
             self.count.d.next = self.count.q.val() + self.one.val();
         }
-        self.host_req.next = self.req_r.q.val();
-        self.host_addr.next = self.addr_r.q.val();
+        self.host_req.next = self.grant_any.q.val();
+        self.host_addr.next = self.granted.val();
         self.requests.next = self.count.q.val();
         // The host's answer to the PE at the route queue's head.
         self.route.pop.next = self.host_valid.val();

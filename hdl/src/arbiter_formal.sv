@@ -43,9 +43,9 @@ module arbiter_formal (
 );
     localparam N = 4;
     // Cycles a PE's waiting request may go without one of its requests at the host: N - 1
-    // other PEs' turns, the clock into its queue's head register, the clock in the grant
-    // register and the clock into the host request register.
-    localparam WAIT = N + 2;
+    // other PEs' turns, the clock into its queue's head register and the clock into the host
+    // request register.
+    localparam WAIT = N + 1;
 
     wire [15:0] addr [0:N-1];
     assign addr[0] = addr0;

@@ -21,8 +21,8 @@
 //!
 //! # Latency and throughput
 //!
-//! Each PE's as `pe.rs` documents, with every patch load [`LOAD_LATENCY`] = 7 clocks longer:
-//! [`crate::arbiter::LATENCY`] = 5 in the arbiter (its queue, grant, host request and answer registers) and
+//! Each PE's as `pe.rs` documents, with every patch load [`LOAD_LATENCY`] = 6 clocks longer:
+//! [`crate::arbiter::LATENCY`] = 4 in the arbiter (its queue, grant and answer registers) and
 //! [`PORT_LATENCY`] = 2 in each PE's port registers (one on the request's way, one on the
 //! answer's). The host port is shared: one request per clock to the host, answered one per
 //! `T_c`.

@@ -695,7 +695,9 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     // Constant declarations
     localparam  zero_id = 16'h0;
     localparam  one = 32'h1;
+    localparam  zero_count = 5'b0;
     localparam  one_count = 5'b1;
+    localparam  two_count = 5'b10;
     
     // Stub signals
     reg  queues$0$clock;
@@ -717,24 +719,21 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     reg  rr$request$1;
     wire  rr$found;
     wire  [2:0] rr$pick;
+    reg  asks$0$d;
+    wire  asks$0$q;
+    reg  asks$0$clock;
+    reg  asks$1$d;
+    wire  asks$1$q;
+    reg  asks$1$clock;
     reg  grant$0$d;
     wire  grant$0$q;
     reg  grant$0$clock;
     reg  grant$1$d;
     wire  grant$1$q;
     reg  grant$1$clock;
-    reg  [2:0] grant_pe$d;
-    wire  [2:0] grant_pe$q;
-    reg  grant_pe$clock;
     reg  grant_any$d;
     wire  grant_any$q;
     reg  grant_any$clock;
-    reg  req_r$d;
-    wire  req_r$q;
-    reg  req_r$clock;
-    reg  [15:0] addr_r$d;
-    wire  [15:0] addr_r$q;
-    reg  addr_r$clock;
     reg  [31:0] count$d;
     wire  [31:0] count$q;
     reg  count$clock;
@@ -793,6 +792,16 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         .found(rr$found),
         .pick(rr$pick)
     );
+    machine$arbiter$asks$0 asks$0(
+        .d(asks$0$d),
+        .q(asks$0$q),
+        .clock(asks$0$clock)
+    );
+    machine$arbiter$asks$1 asks$1(
+        .d(asks$1$d),
+        .q(asks$1$q),
+        .clock(asks$1$clock)
+    );
     machine$arbiter$grant$0 grant$0(
         .d(grant$0$d),
         .q(grant$0$q),
@@ -803,25 +812,10 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         .q(grant$1$q),
         .clock(grant$1$clock)
     );
-    machine$arbiter$grant_pe grant_pe(
-        .d(grant_pe$d),
-        .q(grant_pe$q),
-        .clock(grant_pe$clock)
-    );
     machine$arbiter$grant_any grant_any(
         .d(grant_any$d),
         .q(grant_any$q),
         .clock(grant_any$clock)
-    );
-    machine$arbiter$req_r req_r(
-        .d(req_r$d),
-        .q(req_r$q),
-        .clock(req_r$clock)
-    );
-    machine$arbiter$addr_r addr_r(
-        .d(addr_r$d),
-        .q(addr_r$q),
-        .clock(addr_r$clock)
     );
     machine$arbiter$count count(
         .d(count$d),
@@ -870,19 +864,13 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     
     // Update code
     always @(*) begin
-        grant_pe$clock = clock;
         grant_any$clock = clock;
-        req_r$clock = clock;
-        addr_r$clock = clock;
         count$clock = clock;
         ax_r$clock = clock;
         ay_r$clock = clock;
         bx_r$clock = clock;
         by_r$clock = clock;
-        grant_pe$d = grant_pe$q;
         grant_any$d = grant_any$q;
-        req_r$d = req_r$q;
-        addr_r$d = addr_r$q;
         count$d = count$q;
         ax_r$d = ax_r$q;
         ay_r$d = ay_r$q;
@@ -894,9 +882,24 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         queues$0$clock = clock;
         queues$0$push = pe_req$0;
         queues$0$data_in = pe_addr$0;
-        rr$request$0 = queues$0$valid & ~(grant$0$q & (queues$0$count == one_count));
+        rr$request$0 = asks$0$q;
+        asks$0$clock = clock;
         grant$0$clock = clock;
         grant$0$d = rr$found & (rr$pick == 0);
+        asks$0$d = queues$0$count != zero_count;
+        if (grant$0$q) begin
+            asks$0$d = queues$0$count != one_count;
+        end
+        if (rr$found & (rr$pick == 0)) begin
+            if (grant$0$q) begin
+                if (queues$0$count == two_count) begin
+                    asks$0$d = 1'b0;
+                end
+            end
+            else if (queues$0$count == one_count) begin
+                asks$0$d = 1'b0;
+            end
+        end
         queues$0$pop = grant$0$q;
         if (grant$0$q) begin
             granted = queues$0$data_out;
@@ -904,24 +907,36 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         queues$1$clock = clock;
         queues$1$push = pe_req$1;
         queues$1$data_in = pe_addr$1;
-        rr$request$1 = queues$1$valid & ~(grant$1$q & (queues$1$count == one_count));
+        rr$request$1 = asks$1$q;
+        asks$1$clock = clock;
         grant$1$clock = clock;
         grant$1$d = rr$found & (rr$pick == 1);
+        asks$1$d = queues$1$count != zero_count;
+        if (grant$1$q) begin
+            asks$1$d = queues$1$count != one_count;
+        end
+        if (rr$found & (rr$pick == 1)) begin
+            if (grant$1$q) begin
+                if (queues$1$count == two_count) begin
+                    asks$1$d = 1'b0;
+                end
+            end
+            else if (queues$1$count == one_count) begin
+                asks$1$d = 1'b0;
+            end
+        end
         queues$1$pop = grant$1$q;
         if (grant$1$q) begin
             granted = queues$1$data_out;
         end
         grant_any$d = rr$found;
-        grant_pe$d = rr$pick;
-        req_r$d = grant_any$q;
-        addr_r$d = granted;
-        route$push = grant_any$q;
-        route$data_in = grant_pe$q;
-        if (grant_any$q) begin
+        route$push = rr$found;
+        route$data_in = rr$pick;
+        if (rr$found) begin
             count$d = count$q + one;
         end
-        host_req = req_r$q;
-        host_addr = addr_r$q;
+        host_req = grant_any$q;
+        host_addr = granted;
         requests = count$q;
         route$pop = host_valid;
         valid_r$0$clock = clock;
@@ -951,23 +966,42 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
 endmodule // machine$arbiter
 
 
-module machine$arbiter$addr_r(d,q,clock);
+module machine$arbiter$asks$0(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // machine$arbiter$addr_r
+endmodule // machine$arbiter$asks$0
+
+
+module machine$arbiter$asks$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$arbiter$asks$1
 
 
 module machine$arbiter$ax_r(d,q,clock);
@@ -1120,25 +1154,6 @@ module machine$arbiter$grant_any(d,q,clock);
     end
           
 endmodule // machine$arbiter$grant_any
-
-
-module machine$arbiter$grant_pe(d,q,clock);
-    
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$arbiter$grant_pe
 
 
 module machine$arbiter$queues$0(clock,push,data_in,pop,valid,data_out,count);
@@ -1773,25 +1788,6 @@ module machine$arbiter$queues$1$lane(clock,write_address,write_data,write_enable
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$arbiter$queues$1$lane
-
-
-module machine$arbiter$req_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$arbiter$req_r
 
 
 module machine$arbiter$route(clock,push,data_in,pop,valid,data_out,count);
@@ -11438,6 +11434,7 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
     localparam  depth6 = 6'b100000;
+    localparam  depth_m1_6 = 6'b11111;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
@@ -11460,9 +11457,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  sh4 = 32'h4;
     localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
-    localparam  sh3 = 32'h3;
-    localparam  sh1_3 = 3'b1;
-    localparam  sh2_3 = 3'b10;
     localparam  c24_6 = 6'b11000;
     localparam  c16_6 = 6'b10000;
     localparam  c8_6 = 6'b1000;
@@ -11920,6 +11914,30 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  hb_open7$d;
     wire  hb_open7$q;
     reg  hb_open7$clock;
+    reg  f_hi_lt8$d;
+    wire  f_hi_lt8$q;
+    reg  f_hi_lt8$clock;
+    reg  f_hi_eq8$d;
+    wire  f_hi_eq8$q;
+    reg  f_hi_eq8$clock;
+    reg  f_lo_lt8$d;
+    wire  f_lo_lt8$q;
+    reg  f_lo_lt8$clock;
+    reg  l_hi_gt8$d;
+    wire  l_hi_gt8$q;
+    reg  l_hi_gt8$clock;
+    reg  l_hi_eq8$d;
+    wire  l_hi_eq8$q;
+    reg  l_hi_eq8$clock;
+    reg  l_lo_gt8$d;
+    wire  l_lo_gt8$q;
+    reg  l_lo_gt8$clock;
+    reg  ha_open8$d;
+    wire  ha_open8$q;
+    reg  ha_open8$clock;
+    reg  hb_open8$d;
+    wire  hb_open8$q;
+    reg  hb_open8$clock;
     reg  v8$d;
     wire  v8$q;
     reg  v8$clock;
@@ -11968,21 +11986,9 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  near_b8$d;
     wire  near_b8$q;
     reg  near_b8$clock;
-    reg  e0_8$d;
-    wire  e0_8$q;
-    reg  e0_8$clock;
-    reg  e1_8$d;
-    wire  e1_8$q;
-    reg  e1_8$clock;
-    reg  e2_8$d;
-    wire  e2_8$q;
-    reg  e2_8$clock;
-    reg  e3_8$d;
-    wire  e3_8$q;
-    reg  e3_8$clock;
-    reg  [5:0] clz_n1_7$d;
-    wire  [5:0] clz_n1_7$q;
-    reg  clz_n1_7$clock;
+    reg  [5:0] sp3_8$d;
+    wire  [5:0] sp3_8$q;
+    reg  sp3_8$clock;
     reg  [5:0] clz_n2_7$d;
     wire  [5:0] clz_n2_7$q;
     reg  clz_n2_7$clock;
@@ -11995,9 +12001,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  back_facing8$d;
     wire  back_facing8$q;
     reg  back_facing8$clock;
-    reg  outside8$d;
-    wire  outside8$q;
-    reg  outside8$clock;
     reg  pass9$d;
     wire  pass9$q;
     reg  pass9$clock;
@@ -12115,21 +12118,15 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
-    reg  f_lt;
-    reg  l_gt;
-    reg  is_outside;
     reg  [5:0] exp8;
     reg  near8;
-    reg  is_m1;
-    reg  is_m2;
-    reg  is_lo;
-    reg  [4:0] sh5;
+    reg  outside8;
     reg  is_near;
     reg  is_pass;
-    reg  [31:0] absnx32;
-    reg  [31:0] absny32;
-    reg  [2:0] low_nx;
-    reg  [2:0] low_ny;
+    reg  [35:0] wide_x;
+    reg  [35:0] wide_y;
+    reg  [34:0] dividend_x;
+    reg  [34:0] dividend_y;
     reg  [2:0] tag_p;
     reg  [2:0] tag_x;
     reg  [2:0] tag_y;
@@ -12840,6 +12837,46 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(hb_open7$q),
         .clock(hb_open7$clock)
     );
+    machine$pes$0$screener$f_hi_lt8 f_hi_lt8(
+        .d(f_hi_lt8$d),
+        .q(f_hi_lt8$q),
+        .clock(f_hi_lt8$clock)
+    );
+    machine$pes$0$screener$f_hi_eq8 f_hi_eq8(
+        .d(f_hi_eq8$d),
+        .q(f_hi_eq8$q),
+        .clock(f_hi_eq8$clock)
+    );
+    machine$pes$0$screener$f_lo_lt8 f_lo_lt8(
+        .d(f_lo_lt8$d),
+        .q(f_lo_lt8$q),
+        .clock(f_lo_lt8$clock)
+    );
+    machine$pes$0$screener$l_hi_gt8 l_hi_gt8(
+        .d(l_hi_gt8$d),
+        .q(l_hi_gt8$q),
+        .clock(l_hi_gt8$clock)
+    );
+    machine$pes$0$screener$l_hi_eq8 l_hi_eq8(
+        .d(l_hi_eq8$d),
+        .q(l_hi_eq8$q),
+        .clock(l_hi_eq8$clock)
+    );
+    machine$pes$0$screener$l_lo_gt8 l_lo_gt8(
+        .d(l_lo_gt8$d),
+        .q(l_lo_gt8$q),
+        .clock(l_lo_gt8$clock)
+    );
+    machine$pes$0$screener$ha_open8 ha_open8(
+        .d(ha_open8$d),
+        .q(ha_open8$q),
+        .clock(ha_open8$clock)
+    );
+    machine$pes$0$screener$hb_open8 hb_open8(
+        .d(hb_open8$d),
+        .q(hb_open8$q),
+        .clock(hb_open8$clock)
+    );
     machine$pes$0$screener$v8 v8(
         .d(v8$d),
         .q(v8$q),
@@ -12920,30 +12957,10 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(near_b8$q),
         .clock(near_b8$clock)
     );
-    machine$pes$0$screener$e0_8 e0_8(
-        .d(e0_8$d),
-        .q(e0_8$q),
-        .clock(e0_8$clock)
-    );
-    machine$pes$0$screener$e1_8 e1_8(
-        .d(e1_8$d),
-        .q(e1_8$q),
-        .clock(e1_8$clock)
-    );
-    machine$pes$0$screener$e2_8 e2_8(
-        .d(e2_8$d),
-        .q(e2_8$q),
-        .clock(e2_8$clock)
-    );
-    machine$pes$0$screener$e3_8 e3_8(
-        .d(e3_8$d),
-        .q(e3_8$q),
-        .clock(e3_8$clock)
-    );
-    machine$pes$0$screener$clz_n1_7 clz_n1_7(
-        .d(clz_n1_7$d),
-        .q(clz_n1_7$q),
-        .clock(clz_n1_7$clock)
+    machine$pes$0$screener$sp3_8 sp3_8(
+        .d(sp3_8$d),
+        .q(sp3_8$q),
+        .clock(sp3_8$clock)
     );
     machine$pes$0$screener$clz_n2_7 clz_n2_7(
         .d(clz_n2_7$d),
@@ -12964,11 +12981,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(back_facing8$d),
         .q(back_facing8$q),
         .clock(back_facing8$clock)
-    );
-    machine$pes$0$screener$outside8 outside8(
-        .d(outside8$d),
-        .q(outside8$q),
-        .clock(outside8$clock)
     );
     machine$pes$0$screener$pass9 pass9(
         .d(pass9$d),
@@ -13164,16 +13176,19 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$clock = clock;
         near_a8$clock = clock;
         near_b8$clock = clock;
-        e0_8$clock = clock;
-        e1_8$clock = clock;
-        e2_8$clock = clock;
-        e3_8$clock = clock;
-        clz_n1_7$clock = clock;
+        sp3_8$clock = clock;
         clz_n2_7$clock = clock;
         clz_n3_7$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
-        outside8$clock = clock;
+        f_hi_lt8$clock = clock;
+        f_hi_eq8$clock = clock;
+        f_lo_lt8$clock = clock;
+        l_hi_gt8$clock = clock;
+        l_hi_eq8$clock = clock;
+        l_lo_gt8$clock = clock;
+        ha_open8$clock = clock;
+        hb_open8$clock = clock;
         pass9$clock = clock;
         backward9$clock = clock;
         back_facing9$clock = clock;
@@ -13311,16 +13326,19 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$d = below8$q;
         near_a8$d = near_a8$q;
         near_b8$d = near_b8$q;
-        e0_8$d = e0_8$q;
-        e1_8$d = e1_8$q;
-        e2_8$d = e2_8$q;
-        e3_8$d = e3_8$q;
-        clz_n1_7$d = clz_n1_7$q;
+        sp3_8$d = sp3_8$q;
         clz_n2_7$d = clz_n2_7$q;
         clz_n3_7$d = clz_n3_7$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
-        outside8$d = outside8$q;
+        f_hi_lt8$d = f_hi_lt8$q;
+        f_hi_eq8$d = f_hi_eq8$q;
+        f_lo_lt8$d = f_lo_lt8$q;
+        l_hi_gt8$d = l_hi_gt8$q;
+        l_hi_eq8$d = l_hi_eq8$q;
+        l_lo_gt8$d = l_lo_gt8$q;
+        ha_open8$d = ha_open8$q;
+        hb_open8$d = hb_open8$q;
         pass9$d = pass9$q;
         backward9$d = backward9$q;
         back_facing9$d = back_facing9$q;
@@ -13584,7 +13602,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy7$d = negy6$q;
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
-        clz_n1_7$d = clz_n6$q + c1_6;
         clz_n2_7$d = clz_n6$q + c2_6;
         clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
@@ -13604,9 +13621,14 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        f_lt = (side_f_x[(32'h10)+:(16)] < thr_f_hi) | ((side_f_x[(32'h10)+:(16)] == thr_f_hi) & (side_f_x[(32'h0)+:(16)] < thr_f_lo));
-        l_gt = (side_l_x[(32'h10)+:(16)] > thr_l_hi) | ((side_l_x[(32'h10)+:(16)] == thr_l_hi) & (side_l_x[(32'h0)+:(16)] > thr_l_lo));
-        is_outside = (hb_open7$q & f_lt) | (ha_open7$q & l_gt);
+        f_hi_lt8$d = side_f_x[(32'h10)+:(16)] < thr_f_hi;
+        f_hi_eq8$d = side_f_x[(32'h10)+:(16)] == thr_f_hi;
+        f_lo_lt8$d = side_f_x[(32'h0)+:(16)] < thr_f_lo;
+        l_hi_gt8$d = side_l_x[(32'h10)+:(16)] > thr_l_hi;
+        l_hi_eq8$d = side_l_x[(32'h10)+:(16)] == thr_l_hi;
+        l_lo_gt8$d = side_l_x[(32'h0)+:(16)] > thr_l_lo;
+        ha_open8$d = ha_open7$q;
+        hb_open8$d = hb_open7$q;
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -13620,38 +13642,28 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
-        outside8$d = is_outside;
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        e0_8$d = clz_n7$q == clz_e7$q;
-        e1_8$d = clz_n1_7$q == clz_e7$q;
-        e2_8$d = clz_n2_7$q == clz_e7$q;
-        e3_8$d = clz_n3_7$q == clz_e7$q;
+        sp3_8$d = clz_n3_7$q - clz_e7$q;
         near_a8$d = clz_n3_7$q < clz_e7$q;
         near_b8$d = clz_n2_7$q < clz_e7$q;
+        outside8 = (hb_open8$q & (f_hi_lt8$q | (f_hi_eq8$q & f_lo_lt8$q))) | (ha_open8$q & (l_hi_gt8$q | (l_hi_eq8$q & l_lo_gt8$q)));
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
-        sh5 = exp8[(32'h0)+:(5)];
         near8 = near_b8$q;
-        is_m1 = e0_8$q;
-        is_m2 = e1_8$q;
-        is_lo = e2_8$q;
         if (below8$q) begin
             near8 = near_a8$q;
-            is_m1 = e1_8$q;
-            is_m2 = e2_8$q;
-            is_lo = e3_8$q;
         end
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
-        is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8 & near8;
+        is_pass = ~backward8$q & ~back_facing8$q & ~outside8 & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
         backward9$d = v8$q & backward8$q;
         back_facing9$d = v8$q & back_facing8$q;
-        outside9$d = v8$q & outside8$q;
+        outside9$d = v8$q & outside8;
         near9$d = v8$q & is_near;
         if (pass9$q) begin
             c_passed$d = c_passed$q + one32;
@@ -13673,32 +13685,18 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        absnx32 = ((absnx8$q) & 32'hffffffff);
-        absny32 = ((absny8$q) & 32'hffffffff);
-        low_nx = absnx8$q[(32'h0)+:(3)];
-        low_ny = absny8$q[(32'h0)+:(3)];
-        divider$rx = absnx32 << sh5;
-        divider$ry = absny32 << sh5;
-        divider$fx = zero3;
-        divider$fy = zero3;
-        if (is_m1) begin
-            divider$rx = absnx32 >> sh1;
-            divider$ry = absny32 >> sh1;
-            divider$fx = low_nx << sh2_3;
-            divider$fy = low_ny << sh2_3;
+        wide_x = ((absnx8$q) & 36'hfffffffff) << sp3_8$q;
+        wide_y = ((absny8$q) & 36'hfffffffff) << sp3_8$q;
+        dividend_x = wide_x[(32'h1)+:(35)];
+        dividend_y = wide_y[(32'h1)+:(35)];
+        if (below8$q) begin
+            dividend_x = wide_x[(32'h0)+:(35)];
+            dividend_y = wide_y[(32'h0)+:(35)];
         end
-        else if (is_m2) begin
-            divider$rx = absnx32 >> sh2;
-            divider$ry = absny32 >> sh2;
-            divider$fx = low_nx << sh1_3;
-            divider$fy = low_ny << sh1_3;
-        end
-        else if (is_lo) begin
-            divider$rx = absnx32 >> sh3;
-            divider$ry = absny32 >> sh3;
-            divider$fx = low_nx;
-            divider$fy = low_ny;
-        end
+        divider$rx = dividend_x[(32'h3)+:(32)];
+        divider$ry = dividend_y[(32'h3)+:(32)];
+        divider$fx = dividend_x[(32'h0)+:(3)];
+        divider$fy = dividend_y[(32'h0)+:(3)];
         divider$k = k8$q;
         tag_p = zero3;
         if (reserve) begin
@@ -13793,7 +13791,13 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
             used_next = used_dec;
         end
         used$d = used_next;
-        full$d = used_next == depth6;
+        full$d = full$q;
+        if (take & ~pop) begin
+            full$d = used$q == depth_m1_6;
+        end
+        if (~take & pop) begin
+            full$d = 1'b0;
+        end
     end
     
 endmodule // machine$pes$0$screener
@@ -14996,25 +15000,6 @@ module machine$pes$0$screener$clz_e7(d,q,clock);
 endmodule // machine$pes$0$screener$clz_e7
 
 
-module machine$pes$0$screener$clz_n1_7(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$clz_n1_7
-
-
 module machine$pes$0$screener$clz_n2_7(d,q,clock);
     
     // Module arguments
@@ -15217,7 +15202,7 @@ module machine$pes$0$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_ou
 endmodule // machine$pes$0$screener$divider
 
 
-module machine$pes$0$screener$e0_8(d,q,clock);
+module machine$pes$0$screener$f_hi_eq8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15233,10 +15218,10 @@ module machine$pes$0$screener$e0_8(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$screener$e0_8
+endmodule // machine$pes$0$screener$f_hi_eq8
 
 
-module machine$pes$0$screener$e1_8(d,q,clock);
+module machine$pes$0$screener$f_hi_lt8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15252,10 +15237,10 @@ module machine$pes$0$screener$e1_8(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$screener$e1_8
+endmodule // machine$pes$0$screener$f_hi_lt8
 
 
-module machine$pes$0$screener$e2_8(d,q,clock);
+module machine$pes$0$screener$f_lo_lt8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -15271,26 +15256,7 @@ module machine$pes$0$screener$e2_8(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$screener$e2_8
-
-
-module machine$pes$0$screener$e3_8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$e3_8
+endmodule // machine$pes$0$screener$f_lo_lt8
 
 
 module machine$pes$0$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -15548,6 +15514,25 @@ module machine$pes$0$screener$ha_open7(d,q,clock);
 endmodule // machine$pes$0$screener$ha_open7
 
 
+module machine$pes$0$screener$ha_open8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$ha_open8
+
+
 module machine$pes$0$screener$hb6(d,q,clock);
     
     // Module arguments
@@ -15584,6 +15569,25 @@ module machine$pes$0$screener$hb_open7(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$hb_open7
+
+
+module machine$pes$0$screener$hb_open8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$hb_open8
 
 
 module machine$pes$0$screener$id1(d,q,clock);
@@ -15831,6 +15835,63 @@ module machine$pes$0$screener$k_nonpos6(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$k_nonpos6
+
+
+module machine$pes$0$screener$l_hi_eq8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$l_hi_eq8
+
+
+module machine$pes$0$screener$l_hi_gt8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$l_hi_gt8
+
+
+module machine$pes$0$screener$l_lo_gt8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$l_lo_gt8
 
 
 module machine$pes$0$screener$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -17649,25 +17710,6 @@ module machine$pes$0$screener$normal_ya2(d,q,clock);
 endmodule // machine$pes$0$screener$normal_ya2
 
 
-module machine$pes$0$screener$outside8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$outside8
-
-
 module machine$pes$0$screener$outside9(d,q,clock);
     
     // Module arguments
@@ -17989,6 +18031,25 @@ module machine$pes$0$screener$side_l7(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$side_l7
+
+
+module machine$pes$0$screener$sp3_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$screener$sp3_8
 
 
 module machine$pes$0$screener$used(d,q,clock);
@@ -30157,6 +30218,7 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
     localparam  depth6 = 6'b100000;
+    localparam  depth_m1_6 = 6'b11111;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
@@ -30179,9 +30241,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  sh4 = 32'h4;
     localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
-    localparam  sh3 = 32'h3;
-    localparam  sh1_3 = 3'b1;
-    localparam  sh2_3 = 3'b10;
     localparam  c24_6 = 6'b11000;
     localparam  c16_6 = 6'b10000;
     localparam  c8_6 = 6'b1000;
@@ -30639,6 +30698,30 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  hb_open7$d;
     wire  hb_open7$q;
     reg  hb_open7$clock;
+    reg  f_hi_lt8$d;
+    wire  f_hi_lt8$q;
+    reg  f_hi_lt8$clock;
+    reg  f_hi_eq8$d;
+    wire  f_hi_eq8$q;
+    reg  f_hi_eq8$clock;
+    reg  f_lo_lt8$d;
+    wire  f_lo_lt8$q;
+    reg  f_lo_lt8$clock;
+    reg  l_hi_gt8$d;
+    wire  l_hi_gt8$q;
+    reg  l_hi_gt8$clock;
+    reg  l_hi_eq8$d;
+    wire  l_hi_eq8$q;
+    reg  l_hi_eq8$clock;
+    reg  l_lo_gt8$d;
+    wire  l_lo_gt8$q;
+    reg  l_lo_gt8$clock;
+    reg  ha_open8$d;
+    wire  ha_open8$q;
+    reg  ha_open8$clock;
+    reg  hb_open8$d;
+    wire  hb_open8$q;
+    reg  hb_open8$clock;
     reg  v8$d;
     wire  v8$q;
     reg  v8$clock;
@@ -30687,21 +30770,9 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  near_b8$d;
     wire  near_b8$q;
     reg  near_b8$clock;
-    reg  e0_8$d;
-    wire  e0_8$q;
-    reg  e0_8$clock;
-    reg  e1_8$d;
-    wire  e1_8$q;
-    reg  e1_8$clock;
-    reg  e2_8$d;
-    wire  e2_8$q;
-    reg  e2_8$clock;
-    reg  e3_8$d;
-    wire  e3_8$q;
-    reg  e3_8$clock;
-    reg  [5:0] clz_n1_7$d;
-    wire  [5:0] clz_n1_7$q;
-    reg  clz_n1_7$clock;
+    reg  [5:0] sp3_8$d;
+    wire  [5:0] sp3_8$q;
+    reg  sp3_8$clock;
     reg  [5:0] clz_n2_7$d;
     wire  [5:0] clz_n2_7$q;
     reg  clz_n2_7$clock;
@@ -30714,9 +30785,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  back_facing8$d;
     wire  back_facing8$q;
     reg  back_facing8$clock;
-    reg  outside8$d;
-    wire  outside8$q;
-    reg  outside8$clock;
     reg  pass9$d;
     wire  pass9$q;
     reg  pass9$clock;
@@ -30834,21 +30902,15 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
-    reg  f_lt;
-    reg  l_gt;
-    reg  is_outside;
     reg  [5:0] exp8;
     reg  near8;
-    reg  is_m1;
-    reg  is_m2;
-    reg  is_lo;
-    reg  [4:0] sh5;
+    reg  outside8;
     reg  is_near;
     reg  is_pass;
-    reg  [31:0] absnx32;
-    reg  [31:0] absny32;
-    reg  [2:0] low_nx;
-    reg  [2:0] low_ny;
+    reg  [35:0] wide_x;
+    reg  [35:0] wide_y;
+    reg  [34:0] dividend_x;
+    reg  [34:0] dividend_y;
     reg  [2:0] tag_p;
     reg  [2:0] tag_x;
     reg  [2:0] tag_y;
@@ -31559,6 +31621,46 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(hb_open7$q),
         .clock(hb_open7$clock)
     );
+    machine$pes$1$screener$f_hi_lt8 f_hi_lt8(
+        .d(f_hi_lt8$d),
+        .q(f_hi_lt8$q),
+        .clock(f_hi_lt8$clock)
+    );
+    machine$pes$1$screener$f_hi_eq8 f_hi_eq8(
+        .d(f_hi_eq8$d),
+        .q(f_hi_eq8$q),
+        .clock(f_hi_eq8$clock)
+    );
+    machine$pes$1$screener$f_lo_lt8 f_lo_lt8(
+        .d(f_lo_lt8$d),
+        .q(f_lo_lt8$q),
+        .clock(f_lo_lt8$clock)
+    );
+    machine$pes$1$screener$l_hi_gt8 l_hi_gt8(
+        .d(l_hi_gt8$d),
+        .q(l_hi_gt8$q),
+        .clock(l_hi_gt8$clock)
+    );
+    machine$pes$1$screener$l_hi_eq8 l_hi_eq8(
+        .d(l_hi_eq8$d),
+        .q(l_hi_eq8$q),
+        .clock(l_hi_eq8$clock)
+    );
+    machine$pes$1$screener$l_lo_gt8 l_lo_gt8(
+        .d(l_lo_gt8$d),
+        .q(l_lo_gt8$q),
+        .clock(l_lo_gt8$clock)
+    );
+    machine$pes$1$screener$ha_open8 ha_open8(
+        .d(ha_open8$d),
+        .q(ha_open8$q),
+        .clock(ha_open8$clock)
+    );
+    machine$pes$1$screener$hb_open8 hb_open8(
+        .d(hb_open8$d),
+        .q(hb_open8$q),
+        .clock(hb_open8$clock)
+    );
     machine$pes$1$screener$v8 v8(
         .d(v8$d),
         .q(v8$q),
@@ -31639,30 +31741,10 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(near_b8$q),
         .clock(near_b8$clock)
     );
-    machine$pes$1$screener$e0_8 e0_8(
-        .d(e0_8$d),
-        .q(e0_8$q),
-        .clock(e0_8$clock)
-    );
-    machine$pes$1$screener$e1_8 e1_8(
-        .d(e1_8$d),
-        .q(e1_8$q),
-        .clock(e1_8$clock)
-    );
-    machine$pes$1$screener$e2_8 e2_8(
-        .d(e2_8$d),
-        .q(e2_8$q),
-        .clock(e2_8$clock)
-    );
-    machine$pes$1$screener$e3_8 e3_8(
-        .d(e3_8$d),
-        .q(e3_8$q),
-        .clock(e3_8$clock)
-    );
-    machine$pes$1$screener$clz_n1_7 clz_n1_7(
-        .d(clz_n1_7$d),
-        .q(clz_n1_7$q),
-        .clock(clz_n1_7$clock)
+    machine$pes$1$screener$sp3_8 sp3_8(
+        .d(sp3_8$d),
+        .q(sp3_8$q),
+        .clock(sp3_8$clock)
     );
     machine$pes$1$screener$clz_n2_7 clz_n2_7(
         .d(clz_n2_7$d),
@@ -31683,11 +31765,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(back_facing8$d),
         .q(back_facing8$q),
         .clock(back_facing8$clock)
-    );
-    machine$pes$1$screener$outside8 outside8(
-        .d(outside8$d),
-        .q(outside8$q),
-        .clock(outside8$clock)
     );
     machine$pes$1$screener$pass9 pass9(
         .d(pass9$d),
@@ -31883,16 +31960,19 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$clock = clock;
         near_a8$clock = clock;
         near_b8$clock = clock;
-        e0_8$clock = clock;
-        e1_8$clock = clock;
-        e2_8$clock = clock;
-        e3_8$clock = clock;
-        clz_n1_7$clock = clock;
+        sp3_8$clock = clock;
         clz_n2_7$clock = clock;
         clz_n3_7$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
-        outside8$clock = clock;
+        f_hi_lt8$clock = clock;
+        f_hi_eq8$clock = clock;
+        f_lo_lt8$clock = clock;
+        l_hi_gt8$clock = clock;
+        l_hi_eq8$clock = clock;
+        l_lo_gt8$clock = clock;
+        ha_open8$clock = clock;
+        hb_open8$clock = clock;
         pass9$clock = clock;
         backward9$clock = clock;
         back_facing9$clock = clock;
@@ -32030,16 +32110,19 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         below8$d = below8$q;
         near_a8$d = near_a8$q;
         near_b8$d = near_b8$q;
-        e0_8$d = e0_8$q;
-        e1_8$d = e1_8$q;
-        e2_8$d = e2_8$q;
-        e3_8$d = e3_8$q;
-        clz_n1_7$d = clz_n1_7$q;
+        sp3_8$d = sp3_8$q;
         clz_n2_7$d = clz_n2_7$q;
         clz_n3_7$d = clz_n3_7$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
-        outside8$d = outside8$q;
+        f_hi_lt8$d = f_hi_lt8$q;
+        f_hi_eq8$d = f_hi_eq8$q;
+        f_lo_lt8$d = f_lo_lt8$q;
+        l_hi_gt8$d = l_hi_gt8$q;
+        l_hi_eq8$d = l_hi_eq8$q;
+        l_lo_gt8$d = l_lo_gt8$q;
+        ha_open8$d = ha_open8$q;
+        hb_open8$d = hb_open8$q;
         pass9$d = pass9$q;
         backward9$d = backward9$q;
         back_facing9$d = back_facing9$q;
@@ -32303,7 +32386,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         negy7$d = negy6$q;
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
-        clz_n1_7$d = clz_n6$q + c1_6;
         clz_n2_7$d = clz_n6$q + c2_6;
         clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
@@ -32323,9 +32405,14 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        f_lt = (side_f_x[(32'h10)+:(16)] < thr_f_hi) | ((side_f_x[(32'h10)+:(16)] == thr_f_hi) & (side_f_x[(32'h0)+:(16)] < thr_f_lo));
-        l_gt = (side_l_x[(32'h10)+:(16)] > thr_l_hi) | ((side_l_x[(32'h10)+:(16)] == thr_l_hi) & (side_l_x[(32'h0)+:(16)] > thr_l_lo));
-        is_outside = (hb_open7$q & f_lt) | (ha_open7$q & l_gt);
+        f_hi_lt8$d = side_f_x[(32'h10)+:(16)] < thr_f_hi;
+        f_hi_eq8$d = side_f_x[(32'h10)+:(16)] == thr_f_hi;
+        f_lo_lt8$d = side_f_x[(32'h0)+:(16)] < thr_f_lo;
+        l_hi_gt8$d = side_l_x[(32'h10)+:(16)] > thr_l_hi;
+        l_hi_eq8$d = side_l_x[(32'h10)+:(16)] == thr_l_hi;
+        l_lo_gt8$d = side_l_x[(32'h0)+:(16)] > thr_l_lo;
+        ha_open8$d = ha_open7$q;
+        hb_open8$d = hb_open7$q;
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -32339,38 +32426,28 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
-        outside8$d = is_outside;
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        e0_8$d = clz_n7$q == clz_e7$q;
-        e1_8$d = clz_n1_7$q == clz_e7$q;
-        e2_8$d = clz_n2_7$q == clz_e7$q;
-        e3_8$d = clz_n3_7$q == clz_e7$q;
+        sp3_8$d = clz_n3_7$q - clz_e7$q;
         near_a8$d = clz_n3_7$q < clz_e7$q;
         near_b8$d = clz_n2_7$q < clz_e7$q;
+        outside8 = (hb_open8$q & (f_hi_lt8$q | (f_hi_eq8$q & f_lo_lt8$q))) | (ha_open8$q & (l_hi_gt8$q | (l_hi_eq8$q & l_lo_gt8$q)));
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
-        sh5 = exp8[(32'h0)+:(5)];
         near8 = near_b8$q;
-        is_m1 = e0_8$q;
-        is_m2 = e1_8$q;
-        is_lo = e2_8$q;
         if (below8$q) begin
             near8 = near_a8$q;
-            is_m1 = e1_8$q;
-            is_m2 = e2_8$q;
-            is_lo = e3_8$q;
         end
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
-        is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8 & near8;
+        is_pass = ~backward8$q & ~back_facing8$q & ~outside8 & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
         backward9$d = v8$q & backward8$q;
         back_facing9$d = v8$q & back_facing8$q;
-        outside9$d = v8$q & outside8$q;
+        outside9$d = v8$q & outside8;
         near9$d = v8$q & is_near;
         if (pass9$q) begin
             c_passed$d = c_passed$q + one32;
@@ -32392,32 +32469,18 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        absnx32 = ((absnx8$q) & 32'hffffffff);
-        absny32 = ((absny8$q) & 32'hffffffff);
-        low_nx = absnx8$q[(32'h0)+:(3)];
-        low_ny = absny8$q[(32'h0)+:(3)];
-        divider$rx = absnx32 << sh5;
-        divider$ry = absny32 << sh5;
-        divider$fx = zero3;
-        divider$fy = zero3;
-        if (is_m1) begin
-            divider$rx = absnx32 >> sh1;
-            divider$ry = absny32 >> sh1;
-            divider$fx = low_nx << sh2_3;
-            divider$fy = low_ny << sh2_3;
+        wide_x = ((absnx8$q) & 36'hfffffffff) << sp3_8$q;
+        wide_y = ((absny8$q) & 36'hfffffffff) << sp3_8$q;
+        dividend_x = wide_x[(32'h1)+:(35)];
+        dividend_y = wide_y[(32'h1)+:(35)];
+        if (below8$q) begin
+            dividend_x = wide_x[(32'h0)+:(35)];
+            dividend_y = wide_y[(32'h0)+:(35)];
         end
-        else if (is_m2) begin
-            divider$rx = absnx32 >> sh2;
-            divider$ry = absny32 >> sh2;
-            divider$fx = low_nx << sh1_3;
-            divider$fy = low_ny << sh1_3;
-        end
-        else if (is_lo) begin
-            divider$rx = absnx32 >> sh3;
-            divider$ry = absny32 >> sh3;
-            divider$fx = low_nx;
-            divider$fy = low_ny;
-        end
+        divider$rx = dividend_x[(32'h3)+:(32)];
+        divider$ry = dividend_y[(32'h3)+:(32)];
+        divider$fx = dividend_x[(32'h0)+:(3)];
+        divider$fy = dividend_y[(32'h0)+:(3)];
         divider$k = k8$q;
         tag_p = zero3;
         if (reserve) begin
@@ -32512,7 +32575,13 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
             used_next = used_dec;
         end
         used$d = used_next;
-        full$d = used_next == depth6;
+        full$d = full$q;
+        if (take & ~pop) begin
+            full$d = used$q == depth_m1_6;
+        end
+        if (~take & pop) begin
+            full$d = 1'b0;
+        end
     end
     
 endmodule // machine$pes$1$screener
@@ -33715,25 +33784,6 @@ module machine$pes$1$screener$clz_e7(d,q,clock);
 endmodule // machine$pes$1$screener$clz_e7
 
 
-module machine$pes$1$screener$clz_n1_7(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$clz_n1_7
-
-
 module machine$pes$1$screener$clz_n2_7(d,q,clock);
     
     // Module arguments
@@ -33936,7 +33986,7 @@ module machine$pes$1$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_ou
 endmodule // machine$pes$1$screener$divider
 
 
-module machine$pes$1$screener$e0_8(d,q,clock);
+module machine$pes$1$screener$f_hi_eq8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -33952,10 +34002,10 @@ module machine$pes$1$screener$e0_8(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$screener$e0_8
+endmodule // machine$pes$1$screener$f_hi_eq8
 
 
-module machine$pes$1$screener$e1_8(d,q,clock);
+module machine$pes$1$screener$f_hi_lt8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -33971,10 +34021,10 @@ module machine$pes$1$screener$e1_8(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$screener$e1_8
+endmodule // machine$pes$1$screener$f_hi_lt8
 
 
-module machine$pes$1$screener$e2_8(d,q,clock);
+module machine$pes$1$screener$f_lo_lt8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -33990,26 +34040,7 @@ module machine$pes$1$screener$e2_8(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$screener$e2_8
-
-
-module machine$pes$1$screener$e3_8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$e3_8
+endmodule // machine$pes$1$screener$f_lo_lt8
 
 
 module machine$pes$1$screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -34267,6 +34298,25 @@ module machine$pes$1$screener$ha_open7(d,q,clock);
 endmodule // machine$pes$1$screener$ha_open7
 
 
+module machine$pes$1$screener$ha_open8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$ha_open8
+
+
 module machine$pes$1$screener$hb6(d,q,clock);
     
     // Module arguments
@@ -34303,6 +34353,25 @@ module machine$pes$1$screener$hb_open7(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$hb_open7
+
+
+module machine$pes$1$screener$hb_open8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$hb_open8
 
 
 module machine$pes$1$screener$id1(d,q,clock);
@@ -34550,6 +34619,63 @@ module machine$pes$1$screener$k_nonpos6(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$k_nonpos6
+
+
+module machine$pes$1$screener$l_hi_eq8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$l_hi_eq8
+
+
+module machine$pes$1$screener$l_hi_gt8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$l_hi_gt8
+
+
+module machine$pes$1$screener$l_lo_gt8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$l_lo_gt8
 
 
 module machine$pes$1$screener$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -36368,25 +36494,6 @@ module machine$pes$1$screener$normal_ya2(d,q,clock);
 endmodule // machine$pes$1$screener$normal_ya2
 
 
-module machine$pes$1$screener$outside8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$outside8
-
-
 module machine$pes$1$screener$outside9(d,q,clock);
     
     // Module arguments
@@ -36708,6 +36815,25 @@ module machine$pes$1$screener$side_l7(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$side_l7
+
+
+module machine$pes$1$screener$sp3_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$screener$sp3_8
 
 
 module machine$pes$1$screener$used(d,q,clock);

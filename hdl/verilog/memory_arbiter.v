@@ -33,7 +33,9 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     // Constant declarations
     localparam  zero_id = 16'h0;
     localparam  one = 32'h1;
+    localparam  zero_count = 5'b0;
     localparam  one_count = 5'b1;
+    localparam  two_count = 5'b10;
     
     // Stub signals
     reg  queues$0$clock;
@@ -71,6 +73,18 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     reg  rr$request$3;
     wire  rr$found;
     wire  [2:0] rr$pick;
+    reg  asks$0$d;
+    wire  asks$0$q;
+    reg  asks$0$clock;
+    reg  asks$1$d;
+    wire  asks$1$q;
+    reg  asks$1$clock;
+    reg  asks$2$d;
+    wire  asks$2$q;
+    reg  asks$2$clock;
+    reg  asks$3$d;
+    wire  asks$3$q;
+    reg  asks$3$clock;
     reg  grant$0$d;
     wire  grant$0$q;
     reg  grant$0$clock;
@@ -83,18 +97,9 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     reg  grant$3$d;
     wire  grant$3$q;
     reg  grant$3$clock;
-    reg  [2:0] grant_pe$d;
-    wire  [2:0] grant_pe$q;
-    reg  grant_pe$clock;
     reg  grant_any$d;
     wire  grant_any$q;
     reg  grant_any$clock;
-    reg  req_r$d;
-    wire  req_r$q;
-    reg  req_r$clock;
-    reg  [15:0] addr_r$d;
-    wire  [15:0] addr_r$q;
-    reg  addr_r$clock;
     reg  [31:0] count$d;
     wire  [31:0] count$q;
     reg  count$clock;
@@ -179,6 +184,26 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         .found(rr$found),
         .pick(rr$pick)
     );
+    memory_arbiter$asks$0 asks$0(
+        .d(asks$0$d),
+        .q(asks$0$q),
+        .clock(asks$0$clock)
+    );
+    memory_arbiter$asks$1 asks$1(
+        .d(asks$1$d),
+        .q(asks$1$q),
+        .clock(asks$1$clock)
+    );
+    memory_arbiter$asks$2 asks$2(
+        .d(asks$2$d),
+        .q(asks$2$q),
+        .clock(asks$2$clock)
+    );
+    memory_arbiter$asks$3 asks$3(
+        .d(asks$3$d),
+        .q(asks$3$q),
+        .clock(asks$3$clock)
+    );
     memory_arbiter$grant$0 grant$0(
         .d(grant$0$d),
         .q(grant$0$q),
@@ -199,25 +224,10 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         .q(grant$3$q),
         .clock(grant$3$clock)
     );
-    memory_arbiter$grant_pe grant_pe(
-        .d(grant_pe$d),
-        .q(grant_pe$q),
-        .clock(grant_pe$clock)
-    );
     memory_arbiter$grant_any grant_any(
         .d(grant_any$d),
         .q(grant_any$q),
         .clock(grant_any$clock)
-    );
-    memory_arbiter$req_r req_r(
-        .d(req_r$d),
-        .q(req_r$q),
-        .clock(req_r$clock)
-    );
-    memory_arbiter$addr_r addr_r(
-        .d(addr_r$d),
-        .q(addr_r$q),
-        .clock(addr_r$clock)
     );
     memory_arbiter$count count(
         .d(count$d),
@@ -276,19 +286,13 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     
     // Update code
     always @(*) begin
-        grant_pe$clock = clock;
         grant_any$clock = clock;
-        req_r$clock = clock;
-        addr_r$clock = clock;
         count$clock = clock;
         ax_r$clock = clock;
         ay_r$clock = clock;
         bx_r$clock = clock;
         by_r$clock = clock;
-        grant_pe$d = grant_pe$q;
         grant_any$d = grant_any$q;
-        req_r$d = req_r$q;
-        addr_r$d = addr_r$q;
         count$d = count$q;
         ax_r$d = ax_r$q;
         ay_r$d = ay_r$q;
@@ -300,9 +304,24 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         queues$0$clock = clock;
         queues$0$push = pe_req$0;
         queues$0$data_in = pe_addr$0;
-        rr$request$0 = queues$0$valid & ~(grant$0$q & (queues$0$count == one_count));
+        rr$request$0 = asks$0$q;
+        asks$0$clock = clock;
         grant$0$clock = clock;
         grant$0$d = rr$found & (rr$pick == 0);
+        asks$0$d = queues$0$count != zero_count;
+        if (grant$0$q) begin
+            asks$0$d = queues$0$count != one_count;
+        end
+        if (rr$found & (rr$pick == 0)) begin
+            if (grant$0$q) begin
+                if (queues$0$count == two_count) begin
+                    asks$0$d = 1'b0;
+                end
+            end
+            else if (queues$0$count == one_count) begin
+                asks$0$d = 1'b0;
+            end
+        end
         queues$0$pop = grant$0$q;
         if (grant$0$q) begin
             granted = queues$0$data_out;
@@ -310,9 +329,24 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         queues$1$clock = clock;
         queues$1$push = pe_req$1;
         queues$1$data_in = pe_addr$1;
-        rr$request$1 = queues$1$valid & ~(grant$1$q & (queues$1$count == one_count));
+        rr$request$1 = asks$1$q;
+        asks$1$clock = clock;
         grant$1$clock = clock;
         grant$1$d = rr$found & (rr$pick == 1);
+        asks$1$d = queues$1$count != zero_count;
+        if (grant$1$q) begin
+            asks$1$d = queues$1$count != one_count;
+        end
+        if (rr$found & (rr$pick == 1)) begin
+            if (grant$1$q) begin
+                if (queues$1$count == two_count) begin
+                    asks$1$d = 1'b0;
+                end
+            end
+            else if (queues$1$count == one_count) begin
+                asks$1$d = 1'b0;
+            end
+        end
         queues$1$pop = grant$1$q;
         if (grant$1$q) begin
             granted = queues$1$data_out;
@@ -320,9 +354,24 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         queues$2$clock = clock;
         queues$2$push = pe_req$2;
         queues$2$data_in = pe_addr$2;
-        rr$request$2 = queues$2$valid & ~(grant$2$q & (queues$2$count == one_count));
+        rr$request$2 = asks$2$q;
+        asks$2$clock = clock;
         grant$2$clock = clock;
         grant$2$d = rr$found & (rr$pick == 2);
+        asks$2$d = queues$2$count != zero_count;
+        if (grant$2$q) begin
+            asks$2$d = queues$2$count != one_count;
+        end
+        if (rr$found & (rr$pick == 2)) begin
+            if (grant$2$q) begin
+                if (queues$2$count == two_count) begin
+                    asks$2$d = 1'b0;
+                end
+            end
+            else if (queues$2$count == one_count) begin
+                asks$2$d = 1'b0;
+            end
+        end
         queues$2$pop = grant$2$q;
         if (grant$2$q) begin
             granted = queues$2$data_out;
@@ -330,24 +379,36 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         queues$3$clock = clock;
         queues$3$push = pe_req$3;
         queues$3$data_in = pe_addr$3;
-        rr$request$3 = queues$3$valid & ~(grant$3$q & (queues$3$count == one_count));
+        rr$request$3 = asks$3$q;
+        asks$3$clock = clock;
         grant$3$clock = clock;
         grant$3$d = rr$found & (rr$pick == 3);
+        asks$3$d = queues$3$count != zero_count;
+        if (grant$3$q) begin
+            asks$3$d = queues$3$count != one_count;
+        end
+        if (rr$found & (rr$pick == 3)) begin
+            if (grant$3$q) begin
+                if (queues$3$count == two_count) begin
+                    asks$3$d = 1'b0;
+                end
+            end
+            else if (queues$3$count == one_count) begin
+                asks$3$d = 1'b0;
+            end
+        end
         queues$3$pop = grant$3$q;
         if (grant$3$q) begin
             granted = queues$3$data_out;
         end
         grant_any$d = rr$found;
-        grant_pe$d = rr$pick;
-        req_r$d = grant_any$q;
-        addr_r$d = granted;
-        route$push = grant_any$q;
-        route$data_in = grant_pe$q;
-        if (grant_any$q) begin
+        route$push = rr$found;
+        route$data_in = rr$pick;
+        if (rr$found) begin
             count$d = count$q + one;
         end
-        host_req = req_r$q;
-        host_addr = addr_r$q;
+        host_req = grant_any$q;
+        host_addr = granted;
         requests = count$q;
         route$pop = host_valid;
         valid_r$0$clock = clock;
@@ -389,23 +450,80 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
 endmodule // memory_arbiter
 
 
-module memory_arbiter$addr_r(d,q,clock);
+module memory_arbiter$asks$0(d,q,clock);
     
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
     
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 1'h0;
     end
     
     always @(posedge clock) begin
        q <= d;
     end
           
-endmodule // memory_arbiter$addr_r
+endmodule // memory_arbiter$asks$0
+
+
+module memory_arbiter$asks$1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$asks$1
+
+
+module memory_arbiter$asks$2(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$asks$2
+
+
+module memory_arbiter$asks$3(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // memory_arbiter$asks$3
 
 
 module memory_arbiter$ax_r(d,q,clock);
@@ -596,25 +714,6 @@ module memory_arbiter$grant_any(d,q,clock);
     end
           
 endmodule // memory_arbiter$grant_any
-
-
-module memory_arbiter$grant_pe(d,q,clock);
-    
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // memory_arbiter$grant_pe
 
 
 module memory_arbiter$queues$0(clock,push,data_in,pop,valid,data_out,count);
@@ -1883,25 +1982,6 @@ module memory_arbiter$queues$3$lane(clock,write_address,write_data,write_enable,
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // memory_arbiter$queues$3$lane
-
-
-module memory_arbiter$req_r(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // memory_arbiter$req_r
 
 
 module memory_arbiter$route(clock,push,data_in,pop,valid,data_out,count);

@@ -44,6 +44,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
     localparam  depth6 = 6'b100000;
+    localparam  depth_m1_6 = 6'b11111;
     localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
@@ -66,9 +67,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  sh4 = 32'h4;
     localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
-    localparam  sh3 = 32'h3;
-    localparam  sh1_3 = 3'b1;
-    localparam  sh2_3 = 3'b10;
     localparam  c24_6 = 6'b11000;
     localparam  c16_6 = 6'b10000;
     localparam  c8_6 = 6'b1000;
@@ -526,6 +524,30 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  hb_open7$d;
     wire  hb_open7$q;
     reg  hb_open7$clock;
+    reg  f_hi_lt8$d;
+    wire  f_hi_lt8$q;
+    reg  f_hi_lt8$clock;
+    reg  f_hi_eq8$d;
+    wire  f_hi_eq8$q;
+    reg  f_hi_eq8$clock;
+    reg  f_lo_lt8$d;
+    wire  f_lo_lt8$q;
+    reg  f_lo_lt8$clock;
+    reg  l_hi_gt8$d;
+    wire  l_hi_gt8$q;
+    reg  l_hi_gt8$clock;
+    reg  l_hi_eq8$d;
+    wire  l_hi_eq8$q;
+    reg  l_hi_eq8$clock;
+    reg  l_lo_gt8$d;
+    wire  l_lo_gt8$q;
+    reg  l_lo_gt8$clock;
+    reg  ha_open8$d;
+    wire  ha_open8$q;
+    reg  ha_open8$clock;
+    reg  hb_open8$d;
+    wire  hb_open8$q;
+    reg  hb_open8$clock;
     reg  v8$d;
     wire  v8$q;
     reg  v8$clock;
@@ -574,21 +596,9 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  near_b8$d;
     wire  near_b8$q;
     reg  near_b8$clock;
-    reg  e0_8$d;
-    wire  e0_8$q;
-    reg  e0_8$clock;
-    reg  e1_8$d;
-    wire  e1_8$q;
-    reg  e1_8$clock;
-    reg  e2_8$d;
-    wire  e2_8$q;
-    reg  e2_8$clock;
-    reg  e3_8$d;
-    wire  e3_8$q;
-    reg  e3_8$clock;
-    reg  [5:0] clz_n1_7$d;
-    wire  [5:0] clz_n1_7$q;
-    reg  clz_n1_7$clock;
+    reg  [5:0] sp3_8$d;
+    wire  [5:0] sp3_8$q;
+    reg  sp3_8$clock;
     reg  [5:0] clz_n2_7$d;
     wire  [5:0] clz_n2_7$q;
     reg  clz_n2_7$clock;
@@ -601,9 +611,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  back_facing8$d;
     wire  back_facing8$q;
     reg  back_facing8$clock;
-    reg  outside8$d;
-    wire  outside8$q;
-    reg  outside8$clock;
     reg  pass9$d;
     wire  pass9$q;
     reg  pass9$clock;
@@ -721,21 +728,15 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  n_below_e;
     reg  [31:0] side_f_x;
     reg  [31:0] side_l_x;
-    reg  f_lt;
-    reg  l_gt;
-    reg  is_outside;
     reg  [5:0] exp8;
     reg  near8;
-    reg  is_m1;
-    reg  is_m2;
-    reg  is_lo;
-    reg  [4:0] sh5;
+    reg  outside8;
     reg  is_near;
     reg  is_pass;
-    reg  [31:0] absnx32;
-    reg  [31:0] absny32;
-    reg  [2:0] low_nx;
-    reg  [2:0] low_ny;
+    reg  [35:0] wide_x;
+    reg  [35:0] wide_y;
+    reg  [34:0] dividend_x;
+    reg  [34:0] dividend_y;
     reg  [2:0] tag_p;
     reg  [2:0] tag_x;
     reg  [2:0] tag_y;
@@ -1446,6 +1447,46 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(hb_open7$q),
         .clock(hb_open7$clock)
     );
+    screener$f_hi_lt8 f_hi_lt8(
+        .d(f_hi_lt8$d),
+        .q(f_hi_lt8$q),
+        .clock(f_hi_lt8$clock)
+    );
+    screener$f_hi_eq8 f_hi_eq8(
+        .d(f_hi_eq8$d),
+        .q(f_hi_eq8$q),
+        .clock(f_hi_eq8$clock)
+    );
+    screener$f_lo_lt8 f_lo_lt8(
+        .d(f_lo_lt8$d),
+        .q(f_lo_lt8$q),
+        .clock(f_lo_lt8$clock)
+    );
+    screener$l_hi_gt8 l_hi_gt8(
+        .d(l_hi_gt8$d),
+        .q(l_hi_gt8$q),
+        .clock(l_hi_gt8$clock)
+    );
+    screener$l_hi_eq8 l_hi_eq8(
+        .d(l_hi_eq8$d),
+        .q(l_hi_eq8$q),
+        .clock(l_hi_eq8$clock)
+    );
+    screener$l_lo_gt8 l_lo_gt8(
+        .d(l_lo_gt8$d),
+        .q(l_lo_gt8$q),
+        .clock(l_lo_gt8$clock)
+    );
+    screener$ha_open8 ha_open8(
+        .d(ha_open8$d),
+        .q(ha_open8$q),
+        .clock(ha_open8$clock)
+    );
+    screener$hb_open8 hb_open8(
+        .d(hb_open8$d),
+        .q(hb_open8$q),
+        .clock(hb_open8$clock)
+    );
     screener$v8 v8(
         .d(v8$d),
         .q(v8$q),
@@ -1526,30 +1567,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(near_b8$q),
         .clock(near_b8$clock)
     );
-    screener$e0_8 e0_8(
-        .d(e0_8$d),
-        .q(e0_8$q),
-        .clock(e0_8$clock)
-    );
-    screener$e1_8 e1_8(
-        .d(e1_8$d),
-        .q(e1_8$q),
-        .clock(e1_8$clock)
-    );
-    screener$e2_8 e2_8(
-        .d(e2_8$d),
-        .q(e2_8$q),
-        .clock(e2_8$clock)
-    );
-    screener$e3_8 e3_8(
-        .d(e3_8$d),
-        .q(e3_8$q),
-        .clock(e3_8$clock)
-    );
-    screener$clz_n1_7 clz_n1_7(
-        .d(clz_n1_7$d),
-        .q(clz_n1_7$q),
-        .clock(clz_n1_7$clock)
+    screener$sp3_8 sp3_8(
+        .d(sp3_8$d),
+        .q(sp3_8$q),
+        .clock(sp3_8$clock)
     );
     screener$clz_n2_7 clz_n2_7(
         .d(clz_n2_7$d),
@@ -1570,11 +1591,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(back_facing8$d),
         .q(back_facing8$q),
         .clock(back_facing8$clock)
-    );
-    screener$outside8 outside8(
-        .d(outside8$d),
-        .q(outside8$q),
-        .clock(outside8$clock)
     );
     screener$pass9 pass9(
         .d(pass9$d),
@@ -1770,16 +1786,19 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         below8$clock = clock;
         near_a8$clock = clock;
         near_b8$clock = clock;
-        e0_8$clock = clock;
-        e1_8$clock = clock;
-        e2_8$clock = clock;
-        e3_8$clock = clock;
-        clz_n1_7$clock = clock;
+        sp3_8$clock = clock;
         clz_n2_7$clock = clock;
         clz_n3_7$clock = clock;
         backward8$clock = clock;
         back_facing8$clock = clock;
-        outside8$clock = clock;
+        f_hi_lt8$clock = clock;
+        f_hi_eq8$clock = clock;
+        f_lo_lt8$clock = clock;
+        l_hi_gt8$clock = clock;
+        l_hi_eq8$clock = clock;
+        l_lo_gt8$clock = clock;
+        ha_open8$clock = clock;
+        hb_open8$clock = clock;
         pass9$clock = clock;
         backward9$clock = clock;
         back_facing9$clock = clock;
@@ -1917,16 +1936,19 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         below8$d = below8$q;
         near_a8$d = near_a8$q;
         near_b8$d = near_b8$q;
-        e0_8$d = e0_8$q;
-        e1_8$d = e1_8$q;
-        e2_8$d = e2_8$q;
-        e3_8$d = e3_8$q;
-        clz_n1_7$d = clz_n1_7$q;
+        sp3_8$d = sp3_8$q;
         clz_n2_7$d = clz_n2_7$q;
         clz_n3_7$d = clz_n3_7$q;
         backward8$d = backward8$q;
         back_facing8$d = back_facing8$q;
-        outside8$d = outside8$q;
+        f_hi_lt8$d = f_hi_lt8$q;
+        f_hi_eq8$d = f_hi_eq8$q;
+        f_lo_lt8$d = f_lo_lt8$q;
+        l_hi_gt8$d = l_hi_gt8$q;
+        l_hi_eq8$d = l_hi_eq8$q;
+        l_lo_gt8$d = l_lo_gt8$q;
+        ha_open8$d = ha_open8$q;
+        hb_open8$d = hb_open8$q;
         pass9$d = pass9$q;
         backward9$d = backward9$q;
         back_facing9$d = back_facing9$q;
@@ -2190,7 +2212,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         negy7$d = negy6$q;
         k7$d = k6$q;
         clz_n7$d = clz_n6$q;
-        clz_n1_7$d = clz_n6$q + c1_6;
         clz_n2_7$d = clz_n6$q + c2_6;
         clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
@@ -2210,9 +2231,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
-        f_lt = (side_f_x[(32'h10)+:(16)] < thr_f_hi) | ((side_f_x[(32'h10)+:(16)] == thr_f_hi) & (side_f_x[(32'h0)+:(16)] < thr_f_lo));
-        l_gt = (side_l_x[(32'h10)+:(16)] > thr_l_hi) | ((side_l_x[(32'h10)+:(16)] == thr_l_hi) & (side_l_x[(32'h0)+:(16)] > thr_l_lo));
-        is_outside = (hb_open7$q & f_lt) | (ha_open7$q & l_gt);
+        f_hi_lt8$d = side_f_x[(32'h10)+:(16)] < thr_f_hi;
+        f_hi_eq8$d = side_f_x[(32'h10)+:(16)] == thr_f_hi;
+        f_lo_lt8$d = side_f_x[(32'h0)+:(16)] < thr_f_lo;
+        l_hi_gt8$d = side_l_x[(32'h10)+:(16)] > thr_l_hi;
+        l_hi_eq8$d = side_l_x[(32'h10)+:(16)] == thr_l_hi;
+        l_lo_gt8$d = side_l_x[(32'h0)+:(16)] > thr_l_lo;
+        ha_open8$d = ha_open7$q;
+        hb_open8$d = hb_open7$q;
         v8$d = v7$q;
         id8$d = id7$q;
         ax8$d = ax7$q;
@@ -2226,38 +2252,28 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
-        outside8$d = is_outside;
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        e0_8$d = clz_n7$q == clz_e7$q;
-        e1_8$d = clz_n1_7$q == clz_e7$q;
-        e2_8$d = clz_n2_7$q == clz_e7$q;
-        e3_8$d = clz_n3_7$q == clz_e7$q;
+        sp3_8$d = clz_n3_7$q - clz_e7$q;
         near_a8$d = clz_n3_7$q < clz_e7$q;
         near_b8$d = clz_n2_7$q < clz_e7$q;
+        outside8 = (hb_open8$q & (f_hi_lt8$q | (f_hi_eq8$q & f_lo_lt8$q))) | (ha_open8$q & (l_hi_gt8$q | (l_hi_eq8$q & l_lo_gt8$q)));
         exp8 = s0_m1_8$q;
         if (below8$q) begin
             exp8 = s0_8$q;
         end
-        sh5 = exp8[(32'h0)+:(5)];
         near8 = near_b8$q;
-        is_m1 = e0_8$q;
-        is_m2 = e1_8$q;
-        is_lo = e2_8$q;
         if (below8$q) begin
             near8 = near_a8$q;
-            is_m1 = e1_8$q;
-            is_m2 = e2_8$q;
-            is_lo = e3_8$q;
         end
-        is_near = ~backward8$q & ~back_facing8$q & ~outside8$q & near8;
-        is_pass = ~backward8$q & ~back_facing8$q & ~outside8$q & ~is_near;
+        is_near = ~backward8$q & ~back_facing8$q & ~outside8 & near8;
+        is_pass = ~backward8$q & ~back_facing8$q & ~outside8 & ~is_near;
         reserve = v8$q;
         pass9$d = v8$q & is_pass;
         backward9$d = v8$q & backward8$q;
         back_facing9$d = v8$q & back_facing8$q;
-        outside9$d = v8$q & outside8$q;
+        outside9$d = v8$q & outside8;
         near9$d = v8$q & is_near;
         if (pass9$q) begin
             c_passed$d = c_passed$q + one32;
@@ -2279,32 +2295,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        absnx32 = ((absnx8$q) & 32'hffffffff);
-        absny32 = ((absny8$q) & 32'hffffffff);
-        low_nx = absnx8$q[(32'h0)+:(3)];
-        low_ny = absny8$q[(32'h0)+:(3)];
-        divider$rx = absnx32 << sh5;
-        divider$ry = absny32 << sh5;
-        divider$fx = zero3;
-        divider$fy = zero3;
-        if (is_m1) begin
-            divider$rx = absnx32 >> sh1;
-            divider$ry = absny32 >> sh1;
-            divider$fx = low_nx << sh2_3;
-            divider$fy = low_ny << sh2_3;
+        wide_x = ((absnx8$q) & 36'hfffffffff) << sp3_8$q;
+        wide_y = ((absny8$q) & 36'hfffffffff) << sp3_8$q;
+        dividend_x = wide_x[(32'h1)+:(35)];
+        dividend_y = wide_y[(32'h1)+:(35)];
+        if (below8$q) begin
+            dividend_x = wide_x[(32'h0)+:(35)];
+            dividend_y = wide_y[(32'h0)+:(35)];
         end
-        else if (is_m2) begin
-            divider$rx = absnx32 >> sh2;
-            divider$ry = absny32 >> sh2;
-            divider$fx = low_nx << sh1_3;
-            divider$fy = low_ny << sh1_3;
-        end
-        else if (is_lo) begin
-            divider$rx = absnx32 >> sh3;
-            divider$ry = absny32 >> sh3;
-            divider$fx = low_nx;
-            divider$fy = low_ny;
-        end
+        divider$rx = dividend_x[(32'h3)+:(32)];
+        divider$ry = dividend_y[(32'h3)+:(32)];
+        divider$fx = dividend_x[(32'h0)+:(3)];
+        divider$fy = dividend_y[(32'h0)+:(3)];
         divider$k = k8$q;
         tag_p = zero3;
         if (reserve) begin
@@ -2399,7 +2401,13 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
             used_next = used_dec;
         end
         used$d = used_next;
-        full$d = used_next == depth6;
+        full$d = full$q;
+        if (take & ~pop) begin
+            full$d = used$q == depth_m1_6;
+        end
+        if (~take & pop) begin
+            full$d = 1'b0;
+        end
     end
     
 endmodule // screener
@@ -3602,25 +3610,6 @@ module screener$clz_e7(d,q,clock);
 endmodule // screener$clz_e7
 
 
-module screener$clz_n1_7(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$clz_n1_7
-
-
 module screener$clz_n2_7(d,q,clock);
     
     // Module arguments
@@ -3823,7 +3812,7 @@ module screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_out);
 endmodule // screener$divider
 
 
-module screener$e0_8(d,q,clock);
+module screener$f_hi_eq8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3839,10 +3828,10 @@ module screener$e0_8(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$e0_8
+endmodule // screener$f_hi_eq8
 
 
-module screener$e1_8(d,q,clock);
+module screener$f_hi_lt8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3858,10 +3847,10 @@ module screener$e1_8(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$e1_8
+endmodule // screener$f_hi_lt8
 
 
-module screener$e2_8(d,q,clock);
+module screener$f_lo_lt8(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -3877,26 +3866,7 @@ module screener$e2_8(d,q,clock);
        q <= d;
     end
           
-endmodule // screener$e2_8
-
-
-module screener$e3_8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$e3_8
+endmodule // screener$f_lo_lt8
 
 
 module screener$fifo(clock,push,pop,tail_address,head_address,next_address,valid,count);
@@ -4154,6 +4124,25 @@ module screener$ha_open7(d,q,clock);
 endmodule // screener$ha_open7
 
 
+module screener$ha_open8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$ha_open8
+
+
 module screener$hb6(d,q,clock);
     
     // Module arguments
@@ -4190,6 +4179,25 @@ module screener$hb_open7(d,q,clock);
     end
           
 endmodule // screener$hb_open7
+
+
+module screener$hb_open8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$hb_open8
 
 
 module screener$id1(d,q,clock);
@@ -4437,6 +4445,63 @@ module screener$k_nonpos6(d,q,clock);
     end
           
 endmodule // screener$k_nonpos6
+
+
+module screener$l_hi_eq8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$l_hi_eq8
+
+
+module screener$l_hi_gt8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$l_hi_gt8
+
+
+module screener$l_lo_gt8(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$l_lo_gt8
 
 
 module screener$lane_ax(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -6255,25 +6320,6 @@ module screener$normal_ya2(d,q,clock);
 endmodule // screener$normal_ya2
 
 
-module screener$outside8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$outside8
-
-
 module screener$outside9(d,q,clock);
     
     // Module arguments
@@ -6595,6 +6641,25 @@ module screener$side_l7(d,q,clock);
     end
           
 endmodule // screener$side_l7
+
+
+module screener$sp3_8(d,q,clock);
+    
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // screener$sp3_8
 
 
 module screener$used(d,q,clock);

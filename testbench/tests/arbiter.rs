@@ -26,7 +26,7 @@ fn patch(i: u16) -> [i32; 4] {
 #[derive(Debug, Default)]
 struct Seen {
     answers: Vec<usize>,
-    /// The most clocks a request asking for a turn saw granted to other PEs.
+    /// The most clocks a request at the head of its queue saw granted to other PEs.
     max_wait: u64,
 }
 
@@ -86,7 +86,7 @@ fn run<const N: usize>(
             }
             seen.answers[pe] += 1;
         }
-        let heads: [bool; N] = std::array::from_fn(|i| model.asking(i));
+        let heads: [bool; N] = std::array::from_fn(|i| model.head_valid(i));
         for i in 0..N {
             if let Some(id) = requests[i] {
                 outstanding[i].push_back(id);
@@ -95,7 +95,7 @@ fn run<const N: usize>(
         let presented = answer.map(|a| a.map(|v| v as u32));
         answer = memory.cycle(got.host)?;
         let grant = model.step(&requests, presented).map_err(|e| fail(c, e))?;
-        // A request asking for a turn waits each clock another PE is granted.
+        // A request at the head of its queue waits each clock another PE is granted.
         for i in (0..N).filter(|&i| heads[i]) {
             waiting[i] = if grant == Some(i) { 0 } else { waiting[i] + 1 };
             seen.max_wait = seen.max_wait.max(waiting[i]);

@@ -1541,7 +1541,8 @@ impl Logic for Screener {
         // patch takes the next slot of the output FIFO and enters the divider.
         self.outside8.next = (self.hb_open8.q.val()
             & (self.f_hi_lt8.q.val() | (self.f_hi_eq8.q.val() & self.f_lo_lt8.q.val())))
-            | (self.ha_open8.q.val() & (self.l_hi_gt8.q.val() | (self.l_hi_eq8.q.val() & self.l_lo_gt8.q.val())));
+            | (self.ha_open8.q.val()
+                & (self.l_hi_gt8.q.val() | (self.l_hi_eq8.q.val() & self.l_lo_gt8.q.val())));
         self.exp8.next = self.s0_m1_8.q.val();
         if self.below8.q.val() {
             self.exp8.next = self.s0_8.q.val();
@@ -1553,10 +1554,8 @@ impl Logic for Screener {
         }
         self.is_near.next =
             !self.backward8.q.val() & !self.back_facing8.q.val() & !self.outside8.val() & self.near8.val();
-        self.is_pass.next = !self.backward8.q.val()
-            & !self.back_facing8.q.val()
-            & !self.outside8.val()
-            & !self.is_near.val();
+        self.is_pass.next =
+            !self.backward8.q.val() & !self.back_facing8.q.val() & !self.outside8.val() & !self.is_near.val();
         self.reserve.next = self.v8.q.val();
         self.pass9.d.next = self.v8.q.val() & self.is_pass.val();
         self.backward9.d.next = self.v8.q.val() & self.backward8.q.val();
