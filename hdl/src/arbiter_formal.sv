@@ -43,8 +43,8 @@ module arbiter_formal (
 );
     localparam N = 4;
     // Cycles a PE's waiting request may go without one of its requests at the host: N - 1
-    // other PEs' turns, the clock into its queue's head register and the clock into the host
-    // request register.
+    // other PEs' turns, the clock into its queue's head register and the clock into the grant
+    // register (whose queue's head is on the host port).
     localparam WAIT = N + 1;
 
     wire [15:0] addr [0:N-1];
