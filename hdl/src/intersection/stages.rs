@@ -300,9 +300,10 @@ struct IssueRegs {
 /// `cur` (11), `v1`, `tag1` (33), `mark1`, `o_ax` … `o_wy` (18 each).
 ///
 /// Registers: `remaining` (rays of the current patch still to issue), `full` (`remaining > 1`:
-/// no patch can be taken), `issue` (`remaining ≠ 0`: after an issue, `full` before it), `cur` (the ray issued in this clock while `remaining ≠ 0`), the
-/// current patch `p_*` and stage 1: `v1` (a ray of a test job was issued in the clock before),
-/// `tag1` = `{ray (32…22), sh (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
+/// no patch can be taken), `issue` (`remaining ≠ 0`: after an issue, `full` before it), `cur`
+/// (the ray issued in this clock while `remaining ≠ 0`), the current patch `p_*` and stage 1:
+/// `v1` (a ray of a test job was issued in the clock before), `tag1` = `{ray (32…22), sh
+/// (21…16), id (15…0)}` and the patch operands `o_*` of that ray. A
 /// patch is taken at the rising edge when `patch_valid && !full`; otherwise a ray issues when
 /// `remaining ≠ 0` (`remaining` counts down, `cur` up, its low 10 bits modulo 1024: a range
 /// stays in its half). A retire of no rays is a **marker**: its take sets `mark1` for one clock,
