@@ -119,9 +119,10 @@
 //! Resources (`cargo xtask fpga --blocks intersection_unit --families ecp5`: Yosys `synth_ecp5`
 //! with `SHELLING_ECP5`, nextpnr-ecp5 on the LFE5U-85F-6, seed 1): 6 `MULT18X18D` (with their
 //! input and output registers), 12 `DP16KD` (directions 4, and per half live bits 1, keys 2,
-//! valid + id 1, all with the output register), 1389 LUT4s and 1081 flip-flops; over placement
-//! seeds 1–5 a median of 164.0 MHz (159.8–172.7; `hdl/fpga/ecp5.md`; 163.5, 156.3–172.9, with
-//! one half). With the key's lower half and the id combined before their register the median
+//! valid + id 1, all with the output register), 1355 LUT4s and 1082 flip-flops; over placement
+//! seeds 1–5 a median of 168.8 MHz (160.6–170.1; `hdl/fpga/ecp5.md`; 164.0, 159.8–172.7,
+//! before the sequencer kept `remaining ≠ 0` in a register; 163.5, 156.3–172.9, with one
+//! half). With the key's lower half and the id combined before their register the median
 //! was 137.6 MHz (123.7–157.5). In the whole PE the merge's write enable, from the forwarding
 //! choice (`m1`) to a ray-memory tile placed far off, was the critical path at one seed of five
 //! (7.13 ns).

@@ -109,12 +109,13 @@
 //! counters count a registered verdict; and `in_ready` is a register (`!full`). The multipliers
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
-//! median of 152.9 MHz (150.6–160.7; 155.1, 150.4–165.4, before the divider signed `W`
-//! itself; 158.6, 150.0–163.6, before the normal was read in stage
-//! 1 only, for the processing element's banks; 150.4 before stage 7 registered the exponent's
-//! flags and split the outside compare, 125 at seed 1 before the DSP registers;
-//! `hdl/fpga/ecp5.md`; not yet measured with the outside compare's halves registered and the
-//! dividend's single shifter).
+//! median of 160.6 MHz (151.2–169.0; `hdl/fpga/ecp5.md`; 152.9, 150.6–160.7, before the
+//! outside compare's halves were registered and the dividend formed by one shifter; 155.1,
+//! 150.4–165.4, before the divider signed `W` itself; 158.6, 150.0–163.6, before the normal was
+//! read in stage 1 only, for the processing element's banks; 150.4 before stage 7 registered
+//! the exponent's flags and split the outside compare, 125 at seed 1 before the DSP
+//! registers). Its critical paths now: a divider step's subtraction into the next remainder or
+//! quotient bit (seeds 1–3), the shift amount `sp3_8` into the divider's input (4, 5).
 //!
 //! A screened-out patch goes the same way and leaves with `out_pass` low: every patch leaves in
 //! acceptance order with its verdict, so a consumer that pairs patches with other information
@@ -147,8 +148,8 @@
 //! [`model::screen`] is the bit-true model of every verdict and setup; [`model::accept_cycles`],
 //! [`model::output_cycles`] and [`model::unstalled_cycles`] give the exact timing of an
 //! unstalled stream. Resources (Yosys `synth_ecp5`): 10 `MULT18X18D`, 144 `TRELLIS_DPR16X4` (the
-//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5664 LUT4s (LUT RAM
-//! included) and 4286 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
+//! FIFO, its LUT RAM twice for the two reads), and in nextpnr's count 5532 LUT4s (LUT RAM
+//! included) and 4289 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
 use crate::formats::{cross, dot, PatchSetup, SECTOR_MARGIN, SH_MAX, SH_MIN};
