@@ -7,6 +7,13 @@
 //! An edge is a few microseconds of work, far less than waking a sleeping thread, so the worker
 //! spins on an atomic generation counter while edges come; when none has come for a while (the
 //! host between runs) it parks until the next, a millisecond at most.
+//!
+//! That pays only while the two threads have a core each. When the cores are busy with other
+//! work (another machine run, a synthesis beside it), the thread that finishes its half first
+//! waits for the other to be scheduled again, milliseconds an edge: two runs side by side on two
+//! cores took 26 times as long as one after the other. So the caller watches its waits
+//! ([`Pacer`]): when more than one edge in 32 of a window outlasted its spin, it steps every PE
+//! itself for the next [`Pacer::ALONE`] edges (about a second), then tries two threads again.
 
 use crate::pe_sim::{PeInputs, PeSim};
 use crate::{Error, Result};
@@ -41,7 +48,55 @@ pub struct Lockstep<S> {
     shared: Arc<Shared>,
     thread: Option<JoinHandle<()>>,
     edge: u64,
+    pacer: Pacer,
     _sims: PhantomData<fn(S)>,
+}
+
+/// Whether the next edge is stepped on two threads or on the caller's alone, from how long the
+/// caller waited for the worker at the last edges (see the [module documentation](self)).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Pacer {
+    /// Edges of the current window on two threads, and those of them the caller waited out.
+    edges: u32,
+    late: u32,
+    /// Edges left to step alone.
+    alone: u32,
+    /// Edges stepped on two threads and alone since the start.
+    pub threaded_edges: u64,
+    pub alone_edges: u64,
+}
+
+impl Pacer {
+    /// Edges of one window on two threads.
+    pub const WINDOW: u32 = 1 << 10;
+    /// Waited-out edges in a window past which the caller steps alone.
+    pub const LATE: u32 = Self::WINDOW / 32;
+    /// Edges stepped alone before two threads are tried again (about a second of a machine).
+    pub const ALONE: u32 = 1 << 18;
+
+    /// Whether the coming edge goes on two threads.
+    pub fn threaded(&self) -> bool {
+        self.alone == 0
+    }
+
+    /// An edge was stepped: alone, or on two threads with the caller waiting past its spin
+    /// (`late`) or not.
+    pub fn stepped(&mut self, late: bool) {
+        if self.alone > 0 {
+            self.alone -= 1;
+            self.alone_edges += 1;
+            return;
+        }
+        self.threaded_edges += 1;
+        self.edges += 1;
+        self.late += u32::from(late);
+        if self.late > Self::LATE {
+            self.alone = Self::ALONE;
+        }
+        if self.late > Self::LATE || self.edges == Self::WINDOW {
+            (self.edges, self.late) = (0, 0);
+        }
+    }
 }
 
 impl<S: PeSim + Send + 'static> Lockstep<S> {
@@ -55,7 +110,7 @@ impl<S: PeSim + Send + 'static> Lockstep<S> {
         let theirs = Arc::clone(&shared);
         let thread =
             std::thread::Builder::new().name("pe-lockstep".into()).spawn(move || work::<S>(&theirs)).ok()?;
-        Some(Self { shared, thread: Some(thread), edge: 0, _sims: PhantomData })
+        Some(Self { shared, thread: Some(thread), edge: 0, pacer: Pacer::default(), _sims: PhantomData })
     }
 }
 
@@ -64,6 +119,10 @@ impl<S: PeSim> Lockstep<S> {
     /// edge, [`PeSim::cycle`]). The first error of either half is returned, after both are done.
     pub fn cycle(&mut self, sims: &mut [S], inputs: &[PeInputs]) -> Result<()> {
         assert_eq!(sims.len(), inputs.len(), "one set of inputs a PE");
+        if !self.pacer.threaded() {
+            self.pacer.stepped(false);
+            return sims.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i));
+        }
         let half = sims.len() / 2;
         let (front, back) = sims.split_at_mut(half);
         let s = &self.shared;
@@ -86,9 +145,17 @@ impl<S: PeSim> Lockstep<S> {
                 std::thread::yield_now();
             }
         }
+        self.pacer.stepped(spins == SPINS);
         let theirs = s.error.lock().map_or(None, |mut e| e.take());
         mine?;
         theirs.map_or(Ok(()), Err)
+    }
+}
+
+impl<S> Lockstep<S> {
+    /// How the edges so far were stepped.
+    pub fn pacer(&self) -> &Pacer {
+        &self.pacer
     }
 }
 
@@ -149,5 +216,43 @@ impl<S> Drop for Lockstep<S> {
             t.thread().unpark();
             let _ = t.join();
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Pacer;
+
+    /// Feeds `n` edges, every `every`-th of them waited out (none if 0).
+    fn feed(p: &mut Pacer, n: u32, every: u32) {
+        for i in 0..n {
+            p.stepped(every != 0 && i % every == 0);
+        }
+    }
+
+    #[test]
+    fn the_pacer_keeps_two_threads_while_the_waits_are_rare() {
+        let mut p = Pacer::default();
+        // One wait in 64 edges: half the threshold, window after window.
+        feed(&mut p, 16 * Pacer::WINDOW, 64);
+        assert!(p.threaded());
+        assert_eq!((p.threaded_edges, p.alone_edges), (16 * u64::from(Pacer::WINDOW), 0));
+    }
+
+    #[test]
+    fn the_pacer_steps_alone_for_a_while_when_the_waits_are_many_then_tries_again() {
+        let mut p = Pacer::default();
+        // Every fourth edge waited out, the first included: over the threshold at the last edge.
+        feed(&mut p, 4 * Pacer::LATE + 1, 4);
+        assert!(!p.threaded(), "{p:?}");
+        let threaded = p.threaded_edges;
+        assert_eq!(threaded, u64::from(4 * Pacer::LATE + 1));
+        // Alone for ALONE edges, whatever they report, then two threads again.
+        feed(&mut p, Pacer::ALONE, 1);
+        assert!(p.threaded(), "{p:?}");
+        assert_eq!((p.threaded_edges, p.alone_edges), (threaded, u64::from(Pacer::ALONE)));
+        // And the window starts afresh: the waits before stepping alone do not count.
+        feed(&mut p, Pacer::WINDOW, 0);
+        assert!(p.threaded());
     }
 }
