@@ -191,9 +191,10 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
         })
         .collect::<Result<_>>()?;
     // One run at a time: a compiled machine steps its PEs on two threads (`Composed::threaded`,
-    // its helper spinning between edges), so runs side by side oversubscribe the cores. On two
-    // cores two runs at once took 26 times as long as one after the other (34.2 s against
-    // 1.3 s for `--lengths 32 --sources 16 --pes 1,8 --tc 16 --caches 128`).
+    // its helper spinning between edges), so runs side by side oversubscribe the cores, and
+    // each then steps its PEs on one thread (the lockstep's `Pacer`): on two cores, two
+    // processes of `--lengths 32 --sources 16 --pes 1,8 --tc 16 --caches 128` side by side took
+    // 4.4 s, one alone 2.1 s (78.8 s side by side before the pacer).
     let runs: Vec<MachineRun> = jobs
         .iter()
         .enumerate()
