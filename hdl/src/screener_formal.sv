@@ -94,7 +94,8 @@ module screener_formal (
     wire [5:0]  out_sh;
     wire [31:0] passed, backward, back_facing, outside, near;
     // Internal state, exposed by screener.sby for the induction (not ports of the exported
-    // module): the stage valid bits and ids, the screens' registers of stages 7 and 8, the
+    // module): the stage valid bits and ids, the screens' registers of stages 7 and 8 (the
+    // outside screen's gates `ha_open`, `hb_open`, and its verdict of stage 8, a wire), the
     // divider's tag pipeline (3 bits per stage, bit 0: a slot to complete), the verdict flags of
     // stage 9 (what is counted), the credit and FIFO
     // counters and pointers (done, fill_ptr, rd_ptr and rd_inc_x, rd_ptr + 1 with bit 0
@@ -102,6 +103,7 @@ module screener_formal (
     // `prim::FifoControl`), and the output FIFO's lanes.
     wire        v1, v2, v3, v4, v5, v6, v7, v8;
     wire        backward7, back_facing7, backward8, back_facing8, outside8;
+    wire        ha_open7, hb_open7, ha_open8, hb_open8;
     wire        pass9, backward9, back_facing9, outside9, near9;
     wire [15:0] id1, id2, id3, id4, id5, id6, id7, id8;
     wire [53:0] tgp;
@@ -128,7 +130,8 @@ module screener_formal (
         .id1$q(id1), .id2$q(id2), .id3$q(id3), .id4$q(id4), .id5$q(id5), .id6$q(id6),
         .id7$q(id7), .id8$q(id8),
         .backward7$q(backward7), .back_facing7$q(back_facing7),
-        .backward8$q(backward8), .back_facing8$q(back_facing8), .outside8$q(outside8),
+        .backward8$q(backward8), .back_facing8$q(back_facing8), .outside8(outside8),
+        .ha_open7$q(ha_open7), .hb_open7$q(hb_open7), .ha_open8$q(ha_open8), .hb_open8$q(hb_open8),
         .pass9$q(pass9), .backward9$q(backward9), .back_facing9$q(back_facing9),
         .outside9$q(outside9), .near9$q(near9),
         .divider_tgp(tgp), .used$q(used), .fifo_words_q(done),
@@ -287,7 +290,10 @@ module screener_formal (
                          && v5 == f_sr[5] && v6 == f_sr[6] && v7 == f_sr[7] && v8 == f_sr[8]);
         i_tags: assert(f_tags == f_sr[VERDICT_LATENCY + DIV_LATENCY:VERDICT_LATENCY + 1]);
         // At most one screen's register is set in each stage (the verdict is one of five).
-        // (The outside screen is decided in stage 7, from the other two's registers.)
+        // (The outside screen is decided in stage 8 from its compares and its gates, which
+        // stage 7 opens only for a patch neither backward nor back-facing: i_open.)
+        i_open: assert(!((backward7 || back_facing7) && (ha_open7 || hb_open7))
+                       && !((backward8 || back_facing8) && (ha_open8 || hb_open8)));
         i_verdict: assert(!(backward7 && back_facing7)
                           && !(backward8 && back_facing8) && !(backward8 && outside8)
                           && !(back_facing8 && outside8));
