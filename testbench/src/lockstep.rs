@@ -11,9 +11,10 @@
 //! That pays only while the two threads have a core each. When the cores are busy with other
 //! work (another machine run, a synthesis beside it), the thread that finishes its half first
 //! waits for the other to be scheduled again, milliseconds an edge: two `machine-figures` runs
-//! side by side on two cores took 78.8 s where one alone takes 2.1 s. So the caller watches its waits
-//! ([`Pacer`]): when more than one edge in 32 of a window outlasted its spin, it steps every PE
-//! itself for the next [`Pacer::ALONE`] edges (about a second), then tries two threads again.
+//! side by side on two cores took 78.8 s where one alone takes 2.1 s. So the caller watches its
+//! waits ([`Pacer`]): when more than one edge in 32 of a window outlasted its spin, it steps
+//! every PE itself for the next [`Pacer::ALONE`] edges (about a second), then tries two threads
+//! again.
 
 use crate::pe_sim::{PeInputs, PeSim};
 use crate::{Error, Result};
