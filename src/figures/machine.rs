@@ -194,7 +194,7 @@ pub fn run(o: &MachineFigureOptions) -> Result<Vec<MachineRow>> {
     // its helper spinning between edges), so runs side by side oversubscribe the cores, and
     // each then steps its PEs on one thread (the lockstep's `Pacer`): on two cores, two
     // processes of `--lengths 32 --sources 16 --pes 1,8 --tc 16 --caches 128` side by side took
-    // 4.4 s, one alone 2.1 s (78.8 s side by side before the pacer).
+    // 7.3 s, one alone 2.3 s (78.8 s side by side before the pacer).
     let runs: Vec<MachineRun> = jobs
         .iter()
         .enumerate()
