@@ -130,7 +130,7 @@ impl<S: PeSim> Lockstep<S> {
         assert_eq!(sims.len(), inputs.len(), "one set of inputs a PE");
         if !self.pacer.threaded() {
             self.pacer.stepped(false);
-            return sims.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i));
+            return step(sims, inputs);
         }
         let half = sims.len() / 2;
         let (front, back) = sims.split_at_mut(half);
@@ -143,7 +143,7 @@ impl<S: PeSim> Lockstep<S> {
         if let Some(t) = &self.thread {
             t.thread().unpark();
         }
-        let mine = front.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i));
+        let mine = step(front, inputs);
         // The back half is borrowed until the worker has taken this edge.
         let mut spins = 0u32;
         while s.done.load(Ordering::Acquire) != self.edge {
@@ -166,6 +166,11 @@ impl<S> Lockstep<S> {
     pub fn pacer(&self) -> &Pacer {
         &self.pacer
     }
+}
+
+/// One clock edge of each simulator on the calling thread: `sims[p]` takes `inputs[p]`.
+pub fn step<S: PeSim>(sims: &mut [S], inputs: &[PeInputs]) -> Result<()> {
+    sims.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i))
 }
 
 /// The worker: each edge raised, the back half's cycles; parks when edges stop coming.
@@ -202,7 +207,7 @@ fn work<S: PeSim + Send>(s: &Shared) {
                     std::slice::from_raw_parts(inputs as *const PeInputs, n),
                 )
             };
-            sims.iter_mut().zip(inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i))
+            step(sims, inputs)
         }));
         let failed = match stepped {
             Ok(r) => r.err(),

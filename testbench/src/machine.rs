@@ -24,7 +24,7 @@
 //! the other PEs do: one PE's setup and readout overlap the others' commands, and no PE waits
 //! for another's source to end.
 
-use crate::lockstep::Lockstep;
+use crate::lockstep::{self, Lockstep};
 use crate::memory::HostMemory;
 use crate::pe::{
     counters, counts_since, CacheConfig, Command, CommandHost, PeCounters, PeSetup, PE_RAY_MEMORY,
@@ -89,7 +89,8 @@ impl<S: PeSim> Composed<S> {
 
 impl<S: PeSim + Send + 'static> Composed<S> {
     /// As [`Composed::new`], the PEs stepped on two threads ([`Lockstep`]) where the system has
-    /// two cores and the machine two PEs; the same cycles and results either way.
+    /// two cores and the machine two PEs, on one while the cores are busy elsewhere (its
+    /// [`Pacer`](crate::lockstep::Pacer)); the same cycles and results either way.
     pub fn threaded(sims: Vec<S>) -> Result<Self> {
         let mut m = Self::new(sims)?;
         if m.sims.len() >= 2 {
@@ -154,7 +155,7 @@ impl<S: PeSim> MachineSim for Composed<S> {
             .map_err(|e| Error::new(format!("arbiter: {e}")))?;
         match &mut self.lockstep {
             Some(l) => l.cycle(&mut self.sims, &self.inputs),
-            None => self.sims.iter_mut().zip(&self.inputs).try_for_each(|(sim, &i)| sim.cycle(|x| *x = i)),
+            None => lockstep::step(&mut self.sims, &self.inputs),
         }
     }
 }
