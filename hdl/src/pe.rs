@@ -54,8 +54,8 @@
 //! cycles after its request, and a miss does not hold the requests behind it (up to four misses
 //! at the host at once; the answers in request order).
 //!
-//! Every command accepted writes a **tag** (retire flag, first, count) into a [`TAG_DEPTH`]-entry
-//! FIFO in LUT RAM; a job also hands its id to the [`PatchLoader`]. The loader's patches go
+//! Every command accepted writes a **tag** (first, count in LUT RAM, and whether it is a job's or
+//! a retire's in a register of each slot) into a [`TAG_DEPTH`]-entry FIFO; a job also hands its id to the [`PatchLoader`]. The loader's patches go
 //! through the [`Screener`], which reports every patch in order, passed or not (`out_pass`). The
 //! **merger** at the intersection unit's input pairs the oldest tag with what it waits for: a
 //! retire goes straight to the [`IntersectionUnit`] as a retire job; a job waits for its patch's
@@ -64,9 +64,11 @@
 //! A [`PatchSlice`] (two entries, `in_ready` a register) sits between the screener and the
 //! merger and a [`JobQueue`] between the merger and the unit: every input of the merger is a
 //! register, and the unit's `patch_ready` reaches only the queue, never the screener's output
-//! FIFO or the tag FIFO. The tag FIFO (a [`Fifo`]) reads its
+//! FIFO or the tag FIFO. The tag FIFO (a [`FifoControl`] over one [`FifoRam`] lane) reads its
 //! head and the entry after it every cycle, so that no RAM address depends on the merger's pop
-//! either.
+//! either, and keeps whether its head is a job's in a register (`head_job`, set from the slot
+//! kinds of the head and the entry after it), so that the merger's decisions are one gate of
+//! registers.
 //!
 //! **The job queue.** The second slice is a 16-entry [`JobQueue`] (LUT RAM): the merger pushes
 //! passed jobs and retires into it and drops screened-out patches, and so runs up to sixteen
@@ -131,7 +133,7 @@
 use crate::cache::{PatchCache, CACHE_BITS};
 use crate::intersection::IntersectionUnit;
 use crate::loader::PatchLoader;
-use crate::prim::{Fifo, FifoControl, FifoRam};
+use crate::prim::{FifoControl, FifoRam};
 use crate::queue::JobQueue;
 use crate::screener::Screener;
 use crate::slice::PatchSlice;
@@ -141,9 +143,10 @@ use rust_hdl::prelude::*;
 pub const TAG_BITS: usize = 6;
 /// Commands the PE holds between acceptance and the intersection unit.
 pub const TAG_DEPTH: usize = 1 << TAG_BITS;
-/// A tag: retire flag (bit 22), first ray (bits 11..21), count (bits 0..10). (The update
+/// A tag's first ray (bits 11..21) and count (bits 0..10), in the tag FIFO's lane (a retire
+/// is marked in `tag_jobs`, a register of each slot). (The update
 /// function spells these bit positions as literals: the Verilog generator copies expressions.)
-const TAG_WIDTH: usize = 23;
+const TAG_WIDTH: usize = 22;
 
 /// The processing element (see the [module documentation](self)).
 #[derive(LogicBlock)]
@@ -210,13 +213,25 @@ pub struct ProcessingElement {
     queue: JobQueue,
     screener: Screener,
     unit: IntersectionUnit,
-    // The tag FIFO.
-    /// Reads the head and the entry after it every cycle ([`Fifo`]).
-    tags: Fifo<TAG_WIDTH, TAG_BITS, 7>,
+    // The tag FIFO: its control, the lane of the tags' first and count (reads the head and the
+    // entry after it every cycle: [`FifoControl`]), and each slot's kind in a register.
+    tags: FifoControl<TAG_BITS, 7>,
+    tag_lane: FifoRam<TAG_WIDTH, TAG_BITS>,
+    /// Bit `k`: the tag in slot `k` is a job's (not a retire), written as the tag is pushed.
+    tag_jobs: DFF<Bits<TAG_DEPTH>>,
+    /// The head is a job's tag (`valid` and not a retire): a register of its own, from the
+    /// slot the head is read from after this edge (the entry after it on a pop), so that the
+    /// merger's handshakes, and the slice's and queue's load enables after them, are one gate
+    /// of registers (through the lane's read multiplexer before).
+    head_job: DFF<bool>,
+    /// The head is a retire's tag.
+    head_retire: Signal<Local, bool>,
+    tags_left: Signal<Local, bool>,
+    /// The command is not a retire (the kind written into `tag_jobs`).
+    new_job: Signal<Local, bool>,
     accept: Signal<Local, bool>,
     pop: Signal<Local, bool>,
     head_tag: Signal<Local, Bits<TAG_WIDTH>>,
-    head_retire: Signal<Local, bool>,
     head_first: Signal<Local, Bits<11>>,
     head_count: Signal<Local, Bits<11>>,
     new_tag: Signal<Local, Bits<TAG_WIDTH>>,
@@ -278,8 +293,13 @@ pub struct ProcessingElement {
     /// `tags_full`, the loader's `full` and `pend` (powers up low: ready), so that the command
     /// handshake reaches the tag FIFO's write enables through one gate.
     stall: DFF<bool>,
-    /// The bank a pending sector overwrites (not `bank`) holds no job before its sector read.
-    other_free: Signal<Local, bool>,
+    /// The bank a pending sector overwrites (not `bank`) holds a job before its sector read: a
+    /// register of its own, from the next values of `bank` and the `used` flags, so that the
+    /// sector's clock enables are one gate of registers (the command handshake, `pend`, this).
+    other_busy: DFF<bool>,
+    bank_next: Signal<Local, bool>,
+    used0_next: Signal<Local, bool>,
+    used1_next: Signal<Local, bool>,
     /// A job accepted into bank 0 (1) the clock before: the bank counters count it one clock
     /// late, so that the command handshake (`stall`, `accept`) reaches one flip-flop here, not
     /// the counters' and `used` flags' enables. No decision changes: a sector reads the count
@@ -304,7 +324,6 @@ pub struct ProcessingElement {
     almost_full: Constant<Bits<7>>,
     zero1: Constant<Bits<1>>,
     one1: Constant<Bits<1>>,
-    retire_flag: Constant<Bits<TAG_WIDTH>>,
     full: Constant<Bits<7>>,
     zero7: Constant<Bits<7>>,
 }
@@ -365,6 +384,11 @@ impl Default for ProcessingElement {
             screener: Default::default(),
             unit: Default::default(),
             tags: Default::default(),
+            tag_lane: Default::default(),
+            tag_jobs: Default::default(),
+            head_job: Default::default(),
+            tags_left: Default::default(),
+            new_job: Default::default(),
             accept: Default::default(),
             pop: Default::default(),
             head_tag: Default::default(),
@@ -412,7 +436,10 @@ impl Default for ProcessingElement {
             tags_full: Default::default(),
             tags_full_next: Default::default(),
             stall: Default::default(),
-            other_free: Default::default(),
+            other_busy: Default::default(),
+            bank_next: Default::default(),
+            used0_next: Default::default(),
+            used1_next: Default::default(),
             in0: Default::default(),
             sector_in: Default::default(),
             new_first_x: Default::default(),
@@ -431,7 +458,6 @@ impl Default for ProcessingElement {
             almost_full: Constant::new(((TAG_DEPTH - 1) as u64).into()),
             zero1: Constant::new(0.into()),
             one1: Constant::new(1.into()),
-            retire_flag: Constant::new((1u64 << (TAG_WIDTH - 1)).into()),
             full: Constant::new((TAG_DEPTH as u64).into()),
             zero7: Constant::new(0.into()),
         }
@@ -445,6 +471,9 @@ impl Logic for ProcessingElement {
             self,
             clock,
             bank,
+            other_busy,
+            tag_jobs,
+            head_job,
             pend,
             pend_first_x,
             pend_first_y,
@@ -490,6 +519,7 @@ impl Logic for ProcessingElement {
         self.sc_slice.clock.next = self.clock.val();
         self.queue.clock.next = self.clock.val();
         self.tags.clock.next = self.clock.val();
+        self.tag_lane.clock.next = self.clock.val();
 
         // Rays and readout: straight to the intersection unit.
         self.unit.dir_we.next = self.dir_we.val();
@@ -564,10 +594,6 @@ impl Logic for ProcessingElement {
         // A sector takes the bank the jobs do not use (the other one) as soon as that bank
         // holds no job before the sector read: at once if it is free when the command is
         // taken, else from `pend`, holding the stream meanwhile. The jobs after it belong to it.
-        self.other_free.next = !self.used1.q.val();
-        if self.bank.q.val() {
-            self.other_free.next = !self.used0.q.val();
-        }
         self.sector_in.next = self.accept.val() & self.cmd_sector.val();
         self.new_first_x.next = self.first_x.val();
         self.new_first_y.next = self.first_y.val();
@@ -588,7 +614,7 @@ impl Logic for ProcessingElement {
             self.new_normal_y.next = self.pend_normal_y.q.val();
         }
         self.pend_next.next = self.pend.q.val();
-        if self.sector_in.val() & !self.other_free.val() {
+        if self.sector_in.val() & self.other_busy.q.val() {
             self.pend_next.next = true;
             self.pend_first_x.d.next = self.first_x.val();
             self.pend_first_y.d.next = self.first_y.val();
@@ -599,9 +625,10 @@ impl Logic for ProcessingElement {
             self.pend_normal_x.d.next = self.normal_x.val();
             self.pend_normal_y.d.next = self.normal_y.val();
         }
-        if (self.sector_in.val() | self.pend.q.val()) & self.other_free.val() {
+        self.bank_next.next = self.bank.q.val();
+        if (self.sector_in.val() | self.pend.q.val()) & !self.other_busy.q.val() {
             self.pend_next.next = false;
-            self.bank.d.next = !self.bank.q.val();
+            self.bank_next.next = !self.bank.q.val();
             if self.bank.q.val() {
                 self.first0_x.d.next = self.new_first_x.val();
                 self.first0_y.d.next = self.new_first_y.val();
@@ -623,6 +650,7 @@ impl Logic for ProcessingElement {
             }
         }
         self.pend.d.next = self.pend_next.val();
+        self.bank.d.next = self.bank_next.val();
         // Each bank's jobs: counted in as accepted, out as they pass the sector read.
         self.in0.d.next = self.job.val() & !self.bank.q.val();
         self.in1.d.next = self.job.val() & self.bank.q.val();
@@ -642,27 +670,46 @@ impl Logic for ProcessingElement {
         }
         // `used`: the counter's next value is not zero (it leaves zero on a job in alone, and
         // reaches zero from one on a job out alone).
-        self.used0.d.next = self.used0.q.val();
+        self.used0_next.next = self.used0.q.val();
         if self.in0.q.val() & !self.out0.val() {
-            self.used0.d.next = true;
+            self.used0_next.next = true;
         }
         if self.out0.val() & !self.in0.q.val() & (self.jobs0.q.val() == self.one7.val()) {
-            self.used0.d.next = false;
+            self.used0_next.next = false;
         }
-        self.used1.d.next = self.used1.q.val();
+        self.used1_next.next = self.used1.q.val();
         if self.in1.q.val() & !self.out1.val() {
-            self.used1.d.next = true;
+            self.used1_next.next = true;
         }
         if self.out1.val() & !self.in1.q.val() & (self.jobs1.q.val() == self.one7.val()) {
-            self.used1.d.next = false;
+            self.used1_next.next = false;
+        }
+        self.used0.d.next = self.used0_next.val();
+        self.used1.d.next = self.used1_next.val();
+        self.other_busy.d.next = self.used1_next.val();
+        if self.bank_next.val() {
+            self.other_busy.d.next = self.used0_next.val();
         }
         self.new_tag.next = (bit_cast::<TAG_WIDTH, 11>(self.cmd_first.val()) << 11)
             | bit_cast::<TAG_WIDTH, 11>(self.cmd_count.val());
-        if self.cmd_retire.val() {
-            self.new_tag.next = self.new_tag.val() | self.retire_flag.val();
-        }
-        self.tags.data_in.next = self.new_tag.val();
         self.tags.push.next = self.accept.val() & !self.cmd_sector.val();
+        // The lane and the slot kinds are written at the tail in every clock the FIFO is not
+        // full, pushed or not: the tail's slot holds no tag then (a push writes it again), so
+        // their write enables are a register (`tags_full`), not the command handshake. A
+        // slot written without a push is read only as the entry after a head that leaves at
+        // the same edge, when no tag is left (the lanes read before they write).
+        self.tag_lane.write_data.next = self.new_tag.val();
+        self.tag_lane.write_enable.next = !self.tags_full.q.val();
+        self.tag_lane.write_address.next = self.tags.tail_address.val();
+        self.tag_lane.head_address.next = self.tags.head_address.val();
+        self.tag_lane.next_address.next = self.tags.next_address.val();
+        // (`new_job` a signal of its own: the Verilog generator writes `replace_bit`'s value into
+        // a 64-bit expression, where an inverted one-bit operand would be widened first.)
+        self.new_job.next = !self.cmd_retire.val();
+        if !self.tags_full.q.val() {
+            self.tag_jobs.d.next =
+                self.tag_jobs.q.val().replace_bit(self.tags.tail_address.val().index(), self.new_job.val());
+        }
 
         // Host memory: the loader's port through the cache.
         self.cache.cfg_enable.next = self.cfg_cache_enable.val();
@@ -710,8 +757,8 @@ impl Logic for ProcessingElement {
 
         // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job);
         // what it sends goes through a second slice, whose `in_ready` is a register.
-        self.head_tag.next = self.tags.data_out.val();
-        self.head_retire.next = self.head_tag.val().get_bit(22);
+        self.head_tag.next = self.tag_lane.read_data.val();
+        self.head_retire.next = self.tags.valid.val() & !self.head_job.q.val();
         self.head_first.next = self.head_tag.val().get_bits::<11>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
         self.queue.in_id.next = self.sc_slice.out_id.val();
@@ -728,19 +775,18 @@ impl Logic for ProcessingElement {
         self.queue.in_valid.next = false;
         self.sc_slice.out_ready.next = false;
         self.pop.next = false;
-        if self.tags.valid.val() {
-            if self.head_retire.val() {
+        if self.head_retire.val() {
+            self.queue.in_valid.next = true;
+            self.pop.next = self.queue.in_ready.val();
+        }
+        if self.head_job.q.val() & self.sc_slice.out_valid.val() {
+            if self.sc_slice.out_pass.val() {
                 self.queue.in_valid.next = true;
+                self.sc_slice.out_ready.next = self.queue.in_ready.val();
                 self.pop.next = self.queue.in_ready.val();
-            } else if self.sc_slice.out_valid.val() {
-                if self.sc_slice.out_pass.val() {
-                    self.queue.in_valid.next = true;
-                    self.sc_slice.out_ready.next = self.queue.in_ready.val();
-                    self.pop.next = self.queue.in_ready.val();
-                } else {
-                    self.sc_slice.out_ready.next = true;
-                    self.pop.next = true;
-                }
+            } else {
+                self.sc_slice.out_ready.next = true;
+                self.pop.next = true;
             }
         }
         self.unit.patch_valid.next = self.queue.out_valid.val();
@@ -758,8 +804,19 @@ impl Logic for ProcessingElement {
         self.unit.patch_retire.next = self.queue.out_retire.val();
 
         // The tag FIFO's read side: the merger's pop (the head, read every cycle with the entry
-        // after it, depends on no pop: see [`Fifo`]).
+        // after it, depends on no pop: see [`FifoControl`]).
         self.tags.pop.next = self.pop.val();
+        self.tag_lane.pop.next = self.pop.val();
+        // The head after this edge: a tag is left (`count - pop != 0`, the control's `valid`
+        // after the edge) and the slot it is read from holds a job's.
+        self.tags_left.next = (self.tags.count.val() != self.zero7.val())
+            & !(self.pop.val() & (self.tags.count.val() == self.one7.val()));
+        self.head_job.d.next =
+            self.tags_left.val() & self.tag_jobs.q.val().get_bit(self.tags.head_address.val().index());
+        if self.pop.val() {
+            self.head_job.d.next =
+                self.tags_left.val() & self.tag_jobs.q.val().get_bit(self.tags.next_address.val().index());
+        }
         // The tag FIFO full after this edge: full and no pop, or one short of full with a push
         // and no pop (no push while full: `cmd_ready` is low).
         self.tags_full_next.next = ((self.tags.count.val() == self.full.val()) & !self.pop.val())

@@ -2341,7 +2341,6 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     localparam  almost_full = 7'b111111;
     localparam  zero1 = 1'b0;
     localparam  one1 = 1'b1;
-    localparam  retire_flag = 23'h400000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
     
@@ -2509,11 +2508,26 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [31:0] unit$marks;
     reg  tags$clock;
     reg  tags$push;
-    reg  [22:0] tags$data_in;
     reg  tags$pop;
+    wire  [5:0] tags$tail_address;
+    wire  [5:0] tags$head_address;
+    wire  [5:0] tags$next_address;
     wire  tags$valid;
-    wire  [22:0] tags$data_out;
     wire  [6:0] tags$count;
+    reg  tag_lane$clock;
+    reg  [5:0] tag_lane$write_address;
+    reg  [21:0] tag_lane$write_data;
+    reg  tag_lane$write_enable;
+    reg  [5:0] tag_lane$head_address;
+    reg  [5:0] tag_lane$next_address;
+    reg  tag_lane$pop;
+    wire  [21:0] tag_lane$read_data;
+    reg  [63:0] tag_jobs$d;
+    wire  [63:0] tag_jobs$q;
+    reg  tag_jobs$clock;
+    reg  head_job$d;
+    wire  head_job$q;
+    reg  head_job$clock;
     reg  job_banks$clock;
     reg  job_banks$push;
     reg  job_banks$pop;
@@ -2642,6 +2656,9 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  stall$d;
     wire  stall$q;
     reg  stall$clock;
+    reg  other_busy$d;
+    wire  other_busy$q;
+    reg  other_busy$clock;
     reg  in0$d;
     wire  in0$q;
     reg  in0$clock;
@@ -2650,18 +2667,22 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  in1$clock;
     
     // Local signals
+    reg  head_retire;
+    reg  tags_left;
+    reg  new_job;
     reg  accept;
     reg  pop;
-    reg  [22:0] head_tag;
-    reg  head_retire;
+    reg  [21:0] head_tag;
     reg  [10:0] head_first;
     reg  [10:0] head_count;
-    reg  [22:0] new_tag;
+    reg  [21:0] new_tag;
     reg  job_pop;
     reg  room;
     reg  job;
     reg  tags_full_next;
-    reg  other_free;
+    reg  bank_next;
+    reg  used0_next;
+    reg  used1_next;
     reg  sector_in;
     reg  [17:0] new_first_x;
     reg  [17:0] new_first_y;
@@ -2852,11 +2873,32 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     machine$pes$0$tags tags(
         .clock(tags$clock),
         .push(tags$push),
-        .data_in(tags$data_in),
         .pop(tags$pop),
+        .tail_address(tags$tail_address),
+        .head_address(tags$head_address),
+        .next_address(tags$next_address),
         .valid(tags$valid),
-        .data_out(tags$data_out),
         .count(tags$count)
+    );
+    machine$pes$0$tag_lane tag_lane(
+        .clock(tag_lane$clock),
+        .write_address(tag_lane$write_address),
+        .write_data(tag_lane$write_data),
+        .write_enable(tag_lane$write_enable),
+        .head_address(tag_lane$head_address),
+        .next_address(tag_lane$next_address),
+        .pop(tag_lane$pop),
+        .read_data(tag_lane$read_data)
+    );
+    machine$pes$0$tag_jobs tag_jobs(
+        .d(tag_jobs$d),
+        .q(tag_jobs$q),
+        .clock(tag_jobs$clock)
+    );
+    machine$pes$0$head_job head_job(
+        .d(head_job$d),
+        .q(head_job$q),
+        .clock(head_job$clock)
     );
     machine$pes$0$job_banks job_banks(
         .clock(job_banks$clock),
@@ -3058,6 +3100,11 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .q(stall$q),
         .clock(stall$clock)
     );
+    machine$pes$0$other_busy other_busy(
+        .d(other_busy$d),
+        .q(other_busy$q),
+        .clock(other_busy$clock)
+    );
     machine$pes$0$in0 in0(
         .d(in0$d),
         .q(in0$q),
@@ -3072,6 +3119,9 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     // Update code
     always @(*) begin
         bank$clock = clock;
+        other_busy$clock = clock;
+        tag_jobs$clock = clock;
+        head_job$clock = clock;
         pend$clock = clock;
         pend_first_x$clock = clock;
         pend_first_y$clock = clock;
@@ -3106,6 +3156,9 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         tags_full$clock = clock;
         stall$clock = clock;
         bank$d = bank$q;
+        other_busy$d = other_busy$q;
+        tag_jobs$d = tag_jobs$q;
+        head_job$d = head_job$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
         pend_first_y$d = pend_first_y$q;
@@ -3150,6 +3203,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$clock = clock;
         queue$clock = clock;
         tags$clock = clock;
+        tag_lane$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -3210,10 +3264,6 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         job_origin_y$next_address = job_banks$next_address;
         job_origin_y$pop = job_pop;
         screener$in_bank = job_bank$read_data == one1;
-        other_free = ~used1$q;
-        if (bank$q) begin
-            other_free = ~used0$q;
-        end
         sector_in = accept & cmd_sector;
         new_first_x = first_x;
         new_first_y = first_y;
@@ -3234,7 +3284,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             new_normal_y = pend_normal_y$q;
         end
         pend_next = pend$q;
-        if (sector_in & ~other_free) begin
+        if (sector_in & other_busy$q) begin
             pend_next = 1'b1;
             pend_first_x$d = first_x;
             pend_first_y$d = first_y;
@@ -3245,9 +3295,10 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             pend_normal_x$d = normal_x;
             pend_normal_y$d = normal_y;
         end
-        if ((sector_in | pend$q) & other_free) begin
+        bank_next = bank$q;
+        if ((sector_in | pend$q) & ~other_busy$q) begin
             pend_next = 1'b0;
-            bank$d = ~bank$q;
+            bank_next = ~bank$q;
             if (bank$q) begin
                 first0_x$d = new_first_x;
                 first0_y$d = new_first_y;
@@ -3270,6 +3321,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             end
         end
         pend$d = pend_next;
+        bank$d = bank_next;
         in0$d = job & ~bank$q;
         in1$d = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
@@ -3286,26 +3338,37 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         if (out1 & ~in1$q & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
         end
-        used0$d = used0$q;
+        used0_next = used0$q;
         if (in0$q & ~out0) begin
-            used0$d = 1'b1;
+            used0_next = 1'b1;
         end
         if (out0 & ~in0$q & (jobs0$q == one7)) begin
-            used0$d = 1'b0;
+            used0_next = 1'b0;
         end
-        used1$d = used1$q;
+        used1_next = used1$q;
         if (in1$q & ~out1) begin
-            used1$d = 1'b1;
+            used1_next = 1'b1;
         end
         if (out1 & ~in1$q & (jobs1$q == one7)) begin
-            used1$d = 1'b0;
+            used1_next = 1'b0;
         end
-        new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
-        if (cmd_retire) begin
-            new_tag = new_tag | retire_flag;
+        used0$d = used0_next;
+        used1$d = used1_next;
+        other_busy$d = used1_next;
+        if (bank_next) begin
+            other_busy$d = used0_next;
         end
-        tags$data_in = new_tag;
+        new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
         tags$push = accept & ~cmd_sector;
+        tag_lane$write_data = new_tag;
+        tag_lane$write_enable = ~tags_full$q;
+        tag_lane$write_address = tags$tail_address;
+        tag_lane$head_address = tags$head_address;
+        tag_lane$next_address = tags$next_address;
+        new_job = ~cmd_retire;
+        if (~tags_full$q) begin
+            tag_jobs$d = (tag_jobs$q & ~(1 << (tags$tail_address)) | ((new_job) << (tags$tail_address)));
+        end
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -3344,8 +3407,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$in_first = 32'h0;
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
-        head_tag = tags$data_out;
-        head_retire = head_tag[32'h16];
+        head_tag = tag_lane$read_data;
+        head_retire = tags$valid & ~head_job$q;
         head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
@@ -3362,21 +3425,19 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         queue$in_valid = 1'b0;
         sc_slice$out_ready = 1'b0;
         pop = 1'b0;
-        if (tags$valid) begin
-            if (head_retire) begin
+        if (head_retire) begin
+            queue$in_valid = 1'b1;
+            pop = queue$in_ready;
+        end
+        if (head_job$q & sc_slice$out_valid) begin
+            if (sc_slice$out_pass) begin
                 queue$in_valid = 1'b1;
+                sc_slice$out_ready = queue$in_ready;
                 pop = queue$in_ready;
             end
-            else if (sc_slice$out_valid) begin
-                if (sc_slice$out_pass) begin
-                    queue$in_valid = 1'b1;
-                    sc_slice$out_ready = queue$in_ready;
-                    pop = queue$in_ready;
-                end
-                else begin
-                    sc_slice$out_ready = 1'b1;
-                    pop = 1'b1;
-                end
+            else begin
+                sc_slice$out_ready = 1'b1;
+                pop = 1'b1;
             end
         end
         unit$patch_valid = queue$out_valid;
@@ -3393,6 +3454,12 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
+        tag_lane$pop = pop;
+        tags_left = (tags$count != zero7) & ~(pop & (tags$count == one7));
+        head_job$d = tags_left & tag_jobs$q[tags$head_address];
+        if (pop) begin
+            head_job$d = tags_left & tag_jobs$q[tags$next_address];
+        end
         tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
         tags_full$d = tags_full_next;
         stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
@@ -7633,6 +7700,25 @@ module machine$pes$0$first1_y(d,q,clock);
 endmodule // machine$pes$0$first1_y
 
 
+module machine$pes$0$head_job(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$head_job
+
+
 module machine$pes$0$in0(d,q,clock);
     
     // Module arguments
@@ -9126,6 +9212,25 @@ module machine$pes$0$origin1_y(d,q,clock);
     end
           
 endmodule // machine$pes$0$origin1_y
+
+
+module machine$pes$0$other_busy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$other_busy
 
 
 module machine$pes$0$pend(d,q,clock);
@@ -15174,12 +15279,14 @@ module machine$pes$0$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_ou
           wire [2:0] by = fyp[3*(s-1) +: 3];
           wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
           wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
-          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
-          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
+          wire px = (s == 1) ? 1'b0 : ax[31];
+          wire py = (s == 1) ? 1'b0 : ay[31];
+          wire [32:0] dx = {tx, 1'b1} + {dk ^ {32{~px}}, ~px};
+          wire [32:0] dy = {ty, 1'b1} + {dk ^ {32{~py}}, ~py};
           always @(posedge clock) begin
              kp[32*s +: 32] <= dk;
-             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
-             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
+             rxp[32*s +: 32] <= dx[32:1];
+             ryp[32*s +: 32] <= dy[32:1];
              fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
              fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
              qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};
@@ -18242,78 +18349,74 @@ module machine$pes$0$stall(d,q,clock);
 endmodule // machine$pes$0$stall
 
 
-module machine$pes$0$tags(clock,push,data_in,pop,valid,data_out,count);
+module machine$pes$0$tag_jobs(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$tag_jobs
+
+
+module machine$pes$0$tag_lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  [22:0] data_in;
+    input wire  [5:0] write_address;
+    input wire  [21:0] write_data;
+    input wire  write_enable;
+    input wire  [5:0] head_address;
+    input wire  [5:0] next_address;
     input wire  pop;
-    output reg  valid;
-    output reg  [22:0] data_out;
-    output reg  [6:0] count;
+    output reg  [21:0] read_data;
     
-    // Stub signals
-    reg  control$clock;
-    reg  control$push;
-    reg  control$pop;
-    wire  [5:0] control$tail_address;
-    wire  [5:0] control$head_address;
-    wire  [5:0] control$next_address;
-    wire  control$valid;
-    wire  [6:0] control$count;
-    reg  lane$clock;
-    reg  [5:0] lane$write_address;
-    reg  [22:0] lane$write_data;
-    reg  lane$write_enable;
-    reg  [5:0] lane$head_address;
-    reg  [5:0] lane$next_address;
-    reg  lane$pop;
-    wire  [22:0] lane$read_data;
-    
-    // Sub module instances
-    machine$pes$0$tags$control control(
-        .clock(control$clock),
-        .push(control$push),
-        .pop(control$pop),
-        .tail_address(control$tail_address),
-        .head_address(control$head_address),
-        .next_address(control$next_address),
-        .valid(control$valid),
-        .count(control$count)
-    );
-    machine$pes$0$tags$lane lane(
-        .clock(lane$clock),
-        .write_address(lane$write_address),
-        .write_data(lane$write_data),
-        .write_enable(lane$write_enable),
-        .head_address(lane$head_address),
-        .next_address(lane$next_address),
-        .pop(lane$pop),
-        .read_data(lane$read_data)
-    );
-    
-    // Update code
-    always @(*) begin
-        control$clock = clock;
-        lane$clock = clock;
-        control$push = push;
-        control$pop = pop;
-        lane$write_address = control$tail_address;
-        lane$write_data = data_in;
-        lane$write_enable = push;
-        lane$head_address = control$head_address;
-        lane$next_address = control$next_address;
-        lane$pop = pop;
-        valid = control$valid;
-        data_out = lane$read_data;
-        count = control$count;
+    // Update code (custom)
+    reg [21:0] mem [0:63];
+    reg [21:0] head_r;
+    reg [21:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [21:0] mem_n [0:63];
+    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 22'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
     end
-    
-endmodule // machine$pes$0$tags
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
+       head_r = 22'd0;
+       next_r = 22'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // machine$pes$0$tag_lane
 
 
-module machine$pes$0$tags$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
+module machine$pes$0$tags(clock,push,pop,tail_address,head_address,next_address,valid,count);
     
     // Module arguments
     input wire  clock;
@@ -18352,27 +18455,27 @@ module machine$pes$0$tags$control(clock,push,pop,tail_address,head_address,next_
     reg  [5:0] rd_inc2;
     
     // Sub module instances
-    machine$pes$0$tags$control$tail_ptr tail_ptr(
+    machine$pes$0$tags$tail_ptr tail_ptr(
         .d(tail_ptr$d),
         .q(tail_ptr$q),
         .clock(tail_ptr$clock)
     );
-    machine$pes$0$tags$control$rd_ptr rd_ptr(
+    machine$pes$0$tags$rd_ptr rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    machine$pes$0$tags$control$rd_inc_x rd_inc_x(
+    machine$pes$0$tags$rd_inc_x rd_inc_x(
         .d(rd_inc_x$d),
         .q(rd_inc_x$q),
         .clock(rd_inc_x$clock)
     );
-    machine$pes$0$tags$control$words words(
+    machine$pes$0$tags$words words(
         .d(words$d),
         .q(words$q),
         .clock(words$clock)
     );
-    machine$pes$0$tags$control$head_valid head_valid(
+    machine$pes$0$tags$head_valid head_valid(
         .d(head_valid$d),
         .q(head_valid$q),
         .clock(head_valid$clock)
@@ -18413,10 +18516,10 @@ module machine$pes$0$tags$control(clock,push,pop,tail_address,head_address,next_
         count = words$q;
     end
     
-endmodule // machine$pes$0$tags$control
+endmodule // machine$pes$0$tags
 
 
-module machine$pes$0$tags$control$head_valid(d,q,clock);
+module machine$pes$0$tags$head_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -18432,10 +18535,10 @@ module machine$pes$0$tags$control$head_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$tags$control$head_valid
+endmodule // machine$pes$0$tags$head_valid
 
 
-module machine$pes$0$tags$control$rd_inc_x(d,q,clock);
+module machine$pes$0$tags$rd_inc_x(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -18451,10 +18554,10 @@ module machine$pes$0$tags$control$rd_inc_x(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$tags$control$rd_inc_x
+endmodule // machine$pes$0$tags$rd_inc_x
 
 
-module machine$pes$0$tags$control$rd_ptr(d,q,clock);
+module machine$pes$0$tags$rd_ptr(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -18470,10 +18573,10 @@ module machine$pes$0$tags$control$rd_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$tags$control$rd_ptr
+endmodule // machine$pes$0$tags$rd_ptr
 
 
-module machine$pes$0$tags$control$tail_ptr(d,q,clock);
+module machine$pes$0$tags$tail_ptr(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -18489,10 +18592,10 @@ module machine$pes$0$tags$control$tail_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$tags$control$tail_ptr
+endmodule // machine$pes$0$tags$tail_ptr
 
 
-module machine$pes$0$tags$control$words(d,q,clock);
+module machine$pes$0$tags$words(d,q,clock);
     
     // Module arguments
     input wire  [6:0] d;
@@ -18508,55 +18611,7 @@ module machine$pes$0$tags$control$words(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$0$tags$control$words
-
-
-module machine$pes$0$tags$lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [5:0] write_address;
-    input wire  [22:0] write_data;
-    input wire  write_enable;
-    input wire  [5:0] head_address;
-    input wire  [5:0] next_address;
-    input wire  pop;
-    output reg  [22:0] read_data;
-    
-    // Update code (custom)
-    reg [22:0] mem [0:63];
-    reg [22:0] head_r;
-    reg [22:0] next_r;
-    reg popped;
-    integer i;
-    `ifdef SHELLING_ICE40
-    // A copy for the second read (the same writes): one read port per memory.
-    reg [22:0] mem_n [0:63];
-    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 23'd0;
-    always @(posedge clock) begin
-       next_r <= mem_n[next_address];
-       if (write_enable) begin
-          mem_n[write_address] <= write_data;
-       end
-    end
-    `else
-    always @(posedge clock) next_r <= mem[next_address];
-    `endif
-    initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 23'd0;
-       head_r = 23'd0;
-       next_r = 23'd0;
-       popped = 1'b0;
-    end
-    always @(posedge clock) begin
-       head_r <= mem[head_address];
-       popped <= pop;
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-    always @(*) read_data = popped ? next_r : head_r;
-endmodule // machine$pes$0$tags$lane
+endmodule // machine$pes$0$tags$words
 
 
 module machine$pes$0$tags_full(d,q,clock);
@@ -21125,7 +21180,6 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     localparam  almost_full = 7'b111111;
     localparam  zero1 = 1'b0;
     localparam  one1 = 1'b1;
-    localparam  retire_flag = 23'h400000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
     
@@ -21293,11 +21347,26 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     wire  [31:0] unit$marks;
     reg  tags$clock;
     reg  tags$push;
-    reg  [22:0] tags$data_in;
     reg  tags$pop;
+    wire  [5:0] tags$tail_address;
+    wire  [5:0] tags$head_address;
+    wire  [5:0] tags$next_address;
     wire  tags$valid;
-    wire  [22:0] tags$data_out;
     wire  [6:0] tags$count;
+    reg  tag_lane$clock;
+    reg  [5:0] tag_lane$write_address;
+    reg  [21:0] tag_lane$write_data;
+    reg  tag_lane$write_enable;
+    reg  [5:0] tag_lane$head_address;
+    reg  [5:0] tag_lane$next_address;
+    reg  tag_lane$pop;
+    wire  [21:0] tag_lane$read_data;
+    reg  [63:0] tag_jobs$d;
+    wire  [63:0] tag_jobs$q;
+    reg  tag_jobs$clock;
+    reg  head_job$d;
+    wire  head_job$q;
+    reg  head_job$clock;
     reg  job_banks$clock;
     reg  job_banks$push;
     reg  job_banks$pop;
@@ -21426,6 +21495,9 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  stall$d;
     wire  stall$q;
     reg  stall$clock;
+    reg  other_busy$d;
+    wire  other_busy$q;
+    reg  other_busy$clock;
     reg  in0$d;
     wire  in0$q;
     reg  in0$clock;
@@ -21434,18 +21506,22 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  in1$clock;
     
     // Local signals
+    reg  head_retire;
+    reg  tags_left;
+    reg  new_job;
     reg  accept;
     reg  pop;
-    reg  [22:0] head_tag;
-    reg  head_retire;
+    reg  [21:0] head_tag;
     reg  [10:0] head_first;
     reg  [10:0] head_count;
-    reg  [22:0] new_tag;
+    reg  [21:0] new_tag;
     reg  job_pop;
     reg  room;
     reg  job;
     reg  tags_full_next;
-    reg  other_free;
+    reg  bank_next;
+    reg  used0_next;
+    reg  used1_next;
     reg  sector_in;
     reg  [17:0] new_first_x;
     reg  [17:0] new_first_y;
@@ -21636,11 +21712,32 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     machine$pes$1$tags tags(
         .clock(tags$clock),
         .push(tags$push),
-        .data_in(tags$data_in),
         .pop(tags$pop),
+        .tail_address(tags$tail_address),
+        .head_address(tags$head_address),
+        .next_address(tags$next_address),
         .valid(tags$valid),
-        .data_out(tags$data_out),
         .count(tags$count)
+    );
+    machine$pes$1$tag_lane tag_lane(
+        .clock(tag_lane$clock),
+        .write_address(tag_lane$write_address),
+        .write_data(tag_lane$write_data),
+        .write_enable(tag_lane$write_enable),
+        .head_address(tag_lane$head_address),
+        .next_address(tag_lane$next_address),
+        .pop(tag_lane$pop),
+        .read_data(tag_lane$read_data)
+    );
+    machine$pes$1$tag_jobs tag_jobs(
+        .d(tag_jobs$d),
+        .q(tag_jobs$q),
+        .clock(tag_jobs$clock)
+    );
+    machine$pes$1$head_job head_job(
+        .d(head_job$d),
+        .q(head_job$q),
+        .clock(head_job$clock)
     );
     machine$pes$1$job_banks job_banks(
         .clock(job_banks$clock),
@@ -21842,6 +21939,11 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .q(stall$q),
         .clock(stall$clock)
     );
+    machine$pes$1$other_busy other_busy(
+        .d(other_busy$d),
+        .q(other_busy$q),
+        .clock(other_busy$clock)
+    );
     machine$pes$1$in0 in0(
         .d(in0$d),
         .q(in0$q),
@@ -21856,6 +21958,9 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     // Update code
     always @(*) begin
         bank$clock = clock;
+        other_busy$clock = clock;
+        tag_jobs$clock = clock;
+        head_job$clock = clock;
         pend$clock = clock;
         pend_first_x$clock = clock;
         pend_first_y$clock = clock;
@@ -21890,6 +21995,9 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         tags_full$clock = clock;
         stall$clock = clock;
         bank$d = bank$q;
+        other_busy$d = other_busy$q;
+        tag_jobs$d = tag_jobs$q;
+        head_job$d = head_job$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
         pend_first_y$d = pend_first_y$q;
@@ -21934,6 +22042,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$clock = clock;
         queue$clock = clock;
         tags$clock = clock;
+        tag_lane$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -21994,10 +22103,6 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         job_origin_y$next_address = job_banks$next_address;
         job_origin_y$pop = job_pop;
         screener$in_bank = job_bank$read_data == one1;
-        other_free = ~used1$q;
-        if (bank$q) begin
-            other_free = ~used0$q;
-        end
         sector_in = accept & cmd_sector;
         new_first_x = first_x;
         new_first_y = first_y;
@@ -22018,7 +22123,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             new_normal_y = pend_normal_y$q;
         end
         pend_next = pend$q;
-        if (sector_in & ~other_free) begin
+        if (sector_in & other_busy$q) begin
             pend_next = 1'b1;
             pend_first_x$d = first_x;
             pend_first_y$d = first_y;
@@ -22029,9 +22134,10 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             pend_normal_x$d = normal_x;
             pend_normal_y$d = normal_y;
         end
-        if ((sector_in | pend$q) & other_free) begin
+        bank_next = bank$q;
+        if ((sector_in | pend$q) & ~other_busy$q) begin
             pend_next = 1'b0;
-            bank$d = ~bank$q;
+            bank_next = ~bank$q;
             if (bank$q) begin
                 first0_x$d = new_first_x;
                 first0_y$d = new_first_y;
@@ -22054,6 +22160,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             end
         end
         pend$d = pend_next;
+        bank$d = bank_next;
         in0$d = job & ~bank$q;
         in1$d = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
@@ -22070,26 +22177,37 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         if (out1 & ~in1$q & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
         end
-        used0$d = used0$q;
+        used0_next = used0$q;
         if (in0$q & ~out0) begin
-            used0$d = 1'b1;
+            used0_next = 1'b1;
         end
         if (out0 & ~in0$q & (jobs0$q == one7)) begin
-            used0$d = 1'b0;
+            used0_next = 1'b0;
         end
-        used1$d = used1$q;
+        used1_next = used1$q;
         if (in1$q & ~out1) begin
-            used1$d = 1'b1;
+            used1_next = 1'b1;
         end
         if (out1 & ~in1$q & (jobs1$q == one7)) begin
-            used1$d = 1'b0;
+            used1_next = 1'b0;
         end
-        new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
-        if (cmd_retire) begin
-            new_tag = new_tag | retire_flag;
+        used0$d = used0_next;
+        used1$d = used1_next;
+        other_busy$d = used1_next;
+        if (bank_next) begin
+            other_busy$d = used0_next;
         end
-        tags$data_in = new_tag;
+        new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
         tags$push = accept & ~cmd_sector;
+        tag_lane$write_data = new_tag;
+        tag_lane$write_enable = ~tags_full$q;
+        tag_lane$write_address = tags$tail_address;
+        tag_lane$head_address = tags$head_address;
+        tag_lane$next_address = tags$next_address;
+        new_job = ~cmd_retire;
+        if (~tags_full$q) begin
+            tag_jobs$d = (tag_jobs$q & ~(1 << (tags$tail_address)) | ((new_job) << (tags$tail_address)));
+        end
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -22128,8 +22246,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$in_first = 32'h0;
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
-        head_tag = tags$data_out;
-        head_retire = head_tag[32'h16];
+        head_tag = tag_lane$read_data;
+        head_retire = tags$valid & ~head_job$q;
         head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
@@ -22146,21 +22264,19 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         queue$in_valid = 1'b0;
         sc_slice$out_ready = 1'b0;
         pop = 1'b0;
-        if (tags$valid) begin
-            if (head_retire) begin
+        if (head_retire) begin
+            queue$in_valid = 1'b1;
+            pop = queue$in_ready;
+        end
+        if (head_job$q & sc_slice$out_valid) begin
+            if (sc_slice$out_pass) begin
                 queue$in_valid = 1'b1;
+                sc_slice$out_ready = queue$in_ready;
                 pop = queue$in_ready;
             end
-            else if (sc_slice$out_valid) begin
-                if (sc_slice$out_pass) begin
-                    queue$in_valid = 1'b1;
-                    sc_slice$out_ready = queue$in_ready;
-                    pop = queue$in_ready;
-                end
-                else begin
-                    sc_slice$out_ready = 1'b1;
-                    pop = 1'b1;
-                end
+            else begin
+                sc_slice$out_ready = 1'b1;
+                pop = 1'b1;
             end
         end
         unit$patch_valid = queue$out_valid;
@@ -22177,6 +22293,12 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
+        tag_lane$pop = pop;
+        tags_left = (tags$count != zero7) & ~(pop & (tags$count == one7));
+        head_job$d = tags_left & tag_jobs$q[tags$head_address];
+        if (pop) begin
+            head_job$d = tags_left & tag_jobs$q[tags$next_address];
+        end
         tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
         tags_full$d = tags_full_next;
         stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
@@ -26417,6 +26539,25 @@ module machine$pes$1$first1_y(d,q,clock);
 endmodule // machine$pes$1$first1_y
 
 
+module machine$pes$1$head_job(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$head_job
+
+
 module machine$pes$1$in0(d,q,clock);
     
     // Module arguments
@@ -27910,6 +28051,25 @@ module machine$pes$1$origin1_y(d,q,clock);
     end
           
 endmodule // machine$pes$1$origin1_y
+
+
+module machine$pes$1$other_busy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$other_busy
 
 
 module machine$pes$1$pend(d,q,clock);
@@ -33958,12 +34118,14 @@ module machine$pes$1$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_ou
           wire [2:0] by = fyp[3*(s-1) +: 3];
           wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
           wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
-          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
-          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
+          wire px = (s == 1) ? 1'b0 : ax[31];
+          wire py = (s == 1) ? 1'b0 : ay[31];
+          wire [32:0] dx = {tx, 1'b1} + {dk ^ {32{~px}}, ~px};
+          wire [32:0] dy = {ty, 1'b1} + {dk ^ {32{~py}}, ~py};
           always @(posedge clock) begin
              kp[32*s +: 32] <= dk;
-             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
-             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
+             rxp[32*s +: 32] <= dx[32:1];
+             ryp[32*s +: 32] <= dy[32:1];
              fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
              fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
              qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};
@@ -37026,78 +37188,74 @@ module machine$pes$1$stall(d,q,clock);
 endmodule // machine$pes$1$stall
 
 
-module machine$pes$1$tags(clock,push,data_in,pop,valid,data_out,count);
+module machine$pes$1$tag_jobs(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$tag_jobs
+
+
+module machine$pes$1$tag_lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  [22:0] data_in;
+    input wire  [5:0] write_address;
+    input wire  [21:0] write_data;
+    input wire  write_enable;
+    input wire  [5:0] head_address;
+    input wire  [5:0] next_address;
     input wire  pop;
-    output reg  valid;
-    output reg  [22:0] data_out;
-    output reg  [6:0] count;
+    output reg  [21:0] read_data;
     
-    // Stub signals
-    reg  control$clock;
-    reg  control$push;
-    reg  control$pop;
-    wire  [5:0] control$tail_address;
-    wire  [5:0] control$head_address;
-    wire  [5:0] control$next_address;
-    wire  control$valid;
-    wire  [6:0] control$count;
-    reg  lane$clock;
-    reg  [5:0] lane$write_address;
-    reg  [22:0] lane$write_data;
-    reg  lane$write_enable;
-    reg  [5:0] lane$head_address;
-    reg  [5:0] lane$next_address;
-    reg  lane$pop;
-    wire  [22:0] lane$read_data;
-    
-    // Sub module instances
-    machine$pes$1$tags$control control(
-        .clock(control$clock),
-        .push(control$push),
-        .pop(control$pop),
-        .tail_address(control$tail_address),
-        .head_address(control$head_address),
-        .next_address(control$next_address),
-        .valid(control$valid),
-        .count(control$count)
-    );
-    machine$pes$1$tags$lane lane(
-        .clock(lane$clock),
-        .write_address(lane$write_address),
-        .write_data(lane$write_data),
-        .write_enable(lane$write_enable),
-        .head_address(lane$head_address),
-        .next_address(lane$next_address),
-        .pop(lane$pop),
-        .read_data(lane$read_data)
-    );
-    
-    // Update code
-    always @(*) begin
-        control$clock = clock;
-        lane$clock = clock;
-        control$push = push;
-        control$pop = pop;
-        lane$write_address = control$tail_address;
-        lane$write_data = data_in;
-        lane$write_enable = push;
-        lane$head_address = control$head_address;
-        lane$next_address = control$next_address;
-        lane$pop = pop;
-        valid = control$valid;
-        data_out = lane$read_data;
-        count = control$count;
+    // Update code (custom)
+    reg [21:0] mem [0:63];
+    reg [21:0] head_r;
+    reg [21:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [21:0] mem_n [0:63];
+    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 22'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
     end
-    
-endmodule // machine$pes$1$tags
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
+       head_r = 22'd0;
+       next_r = 22'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // machine$pes$1$tag_lane
 
 
-module machine$pes$1$tags$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
+module machine$pes$1$tags(clock,push,pop,tail_address,head_address,next_address,valid,count);
     
     // Module arguments
     input wire  clock;
@@ -37136,27 +37294,27 @@ module machine$pes$1$tags$control(clock,push,pop,tail_address,head_address,next_
     reg  [5:0] rd_inc2;
     
     // Sub module instances
-    machine$pes$1$tags$control$tail_ptr tail_ptr(
+    machine$pes$1$tags$tail_ptr tail_ptr(
         .d(tail_ptr$d),
         .q(tail_ptr$q),
         .clock(tail_ptr$clock)
     );
-    machine$pes$1$tags$control$rd_ptr rd_ptr(
+    machine$pes$1$tags$rd_ptr rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    machine$pes$1$tags$control$rd_inc_x rd_inc_x(
+    machine$pes$1$tags$rd_inc_x rd_inc_x(
         .d(rd_inc_x$d),
         .q(rd_inc_x$q),
         .clock(rd_inc_x$clock)
     );
-    machine$pes$1$tags$control$words words(
+    machine$pes$1$tags$words words(
         .d(words$d),
         .q(words$q),
         .clock(words$clock)
     );
-    machine$pes$1$tags$control$head_valid head_valid(
+    machine$pes$1$tags$head_valid head_valid(
         .d(head_valid$d),
         .q(head_valid$q),
         .clock(head_valid$clock)
@@ -37197,10 +37355,10 @@ module machine$pes$1$tags$control(clock,push,pop,tail_address,head_address,next_
         count = words$q;
     end
     
-endmodule // machine$pes$1$tags$control
+endmodule // machine$pes$1$tags
 
 
-module machine$pes$1$tags$control$head_valid(d,q,clock);
+module machine$pes$1$tags$head_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -37216,10 +37374,10 @@ module machine$pes$1$tags$control$head_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$tags$control$head_valid
+endmodule // machine$pes$1$tags$head_valid
 
 
-module machine$pes$1$tags$control$rd_inc_x(d,q,clock);
+module machine$pes$1$tags$rd_inc_x(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -37235,10 +37393,10 @@ module machine$pes$1$tags$control$rd_inc_x(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$tags$control$rd_inc_x
+endmodule // machine$pes$1$tags$rd_inc_x
 
 
-module machine$pes$1$tags$control$rd_ptr(d,q,clock);
+module machine$pes$1$tags$rd_ptr(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -37254,10 +37412,10 @@ module machine$pes$1$tags$control$rd_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$tags$control$rd_ptr
+endmodule // machine$pes$1$tags$rd_ptr
 
 
-module machine$pes$1$tags$control$tail_ptr(d,q,clock);
+module machine$pes$1$tags$tail_ptr(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -37273,10 +37431,10 @@ module machine$pes$1$tags$control$tail_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$tags$control$tail_ptr
+endmodule // machine$pes$1$tags$tail_ptr
 
 
-module machine$pes$1$tags$control$words(d,q,clock);
+module machine$pes$1$tags$words(d,q,clock);
     
     // Module arguments
     input wire  [6:0] d;
@@ -37292,55 +37450,7 @@ module machine$pes$1$tags$control$words(d,q,clock);
        q <= d;
     end
           
-endmodule // machine$pes$1$tags$control$words
-
-
-module machine$pes$1$tags$lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [5:0] write_address;
-    input wire  [22:0] write_data;
-    input wire  write_enable;
-    input wire  [5:0] head_address;
-    input wire  [5:0] next_address;
-    input wire  pop;
-    output reg  [22:0] read_data;
-    
-    // Update code (custom)
-    reg [22:0] mem [0:63];
-    reg [22:0] head_r;
-    reg [22:0] next_r;
-    reg popped;
-    integer i;
-    `ifdef SHELLING_ICE40
-    // A copy for the second read (the same writes): one read port per memory.
-    reg [22:0] mem_n [0:63];
-    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 23'd0;
-    always @(posedge clock) begin
-       next_r <= mem_n[next_address];
-       if (write_enable) begin
-          mem_n[write_address] <= write_data;
-       end
-    end
-    `else
-    always @(posedge clock) next_r <= mem[next_address];
-    `endif
-    initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 23'd0;
-       head_r = 23'd0;
-       next_r = 23'd0;
-       popped = 1'b0;
-    end
-    always @(posedge clock) begin
-       head_r <= mem[head_address];
-       popped <= pop;
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-    always @(*) read_data = popped ? next_r : head_r;
-endmodule // machine$pes$1$tags$lane
+endmodule // machine$pes$1$tags$words
 
 
 module machine$pes$1$tags_full(d,q,clock);

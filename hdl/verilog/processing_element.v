@@ -56,7 +56,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     localparam  almost_full = 7'b111111;
     localparam  zero1 = 1'b0;
     localparam  one1 = 1'b1;
-    localparam  retire_flag = 23'h400000;
     localparam  full = 7'b1000000;
     localparam  zero7 = 7'b0;
     
@@ -224,11 +223,26 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     wire  [31:0] unit$marks;
     reg  tags$clock;
     reg  tags$push;
-    reg  [22:0] tags$data_in;
     reg  tags$pop;
+    wire  [5:0] tags$tail_address;
+    wire  [5:0] tags$head_address;
+    wire  [5:0] tags$next_address;
     wire  tags$valid;
-    wire  [22:0] tags$data_out;
     wire  [6:0] tags$count;
+    reg  tag_lane$clock;
+    reg  [5:0] tag_lane$write_address;
+    reg  [21:0] tag_lane$write_data;
+    reg  tag_lane$write_enable;
+    reg  [5:0] tag_lane$head_address;
+    reg  [5:0] tag_lane$next_address;
+    reg  tag_lane$pop;
+    wire  [21:0] tag_lane$read_data;
+    reg  [63:0] tag_jobs$d;
+    wire  [63:0] tag_jobs$q;
+    reg  tag_jobs$clock;
+    reg  head_job$d;
+    wire  head_job$q;
+    reg  head_job$clock;
     reg  job_banks$clock;
     reg  job_banks$push;
     reg  job_banks$pop;
@@ -357,6 +371,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  stall$d;
     wire  stall$q;
     reg  stall$clock;
+    reg  other_busy$d;
+    wire  other_busy$q;
+    reg  other_busy$clock;
     reg  in0$d;
     wire  in0$q;
     reg  in0$clock;
@@ -365,18 +382,22 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  in1$clock;
     
     // Local signals
+    reg  head_retire;
+    reg  tags_left;
+    reg  new_job;
     reg  accept;
     reg  pop;
-    reg  [22:0] head_tag;
-    reg  head_retire;
+    reg  [21:0] head_tag;
     reg  [10:0] head_first;
     reg  [10:0] head_count;
-    reg  [22:0] new_tag;
+    reg  [21:0] new_tag;
     reg  job_pop;
     reg  room;
     reg  job;
     reg  tags_full_next;
-    reg  other_free;
+    reg  bank_next;
+    reg  used0_next;
+    reg  used1_next;
     reg  sector_in;
     reg  [17:0] new_first_x;
     reg  [17:0] new_first_y;
@@ -567,11 +588,32 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     processing_element$tags tags(
         .clock(tags$clock),
         .push(tags$push),
-        .data_in(tags$data_in),
         .pop(tags$pop),
+        .tail_address(tags$tail_address),
+        .head_address(tags$head_address),
+        .next_address(tags$next_address),
         .valid(tags$valid),
-        .data_out(tags$data_out),
         .count(tags$count)
+    );
+    processing_element$tag_lane tag_lane(
+        .clock(tag_lane$clock),
+        .write_address(tag_lane$write_address),
+        .write_data(tag_lane$write_data),
+        .write_enable(tag_lane$write_enable),
+        .head_address(tag_lane$head_address),
+        .next_address(tag_lane$next_address),
+        .pop(tag_lane$pop),
+        .read_data(tag_lane$read_data)
+    );
+    processing_element$tag_jobs tag_jobs(
+        .d(tag_jobs$d),
+        .q(tag_jobs$q),
+        .clock(tag_jobs$clock)
+    );
+    processing_element$head_job head_job(
+        .d(head_job$d),
+        .q(head_job$q),
+        .clock(head_job$clock)
     );
     processing_element$job_banks job_banks(
         .clock(job_banks$clock),
@@ -773,6 +815,11 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .q(stall$q),
         .clock(stall$clock)
     );
+    processing_element$other_busy other_busy(
+        .d(other_busy$d),
+        .q(other_busy$q),
+        .clock(other_busy$clock)
+    );
     processing_element$in0 in0(
         .d(in0$d),
         .q(in0$q),
@@ -787,6 +834,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     // Update code
     always @(*) begin
         bank$clock = clock;
+        other_busy$clock = clock;
+        tag_jobs$clock = clock;
+        head_job$clock = clock;
         pend$clock = clock;
         pend_first_x$clock = clock;
         pend_first_y$clock = clock;
@@ -821,6 +871,9 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         tags_full$clock = clock;
         stall$clock = clock;
         bank$d = bank$q;
+        other_busy$d = other_busy$q;
+        tag_jobs$d = tag_jobs$q;
+        head_job$d = head_job$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
         pend_first_y$d = pend_first_y$q;
@@ -865,6 +918,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         sc_slice$clock = clock;
         queue$clock = clock;
         tags$clock = clock;
+        tag_lane$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -925,10 +979,6 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         job_origin_y$next_address = job_banks$next_address;
         job_origin_y$pop = job_pop;
         screener$in_bank = job_bank$read_data == one1;
-        other_free = ~used1$q;
-        if (bank$q) begin
-            other_free = ~used0$q;
-        end
         sector_in = accept & cmd_sector;
         new_first_x = first_x;
         new_first_y = first_y;
@@ -949,7 +999,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             new_normal_y = pend_normal_y$q;
         end
         pend_next = pend$q;
-        if (sector_in & ~other_free) begin
+        if (sector_in & other_busy$q) begin
             pend_next = 1'b1;
             pend_first_x$d = first_x;
             pend_first_y$d = first_y;
@@ -960,9 +1010,10 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             pend_normal_x$d = normal_x;
             pend_normal_y$d = normal_y;
         end
-        if ((sector_in | pend$q) & other_free) begin
+        bank_next = bank$q;
+        if ((sector_in | pend$q) & ~other_busy$q) begin
             pend_next = 1'b0;
-            bank$d = ~bank$q;
+            bank_next = ~bank$q;
             if (bank$q) begin
                 first0_x$d = new_first_x;
                 first0_y$d = new_first_y;
@@ -985,6 +1036,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             end
         end
         pend$d = pend_next;
+        bank$d = bank_next;
         in0$d = job & ~bank$q;
         in1$d = job & bank$q;
         out0 = screener$sector_read & ~screener$sector_bank;
@@ -1001,26 +1053,37 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         if (out1 & ~in1$q & (jobs1$q != zero7)) begin
             jobs1$d = jobs1$q - one7;
         end
-        used0$d = used0$q;
+        used0_next = used0$q;
         if (in0$q & ~out0) begin
-            used0$d = 1'b1;
+            used0_next = 1'b1;
         end
         if (out0 & ~in0$q & (jobs0$q == one7)) begin
-            used0$d = 1'b0;
+            used0_next = 1'b0;
         end
-        used1$d = used1$q;
+        used1_next = used1$q;
         if (in1$q & ~out1) begin
-            used1$d = 1'b1;
+            used1_next = 1'b1;
         end
         if (out1 & ~in1$q & (jobs1$q == one7)) begin
-            used1$d = 1'b0;
+            used1_next = 1'b0;
         end
-        new_tag = (((cmd_first) & 23'h7fffff) << 32'hb) | ((cmd_count) & 23'h7fffff);
-        if (cmd_retire) begin
-            new_tag = new_tag | retire_flag;
+        used0$d = used0_next;
+        used1$d = used1_next;
+        other_busy$d = used1_next;
+        if (bank_next) begin
+            other_busy$d = used0_next;
         end
-        tags$data_in = new_tag;
+        new_tag = (((cmd_first) & 22'h3fffff) << 32'hb) | ((cmd_count) & 22'h3fffff);
         tags$push = accept & ~cmd_sector;
+        tag_lane$write_data = new_tag;
+        tag_lane$write_enable = ~tags_full$q;
+        tag_lane$write_address = tags$tail_address;
+        tag_lane$head_address = tags$head_address;
+        tag_lane$next_address = tags$next_address;
+        new_job = ~cmd_retire;
+        if (~tags_full$q) begin
+            tag_jobs$d = (tag_jobs$q & ~(1 << (tags$tail_address)) | ((new_job) << (tags$tail_address)));
+        end
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -1059,8 +1122,8 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         sc_slice$in_first = 32'h0;
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
-        head_tag = tags$data_out;
-        head_retire = head_tag[32'h16];
+        head_tag = tag_lane$read_data;
+        head_retire = tags$valid & ~head_job$q;
         head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
@@ -1077,21 +1140,19 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         queue$in_valid = 1'b0;
         sc_slice$out_ready = 1'b0;
         pop = 1'b0;
-        if (tags$valid) begin
-            if (head_retire) begin
+        if (head_retire) begin
+            queue$in_valid = 1'b1;
+            pop = queue$in_ready;
+        end
+        if (head_job$q & sc_slice$out_valid) begin
+            if (sc_slice$out_pass) begin
                 queue$in_valid = 1'b1;
+                sc_slice$out_ready = queue$in_ready;
                 pop = queue$in_ready;
             end
-            else if (sc_slice$out_valid) begin
-                if (sc_slice$out_pass) begin
-                    queue$in_valid = 1'b1;
-                    sc_slice$out_ready = queue$in_ready;
-                    pop = queue$in_ready;
-                end
-                else begin
-                    sc_slice$out_ready = 1'b1;
-                    pop = 1'b1;
-                end
+            else begin
+                sc_slice$out_ready = 1'b1;
+                pop = 1'b1;
             end
         end
         unit$patch_valid = queue$out_valid;
@@ -1108,6 +1169,12 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         unit$patch_count = queue$out_count;
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
+        tag_lane$pop = pop;
+        tags_left = (tags$count != zero7) & ~(pop & (tags$count == one7));
+        head_job$d = tags_left & tag_jobs$q[tags$head_address];
+        if (pop) begin
+            head_job$d = tags_left & tag_jobs$q[tags$next_address];
+        end
         tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
         tags_full$d = tags_full_next;
         stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
@@ -5348,6 +5415,25 @@ module processing_element$first1_y(d,q,clock);
 endmodule // processing_element$first1_y
 
 
+module processing_element$head_job(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$head_job
+
+
 module processing_element$in0(d,q,clock);
     
     // Module arguments
@@ -6841,6 +6927,25 @@ module processing_element$origin1_y(d,q,clock);
     end
           
 endmodule // processing_element$origin1_y
+
+
+module processing_element$other_busy(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$other_busy
 
 
 module processing_element$pend(d,q,clock);
@@ -12889,12 +12994,14 @@ module processing_element$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,t
           wire [2:0] by = fyp[3*(s-1) +: 3];
           wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
           wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
-          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
-          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
+          wire px = (s == 1) ? 1'b0 : ax[31];
+          wire py = (s == 1) ? 1'b0 : ay[31];
+          wire [32:0] dx = {tx, 1'b1} + {dk ^ {32{~px}}, ~px};
+          wire [32:0] dy = {ty, 1'b1} + {dk ^ {32{~py}}, ~py};
           always @(posedge clock) begin
              kp[32*s +: 32] <= dk;
-             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
-             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
+             rxp[32*s +: 32] <= dx[32:1];
+             ryp[32*s +: 32] <= dy[32:1];
              fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
              fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
              qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};
@@ -15957,78 +16064,74 @@ module processing_element$stall(d,q,clock);
 endmodule // processing_element$stall
 
 
-module processing_element$tags(clock,push,data_in,pop,valid,data_out,count);
+module processing_element$tag_jobs(d,q,clock);
+    
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$tag_jobs
+
+
+module processing_element$tag_lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
     input wire  clock;
-    input wire  push;
-    input wire  [22:0] data_in;
+    input wire  [5:0] write_address;
+    input wire  [21:0] write_data;
+    input wire  write_enable;
+    input wire  [5:0] head_address;
+    input wire  [5:0] next_address;
     input wire  pop;
-    output reg  valid;
-    output reg  [22:0] data_out;
-    output reg  [6:0] count;
+    output reg  [21:0] read_data;
     
-    // Stub signals
-    reg  control$clock;
-    reg  control$push;
-    reg  control$pop;
-    wire  [5:0] control$tail_address;
-    wire  [5:0] control$head_address;
-    wire  [5:0] control$next_address;
-    wire  control$valid;
-    wire  [6:0] control$count;
-    reg  lane$clock;
-    reg  [5:0] lane$write_address;
-    reg  [22:0] lane$write_data;
-    reg  lane$write_enable;
-    reg  [5:0] lane$head_address;
-    reg  [5:0] lane$next_address;
-    reg  lane$pop;
-    wire  [22:0] lane$read_data;
-    
-    // Sub module instances
-    processing_element$tags$control control(
-        .clock(control$clock),
-        .push(control$push),
-        .pop(control$pop),
-        .tail_address(control$tail_address),
-        .head_address(control$head_address),
-        .next_address(control$next_address),
-        .valid(control$valid),
-        .count(control$count)
-    );
-    processing_element$tags$lane lane(
-        .clock(lane$clock),
-        .write_address(lane$write_address),
-        .write_data(lane$write_data),
-        .write_enable(lane$write_enable),
-        .head_address(lane$head_address),
-        .next_address(lane$next_address),
-        .pop(lane$pop),
-        .read_data(lane$read_data)
-    );
-    
-    // Update code
-    always @(*) begin
-        control$clock = clock;
-        lane$clock = clock;
-        control$push = push;
-        control$pop = pop;
-        lane$write_address = control$tail_address;
-        lane$write_data = data_in;
-        lane$write_enable = push;
-        lane$head_address = control$head_address;
-        lane$next_address = control$next_address;
-        lane$pop = pop;
-        valid = control$valid;
-        data_out = lane$read_data;
-        count = control$count;
+    // Update code (custom)
+    reg [21:0] mem [0:63];
+    reg [21:0] head_r;
+    reg [21:0] next_r;
+    reg popped;
+    integer i;
+    `ifdef SHELLING_ICE40
+    // A copy for the second read (the same writes): one read port per memory.
+    reg [21:0] mem_n [0:63];
+    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 22'd0;
+    always @(posedge clock) begin
+       next_r <= mem_n[next_address];
+       if (write_enable) begin
+          mem_n[write_address] <= write_data;
+       end
     end
-    
-endmodule // processing_element$tags
+    `else
+    always @(posedge clock) next_r <= mem[next_address];
+    `endif
+    initial begin
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 22'd0;
+       head_r = 22'd0;
+       next_r = 22'd0;
+       popped = 1'b0;
+    end
+    always @(posedge clock) begin
+       head_r <= mem[head_address];
+       popped <= pop;
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
+    end
+    always @(*) read_data = popped ? next_r : head_r;
+endmodule // processing_element$tag_lane
 
 
-module processing_element$tags$control(clock,push,pop,tail_address,head_address,next_address,valid,count);
+module processing_element$tags(clock,push,pop,tail_address,head_address,next_address,valid,count);
     
     // Module arguments
     input wire  clock;
@@ -16067,27 +16170,27 @@ module processing_element$tags$control(clock,push,pop,tail_address,head_address,
     reg  [5:0] rd_inc2;
     
     // Sub module instances
-    processing_element$tags$control$tail_ptr tail_ptr(
+    processing_element$tags$tail_ptr tail_ptr(
         .d(tail_ptr$d),
         .q(tail_ptr$q),
         .clock(tail_ptr$clock)
     );
-    processing_element$tags$control$rd_ptr rd_ptr(
+    processing_element$tags$rd_ptr rd_ptr(
         .d(rd_ptr$d),
         .q(rd_ptr$q),
         .clock(rd_ptr$clock)
     );
-    processing_element$tags$control$rd_inc_x rd_inc_x(
+    processing_element$tags$rd_inc_x rd_inc_x(
         .d(rd_inc_x$d),
         .q(rd_inc_x$q),
         .clock(rd_inc_x$clock)
     );
-    processing_element$tags$control$words words(
+    processing_element$tags$words words(
         .d(words$d),
         .q(words$q),
         .clock(words$clock)
     );
-    processing_element$tags$control$head_valid head_valid(
+    processing_element$tags$head_valid head_valid(
         .d(head_valid$d),
         .q(head_valid$q),
         .clock(head_valid$clock)
@@ -16128,10 +16231,10 @@ module processing_element$tags$control(clock,push,pop,tail_address,head_address,
         count = words$q;
     end
     
-endmodule // processing_element$tags$control
+endmodule // processing_element$tags
 
 
-module processing_element$tags$control$head_valid(d,q,clock);
+module processing_element$tags$head_valid(d,q,clock);
     
     // Module arguments
     input wire  d;
@@ -16147,10 +16250,10 @@ module processing_element$tags$control$head_valid(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$tags$control$head_valid
+endmodule // processing_element$tags$head_valid
 
 
-module processing_element$tags$control$rd_inc_x(d,q,clock);
+module processing_element$tags$rd_inc_x(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -16166,10 +16269,10 @@ module processing_element$tags$control$rd_inc_x(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$tags$control$rd_inc_x
+endmodule // processing_element$tags$rd_inc_x
 
 
-module processing_element$tags$control$rd_ptr(d,q,clock);
+module processing_element$tags$rd_ptr(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -16185,10 +16288,10 @@ module processing_element$tags$control$rd_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$tags$control$rd_ptr
+endmodule // processing_element$tags$rd_ptr
 
 
-module processing_element$tags$control$tail_ptr(d,q,clock);
+module processing_element$tags$tail_ptr(d,q,clock);
     
     // Module arguments
     input wire  [5:0] d;
@@ -16204,10 +16307,10 @@ module processing_element$tags$control$tail_ptr(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$tags$control$tail_ptr
+endmodule // processing_element$tags$tail_ptr
 
 
-module processing_element$tags$control$words(d,q,clock);
+module processing_element$tags$words(d,q,clock);
     
     // Module arguments
     input wire  [6:0] d;
@@ -16223,55 +16326,7 @@ module processing_element$tags$control$words(d,q,clock);
        q <= d;
     end
           
-endmodule // processing_element$tags$control$words
-
-
-module processing_element$tags$lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
-    
-    // Module arguments
-    input wire  clock;
-    input wire  [5:0] write_address;
-    input wire  [22:0] write_data;
-    input wire  write_enable;
-    input wire  [5:0] head_address;
-    input wire  [5:0] next_address;
-    input wire  pop;
-    output reg  [22:0] read_data;
-    
-    // Update code (custom)
-    reg [22:0] mem [0:63];
-    reg [22:0] head_r;
-    reg [22:0] next_r;
-    reg popped;
-    integer i;
-    `ifdef SHELLING_ICE40
-    // A copy for the second read (the same writes): one read port per memory.
-    reg [22:0] mem_n [0:63];
-    initial for (i = 0; i <= 63; i = i + 1) mem_n[i] = 23'd0;
-    always @(posedge clock) begin
-       next_r <= mem_n[next_address];
-       if (write_enable) begin
-          mem_n[write_address] <= write_data;
-       end
-    end
-    `else
-    always @(posedge clock) next_r <= mem[next_address];
-    `endif
-    initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 23'd0;
-       head_r = 23'd0;
-       next_r = 23'd0;
-       popped = 1'b0;
-    end
-    always @(posedge clock) begin
-       head_r <= mem[head_address];
-       popped <= pop;
-       if (write_enable) begin
-          mem[write_address] <= write_data;
-       end
-    end
-    always @(*) read_data = popped ? next_r : head_r;
-endmodule // processing_element$tags$lane
+endmodule // processing_element$tags$words
 
 
 module processing_element$tags_full(d,q,clock);
