@@ -15279,14 +15279,12 @@ module machine$pes$0$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_ou
           wire [2:0] by = fyp[3*(s-1) +: 3];
           wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
           wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
-          wire px = (s == 1) ? 1'b0 : ax[31];
-          wire py = (s == 1) ? 1'b0 : ay[31];
-          wire [32:0] dx = {tx, 1'b1} + {dk ^ {32{~px}}, ~px};
-          wire [32:0] dy = {ty, 1'b1} + {dk ^ {32{~py}}, ~py};
+          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
+          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
           always @(posedge clock) begin
              kp[32*s +: 32] <= dk;
-             rxp[32*s +: 32] <= dx[32:1];
-             ryp[32*s +: 32] <= dy[32:1];
+             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
+             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
              fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
              fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
              qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};
@@ -34118,14 +34116,12 @@ module machine$pes$1$screener$divider(clock,rx,ry,fx,fy,k,tag,qx,qy,wx,wy,tag_ou
           wire [2:0] by = fyp[3*(s-1) +: 3];
           wire [31:0] tx = (s == 1) ? ax : {ax[30:0], bx[2]};
           wire [31:0] ty = (s == 1) ? ay : {ay[30:0], by[2]};
-          wire px = (s == 1) ? 1'b0 : ax[31];
-          wire py = (s == 1) ? 1'b0 : ay[31];
-          wire [32:0] dx = {tx, 1'b1} + {dk ^ {32{~px}}, ~px};
-          wire [32:0] dy = {ty, 1'b1} + {dk ^ {32{~py}}, ~py};
+          wire [32:0] dx = {1'b0, tx} - {1'b0, dk};
+          wire [32:0] dy = {1'b0, ty} - {1'b0, dk};
           always @(posedge clock) begin
              kp[32*s +: 32] <= dk;
-             rxp[32*s +: 32] <= dx[32:1];
-             ryp[32*s +: 32] <= dy[32:1];
+             rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
+             ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
              fxp[3*s +: 3] <= (s == 1) ? bx : {bx[1:0], 1'b0};
              fyp[3*s +: 3] <= (s == 1) ? by : {by[1:0], 1'b0};
              qxp[17*s +: 17] <= {qxp[17*(s-1) +: 16], ~dx[32]};

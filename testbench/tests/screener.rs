@@ -12,7 +12,7 @@ use rust_hdl::prelude::*;
 use shelling_hdl::formats::PatchSetup;
 use shelling_hdl::formats::{cross, direction, dot, from_bits, to_bits};
 use shelling_hdl::prim::FifoRam;
-use shelling_hdl::screener::divider::{quotient, PipeDivider, DIV_LATENCY};
+use shelling_hdl::screener::divider::{restoring_quotient, PipeDivider, DIV_LATENCY};
 use shelling_hdl::screener::model::{
     accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, Verdict,
 };
@@ -695,7 +695,7 @@ fn screener_stops_at_the_credit_limit_under_sustained_backpressure() -> Result<(
     Ok(())
 }
 
-/// The divider leaf alone: its Rust model against `quotient` delayed by
+/// The divider leaf alone: its Rust model against `restoring_quotient` delayed by
 /// `DIV_LATENCY`, and its Verilog against its Rust model under Icarus, on random inputs that
 /// mostly break the divider's preconditions (the pipeline divides whatever reaches it).
 #[test]
@@ -727,7 +727,7 @@ fn divider_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
             d.k.next = (k as u64).into();
             d.tag.next = (tag as u64).into();
         })?;
-        sent.push([quotient(r, f, k), quotient(r2, f2, k), tag]);
+        sent.push([restoring_quotient(r, f, k), restoring_quotient(r2, f2, k), tag]);
         if cycle >= DIV_LATENCY {
             let d = drv.uut();
             let got = [d.qx.val().to_u32(), d.qy.val().to_u32(), d.tag_out.val().to_u32()];

@@ -1,6 +1,6 @@
-//! The screener's divider: two 17-bit quotients of one 32-bit divisor by non-restoring division,
-//! one add-or-subtract stage per quotient bit (latency [`DIV_LATENCY`], one division pair per
-//! clock), the bit-true [`quotient`]. [`PipeDivider`] is a hand-written leaf (a
+//! The screener's divider: two 17-bit quotients of one 32-bit divisor by restoring division,
+//! one compare-and-subtract stage per quotient bit (latency [`DIV_LATENCY`], one division pair
+//! per clock), the bit-true [`restoring_quotient`]. [`PipeDivider`] is a hand-written leaf (a
 //! Rust model stepping the same registers as its Verilog body) so that its 17 stages of
 //! registers and 32-bit subtractors cost the simulation one short Rust loop per clock instead of
 //! a hundred-odd more signals in every settle pass.
@@ -14,20 +14,17 @@ pub const DIV_STEPS: usize = 17;
 /// input registers and one register per quotient bit.
 pub const DIV_LATENCY: u64 = DIV_STEPS as u64 + 1;
 
-/// The quotient [`PipeDivider`] computes: non-restoring division of the dividend `r·2^16 +
-/// f·2^13` (`f` three bits) by `k`, 17 quotient bits, every step on 32-bit registers exactly as
-/// the Verilog does. The partial remainder `s` is kept unrestored, in two's complement: step 0
-/// is `s = r − k`; each further step shifts `s` left by one, brings in the next dividend bit
-/// (those of `f`, then zeros) and adds `k` if `s` was negative, else subtracts it. Each step's
-/// quotient bit is the new `s ≥ 0`: the bit restoring division finds by comparing the restored
-/// remainder with `k` (`s` is the restored remainder less `k`). So no multiplexer follows a
-/// step's carry chain: whether to add or subtract is the sign of the register before it.
+/// The quotient [`PipeDivider`] computes: restoring division of the dividend `r·2^16 + f·2^13`
+/// (`f` three bits) by `k`, 17 quotient bits, every step on 32-bit registers exactly as the
+/// Verilog does. Step 0 compares `r` itself with `k`; each further step shifts the partial
+/// remainder left by one, brings in the next dividend bit (those of `f`, then zeros) and
+/// subtracts `k` when the result is not below it.
 ///
-/// When `0 < k < 2^31` and `r < 2k`, `s` stays in `[−k, k)` (so 32 bits hold it) and the result
-/// is exactly `floor((r·2^16 + f·2^13) / k)`, below `2^17`. Other inputs give the same
+/// When `0 < k < 2^31` and `r < 2k`, the partial remainders stay below `2k` and the result is
+/// exactly `floor((r·2^16 + f·2^13) / k)`, below `2^17`. Other inputs give the same
 /// (meaningless) bits in the Rust model and the Verilog.
 #[inline]
-pub fn quotient(r: u32, f: u32, k: u32) -> u32 {
+pub fn restoring_quotient(r: u32, f: u32, k: u32) -> u32 {
     let (mut rem, mut fr, mut q) = (r, f & 7, 0u32);
     for step in 0..DIV_STEPS {
         let ge;
@@ -37,14 +34,13 @@ pub fn quotient(r: u32, f: u32, k: u32) -> u32 {
     q & ((1 << DIV_STEPS) - 1)
 }
 
-/// One step of [`quotient`] on a partial remainder `s` (two's complement; the dividend's `r` at
-/// step 0) and the dividend bits still to come `f` (three bits, MSB first): the new remainder,
-/// the bits left, the quotient bit.
+/// One step of [`restoring_quotient`] on a partial remainder `r` and the dividend bits still to
+/// come `f` (three bits, MSB first): the new remainder, the bits left, the quotient bit.
 #[inline]
-fn div_step(first: bool, s: u32, f: u32, k: u32) -> (u32, u32, bool) {
-    let (t, f, add) = if first { (s, f, false) } else { ((s << 1) | (f >> 2), (f << 1) & 7, s >> 31 == 1) };
-    let n = if add { t.wrapping_add(k) } else { t.wrapping_sub(k) };
-    (n, f, n >> 31 == 0)
+fn div_step(first: bool, r: u32, f: u32, k: u32) -> (u32, u32, bool) {
+    let (t, f) = if first { (r, f) } else { ((r << 1) | (f >> 2), (f << 1) & 7) };
+    let ge = t >= k;
+    (if ge { t.wrapping_sub(k) } else { t }, f, ge)
 }
 
 /// The registers of one stage of [`PipeDivider`].
@@ -59,9 +55,9 @@ struct DivStage {
     tag: u32,
 }
 
-/// Two non-restoring dividers sharing a divisor, pipelined: one add-or-subtract stage per
+/// Two restoring dividers sharing a divisor, pipelined: one compare-and-subtract stage per
 /// quotient bit, so a new pair of divisions starts every clock. `qx`, `qy` are
-/// [`quotient`]`(rx, fx, k)` and `(ry, fy, k)` of the inputs presented
+/// [`restoring_quotient`]`(rx, fx, k)` and `(ry, fy, k)` of the inputs presented
 /// [`DIV_LATENCY`] clocks earlier, and `tag_out` is the `tag` presented with them (a side band
 /// the divider carries unchanged: valid bit, signs). All registers power up as zero, so the
 /// first [`DIV_LATENCY`] outputs carry a zero tag and meaningless quotients. `wx`, `wy` are
@@ -166,11 +162,9 @@ impl Logic for PipeDivider {
 
     fn hdl(&self) -> Verilog {
         // Stage 0 is the input registers; stage s (1..=17) holds the divisor, the two partial
-        // remainders (unrestored, two's complement), the dividend bits still to come (MSB
-        // first), the quotient bits so far and the tag after step s − 1. Each step is one
-        // 32-bit addition or subtraction of the divisor, chosen by the sign of the remainder
-        // before it (a register): `{t, 1} + {k ^ ~p, ~p}` is `t + k` for `p` = 1 and `t − k`
-        // for `p` = 0 in one carry chain, its carry-in in the low bit; no multiplexer after it.
+        // remainders, the dividend bits still to come (MSB first), the quotient bits so far and
+        // the tag after step s − 1. Each step is one 33-bit subtraction (its borrow is the
+        // comparison) and a multiplexer.
         Verilog::Custom(format!(
             "\
 localparam N = {n};
@@ -216,14 +210,12 @@ generate
       wire [2:0] by = fyp[3*(s-1) +: 3];
       wire [31:0] tx = (s == 1) ? ax : {{ax[30:0], bx[2]}};
       wire [31:0] ty = (s == 1) ? ay : {{ay[30:0], by[2]}};
-      wire px = (s == 1) ? 1'b0 : ax[31];
-      wire py = (s == 1) ? 1'b0 : ay[31];
-      wire [32:0] dx = {{tx, 1'b1}} + {{dk ^ {{32{{~px}}}}, ~px}};
-      wire [32:0] dy = {{ty, 1'b1}} + {{dk ^ {{32{{~py}}}}, ~py}};
+      wire [32:0] dx = {{1'b0, tx}} - {{1'b0, dk}};
+      wire [32:0] dy = {{1'b0, ty}} - {{1'b0, dk}};
       always @(posedge clock) begin
          kp[32*s +: 32] <= dk;
-         rxp[32*s +: 32] <= dx[32:1];
-         ryp[32*s +: 32] <= dy[32:1];
+         rxp[32*s +: 32] <= dx[32] ? tx : dx[31:0];
+         ryp[32*s +: 32] <= dy[32] ? ty : dy[31:0];
          fxp[3*s +: 3] <= (s == 1) ? bx : {{bx[1:0], 1'b0}};
          fyp[3*s +: 3] <= (s == 1) ? by : {{by[1:0], 1'b0}};
          qxp[17*s +: 17] <= {{qxp[17*(s-1) +: 16], ~dx[32]}};
@@ -258,7 +250,7 @@ mod tests {
     /// Under its preconditions (`0 < k < 2^31`, `r < 2k`) the divider's quotient is the exact
     /// floor of the dividend over `k`: on edge cases and on seeded random inputs.
     #[test]
-    fn quotient_is_exact_division_under_its_preconditions() {
+    fn restoring_quotient_is_exact_division_under_its_preconditions() {
         let exact = |r: u32, f: u32, k: u32| (((r as u64) << 16) + ((f as u64) << 13)) / k as u64;
         let mut cases = vec![];
         for k in [1u32, 2, 3, 7, 1 << 16, (1 << 31) - 1, 0x4000_0001, 12345] {
@@ -278,7 +270,7 @@ mod tests {
             cases.push((r, (x >> 40) as u32 & 7, k));
         }
         for (r, f, k) in cases {
-            let q = super::quotient(r, f, k);
+            let q = super::restoring_quotient(r, f, k);
             assert_eq!(q as u64, exact(r, f, k), "r {r} f {f} k {k}");
             assert!(q < 1 << 17);
         }

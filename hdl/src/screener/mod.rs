@@ -93,9 +93,9 @@
 //!   exponent's choice is the last multiplexer before the divider);
 //! * stage 9 ([`COUNT_LATENCY`]), beside the divider's first: the verdict, registered as one
 //!   flag per counter, is counted;
-//! * stages 9–26: the [`PipeDivider`] leaf: two pipelined non-restoring dividers sharing the
-//!   divisor `K`, one stage per quotient bit ([`DIV_STEPS`](divider::DIV_STEPS) = 17 steps of a
-//!   32-bit addition or subtraction chosen by a register, no multiplexer after it; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 26
+//! * stages 9–26: the [`PipeDivider`] leaf: two pipelined restoring dividers sharing the divisor
+//!   `K`, one stage per quotient bit ([`DIV_STEPS`](divider::DIV_STEPS) = 17 steps of a
+//!   33-bit subtraction; latency [`DIV_LATENCY`] = 18 with its input registers). In stage 26
 //!   `W = sign(n)·q` (signed by the divider, no carry chain after its last registers)
 //!   completes the patch's slot;
 //! * stages 27–28: the slot is read out; the patch is on the output in cycle `a + `[`LATENCY`]
