@@ -54,8 +54,8 @@
 //! cycles after its request, and a miss does not hold the requests behind it (up to four misses
 //! at the host at once; the answers in request order).
 //!
-//! Every command accepted writes a **tag** (first, count in LUT RAM, and whether it is a job's or
-//! a retire's in a register of each slot) into a [`TAG_DEPTH`]-entry FIFO; a job also hands its id to the [`PatchLoader`]. The loader's patches go
+//! Every command accepted writes a **tag** (first, count, and whether it is a job's or a
+//! retire's, in LUT RAM) into a [`TAG_DEPTH`]-entry FIFO; a job also hands its id to the [`PatchLoader`]. The loader's patches go
 //! through the [`Screener`], which reports every patch in order, passed or not (`out_pass`). The
 //! **merger** at the intersection unit's input pairs the oldest tag with what it waits for: a
 //! retire goes straight to the [`IntersectionUnit`] as a retire job; a job waits for its patch's
@@ -64,11 +64,10 @@
 //! A [`PatchSlice`] (two entries, `in_ready` a register) sits between the screener and the
 //! merger and a [`JobQueue`] between the merger and the unit: every input of the merger is a
 //! register, and the unit's `patch_ready` reaches only the queue, never the screener's output
-//! FIFO or the tag FIFO. The tag FIFO (a [`FifoControl`] over one [`FifoRam`] lane) reads its
+//! FIFO or the tag FIFO. The tag FIFO (a [`FifoControl`] over two [`FifoRam`] lanes) reads its
 //! head and the entry after it every cycle, so that no RAM address depends on the merger's pop
-//! either, and keeps whether its head is a job's in a register (`head_job`, set from the slot
-//! kinds of the head and the entry after it), so that the merger's decisions are one gate of
-//! registers.
+//! either; its lane of the tags' kinds holds the head's kind in a register of its own
+//! ([`FifoRam::head_registered`]), so that the merger's decisions are one gate of registers.
 //!
 //! **The job queue.** The second slice is a 16-entry [`JobQueue`] (LUT RAM): the merger pushes
 //! passed jobs and retires into it and drops screened-out patches, and so runs up to sixteen
@@ -143,8 +142,8 @@ use rust_hdl::prelude::*;
 pub const TAG_BITS: usize = 6;
 /// Commands the PE holds between acceptance and the intersection unit.
 pub const TAG_DEPTH: usize = 1 << TAG_BITS;
-/// A tag's first ray (bits 11..21) and count (bits 0..10), in the tag FIFO's lane (a retire
-/// is marked in `tag_jobs`, a register of each slot). (The update
+/// A tag's first ray (bits 11..21) and count (bits 0..10), in the tag FIFO's lane (whether it
+/// is a job's is in a lane of its own, `tag_kind`). (The update
 /// function spells these bit positions as literals: the Verilog generator copies expressions.)
 const TAG_WIDTH: usize = 22;
 
@@ -217,18 +216,16 @@ pub struct ProcessingElement {
     // entry after it every cycle: [`FifoControl`]), and each slot's kind in a register.
     tags: FifoControl<TAG_BITS, 7>,
     tag_lane: FifoRam<TAG_WIDTH, TAG_BITS>,
-    /// Bit `k`: the tag in slot `k` is a job's (not a retire), written as the tag is pushed.
-    tag_jobs: DFF<Bits<TAG_DEPTH>>,
-    /// The head is a job's tag (`valid` and not a retire): a register of its own, from the
-    /// slot the head is read from after this edge (the entry after it on a pop), so that the
-    /// merger's handshakes, and the slice's and queue's load enables after them, are one gate
-    /// of registers (through the lane's read multiplexer before).
-    head_job: DFF<bool>,
+    /// Each tag's kind (high: a job's, low: a retire's), the head's in a register of its own
+    /// ([`FifoRam::head_registered`]): the merger's handshakes, and the slice's and queue's
+    /// load enables after them, are one gate of registers.
+    tag_kind: FifoRam<1, TAG_BITS>,
+    /// The head is a job's tag (`valid` and a job's kind).
+    head_job: Signal<Local, bool>,
     /// The head is a retire's tag.
     head_retire: Signal<Local, bool>,
-    tags_left: Signal<Local, bool>,
-    /// The command is not a retire (the kind written into `tag_jobs`).
-    new_job: Signal<Local, bool>,
+    /// The command's kind (high: not a retire) as the lane's word.
+    new_job: Signal<Local, Bits<1>>,
     accept: Signal<Local, bool>,
     pop: Signal<Local, bool>,
     head_tag: Signal<Local, Bits<TAG_WIDTH>>,
@@ -385,9 +382,8 @@ impl Default for ProcessingElement {
             unit: Default::default(),
             tags: Default::default(),
             tag_lane: Default::default(),
-            tag_jobs: Default::default(),
+            tag_kind: FifoRam::head_registered(),
             head_job: Default::default(),
-            tags_left: Default::default(),
             new_job: Default::default(),
             accept: Default::default(),
             pop: Default::default(),
@@ -472,8 +468,6 @@ impl Logic for ProcessingElement {
             clock,
             bank,
             other_busy,
-            tag_jobs,
-            head_job,
             pend,
             pend_first_x,
             pend_first_y,
@@ -520,6 +514,7 @@ impl Logic for ProcessingElement {
         self.queue.clock.next = self.clock.val();
         self.tags.clock.next = self.clock.val();
         self.tag_lane.clock.next = self.clock.val();
+        self.tag_kind.clock.next = self.clock.val();
 
         // Rays and readout: straight to the intersection unit.
         self.unit.dir_we.next = self.dir_we.val();
@@ -703,13 +698,15 @@ impl Logic for ProcessingElement {
         self.tag_lane.write_address.next = self.tags.tail_address.val();
         self.tag_lane.head_address.next = self.tags.head_address.val();
         self.tag_lane.next_address.next = self.tags.next_address.val();
-        // (`new_job` a signal of its own: the Verilog generator writes `replace_bit`'s value into
-        // a 64-bit expression, where an inverted one-bit operand would be widened first.)
-        self.new_job.next = !self.cmd_retire.val();
-        if !self.tags_full.q.val() {
-            self.tag_jobs.d.next =
-                self.tag_jobs.q.val().replace_bit(self.tags.tail_address.val().index(), self.new_job.val());
+        self.new_job.next = self.one1.val();
+        if self.cmd_retire.val() {
+            self.new_job.next = self.zero1.val();
         }
+        self.tag_kind.write_data.next = self.new_job.val();
+        self.tag_kind.write_enable.next = !self.tags_full.q.val();
+        self.tag_kind.write_address.next = self.tags.tail_address.val();
+        self.tag_kind.head_address.next = self.tags.head_address.val();
+        self.tag_kind.next_address.next = self.tags.next_address.val();
 
         // Host memory: the loader's port through the cache.
         self.cache.cfg_enable.next = self.cfg_cache_enable.val();
@@ -758,7 +755,8 @@ impl Logic for ProcessingElement {
         // The merger: the oldest tag meets the unit (a retire) or its patch's verdict (a job);
         // what it sends goes through a second slice, whose `in_ready` is a register.
         self.head_tag.next = self.tag_lane.read_data.val();
-        self.head_retire.next = self.tags.valid.val() & !self.head_job.q.val();
+        self.head_job.next = self.tags.valid.val() & self.tag_kind.read_data.val().any();
+        self.head_retire.next = self.tags.valid.val() & !self.tag_kind.read_data.val().any();
         self.head_first.next = self.head_tag.val().get_bits::<11>(11);
         self.head_count.next = self.head_tag.val().get_bits::<11>(0);
         self.queue.in_id.next = self.sc_slice.out_id.val();
@@ -779,7 +777,7 @@ impl Logic for ProcessingElement {
             self.queue.in_valid.next = true;
             self.pop.next = self.queue.in_ready.val();
         }
-        if self.head_job.q.val() & self.sc_slice.out_valid.val() {
+        if self.head_job.val() & self.sc_slice.out_valid.val() {
             if self.sc_slice.out_pass.val() {
                 self.queue.in_valid.next = true;
                 self.sc_slice.out_ready.next = self.queue.in_ready.val();
@@ -807,16 +805,7 @@ impl Logic for ProcessingElement {
         // after it, depends on no pop: see [`FifoControl`]).
         self.tags.pop.next = self.pop.val();
         self.tag_lane.pop.next = self.pop.val();
-        // The head after this edge: a tag is left (`count - pop != 0`, the control's `valid`
-        // after the edge) and the slot it is read from holds a job's.
-        self.tags_left.next = (self.tags.count.val() != self.zero7.val())
-            & !(self.pop.val() & (self.tags.count.val() == self.one7.val()));
-        self.head_job.d.next =
-            self.tags_left.val() & self.tag_jobs.q.val().get_bit(self.tags.head_address.val().index());
-        if self.pop.val() {
-            self.head_job.d.next =
-                self.tags_left.val() & self.tag_jobs.q.val().get_bit(self.tags.next_address.val().index());
-        }
+        self.tag_kind.pop.next = self.pop.val();
         // The tag FIFO full after this edge: full and no pop, or one short of full with a push
         // and no pop (no push while full: `cmd_ready` is low).
         self.tags_full_next.next = ((self.tags.count.val() == self.full.val()) & !self.pop.val())

@@ -2522,12 +2522,14 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [5:0] tag_lane$next_address;
     reg  tag_lane$pop;
     wire  [21:0] tag_lane$read_data;
-    reg  [63:0] tag_jobs$d;
-    wire  [63:0] tag_jobs$q;
-    reg  tag_jobs$clock;
-    reg  head_job$d;
-    wire  head_job$q;
-    reg  head_job$clock;
+    reg  tag_kind$clock;
+    reg  [5:0] tag_kind$write_address;
+    reg  tag_kind$write_data;
+    reg  tag_kind$write_enable;
+    reg  [5:0] tag_kind$head_address;
+    reg  [5:0] tag_kind$next_address;
+    reg  tag_kind$pop;
+    wire  tag_kind$read_data;
     reg  job_banks$clock;
     reg  job_banks$push;
     reg  job_banks$pop;
@@ -2667,8 +2669,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  in1$clock;
     
     // Local signals
+    reg  head_job;
     reg  head_retire;
-    reg  tags_left;
     reg  new_job;
     reg  accept;
     reg  pop;
@@ -2890,15 +2892,15 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .pop(tag_lane$pop),
         .read_data(tag_lane$read_data)
     );
-    machine$pes$0$tag_jobs tag_jobs(
-        .d(tag_jobs$d),
-        .q(tag_jobs$q),
-        .clock(tag_jobs$clock)
-    );
-    machine$pes$0$head_job head_job(
-        .d(head_job$d),
-        .q(head_job$q),
-        .clock(head_job$clock)
+    machine$pes$0$tag_kind tag_kind(
+        .clock(tag_kind$clock),
+        .write_address(tag_kind$write_address),
+        .write_data(tag_kind$write_data),
+        .write_enable(tag_kind$write_enable),
+        .head_address(tag_kind$head_address),
+        .next_address(tag_kind$next_address),
+        .pop(tag_kind$pop),
+        .read_data(tag_kind$read_data)
     );
     machine$pes$0$job_banks job_banks(
         .clock(job_banks$clock),
@@ -3120,8 +3122,6 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     always @(*) begin
         bank$clock = clock;
         other_busy$clock = clock;
-        tag_jobs$clock = clock;
-        head_job$clock = clock;
         pend$clock = clock;
         pend_first_x$clock = clock;
         pend_first_y$clock = clock;
@@ -3157,8 +3157,6 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         stall$clock = clock;
         bank$d = bank$q;
         other_busy$d = other_busy$q;
-        tag_jobs$d = tag_jobs$q;
-        head_job$d = head_job$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
         pend_first_y$d = pend_first_y$q;
@@ -3204,6 +3202,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         queue$clock = clock;
         tags$clock = clock;
         tag_lane$clock = clock;
+        tag_kind$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -3365,10 +3364,15 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         tag_lane$write_address = tags$tail_address;
         tag_lane$head_address = tags$head_address;
         tag_lane$next_address = tags$next_address;
-        new_job = ~cmd_retire;
-        if (~tags_full$q) begin
-            tag_jobs$d = (tag_jobs$q & ~(1 << (tags$tail_address)) | ((new_job) << (tags$tail_address)));
+        new_job = one1;
+        if (cmd_retire) begin
+            new_job = zero1;
         end
+        tag_kind$write_data = new_job;
+        tag_kind$write_enable = ~tags_full$q;
+        tag_kind$write_address = tags$tail_address;
+        tag_kind$head_address = tags$head_address;
+        tag_kind$next_address = tags$next_address;
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -3408,7 +3412,8 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
         head_tag = tag_lane$read_data;
-        head_retire = tags$valid & ~head_job$q;
+        head_job = tags$valid & |tag_kind$read_data;
+        head_retire = tags$valid & ~|tag_kind$read_data;
         head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
@@ -3429,7 +3434,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             queue$in_valid = 1'b1;
             pop = queue$in_ready;
         end
-        if (head_job$q & sc_slice$out_valid) begin
+        if (head_job & sc_slice$out_valid) begin
             if (sc_slice$out_pass) begin
                 queue$in_valid = 1'b1;
                 sc_slice$out_ready = queue$in_ready;
@@ -3455,11 +3460,7 @@ module machine$pes$0(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
         tag_lane$pop = pop;
-        tags_left = (tags$count != zero7) & ~(pop & (tags$count == one7));
-        head_job$d = tags_left & tag_jobs$q[tags$head_address];
-        if (pop) begin
-            head_job$d = tags_left & tag_jobs$q[tags$next_address];
-        end
+        tag_kind$pop = pop;
         tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
         tags_full$d = tags_full_next;
         stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
@@ -7698,25 +7699,6 @@ module machine$pes$0$first1_y(d,q,clock);
     end
           
 endmodule // machine$pes$0$first1_y
-
-
-module machine$pes$0$head_job(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$head_job
 
 
 module machine$pes$0$in0(d,q,clock);
@@ -18347,23 +18329,34 @@ module machine$pes$0$stall(d,q,clock);
 endmodule // machine$pes$0$stall
 
 
-module machine$pes$0$tag_jobs(d,q,clock);
+module machine$pes$0$tag_kind(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
     input wire  clock;
+    input wire  [5:0] write_address;
+    input wire  write_data;
+    input wire  write_enable;
+    input wire  [5:0] head_address;
+    input wire  [5:0] next_address;
+    input wire  pop;
+    output reg  read_data;
     
     // Update code (custom)
+    reg [0:0] mem [0:63];
+    reg [0:0] read_r;
+    integer i;
     initial begin
-       q = 64'h0;
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 1'd0;
+       read_r = 1'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       read_r <= pop ? mem[next_address] : mem[head_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
     end
-          
-endmodule // machine$pes$0$tag_jobs
+    always @(*) read_data = read_r;
+endmodule // machine$pes$0$tag_kind
 
 
 module machine$pes$0$tag_lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
@@ -21359,12 +21352,14 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  [5:0] tag_lane$next_address;
     reg  tag_lane$pop;
     wire  [21:0] tag_lane$read_data;
-    reg  [63:0] tag_jobs$d;
-    wire  [63:0] tag_jobs$q;
-    reg  tag_jobs$clock;
-    reg  head_job$d;
-    wire  head_job$q;
-    reg  head_job$clock;
+    reg  tag_kind$clock;
+    reg  [5:0] tag_kind$write_address;
+    reg  tag_kind$write_data;
+    reg  tag_kind$write_enable;
+    reg  [5:0] tag_kind$head_address;
+    reg  [5:0] tag_kind$next_address;
+    reg  tag_kind$pop;
+    wire  tag_kind$read_data;
     reg  job_banks$clock;
     reg  job_banks$push;
     reg  job_banks$pop;
@@ -21504,8 +21499,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     reg  in1$clock;
     
     // Local signals
+    reg  head_job;
     reg  head_retire;
-    reg  tags_left;
     reg  new_job;
     reg  accept;
     reg  pop;
@@ -21727,15 +21722,15 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         .pop(tag_lane$pop),
         .read_data(tag_lane$read_data)
     );
-    machine$pes$1$tag_jobs tag_jobs(
-        .d(tag_jobs$d),
-        .q(tag_jobs$q),
-        .clock(tag_jobs$clock)
-    );
-    machine$pes$1$head_job head_job(
-        .d(head_job$d),
-        .q(head_job$q),
-        .clock(head_job$clock)
+    machine$pes$1$tag_kind tag_kind(
+        .clock(tag_kind$clock),
+        .write_address(tag_kind$write_address),
+        .write_data(tag_kind$write_data),
+        .write_enable(tag_kind$write_enable),
+        .head_address(tag_kind$head_address),
+        .next_address(tag_kind$next_address),
+        .pop(tag_kind$pop),
+        .read_data(tag_kind$read_data)
     );
     machine$pes$1$job_banks job_banks(
         .clock(job_banks$clock),
@@ -21957,8 +21952,6 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
     always @(*) begin
         bank$clock = clock;
         other_busy$clock = clock;
-        tag_jobs$clock = clock;
-        head_job$clock = clock;
         pend$clock = clock;
         pend_first_x$clock = clock;
         pend_first_y$clock = clock;
@@ -21994,8 +21987,6 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         stall$clock = clock;
         bank$d = bank$q;
         other_busy$d = other_busy$q;
-        tag_jobs$d = tag_jobs$q;
-        head_job$d = head_job$q;
         pend$d = pend$q;
         pend_first_x$d = pend_first_x$q;
         pend_first_y$d = pend_first_y$q;
@@ -22041,6 +22032,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         queue$clock = clock;
         tags$clock = clock;
         tag_lane$clock = clock;
+        tag_kind$clock = clock;
         unit$dir_we = dir_we;
         unit$dir_addr = dir_addr;
         unit$dir_x = dir_x;
@@ -22202,10 +22194,15 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         tag_lane$write_address = tags$tail_address;
         tag_lane$head_address = tags$head_address;
         tag_lane$next_address = tags$next_address;
-        new_job = ~cmd_retire;
-        if (~tags_full$q) begin
-            tag_jobs$d = (tag_jobs$q & ~(1 << (tags$tail_address)) | ((new_job) << (tags$tail_address)));
+        new_job = one1;
+        if (cmd_retire) begin
+            new_job = zero1;
         end
+        tag_kind$write_data = new_job;
+        tag_kind$write_enable = ~tags_full$q;
+        tag_kind$write_address = tags$tail_address;
+        tag_kind$head_address = tags$head_address;
+        tag_kind$next_address = tags$next_address;
         cache$cfg_enable = cfg_cache_enable;
         cache$cfg_mask = cfg_cache_mask;
         cache$flush = cfg_cache_flush;
@@ -22245,7 +22242,8 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         sc_slice$in_count = 32'h0;
         sc_slice$in_retire = 1'b0;
         head_tag = tag_lane$read_data;
-        head_retire = tags$valid & ~head_job$q;
+        head_job = tags$valid & |tag_kind$read_data;
+        head_retire = tags$valid & ~|tag_kind$read_data;
         head_first = head_tag[(32'hb)+:(11)];
         head_count = head_tag[(32'h0)+:(11)];
         queue$in_id = sc_slice$out_id;
@@ -22266,7 +22264,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
             queue$in_valid = 1'b1;
             pop = queue$in_ready;
         end
-        if (head_job$q & sc_slice$out_valid) begin
+        if (head_job & sc_slice$out_valid) begin
             if (sc_slice$out_pass) begin
                 queue$in_valid = 1'b1;
                 sc_slice$out_ready = queue$in_ready;
@@ -22292,11 +22290,7 @@ module machine$pes$1(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,normal_
         unit$patch_retire = queue$out_retire;
         tags$pop = pop;
         tag_lane$pop = pop;
-        tags_left = (tags$count != zero7) & ~(pop & (tags$count == one7));
-        head_job$d = tags_left & tag_jobs$q[tags$head_address];
-        if (pop) begin
-            head_job$d = tags_left & tag_jobs$q[tags$next_address];
-        end
+        tag_kind$pop = pop;
         tags_full_next = ((tags$count == full) & ~pop) | ((tags$count == almost_full) & accept & ~cmd_sector & ~pop);
         tags_full$d = tags_full_next;
         stall$d = tags_full_next | ~loader$id_ready_next | pend_next;
@@ -26535,25 +26529,6 @@ module machine$pes$1$first1_y(d,q,clock);
     end
           
 endmodule // machine$pes$1$first1_y
-
-
-module machine$pes$1$head_job(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$head_job
 
 
 module machine$pes$1$in0(d,q,clock);
@@ -37184,23 +37159,34 @@ module machine$pes$1$stall(d,q,clock);
 endmodule // machine$pes$1$stall
 
 
-module machine$pes$1$tag_jobs(d,q,clock);
+module machine$pes$1$tag_kind(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
     
     // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
     input wire  clock;
+    input wire  [5:0] write_address;
+    input wire  write_data;
+    input wire  write_enable;
+    input wire  [5:0] head_address;
+    input wire  [5:0] next_address;
+    input wire  pop;
+    output reg  read_data;
     
     // Update code (custom)
+    reg [0:0] mem [0:63];
+    reg [0:0] read_r;
+    integer i;
     initial begin
-       q = 64'h0;
+       for (i = 0; i <= 63; i = i + 1) mem[i] = 1'd0;
+       read_r = 1'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       read_r <= pop ? mem[next_address] : mem[head_address];
+       if (write_enable) begin
+          mem[write_address] <= write_data;
+       end
     end
-          
-endmodule // machine$pes$1$tag_jobs
+    always @(*) read_data = read_r;
+endmodule // machine$pes$1$tag_kind
 
 
 module machine$pes$1$tag_lane(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);

@@ -103,6 +103,12 @@ end
 /// the memory for that read, written alongside: with one memory and two reads Yosys' iCE40
 /// mapping keeps 16-word lanes in flip-flops (the loader at 42 MHz instead of 65). All
 /// words and registers are zero at power-up. The Rust `update` is the bit-true model.
+///
+/// [`FifoRam::head_registered`] makes a lane whose `read_data` is one register: the two words
+/// are read without a clock (two LUT RAM reads by the address registers) and the pop chooses
+/// between them before that register, so a consumer deciding from the head word sees a
+/// flip-flop, and the pop reaches one multiplexer a bit. Meant for narrow lanes (a flag);
+/// the same model, cycle for cycle.
 #[derive(LogicBlock)]
 pub struct FifoRam<const D: usize, const A: usize> {
     pub clock: Signal<In, Clock>,
@@ -114,6 +120,15 @@ pub struct FifoRam<const D: usize, const A: usize> {
     pub pop: Signal<In, bool>,
     pub read_data: Signal<Out, Bits<D>>,
     _mem: Vec<u32>,
+    /// The head word in one register (see [`FifoRam::head_registered`]): the Verilog body only.
+    _head_registered: bool,
+}
+
+impl<const D: usize, const A: usize> FifoRam<D, A> {
+    /// A lane whose `read_data` is a register of its own (see the type's documentation).
+    pub fn head_registered() -> Self {
+        FifoRam { _head_registered: true, ..Default::default() }
+    }
 }
 
 impl<const D: usize, const A: usize> Default for FifoRam<D, A> {
@@ -129,6 +144,7 @@ impl<const D: usize, const A: usize> Default for FifoRam<D, A> {
             pop: Default::default(),
             read_data: Default::default(),
             _mem: vec![0; 1 << A],
+            _head_registered: false,
         }
     }
 }
@@ -149,6 +165,29 @@ impl<const D: usize, const A: usize> Logic for FifoRam<D, A> {
     }
 
     fn hdl(&self) -> Verilog {
+        if self._head_registered {
+            return Verilog::Custom(format!(
+                "\
+reg [{dm}:0] mem [0:{words}];
+reg [{dm}:0] read_r;
+integer i;
+initial begin
+   for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
+   read_r = {d}'d0;
+end
+always @(posedge clock) begin
+   read_r <= pop ? mem[next_address] : mem[head_address];
+   if (write_enable) begin
+      mem[write_address] <= write_data;
+   end
+end
+always @(*) read_data = read_r;
+",
+                dm = D - 1,
+                d = D,
+                words = (1usize << A) - 1
+            ));
+        }
         Verilog::Custom(format!(
             "\
 reg [{dm}:0] mem [0:{words}];
