@@ -85,7 +85,11 @@
 //! the next source's first sector command brings its origin and normal.
 //! Each bank counts its jobs accepted and not yet past that read (`jobs0`, `jobs1`). A sector
 //! command takes the other bank at once if that bank's count is zero, or waits in a register
-//! (`pend`) until it is, with `cmd_ready` low meanwhile; then the accepted jobs' bank flips. So
+//! (`pend`) until it is, with `cmd_ready` low meanwhile; then the accepted jobs' bank flips, and
+//! the bank loads the sector a clock later from a staging register that takes the command's
+//! sector fields in every clock no sector waits (so every clock enable of the sectors' registers
+//! is a register: `pend`, `load0`, `load1`; a job accepted in the clock its bank loads takes
+//! its origin from the staging register). So
 //! a sector change stalls the stream only while the sector before last still has jobs before
 //! the screener's stage 3: with sectors of a few jobs and a long memory latency. Jobs before
 //! the first sector command are screened for a zero sector, origin and normal (the host always
@@ -250,14 +254,21 @@ pub struct ProcessingElement {
     /// The bank the jobs accepted now belong to: the last sector command's.
     bank: DFF<bool>,
     pend: DFF<bool>,
-    pend_first_x: DFF<Bits<18>>,
-    pend_first_y: DFF<Bits<18>>,
-    pend_last_x: DFF<Bits<18>>,
-    pend_last_y: DFF<Bits<18>>,
-    pend_origin_x: DFF<Bits<17>>,
-    pend_origin_y: DFF<Bits<17>>,
-    pend_normal_x: DFF<Bits<18>>,
-    pend_normal_y: DFF<Bits<18>>,
+    /// The staged sector: the command's sector fields, loaded in every clock no sector is
+    /// pending (enable `!pend`, a register), so it holds the last sector command accepted from
+    /// the clock after it until a clock after it reaches its bank.
+    stg_first_x: DFF<Bits<18>>,
+    stg_first_y: DFF<Bits<18>>,
+    stg_last_x: DFF<Bits<18>>,
+    stg_last_y: DFF<Bits<18>>,
+    stg_origin_x: DFF<Bits<17>>,
+    stg_origin_y: DFF<Bits<17>>,
+    stg_normal_x: DFF<Bits<18>>,
+    stg_normal_y: DFF<Bits<18>>,
+    /// Bank 0 (1) loads the staged sector in this clock: set in the clock the sector takes the
+    /// bank (the flip of `bank`), so that every bank register's clock enable is a register.
+    load0: DFF<bool>,
+    load1: DFF<bool>,
     origin0_x: DFF<Bits<17>>,
     origin0_y: DFF<Bits<17>>,
     normal0_x: DFF<Bits<18>>,
@@ -306,14 +317,8 @@ pub struct ProcessingElement {
     in0: DFF<bool>,
     in1: DFF<bool>,
     sector_in: Signal<Local, bool>,
-    new_first_x: Signal<Local, Bits<18>>,
-    new_first_y: Signal<Local, Bits<18>>,
-    new_last_x: Signal<Local, Bits<18>>,
-    new_last_y: Signal<Local, Bits<18>>,
-    new_origin_x: Signal<Local, Bits<17>>,
-    new_origin_y: Signal<Local, Bits<17>>,
-    new_normal_x: Signal<Local, Bits<18>>,
-    new_normal_y: Signal<Local, Bits<18>>,
+    /// A sector takes the other bank in this clock.
+    take: Signal<Local, bool>,
     out0: Signal<Local, bool>,
     out1: Signal<Local, bool>,
     pend_next: Signal<Local, bool>,
@@ -401,14 +406,16 @@ impl Default for ProcessingElement {
             job: Default::default(),
             bank: Default::default(),
             pend: Default::default(),
-            pend_first_x: Default::default(),
-            pend_first_y: Default::default(),
-            pend_last_x: Default::default(),
-            pend_last_y: Default::default(),
-            pend_origin_x: Default::default(),
-            pend_origin_y: Default::default(),
-            pend_normal_x: Default::default(),
-            pend_normal_y: Default::default(),
+            stg_first_x: Default::default(),
+            stg_first_y: Default::default(),
+            stg_last_x: Default::default(),
+            stg_last_y: Default::default(),
+            stg_origin_x: Default::default(),
+            stg_origin_y: Default::default(),
+            stg_normal_x: Default::default(),
+            stg_normal_y: Default::default(),
+            load0: Default::default(),
+            load1: Default::default(),
             origin0_x: Default::default(),
             origin0_y: Default::default(),
             normal0_x: Default::default(),
@@ -438,14 +445,7 @@ impl Default for ProcessingElement {
             used1_next: Default::default(),
             in0: Default::default(),
             sector_in: Default::default(),
-            new_first_x: Default::default(),
-            new_first_y: Default::default(),
-            new_last_x: Default::default(),
-            new_last_y: Default::default(),
-            new_origin_x: Default::default(),
-            new_origin_y: Default::default(),
-            new_normal_x: Default::default(),
-            new_normal_y: Default::default(),
+            take: Default::default(),
             in1: Default::default(),
             out0: Default::default(),
             out1: Default::default(),
@@ -469,14 +469,16 @@ impl Logic for ProcessingElement {
             bank,
             other_busy,
             pend,
-            pend_first_x,
-            pend_first_y,
-            pend_last_x,
-            pend_last_y,
-            pend_origin_x,
-            pend_origin_y,
-            pend_normal_x,
-            pend_normal_y,
+            stg_first_x,
+            stg_first_y,
+            stg_last_x,
+            stg_last_y,
+            stg_origin_x,
+            stg_origin_y,
+            stg_normal_x,
+            stg_normal_y,
+            load0,
+            load1,
             origin0_x,
             origin0_y,
             normal0_x,
@@ -569,6 +571,12 @@ impl Logic for ProcessingElement {
             self.job_origin_x.write_data.next = self.origin1_x.q.val();
             self.job_origin_y.write_data.next = self.origin1_y.q.val();
         }
+        // A job accepted in the clock its bank loads (the one after its sector's) takes the
+        // origin from the staged sector.
+        if self.load0.q.val() | self.load1.q.val() {
+            self.job_origin_x.write_data.next = self.stg_origin_x.q.val();
+            self.job_origin_y.write_data.next = self.stg_origin_y.q.val();
+        }
         self.job_bank.write_address.next = self.job_banks.tail_address.val();
         self.job_bank.write_enable.next = self.job.val();
         self.job_bank.head_address.next = self.job_banks.head_address.val();
@@ -590,59 +598,53 @@ impl Logic for ProcessingElement {
         // holds no job before the sector read: at once if it is free when the command is
         // taken, else from `pend`, holding the stream meanwhile. The jobs after it belong to it.
         self.sector_in.next = self.accept.val() & self.cmd_sector.val();
-        self.new_first_x.next = self.first_x.val();
-        self.new_first_y.next = self.first_y.val();
-        self.new_last_x.next = self.last_x.val();
-        self.new_last_y.next = self.last_y.val();
-        self.new_origin_x.next = self.origin_x.val();
-        self.new_origin_y.next = self.origin_y.val();
-        self.new_normal_x.next = self.normal_x.val();
-        self.new_normal_y.next = self.normal_y.val();
-        if self.pend.q.val() {
-            self.new_first_x.next = self.pend_first_x.q.val();
-            self.new_first_y.next = self.pend_first_y.q.val();
-            self.new_last_x.next = self.pend_last_x.q.val();
-            self.new_last_y.next = self.pend_last_y.q.val();
-            self.new_origin_x.next = self.pend_origin_x.q.val();
-            self.new_origin_y.next = self.pend_origin_y.q.val();
-            self.new_normal_x.next = self.pend_normal_x.q.val();
-            self.new_normal_y.next = self.pend_normal_y.q.val();
+        // The staged sector: the command's sector fields in every clock no sector waits (in
+        // the clock a sector is accepted among them), held while one does.
+        if !self.pend.q.val() {
+            self.stg_first_x.d.next = self.first_x.val();
+            self.stg_first_y.d.next = self.first_y.val();
+            self.stg_last_x.d.next = self.last_x.val();
+            self.stg_last_y.d.next = self.last_y.val();
+            self.stg_origin_x.d.next = self.origin_x.val();
+            self.stg_origin_y.d.next = self.origin_y.val();
+            self.stg_normal_x.d.next = self.normal_x.val();
+            self.stg_normal_y.d.next = self.normal_y.val();
         }
         self.pend_next.next = self.pend.q.val();
         if self.sector_in.val() & self.other_busy.q.val() {
             self.pend_next.next = true;
-            self.pend_first_x.d.next = self.first_x.val();
-            self.pend_first_y.d.next = self.first_y.val();
-            self.pend_last_x.d.next = self.last_x.val();
-            self.pend_last_y.d.next = self.last_y.val();
-            self.pend_origin_x.d.next = self.origin_x.val();
-            self.pend_origin_y.d.next = self.origin_y.val();
-            self.pend_normal_x.d.next = self.normal_x.val();
-            self.pend_normal_y.d.next = self.normal_y.val();
         }
+        // The sector takes the other bank: the flip now, its bank loaded from the staged
+        // sector in the next clock (nothing reads that bank before: no job of it is before the
+        // screener's sector read, and the jobs accepted after the flip reach the screener's
+        // stage 1 several clocks later).
+        self.take.next = (self.sector_in.val() | self.pend.q.val()) & !self.other_busy.q.val();
         self.bank_next.next = self.bank.q.val();
-        if (self.sector_in.val() | self.pend.q.val()) & !self.other_busy.q.val() {
+        if self.take.val() {
             self.pend_next.next = false;
             self.bank_next.next = !self.bank.q.val();
-            if self.bank.q.val() {
-                self.first0_x.d.next = self.new_first_x.val();
-                self.first0_y.d.next = self.new_first_y.val();
-                self.last0_x.d.next = self.new_last_x.val();
-                self.last0_y.d.next = self.new_last_y.val();
-                self.origin0_x.d.next = self.new_origin_x.val();
-                self.origin0_y.d.next = self.new_origin_y.val();
-                self.normal0_x.d.next = self.new_normal_x.val();
-                self.normal0_y.d.next = self.new_normal_y.val();
-            } else {
-                self.first1_x.d.next = self.new_first_x.val();
-                self.first1_y.d.next = self.new_first_y.val();
-                self.last1_x.d.next = self.new_last_x.val();
-                self.last1_y.d.next = self.new_last_y.val();
-                self.origin1_x.d.next = self.new_origin_x.val();
-                self.origin1_y.d.next = self.new_origin_y.val();
-                self.normal1_x.d.next = self.new_normal_x.val();
-                self.normal1_y.d.next = self.new_normal_y.val();
-            }
+        }
+        self.load0.d.next = self.take.val() & self.bank.q.val();
+        self.load1.d.next = self.take.val() & !self.bank.q.val();
+        if self.load0.q.val() {
+            self.first0_x.d.next = self.stg_first_x.q.val();
+            self.first0_y.d.next = self.stg_first_y.q.val();
+            self.last0_x.d.next = self.stg_last_x.q.val();
+            self.last0_y.d.next = self.stg_last_y.q.val();
+            self.origin0_x.d.next = self.stg_origin_x.q.val();
+            self.origin0_y.d.next = self.stg_origin_y.q.val();
+            self.normal0_x.d.next = self.stg_normal_x.q.val();
+            self.normal0_y.d.next = self.stg_normal_y.q.val();
+        }
+        if self.load1.q.val() {
+            self.first1_x.d.next = self.stg_first_x.q.val();
+            self.first1_y.d.next = self.stg_first_y.q.val();
+            self.last1_x.d.next = self.stg_last_x.q.val();
+            self.last1_y.d.next = self.stg_last_y.q.val();
+            self.origin1_x.d.next = self.stg_origin_x.q.val();
+            self.origin1_y.d.next = self.stg_origin_y.q.val();
+            self.normal1_x.d.next = self.stg_normal_x.q.val();
+            self.normal1_y.d.next = self.stg_normal_y.q.val();
         }
         self.pend.d.next = self.pend_next.val();
         self.bank.d.next = self.bank_next.val();

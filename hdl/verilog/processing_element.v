@@ -283,30 +283,36 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  pend$d;
     wire  pend$q;
     reg  pend$clock;
-    reg  [17:0] pend_first_x$d;
-    wire  [17:0] pend_first_x$q;
-    reg  pend_first_x$clock;
-    reg  [17:0] pend_first_y$d;
-    wire  [17:0] pend_first_y$q;
-    reg  pend_first_y$clock;
-    reg  [17:0] pend_last_x$d;
-    wire  [17:0] pend_last_x$q;
-    reg  pend_last_x$clock;
-    reg  [17:0] pend_last_y$d;
-    wire  [17:0] pend_last_y$q;
-    reg  pend_last_y$clock;
-    reg  [16:0] pend_origin_x$d;
-    wire  [16:0] pend_origin_x$q;
-    reg  pend_origin_x$clock;
-    reg  [16:0] pend_origin_y$d;
-    wire  [16:0] pend_origin_y$q;
-    reg  pend_origin_y$clock;
-    reg  [17:0] pend_normal_x$d;
-    wire  [17:0] pend_normal_x$q;
-    reg  pend_normal_x$clock;
-    reg  [17:0] pend_normal_y$d;
-    wire  [17:0] pend_normal_y$q;
-    reg  pend_normal_y$clock;
+    reg  [17:0] stg_first_x$d;
+    wire  [17:0] stg_first_x$q;
+    reg  stg_first_x$clock;
+    reg  [17:0] stg_first_y$d;
+    wire  [17:0] stg_first_y$q;
+    reg  stg_first_y$clock;
+    reg  [17:0] stg_last_x$d;
+    wire  [17:0] stg_last_x$q;
+    reg  stg_last_x$clock;
+    reg  [17:0] stg_last_y$d;
+    wire  [17:0] stg_last_y$q;
+    reg  stg_last_y$clock;
+    reg  [16:0] stg_origin_x$d;
+    wire  [16:0] stg_origin_x$q;
+    reg  stg_origin_x$clock;
+    reg  [16:0] stg_origin_y$d;
+    wire  [16:0] stg_origin_y$q;
+    reg  stg_origin_y$clock;
+    reg  [17:0] stg_normal_x$d;
+    wire  [17:0] stg_normal_x$q;
+    reg  stg_normal_x$clock;
+    reg  [17:0] stg_normal_y$d;
+    wire  [17:0] stg_normal_y$q;
+    reg  stg_normal_y$clock;
+    reg  load0$d;
+    wire  load0$q;
+    reg  load0$clock;
+    reg  load1$d;
+    wire  load1$q;
+    reg  load1$clock;
     reg  [16:0] origin0_x$d;
     wire  [16:0] origin0_x$q;
     reg  origin0_x$clock;
@@ -401,14 +407,7 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
     reg  used0_next;
     reg  used1_next;
     reg  sector_in;
-    reg  [17:0] new_first_x;
-    reg  [17:0] new_first_y;
-    reg  [17:0] new_last_x;
-    reg  [17:0] new_last_y;
-    reg  [16:0] new_origin_x;
-    reg  [16:0] new_origin_y;
-    reg  [17:0] new_normal_x;
-    reg  [17:0] new_normal_y;
+    reg  take;
     reg  out0;
     reg  out1;
     reg  pend_next;
@@ -667,45 +666,55 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         .q(pend$q),
         .clock(pend$clock)
     );
-    processing_element$pend_first_x pend_first_x(
-        .d(pend_first_x$d),
-        .q(pend_first_x$q),
-        .clock(pend_first_x$clock)
+    processing_element$stg_first_x stg_first_x(
+        .d(stg_first_x$d),
+        .q(stg_first_x$q),
+        .clock(stg_first_x$clock)
     );
-    processing_element$pend_first_y pend_first_y(
-        .d(pend_first_y$d),
-        .q(pend_first_y$q),
-        .clock(pend_first_y$clock)
+    processing_element$stg_first_y stg_first_y(
+        .d(stg_first_y$d),
+        .q(stg_first_y$q),
+        .clock(stg_first_y$clock)
     );
-    processing_element$pend_last_x pend_last_x(
-        .d(pend_last_x$d),
-        .q(pend_last_x$q),
-        .clock(pend_last_x$clock)
+    processing_element$stg_last_x stg_last_x(
+        .d(stg_last_x$d),
+        .q(stg_last_x$q),
+        .clock(stg_last_x$clock)
     );
-    processing_element$pend_last_y pend_last_y(
-        .d(pend_last_y$d),
-        .q(pend_last_y$q),
-        .clock(pend_last_y$clock)
+    processing_element$stg_last_y stg_last_y(
+        .d(stg_last_y$d),
+        .q(stg_last_y$q),
+        .clock(stg_last_y$clock)
     );
-    processing_element$pend_origin_x pend_origin_x(
-        .d(pend_origin_x$d),
-        .q(pend_origin_x$q),
-        .clock(pend_origin_x$clock)
+    processing_element$stg_origin_x stg_origin_x(
+        .d(stg_origin_x$d),
+        .q(stg_origin_x$q),
+        .clock(stg_origin_x$clock)
     );
-    processing_element$pend_origin_y pend_origin_y(
-        .d(pend_origin_y$d),
-        .q(pend_origin_y$q),
-        .clock(pend_origin_y$clock)
+    processing_element$stg_origin_y stg_origin_y(
+        .d(stg_origin_y$d),
+        .q(stg_origin_y$q),
+        .clock(stg_origin_y$clock)
     );
-    processing_element$pend_normal_x pend_normal_x(
-        .d(pend_normal_x$d),
-        .q(pend_normal_x$q),
-        .clock(pend_normal_x$clock)
+    processing_element$stg_normal_x stg_normal_x(
+        .d(stg_normal_x$d),
+        .q(stg_normal_x$q),
+        .clock(stg_normal_x$clock)
     );
-    processing_element$pend_normal_y pend_normal_y(
-        .d(pend_normal_y$d),
-        .q(pend_normal_y$q),
-        .clock(pend_normal_y$clock)
+    processing_element$stg_normal_y stg_normal_y(
+        .d(stg_normal_y$d),
+        .q(stg_normal_y$q),
+        .clock(stg_normal_y$clock)
+    );
+    processing_element$load0 load0(
+        .d(load0$d),
+        .q(load0$q),
+        .clock(load0$clock)
+    );
+    processing_element$load1 load1(
+        .d(load1$d),
+        .q(load1$q),
+        .clock(load1$clock)
     );
     processing_element$origin0_x origin0_x(
         .d(origin0_x$d),
@@ -838,14 +847,16 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         bank$clock = clock;
         other_busy$clock = clock;
         pend$clock = clock;
-        pend_first_x$clock = clock;
-        pend_first_y$clock = clock;
-        pend_last_x$clock = clock;
-        pend_last_y$clock = clock;
-        pend_origin_x$clock = clock;
-        pend_origin_y$clock = clock;
-        pend_normal_x$clock = clock;
-        pend_normal_y$clock = clock;
+        stg_first_x$clock = clock;
+        stg_first_y$clock = clock;
+        stg_last_x$clock = clock;
+        stg_last_y$clock = clock;
+        stg_origin_x$clock = clock;
+        stg_origin_y$clock = clock;
+        stg_normal_x$clock = clock;
+        stg_normal_y$clock = clock;
+        load0$clock = clock;
+        load1$clock = clock;
         origin0_x$clock = clock;
         origin0_y$clock = clock;
         normal0_x$clock = clock;
@@ -873,14 +884,16 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         bank$d = bank$q;
         other_busy$d = other_busy$q;
         pend$d = pend$q;
-        pend_first_x$d = pend_first_x$q;
-        pend_first_y$d = pend_first_y$q;
-        pend_last_x$d = pend_last_x$q;
-        pend_last_y$d = pend_last_y$q;
-        pend_origin_x$d = pend_origin_x$q;
-        pend_origin_y$d = pend_origin_y$q;
-        pend_normal_x$d = pend_normal_x$q;
-        pend_normal_y$d = pend_normal_y$q;
+        stg_first_x$d = stg_first_x$q;
+        stg_first_y$d = stg_first_y$q;
+        stg_last_x$d = stg_last_x$q;
+        stg_last_y$d = stg_last_y$q;
+        stg_origin_x$d = stg_origin_x$q;
+        stg_origin_y$d = stg_origin_y$q;
+        stg_normal_x$d = stg_normal_x$q;
+        stg_normal_y$d = stg_normal_y$q;
+        load0$d = load0$q;
+        load1$d = load1$q;
         origin0_x$d = origin0_x$q;
         origin0_y$d = origin0_y$q;
         normal0_x$d = normal0_x$q;
@@ -962,6 +975,10 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
             job_origin_x$write_data = origin1_x$q;
             job_origin_y$write_data = origin1_y$q;
         end
+        if (load0$q | load1$q) begin
+            job_origin_x$write_data = stg_origin_x$q;
+            job_origin_y$write_data = stg_origin_y$q;
+        end
         job_bank$write_address = job_banks$tail_address;
         job_bank$write_enable = job;
         job_bank$head_address = job_banks$head_address;
@@ -979,60 +996,47 @@ module processing_element(clock,dir_we,dir_addr,dir_x,dir_y,origin_x,origin_y,no
         job_origin_y$pop = job_pop;
         screener$in_bank = job_bank$read_data == one1;
         sector_in = accept & cmd_sector;
-        new_first_x = first_x;
-        new_first_y = first_y;
-        new_last_x = last_x;
-        new_last_y = last_y;
-        new_origin_x = origin_x;
-        new_origin_y = origin_y;
-        new_normal_x = normal_x;
-        new_normal_y = normal_y;
-        if (pend$q) begin
-            new_first_x = pend_first_x$q;
-            new_first_y = pend_first_y$q;
-            new_last_x = pend_last_x$q;
-            new_last_y = pend_last_y$q;
-            new_origin_x = pend_origin_x$q;
-            new_origin_y = pend_origin_y$q;
-            new_normal_x = pend_normal_x$q;
-            new_normal_y = pend_normal_y$q;
+        if (~pend$q) begin
+            stg_first_x$d = first_x;
+            stg_first_y$d = first_y;
+            stg_last_x$d = last_x;
+            stg_last_y$d = last_y;
+            stg_origin_x$d = origin_x;
+            stg_origin_y$d = origin_y;
+            stg_normal_x$d = normal_x;
+            stg_normal_y$d = normal_y;
         end
         pend_next = pend$q;
         if (sector_in & other_busy$q) begin
             pend_next = 1'b1;
-            pend_first_x$d = first_x;
-            pend_first_y$d = first_y;
-            pend_last_x$d = last_x;
-            pend_last_y$d = last_y;
-            pend_origin_x$d = origin_x;
-            pend_origin_y$d = origin_y;
-            pend_normal_x$d = normal_x;
-            pend_normal_y$d = normal_y;
         end
+        take = (sector_in | pend$q) & ~other_busy$q;
         bank_next = bank$q;
-        if ((sector_in | pend$q) & ~other_busy$q) begin
+        if (take) begin
             pend_next = 1'b0;
             bank_next = ~bank$q;
-            if (bank$q) begin
-                first0_x$d = new_first_x;
-                first0_y$d = new_first_y;
-                last0_x$d = new_last_x;
-                last0_y$d = new_last_y;
-                origin0_x$d = new_origin_x;
-                origin0_y$d = new_origin_y;
-                normal0_x$d = new_normal_x;
-                normal0_y$d = new_normal_y;
-            end
-            else begin
-                first1_x$d = new_first_x;
-                first1_y$d = new_first_y;
-                last1_x$d = new_last_x;
-                last1_y$d = new_last_y;
-                origin1_x$d = new_origin_x;
-                origin1_y$d = new_origin_y;
-                normal1_x$d = new_normal_x;
-                normal1_y$d = new_normal_y;
-            end
+        end
+        load0$d = take & bank$q;
+        load1$d = take & ~bank$q;
+        if (load0$q) begin
+            first0_x$d = stg_first_x$q;
+            first0_y$d = stg_first_y$q;
+            last0_x$d = stg_last_x$q;
+            last0_y$d = stg_last_y$q;
+            origin0_x$d = stg_origin_x$q;
+            origin0_y$d = stg_origin_y$q;
+            normal0_x$d = stg_normal_x$q;
+            normal0_y$d = stg_normal_y$q;
+        end
+        if (load1$q) begin
+            first1_x$d = stg_first_x$q;
+            first1_y$d = stg_first_y$q;
+            last1_x$d = stg_last_x$q;
+            last1_y$d = stg_last_y$q;
+            origin1_x$d = stg_origin_x$q;
+            origin1_y$d = stg_origin_y$q;
+            normal1_x$d = stg_normal_x$q;
+            normal1_y$d = stg_normal_y$q;
         end
         pend$d = pend_next;
         bank$d = bank_next;
@@ -5910,6 +5914,44 @@ module processing_element$last1_y(d,q,clock);
 endmodule // processing_element$last1_y
 
 
+module processing_element$load0(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$load0
+
+
+module processing_element$load1(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$load1
+
+
 module processing_element$loader(clock,id_valid,id_ready,id,id_ready_next,mem_req,mem_addr,mem_valid,mem_ax,mem_ay,mem_bx,mem_by,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,loads);
     
     // Module arguments
@@ -6947,158 +6989,6 @@ module processing_element$pend(d,q,clock);
     end
           
 endmodule // processing_element$pend
-
-
-module processing_element$pend_first_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_first_x
-
-
-module processing_element$pend_first_y(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_first_y
-
-
-module processing_element$pend_last_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_last_x
-
-
-module processing_element$pend_last_y(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_last_y
-
-
-module processing_element$pend_normal_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_normal_x
-
-
-module processing_element$pend_normal_y(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_normal_y
-
-
-module processing_element$pend_origin_x(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_origin_x
-
-
-module processing_element$pend_origin_y(d,q,clock);
-    
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // processing_element$pend_origin_y
 
 
 module processing_element$queue(clock,in_valid,in_ready,in_id,in_ax,in_ay,in_bx,in_by,in_wx,in_wy,in_sh,in_first,in_count,in_retire,out_valid,out_ready,out_id,out_ax,out_ay,out_bx,out_by,out_wx,out_wy,out_sh,out_first,out_count,out_retire,occupied);
@@ -16042,6 +15932,158 @@ module processing_element$stall(d,q,clock);
     end
           
 endmodule // processing_element$stall
+
+
+module processing_element$stg_first_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_first_x
+
+
+module processing_element$stg_first_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_first_y
+
+
+module processing_element$stg_last_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_last_x
+
+
+module processing_element$stg_last_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_last_y
+
+
+module processing_element$stg_normal_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_normal_x
+
+
+module processing_element$stg_normal_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 18'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_normal_y
+
+
+module processing_element$stg_origin_x(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_origin_x
+
+
+module processing_element$stg_origin_y(d,q,clock);
+    
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$stg_origin_y
 
 
 module processing_element$tag_kind(clock,write_address,write_data,write_enable,head_address,next_address,pop,read_data);
