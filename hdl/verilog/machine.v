@@ -11422,25 +11422,11 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  thr_f_lo = 16'hff00;
     localparam  thr_l_hi = 16'h8000;
     localparam  thr_l_lo = 16'h100;
-    localparam  zero16 = 16'h0;
     localparam  zero14 = 14'b0;
-    localparam  zero8 = 8'h0;
-    localparam  zero4 = 4'h0;
-    localparam  zero2 = 2'b0;
     localparam  zero3 = 3'b0;
-    localparam  sh24 = 32'h18;
-    localparam  sh16 = 32'h10;
-    localparam  sh8 = 32'h8;
-    localparam  sh4 = 32'h4;
-    localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
-    localparam  c24_6 = 6'b11000;
-    localparam  c16_6 = 6'b10000;
-    localparam  c8_6 = 6'b1000;
-    localparam  c4_6 = 6'b100;
     localparam  c2_6 = 6'b10;
     localparam  c3_6 = 6'b11;
-    localparam  c1_6 = 6'b1;
     localparam  tag_pass = 3'b1;
     localparam  tag_negx = 3'b10;
     localparam  tag_negy = 3'b100;
@@ -11675,72 +11661,18 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [15:0] id4$d;
     wire  [15:0] id4$q;
     reg  id4$clock;
-    reg  [17:0] ax4$d;
-    wire  [17:0] ax4$q;
-    reg  ax4$clock;
-    reg  [17:0] ay4$d;
-    wire  [17:0] ay4$q;
-    reg  ay4$clock;
-    reg  [17:0] bx4$d;
-    wire  [17:0] bx4$q;
-    reg  bx4$clock;
-    reg  [17:0] by4$d;
-    wire  [17:0] by4$q;
-    reg  by4$clock;
-    reg  [17:0] absnx4$d;
-    wire  [17:0] absnx4$q;
-    reg  absnx4$clock;
-    reg  [17:0] absny4$d;
-    wire  [17:0] absny4$q;
-    reg  absny4$clock;
-    reg  negx4$d;
-    wire  negx4$q;
-    reg  negx4$clock;
-    reg  negy4$d;
-    wire  negy4$q;
-    reg  negy4$clock;
     reg  [31:0] p_aby4$d;
     wire  [31:0] p_aby4$q;
     reg  p_aby4$clock;
     reg  [31:0] p_abx4$d;
     wire  [31:0] p_abx4$q;
     reg  p_abx4$clock;
-    reg  [5:0] clz_n4$d;
-    wire  [5:0] clz_n4$q;
-    reg  clz_n4$clock;
-    reg  [31:0] norm_n4$d;
-    wire  [31:0] norm_n4$q;
-    reg  norm_n4$clock;
     reg  v5$d;
     wire  v5$q;
     reg  v5$clock;
     reg  [15:0] id5$d;
     wire  [15:0] id5$q;
     reg  id5$clock;
-    reg  [17:0] ax5$d;
-    wire  [17:0] ax5$q;
-    reg  ax5$clock;
-    reg  [17:0] ay5$d;
-    wire  [17:0] ay5$q;
-    reg  ay5$clock;
-    reg  [17:0] bx5$d;
-    wire  [17:0] bx5$q;
-    reg  bx5$clock;
-    reg  [17:0] by5$d;
-    wire  [17:0] by5$q;
-    reg  by5$clock;
-    reg  [17:0] absnx5$d;
-    wire  [17:0] absnx5$q;
-    reg  absnx5$clock;
-    reg  [17:0] absny5$d;
-    wire  [17:0] absny5$q;
-    reg  absny5$clock;
-    reg  negx5$d;
-    wire  negx5$q;
-    reg  negx5$clock;
-    reg  negy5$d;
-    wire  negy5$q;
-    reg  negy5$clock;
     reg  [31:0] k5$d;
     wire  [31:0] k5$q;
     reg  k5$clock;
@@ -11756,45 +11688,12 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] p_nby5$d;
     wire  [31:0] p_nby5$q;
     reg  p_nby5$clock;
-    reg  [5:0] clz_n5$d;
-    wire  [5:0] clz_n5$q;
-    reg  clz_n5$clock;
-    reg  [31:0] norm_n5$d;
-    wire  [31:0] norm_n5$q;
-    reg  norm_n5$clock;
     reg  v6$d;
     wire  v6$q;
     reg  v6$clock;
     reg  [15:0] id6$d;
     wire  [15:0] id6$q;
     reg  id6$clock;
-    reg  [17:0] ax6$d;
-    wire  [17:0] ax6$q;
-    reg  ax6$clock;
-    reg  [17:0] ay6$d;
-    wire  [17:0] ay6$q;
-    reg  ay6$clock;
-    reg  [17:0] bx6$d;
-    wire  [17:0] bx6$q;
-    reg  bx6$clock;
-    reg  [17:0] by6$d;
-    wire  [17:0] by6$q;
-    reg  by6$clock;
-    reg  [17:0] absnx6$d;
-    wire  [17:0] absnx6$q;
-    reg  absnx6$clock;
-    reg  [17:0] absny6$d;
-    wire  [17:0] absny6$q;
-    reg  absny6$clock;
-    reg  negx6$d;
-    wire  negx6$q;
-    reg  negx6$clock;
-    reg  negy6$d;
-    wire  negy6$q;
-    reg  negy6$clock;
-    reg  [31:0] k6$d;
-    wire  [31:0] k6$q;
-    reg  k6$clock;
     reg  k_nonpos6$d;
     wire  k_nonpos6$q;
     reg  k_nonpos6$clock;
@@ -11822,45 +11721,12 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] norm_n6$d;
     wire  [31:0] norm_n6$q;
     reg  norm_n6$clock;
-    reg  [5:0] clz_e6$d;
-    wire  [5:0] clz_e6$q;
-    reg  clz_e6$clock;
-    reg  [31:0] norm_e6$d;
-    wire  [31:0] norm_e6$q;
-    reg  norm_e6$clock;
     reg  v7$d;
     wire  v7$q;
     reg  v7$clock;
     reg  [15:0] id7$d;
     wire  [15:0] id7$q;
     reg  id7$clock;
-    reg  [17:0] ax7$d;
-    wire  [17:0] ax7$q;
-    reg  ax7$clock;
-    reg  [17:0] ay7$d;
-    wire  [17:0] ay7$q;
-    reg  ay7$clock;
-    reg  [17:0] bx7$d;
-    wire  [17:0] bx7$q;
-    reg  bx7$clock;
-    reg  [17:0] by7$d;
-    wire  [17:0] by7$q;
-    reg  by7$clock;
-    reg  [17:0] absnx7$d;
-    wire  [17:0] absnx7$q;
-    reg  absnx7$clock;
-    reg  [17:0] absny7$d;
-    wire  [17:0] absny7$q;
-    reg  absny7$clock;
-    reg  negx7$d;
-    wire  negx7$q;
-    reg  negx7$clock;
-    reg  negy7$d;
-    wire  negy7$q;
-    reg  negy7$clock;
-    reg  [31:0] k7$d;
-    wire  [31:0] k7$q;
-    reg  k7$clock;
     reg  [31:0] side_f7$d;
     wire  [31:0] side_f7$q;
     reg  side_f7$clock;
@@ -11873,12 +11739,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] norm_n7$d;
     wire  [31:0] norm_n7$q;
     reg  norm_n7$clock;
-    reg  [5:0] clz_e7$d;
-    wire  [5:0] clz_e7$q;
-    reg  clz_e7$clock;
-    reg  [31:0] norm_e7$d;
-    wire  [31:0] norm_e7$q;
-    reg  norm_e7$clock;
     reg  backward7$d;
     wire  backward7$q;
     reg  backward7$clock;
@@ -11921,33 +11781,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [15:0] id8$d;
     wire  [15:0] id8$q;
     reg  id8$clock;
-    reg  [17:0] ax8$d;
-    wire  [17:0] ax8$q;
-    reg  ax8$clock;
-    reg  [17:0] ay8$d;
-    wire  [17:0] ay8$q;
-    reg  ay8$clock;
-    reg  [17:0] bx8$d;
-    wire  [17:0] bx8$q;
-    reg  bx8$clock;
-    reg  [17:0] by8$d;
-    wire  [17:0] by8$q;
-    reg  by8$clock;
-    reg  [17:0] absnx8$d;
-    wire  [17:0] absnx8$q;
-    reg  absnx8$clock;
-    reg  [17:0] absny8$d;
-    wire  [17:0] absny8$q;
-    reg  absny8$clock;
-    reg  negx8$d;
-    wire  negx8$q;
-    reg  negx8$clock;
-    reg  negy8$d;
-    wire  negy8$q;
-    reg  negy8$clock;
-    reg  [31:0] k8$d;
-    wire  [31:0] k8$q;
-    reg  k8$clock;
     reg  [5:0] s0_8$d;
     wire  [5:0] s0_8$q;
     reg  s0_8$clock;
@@ -11993,6 +11826,41 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  near9$d;
     wire  near9$q;
     reg  near9$clock;
+    reg  c_ax$clock;
+    reg  [17:0] c_ax$d;
+    wire  [17:0] c_ax$q;
+    reg  c_ay$clock;
+    reg  [17:0] c_ay$d;
+    wire  [17:0] c_ay$q;
+    reg  c_bx$clock;
+    reg  [17:0] c_bx$d;
+    wire  [17:0] c_bx$q;
+    reg  c_by$clock;
+    reg  [17:0] c_by$d;
+    wire  [17:0] c_by$q;
+    reg  c_absnx$clock;
+    reg  [17:0] c_absnx$d;
+    wire  [17:0] c_absnx$q;
+    reg  c_absny$clock;
+    reg  [17:0] c_absny$d;
+    wire  [17:0] c_absny$q;
+    reg  c_negx$clock;
+    reg  c_negx$d;
+    wire  c_negx$q;
+    reg  c_negy$clock;
+    reg  c_negy$d;
+    wire  c_negy$q;
+    reg  c_k$clock;
+    reg  [31:0] c_k$d;
+    wire  [31:0] c_k$q;
+    reg  lz_n$clock;
+    reg  [31:0] lz_n$value;
+    wire  [31:0] lz_n$norm;
+    wire  [5:0] lz_n$clz;
+    reg  lz_e$clock;
+    reg  [31:0] lz_e$value;
+    wire  [31:0] lz_e$norm;
+    wire  [5:0] lz_e$clz;
     reg  divider$clock;
     reg  [31:0] divider$rx;
     reg  [31:0] divider$ry;
@@ -12045,42 +11913,10 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [17:0] absnx;
     reg  [17:0] absny;
     reg  [17:0] nmax;
-    reg  [31:0] zn0;
-    reg  [31:0] zn1;
-    reg  [31:0] zn2;
-    reg  [5:0] cn16_n;
-    reg  [5:0] cn8_n;
-    reg  [15:0] top16_n;
-    reg  [7:0] top8_n;
     reg  [31:0] kk;
-    reg  [31:0] zn3;
-    reg  [31:0] zn4;
-    reg  [31:0] zn5;
-    reg  [5:0] cn4_n;
-    reg  [5:0] cn2_n;
-    reg  [5:0] cn1_n;
-    reg  [3:0] top4_n;
-    reg  [1:0] top2_n;
     reg  [31:0] ha;
     reg  [31:0] hb;
     reg  [31:0] k2;
-    reg  z16_e;
-    reg  z8hi_e;
-    reg  z8mid_e;
-    reg  [31:0] ze_lo;
-    reg  [31:0] ze_hi;
-    reg  [5:0] ce_lo;
-    reg  [5:0] ce_hi;
-    reg  [31:0] ze2;
-    reg  [5:0] ce_e;
-    reg  [31:0] ze3;
-    reg  [31:0] ze4;
-    reg  [31:0] ze5;
-    reg  [5:0] ce4_e;
-    reg  [5:0] ce2_e;
-    reg  [5:0] ce1_e;
-    reg  [3:0] top4_e;
-    reg  [1:0] top2_e;
     reg  ha_pos;
     reg  hb_pos;
     reg  is_backward;
@@ -12454,46 +12290,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(id4$q),
         .clock(id4$clock)
     );
-    machine$pes$0$screener$ax4 ax4(
-        .d(ax4$d),
-        .q(ax4$q),
-        .clock(ax4$clock)
-    );
-    machine$pes$0$screener$ay4 ay4(
-        .d(ay4$d),
-        .q(ay4$q),
-        .clock(ay4$clock)
-    );
-    machine$pes$0$screener$bx4 bx4(
-        .d(bx4$d),
-        .q(bx4$q),
-        .clock(bx4$clock)
-    );
-    machine$pes$0$screener$by4 by4(
-        .d(by4$d),
-        .q(by4$q),
-        .clock(by4$clock)
-    );
-    machine$pes$0$screener$absnx4 absnx4(
-        .d(absnx4$d),
-        .q(absnx4$q),
-        .clock(absnx4$clock)
-    );
-    machine$pes$0$screener$absny4 absny4(
-        .d(absny4$d),
-        .q(absny4$q),
-        .clock(absny4$clock)
-    );
-    machine$pes$0$screener$negx4 negx4(
-        .d(negx4$d),
-        .q(negx4$q),
-        .clock(negx4$clock)
-    );
-    machine$pes$0$screener$negy4 negy4(
-        .d(negy4$d),
-        .q(negy4$q),
-        .clock(negy4$clock)
-    );
     machine$pes$0$screener$p_aby4 p_aby4(
         .d(p_aby4$d),
         .q(p_aby4$q),
@@ -12504,16 +12300,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(p_abx4$q),
         .clock(p_abx4$clock)
     );
-    machine$pes$0$screener$clz_n4 clz_n4(
-        .d(clz_n4$d),
-        .q(clz_n4$q),
-        .clock(clz_n4$clock)
-    );
-    machine$pes$0$screener$norm_n4 norm_n4(
-        .d(norm_n4$d),
-        .q(norm_n4$q),
-        .clock(norm_n4$clock)
-    );
     machine$pes$0$screener$v5 v5(
         .d(v5$d),
         .q(v5$q),
@@ -12523,46 +12309,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id5$d),
         .q(id5$q),
         .clock(id5$clock)
-    );
-    machine$pes$0$screener$ax5 ax5(
-        .d(ax5$d),
-        .q(ax5$q),
-        .clock(ax5$clock)
-    );
-    machine$pes$0$screener$ay5 ay5(
-        .d(ay5$d),
-        .q(ay5$q),
-        .clock(ay5$clock)
-    );
-    machine$pes$0$screener$bx5 bx5(
-        .d(bx5$d),
-        .q(bx5$q),
-        .clock(bx5$clock)
-    );
-    machine$pes$0$screener$by5 by5(
-        .d(by5$d),
-        .q(by5$q),
-        .clock(by5$clock)
-    );
-    machine$pes$0$screener$absnx5 absnx5(
-        .d(absnx5$d),
-        .q(absnx5$q),
-        .clock(absnx5$clock)
-    );
-    machine$pes$0$screener$absny5 absny5(
-        .d(absny5$d),
-        .q(absny5$q),
-        .clock(absny5$clock)
-    );
-    machine$pes$0$screener$negx5 negx5(
-        .d(negx5$d),
-        .q(negx5$q),
-        .clock(negx5$clock)
-    );
-    machine$pes$0$screener$negy5 negy5(
-        .d(negy5$d),
-        .q(negy5$q),
-        .clock(negy5$clock)
     );
     machine$pes$0$screener$k5 k5(
         .d(k5$d),
@@ -12589,16 +12335,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(p_nby5$q),
         .clock(p_nby5$clock)
     );
-    machine$pes$0$screener$clz_n5 clz_n5(
-        .d(clz_n5$d),
-        .q(clz_n5$q),
-        .clock(clz_n5$clock)
-    );
-    machine$pes$0$screener$norm_n5 norm_n5(
-        .d(norm_n5$d),
-        .q(norm_n5$q),
-        .clock(norm_n5$clock)
-    );
     machine$pes$0$screener$v6 v6(
         .d(v6$d),
         .q(v6$q),
@@ -12608,51 +12344,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id6$d),
         .q(id6$q),
         .clock(id6$clock)
-    );
-    machine$pes$0$screener$ax6 ax6(
-        .d(ax6$d),
-        .q(ax6$q),
-        .clock(ax6$clock)
-    );
-    machine$pes$0$screener$ay6 ay6(
-        .d(ay6$d),
-        .q(ay6$q),
-        .clock(ay6$clock)
-    );
-    machine$pes$0$screener$bx6 bx6(
-        .d(bx6$d),
-        .q(bx6$q),
-        .clock(bx6$clock)
-    );
-    machine$pes$0$screener$by6 by6(
-        .d(by6$d),
-        .q(by6$q),
-        .clock(by6$clock)
-    );
-    machine$pes$0$screener$absnx6 absnx6(
-        .d(absnx6$d),
-        .q(absnx6$q),
-        .clock(absnx6$clock)
-    );
-    machine$pes$0$screener$absny6 absny6(
-        .d(absny6$d),
-        .q(absny6$q),
-        .clock(absny6$clock)
-    );
-    machine$pes$0$screener$negx6 negx6(
-        .d(negx6$d),
-        .q(negx6$q),
-        .clock(negx6$clock)
-    );
-    machine$pes$0$screener$negy6 negy6(
-        .d(negy6$d),
-        .q(negy6$q),
-        .clock(negy6$clock)
-    );
-    machine$pes$0$screener$k6 k6(
-        .d(k6$d),
-        .q(k6$q),
-        .clock(k6$clock)
     );
     machine$pes$0$screener$k_nonpos6 k_nonpos6(
         .d(k_nonpos6$d),
@@ -12699,16 +12390,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(norm_n6$q),
         .clock(norm_n6$clock)
     );
-    machine$pes$0$screener$clz_e6 clz_e6(
-        .d(clz_e6$d),
-        .q(clz_e6$q),
-        .clock(clz_e6$clock)
-    );
-    machine$pes$0$screener$norm_e6 norm_e6(
-        .d(norm_e6$d),
-        .q(norm_e6$q),
-        .clock(norm_e6$clock)
-    );
     machine$pes$0$screener$v7 v7(
         .d(v7$d),
         .q(v7$q),
@@ -12718,51 +12399,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id7$d),
         .q(id7$q),
         .clock(id7$clock)
-    );
-    machine$pes$0$screener$ax7 ax7(
-        .d(ax7$d),
-        .q(ax7$q),
-        .clock(ax7$clock)
-    );
-    machine$pes$0$screener$ay7 ay7(
-        .d(ay7$d),
-        .q(ay7$q),
-        .clock(ay7$clock)
-    );
-    machine$pes$0$screener$bx7 bx7(
-        .d(bx7$d),
-        .q(bx7$q),
-        .clock(bx7$clock)
-    );
-    machine$pes$0$screener$by7 by7(
-        .d(by7$d),
-        .q(by7$q),
-        .clock(by7$clock)
-    );
-    machine$pes$0$screener$absnx7 absnx7(
-        .d(absnx7$d),
-        .q(absnx7$q),
-        .clock(absnx7$clock)
-    );
-    machine$pes$0$screener$absny7 absny7(
-        .d(absny7$d),
-        .q(absny7$q),
-        .clock(absny7$clock)
-    );
-    machine$pes$0$screener$negx7 negx7(
-        .d(negx7$d),
-        .q(negx7$q),
-        .clock(negx7$clock)
-    );
-    machine$pes$0$screener$negy7 negy7(
-        .d(negy7$d),
-        .q(negy7$q),
-        .clock(negy7$clock)
-    );
-    machine$pes$0$screener$k7 k7(
-        .d(k7$d),
-        .q(k7$q),
-        .clock(k7$clock)
     );
     machine$pes$0$screener$side_f7 side_f7(
         .d(side_f7$d),
@@ -12783,16 +12419,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(norm_n7$d),
         .q(norm_n7$q),
         .clock(norm_n7$clock)
-    );
-    machine$pes$0$screener$clz_e7 clz_e7(
-        .d(clz_e7$d),
-        .q(clz_e7$q),
-        .clock(clz_e7$clock)
-    );
-    machine$pes$0$screener$norm_e7 norm_e7(
-        .d(norm_e7$d),
-        .q(norm_e7$q),
-        .clock(norm_e7$clock)
     );
     machine$pes$0$screener$backward7 backward7(
         .d(backward7$d),
@@ -12863,51 +12489,6 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id8$d),
         .q(id8$q),
         .clock(id8$clock)
-    );
-    machine$pes$0$screener$ax8 ax8(
-        .d(ax8$d),
-        .q(ax8$q),
-        .clock(ax8$clock)
-    );
-    machine$pes$0$screener$ay8 ay8(
-        .d(ay8$d),
-        .q(ay8$q),
-        .clock(ay8$clock)
-    );
-    machine$pes$0$screener$bx8 bx8(
-        .d(bx8$d),
-        .q(bx8$q),
-        .clock(bx8$clock)
-    );
-    machine$pes$0$screener$by8 by8(
-        .d(by8$d),
-        .q(by8$q),
-        .clock(by8$clock)
-    );
-    machine$pes$0$screener$absnx8 absnx8(
-        .d(absnx8$d),
-        .q(absnx8$q),
-        .clock(absnx8$clock)
-    );
-    machine$pes$0$screener$absny8 absny8(
-        .d(absny8$d),
-        .q(absny8$q),
-        .clock(absny8$clock)
-    );
-    machine$pes$0$screener$negx8 negx8(
-        .d(negx8$d),
-        .q(negx8$q),
-        .clock(negx8$clock)
-    );
-    machine$pes$0$screener$negy8 negy8(
-        .d(negy8$d),
-        .q(negy8$q),
-        .clock(negy8$clock)
-    );
-    machine$pes$0$screener$k8 k8(
-        .d(k8$d),
-        .q(k8$q),
-        .clock(k8$clock)
     );
     machine$pes$0$screener$s0_8 s0_8(
         .d(s0_8$d),
@@ -12983,6 +12564,63 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(near9$d),
         .q(near9$q),
         .clock(near9$clock)
+    );
+    machine$pes$0$screener$c_ax c_ax(
+        .clock(c_ax$clock),
+        .d(c_ax$d),
+        .q(c_ax$q)
+    );
+    machine$pes$0$screener$c_ay c_ay(
+        .clock(c_ay$clock),
+        .d(c_ay$d),
+        .q(c_ay$q)
+    );
+    machine$pes$0$screener$c_bx c_bx(
+        .clock(c_bx$clock),
+        .d(c_bx$d),
+        .q(c_bx$q)
+    );
+    machine$pes$0$screener$c_by c_by(
+        .clock(c_by$clock),
+        .d(c_by$d),
+        .q(c_by$q)
+    );
+    machine$pes$0$screener$c_absnx c_absnx(
+        .clock(c_absnx$clock),
+        .d(c_absnx$d),
+        .q(c_absnx$q)
+    );
+    machine$pes$0$screener$c_absny c_absny(
+        .clock(c_absny$clock),
+        .d(c_absny$d),
+        .q(c_absny$q)
+    );
+    machine$pes$0$screener$c_negx c_negx(
+        .clock(c_negx$clock),
+        .d(c_negx$d),
+        .q(c_negx$q)
+    );
+    machine$pes$0$screener$c_negy c_negy(
+        .clock(c_negy$clock),
+        .d(c_negy$d),
+        .q(c_negy$q)
+    );
+    machine$pes$0$screener$c_k c_k(
+        .clock(c_k$clock),
+        .d(c_k$d),
+        .q(c_k$q)
+    );
+    machine$pes$0$screener$lz_n lz_n(
+        .clock(lz_n$clock),
+        .value(lz_n$value),
+        .norm(lz_n$norm),
+        .clz(lz_n$clz)
+    );
+    machine$pes$0$screener$lz_e lz_e(
+        .clock(lz_e$clock),
+        .value(lz_e$value),
+        .norm(lz_e$norm),
+        .clz(lz_e$clz)
     );
     machine$pes$0$screener$divider divider(
         .clock(divider$clock),
@@ -13065,46 +12703,17 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         nmax3$clock = clock;
         v4$clock = clock;
         id4$clock = clock;
-        ax4$clock = clock;
-        ay4$clock = clock;
-        bx4$clock = clock;
-        by4$clock = clock;
-        absnx4$clock = clock;
-        absny4$clock = clock;
-        negx4$clock = clock;
-        negy4$clock = clock;
         p_aby4$clock = clock;
         p_abx4$clock = clock;
-        clz_n4$clock = clock;
-        norm_n4$clock = clock;
         v5$clock = clock;
         id5$clock = clock;
-        ax5$clock = clock;
-        ay5$clock = clock;
-        bx5$clock = clock;
-        by5$clock = clock;
-        absnx5$clock = clock;
-        absny5$clock = clock;
-        negx5$clock = clock;
-        negy5$clock = clock;
         k5$clock = clock;
         p_nax5$clock = clock;
         p_nay5$clock = clock;
         p_nbx5$clock = clock;
         p_nby5$clock = clock;
-        clz_n5$clock = clock;
-        norm_n5$clock = clock;
         v6$clock = clock;
         id6$clock = clock;
-        ax6$clock = clock;
-        ay6$clock = clock;
-        bx6$clock = clock;
-        by6$clock = clock;
-        absnx6$clock = clock;
-        absny6$clock = clock;
-        negx6$clock = clock;
-        negy6$clock = clock;
-        k6$clock = clock;
         k_nonpos6$clock = clock;
         ha6$clock = clock;
         hb6$clock = clock;
@@ -13114,40 +12723,18 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         p_lax6$clock = clock;
         clz_n6$clock = clock;
         norm_n6$clock = clock;
-        clz_e6$clock = clock;
-        norm_e6$clock = clock;
         v7$clock = clock;
         id7$clock = clock;
-        ax7$clock = clock;
-        ay7$clock = clock;
-        bx7$clock = clock;
-        by7$clock = clock;
-        absnx7$clock = clock;
-        absny7$clock = clock;
-        negx7$clock = clock;
-        negy7$clock = clock;
-        k7$clock = clock;
         side_f7$clock = clock;
         side_l7$clock = clock;
         clz_n7$clock = clock;
         norm_n7$clock = clock;
-        clz_e7$clock = clock;
-        norm_e7$clock = clock;
         backward7$clock = clock;
         back_facing7$clock = clock;
         ha_open7$clock = clock;
         hb_open7$clock = clock;
         v8$clock = clock;
         id8$clock = clock;
-        ax8$clock = clock;
-        ay8$clock = clock;
-        bx8$clock = clock;
-        by8$clock = clock;
-        absnx8$clock = clock;
-        absny8$clock = clock;
-        negx8$clock = clock;
-        negy8$clock = clock;
-        k8$clock = clock;
         s0_8$clock = clock;
         s0_m1_8$clock = clock;
         below8$clock = clock;
@@ -13215,46 +12802,17 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         nmax3$d = nmax3$q;
         v4$d = v4$q;
         id4$d = id4$q;
-        ax4$d = ax4$q;
-        ay4$d = ay4$q;
-        bx4$d = bx4$q;
-        by4$d = by4$q;
-        absnx4$d = absnx4$q;
-        absny4$d = absny4$q;
-        negx4$d = negx4$q;
-        negy4$d = negy4$q;
         p_aby4$d = p_aby4$q;
         p_abx4$d = p_abx4$q;
-        clz_n4$d = clz_n4$q;
-        norm_n4$d = norm_n4$q;
         v5$d = v5$q;
         id5$d = id5$q;
-        ax5$d = ax5$q;
-        ay5$d = ay5$q;
-        bx5$d = bx5$q;
-        by5$d = by5$q;
-        absnx5$d = absnx5$q;
-        absny5$d = absny5$q;
-        negx5$d = negx5$q;
-        negy5$d = negy5$q;
         k5$d = k5$q;
         p_nax5$d = p_nax5$q;
         p_nay5$d = p_nay5$q;
         p_nbx5$d = p_nbx5$q;
         p_nby5$d = p_nby5$q;
-        clz_n5$d = clz_n5$q;
-        norm_n5$d = norm_n5$q;
         v6$d = v6$q;
         id6$d = id6$q;
-        ax6$d = ax6$q;
-        ay6$d = ay6$q;
-        bx6$d = bx6$q;
-        by6$d = by6$q;
-        absnx6$d = absnx6$q;
-        absny6$d = absny6$q;
-        negx6$d = negx6$q;
-        negy6$d = negy6$q;
-        k6$d = k6$q;
         k_nonpos6$d = k_nonpos6$q;
         ha6$d = ha6$q;
         hb6$d = hb6$q;
@@ -13264,40 +12822,18 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         p_lax6$d = p_lax6$q;
         clz_n6$d = clz_n6$q;
         norm_n6$d = norm_n6$q;
-        clz_e6$d = clz_e6$q;
-        norm_e6$d = norm_e6$q;
         v7$d = v7$q;
         id7$d = id7$q;
-        ax7$d = ax7$q;
-        ay7$d = ay7$q;
-        bx7$d = bx7$q;
-        by7$d = by7$q;
-        absnx7$d = absnx7$q;
-        absny7$d = absny7$q;
-        negx7$d = negx7$q;
-        negy7$d = negy7$q;
-        k7$d = k7$q;
         side_f7$d = side_f7$q;
         side_l7$d = side_l7$q;
         clz_n7$d = clz_n7$q;
         norm_n7$d = norm_n7$q;
-        clz_e7$d = clz_e7$q;
-        norm_e7$d = norm_e7$q;
         backward7$d = backward7$q;
         back_facing7$d = back_facing7$q;
         ha_open7$d = ha_open7$q;
         hb_open7$d = hb_open7$q;
         v8$d = v8$q;
         id8$d = id8$q;
-        ax8$d = ax8$q;
-        ay8$d = ay8$q;
-        bx8$d = bx8$q;
-        by8$d = by8$q;
-        absnx8$d = absnx8$q;
-        absny8$d = absny8$q;
-        negx8$d = negx8$q;
-        negy8$d = negy8$q;
-        k8$d = k8$q;
         s0_8$d = s0_8$q;
         s0_m1_8$d = s0_m1_8$q;
         below8$d = below8$q;
@@ -13337,7 +12873,18 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         m_fbx$clock = clock;
         m_lay$clock = clock;
         m_lax$clock = clock;
+        c_ax$clock = clock;
+        c_ay$clock = clock;
+        c_bx$clock = clock;
+        c_by$clock = clock;
+        c_absnx$clock = clock;
+        c_absny$clock = clock;
+        c_negx$clock = clock;
+        c_negy$clock = clock;
+        c_k$clock = clock;
         divider$clock = clock;
+        lz_n$clock = clock;
+        lz_e$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
         lane_ay$clock = clock;
@@ -13430,93 +12977,28 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         m_lax$b = ax3$q;
         p_aby4$d = m_aby$p;
         p_abx4$d = m_abx$p;
-        zn0 = ((nmax3$q) & 32'hffffffff);
-        top16_n = zn0[(32'h10)+:(16)];
-        zn1 = zn0;
-        cn16_n = zero6;
-        if (top16_n == zero16) begin
-            zn1 = zn0 << sh16;
-            cn16_n = c16_6;
-        end
-        top8_n = zn1[(32'h18)+:(8)];
-        zn2 = zn1;
-        cn8_n = zero6;
-        if (top8_n == zero8) begin
-            zn2 = zn1 << sh8;
-            cn8_n = c8_6;
-        end
+        lz_n$value = ((nmax3$q) & 32'hffffffff);
+        c_ax$d = ax3$q;
+        c_ay$d = ay3$q;
+        c_bx$d = bx3$q;
+        c_by$d = by3$q;
+        c_absnx$d = absnx3$q;
+        c_absny$d = absny3$q;
+        c_negx$d = negx3$q;
+        c_negy$d = negy3$q;
         v4$d = v3$q;
         id4$d = id3$q;
-        ax4$d = ax3$q;
-        ay4$d = ay3$q;
-        bx4$d = bx3$q;
-        by4$d = by3$q;
-        absnx4$d = absnx3$q;
-        absny4$d = absny3$q;
-        negx4$d = negx3$q;
-        negy4$d = negy3$q;
-        clz_n4$d = cn16_n | cn8_n;
-        norm_n4$d = zn2;
         kk = p_aby4$q - p_abx4$q;
         p_nax5$d = m_nax$p;
         p_nay5$d = m_nay$p;
         p_nbx5$d = m_nbx$p;
         p_nby5$d = m_nby$p;
-        top4_n = norm_n4$q[(32'h1c)+:(4)];
-        zn3 = norm_n4$q;
-        cn4_n = zero6;
-        if (top4_n == zero4) begin
-            zn3 = norm_n4$q << sh4;
-            cn4_n = c4_6;
-        end
-        top2_n = zn3[(32'h1e)+:(2)];
-        zn4 = zn3;
-        cn2_n = zero6;
-        if (top2_n == zero2) begin
-            zn4 = zn3 << sh2;
-            cn2_n = c2_6;
-        end
-        zn5 = zn4;
-        cn1_n = zero6;
-        if (~zn4[32'h1f]) begin
-            zn5 = zn4 << sh1;
-            cn1_n = c1_6;
-        end
         v5$d = v4$q;
         id5$d = id4$q;
-        ax5$d = ax4$q;
-        ay5$d = ay4$q;
-        bx5$d = bx4$q;
-        by5$d = by4$q;
-        absnx5$d = absnx4$q;
-        absny5$d = absny4$q;
-        negx5$d = negx4$q;
-        negy5$d = negy4$q;
         k5$d = kk;
-        clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
-        norm_n5$d = zn5;
         k2 = k5$q << sh1;
-        z16_e = k2[(32'h10)+:(16)] == zero16;
-        z8hi_e = k2[(32'h18)+:(8)] == zero8;
-        z8mid_e = k2[(32'h8)+:(8)] == zero8;
-        ze_hi = k2;
-        ce_hi = zero6;
-        if (z8hi_e) begin
-            ze_hi = k2 << sh8;
-            ce_hi = c8_6;
-        end
-        ze_lo = k2 << sh16;
-        ce_lo = c16_6;
-        if (z8mid_e) begin
-            ze_lo = k2 << sh24;
-            ce_lo = c24_6;
-        end
-        ze2 = ze_hi;
-        ce_e = ce_hi;
-        if (z16_e) begin
-            ze2 = ze_lo;
-            ce_e = ce_lo;
-        end
+        lz_e$value = k2;
+        c_k$d = k5$q;
         ha = p_nax5$q + p_nay5$q;
         hb = p_nbx5$q + p_nby5$q;
         p_fby6$d = m_fby$p;
@@ -13525,42 +13007,11 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         p_lax6$d = m_lax$p;
         v6$d = v5$q;
         id6$d = id5$q;
-        ax6$d = ax5$q;
-        ay6$d = ay5$q;
-        bx6$d = bx5$q;
-        by6$d = by5$q;
-        absnx6$d = absnx5$q;
-        absny6$d = absny5$q;
-        negx6$d = negx5$q;
-        negy6$d = negy5$q;
-        k6$d = k5$q;
         k_nonpos6$d = k5$q[32'h1f] | (k5$q == zero32);
         ha6$d = ha;
         hb6$d = hb;
-        clz_n6$d = clz_n5$q;
-        norm_n6$d = norm_n5$q;
-        clz_e6$d = ce_e;
-        norm_e6$d = ze2;
-        top4_e = norm_e6$q[(32'h1c)+:(4)];
-        ze3 = norm_e6$q;
-        ce4_e = zero6;
-        if (top4_e == zero4) begin
-            ze3 = norm_e6$q << sh4;
-            ce4_e = c4_6;
-        end
-        top2_e = ze3[(32'h1e)+:(2)];
-        ze4 = ze3;
-        ce2_e = zero6;
-        if (top2_e == zero2) begin
-            ze4 = ze3 << sh2;
-            ce2_e = c2_6;
-        end
-        ze5 = ze4;
-        ce1_e = zero6;
-        if (~ze4[32'h1f]) begin
-            ze5 = ze4 << sh1;
-            ce1_e = c1_6;
-        end
+        clz_n6$d = lz_n$clz;
+        norm_n6$d = lz_n$norm;
         ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
         hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
         is_backward = ~ha_pos & ~hb_pos;
@@ -13569,32 +13020,21 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         side_l = p_lay6$q - p_lax6$q;
         v7$d = v6$q;
         id7$d = id6$q;
-        ax7$d = ax6$q;
-        ay7$d = ay6$q;
-        bx7$d = bx6$q;
-        by7$d = by6$q;
-        absnx7$d = absnx6$q;
-        absny7$d = absny6$q;
-        negx7$d = negx6$q;
-        negy7$d = negy6$q;
-        k7$d = k6$q;
         clz_n7$d = clz_n6$q;
         clz_n2_7$d = clz_n6$q + c2_6;
         clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
-        clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
-        norm_e7$d = ze5;
         backward7$d = is_backward;
         back_facing7$d = is_back_facing;
         ha_open7$d = ha_pos & ~k_nonpos6$q;
         hb_open7$d = hb_pos & ~k_nonpos6$q;
         side_f7$d = side_f;
         side_l7$d = side_l;
-        s0 = clz_n7$q - clz_e7$q;
-        s0_m1 = clz_n7$q + ~clz_e7$q;
+        s0 = clz_n7$q - lz_e$clz;
+        s0_m1 = clz_n7$q + ~lz_e$clz;
         n_hi = norm_n7$q[(32'he)+:(18)];
-        e_hi = norm_e7$q[(32'he)+:(18)];
-        e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
+        e_hi = lz_e$norm[(32'he)+:(18)];
+        e_lo_nz = lz_e$norm[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
@@ -13608,23 +13048,14 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         hb_open8$d = hb_open7$q;
         v8$d = v7$q;
         id8$d = id7$q;
-        ax8$d = ax7$q;
-        ay8$d = ay7$q;
-        bx8$d = bx7$q;
-        by8$d = by7$q;
-        absnx8$d = absnx7$q;
-        absny8$d = absny7$q;
-        negx8$d = negx7$q;
-        negy8$d = negy7$q;
-        k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        sp3_8$d = clz_n3_7$q - clz_e7$q;
-        near_a8$d = clz_n3_7$q < clz_e7$q;
-        near_b8$d = clz_n2_7$q < clz_e7$q;
+        sp3_8$d = clz_n3_7$q - lz_e$clz;
+        near_a8$d = clz_n3_7$q < lz_e$clz;
+        near_b8$d = clz_n2_7$q < lz_e$clz;
         outside8 = (hb_open8$q & (f_hi_lt8$q | (f_hi_eq8$q & f_lo_lt8$q))) | (ha_open8$q & (l_hi_gt8$q | (l_hi_eq8$q & l_lo_gt8$q)));
         exp8 = s0_m1_8$q;
         if (below8$q) begin
@@ -13662,8 +13093,8 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        wide_x = ((absnx8$q) & 36'hfffffffff) << sp3_8$q;
-        wide_y = ((absny8$q) & 36'hfffffffff) << sp3_8$q;
+        wide_x = ((c_absnx$q) & 36'hfffffffff) << sp3_8$q;
+        wide_y = ((c_absny$q) & 36'hfffffffff) << sp3_8$q;
         dividend_x = wide_x[(32'h1)+:(35)];
         dividend_y = wide_y[(32'h1)+:(35)];
         if (below8$q) begin
@@ -13674,17 +13105,17 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         divider$ry = dividend_y[(32'h3)+:(32)];
         divider$fx = dividend_x[(32'h0)+:(3)];
         divider$fy = dividend_y[(32'h0)+:(3)];
-        divider$k = k8$q;
+        divider$k = c_k$q;
         tag_p = zero3;
         if (reserve) begin
             tag_p = tag_pass;
         end
         tag_x = zero3;
-        if (negx8$q) begin
+        if (c_negx$q) begin
             tag_x = tag_negx;
         end
         tag_y = zero3;
-        if (negy8$q) begin
+        if (c_negy$q) begin
             tag_y = tag_negy;
         end
         divider$tag = tag_p | tag_x | tag_y;
@@ -13695,10 +13126,10 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         lane_by$write_address = res_ptr$q;
         lane_sh$write_address = res_ptr$q;
         lane_id$write_data = id8$q;
-        lane_ax$write_data = ax8$q;
-        lane_ay$write_data = ay8$q;
-        lane_bx$write_data = bx8$q;
-        lane_by$write_data = by8$q;
+        lane_ax$write_data = c_ax$q;
+        lane_ay$write_data = c_ay$q;
+        lane_bx$write_data = c_bx$q;
+        lane_by$write_data = c_by$q;
         sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
             sh_pass = ((exp8) & 7'h7f) | pass_flag;
@@ -13818,101 +13249,6 @@ module machine$pes$0$screener$absnx3(d,q,clock);
 endmodule // machine$pes$0$screener$absnx3
 
 
-module machine$pes$0$screener$absnx4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absnx4
-
-
-module machine$pes$0$screener$absnx5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absnx5
-
-
-module machine$pes$0$screener$absnx6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absnx6
-
-
-module machine$pes$0$screener$absnx7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absnx7
-
-
-module machine$pes$0$screener$absnx8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absnx8
-
-
 module machine$pes$0$screener$absny2(d,q,clock);
     
     // Module arguments
@@ -13949,101 +13285,6 @@ module machine$pes$0$screener$absny3(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$absny3
-
-
-module machine$pes$0$screener$absny4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absny4
-
-
-module machine$pes$0$screener$absny5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absny5
-
-
-module machine$pes$0$screener$absny6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absny6
-
-
-module machine$pes$0$screener$absny7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absny7
-
-
-module machine$pes$0$screener$absny8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$absny8
 
 
 module machine$pes$0$screener$ax1(d,q,clock);
@@ -14103,101 +13344,6 @@ module machine$pes$0$screener$ax3(d,q,clock);
 endmodule // machine$pes$0$screener$ax3
 
 
-module machine$pes$0$screener$ax4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ax4
-
-
-module machine$pes$0$screener$ax5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ax5
-
-
-module machine$pes$0$screener$ax6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ax6
-
-
-module machine$pes$0$screener$ax7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ax7
-
-
-module machine$pes$0$screener$ax8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ax8
-
-
 module machine$pes$0$screener$ay1(d,q,clock);
     
     // Module arguments
@@ -14253,101 +13399,6 @@ module machine$pes$0$screener$ay3(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$ay3
-
-
-module machine$pes$0$screener$ay4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ay4
-
-
-module machine$pes$0$screener$ay5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ay5
-
-
-module machine$pes$0$screener$ay6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ay6
-
-
-module machine$pes$0$screener$ay7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ay7
-
-
-module machine$pes$0$screener$ay8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$ay8
 
 
 module machine$pes$0$screener$back_facing7(d,q,clock);
@@ -14597,101 +13648,6 @@ module machine$pes$0$screener$bx3(d,q,clock);
 endmodule // machine$pes$0$screener$bx3
 
 
-module machine$pes$0$screener$bx4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$bx4
-
-
-module machine$pes$0$screener$bx5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$bx5
-
-
-module machine$pes$0$screener$bx6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$bx6
-
-
-module machine$pes$0$screener$bx7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$bx7
-
-
-module machine$pes$0$screener$bx8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$bx8
-
-
 module machine$pes$0$screener$by1(d,q,clock);
     
     // Module arguments
@@ -14749,99 +13705,120 @@ module machine$pes$0$screener$by3(d,q,clock);
 endmodule // machine$pes$0$screener$by3
 
 
-module machine$pes$0$screener$by4(d,q,clock);
+module machine$pes$0$screener$c_absnx(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$0$screener$by4
+endmodule // machine$pes$0$screener$c_absnx
 
 
-module machine$pes$0$screener$by5(d,q,clock);
+module machine$pes$0$screener$c_absny(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$0$screener$by5
+endmodule // machine$pes$0$screener$c_absny
 
 
-module machine$pes$0$screener$by6(d,q,clock);
+module machine$pes$0$screener$c_ax(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$0$screener$by6
+endmodule // machine$pes$0$screener$c_ax
 
 
-module machine$pes$0$screener$by7(d,q,clock);
+module machine$pes$0$screener$c_ay(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$0$screener$by7
-
-
-module machine$pes$0$screener$by8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$by8
+endmodule // machine$pes$0$screener$c_ay
 
 
 module machine$pes$0$screener$c_back_facing(d,q,clock);
@@ -14882,6 +13859,87 @@ module machine$pes$0$screener$c_backward(d,q,clock);
 endmodule // machine$pes$0$screener$c_backward
 
 
+module machine$pes$0$screener$c_bx(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    
+    // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
+    initial begin
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$0$screener$c_bx
+
+
+module machine$pes$0$screener$c_by(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    
+    // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
+    initial begin
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$0$screener$c_by
+
+
+module machine$pes$0$screener$c_k(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    
+    // Update code (custom)
+    reg [31:0] s1;
+    reg [31:0] s2;
+    initial begin
+       s1 = 32'd0;
+       s2 = 32'd0;
+       q = 32'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       q <= s2;
+    end
+endmodule // machine$pes$0$screener$c_k
+
+
 module machine$pes$0$screener$c_near(d,q,clock);
     
     // Module arguments
@@ -14899,6 +13957,64 @@ module machine$pes$0$screener$c_near(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$c_near
+
+
+module machine$pes$0$screener$c_negx(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Update code (custom)
+    reg s1;
+    reg s2;
+    reg s3;
+    reg s4;
+    initial begin
+       s1 = 1'd0;
+       s2 = 1'd0;
+       s3 = 1'd0;
+       s4 = 1'd0;
+       q = 1'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$0$screener$c_negx
+
+
+module machine$pes$0$screener$c_negy(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Update code (custom)
+    reg s1;
+    reg s2;
+    reg s3;
+    reg s4;
+    initial begin
+       s1 = 1'd0;
+       s2 = 1'd0;
+       s3 = 1'd0;
+       s4 = 1'd0;
+       q = 1'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$0$screener$c_negy
 
 
 module machine$pes$0$screener$c_outside(d,q,clock);
@@ -14939,44 +14055,6 @@ module machine$pes$0$screener$c_passed(d,q,clock);
 endmodule // machine$pes$0$screener$c_passed
 
 
-module machine$pes$0$screener$clz_e6(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$clz_e6
-
-
-module machine$pes$0$screener$clz_e7(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$clz_e7
-
-
 module machine$pes$0$screener$clz_n2_7(d,q,clock);
     
     // Module arguments
@@ -15013,44 +14091,6 @@ module machine$pes$0$screener$clz_n3_7(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$clz_n3_7
-
-
-module machine$pes$0$screener$clz_n4(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$clz_n4
-
-
-module machine$pes$0$screener$clz_n5(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$clz_n5
 
 
 module machine$pes$0$screener$clz_n6(d,q,clock);
@@ -15738,63 +14778,6 @@ module machine$pes$0$screener$k5(d,q,clock);
 endmodule // machine$pes$0$screener$k5
 
 
-module machine$pes$0$screener$k6(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$k6
-
-
-module machine$pes$0$screener$k7(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$k7
-
-
-module machine$pes$0$screener$k8(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$k8
-
-
 module machine$pes$0$screener$k_nonpos6(d,q,clock);
     
     // Module arguments
@@ -16253,6 +15236,108 @@ module machine$pes$0$screener$lane_wy(clock,write_address,write_data,write_enabl
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$pes$0$screener$lane_wy
+
+
+module machine$pes$0$screener$lz_e(clock,value,norm,clz);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] value;
+    output reg  [31:0] norm;
+    output reg  [5:0] clz;
+    
+    // Update code (custom)
+    reg [31:0] half;
+    reg [5:0] half_clz;
+    reg [31:0] first;
+    reg [5:0] first_clz;
+    wire [31:0] s4 = (half[31:28] == 4'd0) ? {half[27:0], 4'd0} : half;
+    wire [31:0] s2 = (s4[31:30] == 2'd0) ? {s4[29:0], 2'd0} : s4;
+    wire [31:0] s1 = s2[31] ? s2 : {s2[30:0], 1'b0};
+    wire [5:0] c421 = {3'd0, half[31:28] == 4'd0, s4[31:30] == 2'd0, !s2[31]};
+    initial begin
+       half = 32'd0;
+       half_clz = 6'd24;
+       norm = 32'd0;
+       clz = 6'd0;
+    end
+    always @(*) begin
+       if (value[31:16] == 16'd0) begin
+          if (value[15:8] == 8'd0) begin
+             first = {value[7:0], 24'd0};
+             first_clz = 6'd24;
+          end else begin
+             first = {value[15:0], 16'd0};
+             first_clz = 6'd16;
+          end
+       end else begin
+          if (value[31:24] == 8'd0) begin
+             first = {value[23:0], 8'd0};
+             first_clz = 6'd8;
+          end else begin
+             first = value;
+             first_clz = 6'd0;
+          end
+       end
+    end
+    always @(posedge clock) begin
+       half <= first;
+       half_clz <= first_clz;
+       norm <= s1;
+       clz <= half_clz | c421;
+    end
+endmodule // machine$pes$0$screener$lz_e
+
+
+module machine$pes$0$screener$lz_n(clock,value,norm,clz);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] value;
+    output reg  [31:0] norm;
+    output reg  [5:0] clz;
+    
+    // Update code (custom)
+    reg [31:0] half;
+    reg [5:0] half_clz;
+    reg [31:0] first;
+    reg [5:0] first_clz;
+    wire [31:0] s4 = (half[31:28] == 4'd0) ? {half[27:0], 4'd0} : half;
+    wire [31:0] s2 = (s4[31:30] == 2'd0) ? {s4[29:0], 2'd0} : s4;
+    wire [31:0] s1 = s2[31] ? s2 : {s2[30:0], 1'b0};
+    wire [5:0] c421 = {3'd0, half[31:28] == 4'd0, s4[31:30] == 2'd0, !s2[31]};
+    initial begin
+       half = 32'd0;
+       half_clz = 6'd24;
+       norm = 32'd0;
+       clz = 6'd0;
+    end
+    always @(*) begin
+       if (value[31:16] == 16'd0) begin
+          if (value[15:8] == 8'd0) begin
+             first = {value[7:0], 24'd0};
+             first_clz = 6'd24;
+          end else begin
+             first = {value[15:0], 16'd0};
+             first_clz = 6'd16;
+          end
+       end else begin
+          if (value[31:24] == 8'd0) begin
+             first = {value[23:0], 8'd0};
+             first_clz = 6'd8;
+          end else begin
+             first = value;
+             first_clz = 6'd0;
+          end
+       end
+    end
+    always @(posedge clock) begin
+       half <= first;
+       half_clz <= first_clz;
+       norm <= s1;
+       clz <= half_clz | c421;
+    end
+endmodule // machine$pes$0$screener$lz_n
 
 
 module machine$pes$0$screener$m_abx(clock,a,b,p);
@@ -17250,101 +16335,6 @@ module machine$pes$0$screener$negx3(d,q,clock);
 endmodule // machine$pes$0$screener$negx3
 
 
-module machine$pes$0$screener$negx4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negx4
-
-
-module machine$pes$0$screener$negx5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negx5
-
-
-module machine$pes$0$screener$negx6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negx6
-
-
-module machine$pes$0$screener$negx7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negx7
-
-
-module machine$pes$0$screener$negx8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negx8
-
-
 module machine$pes$0$screener$negy2(d,q,clock);
     
     // Module arguments
@@ -17383,101 +16373,6 @@ module machine$pes$0$screener$negy3(d,q,clock);
 endmodule // machine$pes$0$screener$negy3
 
 
-module machine$pes$0$screener$negy4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negy4
-
-
-module machine$pes$0$screener$negy5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negy5
-
-
-module machine$pes$0$screener$negy6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negy6
-
-
-module machine$pes$0$screener$negy7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negy7
-
-
-module machine$pes$0$screener$negy8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$negy8
-
-
 module machine$pes$0$screener$nmax3(d,q,clock);
     
     // Module arguments
@@ -17495,82 +16390,6 @@ module machine$pes$0$screener$nmax3(d,q,clock);
     end
           
 endmodule // machine$pes$0$screener$nmax3
-
-
-module machine$pes$0$screener$norm_e6(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$norm_e6
-
-
-module machine$pes$0$screener$norm_e7(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$norm_e7
-
-
-module machine$pes$0$screener$norm_n4(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$norm_n4
-
-
-module machine$pes$0$screener$norm_n5(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$0$screener$norm_n5
 
 
 module machine$pes$0$screener$norm_n6(d,q,clock);
@@ -18384,17 +17203,24 @@ module machine$pes$0$tag_kind(clock,write_address,write_data,write_enable,head_a
     output reg  read_data;
     
     // Update code (custom)
+    // Two copies under the same writes, one read each: from one memory, Yosys makes the two reads
+    // one port whose address is chosen by `pop` (pop, address, RAM, register: measured 141 MHz).
     reg [0:0] mem [0:63];
+    reg [0:0] mem_n [0:63];
     reg [0:0] read_r;
     integer i;
     initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 1'd0;
+       for (i = 0; i <= 63; i = i + 1) begin
+          mem[i] = 1'd0;
+          mem_n[i] = 1'd0;
+       end
        read_r = 1'd0;
     end
     always @(posedge clock) begin
-       read_r <= pop ? mem[next_address] : mem[head_address];
+       read_r <= pop ? mem_n[next_address] : mem[head_address];
        if (write_enable) begin
           mem[write_address] <= write_data;
+          mem_n[write_address] <= write_data;
        end
     end
     always @(*) read_data = read_r;
@@ -30294,25 +29120,11 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     localparam  thr_f_lo = 16'hff00;
     localparam  thr_l_hi = 16'h8000;
     localparam  thr_l_lo = 16'h100;
-    localparam  zero16 = 16'h0;
     localparam  zero14 = 14'b0;
-    localparam  zero8 = 8'h0;
-    localparam  zero4 = 4'h0;
-    localparam  zero2 = 2'b0;
     localparam  zero3 = 3'b0;
-    localparam  sh24 = 32'h18;
-    localparam  sh16 = 32'h10;
-    localparam  sh8 = 32'h8;
-    localparam  sh4 = 32'h4;
-    localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
-    localparam  c24_6 = 6'b11000;
-    localparam  c16_6 = 6'b10000;
-    localparam  c8_6 = 6'b1000;
-    localparam  c4_6 = 6'b100;
     localparam  c2_6 = 6'b10;
     localparam  c3_6 = 6'b11;
-    localparam  c1_6 = 6'b1;
     localparam  tag_pass = 3'b1;
     localparam  tag_negx = 3'b10;
     localparam  tag_negy = 3'b100;
@@ -30547,72 +29359,18 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [15:0] id4$d;
     wire  [15:0] id4$q;
     reg  id4$clock;
-    reg  [17:0] ax4$d;
-    wire  [17:0] ax4$q;
-    reg  ax4$clock;
-    reg  [17:0] ay4$d;
-    wire  [17:0] ay4$q;
-    reg  ay4$clock;
-    reg  [17:0] bx4$d;
-    wire  [17:0] bx4$q;
-    reg  bx4$clock;
-    reg  [17:0] by4$d;
-    wire  [17:0] by4$q;
-    reg  by4$clock;
-    reg  [17:0] absnx4$d;
-    wire  [17:0] absnx4$q;
-    reg  absnx4$clock;
-    reg  [17:0] absny4$d;
-    wire  [17:0] absny4$q;
-    reg  absny4$clock;
-    reg  negx4$d;
-    wire  negx4$q;
-    reg  negx4$clock;
-    reg  negy4$d;
-    wire  negy4$q;
-    reg  negy4$clock;
     reg  [31:0] p_aby4$d;
     wire  [31:0] p_aby4$q;
     reg  p_aby4$clock;
     reg  [31:0] p_abx4$d;
     wire  [31:0] p_abx4$q;
     reg  p_abx4$clock;
-    reg  [5:0] clz_n4$d;
-    wire  [5:0] clz_n4$q;
-    reg  clz_n4$clock;
-    reg  [31:0] norm_n4$d;
-    wire  [31:0] norm_n4$q;
-    reg  norm_n4$clock;
     reg  v5$d;
     wire  v5$q;
     reg  v5$clock;
     reg  [15:0] id5$d;
     wire  [15:0] id5$q;
     reg  id5$clock;
-    reg  [17:0] ax5$d;
-    wire  [17:0] ax5$q;
-    reg  ax5$clock;
-    reg  [17:0] ay5$d;
-    wire  [17:0] ay5$q;
-    reg  ay5$clock;
-    reg  [17:0] bx5$d;
-    wire  [17:0] bx5$q;
-    reg  bx5$clock;
-    reg  [17:0] by5$d;
-    wire  [17:0] by5$q;
-    reg  by5$clock;
-    reg  [17:0] absnx5$d;
-    wire  [17:0] absnx5$q;
-    reg  absnx5$clock;
-    reg  [17:0] absny5$d;
-    wire  [17:0] absny5$q;
-    reg  absny5$clock;
-    reg  negx5$d;
-    wire  negx5$q;
-    reg  negx5$clock;
-    reg  negy5$d;
-    wire  negy5$q;
-    reg  negy5$clock;
     reg  [31:0] k5$d;
     wire  [31:0] k5$q;
     reg  k5$clock;
@@ -30628,45 +29386,12 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] p_nby5$d;
     wire  [31:0] p_nby5$q;
     reg  p_nby5$clock;
-    reg  [5:0] clz_n5$d;
-    wire  [5:0] clz_n5$q;
-    reg  clz_n5$clock;
-    reg  [31:0] norm_n5$d;
-    wire  [31:0] norm_n5$q;
-    reg  norm_n5$clock;
     reg  v6$d;
     wire  v6$q;
     reg  v6$clock;
     reg  [15:0] id6$d;
     wire  [15:0] id6$q;
     reg  id6$clock;
-    reg  [17:0] ax6$d;
-    wire  [17:0] ax6$q;
-    reg  ax6$clock;
-    reg  [17:0] ay6$d;
-    wire  [17:0] ay6$q;
-    reg  ay6$clock;
-    reg  [17:0] bx6$d;
-    wire  [17:0] bx6$q;
-    reg  bx6$clock;
-    reg  [17:0] by6$d;
-    wire  [17:0] by6$q;
-    reg  by6$clock;
-    reg  [17:0] absnx6$d;
-    wire  [17:0] absnx6$q;
-    reg  absnx6$clock;
-    reg  [17:0] absny6$d;
-    wire  [17:0] absny6$q;
-    reg  absny6$clock;
-    reg  negx6$d;
-    wire  negx6$q;
-    reg  negx6$clock;
-    reg  negy6$d;
-    wire  negy6$q;
-    reg  negy6$clock;
-    reg  [31:0] k6$d;
-    wire  [31:0] k6$q;
-    reg  k6$clock;
     reg  k_nonpos6$d;
     wire  k_nonpos6$q;
     reg  k_nonpos6$clock;
@@ -30694,45 +29419,12 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] norm_n6$d;
     wire  [31:0] norm_n6$q;
     reg  norm_n6$clock;
-    reg  [5:0] clz_e6$d;
-    wire  [5:0] clz_e6$q;
-    reg  clz_e6$clock;
-    reg  [31:0] norm_e6$d;
-    wire  [31:0] norm_e6$q;
-    reg  norm_e6$clock;
     reg  v7$d;
     wire  v7$q;
     reg  v7$clock;
     reg  [15:0] id7$d;
     wire  [15:0] id7$q;
     reg  id7$clock;
-    reg  [17:0] ax7$d;
-    wire  [17:0] ax7$q;
-    reg  ax7$clock;
-    reg  [17:0] ay7$d;
-    wire  [17:0] ay7$q;
-    reg  ay7$clock;
-    reg  [17:0] bx7$d;
-    wire  [17:0] bx7$q;
-    reg  bx7$clock;
-    reg  [17:0] by7$d;
-    wire  [17:0] by7$q;
-    reg  by7$clock;
-    reg  [17:0] absnx7$d;
-    wire  [17:0] absnx7$q;
-    reg  absnx7$clock;
-    reg  [17:0] absny7$d;
-    wire  [17:0] absny7$q;
-    reg  absny7$clock;
-    reg  negx7$d;
-    wire  negx7$q;
-    reg  negx7$clock;
-    reg  negy7$d;
-    wire  negy7$q;
-    reg  negy7$clock;
-    reg  [31:0] k7$d;
-    wire  [31:0] k7$q;
-    reg  k7$clock;
     reg  [31:0] side_f7$d;
     wire  [31:0] side_f7$q;
     reg  side_f7$clock;
@@ -30745,12 +29437,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [31:0] norm_n7$d;
     wire  [31:0] norm_n7$q;
     reg  norm_n7$clock;
-    reg  [5:0] clz_e7$d;
-    wire  [5:0] clz_e7$q;
-    reg  clz_e7$clock;
-    reg  [31:0] norm_e7$d;
-    wire  [31:0] norm_e7$q;
-    reg  norm_e7$clock;
     reg  backward7$d;
     wire  backward7$q;
     reg  backward7$clock;
@@ -30793,33 +29479,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [15:0] id8$d;
     wire  [15:0] id8$q;
     reg  id8$clock;
-    reg  [17:0] ax8$d;
-    wire  [17:0] ax8$q;
-    reg  ax8$clock;
-    reg  [17:0] ay8$d;
-    wire  [17:0] ay8$q;
-    reg  ay8$clock;
-    reg  [17:0] bx8$d;
-    wire  [17:0] bx8$q;
-    reg  bx8$clock;
-    reg  [17:0] by8$d;
-    wire  [17:0] by8$q;
-    reg  by8$clock;
-    reg  [17:0] absnx8$d;
-    wire  [17:0] absnx8$q;
-    reg  absnx8$clock;
-    reg  [17:0] absny8$d;
-    wire  [17:0] absny8$q;
-    reg  absny8$clock;
-    reg  negx8$d;
-    wire  negx8$q;
-    reg  negx8$clock;
-    reg  negy8$d;
-    wire  negy8$q;
-    reg  negy8$clock;
-    reg  [31:0] k8$d;
-    wire  [31:0] k8$q;
-    reg  k8$clock;
     reg  [5:0] s0_8$d;
     wire  [5:0] s0_8$q;
     reg  s0_8$clock;
@@ -30865,6 +29524,41 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  near9$d;
     wire  near9$q;
     reg  near9$clock;
+    reg  c_ax$clock;
+    reg  [17:0] c_ax$d;
+    wire  [17:0] c_ax$q;
+    reg  c_ay$clock;
+    reg  [17:0] c_ay$d;
+    wire  [17:0] c_ay$q;
+    reg  c_bx$clock;
+    reg  [17:0] c_bx$d;
+    wire  [17:0] c_bx$q;
+    reg  c_by$clock;
+    reg  [17:0] c_by$d;
+    wire  [17:0] c_by$q;
+    reg  c_absnx$clock;
+    reg  [17:0] c_absnx$d;
+    wire  [17:0] c_absnx$q;
+    reg  c_absny$clock;
+    reg  [17:0] c_absny$d;
+    wire  [17:0] c_absny$q;
+    reg  c_negx$clock;
+    reg  c_negx$d;
+    wire  c_negx$q;
+    reg  c_negy$clock;
+    reg  c_negy$d;
+    wire  c_negy$q;
+    reg  c_k$clock;
+    reg  [31:0] c_k$d;
+    wire  [31:0] c_k$q;
+    reg  lz_n$clock;
+    reg  [31:0] lz_n$value;
+    wire  [31:0] lz_n$norm;
+    wire  [5:0] lz_n$clz;
+    reg  lz_e$clock;
+    reg  [31:0] lz_e$value;
+    wire  [31:0] lz_e$norm;
+    wire  [5:0] lz_e$clz;
     reg  divider$clock;
     reg  [31:0] divider$rx;
     reg  [31:0] divider$ry;
@@ -30917,42 +29611,10 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     reg  [17:0] absnx;
     reg  [17:0] absny;
     reg  [17:0] nmax;
-    reg  [31:0] zn0;
-    reg  [31:0] zn1;
-    reg  [31:0] zn2;
-    reg  [5:0] cn16_n;
-    reg  [5:0] cn8_n;
-    reg  [15:0] top16_n;
-    reg  [7:0] top8_n;
     reg  [31:0] kk;
-    reg  [31:0] zn3;
-    reg  [31:0] zn4;
-    reg  [31:0] zn5;
-    reg  [5:0] cn4_n;
-    reg  [5:0] cn2_n;
-    reg  [5:0] cn1_n;
-    reg  [3:0] top4_n;
-    reg  [1:0] top2_n;
     reg  [31:0] ha;
     reg  [31:0] hb;
     reg  [31:0] k2;
-    reg  z16_e;
-    reg  z8hi_e;
-    reg  z8mid_e;
-    reg  [31:0] ze_lo;
-    reg  [31:0] ze_hi;
-    reg  [5:0] ce_lo;
-    reg  [5:0] ce_hi;
-    reg  [31:0] ze2;
-    reg  [5:0] ce_e;
-    reg  [31:0] ze3;
-    reg  [31:0] ze4;
-    reg  [31:0] ze5;
-    reg  [5:0] ce4_e;
-    reg  [5:0] ce2_e;
-    reg  [5:0] ce1_e;
-    reg  [3:0] top4_e;
-    reg  [1:0] top2_e;
     reg  ha_pos;
     reg  hb_pos;
     reg  is_backward;
@@ -31326,46 +29988,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(id4$q),
         .clock(id4$clock)
     );
-    machine$pes$1$screener$ax4 ax4(
-        .d(ax4$d),
-        .q(ax4$q),
-        .clock(ax4$clock)
-    );
-    machine$pes$1$screener$ay4 ay4(
-        .d(ay4$d),
-        .q(ay4$q),
-        .clock(ay4$clock)
-    );
-    machine$pes$1$screener$bx4 bx4(
-        .d(bx4$d),
-        .q(bx4$q),
-        .clock(bx4$clock)
-    );
-    machine$pes$1$screener$by4 by4(
-        .d(by4$d),
-        .q(by4$q),
-        .clock(by4$clock)
-    );
-    machine$pes$1$screener$absnx4 absnx4(
-        .d(absnx4$d),
-        .q(absnx4$q),
-        .clock(absnx4$clock)
-    );
-    machine$pes$1$screener$absny4 absny4(
-        .d(absny4$d),
-        .q(absny4$q),
-        .clock(absny4$clock)
-    );
-    machine$pes$1$screener$negx4 negx4(
-        .d(negx4$d),
-        .q(negx4$q),
-        .clock(negx4$clock)
-    );
-    machine$pes$1$screener$negy4 negy4(
-        .d(negy4$d),
-        .q(negy4$q),
-        .clock(negy4$clock)
-    );
     machine$pes$1$screener$p_aby4 p_aby4(
         .d(p_aby4$d),
         .q(p_aby4$q),
@@ -31376,16 +29998,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(p_abx4$q),
         .clock(p_abx4$clock)
     );
-    machine$pes$1$screener$clz_n4 clz_n4(
-        .d(clz_n4$d),
-        .q(clz_n4$q),
-        .clock(clz_n4$clock)
-    );
-    machine$pes$1$screener$norm_n4 norm_n4(
-        .d(norm_n4$d),
-        .q(norm_n4$q),
-        .clock(norm_n4$clock)
-    );
     machine$pes$1$screener$v5 v5(
         .d(v5$d),
         .q(v5$q),
@@ -31395,46 +30007,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id5$d),
         .q(id5$q),
         .clock(id5$clock)
-    );
-    machine$pes$1$screener$ax5 ax5(
-        .d(ax5$d),
-        .q(ax5$q),
-        .clock(ax5$clock)
-    );
-    machine$pes$1$screener$ay5 ay5(
-        .d(ay5$d),
-        .q(ay5$q),
-        .clock(ay5$clock)
-    );
-    machine$pes$1$screener$bx5 bx5(
-        .d(bx5$d),
-        .q(bx5$q),
-        .clock(bx5$clock)
-    );
-    machine$pes$1$screener$by5 by5(
-        .d(by5$d),
-        .q(by5$q),
-        .clock(by5$clock)
-    );
-    machine$pes$1$screener$absnx5 absnx5(
-        .d(absnx5$d),
-        .q(absnx5$q),
-        .clock(absnx5$clock)
-    );
-    machine$pes$1$screener$absny5 absny5(
-        .d(absny5$d),
-        .q(absny5$q),
-        .clock(absny5$clock)
-    );
-    machine$pes$1$screener$negx5 negx5(
-        .d(negx5$d),
-        .q(negx5$q),
-        .clock(negx5$clock)
-    );
-    machine$pes$1$screener$negy5 negy5(
-        .d(negy5$d),
-        .q(negy5$q),
-        .clock(negy5$clock)
     );
     machine$pes$1$screener$k5 k5(
         .d(k5$d),
@@ -31461,16 +30033,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(p_nby5$q),
         .clock(p_nby5$clock)
     );
-    machine$pes$1$screener$clz_n5 clz_n5(
-        .d(clz_n5$d),
-        .q(clz_n5$q),
-        .clock(clz_n5$clock)
-    );
-    machine$pes$1$screener$norm_n5 norm_n5(
-        .d(norm_n5$d),
-        .q(norm_n5$q),
-        .clock(norm_n5$clock)
-    );
     machine$pes$1$screener$v6 v6(
         .d(v6$d),
         .q(v6$q),
@@ -31480,51 +30042,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id6$d),
         .q(id6$q),
         .clock(id6$clock)
-    );
-    machine$pes$1$screener$ax6 ax6(
-        .d(ax6$d),
-        .q(ax6$q),
-        .clock(ax6$clock)
-    );
-    machine$pes$1$screener$ay6 ay6(
-        .d(ay6$d),
-        .q(ay6$q),
-        .clock(ay6$clock)
-    );
-    machine$pes$1$screener$bx6 bx6(
-        .d(bx6$d),
-        .q(bx6$q),
-        .clock(bx6$clock)
-    );
-    machine$pes$1$screener$by6 by6(
-        .d(by6$d),
-        .q(by6$q),
-        .clock(by6$clock)
-    );
-    machine$pes$1$screener$absnx6 absnx6(
-        .d(absnx6$d),
-        .q(absnx6$q),
-        .clock(absnx6$clock)
-    );
-    machine$pes$1$screener$absny6 absny6(
-        .d(absny6$d),
-        .q(absny6$q),
-        .clock(absny6$clock)
-    );
-    machine$pes$1$screener$negx6 negx6(
-        .d(negx6$d),
-        .q(negx6$q),
-        .clock(negx6$clock)
-    );
-    machine$pes$1$screener$negy6 negy6(
-        .d(negy6$d),
-        .q(negy6$q),
-        .clock(negy6$clock)
-    );
-    machine$pes$1$screener$k6 k6(
-        .d(k6$d),
-        .q(k6$q),
-        .clock(k6$clock)
     );
     machine$pes$1$screener$k_nonpos6 k_nonpos6(
         .d(k_nonpos6$d),
@@ -31571,16 +30088,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .q(norm_n6$q),
         .clock(norm_n6$clock)
     );
-    machine$pes$1$screener$clz_e6 clz_e6(
-        .d(clz_e6$d),
-        .q(clz_e6$q),
-        .clock(clz_e6$clock)
-    );
-    machine$pes$1$screener$norm_e6 norm_e6(
-        .d(norm_e6$d),
-        .q(norm_e6$q),
-        .clock(norm_e6$clock)
-    );
     machine$pes$1$screener$v7 v7(
         .d(v7$d),
         .q(v7$q),
@@ -31590,51 +30097,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id7$d),
         .q(id7$q),
         .clock(id7$clock)
-    );
-    machine$pes$1$screener$ax7 ax7(
-        .d(ax7$d),
-        .q(ax7$q),
-        .clock(ax7$clock)
-    );
-    machine$pes$1$screener$ay7 ay7(
-        .d(ay7$d),
-        .q(ay7$q),
-        .clock(ay7$clock)
-    );
-    machine$pes$1$screener$bx7 bx7(
-        .d(bx7$d),
-        .q(bx7$q),
-        .clock(bx7$clock)
-    );
-    machine$pes$1$screener$by7 by7(
-        .d(by7$d),
-        .q(by7$q),
-        .clock(by7$clock)
-    );
-    machine$pes$1$screener$absnx7 absnx7(
-        .d(absnx7$d),
-        .q(absnx7$q),
-        .clock(absnx7$clock)
-    );
-    machine$pes$1$screener$absny7 absny7(
-        .d(absny7$d),
-        .q(absny7$q),
-        .clock(absny7$clock)
-    );
-    machine$pes$1$screener$negx7 negx7(
-        .d(negx7$d),
-        .q(negx7$q),
-        .clock(negx7$clock)
-    );
-    machine$pes$1$screener$negy7 negy7(
-        .d(negy7$d),
-        .q(negy7$q),
-        .clock(negy7$clock)
-    );
-    machine$pes$1$screener$k7 k7(
-        .d(k7$d),
-        .q(k7$q),
-        .clock(k7$clock)
     );
     machine$pes$1$screener$side_f7 side_f7(
         .d(side_f7$d),
@@ -31655,16 +30117,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(norm_n7$d),
         .q(norm_n7$q),
         .clock(norm_n7$clock)
-    );
-    machine$pes$1$screener$clz_e7 clz_e7(
-        .d(clz_e7$d),
-        .q(clz_e7$q),
-        .clock(clz_e7$clock)
-    );
-    machine$pes$1$screener$norm_e7 norm_e7(
-        .d(norm_e7$d),
-        .q(norm_e7$q),
-        .clock(norm_e7$clock)
     );
     machine$pes$1$screener$backward7 backward7(
         .d(backward7$d),
@@ -31735,51 +30187,6 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(id8$d),
         .q(id8$q),
         .clock(id8$clock)
-    );
-    machine$pes$1$screener$ax8 ax8(
-        .d(ax8$d),
-        .q(ax8$q),
-        .clock(ax8$clock)
-    );
-    machine$pes$1$screener$ay8 ay8(
-        .d(ay8$d),
-        .q(ay8$q),
-        .clock(ay8$clock)
-    );
-    machine$pes$1$screener$bx8 bx8(
-        .d(bx8$d),
-        .q(bx8$q),
-        .clock(bx8$clock)
-    );
-    machine$pes$1$screener$by8 by8(
-        .d(by8$d),
-        .q(by8$q),
-        .clock(by8$clock)
-    );
-    machine$pes$1$screener$absnx8 absnx8(
-        .d(absnx8$d),
-        .q(absnx8$q),
-        .clock(absnx8$clock)
-    );
-    machine$pes$1$screener$absny8 absny8(
-        .d(absny8$d),
-        .q(absny8$q),
-        .clock(absny8$clock)
-    );
-    machine$pes$1$screener$negx8 negx8(
-        .d(negx8$d),
-        .q(negx8$q),
-        .clock(negx8$clock)
-    );
-    machine$pes$1$screener$negy8 negy8(
-        .d(negy8$d),
-        .q(negy8$q),
-        .clock(negy8$clock)
-    );
-    machine$pes$1$screener$k8 k8(
-        .d(k8$d),
-        .q(k8$q),
-        .clock(k8$clock)
     );
     machine$pes$1$screener$s0_8 s0_8(
         .d(s0_8$d),
@@ -31855,6 +30262,63 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         .d(near9$d),
         .q(near9$q),
         .clock(near9$clock)
+    );
+    machine$pes$1$screener$c_ax c_ax(
+        .clock(c_ax$clock),
+        .d(c_ax$d),
+        .q(c_ax$q)
+    );
+    machine$pes$1$screener$c_ay c_ay(
+        .clock(c_ay$clock),
+        .d(c_ay$d),
+        .q(c_ay$q)
+    );
+    machine$pes$1$screener$c_bx c_bx(
+        .clock(c_bx$clock),
+        .d(c_bx$d),
+        .q(c_bx$q)
+    );
+    machine$pes$1$screener$c_by c_by(
+        .clock(c_by$clock),
+        .d(c_by$d),
+        .q(c_by$q)
+    );
+    machine$pes$1$screener$c_absnx c_absnx(
+        .clock(c_absnx$clock),
+        .d(c_absnx$d),
+        .q(c_absnx$q)
+    );
+    machine$pes$1$screener$c_absny c_absny(
+        .clock(c_absny$clock),
+        .d(c_absny$d),
+        .q(c_absny$q)
+    );
+    machine$pes$1$screener$c_negx c_negx(
+        .clock(c_negx$clock),
+        .d(c_negx$d),
+        .q(c_negx$q)
+    );
+    machine$pes$1$screener$c_negy c_negy(
+        .clock(c_negy$clock),
+        .d(c_negy$d),
+        .q(c_negy$q)
+    );
+    machine$pes$1$screener$c_k c_k(
+        .clock(c_k$clock),
+        .d(c_k$d),
+        .q(c_k$q)
+    );
+    machine$pes$1$screener$lz_n lz_n(
+        .clock(lz_n$clock),
+        .value(lz_n$value),
+        .norm(lz_n$norm),
+        .clz(lz_n$clz)
+    );
+    machine$pes$1$screener$lz_e lz_e(
+        .clock(lz_e$clock),
+        .value(lz_e$value),
+        .norm(lz_e$norm),
+        .clz(lz_e$clz)
     );
     machine$pes$1$screener$divider divider(
         .clock(divider$clock),
@@ -31937,46 +30401,17 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         nmax3$clock = clock;
         v4$clock = clock;
         id4$clock = clock;
-        ax4$clock = clock;
-        ay4$clock = clock;
-        bx4$clock = clock;
-        by4$clock = clock;
-        absnx4$clock = clock;
-        absny4$clock = clock;
-        negx4$clock = clock;
-        negy4$clock = clock;
         p_aby4$clock = clock;
         p_abx4$clock = clock;
-        clz_n4$clock = clock;
-        norm_n4$clock = clock;
         v5$clock = clock;
         id5$clock = clock;
-        ax5$clock = clock;
-        ay5$clock = clock;
-        bx5$clock = clock;
-        by5$clock = clock;
-        absnx5$clock = clock;
-        absny5$clock = clock;
-        negx5$clock = clock;
-        negy5$clock = clock;
         k5$clock = clock;
         p_nax5$clock = clock;
         p_nay5$clock = clock;
         p_nbx5$clock = clock;
         p_nby5$clock = clock;
-        clz_n5$clock = clock;
-        norm_n5$clock = clock;
         v6$clock = clock;
         id6$clock = clock;
-        ax6$clock = clock;
-        ay6$clock = clock;
-        bx6$clock = clock;
-        by6$clock = clock;
-        absnx6$clock = clock;
-        absny6$clock = clock;
-        negx6$clock = clock;
-        negy6$clock = clock;
-        k6$clock = clock;
         k_nonpos6$clock = clock;
         ha6$clock = clock;
         hb6$clock = clock;
@@ -31986,40 +30421,18 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         p_lax6$clock = clock;
         clz_n6$clock = clock;
         norm_n6$clock = clock;
-        clz_e6$clock = clock;
-        norm_e6$clock = clock;
         v7$clock = clock;
         id7$clock = clock;
-        ax7$clock = clock;
-        ay7$clock = clock;
-        bx7$clock = clock;
-        by7$clock = clock;
-        absnx7$clock = clock;
-        absny7$clock = clock;
-        negx7$clock = clock;
-        negy7$clock = clock;
-        k7$clock = clock;
         side_f7$clock = clock;
         side_l7$clock = clock;
         clz_n7$clock = clock;
         norm_n7$clock = clock;
-        clz_e7$clock = clock;
-        norm_e7$clock = clock;
         backward7$clock = clock;
         back_facing7$clock = clock;
         ha_open7$clock = clock;
         hb_open7$clock = clock;
         v8$clock = clock;
         id8$clock = clock;
-        ax8$clock = clock;
-        ay8$clock = clock;
-        bx8$clock = clock;
-        by8$clock = clock;
-        absnx8$clock = clock;
-        absny8$clock = clock;
-        negx8$clock = clock;
-        negy8$clock = clock;
-        k8$clock = clock;
         s0_8$clock = clock;
         s0_m1_8$clock = clock;
         below8$clock = clock;
@@ -32087,46 +30500,17 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         nmax3$d = nmax3$q;
         v4$d = v4$q;
         id4$d = id4$q;
-        ax4$d = ax4$q;
-        ay4$d = ay4$q;
-        bx4$d = bx4$q;
-        by4$d = by4$q;
-        absnx4$d = absnx4$q;
-        absny4$d = absny4$q;
-        negx4$d = negx4$q;
-        negy4$d = negy4$q;
         p_aby4$d = p_aby4$q;
         p_abx4$d = p_abx4$q;
-        clz_n4$d = clz_n4$q;
-        norm_n4$d = norm_n4$q;
         v5$d = v5$q;
         id5$d = id5$q;
-        ax5$d = ax5$q;
-        ay5$d = ay5$q;
-        bx5$d = bx5$q;
-        by5$d = by5$q;
-        absnx5$d = absnx5$q;
-        absny5$d = absny5$q;
-        negx5$d = negx5$q;
-        negy5$d = negy5$q;
         k5$d = k5$q;
         p_nax5$d = p_nax5$q;
         p_nay5$d = p_nay5$q;
         p_nbx5$d = p_nbx5$q;
         p_nby5$d = p_nby5$q;
-        clz_n5$d = clz_n5$q;
-        norm_n5$d = norm_n5$q;
         v6$d = v6$q;
         id6$d = id6$q;
-        ax6$d = ax6$q;
-        ay6$d = ay6$q;
-        bx6$d = bx6$q;
-        by6$d = by6$q;
-        absnx6$d = absnx6$q;
-        absny6$d = absny6$q;
-        negx6$d = negx6$q;
-        negy6$d = negy6$q;
-        k6$d = k6$q;
         k_nonpos6$d = k_nonpos6$q;
         ha6$d = ha6$q;
         hb6$d = hb6$q;
@@ -32136,40 +30520,18 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         p_lax6$d = p_lax6$q;
         clz_n6$d = clz_n6$q;
         norm_n6$d = norm_n6$q;
-        clz_e6$d = clz_e6$q;
-        norm_e6$d = norm_e6$q;
         v7$d = v7$q;
         id7$d = id7$q;
-        ax7$d = ax7$q;
-        ay7$d = ay7$q;
-        bx7$d = bx7$q;
-        by7$d = by7$q;
-        absnx7$d = absnx7$q;
-        absny7$d = absny7$q;
-        negx7$d = negx7$q;
-        negy7$d = negy7$q;
-        k7$d = k7$q;
         side_f7$d = side_f7$q;
         side_l7$d = side_l7$q;
         clz_n7$d = clz_n7$q;
         norm_n7$d = norm_n7$q;
-        clz_e7$d = clz_e7$q;
-        norm_e7$d = norm_e7$q;
         backward7$d = backward7$q;
         back_facing7$d = back_facing7$q;
         ha_open7$d = ha_open7$q;
         hb_open7$d = hb_open7$q;
         v8$d = v8$q;
         id8$d = id8$q;
-        ax8$d = ax8$q;
-        ay8$d = ay8$q;
-        bx8$d = bx8$q;
-        by8$d = by8$q;
-        absnx8$d = absnx8$q;
-        absny8$d = absny8$q;
-        negx8$d = negx8$q;
-        negy8$d = negy8$q;
-        k8$d = k8$q;
         s0_8$d = s0_8$q;
         s0_m1_8$d = s0_m1_8$q;
         below8$d = below8$q;
@@ -32209,7 +30571,18 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         m_fbx$clock = clock;
         m_lay$clock = clock;
         m_lax$clock = clock;
+        c_ax$clock = clock;
+        c_ay$clock = clock;
+        c_bx$clock = clock;
+        c_by$clock = clock;
+        c_absnx$clock = clock;
+        c_absny$clock = clock;
+        c_negx$clock = clock;
+        c_negy$clock = clock;
+        c_k$clock = clock;
         divider$clock = clock;
+        lz_n$clock = clock;
+        lz_e$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
         lane_ay$clock = clock;
@@ -32302,93 +30675,28 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         m_lax$b = ax3$q;
         p_aby4$d = m_aby$p;
         p_abx4$d = m_abx$p;
-        zn0 = ((nmax3$q) & 32'hffffffff);
-        top16_n = zn0[(32'h10)+:(16)];
-        zn1 = zn0;
-        cn16_n = zero6;
-        if (top16_n == zero16) begin
-            zn1 = zn0 << sh16;
-            cn16_n = c16_6;
-        end
-        top8_n = zn1[(32'h18)+:(8)];
-        zn2 = zn1;
-        cn8_n = zero6;
-        if (top8_n == zero8) begin
-            zn2 = zn1 << sh8;
-            cn8_n = c8_6;
-        end
+        lz_n$value = ((nmax3$q) & 32'hffffffff);
+        c_ax$d = ax3$q;
+        c_ay$d = ay3$q;
+        c_bx$d = bx3$q;
+        c_by$d = by3$q;
+        c_absnx$d = absnx3$q;
+        c_absny$d = absny3$q;
+        c_negx$d = negx3$q;
+        c_negy$d = negy3$q;
         v4$d = v3$q;
         id4$d = id3$q;
-        ax4$d = ax3$q;
-        ay4$d = ay3$q;
-        bx4$d = bx3$q;
-        by4$d = by3$q;
-        absnx4$d = absnx3$q;
-        absny4$d = absny3$q;
-        negx4$d = negx3$q;
-        negy4$d = negy3$q;
-        clz_n4$d = cn16_n | cn8_n;
-        norm_n4$d = zn2;
         kk = p_aby4$q - p_abx4$q;
         p_nax5$d = m_nax$p;
         p_nay5$d = m_nay$p;
         p_nbx5$d = m_nbx$p;
         p_nby5$d = m_nby$p;
-        top4_n = norm_n4$q[(32'h1c)+:(4)];
-        zn3 = norm_n4$q;
-        cn4_n = zero6;
-        if (top4_n == zero4) begin
-            zn3 = norm_n4$q << sh4;
-            cn4_n = c4_6;
-        end
-        top2_n = zn3[(32'h1e)+:(2)];
-        zn4 = zn3;
-        cn2_n = zero6;
-        if (top2_n == zero2) begin
-            zn4 = zn3 << sh2;
-            cn2_n = c2_6;
-        end
-        zn5 = zn4;
-        cn1_n = zero6;
-        if (~zn4[32'h1f]) begin
-            zn5 = zn4 << sh1;
-            cn1_n = c1_6;
-        end
         v5$d = v4$q;
         id5$d = id4$q;
-        ax5$d = ax4$q;
-        ay5$d = ay4$q;
-        bx5$d = bx4$q;
-        by5$d = by4$q;
-        absnx5$d = absnx4$q;
-        absny5$d = absny4$q;
-        negx5$d = negx4$q;
-        negy5$d = negy4$q;
         k5$d = kk;
-        clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
-        norm_n5$d = zn5;
         k2 = k5$q << sh1;
-        z16_e = k2[(32'h10)+:(16)] == zero16;
-        z8hi_e = k2[(32'h18)+:(8)] == zero8;
-        z8mid_e = k2[(32'h8)+:(8)] == zero8;
-        ze_hi = k2;
-        ce_hi = zero6;
-        if (z8hi_e) begin
-            ze_hi = k2 << sh8;
-            ce_hi = c8_6;
-        end
-        ze_lo = k2 << sh16;
-        ce_lo = c16_6;
-        if (z8mid_e) begin
-            ze_lo = k2 << sh24;
-            ce_lo = c24_6;
-        end
-        ze2 = ze_hi;
-        ce_e = ce_hi;
-        if (z16_e) begin
-            ze2 = ze_lo;
-            ce_e = ce_lo;
-        end
+        lz_e$value = k2;
+        c_k$d = k5$q;
         ha = p_nax5$q + p_nay5$q;
         hb = p_nbx5$q + p_nby5$q;
         p_fby6$d = m_fby$p;
@@ -32397,42 +30705,11 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         p_lax6$d = m_lax$p;
         v6$d = v5$q;
         id6$d = id5$q;
-        ax6$d = ax5$q;
-        ay6$d = ay5$q;
-        bx6$d = bx5$q;
-        by6$d = by5$q;
-        absnx6$d = absnx5$q;
-        absny6$d = absny5$q;
-        negx6$d = negx5$q;
-        negy6$d = negy5$q;
-        k6$d = k5$q;
         k_nonpos6$d = k5$q[32'h1f] | (k5$q == zero32);
         ha6$d = ha;
         hb6$d = hb;
-        clz_n6$d = clz_n5$q;
-        norm_n6$d = norm_n5$q;
-        clz_e6$d = ce_e;
-        norm_e6$d = ze2;
-        top4_e = norm_e6$q[(32'h1c)+:(4)];
-        ze3 = norm_e6$q;
-        ce4_e = zero6;
-        if (top4_e == zero4) begin
-            ze3 = norm_e6$q << sh4;
-            ce4_e = c4_6;
-        end
-        top2_e = ze3[(32'h1e)+:(2)];
-        ze4 = ze3;
-        ce2_e = zero6;
-        if (top2_e == zero2) begin
-            ze4 = ze3 << sh2;
-            ce2_e = c2_6;
-        end
-        ze5 = ze4;
-        ce1_e = zero6;
-        if (~ze4[32'h1f]) begin
-            ze5 = ze4 << sh1;
-            ce1_e = c1_6;
-        end
+        clz_n6$d = lz_n$clz;
+        norm_n6$d = lz_n$norm;
         ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
         hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
         is_backward = ~ha_pos & ~hb_pos;
@@ -32441,32 +30718,21 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         side_l = p_lay6$q - p_lax6$q;
         v7$d = v6$q;
         id7$d = id6$q;
-        ax7$d = ax6$q;
-        ay7$d = ay6$q;
-        bx7$d = bx6$q;
-        by7$d = by6$q;
-        absnx7$d = absnx6$q;
-        absny7$d = absny6$q;
-        negx7$d = negx6$q;
-        negy7$d = negy6$q;
-        k7$d = k6$q;
         clz_n7$d = clz_n6$q;
         clz_n2_7$d = clz_n6$q + c2_6;
         clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
-        clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
-        norm_e7$d = ze5;
         backward7$d = is_backward;
         back_facing7$d = is_back_facing;
         ha_open7$d = ha_pos & ~k_nonpos6$q;
         hb_open7$d = hb_pos & ~k_nonpos6$q;
         side_f7$d = side_f;
         side_l7$d = side_l;
-        s0 = clz_n7$q - clz_e7$q;
-        s0_m1 = clz_n7$q + ~clz_e7$q;
+        s0 = clz_n7$q - lz_e$clz;
+        s0_m1 = clz_n7$q + ~lz_e$clz;
         n_hi = norm_n7$q[(32'he)+:(18)];
-        e_hi = norm_e7$q[(32'he)+:(18)];
-        e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
+        e_hi = lz_e$norm[(32'he)+:(18)];
+        e_lo_nz = lz_e$norm[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
@@ -32480,23 +30746,14 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         hb_open8$d = hb_open7$q;
         v8$d = v7$q;
         id8$d = id7$q;
-        ax8$d = ax7$q;
-        ay8$d = ay7$q;
-        bx8$d = bx7$q;
-        by8$d = by7$q;
-        absnx8$d = absnx7$q;
-        absny8$d = absny7$q;
-        negx8$d = negx7$q;
-        negy8$d = negy7$q;
-        k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        sp3_8$d = clz_n3_7$q - clz_e7$q;
-        near_a8$d = clz_n3_7$q < clz_e7$q;
-        near_b8$d = clz_n2_7$q < clz_e7$q;
+        sp3_8$d = clz_n3_7$q - lz_e$clz;
+        near_a8$d = clz_n3_7$q < lz_e$clz;
+        near_b8$d = clz_n2_7$q < lz_e$clz;
         outside8 = (hb_open8$q & (f_hi_lt8$q | (f_hi_eq8$q & f_lo_lt8$q))) | (ha_open8$q & (l_hi_gt8$q | (l_hi_eq8$q & l_lo_gt8$q)));
         exp8 = s0_m1_8$q;
         if (below8$q) begin
@@ -32534,8 +30791,8 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        wide_x = ((absnx8$q) & 36'hfffffffff) << sp3_8$q;
-        wide_y = ((absny8$q) & 36'hfffffffff) << sp3_8$q;
+        wide_x = ((c_absnx$q) & 36'hfffffffff) << sp3_8$q;
+        wide_y = ((c_absny$q) & 36'hfffffffff) << sp3_8$q;
         dividend_x = wide_x[(32'h1)+:(35)];
         dividend_y = wide_y[(32'h1)+:(35)];
         if (below8$q) begin
@@ -32546,17 +30803,17 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         divider$ry = dividend_y[(32'h3)+:(32)];
         divider$fx = dividend_x[(32'h0)+:(3)];
         divider$fy = dividend_y[(32'h0)+:(3)];
-        divider$k = k8$q;
+        divider$k = c_k$q;
         tag_p = zero3;
         if (reserve) begin
             tag_p = tag_pass;
         end
         tag_x = zero3;
-        if (negx8$q) begin
+        if (c_negx$q) begin
             tag_x = tag_negx;
         end
         tag_y = zero3;
-        if (negy8$q) begin
+        if (c_negy$q) begin
             tag_y = tag_negy;
         end
         divider$tag = tag_p | tag_x | tag_y;
@@ -32567,10 +30824,10 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
         lane_by$write_address = res_ptr$q;
         lane_sh$write_address = res_ptr$q;
         lane_id$write_data = id8$q;
-        lane_ax$write_data = ax8$q;
-        lane_ay$write_data = ay8$q;
-        lane_bx$write_data = bx8$q;
-        lane_by$write_data = by8$q;
+        lane_ax$write_data = c_ax$q;
+        lane_ay$write_data = c_ay$q;
+        lane_bx$write_data = c_bx$q;
+        lane_by$write_data = c_by$q;
         sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
             sh_pass = ((exp8) & 7'h7f) | pass_flag;
@@ -32690,101 +30947,6 @@ module machine$pes$1$screener$absnx3(d,q,clock);
 endmodule // machine$pes$1$screener$absnx3
 
 
-module machine$pes$1$screener$absnx4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absnx4
-
-
-module machine$pes$1$screener$absnx5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absnx5
-
-
-module machine$pes$1$screener$absnx6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absnx6
-
-
-module machine$pes$1$screener$absnx7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absnx7
-
-
-module machine$pes$1$screener$absnx8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absnx8
-
-
 module machine$pes$1$screener$absny2(d,q,clock);
     
     // Module arguments
@@ -32821,101 +30983,6 @@ module machine$pes$1$screener$absny3(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$absny3
-
-
-module machine$pes$1$screener$absny4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absny4
-
-
-module machine$pes$1$screener$absny5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absny5
-
-
-module machine$pes$1$screener$absny6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absny6
-
-
-module machine$pes$1$screener$absny7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absny7
-
-
-module machine$pes$1$screener$absny8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$absny8
 
 
 module machine$pes$1$screener$ax1(d,q,clock);
@@ -32975,101 +31042,6 @@ module machine$pes$1$screener$ax3(d,q,clock);
 endmodule // machine$pes$1$screener$ax3
 
 
-module machine$pes$1$screener$ax4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ax4
-
-
-module machine$pes$1$screener$ax5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ax5
-
-
-module machine$pes$1$screener$ax6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ax6
-
-
-module machine$pes$1$screener$ax7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ax7
-
-
-module machine$pes$1$screener$ax8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ax8
-
-
 module machine$pes$1$screener$ay1(d,q,clock);
     
     // Module arguments
@@ -33125,101 +31097,6 @@ module machine$pes$1$screener$ay3(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$ay3
-
-
-module machine$pes$1$screener$ay4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ay4
-
-
-module machine$pes$1$screener$ay5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ay5
-
-
-module machine$pes$1$screener$ay6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ay6
-
-
-module machine$pes$1$screener$ay7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ay7
-
-
-module machine$pes$1$screener$ay8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$ay8
 
 
 module machine$pes$1$screener$back_facing7(d,q,clock);
@@ -33469,101 +31346,6 @@ module machine$pes$1$screener$bx3(d,q,clock);
 endmodule // machine$pes$1$screener$bx3
 
 
-module machine$pes$1$screener$bx4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$bx4
-
-
-module machine$pes$1$screener$bx5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$bx5
-
-
-module machine$pes$1$screener$bx6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$bx6
-
-
-module machine$pes$1$screener$bx7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$bx7
-
-
-module machine$pes$1$screener$bx8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$bx8
-
-
 module machine$pes$1$screener$by1(d,q,clock);
     
     // Module arguments
@@ -33621,99 +31403,120 @@ module machine$pes$1$screener$by3(d,q,clock);
 endmodule // machine$pes$1$screener$by3
 
 
-module machine$pes$1$screener$by4(d,q,clock);
+module machine$pes$1$screener$c_absnx(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$1$screener$by4
+endmodule // machine$pes$1$screener$c_absnx
 
 
-module machine$pes$1$screener$by5(d,q,clock);
+module machine$pes$1$screener$c_absny(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$1$screener$by5
+endmodule // machine$pes$1$screener$c_absny
 
 
-module machine$pes$1$screener$by6(d,q,clock);
+module machine$pes$1$screener$c_ax(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$1$screener$by6
+endmodule // machine$pes$1$screener$c_ax
 
 
-module machine$pes$1$screener$by7(d,q,clock);
+module machine$pes$1$screener$c_ay(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // machine$pes$1$screener$by7
-
-
-module machine$pes$1$screener$by8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$by8
+endmodule // machine$pes$1$screener$c_ay
 
 
 module machine$pes$1$screener$c_back_facing(d,q,clock);
@@ -33754,6 +31557,87 @@ module machine$pes$1$screener$c_backward(d,q,clock);
 endmodule // machine$pes$1$screener$c_backward
 
 
+module machine$pes$1$screener$c_bx(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    
+    // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
+    initial begin
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$1$screener$c_bx
+
+
+module machine$pes$1$screener$c_by(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    
+    // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
+    initial begin
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$1$screener$c_by
+
+
+module machine$pes$1$screener$c_k(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    
+    // Update code (custom)
+    reg [31:0] s1;
+    reg [31:0] s2;
+    initial begin
+       s1 = 32'd0;
+       s2 = 32'd0;
+       q = 32'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       q <= s2;
+    end
+endmodule // machine$pes$1$screener$c_k
+
+
 module machine$pes$1$screener$c_near(d,q,clock);
     
     // Module arguments
@@ -33771,6 +31655,64 @@ module machine$pes$1$screener$c_near(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$c_near
+
+
+module machine$pes$1$screener$c_negx(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Update code (custom)
+    reg s1;
+    reg s2;
+    reg s3;
+    reg s4;
+    initial begin
+       s1 = 1'd0;
+       s2 = 1'd0;
+       s3 = 1'd0;
+       s4 = 1'd0;
+       q = 1'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$1$screener$c_negx
+
+
+module machine$pes$1$screener$c_negy(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Update code (custom)
+    reg s1;
+    reg s2;
+    reg s3;
+    reg s4;
+    initial begin
+       s1 = 1'd0;
+       s2 = 1'd0;
+       s3 = 1'd0;
+       s4 = 1'd0;
+       q = 1'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // machine$pes$1$screener$c_negy
 
 
 module machine$pes$1$screener$c_outside(d,q,clock);
@@ -33811,44 +31753,6 @@ module machine$pes$1$screener$c_passed(d,q,clock);
 endmodule // machine$pes$1$screener$c_passed
 
 
-module machine$pes$1$screener$clz_e6(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$clz_e6
-
-
-module machine$pes$1$screener$clz_e7(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$clz_e7
-
-
 module machine$pes$1$screener$clz_n2_7(d,q,clock);
     
     // Module arguments
@@ -33885,44 +31789,6 @@ module machine$pes$1$screener$clz_n3_7(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$clz_n3_7
-
-
-module machine$pes$1$screener$clz_n4(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$clz_n4
-
-
-module machine$pes$1$screener$clz_n5(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$clz_n5
 
 
 module machine$pes$1$screener$clz_n6(d,q,clock);
@@ -34610,63 +32476,6 @@ module machine$pes$1$screener$k5(d,q,clock);
 endmodule // machine$pes$1$screener$k5
 
 
-module machine$pes$1$screener$k6(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$k6
-
-
-module machine$pes$1$screener$k7(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$k7
-
-
-module machine$pes$1$screener$k8(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$k8
-
-
 module machine$pes$1$screener$k_nonpos6(d,q,clock);
     
     // Module arguments
@@ -35125,6 +32934,108 @@ module machine$pes$1$screener$lane_wy(clock,write_address,write_data,write_enabl
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$pes$1$screener$lane_wy
+
+
+module machine$pes$1$screener$lz_e(clock,value,norm,clz);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] value;
+    output reg  [31:0] norm;
+    output reg  [5:0] clz;
+    
+    // Update code (custom)
+    reg [31:0] half;
+    reg [5:0] half_clz;
+    reg [31:0] first;
+    reg [5:0] first_clz;
+    wire [31:0] s4 = (half[31:28] == 4'd0) ? {half[27:0], 4'd0} : half;
+    wire [31:0] s2 = (s4[31:30] == 2'd0) ? {s4[29:0], 2'd0} : s4;
+    wire [31:0] s1 = s2[31] ? s2 : {s2[30:0], 1'b0};
+    wire [5:0] c421 = {3'd0, half[31:28] == 4'd0, s4[31:30] == 2'd0, !s2[31]};
+    initial begin
+       half = 32'd0;
+       half_clz = 6'd24;
+       norm = 32'd0;
+       clz = 6'd0;
+    end
+    always @(*) begin
+       if (value[31:16] == 16'd0) begin
+          if (value[15:8] == 8'd0) begin
+             first = {value[7:0], 24'd0};
+             first_clz = 6'd24;
+          end else begin
+             first = {value[15:0], 16'd0};
+             first_clz = 6'd16;
+          end
+       end else begin
+          if (value[31:24] == 8'd0) begin
+             first = {value[23:0], 8'd0};
+             first_clz = 6'd8;
+          end else begin
+             first = value;
+             first_clz = 6'd0;
+          end
+       end
+    end
+    always @(posedge clock) begin
+       half <= first;
+       half_clz <= first_clz;
+       norm <= s1;
+       clz <= half_clz | c421;
+    end
+endmodule // machine$pes$1$screener$lz_e
+
+
+module machine$pes$1$screener$lz_n(clock,value,norm,clz);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] value;
+    output reg  [31:0] norm;
+    output reg  [5:0] clz;
+    
+    // Update code (custom)
+    reg [31:0] half;
+    reg [5:0] half_clz;
+    reg [31:0] first;
+    reg [5:0] first_clz;
+    wire [31:0] s4 = (half[31:28] == 4'd0) ? {half[27:0], 4'd0} : half;
+    wire [31:0] s2 = (s4[31:30] == 2'd0) ? {s4[29:0], 2'd0} : s4;
+    wire [31:0] s1 = s2[31] ? s2 : {s2[30:0], 1'b0};
+    wire [5:0] c421 = {3'd0, half[31:28] == 4'd0, s4[31:30] == 2'd0, !s2[31]};
+    initial begin
+       half = 32'd0;
+       half_clz = 6'd24;
+       norm = 32'd0;
+       clz = 6'd0;
+    end
+    always @(*) begin
+       if (value[31:16] == 16'd0) begin
+          if (value[15:8] == 8'd0) begin
+             first = {value[7:0], 24'd0};
+             first_clz = 6'd24;
+          end else begin
+             first = {value[15:0], 16'd0};
+             first_clz = 6'd16;
+          end
+       end else begin
+          if (value[31:24] == 8'd0) begin
+             first = {value[23:0], 8'd0};
+             first_clz = 6'd8;
+          end else begin
+             first = value;
+             first_clz = 6'd0;
+          end
+       end
+    end
+    always @(posedge clock) begin
+       half <= first;
+       half_clz <= first_clz;
+       norm <= s1;
+       clz <= half_clz | c421;
+    end
+endmodule // machine$pes$1$screener$lz_n
 
 
 module machine$pes$1$screener$m_abx(clock,a,b,p);
@@ -36122,101 +34033,6 @@ module machine$pes$1$screener$negx3(d,q,clock);
 endmodule // machine$pes$1$screener$negx3
 
 
-module machine$pes$1$screener$negx4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negx4
-
-
-module machine$pes$1$screener$negx5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negx5
-
-
-module machine$pes$1$screener$negx6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negx6
-
-
-module machine$pes$1$screener$negx7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negx7
-
-
-module machine$pes$1$screener$negx8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negx8
-
-
 module machine$pes$1$screener$negy2(d,q,clock);
     
     // Module arguments
@@ -36255,101 +34071,6 @@ module machine$pes$1$screener$negy3(d,q,clock);
 endmodule // machine$pes$1$screener$negy3
 
 
-module machine$pes$1$screener$negy4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negy4
-
-
-module machine$pes$1$screener$negy5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negy5
-
-
-module machine$pes$1$screener$negy6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negy6
-
-
-module machine$pes$1$screener$negy7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negy7
-
-
-module machine$pes$1$screener$negy8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$negy8
-
-
 module machine$pes$1$screener$nmax3(d,q,clock);
     
     // Module arguments
@@ -36367,82 +34088,6 @@ module machine$pes$1$screener$nmax3(d,q,clock);
     end
           
 endmodule // machine$pes$1$screener$nmax3
-
-
-module machine$pes$1$screener$norm_e6(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$norm_e6
-
-
-module machine$pes$1$screener$norm_e7(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$norm_e7
-
-
-module machine$pes$1$screener$norm_n4(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$norm_n4
-
-
-module machine$pes$1$screener$norm_n5(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // machine$pes$1$screener$norm_n5
 
 
 module machine$pes$1$screener$norm_n6(d,q,clock);
@@ -37256,17 +34901,24 @@ module machine$pes$1$tag_kind(clock,write_address,write_data,write_enable,head_a
     output reg  read_data;
     
     // Update code (custom)
+    // Two copies under the same writes, one read each: from one memory, Yosys makes the two reads
+    // one port whose address is chosen by `pop` (pop, address, RAM, register: measured 141 MHz).
     reg [0:0] mem [0:63];
+    reg [0:0] mem_n [0:63];
     reg [0:0] read_r;
     integer i;
     initial begin
-       for (i = 0; i <= 63; i = i + 1) mem[i] = 1'd0;
+       for (i = 0; i <= 63; i = i + 1) begin
+          mem[i] = 1'd0;
+          mem_n[i] = 1'd0;
+       end
        read_r = 1'd0;
     end
     always @(posedge clock) begin
-       read_r <= pop ? mem[next_address] : mem[head_address];
+       read_r <= pop ? mem_n[next_address] : mem[head_address];
        if (write_enable) begin
           mem[write_address] <= write_data;
+          mem_n[write_address] <= write_data;
        end
     end
     always @(*) read_data = read_r;

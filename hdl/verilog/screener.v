@@ -55,25 +55,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     localparam  thr_f_lo = 16'hff00;
     localparam  thr_l_hi = 16'h8000;
     localparam  thr_l_lo = 16'h100;
-    localparam  zero16 = 16'h0;
     localparam  zero14 = 14'b0;
-    localparam  zero8 = 8'h0;
-    localparam  zero4 = 4'h0;
-    localparam  zero2 = 2'b0;
     localparam  zero3 = 3'b0;
-    localparam  sh24 = 32'h18;
-    localparam  sh16 = 32'h10;
-    localparam  sh8 = 32'h8;
-    localparam  sh4 = 32'h4;
-    localparam  sh2 = 32'h2;
     localparam  sh1 = 32'h1;
-    localparam  c24_6 = 6'b11000;
-    localparam  c16_6 = 6'b10000;
-    localparam  c8_6 = 6'b1000;
-    localparam  c4_6 = 6'b100;
     localparam  c2_6 = 6'b10;
     localparam  c3_6 = 6'b11;
-    localparam  c1_6 = 6'b1;
     localparam  tag_pass = 3'b1;
     localparam  tag_negx = 3'b10;
     localparam  tag_negy = 3'b100;
@@ -308,72 +294,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [15:0] id4$d;
     wire  [15:0] id4$q;
     reg  id4$clock;
-    reg  [17:0] ax4$d;
-    wire  [17:0] ax4$q;
-    reg  ax4$clock;
-    reg  [17:0] ay4$d;
-    wire  [17:0] ay4$q;
-    reg  ay4$clock;
-    reg  [17:0] bx4$d;
-    wire  [17:0] bx4$q;
-    reg  bx4$clock;
-    reg  [17:0] by4$d;
-    wire  [17:0] by4$q;
-    reg  by4$clock;
-    reg  [17:0] absnx4$d;
-    wire  [17:0] absnx4$q;
-    reg  absnx4$clock;
-    reg  [17:0] absny4$d;
-    wire  [17:0] absny4$q;
-    reg  absny4$clock;
-    reg  negx4$d;
-    wire  negx4$q;
-    reg  negx4$clock;
-    reg  negy4$d;
-    wire  negy4$q;
-    reg  negy4$clock;
     reg  [31:0] p_aby4$d;
     wire  [31:0] p_aby4$q;
     reg  p_aby4$clock;
     reg  [31:0] p_abx4$d;
     wire  [31:0] p_abx4$q;
     reg  p_abx4$clock;
-    reg  [5:0] clz_n4$d;
-    wire  [5:0] clz_n4$q;
-    reg  clz_n4$clock;
-    reg  [31:0] norm_n4$d;
-    wire  [31:0] norm_n4$q;
-    reg  norm_n4$clock;
     reg  v5$d;
     wire  v5$q;
     reg  v5$clock;
     reg  [15:0] id5$d;
     wire  [15:0] id5$q;
     reg  id5$clock;
-    reg  [17:0] ax5$d;
-    wire  [17:0] ax5$q;
-    reg  ax5$clock;
-    reg  [17:0] ay5$d;
-    wire  [17:0] ay5$q;
-    reg  ay5$clock;
-    reg  [17:0] bx5$d;
-    wire  [17:0] bx5$q;
-    reg  bx5$clock;
-    reg  [17:0] by5$d;
-    wire  [17:0] by5$q;
-    reg  by5$clock;
-    reg  [17:0] absnx5$d;
-    wire  [17:0] absnx5$q;
-    reg  absnx5$clock;
-    reg  [17:0] absny5$d;
-    wire  [17:0] absny5$q;
-    reg  absny5$clock;
-    reg  negx5$d;
-    wire  negx5$q;
-    reg  negx5$clock;
-    reg  negy5$d;
-    wire  negy5$q;
-    reg  negy5$clock;
     reg  [31:0] k5$d;
     wire  [31:0] k5$q;
     reg  k5$clock;
@@ -389,45 +321,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] p_nby5$d;
     wire  [31:0] p_nby5$q;
     reg  p_nby5$clock;
-    reg  [5:0] clz_n5$d;
-    wire  [5:0] clz_n5$q;
-    reg  clz_n5$clock;
-    reg  [31:0] norm_n5$d;
-    wire  [31:0] norm_n5$q;
-    reg  norm_n5$clock;
     reg  v6$d;
     wire  v6$q;
     reg  v6$clock;
     reg  [15:0] id6$d;
     wire  [15:0] id6$q;
     reg  id6$clock;
-    reg  [17:0] ax6$d;
-    wire  [17:0] ax6$q;
-    reg  ax6$clock;
-    reg  [17:0] ay6$d;
-    wire  [17:0] ay6$q;
-    reg  ay6$clock;
-    reg  [17:0] bx6$d;
-    wire  [17:0] bx6$q;
-    reg  bx6$clock;
-    reg  [17:0] by6$d;
-    wire  [17:0] by6$q;
-    reg  by6$clock;
-    reg  [17:0] absnx6$d;
-    wire  [17:0] absnx6$q;
-    reg  absnx6$clock;
-    reg  [17:0] absny6$d;
-    wire  [17:0] absny6$q;
-    reg  absny6$clock;
-    reg  negx6$d;
-    wire  negx6$q;
-    reg  negx6$clock;
-    reg  negy6$d;
-    wire  negy6$q;
-    reg  negy6$clock;
-    reg  [31:0] k6$d;
-    wire  [31:0] k6$q;
-    reg  k6$clock;
     reg  k_nonpos6$d;
     wire  k_nonpos6$q;
     reg  k_nonpos6$clock;
@@ -455,45 +354,12 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] norm_n6$d;
     wire  [31:0] norm_n6$q;
     reg  norm_n6$clock;
-    reg  [5:0] clz_e6$d;
-    wire  [5:0] clz_e6$q;
-    reg  clz_e6$clock;
-    reg  [31:0] norm_e6$d;
-    wire  [31:0] norm_e6$q;
-    reg  norm_e6$clock;
     reg  v7$d;
     wire  v7$q;
     reg  v7$clock;
     reg  [15:0] id7$d;
     wire  [15:0] id7$q;
     reg  id7$clock;
-    reg  [17:0] ax7$d;
-    wire  [17:0] ax7$q;
-    reg  ax7$clock;
-    reg  [17:0] ay7$d;
-    wire  [17:0] ay7$q;
-    reg  ay7$clock;
-    reg  [17:0] bx7$d;
-    wire  [17:0] bx7$q;
-    reg  bx7$clock;
-    reg  [17:0] by7$d;
-    wire  [17:0] by7$q;
-    reg  by7$clock;
-    reg  [17:0] absnx7$d;
-    wire  [17:0] absnx7$q;
-    reg  absnx7$clock;
-    reg  [17:0] absny7$d;
-    wire  [17:0] absny7$q;
-    reg  absny7$clock;
-    reg  negx7$d;
-    wire  negx7$q;
-    reg  negx7$clock;
-    reg  negy7$d;
-    wire  negy7$q;
-    reg  negy7$clock;
-    reg  [31:0] k7$d;
-    wire  [31:0] k7$q;
-    reg  k7$clock;
     reg  [31:0] side_f7$d;
     wire  [31:0] side_f7$q;
     reg  side_f7$clock;
@@ -506,12 +372,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [31:0] norm_n7$d;
     wire  [31:0] norm_n7$q;
     reg  norm_n7$clock;
-    reg  [5:0] clz_e7$d;
-    wire  [5:0] clz_e7$q;
-    reg  clz_e7$clock;
-    reg  [31:0] norm_e7$d;
-    wire  [31:0] norm_e7$q;
-    reg  norm_e7$clock;
     reg  backward7$d;
     wire  backward7$q;
     reg  backward7$clock;
@@ -554,33 +414,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [15:0] id8$d;
     wire  [15:0] id8$q;
     reg  id8$clock;
-    reg  [17:0] ax8$d;
-    wire  [17:0] ax8$q;
-    reg  ax8$clock;
-    reg  [17:0] ay8$d;
-    wire  [17:0] ay8$q;
-    reg  ay8$clock;
-    reg  [17:0] bx8$d;
-    wire  [17:0] bx8$q;
-    reg  bx8$clock;
-    reg  [17:0] by8$d;
-    wire  [17:0] by8$q;
-    reg  by8$clock;
-    reg  [17:0] absnx8$d;
-    wire  [17:0] absnx8$q;
-    reg  absnx8$clock;
-    reg  [17:0] absny8$d;
-    wire  [17:0] absny8$q;
-    reg  absny8$clock;
-    reg  negx8$d;
-    wire  negx8$q;
-    reg  negx8$clock;
-    reg  negy8$d;
-    wire  negy8$q;
-    reg  negy8$clock;
-    reg  [31:0] k8$d;
-    wire  [31:0] k8$q;
-    reg  k8$clock;
     reg  [5:0] s0_8$d;
     wire  [5:0] s0_8$q;
     reg  s0_8$clock;
@@ -626,6 +459,41 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  near9$d;
     wire  near9$q;
     reg  near9$clock;
+    reg  c_ax$clock;
+    reg  [17:0] c_ax$d;
+    wire  [17:0] c_ax$q;
+    reg  c_ay$clock;
+    reg  [17:0] c_ay$d;
+    wire  [17:0] c_ay$q;
+    reg  c_bx$clock;
+    reg  [17:0] c_bx$d;
+    wire  [17:0] c_bx$q;
+    reg  c_by$clock;
+    reg  [17:0] c_by$d;
+    wire  [17:0] c_by$q;
+    reg  c_absnx$clock;
+    reg  [17:0] c_absnx$d;
+    wire  [17:0] c_absnx$q;
+    reg  c_absny$clock;
+    reg  [17:0] c_absny$d;
+    wire  [17:0] c_absny$q;
+    reg  c_negx$clock;
+    reg  c_negx$d;
+    wire  c_negx$q;
+    reg  c_negy$clock;
+    reg  c_negy$d;
+    wire  c_negy$q;
+    reg  c_k$clock;
+    reg  [31:0] c_k$d;
+    wire  [31:0] c_k$q;
+    reg  lz_n$clock;
+    reg  [31:0] lz_n$value;
+    wire  [31:0] lz_n$norm;
+    wire  [5:0] lz_n$clz;
+    reg  lz_e$clock;
+    reg  [31:0] lz_e$value;
+    wire  [31:0] lz_e$norm;
+    wire  [5:0] lz_e$clz;
     reg  divider$clock;
     reg  [31:0] divider$rx;
     reg  [31:0] divider$ry;
@@ -678,42 +546,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     reg  [17:0] absnx;
     reg  [17:0] absny;
     reg  [17:0] nmax;
-    reg  [31:0] zn0;
-    reg  [31:0] zn1;
-    reg  [31:0] zn2;
-    reg  [5:0] cn16_n;
-    reg  [5:0] cn8_n;
-    reg  [15:0] top16_n;
-    reg  [7:0] top8_n;
     reg  [31:0] kk;
-    reg  [31:0] zn3;
-    reg  [31:0] zn4;
-    reg  [31:0] zn5;
-    reg  [5:0] cn4_n;
-    reg  [5:0] cn2_n;
-    reg  [5:0] cn1_n;
-    reg  [3:0] top4_n;
-    reg  [1:0] top2_n;
     reg  [31:0] ha;
     reg  [31:0] hb;
     reg  [31:0] k2;
-    reg  z16_e;
-    reg  z8hi_e;
-    reg  z8mid_e;
-    reg  [31:0] ze_lo;
-    reg  [31:0] ze_hi;
-    reg  [5:0] ce_lo;
-    reg  [5:0] ce_hi;
-    reg  [31:0] ze2;
-    reg  [5:0] ce_e;
-    reg  [31:0] ze3;
-    reg  [31:0] ze4;
-    reg  [31:0] ze5;
-    reg  [5:0] ce4_e;
-    reg  [5:0] ce2_e;
-    reg  [5:0] ce1_e;
-    reg  [3:0] top4_e;
-    reg  [1:0] top2_e;
     reg  ha_pos;
     reg  hb_pos;
     reg  is_backward;
@@ -1087,46 +923,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(id4$q),
         .clock(id4$clock)
     );
-    screener$ax4 ax4(
-        .d(ax4$d),
-        .q(ax4$q),
-        .clock(ax4$clock)
-    );
-    screener$ay4 ay4(
-        .d(ay4$d),
-        .q(ay4$q),
-        .clock(ay4$clock)
-    );
-    screener$bx4 bx4(
-        .d(bx4$d),
-        .q(bx4$q),
-        .clock(bx4$clock)
-    );
-    screener$by4 by4(
-        .d(by4$d),
-        .q(by4$q),
-        .clock(by4$clock)
-    );
-    screener$absnx4 absnx4(
-        .d(absnx4$d),
-        .q(absnx4$q),
-        .clock(absnx4$clock)
-    );
-    screener$absny4 absny4(
-        .d(absny4$d),
-        .q(absny4$q),
-        .clock(absny4$clock)
-    );
-    screener$negx4 negx4(
-        .d(negx4$d),
-        .q(negx4$q),
-        .clock(negx4$clock)
-    );
-    screener$negy4 negy4(
-        .d(negy4$d),
-        .q(negy4$q),
-        .clock(negy4$clock)
-    );
     screener$p_aby4 p_aby4(
         .d(p_aby4$d),
         .q(p_aby4$q),
@@ -1137,16 +933,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(p_abx4$q),
         .clock(p_abx4$clock)
     );
-    screener$clz_n4 clz_n4(
-        .d(clz_n4$d),
-        .q(clz_n4$q),
-        .clock(clz_n4$clock)
-    );
-    screener$norm_n4 norm_n4(
-        .d(norm_n4$d),
-        .q(norm_n4$q),
-        .clock(norm_n4$clock)
-    );
     screener$v5 v5(
         .d(v5$d),
         .q(v5$q),
@@ -1156,46 +942,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(id5$d),
         .q(id5$q),
         .clock(id5$clock)
-    );
-    screener$ax5 ax5(
-        .d(ax5$d),
-        .q(ax5$q),
-        .clock(ax5$clock)
-    );
-    screener$ay5 ay5(
-        .d(ay5$d),
-        .q(ay5$q),
-        .clock(ay5$clock)
-    );
-    screener$bx5 bx5(
-        .d(bx5$d),
-        .q(bx5$q),
-        .clock(bx5$clock)
-    );
-    screener$by5 by5(
-        .d(by5$d),
-        .q(by5$q),
-        .clock(by5$clock)
-    );
-    screener$absnx5 absnx5(
-        .d(absnx5$d),
-        .q(absnx5$q),
-        .clock(absnx5$clock)
-    );
-    screener$absny5 absny5(
-        .d(absny5$d),
-        .q(absny5$q),
-        .clock(absny5$clock)
-    );
-    screener$negx5 negx5(
-        .d(negx5$d),
-        .q(negx5$q),
-        .clock(negx5$clock)
-    );
-    screener$negy5 negy5(
-        .d(negy5$d),
-        .q(negy5$q),
-        .clock(negy5$clock)
     );
     screener$k5 k5(
         .d(k5$d),
@@ -1222,16 +968,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(p_nby5$q),
         .clock(p_nby5$clock)
     );
-    screener$clz_n5 clz_n5(
-        .d(clz_n5$d),
-        .q(clz_n5$q),
-        .clock(clz_n5$clock)
-    );
-    screener$norm_n5 norm_n5(
-        .d(norm_n5$d),
-        .q(norm_n5$q),
-        .clock(norm_n5$clock)
-    );
     screener$v6 v6(
         .d(v6$d),
         .q(v6$q),
@@ -1241,51 +977,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(id6$d),
         .q(id6$q),
         .clock(id6$clock)
-    );
-    screener$ax6 ax6(
-        .d(ax6$d),
-        .q(ax6$q),
-        .clock(ax6$clock)
-    );
-    screener$ay6 ay6(
-        .d(ay6$d),
-        .q(ay6$q),
-        .clock(ay6$clock)
-    );
-    screener$bx6 bx6(
-        .d(bx6$d),
-        .q(bx6$q),
-        .clock(bx6$clock)
-    );
-    screener$by6 by6(
-        .d(by6$d),
-        .q(by6$q),
-        .clock(by6$clock)
-    );
-    screener$absnx6 absnx6(
-        .d(absnx6$d),
-        .q(absnx6$q),
-        .clock(absnx6$clock)
-    );
-    screener$absny6 absny6(
-        .d(absny6$d),
-        .q(absny6$q),
-        .clock(absny6$clock)
-    );
-    screener$negx6 negx6(
-        .d(negx6$d),
-        .q(negx6$q),
-        .clock(negx6$clock)
-    );
-    screener$negy6 negy6(
-        .d(negy6$d),
-        .q(negy6$q),
-        .clock(negy6$clock)
-    );
-    screener$k6 k6(
-        .d(k6$d),
-        .q(k6$q),
-        .clock(k6$clock)
     );
     screener$k_nonpos6 k_nonpos6(
         .d(k_nonpos6$d),
@@ -1332,16 +1023,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .q(norm_n6$q),
         .clock(norm_n6$clock)
     );
-    screener$clz_e6 clz_e6(
-        .d(clz_e6$d),
-        .q(clz_e6$q),
-        .clock(clz_e6$clock)
-    );
-    screener$norm_e6 norm_e6(
-        .d(norm_e6$d),
-        .q(norm_e6$q),
-        .clock(norm_e6$clock)
-    );
     screener$v7 v7(
         .d(v7$d),
         .q(v7$q),
@@ -1351,51 +1032,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(id7$d),
         .q(id7$q),
         .clock(id7$clock)
-    );
-    screener$ax7 ax7(
-        .d(ax7$d),
-        .q(ax7$q),
-        .clock(ax7$clock)
-    );
-    screener$ay7 ay7(
-        .d(ay7$d),
-        .q(ay7$q),
-        .clock(ay7$clock)
-    );
-    screener$bx7 bx7(
-        .d(bx7$d),
-        .q(bx7$q),
-        .clock(bx7$clock)
-    );
-    screener$by7 by7(
-        .d(by7$d),
-        .q(by7$q),
-        .clock(by7$clock)
-    );
-    screener$absnx7 absnx7(
-        .d(absnx7$d),
-        .q(absnx7$q),
-        .clock(absnx7$clock)
-    );
-    screener$absny7 absny7(
-        .d(absny7$d),
-        .q(absny7$q),
-        .clock(absny7$clock)
-    );
-    screener$negx7 negx7(
-        .d(negx7$d),
-        .q(negx7$q),
-        .clock(negx7$clock)
-    );
-    screener$negy7 negy7(
-        .d(negy7$d),
-        .q(negy7$q),
-        .clock(negy7$clock)
-    );
-    screener$k7 k7(
-        .d(k7$d),
-        .q(k7$q),
-        .clock(k7$clock)
     );
     screener$side_f7 side_f7(
         .d(side_f7$d),
@@ -1416,16 +1052,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(norm_n7$d),
         .q(norm_n7$q),
         .clock(norm_n7$clock)
-    );
-    screener$clz_e7 clz_e7(
-        .d(clz_e7$d),
-        .q(clz_e7$q),
-        .clock(clz_e7$clock)
-    );
-    screener$norm_e7 norm_e7(
-        .d(norm_e7$d),
-        .q(norm_e7$q),
-        .clock(norm_e7$clock)
     );
     screener$backward7 backward7(
         .d(backward7$d),
@@ -1496,51 +1122,6 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(id8$d),
         .q(id8$q),
         .clock(id8$clock)
-    );
-    screener$ax8 ax8(
-        .d(ax8$d),
-        .q(ax8$q),
-        .clock(ax8$clock)
-    );
-    screener$ay8 ay8(
-        .d(ay8$d),
-        .q(ay8$q),
-        .clock(ay8$clock)
-    );
-    screener$bx8 bx8(
-        .d(bx8$d),
-        .q(bx8$q),
-        .clock(bx8$clock)
-    );
-    screener$by8 by8(
-        .d(by8$d),
-        .q(by8$q),
-        .clock(by8$clock)
-    );
-    screener$absnx8 absnx8(
-        .d(absnx8$d),
-        .q(absnx8$q),
-        .clock(absnx8$clock)
-    );
-    screener$absny8 absny8(
-        .d(absny8$d),
-        .q(absny8$q),
-        .clock(absny8$clock)
-    );
-    screener$negx8 negx8(
-        .d(negx8$d),
-        .q(negx8$q),
-        .clock(negx8$clock)
-    );
-    screener$negy8 negy8(
-        .d(negy8$d),
-        .q(negy8$q),
-        .clock(negy8$clock)
-    );
-    screener$k8 k8(
-        .d(k8$d),
-        .q(k8$q),
-        .clock(k8$clock)
     );
     screener$s0_8 s0_8(
         .d(s0_8$d),
@@ -1616,6 +1197,63 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         .d(near9$d),
         .q(near9$q),
         .clock(near9$clock)
+    );
+    screener$c_ax c_ax(
+        .clock(c_ax$clock),
+        .d(c_ax$d),
+        .q(c_ax$q)
+    );
+    screener$c_ay c_ay(
+        .clock(c_ay$clock),
+        .d(c_ay$d),
+        .q(c_ay$q)
+    );
+    screener$c_bx c_bx(
+        .clock(c_bx$clock),
+        .d(c_bx$d),
+        .q(c_bx$q)
+    );
+    screener$c_by c_by(
+        .clock(c_by$clock),
+        .d(c_by$d),
+        .q(c_by$q)
+    );
+    screener$c_absnx c_absnx(
+        .clock(c_absnx$clock),
+        .d(c_absnx$d),
+        .q(c_absnx$q)
+    );
+    screener$c_absny c_absny(
+        .clock(c_absny$clock),
+        .d(c_absny$d),
+        .q(c_absny$q)
+    );
+    screener$c_negx c_negx(
+        .clock(c_negx$clock),
+        .d(c_negx$d),
+        .q(c_negx$q)
+    );
+    screener$c_negy c_negy(
+        .clock(c_negy$clock),
+        .d(c_negy$d),
+        .q(c_negy$q)
+    );
+    screener$c_k c_k(
+        .clock(c_k$clock),
+        .d(c_k$d),
+        .q(c_k$q)
+    );
+    screener$lz_n lz_n(
+        .clock(lz_n$clock),
+        .value(lz_n$value),
+        .norm(lz_n$norm),
+        .clz(lz_n$clz)
+    );
+    screener$lz_e lz_e(
+        .clock(lz_e$clock),
+        .value(lz_e$value),
+        .norm(lz_e$norm),
+        .clz(lz_e$clz)
     );
     screener$divider divider(
         .clock(divider$clock),
@@ -1698,46 +1336,17 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         nmax3$clock = clock;
         v4$clock = clock;
         id4$clock = clock;
-        ax4$clock = clock;
-        ay4$clock = clock;
-        bx4$clock = clock;
-        by4$clock = clock;
-        absnx4$clock = clock;
-        absny4$clock = clock;
-        negx4$clock = clock;
-        negy4$clock = clock;
         p_aby4$clock = clock;
         p_abx4$clock = clock;
-        clz_n4$clock = clock;
-        norm_n4$clock = clock;
         v5$clock = clock;
         id5$clock = clock;
-        ax5$clock = clock;
-        ay5$clock = clock;
-        bx5$clock = clock;
-        by5$clock = clock;
-        absnx5$clock = clock;
-        absny5$clock = clock;
-        negx5$clock = clock;
-        negy5$clock = clock;
         k5$clock = clock;
         p_nax5$clock = clock;
         p_nay5$clock = clock;
         p_nbx5$clock = clock;
         p_nby5$clock = clock;
-        clz_n5$clock = clock;
-        norm_n5$clock = clock;
         v6$clock = clock;
         id6$clock = clock;
-        ax6$clock = clock;
-        ay6$clock = clock;
-        bx6$clock = clock;
-        by6$clock = clock;
-        absnx6$clock = clock;
-        absny6$clock = clock;
-        negx6$clock = clock;
-        negy6$clock = clock;
-        k6$clock = clock;
         k_nonpos6$clock = clock;
         ha6$clock = clock;
         hb6$clock = clock;
@@ -1747,40 +1356,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         p_lax6$clock = clock;
         clz_n6$clock = clock;
         norm_n6$clock = clock;
-        clz_e6$clock = clock;
-        norm_e6$clock = clock;
         v7$clock = clock;
         id7$clock = clock;
-        ax7$clock = clock;
-        ay7$clock = clock;
-        bx7$clock = clock;
-        by7$clock = clock;
-        absnx7$clock = clock;
-        absny7$clock = clock;
-        negx7$clock = clock;
-        negy7$clock = clock;
-        k7$clock = clock;
         side_f7$clock = clock;
         side_l7$clock = clock;
         clz_n7$clock = clock;
         norm_n7$clock = clock;
-        clz_e7$clock = clock;
-        norm_e7$clock = clock;
         backward7$clock = clock;
         back_facing7$clock = clock;
         ha_open7$clock = clock;
         hb_open7$clock = clock;
         v8$clock = clock;
         id8$clock = clock;
-        ax8$clock = clock;
-        ay8$clock = clock;
-        bx8$clock = clock;
-        by8$clock = clock;
-        absnx8$clock = clock;
-        absny8$clock = clock;
-        negx8$clock = clock;
-        negy8$clock = clock;
-        k8$clock = clock;
         s0_8$clock = clock;
         s0_m1_8$clock = clock;
         below8$clock = clock;
@@ -1848,46 +1435,17 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         nmax3$d = nmax3$q;
         v4$d = v4$q;
         id4$d = id4$q;
-        ax4$d = ax4$q;
-        ay4$d = ay4$q;
-        bx4$d = bx4$q;
-        by4$d = by4$q;
-        absnx4$d = absnx4$q;
-        absny4$d = absny4$q;
-        negx4$d = negx4$q;
-        negy4$d = negy4$q;
         p_aby4$d = p_aby4$q;
         p_abx4$d = p_abx4$q;
-        clz_n4$d = clz_n4$q;
-        norm_n4$d = norm_n4$q;
         v5$d = v5$q;
         id5$d = id5$q;
-        ax5$d = ax5$q;
-        ay5$d = ay5$q;
-        bx5$d = bx5$q;
-        by5$d = by5$q;
-        absnx5$d = absnx5$q;
-        absny5$d = absny5$q;
-        negx5$d = negx5$q;
-        negy5$d = negy5$q;
         k5$d = k5$q;
         p_nax5$d = p_nax5$q;
         p_nay5$d = p_nay5$q;
         p_nbx5$d = p_nbx5$q;
         p_nby5$d = p_nby5$q;
-        clz_n5$d = clz_n5$q;
-        norm_n5$d = norm_n5$q;
         v6$d = v6$q;
         id6$d = id6$q;
-        ax6$d = ax6$q;
-        ay6$d = ay6$q;
-        bx6$d = bx6$q;
-        by6$d = by6$q;
-        absnx6$d = absnx6$q;
-        absny6$d = absny6$q;
-        negx6$d = negx6$q;
-        negy6$d = negy6$q;
-        k6$d = k6$q;
         k_nonpos6$d = k_nonpos6$q;
         ha6$d = ha6$q;
         hb6$d = hb6$q;
@@ -1897,40 +1455,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         p_lax6$d = p_lax6$q;
         clz_n6$d = clz_n6$q;
         norm_n6$d = norm_n6$q;
-        clz_e6$d = clz_e6$q;
-        norm_e6$d = norm_e6$q;
         v7$d = v7$q;
         id7$d = id7$q;
-        ax7$d = ax7$q;
-        ay7$d = ay7$q;
-        bx7$d = bx7$q;
-        by7$d = by7$q;
-        absnx7$d = absnx7$q;
-        absny7$d = absny7$q;
-        negx7$d = negx7$q;
-        negy7$d = negy7$q;
-        k7$d = k7$q;
         side_f7$d = side_f7$q;
         side_l7$d = side_l7$q;
         clz_n7$d = clz_n7$q;
         norm_n7$d = norm_n7$q;
-        clz_e7$d = clz_e7$q;
-        norm_e7$d = norm_e7$q;
         backward7$d = backward7$q;
         back_facing7$d = back_facing7$q;
         ha_open7$d = ha_open7$q;
         hb_open7$d = hb_open7$q;
         v8$d = v8$q;
         id8$d = id8$q;
-        ax8$d = ax8$q;
-        ay8$d = ay8$q;
-        bx8$d = bx8$q;
-        by8$d = by8$q;
-        absnx8$d = absnx8$q;
-        absny8$d = absny8$q;
-        negx8$d = negx8$q;
-        negy8$d = negy8$q;
-        k8$d = k8$q;
         s0_8$d = s0_8$q;
         s0_m1_8$d = s0_m1_8$q;
         below8$d = below8$q;
@@ -1970,7 +1506,18 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         m_fbx$clock = clock;
         m_lay$clock = clock;
         m_lax$clock = clock;
+        c_ax$clock = clock;
+        c_ay$clock = clock;
+        c_bx$clock = clock;
+        c_by$clock = clock;
+        c_absnx$clock = clock;
+        c_absny$clock = clock;
+        c_negx$clock = clock;
+        c_negy$clock = clock;
+        c_k$clock = clock;
         divider$clock = clock;
+        lz_n$clock = clock;
+        lz_e$clock = clock;
         lane_id$clock = clock;
         lane_ax$clock = clock;
         lane_ay$clock = clock;
@@ -2063,93 +1610,28 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         m_lax$b = ax3$q;
         p_aby4$d = m_aby$p;
         p_abx4$d = m_abx$p;
-        zn0 = ((nmax3$q) & 32'hffffffff);
-        top16_n = zn0[(32'h10)+:(16)];
-        zn1 = zn0;
-        cn16_n = zero6;
-        if (top16_n == zero16) begin
-            zn1 = zn0 << sh16;
-            cn16_n = c16_6;
-        end
-        top8_n = zn1[(32'h18)+:(8)];
-        zn2 = zn1;
-        cn8_n = zero6;
-        if (top8_n == zero8) begin
-            zn2 = zn1 << sh8;
-            cn8_n = c8_6;
-        end
+        lz_n$value = ((nmax3$q) & 32'hffffffff);
+        c_ax$d = ax3$q;
+        c_ay$d = ay3$q;
+        c_bx$d = bx3$q;
+        c_by$d = by3$q;
+        c_absnx$d = absnx3$q;
+        c_absny$d = absny3$q;
+        c_negx$d = negx3$q;
+        c_negy$d = negy3$q;
         v4$d = v3$q;
         id4$d = id3$q;
-        ax4$d = ax3$q;
-        ay4$d = ay3$q;
-        bx4$d = bx3$q;
-        by4$d = by3$q;
-        absnx4$d = absnx3$q;
-        absny4$d = absny3$q;
-        negx4$d = negx3$q;
-        negy4$d = negy3$q;
-        clz_n4$d = cn16_n | cn8_n;
-        norm_n4$d = zn2;
         kk = p_aby4$q - p_abx4$q;
         p_nax5$d = m_nax$p;
         p_nay5$d = m_nay$p;
         p_nbx5$d = m_nbx$p;
         p_nby5$d = m_nby$p;
-        top4_n = norm_n4$q[(32'h1c)+:(4)];
-        zn3 = norm_n4$q;
-        cn4_n = zero6;
-        if (top4_n == zero4) begin
-            zn3 = norm_n4$q << sh4;
-            cn4_n = c4_6;
-        end
-        top2_n = zn3[(32'h1e)+:(2)];
-        zn4 = zn3;
-        cn2_n = zero6;
-        if (top2_n == zero2) begin
-            zn4 = zn3 << sh2;
-            cn2_n = c2_6;
-        end
-        zn5 = zn4;
-        cn1_n = zero6;
-        if (~zn4[32'h1f]) begin
-            zn5 = zn4 << sh1;
-            cn1_n = c1_6;
-        end
         v5$d = v4$q;
         id5$d = id4$q;
-        ax5$d = ax4$q;
-        ay5$d = ay4$q;
-        bx5$d = bx4$q;
-        by5$d = by4$q;
-        absnx5$d = absnx4$q;
-        absny5$d = absny4$q;
-        negx5$d = negx4$q;
-        negy5$d = negy4$q;
         k5$d = kk;
-        clz_n5$d = clz_n4$q | cn4_n | cn2_n | cn1_n;
-        norm_n5$d = zn5;
         k2 = k5$q << sh1;
-        z16_e = k2[(32'h10)+:(16)] == zero16;
-        z8hi_e = k2[(32'h18)+:(8)] == zero8;
-        z8mid_e = k2[(32'h8)+:(8)] == zero8;
-        ze_hi = k2;
-        ce_hi = zero6;
-        if (z8hi_e) begin
-            ze_hi = k2 << sh8;
-            ce_hi = c8_6;
-        end
-        ze_lo = k2 << sh16;
-        ce_lo = c16_6;
-        if (z8mid_e) begin
-            ze_lo = k2 << sh24;
-            ce_lo = c24_6;
-        end
-        ze2 = ze_hi;
-        ce_e = ce_hi;
-        if (z16_e) begin
-            ze2 = ze_lo;
-            ce_e = ce_lo;
-        end
+        lz_e$value = k2;
+        c_k$d = k5$q;
         ha = p_nax5$q + p_nay5$q;
         hb = p_nbx5$q + p_nby5$q;
         p_fby6$d = m_fby$p;
@@ -2158,42 +1640,11 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         p_lax6$d = m_lax$p;
         v6$d = v5$q;
         id6$d = id5$q;
-        ax6$d = ax5$q;
-        ay6$d = ay5$q;
-        bx6$d = bx5$q;
-        by6$d = by5$q;
-        absnx6$d = absnx5$q;
-        absny6$d = absny5$q;
-        negx6$d = negx5$q;
-        negy6$d = negy5$q;
-        k6$d = k5$q;
         k_nonpos6$d = k5$q[32'h1f] | (k5$q == zero32);
         ha6$d = ha;
         hb6$d = hb;
-        clz_n6$d = clz_n5$q;
-        norm_n6$d = norm_n5$q;
-        clz_e6$d = ce_e;
-        norm_e6$d = ze2;
-        top4_e = norm_e6$q[(32'h1c)+:(4)];
-        ze3 = norm_e6$q;
-        ce4_e = zero6;
-        if (top4_e == zero4) begin
-            ze3 = norm_e6$q << sh4;
-            ce4_e = c4_6;
-        end
-        top2_e = ze3[(32'h1e)+:(2)];
-        ze4 = ze3;
-        ce2_e = zero6;
-        if (top2_e == zero2) begin
-            ze4 = ze3 << sh2;
-            ce2_e = c2_6;
-        end
-        ze5 = ze4;
-        ce1_e = zero6;
-        if (~ze4[32'h1f]) begin
-            ze5 = ze4 << sh1;
-            ce1_e = c1_6;
-        end
+        clz_n6$d = lz_n$clz;
+        norm_n6$d = lz_n$norm;
         ha_pos = ~ha6$q[32'h1f] & (ha6$q != zero32);
         hb_pos = ~hb6$q[32'h1f] & (hb6$q != zero32);
         is_backward = ~ha_pos & ~hb_pos;
@@ -2202,32 +1653,21 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         side_l = p_lay6$q - p_lax6$q;
         v7$d = v6$q;
         id7$d = id6$q;
-        ax7$d = ax6$q;
-        ay7$d = ay6$q;
-        bx7$d = bx6$q;
-        by7$d = by6$q;
-        absnx7$d = absnx6$q;
-        absny7$d = absny6$q;
-        negx7$d = negx6$q;
-        negy7$d = negy6$q;
-        k7$d = k6$q;
         clz_n7$d = clz_n6$q;
         clz_n2_7$d = clz_n6$q + c2_6;
         clz_n3_7$d = clz_n6$q + c3_6;
         norm_n7$d = norm_n6$q;
-        clz_e7$d = clz_e6$q | ce4_e | ce2_e | ce1_e;
-        norm_e7$d = ze5;
         backward7$d = is_backward;
         back_facing7$d = is_back_facing;
         ha_open7$d = ha_pos & ~k_nonpos6$q;
         hb_open7$d = hb_pos & ~k_nonpos6$q;
         side_f7$d = side_f;
         side_l7$d = side_l;
-        s0 = clz_n7$q - clz_e7$q;
-        s0_m1 = clz_n7$q + ~clz_e7$q;
+        s0 = clz_n7$q - lz_e$clz;
+        s0_m1 = clz_n7$q + ~lz_e$clz;
         n_hi = norm_n7$q[(32'he)+:(18)];
-        e_hi = norm_e7$q[(32'he)+:(18)];
-        e_lo_nz = norm_e7$q[(32'h0)+:(14)] != zero14;
+        e_hi = lz_e$norm[(32'he)+:(18)];
+        e_lo_nz = lz_e$norm[(32'h0)+:(14)] != zero14;
         n_below_e = (n_hi < e_hi) | ((n_hi == e_hi) & e_lo_nz);
         side_f_x = side_f7$q ^ msb32;
         side_l_x = side_l7$q ^ msb32;
@@ -2241,23 +1681,14 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         hb_open8$d = hb_open7$q;
         v8$d = v7$q;
         id8$d = id7$q;
-        ax8$d = ax7$q;
-        ay8$d = ay7$q;
-        bx8$d = bx7$q;
-        by8$d = by7$q;
-        absnx8$d = absnx7$q;
-        absny8$d = absny7$q;
-        negx8$d = negx7$q;
-        negy8$d = negy7$q;
-        k8$d = k7$q;
         backward8$d = backward7$q;
         back_facing8$d = back_facing7$q;
         s0_8$d = s0;
         s0_m1_8$d = s0_m1;
         below8$d = n_below_e;
-        sp3_8$d = clz_n3_7$q - clz_e7$q;
-        near_a8$d = clz_n3_7$q < clz_e7$q;
-        near_b8$d = clz_n2_7$q < clz_e7$q;
+        sp3_8$d = clz_n3_7$q - lz_e$clz;
+        near_a8$d = clz_n3_7$q < lz_e$clz;
+        near_b8$d = clz_n2_7$q < lz_e$clz;
         outside8 = (hb_open8$q & (f_hi_lt8$q | (f_hi_eq8$q & f_lo_lt8$q))) | (ha_open8$q & (l_hi_gt8$q | (l_hi_eq8$q & l_lo_gt8$q)));
         exp8 = s0_m1_8$q;
         if (below8$q) begin
@@ -2295,8 +1726,8 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         back_facing = c_back_facing$q;
         outside = c_outside$q;
         near = c_near$q;
-        wide_x = ((absnx8$q) & 36'hfffffffff) << sp3_8$q;
-        wide_y = ((absny8$q) & 36'hfffffffff) << sp3_8$q;
+        wide_x = ((c_absnx$q) & 36'hfffffffff) << sp3_8$q;
+        wide_y = ((c_absny$q) & 36'hfffffffff) << sp3_8$q;
         dividend_x = wide_x[(32'h1)+:(35)];
         dividend_y = wide_y[(32'h1)+:(35)];
         if (below8$q) begin
@@ -2307,17 +1738,17 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         divider$ry = dividend_y[(32'h3)+:(32)];
         divider$fx = dividend_x[(32'h0)+:(3)];
         divider$fy = dividend_y[(32'h0)+:(3)];
-        divider$k = k8$q;
+        divider$k = c_k$q;
         tag_p = zero3;
         if (reserve) begin
             tag_p = tag_pass;
         end
         tag_x = zero3;
-        if (negx8$q) begin
+        if (c_negx$q) begin
             tag_x = tag_negx;
         end
         tag_y = zero3;
-        if (negy8$q) begin
+        if (c_negy$q) begin
             tag_y = tag_negy;
         end
         divider$tag = tag_p | tag_x | tag_y;
@@ -2328,10 +1759,10 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
         lane_by$write_address = res_ptr$q;
         lane_sh$write_address = res_ptr$q;
         lane_id$write_data = id8$q;
-        lane_ax$write_data = ax8$q;
-        lane_ay$write_data = ay8$q;
-        lane_bx$write_data = bx8$q;
-        lane_by$write_data = by8$q;
+        lane_ax$write_data = c_ax$q;
+        lane_ay$write_data = c_ay$q;
+        lane_bx$write_data = c_bx$q;
+        lane_by$write_data = c_by$q;
         sh_pass = ((exp8) & 7'h7f);
         if (is_pass) begin
             sh_pass = ((exp8) & 7'h7f) | pass_flag;
@@ -2451,101 +1882,6 @@ module screener$absnx3(d,q,clock);
 endmodule // screener$absnx3
 
 
-module screener$absnx4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absnx4
-
-
-module screener$absnx5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absnx5
-
-
-module screener$absnx6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absnx6
-
-
-module screener$absnx7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absnx7
-
-
-module screener$absnx8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absnx8
-
-
 module screener$absny2(d,q,clock);
     
     // Module arguments
@@ -2582,101 +1918,6 @@ module screener$absny3(d,q,clock);
     end
           
 endmodule // screener$absny3
-
-
-module screener$absny4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absny4
-
-
-module screener$absny5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absny5
-
-
-module screener$absny6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absny6
-
-
-module screener$absny7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absny7
-
-
-module screener$absny8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$absny8
 
 
 module screener$ax1(d,q,clock);
@@ -2736,101 +1977,6 @@ module screener$ax3(d,q,clock);
 endmodule // screener$ax3
 
 
-module screener$ax4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ax4
-
-
-module screener$ax5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ax5
-
-
-module screener$ax6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ax6
-
-
-module screener$ax7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ax7
-
-
-module screener$ax8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ax8
-
-
 module screener$ay1(d,q,clock);
     
     // Module arguments
@@ -2886,101 +2032,6 @@ module screener$ay3(d,q,clock);
     end
           
 endmodule // screener$ay3
-
-
-module screener$ay4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ay4
-
-
-module screener$ay5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ay5
-
-
-module screener$ay6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ay6
-
-
-module screener$ay7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ay7
-
-
-module screener$ay8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$ay8
 
 
 module screener$back_facing7(d,q,clock);
@@ -3230,101 +2281,6 @@ module screener$bx3(d,q,clock);
 endmodule // screener$bx3
 
 
-module screener$bx4(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$bx4
-
-
-module screener$bx5(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$bx5
-
-
-module screener$bx6(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$bx6
-
-
-module screener$bx7(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$bx7
-
-
-module screener$bx8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$bx8
-
-
 module screener$by1(d,q,clock);
     
     // Module arguments
@@ -3382,99 +2338,120 @@ module screener$by3(d,q,clock);
 endmodule // screener$by3
 
 
-module screener$by4(d,q,clock);
+module screener$c_absnx(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // screener$by4
+endmodule // screener$c_absnx
 
 
-module screener$by5(d,q,clock);
+module screener$c_absny(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // screener$by5
+endmodule // screener$c_absny
 
 
-module screener$by6(d,q,clock);
+module screener$c_ax(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // screener$by6
+endmodule // screener$c_ax
 
 
-module screener$by7(d,q,clock);
+module screener$c_ay(clock,d,q);
     
     // Module arguments
+    input wire  clock;
     input wire  [17:0] d;
     output reg  [17:0] q;
-    input wire  clock;
     
     // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
     initial begin
-       q = 18'h0;
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
     end
-    
     always @(posedge clock) begin
-       q <= d;
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
     end
-          
-endmodule // screener$by7
-
-
-module screener$by8(d,q,clock);
-    
-    // Module arguments
-    input wire  [17:0] d;
-    output reg  [17:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 18'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$by8
+endmodule // screener$c_ay
 
 
 module screener$c_back_facing(d,q,clock);
@@ -3515,6 +2492,87 @@ module screener$c_backward(d,q,clock);
 endmodule // screener$c_backward
 
 
+module screener$c_bx(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    
+    // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
+    initial begin
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // screener$c_bx
+
+
+module screener$c_by(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [17:0] d;
+    output reg  [17:0] q;
+    
+    // Update code (custom)
+    reg [17:0] s1;
+    reg [17:0] s2;
+    reg [17:0] s3;
+    reg [17:0] s4;
+    initial begin
+       s1 = 18'd0;
+       s2 = 18'd0;
+       s3 = 18'd0;
+       s4 = 18'd0;
+       q = 18'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // screener$c_by
+
+
+module screener$c_k(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    
+    // Update code (custom)
+    reg [31:0] s1;
+    reg [31:0] s2;
+    initial begin
+       s1 = 32'd0;
+       s2 = 32'd0;
+       q = 32'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       q <= s2;
+    end
+endmodule // screener$c_k
+
+
 module screener$c_near(d,q,clock);
     
     // Module arguments
@@ -3532,6 +2590,64 @@ module screener$c_near(d,q,clock);
     end
           
 endmodule // screener$c_near
+
+
+module screener$c_negx(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Update code (custom)
+    reg s1;
+    reg s2;
+    reg s3;
+    reg s4;
+    initial begin
+       s1 = 1'd0;
+       s2 = 1'd0;
+       s3 = 1'd0;
+       s4 = 1'd0;
+       q = 1'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // screener$c_negx
+
+
+module screener$c_negy(clock,d,q);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+    
+    // Update code (custom)
+    reg s1;
+    reg s2;
+    reg s3;
+    reg s4;
+    initial begin
+       s1 = 1'd0;
+       s2 = 1'd0;
+       s3 = 1'd0;
+       s4 = 1'd0;
+       q = 1'd0;
+    end
+    always @(posedge clock) begin
+       s1 <= d;
+       s2 <= s1;
+       s3 <= s2;
+       s4 <= s3;
+       q <= s4;
+    end
+endmodule // screener$c_negy
 
 
 module screener$c_outside(d,q,clock);
@@ -3572,44 +2688,6 @@ module screener$c_passed(d,q,clock);
 endmodule // screener$c_passed
 
 
-module screener$clz_e6(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$clz_e6
-
-
-module screener$clz_e7(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$clz_e7
-
-
 module screener$clz_n2_7(d,q,clock);
     
     // Module arguments
@@ -3646,44 +2724,6 @@ module screener$clz_n3_7(d,q,clock);
     end
           
 endmodule // screener$clz_n3_7
-
-
-module screener$clz_n4(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$clz_n4
-
-
-module screener$clz_n5(d,q,clock);
-    
-    // Module arguments
-    input wire  [5:0] d;
-    output reg  [5:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 6'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$clz_n5
 
 
 module screener$clz_n6(d,q,clock);
@@ -4371,63 +3411,6 @@ module screener$k5(d,q,clock);
 endmodule // screener$k5
 
 
-module screener$k6(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$k6
-
-
-module screener$k7(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$k7
-
-
-module screener$k8(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$k8
-
-
 module screener$k_nonpos6(d,q,clock);
     
     // Module arguments
@@ -4886,6 +3869,108 @@ module screener$lane_wy(clock,write_address,write_data,write_enable,head_address
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // screener$lane_wy
+
+
+module screener$lz_e(clock,value,norm,clz);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] value;
+    output reg  [31:0] norm;
+    output reg  [5:0] clz;
+    
+    // Update code (custom)
+    reg [31:0] half;
+    reg [5:0] half_clz;
+    reg [31:0] first;
+    reg [5:0] first_clz;
+    wire [31:0] s4 = (half[31:28] == 4'd0) ? {half[27:0], 4'd0} : half;
+    wire [31:0] s2 = (s4[31:30] == 2'd0) ? {s4[29:0], 2'd0} : s4;
+    wire [31:0] s1 = s2[31] ? s2 : {s2[30:0], 1'b0};
+    wire [5:0] c421 = {3'd0, half[31:28] == 4'd0, s4[31:30] == 2'd0, !s2[31]};
+    initial begin
+       half = 32'd0;
+       half_clz = 6'd24;
+       norm = 32'd0;
+       clz = 6'd0;
+    end
+    always @(*) begin
+       if (value[31:16] == 16'd0) begin
+          if (value[15:8] == 8'd0) begin
+             first = {value[7:0], 24'd0};
+             first_clz = 6'd24;
+          end else begin
+             first = {value[15:0], 16'd0};
+             first_clz = 6'd16;
+          end
+       end else begin
+          if (value[31:24] == 8'd0) begin
+             first = {value[23:0], 8'd0};
+             first_clz = 6'd8;
+          end else begin
+             first = value;
+             first_clz = 6'd0;
+          end
+       end
+    end
+    always @(posedge clock) begin
+       half <= first;
+       half_clz <= first_clz;
+       norm <= s1;
+       clz <= half_clz | c421;
+    end
+endmodule // screener$lz_e
+
+
+module screener$lz_n(clock,value,norm,clz);
+    
+    // Module arguments
+    input wire  clock;
+    input wire  [31:0] value;
+    output reg  [31:0] norm;
+    output reg  [5:0] clz;
+    
+    // Update code (custom)
+    reg [31:0] half;
+    reg [5:0] half_clz;
+    reg [31:0] first;
+    reg [5:0] first_clz;
+    wire [31:0] s4 = (half[31:28] == 4'd0) ? {half[27:0], 4'd0} : half;
+    wire [31:0] s2 = (s4[31:30] == 2'd0) ? {s4[29:0], 2'd0} : s4;
+    wire [31:0] s1 = s2[31] ? s2 : {s2[30:0], 1'b0};
+    wire [5:0] c421 = {3'd0, half[31:28] == 4'd0, s4[31:30] == 2'd0, !s2[31]};
+    initial begin
+       half = 32'd0;
+       half_clz = 6'd24;
+       norm = 32'd0;
+       clz = 6'd0;
+    end
+    always @(*) begin
+       if (value[31:16] == 16'd0) begin
+          if (value[15:8] == 8'd0) begin
+             first = {value[7:0], 24'd0};
+             first_clz = 6'd24;
+          end else begin
+             first = {value[15:0], 16'd0};
+             first_clz = 6'd16;
+          end
+       end else begin
+          if (value[31:24] == 8'd0) begin
+             first = {value[23:0], 8'd0};
+             first_clz = 6'd8;
+          end else begin
+             first = value;
+             first_clz = 6'd0;
+          end
+       end
+    end
+    always @(posedge clock) begin
+       half <= first;
+       half_clz <= first_clz;
+       norm <= s1;
+       clz <= half_clz | c421;
+    end
+endmodule // screener$lz_n
 
 
 module screener$m_abx(clock,a,b,p);
@@ -5883,101 +4968,6 @@ module screener$negx3(d,q,clock);
 endmodule // screener$negx3
 
 
-module screener$negx4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negx4
-
-
-module screener$negx5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negx5
-
-
-module screener$negx6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negx6
-
-
-module screener$negx7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negx7
-
-
-module screener$negx8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negx8
-
-
 module screener$negy2(d,q,clock);
     
     // Module arguments
@@ -6016,101 +5006,6 @@ module screener$negy3(d,q,clock);
 endmodule // screener$negy3
 
 
-module screener$negy4(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negy4
-
-
-module screener$negy5(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negy5
-
-
-module screener$negy6(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negy6
-
-
-module screener$negy7(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negy7
-
-
-module screener$negy8(d,q,clock);
-    
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$negy8
-
-
 module screener$nmax3(d,q,clock);
     
     // Module arguments
@@ -6128,82 +5023,6 @@ module screener$nmax3(d,q,clock);
     end
           
 endmodule // screener$nmax3
-
-
-module screener$norm_e6(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$norm_e6
-
-
-module screener$norm_e7(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$norm_e7
-
-
-module screener$norm_n4(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$norm_n4
-
-
-module screener$norm_n5(d,q,clock);
-    
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-    
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-    
-    always @(posedge clock) begin
-       q <= d;
-    end
-          
-endmodule // screener$norm_n5
 
 
 module screener$norm_n6(d,q,clock);

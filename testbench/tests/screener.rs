@@ -11,11 +11,12 @@ use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
 use shelling_hdl::formats::PatchSetup;
 use shelling_hdl::formats::{cross, direction, dot, from_bits, to_bits};
-use shelling_hdl::prim::FifoRam;
+use shelling_hdl::prim::{Delay, FifoRam};
 use shelling_hdl::screener::divider::{restoring_quotient, PipeDivider, DIV_LATENCY};
 use shelling_hdl::screener::model::{
     accept_cycles, output_cycles, screen, unstalled_cycles, BundleSetup, Patch, Verdict,
 };
+use shelling_hdl::screener::normaliser::{normalise, Normaliser, NORMALISER_LATENCY};
 use shelling_hdl::screener::{Screener, COUNT_LATENCY, DEPTH, LATENCY, VERDICT_LATENCY};
 use shelling_testbench::{Driver, Error, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
 
@@ -741,6 +742,67 @@ fn divider_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
         rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
     println!("{report}");
     Ok(())
+}
+
+/// The normaliser leaf alone: its Rust model against `normalise` delayed by
+/// `NORMALISER_LATENCY`, and its Verilog against its Rust model under Icarus, on words with
+/// every count of leading zeros (zero among them).
+#[test]
+fn normaliser_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
+    let seed = 0x2a11_7e55u64;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut drv = Driver::with_clock(Normaliser::default(), |d| &mut d.clock)?;
+    drv.record_ports()?;
+    let mut sent: Vec<(u32, u32)> = vec![];
+    for cycle in 0..2000u64 {
+        let v: u32 = if rng.random_bool(0.05) { 0 } else { rng.random::<u32>() >> rng.random_range(0..32) };
+        drv.drive(|d| d.value.next = (v as u64).into())?;
+        sent.push(normalise(v));
+        if cycle >= NORMALISER_LATENCY {
+            let d = drv.uut();
+            let got = (d.norm.val().to_u32(), d.clz.val().to_u32());
+            assert_eq!(got, sent[(cycle - NORMALISER_LATENCY) as usize], "cycle {cycle}, seed {seed:#x}");
+        }
+        drv.tick()?;
+    }
+    let rec = drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("normaliser");
+    let report =
+        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
+    println!("{report}");
+    Ok(())
+}
+
+/// The [`Delay`] leaf alone (the screener's stage-to-stage carry), words and flags, one stage and
+/// several: its Rust half against the word of `D` clocks before, its Verilog against its Rust
+/// half under Icarus.
+#[test]
+fn delay_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
+    fn run<T: Synth, const D: usize>(name: &str, word: impl Fn(&mut ChaCha8Rng) -> T) -> Result<()> {
+        let seed = 0xde1a_0000u64 + D as u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut drv = Driver::with_clock(Delay::<T, D>::default(), |d| &mut d.clock)?;
+        drv.record_ports()?;
+        let mut sent: Vec<T> = vec![];
+        for cycle in 0..500usize {
+            let w = word(&mut rng);
+            drv.drive(|d| d.d.next = w)?;
+            sent.push(w);
+            drv.tick()?;
+            let want = if cycle + 1 >= D { sent[cycle + 1 - D] } else { T::default() };
+            assert_eq!(drv.uut().q.val(), want, "{name}: after edge {cycle}, seed {seed:#x}");
+        }
+        let rec = drv.take_recording().ok_or("recording was on")?;
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(name);
+        let report = rec
+            .replay(drv.uut(), &dir, Simulator::Icarus)
+            .map_err(|e| e.context(format!("seed {seed:#x}")))?;
+        println!("{report}");
+        Ok(())
+    }
+    run::<Bits<18>, 5>("delay_word5", |r| Bits::from(r.random::<u64>() & 0x3ffff))?;
+    run::<Bits<32>, 1>("delay_word1", |r| Bits::from(r.random::<u32>() as u64))?;
+    run::<bool, 3>("delay_flag3", |r| r.random_bool(0.5))
 }
 
 /// A bare [`FifoRam`] (the output FIFO's lanes) behind ports, for its own test.

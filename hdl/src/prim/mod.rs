@@ -14,17 +14,21 @@
 //! * [`fifo`]: [`FifoControl`], the pointers, word count and registered head-valid flag of a
 //!   first-word-fall-through FIFO over [`FifoRam`] lanes (every FIFO of the processing element),
 //!   and [`Fifo`], a FIFO of one lane.
+//! * [`delay`]: [`Delay`], a word carried through `D` register stages (a pipeline's
+//!   stage-to-stage carry).
 //! * [`rr`]: [`RoundRobin`], a round-robin choice among `N` requesters, one grant per clock
 //!   (the memory arbiter's).
 //!
 //! A part here knows nothing of the blocks that use it. The blocks' own hand-written stages live
 //! beside them (`intersection::stages`, `screener::divider`).
 
+pub mod delay;
 pub mod fifo;
 pub mod mul;
 pub mod ram;
 pub mod rr;
 
+pub use delay::Delay;
 pub use fifo::{Fifo, FifoControl};
 pub use mul::Mul18;
 pub use ram::{bram_out_tile_width, Bram, BramOut, FifoRam};

@@ -105,10 +105,11 @@ end
 /// words and registers are zero at power-up. The Rust `update` is the bit-true model.
 ///
 /// [`FifoRam::head_registered`] makes a lane whose `read_data` is one register: the two words
-/// are read without a clock (two LUT RAM reads by the address registers) and the pop chooses
-/// between them before that register, so a consumer deciding from the head word sees a
-/// flip-flop, and the pop reaches one multiplexer a bit. Meant for narrow lanes (a flag);
-/// the same model, cycle for cycle.
+/// are read without a clock (two LUT RAM reads by the address registers, from two copies of
+/// the words so that no read address depends on the pop) and the pop chooses between them
+/// before that register, so a consumer deciding from the head word sees a flip-flop, and the
+/// pop reaches one multiplexer a bit. Meant for narrow lanes (a flag); the same model, cycle
+/// for cycle.
 #[derive(LogicBlock)]
 pub struct FifoRam<const D: usize, const A: usize> {
     pub clock: Signal<In, Clock>,
@@ -168,17 +169,24 @@ impl<const D: usize, const A: usize> Logic for FifoRam<D, A> {
         if self._head_registered {
             return Verilog::Custom(format!(
                 "\
+// Two copies under the same writes, one read each: from one memory, Yosys makes the two reads
+// one port whose address is chosen by `pop` (pop, address, RAM, register: measured 141 MHz).
 reg [{dm}:0] mem [0:{words}];
+reg [{dm}:0] mem_n [0:{words}];
 reg [{dm}:0] read_r;
 integer i;
 initial begin
-   for (i = 0; i <= {words}; i = i + 1) mem[i] = {d}'d0;
+   for (i = 0; i <= {words}; i = i + 1) begin
+      mem[i] = {d}'d0;
+      mem_n[i] = {d}'d0;
+   end
    read_r = {d}'d0;
 end
 always @(posedge clock) begin
-   read_r <= pop ? mem[next_address] : mem[head_address];
+   read_r <= pop ? mem_n[next_address] : mem[head_address];
    if (write_enable) begin
       mem[write_address] <= write_data;
+      mem_n[write_address] <= write_data;
    end
 end
 always @(*) read_data = read_r;

@@ -74,15 +74,13 @@
 //!   `nmax = max(|n_x|, |n_y|)`;
 //! * stage 3: the four side products (against the sector's edges) start; the products of `K`
 //!   arrive and are registered once more, as they are (the multiplier's product register
-//!   drives that register only); the leading zeros of `nmax`, first two of five conditional
-//!   shifts (16, 8);
-//! * stage 4: `K`; the products of the dot products arrive; the last three shifts of `nmax`
-//!   (4, 2, 1);
-//! * stage 5: the leading zeros of `2K`, first two shifts (side by side: the top half and two
-//!   bytes tested at once, then one four-way choice); `dot(n_s, a)`, `dot(n_s, b)`; the side
-//!   products arrive;
-//! * stage 6: the last three shifts of `2K`; the backward and back-facing screens; the side
-//!   values;
+//!   drives that register only); `nmax` enters a [`Normaliser`] (stages 3–4: its leading zeros
+//!   and `nmax` shifted by them, by five conditional shifts: 16 and 8 side by side, then 4, 2
+//!   and 1);
+//! * stage 4: `K`; the products of the dot products arrive;
+//! * stage 5: `2K` enters the other [`Normaliser`] (stages 5–6); `dot(n_s, a)`, `dot(n_s, b)`;
+//!   the side products arrive;
+//! * stage 6: the backward and back-facing screens; the side values;
 //! * stage 7: the exponent's two candidates (from the two leading-zero counts) and the
 //!   comparison of the normalised values that chooses between them, each registered; the
 //!   outside-the-sector screen's compares by 16-bit halves, registered;
@@ -153,11 +151,13 @@
 //! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
 use crate::formats::{cross, dot, PatchSetup, SECTOR_MARGIN, SH_MAX, SH_MIN};
-use crate::prim::{FifoControl, FifoRam, Mul18};
+use crate::prim::{Delay, FifoControl, FifoRam, Mul18};
 
 pub mod divider;
+pub mod normaliser;
 
 use divider::{PipeDivider, DIV_LATENCY};
+use normaliser::Normaliser;
 use rust_hdl::prelude::*;
 
 /// The bit-true model of the screener: plain integer functions.
@@ -431,7 +431,7 @@ pub struct Screener {
     normal_xa2: DFF<Bits<18>>,
     normal_ya2: DFF<Bits<18>>,
     nmax: Signal<Local, Bits<18>>,
-    // Stage 3: the side products start; those of K arrive; the first two shifts of clz(nmax).
+    // Stage 3: the side products start; those of K arrive; nmax into its normaliser.
     v3: DFF<bool>,
     bank3: DFF<bool>,
     id3: DFF<Bits<16>>,
@@ -444,80 +444,27 @@ pub struct Screener {
     negx3: DFF<bool>,
     negy3: DFF<bool>,
     nmax3: DFF<Bits<18>>,
-    zn0: Signal<Local, Bits<32>>,
-    zn1: Signal<Local, Bits<32>>,
-    zn2: Signal<Local, Bits<32>>,
-    cn16_n: Signal<Local, Bits<6>>,
-    cn8_n: Signal<Local, Bits<6>>,
-    top16_n: Signal<Local, Bits<16>>,
-    top8_n: Signal<Local, Bits<8>>,
-    // Stage 4: K; the products of dot(n_s, a), dot(n_s, b) arrive; the last three shifts of clz(nmax).
+    // Stage 4: K; the products of dot(n_s, a), dot(n_s, b) arrive.
     v4: DFF<bool>,
     id4: DFF<Bits<16>>,
-    ax4: DFF<Bits<18>>,
-    ay4: DFF<Bits<18>>,
-    bx4: DFF<Bits<18>>,
-    by4: DFF<Bits<18>>,
-    absnx4: DFF<Bits<18>>,
-    absny4: DFF<Bits<18>>,
-    negx4: DFF<bool>,
-    negy4: DFF<bool>,
     p_aby4: DFF<Bits<32>>,
     p_abx4: DFF<Bits<32>>,
-    clz_n4: DFF<Bits<6>>,
-    norm_n4: DFF<Bits<32>>,
     kk: Signal<Local, Bits<32>>,
-    zn3: Signal<Local, Bits<32>>,
-    zn4: Signal<Local, Bits<32>>,
-    zn5: Signal<Local, Bits<32>>,
-    cn4_n: Signal<Local, Bits<6>>,
-    cn2_n: Signal<Local, Bits<6>>,
-    cn1_n: Signal<Local, Bits<6>>,
-    top4_n: Signal<Local, Bits<4>>,
-    top2_n: Signal<Local, Bits<2>>,
-    // Stage 5: the first two shifts of clz(2K); the dot products; the side products arrive.
+    // Stage 5: 2K into its normaliser; the dot products; the side products arrive.
     v5: DFF<bool>,
     id5: DFF<Bits<16>>,
-    ax5: DFF<Bits<18>>,
-    ay5: DFF<Bits<18>>,
-    bx5: DFF<Bits<18>>,
-    by5: DFF<Bits<18>>,
-    absnx5: DFF<Bits<18>>,
-    absny5: DFF<Bits<18>>,
-    negx5: DFF<bool>,
-    negy5: DFF<bool>,
     k5: DFF<Bits<32>>,
     p_nax5: DFF<Bits<32>>,
     p_nay5: DFF<Bits<32>>,
     p_nbx5: DFF<Bits<32>>,
     p_nby5: DFF<Bits<32>>,
-    clz_n5: DFF<Bits<6>>,
-    norm_n5: DFF<Bits<32>>,
     ha: Signal<Local, Bits<32>>,
     hb: Signal<Local, Bits<32>>,
     k2: Signal<Local, Bits<32>>,
-    z16_e: Signal<Local, bool>,
-    z8hi_e: Signal<Local, bool>,
-    z8mid_e: Signal<Local, bool>,
-    ze_lo: Signal<Local, Bits<32>>,
-    ze_hi: Signal<Local, Bits<32>>,
-    ce_lo: Signal<Local, Bits<6>>,
-    ce_hi: Signal<Local, Bits<6>>,
-    ze2: Signal<Local, Bits<32>>,
-    ce_e: Signal<Local, Bits<6>>,
-    // Stage 6: the last three shifts of clz(2K); the backward and back-facing screens; the side values.
+    // Stage 6: the backward and back-facing screens; the side values.
     v6: DFF<bool>,
     id6: DFF<Bits<16>>,
-    ax6: DFF<Bits<18>>,
-    ay6: DFF<Bits<18>>,
-    bx6: DFF<Bits<18>>,
-    by6: DFF<Bits<18>>,
-    absnx6: DFF<Bits<18>>,
-    absny6: DFF<Bits<18>>,
-    negx6: DFF<bool>,
-    negy6: DFF<bool>,
-    k6: DFF<Bits<32>>,
-    /// `k6 ≤ 0` (signed), from stage 5's register: the back-facing test without a 32-bit
+    /// `K ≤ 0` (signed), from stage 5's register: the back-facing test without a 32-bit
     /// compare in stage 6.
     k_nonpos6: DFF<bool>,
     ha6: DFF<Bits<32>>,
@@ -528,16 +475,6 @@ pub struct Screener {
     p_lax6: DFF<Bits<32>>,
     clz_n6: DFF<Bits<6>>,
     norm_n6: DFF<Bits<32>>,
-    clz_e6: DFF<Bits<6>>,
-    norm_e6: DFF<Bits<32>>,
-    ze3: Signal<Local, Bits<32>>,
-    ze4: Signal<Local, Bits<32>>,
-    ze5: Signal<Local, Bits<32>>,
-    ce4_e: Signal<Local, Bits<6>>,
-    ce2_e: Signal<Local, Bits<6>>,
-    ce1_e: Signal<Local, Bits<6>>,
-    top4_e: Signal<Local, Bits<4>>,
-    top2_e: Signal<Local, Bits<2>>,
     ha_pos: Signal<Local, bool>,
     hb_pos: Signal<Local, bool>,
     is_backward: Signal<Local, bool>,
@@ -547,21 +484,10 @@ pub struct Screener {
     // Stage 7: the exponent; the outside-the-sector screen.
     v7: DFF<bool>,
     id7: DFF<Bits<16>>,
-    ax7: DFF<Bits<18>>,
-    ay7: DFF<Bits<18>>,
-    bx7: DFF<Bits<18>>,
-    by7: DFF<Bits<18>>,
-    absnx7: DFF<Bits<18>>,
-    absny7: DFF<Bits<18>>,
-    negx7: DFF<bool>,
-    negy7: DFF<bool>,
-    k7: DFF<Bits<32>>,
     side_f7: DFF<Bits<32>>,
     side_l7: DFF<Bits<32>>,
     clz_n7: DFF<Bits<6>>,
     norm_n7: DFF<Bits<32>>,
-    clz_e7: DFF<Bits<6>>,
-    norm_e7: DFF<Bits<32>>,
     backward7: DFF<bool>,
     back_facing7: DFF<bool>,
     ha_open7: DFF<bool>,
@@ -588,15 +514,6 @@ pub struct Screener {
     // Stage 8: the verdict, the divider's inputs; the patch takes a slot.
     v8: DFF<bool>,
     id8: DFF<Bits<16>>,
-    ax8: DFF<Bits<18>>,
-    ay8: DFF<Bits<18>>,
-    bx8: DFF<Bits<18>>,
-    by8: DFF<Bits<18>>,
-    absnx8: DFF<Bits<18>>,
-    absny8: DFF<Bits<18>>,
-    negx8: DFF<bool>,
-    negy8: DFF<bool>,
-    k8: DFF<Bits<32>>,
     /// The exponent's two candidates and the choice between them, registered apart (`exp8`
     /// is the choice): the normalised compare reaches a register through no multiplexer.
     s0_8: DFF<Bits<6>>,
@@ -636,6 +553,20 @@ pub struct Screener {
     tag_p: Signal<Local, Bits<3>>,
     tag_x: Signal<Local, Bits<3>>,
     tag_y: Signal<Local, Bits<3>>,
+    /// The stage-to-stage carry of what stages 4–7 only pass on: the coordinates and `|n|`'s
+    /// magnitudes and signs from stage 3's registers, `K` from stage 5's, to stage 8.
+    c_ax: Delay<Bits<18>, 5>,
+    c_ay: Delay<Bits<18>, 5>,
+    c_bx: Delay<Bits<18>, 5>,
+    c_by: Delay<Bits<18>, 5>,
+    c_absnx: Delay<Bits<18>, 5>,
+    c_absny: Delay<Bits<18>, 5>,
+    c_negx: Delay<bool, 5>,
+    c_negy: Delay<bool, 5>,
+    c_k: Delay<Bits<32>, 3>,
+    /// The leading zeros of `nmax` (stages 3–4) and of `2K` (stages 5–6), normalised.
+    lz_n: Normaliser,
+    lz_e: Normaliser,
     // Stages 9–26: the divider; stage 26 writes W into the patch's slot.
     divider: PipeDivider,
     // Counters.
@@ -657,25 +588,11 @@ pub struct Screener {
     thr_f_lo: Constant<Bits<16>>,
     thr_l_hi: Constant<Bits<16>>,
     thr_l_lo: Constant<Bits<16>>,
-    zero16: Constant<Bits<16>>,
     zero14: Constant<Bits<14>>,
-    zero8: Constant<Bits<8>>,
-    zero4: Constant<Bits<4>>,
-    zero2: Constant<Bits<2>>,
     zero3: Constant<Bits<3>>,
-    sh24: Constant<Bits<32>>,
-    sh16: Constant<Bits<32>>,
-    sh8: Constant<Bits<32>>,
-    sh4: Constant<Bits<32>>,
-    sh2: Constant<Bits<32>>,
     sh1: Constant<Bits<32>>,
-    c24_6: Constant<Bits<6>>,
-    c16_6: Constant<Bits<6>>,
-    c8_6: Constant<Bits<6>>,
-    c4_6: Constant<Bits<6>>,
     c2_6: Constant<Bits<6>>,
     c3_6: Constant<Bits<6>>,
-    c1_6: Constant<Bits<6>>,
     tag_pass: Constant<Bits<3>>,
     tag_negx: Constant<Bits<3>>,
     tag_negy: Constant<Bits<3>>,
@@ -802,76 +719,23 @@ impl Default for Screener {
             negx3: Default::default(),
             negy3: Default::default(),
             nmax3: Default::default(),
-            zn0: Default::default(),
-            zn1: Default::default(),
-            zn2: Default::default(),
-            cn16_n: Default::default(),
-            cn8_n: Default::default(),
-            top16_n: Default::default(),
-            top8_n: Default::default(),
             v4: Default::default(),
             id4: Default::default(),
-            ax4: Default::default(),
-            ay4: Default::default(),
-            bx4: Default::default(),
-            by4: Default::default(),
-            absnx4: Default::default(),
-            absny4: Default::default(),
-            negx4: Default::default(),
-            negy4: Default::default(),
             p_aby4: Default::default(),
             p_abx4: Default::default(),
-            clz_n4: Default::default(),
-            norm_n4: Default::default(),
             kk: Default::default(),
-            zn3: Default::default(),
-            zn4: Default::default(),
-            zn5: Default::default(),
-            cn4_n: Default::default(),
-            cn2_n: Default::default(),
-            cn1_n: Default::default(),
-            top4_n: Default::default(),
-            top2_n: Default::default(),
             v5: Default::default(),
             id5: Default::default(),
-            ax5: Default::default(),
-            ay5: Default::default(),
-            bx5: Default::default(),
-            by5: Default::default(),
-            absnx5: Default::default(),
-            absny5: Default::default(),
-            negx5: Default::default(),
-            negy5: Default::default(),
             k5: Default::default(),
             p_nax5: Default::default(),
             p_nay5: Default::default(),
             p_nbx5: Default::default(),
             p_nby5: Default::default(),
-            clz_n5: Default::default(),
-            norm_n5: Default::default(),
             ha: Default::default(),
             hb: Default::default(),
             k2: Default::default(),
-            z16_e: Default::default(),
-            z8hi_e: Default::default(),
-            z8mid_e: Default::default(),
-            ze_lo: Default::default(),
-            ze_hi: Default::default(),
-            ce_lo: Default::default(),
-            ce_hi: Default::default(),
-            ze2: Default::default(),
-            ce_e: Default::default(),
             v6: Default::default(),
             id6: Default::default(),
-            ax6: Default::default(),
-            ay6: Default::default(),
-            bx6: Default::default(),
-            by6: Default::default(),
-            absnx6: Default::default(),
-            absny6: Default::default(),
-            negx6: Default::default(),
-            negy6: Default::default(),
-            k6: Default::default(),
             k_nonpos6: Default::default(),
             ha6: Default::default(),
             hb6: Default::default(),
@@ -881,16 +745,6 @@ impl Default for Screener {
             p_lax6: Default::default(),
             clz_n6: Default::default(),
             norm_n6: Default::default(),
-            clz_e6: Default::default(),
-            norm_e6: Default::default(),
-            ze3: Default::default(),
-            ze4: Default::default(),
-            ze5: Default::default(),
-            ce4_e: Default::default(),
-            ce2_e: Default::default(),
-            ce1_e: Default::default(),
-            top4_e: Default::default(),
-            top2_e: Default::default(),
             ha_pos: Default::default(),
             hb_pos: Default::default(),
             is_backward: Default::default(),
@@ -899,21 +753,10 @@ impl Default for Screener {
             side_l: Default::default(),
             v7: Default::default(),
             id7: Default::default(),
-            ax7: Default::default(),
-            ay7: Default::default(),
-            bx7: Default::default(),
-            by7: Default::default(),
-            absnx7: Default::default(),
-            absny7: Default::default(),
-            negx7: Default::default(),
-            negy7: Default::default(),
-            k7: Default::default(),
             side_f7: Default::default(),
             side_l7: Default::default(),
             clz_n7: Default::default(),
             norm_n7: Default::default(),
-            clz_e7: Default::default(),
-            norm_e7: Default::default(),
             backward7: Default::default(),
             back_facing7: Default::default(),
             ha_open7: Default::default(),
@@ -936,15 +779,6 @@ impl Default for Screener {
             hb_open8: Default::default(),
             v8: Default::default(),
             id8: Default::default(),
-            ax8: Default::default(),
-            ay8: Default::default(),
-            bx8: Default::default(),
-            by8: Default::default(),
-            absnx8: Default::default(),
-            absny8: Default::default(),
-            negx8: Default::default(),
-            negy8: Default::default(),
-            k8: Default::default(),
             s0_8: Default::default(),
             s0_m1_8: Default::default(),
             below8: Default::default(),
@@ -972,7 +806,18 @@ impl Default for Screener {
             tag_p: Default::default(),
             tag_x: Default::default(),
             tag_y: Default::default(),
+            c_ax: Default::default(),
+            c_ay: Default::default(),
+            c_bx: Default::default(),
+            c_by: Default::default(),
+            c_absnx: Default::default(),
+            c_absny: Default::default(),
+            c_negx: Default::default(),
+            c_negy: Default::default(),
+            c_k: Default::default(),
             divider: Default::default(),
+            lz_n: Default::default(),
+            lz_e: Default::default(),
             c_passed: Default::default(),
             c_backward: Default::default(),
             c_back_facing: Default::default(),
@@ -990,25 +835,11 @@ impl Default for Screener {
             thr_f_lo: Constant::new(((SIGN32 - SECTOR_MARGIN as u64) & 0xFFFF).into()),
             thr_l_hi: Constant::new(((SIGN32 + SECTOR_MARGIN as u64) >> 16).into()),
             thr_l_lo: Constant::new(((SIGN32 + SECTOR_MARGIN as u64) & 0xFFFF).into()),
-            zero16: Constant::new(0u64.into()),
             zero14: Constant::new(0u64.into()),
-            zero8: Constant::new(0u64.into()),
-            zero4: Constant::new(0u64.into()),
-            zero2: Constant::new(0u64.into()),
             zero3: Constant::new(0u64.into()),
-            sh24: Constant::new(24u64.into()),
-            sh16: Constant::new(16u64.into()),
-            sh8: Constant::new(8u64.into()),
-            sh4: Constant::new(4u64.into()),
-            sh2: Constant::new(2u64.into()),
             sh1: Constant::new(1u64.into()),
-            c24_6: Constant::new(24u64.into()),
-            c16_6: Constant::new(16u64.into()),
-            c8_6: Constant::new(8u64.into()),
-            c4_6: Constant::new(4u64.into()),
             c2_6: Constant::new(2u64.into()),
             c3_6: Constant::new(3u64.into()),
-            c1_6: Constant::new(1u64.into()),
             tag_pass: Constant::new(1u64.into()),
             tag_negx: Constant::new(2u64.into()),
             tag_negy: Constant::new(4u64.into()),
@@ -1076,46 +907,17 @@ impl Logic for Screener {
             nmax3,
             v4,
             id4,
-            ax4,
-            ay4,
-            bx4,
-            by4,
-            absnx4,
-            absny4,
-            negx4,
-            negy4,
             p_aby4,
             p_abx4,
-            clz_n4,
-            norm_n4,
             v5,
             id5,
-            ax5,
-            ay5,
-            bx5,
-            by5,
-            absnx5,
-            absny5,
-            negx5,
-            negy5,
             k5,
             p_nax5,
             p_nay5,
             p_nbx5,
             p_nby5,
-            clz_n5,
-            norm_n5,
             v6,
             id6,
-            ax6,
-            ay6,
-            bx6,
-            by6,
-            absnx6,
-            absny6,
-            negx6,
-            negy6,
-            k6,
             k_nonpos6,
             ha6,
             hb6,
@@ -1125,40 +927,18 @@ impl Logic for Screener {
             p_lax6,
             clz_n6,
             norm_n6,
-            clz_e6,
-            norm_e6,
             v7,
             id7,
-            ax7,
-            ay7,
-            bx7,
-            by7,
-            absnx7,
-            absny7,
-            negx7,
-            negy7,
-            k7,
             side_f7,
             side_l7,
             clz_n7,
             norm_n7,
-            clz_e7,
-            norm_e7,
             backward7,
             back_facing7,
             ha_open7,
             hb_open7,
             v8,
             id8,
-            ax8,
-            ay8,
-            bx8,
-            by8,
-            absnx8,
-            absny8,
-            negx8,
-            negy8,
-            k8,
             s0_8,
             s0_m1_8,
             below8,
@@ -1199,7 +979,18 @@ impl Logic for Screener {
         self.m_fbx.clock.next = self.clock.val();
         self.m_lay.clock.next = self.clock.val();
         self.m_lax.clock.next = self.clock.val();
+        self.c_ax.clock.next = self.clock.val();
+        self.c_ay.clock.next = self.clock.val();
+        self.c_bx.clock.next = self.clock.val();
+        self.c_by.clock.next = self.clock.val();
+        self.c_absnx.clock.next = self.clock.val();
+        self.c_absny.clock.next = self.clock.val();
+        self.c_negx.clock.next = self.clock.val();
+        self.c_negy.clock.next = self.clock.val();
+        self.c_k.clock.next = self.clock.val();
         self.divider.clock.next = self.clock.val();
+        self.lz_n.clock.next = self.clock.val();
+        self.lz_e.clock.next = self.clock.val();
         self.lane_id.clock.next = self.clock.val();
         self.lane_ax.clock.next = self.clock.val();
         self.lane_ay.clock.next = self.clock.val();
@@ -1298,9 +1089,8 @@ impl Logic for Screener {
         // Stage 3: the side products start, from the sector of the patch's bank (shown on
         // `sector_bank`: the setup's `first`/`last` are read now); the products of K arrive
         // and are registered once more, as they are (the multiplier's product register drives
-        // nothing else). The
-        // leading zeros of nmax (as 32 bits) by five conditional shifts, which also normalise it
-        // (its leading one at bit 31): the first two here, the last three in stage 4.
+        // nothing else). nmax (as 32 bits) enters its normaliser (`lz_n`, stages 3–4: its
+        // leading zeros and nmax shifted by them, its leading one at bit 31).
         self.sector_read.next = self.v3.q.val();
         self.sector_bank.next = self.bank3.q.val();
         self.m_fby.a.next = self.first_x.val();
@@ -1313,102 +1103,34 @@ impl Logic for Screener {
         self.m_lax.b.next = self.ax3.q.val();
         self.p_aby4.d.next = self.m_aby.p.val();
         self.p_abx4.d.next = self.m_abx.p.val();
-        self.zn0.next = bit_cast::<32, 18>(self.nmax3.q.val());
-        self.top16_n.next = self.zn0.val().get_bits::<16>(16);
-        self.zn1.next = self.zn0.val();
-        self.cn16_n.next = self.zero6.val();
-        if self.top16_n.val() == self.zero16.val() {
-            self.zn1.next = self.zn0.val() << self.sh16.val();
-            self.cn16_n.next = self.c16_6.val();
-        }
-        self.top8_n.next = self.zn1.val().get_bits::<8>(24);
-        self.zn2.next = self.zn1.val();
-        self.cn8_n.next = self.zero6.val();
-        if self.top8_n.val() == self.zero8.val() {
-            self.zn2.next = self.zn1.val() << self.sh8.val();
-            self.cn8_n.next = self.c8_6.val();
-        }
+        self.lz_n.value.next = bit_cast::<32, 18>(self.nmax3.q.val());
+        self.c_ax.d.next = self.ax3.q.val();
+        self.c_ay.d.next = self.ay3.q.val();
+        self.c_bx.d.next = self.bx3.q.val();
+        self.c_by.d.next = self.by3.q.val();
+        self.c_absnx.d.next = self.absnx3.q.val();
+        self.c_absny.d.next = self.absny3.q.val();
+        self.c_negx.d.next = self.negx3.q.val();
+        self.c_negy.d.next = self.negy3.q.val();
         self.v4.d.next = self.v3.q.val();
         self.id4.d.next = self.id3.q.val();
-        self.ax4.d.next = self.ax3.q.val();
-        self.ay4.d.next = self.ay3.q.val();
-        self.bx4.d.next = self.bx3.q.val();
-        self.by4.d.next = self.by3.q.val();
-        self.absnx4.d.next = self.absnx3.q.val();
-        self.absny4.d.next = self.absny3.q.val();
-        self.negx4.d.next = self.negx3.q.val();
-        self.negy4.d.next = self.negy3.q.val();
-        self.clz_n4.d.next = self.cn16_n.val() | self.cn8_n.val();
-        self.norm_n4.d.next = self.zn2.val();
 
-        // Stage 4: K; the products of the dot products arrive and are registered; the last
-        // three shifts of nmax.
+        // Stage 4: K; the products of the dot products arrive and are registered.
         self.kk.next = self.p_aby4.q.val() - self.p_abx4.q.val();
         self.p_nax5.d.next = self.m_nax.p.val();
         self.p_nay5.d.next = self.m_nay.p.val();
         self.p_nbx5.d.next = self.m_nbx.p.val();
         self.p_nby5.d.next = self.m_nby.p.val();
-        self.top4_n.next = self.norm_n4.q.val().get_bits::<4>(28);
-        self.zn3.next = self.norm_n4.q.val();
-        self.cn4_n.next = self.zero6.val();
-        if self.top4_n.val() == self.zero4.val() {
-            self.zn3.next = self.norm_n4.q.val() << self.sh4.val();
-            self.cn4_n.next = self.c4_6.val();
-        }
-        self.top2_n.next = self.zn3.val().get_bits::<2>(30);
-        self.zn4.next = self.zn3.val();
-        self.cn2_n.next = self.zero6.val();
-        if self.top2_n.val() == self.zero2.val() {
-            self.zn4.next = self.zn3.val() << self.sh2.val();
-            self.cn2_n.next = self.c2_6.val();
-        }
-        self.zn5.next = self.zn4.val();
-        self.cn1_n.next = self.zero6.val();
-        if !self.zn4.val().get_bit(31) {
-            self.zn5.next = self.zn4.val() << self.sh1.val();
-            self.cn1_n.next = self.c1_6.val();
-        }
         self.v5.d.next = self.v4.q.val();
         self.id5.d.next = self.id4.q.val();
-        self.ax5.d.next = self.ax4.q.val();
-        self.ay5.d.next = self.ay4.q.val();
-        self.bx5.d.next = self.bx4.q.val();
-        self.by5.d.next = self.by4.q.val();
-        self.absnx5.d.next = self.absnx4.q.val();
-        self.absny5.d.next = self.absny4.q.val();
-        self.negx5.d.next = self.negx4.q.val();
-        self.negy5.d.next = self.negy4.q.val();
         self.k5.d.next = self.kk.val();
-        self.clz_n5.d.next = self.clz_n4.q.val() | self.cn4_n.val() | self.cn2_n.val() | self.cn1_n.val();
-        self.norm_n5.d.next = self.zn5.val();
 
-        // Stage 5: the leading zeros of 2K (K < 2^31 when it passes, so 2K fits 32 bits): the
-        // first two shifts (16, 8), side by side: the byte tested for the 8 is bits 24–31 when
-        // the top half is not zero, bits 8–15 when it is, so both bytes are tested at once with
-        // the half and the shift is one 4-way choice; dot(n_s, a), dot(n_s, b); the side
-        // products arrive and are registered.
+        // Stage 5: 2K enters its normaliser (`lz_e`, stages 5–6; K < 2^31 when it passes, so
+        // 2K fits 32 bits); dot(n_s, a), dot(n_s, b); the side products arrive and are
+        // registered; nmax's normaliser's results are registered once more.
         self.k2.next = self.k5.q.val() << self.sh1.val();
-        self.z16_e.next = self.k2.val().get_bits::<16>(16) == self.zero16.val();
-        self.z8hi_e.next = self.k2.val().get_bits::<8>(24) == self.zero8.val();
-        self.z8mid_e.next = self.k2.val().get_bits::<8>(8) == self.zero8.val();
-        self.ze_hi.next = self.k2.val();
-        self.ce_hi.next = self.zero6.val();
-        if self.z8hi_e.val() {
-            self.ze_hi.next = self.k2.val() << self.sh8.val();
-            self.ce_hi.next = self.c8_6.val();
-        }
-        self.ze_lo.next = self.k2.val() << self.sh16.val();
-        self.ce_lo.next = self.c16_6.val();
-        if self.z8mid_e.val() {
-            self.ze_lo.next = self.k2.val() << self.sh24.val();
-            self.ce_lo.next = self.c24_6.val();
-        }
-        self.ze2.next = self.ze_hi.val();
-        self.ce_e.next = self.ce_hi.val();
-        if self.z16_e.val() {
-            self.ze2.next = self.ze_lo.val();
-            self.ce_e.next = self.ce_lo.val();
-        }
+        self.lz_e.value.next = self.k2.val();
+        self.c_k.d.next = self.k5.q.val();
         self.ha.next = self.p_nax5.q.val() + self.p_nay5.q.val();
         self.hb.next = self.p_nbx5.q.val() + self.p_nby5.q.val();
         self.p_fby6.d.next = self.m_fby.p.val();
@@ -1417,45 +1139,14 @@ impl Logic for Screener {
         self.p_lax6.d.next = self.m_lax.p.val();
         self.v6.d.next = self.v5.q.val();
         self.id6.d.next = self.id5.q.val();
-        self.ax6.d.next = self.ax5.q.val();
-        self.ay6.d.next = self.ay5.q.val();
-        self.bx6.d.next = self.bx5.q.val();
-        self.by6.d.next = self.by5.q.val();
-        self.absnx6.d.next = self.absnx5.q.val();
-        self.absny6.d.next = self.absny5.q.val();
-        self.negx6.d.next = self.negx5.q.val();
-        self.negy6.d.next = self.negy5.q.val();
-        self.k6.d.next = self.k5.q.val();
         self.k_nonpos6.d.next = self.k5.q.val().get_bit(31) | (self.k5.q.val() == self.zero32.val());
         self.ha6.d.next = self.ha.val();
         self.hb6.d.next = self.hb.val();
-        self.clz_n6.d.next = self.clz_n5.q.val();
-        self.norm_n6.d.next = self.norm_n5.q.val();
-        self.clz_e6.d.next = self.ce_e.val();
-        self.norm_e6.d.next = self.ze2.val();
+        self.clz_n6.d.next = self.lz_n.clz.val();
+        self.norm_n6.d.next = self.lz_n.norm.val();
 
-        // Stage 6: the last three shifts of 2K; the backward and back-facing screens, by
-        // priority; the side values against the sector's edges.
-        self.top4_e.next = self.norm_e6.q.val().get_bits::<4>(28);
-        self.ze3.next = self.norm_e6.q.val();
-        self.ce4_e.next = self.zero6.val();
-        if self.top4_e.val() == self.zero4.val() {
-            self.ze3.next = self.norm_e6.q.val() << self.sh4.val();
-            self.ce4_e.next = self.c4_6.val();
-        }
-        self.top2_e.next = self.ze3.val().get_bits::<2>(30);
-        self.ze4.next = self.ze3.val();
-        self.ce2_e.next = self.zero6.val();
-        if self.top2_e.val() == self.zero2.val() {
-            self.ze4.next = self.ze3.val() << self.sh2.val();
-            self.ce2_e.next = self.c2_6.val();
-        }
-        self.ze5.next = self.ze4.val();
-        self.ce1_e.next = self.zero6.val();
-        if !self.ze4.val().get_bit(31) {
-            self.ze5.next = self.ze4.val() << self.sh1.val();
-            self.ce1_e.next = self.c1_6.val();
-        }
+        // Stage 6: the backward and back-facing screens, by priority; the side values against
+        // the sector's edges.
         self.ha_pos.next = !self.ha6.q.val().get_bit(31) & (self.ha6.q.val() != self.zero32.val());
         self.hb_pos.next = !self.hb6.q.val().get_bit(31) & (self.hb6.q.val() != self.zero32.val());
         self.is_backward.next = !self.ha_pos.val() & !self.hb_pos.val();
@@ -1464,21 +1155,10 @@ impl Logic for Screener {
         self.side_l.next = self.p_lay6.q.val() - self.p_lax6.q.val();
         self.v7.d.next = self.v6.q.val();
         self.id7.d.next = self.id6.q.val();
-        self.ax7.d.next = self.ax6.q.val();
-        self.ay7.d.next = self.ay6.q.val();
-        self.bx7.d.next = self.bx6.q.val();
-        self.by7.d.next = self.by6.q.val();
-        self.absnx7.d.next = self.absnx6.q.val();
-        self.absny7.d.next = self.absny6.q.val();
-        self.negx7.d.next = self.negx6.q.val();
-        self.negy7.d.next = self.negy6.q.val();
-        self.k7.d.next = self.k6.q.val();
         self.clz_n7.d.next = self.clz_n6.q.val();
         self.clz_n2_7.d.next = self.clz_n6.q.val() + self.c2_6.val();
         self.clz_n3_7.d.next = self.clz_n6.q.val() + self.c3_6.val();
         self.norm_n7.d.next = self.norm_n6.q.val();
-        self.clz_e7.d.next = self.clz_e6.q.val() | self.ce4_e.val() | self.ce2_e.val() | self.ce1_e.val();
-        self.norm_e7.d.next = self.ze5.val();
         self.backward7.d.next = self.is_backward.val();
         self.back_facing7.d.next = self.is_back_facing.val();
         // The outside screen's gates, with "neither backward nor back-facing" folded in here
@@ -1497,15 +1177,15 @@ impl Logic for Screener {
         // chain reaches a register directly (through the exponent's multiplexer it was the
         // screener's critical path) and stage 8's verdict and shifts are one gate deeper only. The outside-the-sector screen: signed
         // comparisons with the margin as unsigned ones on the sign-flipped values.
-        self.s0.next = self.clz_n7.q.val() - self.clz_e7.q.val();
+        self.s0.next = self.clz_n7.q.val() - self.lz_e.clz.val();
         // s0 − 1 = clz_n + !clz_e (mod 64): one adder from the registers, beside s0's.
-        self.s0_m1.next = self.clz_n7.q.val() + !self.clz_e7.q.val();
+        self.s0_m1.next = self.clz_n7.q.val() + !self.lz_e.clz.val();
         // The normalised nmax (18 significant bits) has its low 14 bits zero, so it is below
         // the normalised 2K exactly when its top 18 bits are below 2K's, or equal to them with
         // 2K's low 14 bits not all zero: an 18-bit carry chain instead of a 32-bit one.
         self.n_hi.next = self.norm_n7.q.val().get_bits::<18>(14);
-        self.e_hi.next = self.norm_e7.q.val().get_bits::<18>(14);
-        self.e_lo_nz.next = self.norm_e7.q.val().get_bits::<14>(0) != self.zero14.val();
+        self.e_hi.next = self.lz_e.norm.val().get_bits::<18>(14);
+        self.e_lo_nz.next = self.lz_e.norm.val().get_bits::<14>(0) != self.zero14.val();
         self.n_below_e.next =
             (self.n_hi.val() < self.e_hi.val()) | ((self.n_hi.val() == self.e_hi.val()) & self.e_lo_nz.val());
         self.side_f_x.next = self.side_f7.q.val() ^ self.msb32.val();
@@ -1520,23 +1200,14 @@ impl Logic for Screener {
         self.hb_open8.d.next = self.hb_open7.q.val();
         self.v8.d.next = self.v7.q.val();
         self.id8.d.next = self.id7.q.val();
-        self.ax8.d.next = self.ax7.q.val();
-        self.ay8.d.next = self.ay7.q.val();
-        self.bx8.d.next = self.bx7.q.val();
-        self.by8.d.next = self.by7.q.val();
-        self.absnx8.d.next = self.absnx7.q.val();
-        self.absny8.d.next = self.absny7.q.val();
-        self.negx8.d.next = self.negx7.q.val();
-        self.negy8.d.next = self.negy7.q.val();
-        self.k8.d.next = self.k7.q.val();
         self.backward8.d.next = self.backward7.q.val();
         self.back_facing8.d.next = self.back_facing7.q.val();
         self.s0_8.d.next = self.s0.val();
         self.s0_m1_8.d.next = self.s0_m1.val();
         self.below8.d.next = self.n_below_e.val();
-        self.sp3_8.d.next = self.clz_n3_7.q.val() - self.clz_e7.q.val();
-        self.near_a8.d.next = self.clz_n3_7.q.val() < self.clz_e7.q.val();
-        self.near_b8.d.next = self.clz_n2_7.q.val() < self.clz_e7.q.val();
+        self.sp3_8.d.next = self.clz_n3_7.q.val() - self.lz_e.clz.val();
+        self.near_a8.d.next = self.clz_n3_7.q.val() < self.lz_e.clz.val();
+        self.near_b8.d.next = self.clz_n2_7.q.val() < self.lz_e.clz.val();
 
         // Stage 8 (VERDICT_LATENCY): the outside and near screens and the verdict, counted; the
         // patch takes the next slot of the output FIFO and enters the divider.
@@ -1591,8 +1262,8 @@ impl Logic for Screener {
         // DIVIDEND_BITS bits, shifted left by s0 + 3 (a register) and right by one when sh is
         // s0 − 1: `below8` reaches the divider through one multiplexer, after the shifter, and
         // the three short shifts right (sh = −1, −2, −3) are the same shifter's.
-        self.wide_x.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.absnx8.q.val()) << self.sp3_8.q.val();
-        self.wide_y.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.absny8.q.val()) << self.sp3_8.q.val();
+        self.wide_x.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.c_absnx.q.val()) << self.sp3_8.q.val();
+        self.wide_y.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.c_absny.q.val()) << self.sp3_8.q.val();
         self.dividend_x.next = self.wide_x.val().get_bits::<DIVIDEND_BITS>(1);
         self.dividend_y.next = self.wide_y.val().get_bits::<DIVIDEND_BITS>(1);
         if self.below8.q.val() {
@@ -1603,18 +1274,18 @@ impl Logic for Screener {
         self.divider.ry.next = self.dividend_y.val().get_bits::<32>(3);
         self.divider.fx.next = self.dividend_x.val().get_bits::<3>(0);
         self.divider.fy.next = self.dividend_y.val().get_bits::<3>(0);
-        self.divider.k.next = self.k8.q.val();
+        self.divider.k.next = self.c_k.q.val();
         // The tag the divider carries: a slot to complete (bit 0), the signs of n (bits 1 and 2).
         self.tag_p.next = self.zero3.val();
         if self.reserve.val() {
             self.tag_p.next = self.tag_pass.val();
         }
         self.tag_x.next = self.zero3.val();
-        if self.negx8.q.val() {
+        if self.c_negx.q.val() {
             self.tag_x.next = self.tag_negx.val();
         }
         self.tag_y.next = self.zero3.val();
-        if self.negy8.q.val() {
+        if self.c_negy.q.val() {
             self.tag_y.next = self.tag_negy.val();
         }
         self.divider.tag.next = self.tag_p.val() | self.tag_x.val() | self.tag_y.val();
@@ -1627,10 +1298,10 @@ impl Logic for Screener {
         self.lane_by.write_address.next = self.res_ptr.q.val();
         self.lane_sh.write_address.next = self.res_ptr.q.val();
         self.lane_id.write_data.next = self.id8.q.val();
-        self.lane_ax.write_data.next = self.ax8.q.val();
-        self.lane_ay.write_data.next = self.ay8.q.val();
-        self.lane_bx.write_data.next = self.bx8.q.val();
-        self.lane_by.write_data.next = self.by8.q.val();
+        self.lane_ax.write_data.next = self.c_ax.q.val();
+        self.lane_ay.write_data.next = self.c_ay.q.val();
+        self.lane_bx.write_data.next = self.c_bx.q.val();
+        self.lane_by.write_data.next = self.c_by.q.val();
         self.sh_pass.next = bit_cast::<7, 6>(self.exp8.val());
         if self.is_pass.val() {
             self.sh_pass.next = bit_cast::<7, 6>(self.exp8.val()) | self.pass_flag.val();
