@@ -45,6 +45,22 @@ pub const SH_BITS: u32 = 6;
 pub const SECTOR_MARGIN: i64 = 256;
 /// Width of a patch id.
 pub const ID_BITS: u32 = 16;
+/// Width of a component of a patch's inverse-distance vector `W` (signed, normalised by `sh`).
+pub const W_BITS: u32 = 18;
+
+// The widths above as the RTL's `Bits<N>` widths (const generics take `usize`).
+/// A coordinate relative to the ray origin, and what is formed from them (`n`, `|n|`, `nmax`).
+pub const COORD_W: usize = COORD_BITS as usize;
+/// A world coordinate: unsigned, the relative coordinate's width less its sign (Q11.6).
+pub const WORLD_W: usize = COORD_W - 1;
+/// A direction component (the source's normal, a sector's edges, a ray).
+pub const DIR_W: usize = DIR_BITS as usize;
+/// A patch id.
+pub const ID_W: usize = ID_BITS as usize;
+/// The exponent `sh`, and the leading-zero counts it is formed from.
+pub const SH_W: usize = SH_BITS as usize;
+/// A component of `W`.
+pub const W_W: usize = W_BITS as usize;
 
 /// Smallest and largest value of a signed `bits`-wide integer.
 pub const fn signed_range(bits: u32) -> (i64, i64) {

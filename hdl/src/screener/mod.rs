@@ -150,7 +150,9 @@
 //! included) and 4289 flip-flops (placement seed 1, `hdl/fpga/ecp5.md`), of which the divider
 //! takes about 1000 LUT4, 580 `CCU2C` carry cells and 2000 flip-flops.
 
-use crate::formats::{cross, dot, PatchSetup, SECTOR_MARGIN, SH_MAX, SH_MIN};
+use crate::formats::{
+    cross, dot, PatchSetup, COORD_W, DIR_W, ID_W, SECTOR_MARGIN, SH_MAX, SH_MIN, SH_W, WORLD_W, W_W,
+};
 use crate::prim::{Delay, FifoControl, FifoRam, Mul18};
 
 pub mod divider;
@@ -313,22 +315,22 @@ const SIGN32: u64 = 1 << 31;
 pub struct Screener {
     pub clock: Signal<In, Clock>,
     // Bundle setup.
-    pub origin_x: Signal<In, Bits<17>>,
-    pub origin_y: Signal<In, Bits<17>>,
-    pub normal_x: Signal<In, Bits<18>>,
-    pub normal_y: Signal<In, Bits<18>>,
-    pub first_x: Signal<In, Bits<18>>,
-    pub first_y: Signal<In, Bits<18>>,
-    pub last_x: Signal<In, Bits<18>>,
-    pub last_y: Signal<In, Bits<18>>,
+    pub origin_x: Signal<In, Bits<WORLD_W>>,
+    pub origin_y: Signal<In, Bits<WORLD_W>>,
+    pub normal_x: Signal<In, Bits<DIR_W>>,
+    pub normal_y: Signal<In, Bits<DIR_W>>,
+    pub first_x: Signal<In, Bits<DIR_W>>,
+    pub first_y: Signal<In, Bits<DIR_W>>,
+    pub last_x: Signal<In, Bits<DIR_W>>,
+    pub last_y: Signal<In, Bits<DIR_W>>,
     // Patch stream in.
     pub in_valid: Signal<In, bool>,
     pub in_ready: Signal<Out, bool>,
-    pub in_id: Signal<In, Bits<16>>,
-    pub in_ax: Signal<In, Bits<17>>,
-    pub in_ay: Signal<In, Bits<17>>,
-    pub in_bx: Signal<In, Bits<17>>,
-    pub in_by: Signal<In, Bits<17>>,
+    pub in_id: Signal<In, Bits<ID_W>>,
+    pub in_ax: Signal<In, Bits<WORLD_W>>,
+    pub in_ay: Signal<In, Bits<WORLD_W>>,
+    pub in_bx: Signal<In, Bits<WORLD_W>>,
+    pub in_by: Signal<In, Bits<WORLD_W>>,
     /// The patch's sector bank, carried to stage 3 ([`sector_bank`](Self::sector_bank)).
     pub in_bank: Signal<In, bool>,
     // The sector read: the bank of the patch in stage 3.
@@ -339,14 +341,14 @@ pub struct Screener {
     // Every patch out, with its verdict.
     pub out_valid: Signal<Out, bool>,
     pub out_ready: Signal<In, bool>,
-    pub out_id: Signal<Out, Bits<16>>,
-    pub out_ax: Signal<Out, Bits<18>>,
-    pub out_ay: Signal<Out, Bits<18>>,
-    pub out_bx: Signal<Out, Bits<18>>,
-    pub out_by: Signal<Out, Bits<18>>,
-    pub out_wx: Signal<Out, Bits<18>>,
-    pub out_wy: Signal<Out, Bits<18>>,
-    pub out_sh: Signal<Out, Bits<6>>,
+    pub out_id: Signal<Out, Bits<ID_W>>,
+    pub out_ax: Signal<Out, Bits<COORD_W>>,
+    pub out_ay: Signal<Out, Bits<COORD_W>>,
+    pub out_bx: Signal<Out, Bits<COORD_W>>,
+    pub out_by: Signal<Out, Bits<COORD_W>>,
+    pub out_wx: Signal<Out, Bits<W_W>>,
+    pub out_wy: Signal<Out, Bits<W_W>>,
+    pub out_sh: Signal<Out, Bits<SH_W>>,
     pub out_pass: Signal<Out, bool>,
     // Counters.
     pub passed: Signal<Out, Bits<32>>,
@@ -383,20 +385,20 @@ pub struct Screener {
     used_dec: Signal<Local, Bits<6>>,
     res_inc: Signal<Local, Bits<5>>,
     // Stage 0: coordinates relative to the origin.
-    ext_ox: Signal<Local, Bits<18>>,
-    ext_oy: Signal<Local, Bits<18>>,
-    ext_ax: Signal<Local, Bits<18>>,
-    ext_ay: Signal<Local, Bits<18>>,
-    ext_bx: Signal<Local, Bits<18>>,
-    ext_by: Signal<Local, Bits<18>>,
+    ext_ox: Signal<Local, Bits<COORD_W>>,
+    ext_oy: Signal<Local, Bits<COORD_W>>,
+    ext_ax: Signal<Local, Bits<COORD_W>>,
+    ext_ay: Signal<Local, Bits<COORD_W>>,
+    ext_bx: Signal<Local, Bits<COORD_W>>,
+    ext_by: Signal<Local, Bits<COORD_W>>,
     // Stage 1: the products of K start; n and |n|.
     v1: DFF<bool>,
     bank1: DFF<bool>,
-    id1: DFF<Bits<16>>,
-    ax1: DFF<Bits<18>>,
-    ay1: DFF<Bits<18>>,
-    bx1: DFF<Bits<18>>,
-    by1: DFF<Bits<18>>,
+    id1: DFF<Bits<ID_W>>,
+    ax1: DFF<Bits<COORD_W>>,
+    ay1: DFF<Bits<COORD_W>>,
+    bx1: DFF<Bits<COORD_W>>,
+    by1: DFF<Bits<COORD_W>>,
     m_nax: Mul18,
     m_nay: Mul18,
     m_nbx: Mul18,
@@ -407,52 +409,52 @@ pub struct Screener {
     m_fbx: Mul18,
     m_lay: Mul18,
     m_lax: Mul18,
-    nx: Signal<Local, Bits<18>>,
-    ny: Signal<Local, Bits<18>>,
-    nx_neg: Signal<Local, Bits<18>>,
-    ny_neg: Signal<Local, Bits<18>>,
-    absnx: Signal<Local, Bits<18>>,
-    absny: Signal<Local, Bits<18>>,
+    nx: Signal<Local, Bits<COORD_W>>,
+    ny: Signal<Local, Bits<COORD_W>>,
+    nx_neg: Signal<Local, Bits<COORD_W>>,
+    ny_neg: Signal<Local, Bits<COORD_W>>,
+    absnx: Signal<Local, Bits<COORD_W>>,
+    absny: Signal<Local, Bits<COORD_W>>,
     // Stage 2: the products of dot(n_s, a), dot(n_s, b) start; nmax.
     v2: DFF<bool>,
     bank2: DFF<bool>,
-    id2: DFF<Bits<16>>,
-    ax2: DFF<Bits<18>>,
-    ay2: DFF<Bits<18>>,
-    bx2: DFF<Bits<18>>,
-    by2: DFF<Bits<18>>,
-    absnx2: DFF<Bits<18>>,
-    absny2: DFF<Bits<18>>,
+    id2: DFF<Bits<ID_W>>,
+    ax2: DFF<Bits<COORD_W>>,
+    ay2: DFF<Bits<COORD_W>>,
+    bx2: DFF<Bits<COORD_W>>,
+    by2: DFF<Bits<COORD_W>>,
+    absnx2: DFF<Bits<COORD_W>>,
+    absny2: DFF<Bits<COORD_W>>,
     negx2: DFF<bool>,
     negy2: DFF<bool>,
-    normal_x2: DFF<Bits<18>>,
-    normal_y2: DFF<Bits<18>>,
+    normal_x2: DFF<Bits<DIR_W>>,
+    normal_y2: DFF<Bits<DIR_W>>,
     /// The normal again, for the products with `a` (no register drives two multipliers).
-    normal_xa2: DFF<Bits<18>>,
-    normal_ya2: DFF<Bits<18>>,
-    nmax: Signal<Local, Bits<18>>,
+    normal_xa2: DFF<Bits<DIR_W>>,
+    normal_ya2: DFF<Bits<DIR_W>>,
+    nmax: Signal<Local, Bits<COORD_W>>,
     // Stage 3: the side products start; those of K arrive; nmax into its normaliser.
     v3: DFF<bool>,
     bank3: DFF<bool>,
-    id3: DFF<Bits<16>>,
-    ax3: DFF<Bits<18>>,
-    ay3: DFF<Bits<18>>,
-    bx3: DFF<Bits<18>>,
-    by3: DFF<Bits<18>>,
-    absnx3: DFF<Bits<18>>,
-    absny3: DFF<Bits<18>>,
+    id3: DFF<Bits<ID_W>>,
+    ax3: DFF<Bits<COORD_W>>,
+    ay3: DFF<Bits<COORD_W>>,
+    bx3: DFF<Bits<COORD_W>>,
+    by3: DFF<Bits<COORD_W>>,
+    absnx3: DFF<Bits<COORD_W>>,
+    absny3: DFF<Bits<COORD_W>>,
     negx3: DFF<bool>,
     negy3: DFF<bool>,
-    nmax3: DFF<Bits<18>>,
+    nmax3: DFF<Bits<COORD_W>>,
     // Stage 4: K; the products of dot(n_s, a), dot(n_s, b) arrive.
     v4: DFF<bool>,
-    id4: DFF<Bits<16>>,
+    id4: DFF<Bits<ID_W>>,
     p_aby4: DFF<Bits<32>>,
     p_abx4: DFF<Bits<32>>,
     kk: Signal<Local, Bits<32>>,
     // Stage 5: 2K into its normaliser; the dot products; the side products arrive.
     v5: DFF<bool>,
-    id5: DFF<Bits<16>>,
+    id5: DFF<Bits<ID_W>>,
     k5: DFF<Bits<32>>,
     p_nax5: DFF<Bits<32>>,
     p_nay5: DFF<Bits<32>>,
@@ -463,7 +465,7 @@ pub struct Screener {
     k2: Signal<Local, Bits<32>>,
     // Stage 6: the backward and back-facing screens; the side values.
     v6: DFF<bool>,
-    id6: DFF<Bits<16>>,
+    id6: DFF<Bits<ID_W>>,
     /// `K ≤ 0` (signed), from stage 5's register: the back-facing test without a 32-bit
     /// compare in stage 6.
     k_nonpos6: DFF<bool>,
@@ -473,7 +475,7 @@ pub struct Screener {
     p_fbx6: DFF<Bits<32>>,
     p_lay6: DFF<Bits<32>>,
     p_lax6: DFF<Bits<32>>,
-    clz_n6: DFF<Bits<6>>,
+    clz_n6: DFF<Bits<SH_W>>,
     norm_n6: DFF<Bits<32>>,
     ha_pos: Signal<Local, bool>,
     hb_pos: Signal<Local, bool>,
@@ -483,19 +485,19 @@ pub struct Screener {
     side_l: Signal<Local, Bits<32>>,
     // Stage 7: the exponent; the outside-the-sector screen.
     v7: DFF<bool>,
-    id7: DFF<Bits<16>>,
+    id7: DFF<Bits<ID_W>>,
     side_f7: DFF<Bits<32>>,
     side_l7: DFF<Bits<32>>,
-    clz_n7: DFF<Bits<6>>,
+    clz_n7: DFF<Bits<SH_W>>,
     norm_n7: DFF<Bits<32>>,
     backward7: DFF<bool>,
     back_facing7: DFF<bool>,
     ha_open7: DFF<bool>,
     hb_open7: DFF<bool>,
-    s0: Signal<Local, Bits<6>>,
-    s0_m1: Signal<Local, Bits<6>>,
-    n_hi: Signal<Local, Bits<18>>,
-    e_hi: Signal<Local, Bits<18>>,
+    s0: Signal<Local, Bits<SH_W>>,
+    s0_m1: Signal<Local, Bits<SH_W>>,
+    n_hi: Signal<Local, Bits<COORD_W>>,
+    e_hi: Signal<Local, Bits<COORD_W>>,
     e_lo_nz: Signal<Local, bool>,
     n_below_e: Signal<Local, bool>,
     side_f_x: Signal<Local, Bits<32>>,
@@ -513,11 +515,11 @@ pub struct Screener {
     hb_open8: DFF<bool>,
     // Stage 8: the verdict, the divider's inputs; the patch takes a slot.
     v8: DFF<bool>,
-    id8: DFF<Bits<16>>,
+    id8: DFF<Bits<ID_W>>,
     /// The exponent's two candidates and the choice between them, registered apart (`exp8`
     /// is the choice): the normalised compare reaches a register through no multiplexer.
-    s0_8: DFF<Bits<6>>,
-    s0_m1_8: DFF<Bits<6>>,
+    s0_8: DFF<Bits<SH_W>>,
+    s0_m1_8: DFF<Bits<SH_W>>,
     below8: DFF<bool>,
     /// What stage 8 asks of the exponent, for each candidate, from compares of the two
     /// leading-zero counts (no adder before them; both counts lie in 0…31, so `d = clz_n −
@@ -527,11 +529,11 @@ pub struct Screener {
     near_b8: DFF<bool>,
     /// `s0 + 3`, the dividend's shift into [`DIVIDEND_BITS`] bits (see stage 8), from the
     /// registered `clz_n + 3`: one adder, beside `s0`'s.
-    sp3_8: DFF<Bits<6>>,
+    sp3_8: DFF<Bits<SH_W>>,
     /// `clz_n + 2`, `+ 3`, registered beside `clz_n7`.
-    clz_n2_7: DFF<Bits<6>>,
-    clz_n3_7: DFF<Bits<6>>,
-    exp8: Signal<Local, Bits<6>>,
+    clz_n2_7: DFF<Bits<SH_W>>,
+    clz_n3_7: DFF<Bits<SH_W>>,
+    exp8: Signal<Local, Bits<SH_W>>,
     near8: Signal<Local, bool>,
     backward8: DFF<bool>,
     back_facing8: DFF<bool>,
@@ -555,12 +557,12 @@ pub struct Screener {
     tag_y: Signal<Local, Bits<3>>,
     /// The stage-to-stage carry of what stages 4–7 only pass on: the coordinates and `|n|`'s
     /// magnitudes and signs from stage 3's registers, `K` from stage 5's, to stage 8.
-    c_ax: Delay<Bits<18>, 5>,
-    c_ay: Delay<Bits<18>, 5>,
-    c_bx: Delay<Bits<18>, 5>,
-    c_by: Delay<Bits<18>, 5>,
-    c_absnx: Delay<Bits<18>, 5>,
-    c_absny: Delay<Bits<18>, 5>,
+    c_ax: Delay<Bits<COORD_W>, 5>,
+    c_ay: Delay<Bits<COORD_W>, 5>,
+    c_bx: Delay<Bits<COORD_W>, 5>,
+    c_by: Delay<Bits<COORD_W>, 5>,
+    c_absnx: Delay<Bits<COORD_W>, 5>,
+    c_absny: Delay<Bits<COORD_W>, 5>,
     c_negx: Delay<bool, 5>,
     c_negy: Delay<bool, 5>,
     c_k: Delay<Bits<32>, 3>,
@@ -1006,12 +1008,12 @@ impl Logic for Screener {
         self.room.next = !self.full.q.val();
         self.in_ready.next = self.room.val();
         self.take.next = self.in_valid.val() & self.room.val();
-        self.ext_ox.next = bit_cast::<18, 17>(self.origin_x.val());
-        self.ext_oy.next = bit_cast::<18, 17>(self.origin_y.val());
-        self.ext_ax.next = bit_cast::<18, 17>(self.in_ax.val());
-        self.ext_ay.next = bit_cast::<18, 17>(self.in_ay.val());
-        self.ext_bx.next = bit_cast::<18, 17>(self.in_bx.val());
-        self.ext_by.next = bit_cast::<18, 17>(self.in_by.val());
+        self.ext_ox.next = bit_cast::<COORD_W, WORLD_W>(self.origin_x.val());
+        self.ext_oy.next = bit_cast::<COORD_W, WORLD_W>(self.origin_y.val());
+        self.ext_ax.next = bit_cast::<COORD_W, WORLD_W>(self.in_ax.val());
+        self.ext_ay.next = bit_cast::<COORD_W, WORLD_W>(self.in_ay.val());
+        self.ext_bx.next = bit_cast::<COORD_W, WORLD_W>(self.in_bx.val());
+        self.ext_by.next = bit_cast::<COORD_W, WORLD_W>(self.in_by.val());
         self.v1.d.next = self.take.val();
         self.bank1.d.next = self.in_bank.val();
         self.id1.d.next = self.in_id.val();
@@ -1103,7 +1105,7 @@ impl Logic for Screener {
         self.m_lax.b.next = self.ax3.q.val();
         self.p_aby4.d.next = self.m_aby.p.val();
         self.p_abx4.d.next = self.m_abx.p.val();
-        self.lz_n.value.next = bit_cast::<32, 18>(self.nmax3.q.val());
+        self.lz_n.value.next = bit_cast::<32, COORD_W>(self.nmax3.q.val());
         self.c_ax.d.next = self.ax3.q.val();
         self.c_ay.d.next = self.ay3.q.val();
         self.c_bx.d.next = self.bx3.q.val();
@@ -1262,8 +1264,10 @@ impl Logic for Screener {
         // DIVIDEND_BITS bits, shifted left by s0 + 3 (a register) and right by one when sh is
         // s0 − 1: `below8` reaches the divider through one multiplexer, after the shifter, and
         // the three short shifts right (sh = −1, −2, −3) are the same shifter's.
-        self.wide_x.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.c_absnx.q.val()) << self.sp3_8.q.val();
-        self.wide_y.next = bit_cast::<{ DIVIDEND_BITS + 1 }, 18>(self.c_absny.q.val()) << self.sp3_8.q.val();
+        self.wide_x.next =
+            bit_cast::<{ DIVIDEND_BITS + 1 }, COORD_W>(self.c_absnx.q.val()) << self.sp3_8.q.val();
+        self.wide_y.next =
+            bit_cast::<{ DIVIDEND_BITS + 1 }, COORD_W>(self.c_absny.q.val()) << self.sp3_8.q.val();
         self.dividend_x.next = self.wide_x.val().get_bits::<DIVIDEND_BITS>(1);
         self.dividend_y.next = self.wide_y.val().get_bits::<DIVIDEND_BITS>(1);
         if self.below8.q.val() {
