@@ -484,8 +484,15 @@ fn screener_verilog_replays_bit_exactly_under_icarus() -> Result<()> {
     let pacing = Pacing { idle: true, backpressure: true };
     let (t, _) = run(&mut drv, &segments, pacing, seed).map_err(|e| e.context(format!("seed {seed:#x}")))?;
     assert!(t.0.iter().sum::<u64>() >= 2000);
+    replay_under_icarus(&mut drv, "screener", seed)?;
+    Ok(())
+}
+
+/// Replays `drv`'s recording (its ports, every clock) on the exported Verilog under Icarus in
+/// `target/tmp/replay/NAME`, naming `seed` in a failure, and prints the report.
+fn replay_under_icarus<U: Block>(drv: &mut Driver<U>, name: &str, seed: u64) -> Result<()> {
     let rec = drv.take_recording().ok_or("recording was on")?;
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("screener");
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(name);
     let report =
         rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
     println!("{report}");
@@ -736,11 +743,7 @@ fn divider_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
         }
         drv.tick()?;
     }
-    let rec = drv.take_recording().ok_or("recording was on")?;
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("pipe_divider");
-    let report =
-        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
-    println!("{report}");
+    replay_under_icarus(&mut drv, "pipe_divider", seed)?;
     Ok(())
 }
 
@@ -765,11 +768,7 @@ fn normaliser_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
         }
         drv.tick()?;
     }
-    let rec = drv.take_recording().ok_or("recording was on")?;
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("normaliser");
-    let report =
-        rec.replay(drv.uut(), &dir, Simulator::Icarus).map_err(|e| e.context(format!("seed {seed:#x}")))?;
-    println!("{report}");
+    replay_under_icarus(&mut drv, "normaliser", seed)?;
     Ok(())
 }
 
@@ -792,12 +791,7 @@ fn delay_leaf_replays_bit_exactly_under_icarus() -> Result<()> {
             let want = if cycle + 1 >= D { sent[cycle + 1 - D] } else { T::default() };
             assert_eq!(drv.uut().q.val(), want, "{name}: after edge {cycle}, seed {seed:#x}");
         }
-        let rec = drv.take_recording().ok_or("recording was on")?;
-        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join(name);
-        let report = rec
-            .replay(drv.uut(), &dir, Simulator::Icarus)
-            .map_err(|e| e.context(format!("seed {seed:#x}")))?;
-        println!("{report}");
+        replay_under_icarus(&mut drv, name, seed)?;
         Ok(())
     }
     run::<Bits<18>, 5>("delay_word5", |r| Bits::from(r.random::<u64>() & 0x3ffff))?;
