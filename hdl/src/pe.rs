@@ -217,7 +217,7 @@ pub struct ProcessingElement {
     screener: Screener,
     unit: IntersectionUnit,
     // The tag FIFO: its control, the lane of the tags' first and count (reads the head and the
-    // entry after it every cycle: [`FifoControl`]), and each slot's kind in a register.
+    // entry after it every cycle: [`FifoControl`]), and the lane of their kinds.
     tags: FifoControl<TAG_BITS, 7>,
     tag_lane: FifoRam<TAG_WIDTH, TAG_BITS>,
     /// Each tag's kind (high: a job's, low: a retire's), the head's in a register of its own
@@ -302,8 +302,9 @@ pub struct ProcessingElement {
     /// handshake reaches the tag FIFO's write enables through one gate.
     stall: DFF<bool>,
     /// The bank a pending sector overwrites (not `bank`) holds a job before its sector read: a
-    /// register of its own, from the next values of `bank` and the `used` flags, so that the
-    /// sector's clock enables are one gate of registers (the command handshake, `pend`, this).
+    /// register of its own, from the next values of `bank` and the `used` flags, so that `take`
+    /// (the flip, and the next values of `pend` and the `load` registers) is one gate of
+    /// registers (the command handshake, `pend`, this).
     other_busy: DFF<bool>,
     bank_next: Signal<Local, bool>,
     used0_next: Signal<Local, bool>,
