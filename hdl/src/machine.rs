@@ -53,18 +53,17 @@
 //! # Resources
 //!
 //! N times the PE's (17 `DP16KD` each), plus the arbiter and the port registers. On the
-//! LFE5U-85F-6 four PEs take 44,470 LUT4s (53 %), 32,057 FFs, 68 of 208 `DP16KD`s and 64
-//! `MULT18X18D`s and route at 144.0 MHz, the median of placement seeds 1 to 3 (140.4–147.8;
+//! LFE5U-85F-6 four PEs take 44,462 LUT4s (53 %), 32,065 FFs, 68 of 208 `DP16KD`s and 64
+//! `MULT18X18D`s and route at 149.6 MHz, the median of placement seeds 1 to 3 (147.5–152.1;
 //! `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga --blocks machine_4`), with each PE's block RAMs
 //! and multipliers pinned to its own quadrant of the die by the flow's floorplan and each PE's
 //! inputs in its own stretch of the register wrapper's chain. Every seed's critical path is
-//! inside one PE (the screener's divider, a pending sector into a bank's clock enables, the
-//! command handshake into the tag FIFO's write enables). Six PEs, the most whose LUTs fit, take
-//! 66,755 LUT4s (80 %), 48,044 FFs, 102 `DP16KD`s and 96 `MULT18X18D`s and route at 133.3 MHz,
-//! the median of seeds 1 to 3 (132.5–145.3), floorplanned in a 3 × 2 grid of regions; every
-//! critical path is inside PE 3 (its bank into the pending sector's clock enables; the tag
-//! FIFO's head into the slice's load enables, through the merger), none in the arbiter since
-//! its grant went into a register of its own.
+//! inside one PE's screener (a divider step, the dividend's shift into the divider, the
+//! exponent's normaliser). Six PEs, the most whose LUTs fit, take 65,808 LUT4s (79 %), 48,056
+//! FFs, 102 `DP16KD`s and 96 `MULT18X18D`s and route at 145.2 MHz, the median of seeds 1 to 3
+//! (142.1–149.8), floorplanned in a 3 × 2 grid of regions; the critical paths: the arbiter's
+//! round-robin (its last grant into a queue's `asks`, seed 1), a screener's dividend into its
+//! divider (2) and a cache's tag compare (3).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
