@@ -119,7 +119,7 @@
 //! 17 `DP16KD` (the cache's five, the unit's twelve), 452 LUT RAMs at placement seed 1; on
 //! LFE5U-85F-6 a median of 150.4 MHz over placement seeds 1–5 (127.8–157.5; 152.8, 151.1–155.3,
 //! before the sector registers' clock enables were registers and the tag kinds a lane of their
-//! own, which the machine of six PEs needed and which cost the PE alone 2 MHz at the median;
+//! own, which the machine of six PEs needed and which cost the PE alone 2.4 MHz at the median;
 //! 153.3, 140.8–157.3, before the bank counters counted a job a clock late and the screener's
 //! and the unit's cuts of the same day; 149.4, 140.2–154.0, with the origin through a bank
 //! multiplexer and `W` negated after the divider; 71.8 at seed 1 before the 150 MHz work). Its

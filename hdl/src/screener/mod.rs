@@ -108,13 +108,12 @@
 //! are [`Mul18`]s, on ECP5 `MULT18X18D`s with their own input and output registers. Measured
 //! (`cargo xtask fpga --blocks screener --families ecp5 --seeds 1,2,3,4,5`) the block reaches a
 //! median of 155.6 MHz (151.7–161.5; `hdl/fpga/ecp5.md`; 160.6, 151.2–169.0, before the split
-//! into the normaliser's and the delays' leaves, whose netlist is another placement's; 152.9,
-//! 150.6–160.7, before the
-//! outside compare's halves were registered and the dividend formed by one shifter; 155.1,
-//! 150.4–165.4, before the divider signed `W` itself; 158.6, 150.0–163.6, before the normal was
-//! read in stage 1 only, for the processing element's banks; 150.4 before stage 7 registered
-//! the exponent's flags and split the outside compare, 125 at seed 1 before the DSP
-//! registers). Its critical paths now: the dividend (`c_absnx` through the shifter, `sp3_8`)
+//! into the normaliser's and the delays' leaves: the same logic, which Yosys maps and nextpnr
+//! places anew; 152.9, 150.6–160.7, before the outside compare's halves were registered and
+//! the dividend formed by one shifter; 155.1, 150.4–165.4, before the divider signed `W`
+//! itself; 158.6, 150.0–163.6, before the normal was read in stage 1 only, for the processing
+//! element's banks; 150.4 before stage 7 registered the exponent's flags and split the outside
+//! compare, 125 at seed 1 before the DSP registers). Its critical paths now: the dividend (`c_absnx` through the shifter, `sp3_8`)
 //! into the divider's first remainder (seeds 1, 3, 5), `k5` into the exponent's normaliser
 //! (2, 4).
 //!
