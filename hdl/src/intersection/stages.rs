@@ -153,7 +153,7 @@ end
 }
 
 /// The intersection unit's six products of one ray direction `d` with a patch's three vectors
-/// `a`, `b`, `w`: six [`Mul18`]s in one leaf, with the patch operands held one clock longer
+/// `a`, `b`, `w`: six [`Mul18`](crate::prim::Mul18)s in one leaf, with the patch operands held one clock longer
 /// than the direction. Outputs, each `(d·x) >> 4` as 32 bits ([`crate::formats::mul`]):
 /// `dx_ay`, `dy_ax`, `dx_by`, `dy_bx`, `dx_wx`, `dy_wy`.
 ///
