@@ -342,13 +342,13 @@ impl<const N: usize> Logic for MemoryArbiter<N> {
             self.rr.request[i].next = self.asks[i].q.val();
             self.asks[i].clock.next = self.clock.val();
             self.grant[i].clock.next = self.clock.val();
-            self.grant[i].d.next = self.rr.found.val() & (self.rr.pick.val().index() == i);
+            self.grant[i].d.next = self.rr.granted[i].val();
             // Words left once the pending pop is done: none, or exactly one.
             self.asks[i].d.next = self.queues[i].count.val() != self.zero_count.val();
             if self.grant[i].q.val() {
                 self.asks[i].d.next = self.queues[i].count.val() != self.one_count.val();
             }
-            if self.rr.found.val() & (self.rr.pick.val().index() == i) {
+            if self.rr.granted[i].val() {
                 if self.grant[i].q.val() {
                     if self.queues[i].count.val() == self.two_count.val() {
                         self.asks[i].d.next = false;

@@ -719,6 +719,8 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
     reg  rr$request$1;
     wire  rr$found;
     wire  [2:0] rr$pick;
+    wire  rr$granted$0;
+    wire  rr$granted$1;
     reg  asks$0$d;
     wire  asks$0$q;
     reg  asks$0$clock;
@@ -790,7 +792,9 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         .request$0(rr$request$0),
         .request$1(rr$request$1),
         .found(rr$found),
-        .pick(rr$pick)
+        .pick(rr$pick),
+        .granted$0(rr$granted$0),
+        .granted$1(rr$granted$1)
     );
     machine$arbiter$asks$0 asks$0(
         .d(asks$0$d),
@@ -885,12 +889,12 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         rr$request$0 = asks$0$q;
         asks$0$clock = clock;
         grant$0$clock = clock;
-        grant$0$d = rr$found & (rr$pick == 0);
+        grant$0$d = rr$granted$0;
         asks$0$d = queues$0$count != zero_count;
         if (grant$0$q) begin
             asks$0$d = queues$0$count != one_count;
         end
-        if (rr$found & (rr$pick == 0)) begin
+        if (rr$granted$0) begin
             if (grant$0$q) begin
                 if (queues$0$count == two_count) begin
                     asks$0$d = 1'b0;
@@ -910,12 +914,12 @@ module machine$arbiter(clock,pe_req$0,pe_req$1,pe_addr$0,pe_addr$1,pe_valid$0,pe
         rr$request$1 = asks$1$q;
         asks$1$clock = clock;
         grant$1$clock = clock;
-        grant$1$d = rr$found & (rr$pick == 1);
+        grant$1$d = rr$granted$1;
         asks$1$d = queues$1$count != zero_count;
         if (grant$1$q) begin
             asks$1$d = queues$1$count != one_count;
         end
-        if (rr$found & (rr$pick == 1)) begin
+        if (rr$granted$1) begin
             if (grant$1$q) begin
                 if (queues$1$count == two_count) begin
                     asks$1$d = 1'b0;
@@ -2107,7 +2111,7 @@ module machine$arbiter$route$lane(clock,write_address,write_data,write_enable,he
 endmodule // machine$arbiter$route$lane
 
 
-module machine$arbiter$rr(clock,request$0,request$1,found,pick);
+module machine$arbiter$rr(clock,request$0,request$1,found,pick,granted$0,granted$1);
     
     // Module arguments
     input wire  clock;
@@ -2115,6 +2119,8 @@ module machine$arbiter$rr(clock,request$0,request$1,found,pick);
     input wire  request$1;
     output reg  found;
     output reg  [2:0] pick;
+    output reg  granted$0;
+    output reg  granted$1;
     
     // Update code (custom)
     reg [2:0] last;
@@ -2126,6 +2132,13 @@ module machine$arbiter$rr(clock,request$0,request$1,found,pick);
           3'd0: begin if (request$1) pick = 3'd1; else if (request$0) pick = 3'd0; end
           3'd1: begin if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; end
           default: pick = 0;
+       endcase
+    end
+    always @(*) begin
+       case (last)
+          3'd0: begin granted$1 = request$1; granted$0 = request$0 & !request$1; end
+          3'd1: begin granted$0 = request$0; granted$1 = request$1 & !request$0; end
+          default: begin granted$0 = 1'b0; granted$1 = 1'b0; end
        endcase
     end
     always @(posedge clock) begin

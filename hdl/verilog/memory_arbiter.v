@@ -73,6 +73,10 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
     reg  rr$request$3;
     wire  rr$found;
     wire  [2:0] rr$pick;
+    wire  rr$granted$0;
+    wire  rr$granted$1;
+    wire  rr$granted$2;
+    wire  rr$granted$3;
     reg  asks$0$d;
     wire  asks$0$q;
     reg  asks$0$clock;
@@ -182,7 +186,11 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         .request$2(rr$request$2),
         .request$3(rr$request$3),
         .found(rr$found),
-        .pick(rr$pick)
+        .pick(rr$pick),
+        .granted$0(rr$granted$0),
+        .granted$1(rr$granted$1),
+        .granted$2(rr$granted$2),
+        .granted$3(rr$granted$3)
     );
     memory_arbiter$asks$0 asks$0(
         .d(asks$0$d),
@@ -307,12 +315,12 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         rr$request$0 = asks$0$q;
         asks$0$clock = clock;
         grant$0$clock = clock;
-        grant$0$d = rr$found & (rr$pick == 0);
+        grant$0$d = rr$granted$0;
         asks$0$d = queues$0$count != zero_count;
         if (grant$0$q) begin
             asks$0$d = queues$0$count != one_count;
         end
-        if (rr$found & (rr$pick == 0)) begin
+        if (rr$granted$0) begin
             if (grant$0$q) begin
                 if (queues$0$count == two_count) begin
                     asks$0$d = 1'b0;
@@ -332,12 +340,12 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         rr$request$1 = asks$1$q;
         asks$1$clock = clock;
         grant$1$clock = clock;
-        grant$1$d = rr$found & (rr$pick == 1);
+        grant$1$d = rr$granted$1;
         asks$1$d = queues$1$count != zero_count;
         if (grant$1$q) begin
             asks$1$d = queues$1$count != one_count;
         end
-        if (rr$found & (rr$pick == 1)) begin
+        if (rr$granted$1) begin
             if (grant$1$q) begin
                 if (queues$1$count == two_count) begin
                     asks$1$d = 1'b0;
@@ -357,12 +365,12 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         rr$request$2 = asks$2$q;
         asks$2$clock = clock;
         grant$2$clock = clock;
-        grant$2$d = rr$found & (rr$pick == 2);
+        grant$2$d = rr$granted$2;
         asks$2$d = queues$2$count != zero_count;
         if (grant$2$q) begin
             asks$2$d = queues$2$count != one_count;
         end
-        if (rr$found & (rr$pick == 2)) begin
+        if (rr$granted$2) begin
             if (grant$2$q) begin
                 if (queues$2$count == two_count) begin
                     asks$2$d = 1'b0;
@@ -382,12 +390,12 @@ module memory_arbiter(clock,pe_req$0,pe_req$1,pe_req$2,pe_req$3,pe_addr$0,pe_add
         rr$request$3 = asks$3$q;
         asks$3$clock = clock;
         grant$3$clock = clock;
-        grant$3$d = rr$found & (rr$pick == 3);
+        grant$3$d = rr$granted$3;
         asks$3$d = queues$3$count != zero_count;
         if (grant$3$q) begin
             asks$3$d = queues$3$count != one_count;
         end
-        if (rr$found & (rr$pick == 3)) begin
+        if (rr$granted$3) begin
             if (grant$3$q) begin
                 if (queues$3$count == two_count) begin
                     asks$3$d = 1'b0;
@@ -2301,7 +2309,7 @@ module memory_arbiter$route$lane(clock,write_address,write_data,write_enable,hea
 endmodule // memory_arbiter$route$lane
 
 
-module memory_arbiter$rr(clock,request$0,request$1,request$2,request$3,found,pick);
+module memory_arbiter$rr(clock,request$0,request$1,request$2,request$3,found,pick,granted$0,granted$1,granted$2,granted$3);
     
     // Module arguments
     input wire  clock;
@@ -2311,6 +2319,10 @@ module memory_arbiter$rr(clock,request$0,request$1,request$2,request$3,found,pic
     input wire  request$3;
     output reg  found;
     output reg  [2:0] pick;
+    output reg  granted$0;
+    output reg  granted$1;
+    output reg  granted$2;
+    output reg  granted$3;
     
     // Update code (custom)
     reg [2:0] last;
@@ -2324,6 +2336,15 @@ module memory_arbiter$rr(clock,request$0,request$1,request$2,request$3,found,pic
           3'd2: begin if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; end
           3'd3: begin if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; end
           default: pick = 0;
+       endcase
+    end
+    always @(*) begin
+       case (last)
+          3'd0: begin granted$1 = request$1; granted$2 = request$2 & !request$1; granted$3 = request$3 & !request$1 & !request$2; granted$0 = request$0 & !request$1 & !request$2 & !request$3; end
+          3'd1: begin granted$2 = request$2; granted$3 = request$3 & !request$2; granted$0 = request$0 & !request$2 & !request$3; granted$1 = request$1 & !request$2 & !request$3 & !request$0; end
+          3'd2: begin granted$3 = request$3; granted$0 = request$0 & !request$3; granted$1 = request$1 & !request$3 & !request$0; granted$2 = request$2 & !request$3 & !request$0 & !request$1; end
+          3'd3: begin granted$0 = request$0; granted$1 = request$1 & !request$0; granted$2 = request$2 & !request$0 & !request$1; granted$3 = request$3 & !request$0 & !request$1 & !request$2; end
+          default: begin granted$0 = 1'b0; granted$1 = 1'b0; granted$2 = 1'b0; granted$3 = 1'b0; end
        endcase
     end
     always @(posedge clock) begin

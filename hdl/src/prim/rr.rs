@@ -10,8 +10,9 @@
 //! | `request$i` | in | 1 each | requester `i` wants a turn |
 //! | `found` | out | 1 | some requester is asking (the OR of the requests) |
 //! | `pick` | out | `B` | the requester granted: the first asking one after the last granted, in the order `last + 1, last + 2, …, last + N` (mod `N`); 0 while none asks |
+//! | `granted$i` | out | 1 each | requester `i` is granted (`found` and `pick = i`), each formed from the requests and `last` directly, not by decoding `pick` |
 //!
-//! `found` and `pick` are combinational in the requests and one register, `last` (the last
+//! `found`, `pick` and `granted` are combinational in the requests and one register, `last` (the last
 //! requester granted, 0 at power-up). At every rising edge with `found` high the grant is taken:
 //! `last` becomes `pick`. So a requester that keeps asking is granted within `N` clocks, and
 //! with every requester asking the grants go `1, 2, …, N − 1, 0, 1, …`.
@@ -58,6 +59,7 @@ pub struct RoundRobin<const N: usize, const B: usize> {
     pub request: [Signal<In, bool>; N],
     pub found: Signal<Out, bool>,
     pub pick: Signal<Out, Bits<B>>,
+    pub granted: [Signal<Out, bool>; N],
     _rr: model::RoundRobin,
 }
 
@@ -69,6 +71,7 @@ impl<const N: usize, const B: usize> Default for RoundRobin<N, B> {
             request: std::array::from_fn(|_| Default::default()),
             found: Default::default(),
             pick: Default::default(),
+            granted: std::array::from_fn(|_| Default::default()),
             _rr: model::RoundRobin::default(),
         }
     }
@@ -83,11 +86,17 @@ impl<const N: usize, const B: usize> Logic for RoundRobin<N, B> {
         let pick = self._rr.pick(&requests);
         self.found.next = pick.is_some();
         self.pick.next = Bits::from(pick.unwrap_or(0) as u64);
+        for (i, g) in self.granted.iter_mut().enumerate() {
+            g.next = pick == Some(i);
+        }
     }
 
     fn connect(&mut self) {
         self.found.connect();
         self.pick.connect();
+        for g in &mut self.granted {
+            g.connect();
+        }
     }
 
     fn hdl(&self) -> Verilog {
@@ -107,6 +116,22 @@ impl<const N: usize, const B: usize> Logic for RoundRobin<N, B> {
             v += &format!("      {B}'d{last}: begin {} end\n", chain.join(" else "));
         }
         v += "      default: pick = 0;\n   endcase\nend\n";
+        // Each grant from the requests and `last` (a requester is granted when it asks and no
+        // requester before it in `last`'s order does), not by decoding `pick`.
+        v += "always @(*) begin\n   case (last)\n";
+        for last in 0..N {
+            let order: Vec<usize> = (1..=N).map(|k| (last + k) % N).collect();
+            let mut terms = vec![];
+            for (k, &i) in order.iter().enumerate() {
+                let before: Vec<String> = order[..k].iter().map(|&j| format!(" & !{}", request(j))).collect();
+                terms.push(format!("granted${i} = {}{};", request(i), before.concat()));
+            }
+            v += &format!("      {B}'d{last}: begin {} end\n", terms.join(" "));
+        }
+        v += &format!(
+            "      default: begin {} end\n   endcase\nend\n",
+            (0..N).map(|i| format!("granted${i} = 1'b0;")).collect::<Vec<_>>().join(" ")
+        );
         v += "always @(posedge clock) begin\n   if (found) last <= pick;\nend\n";
         Verilog::Custom(v)
     }
@@ -114,7 +139,10 @@ impl<const N: usize, const B: usize> Logic for RoundRobin<N, B> {
     fn timing(&self) -> Vec<TimingInfo> {
         let inputs: Vec<String> = (0..N).map(|i| format!("request${i}")).collect();
         let inputs: Vec<&str> = inputs.iter().map(String::as_str).collect();
-        super::clocked("round_robin", &inputs, &["found", "pick"])
+        let mut outputs = vec!["found".to_string(), "pick".to_string()];
+        outputs.extend((0..N).map(|i| format!("granted${i}")));
+        let outputs: Vec<&str> = outputs.iter().map(String::as_str).collect();
+        super::clocked("round_robin", &inputs, &outputs)
     }
 }
 
