@@ -531,6 +531,9 @@ pub struct PatchCache {
     issue: Signal<Local, bool>,
     table_full: Signal<Local, bool>,
     ret_push: Signal<Local, bool>,
+    /// The return queue holds [`MISSES`] answers: from the count's next value, so that the
+    /// return lanes' write enables are a register (`!ret_full`), not the host's `mem_valid`.
+    ret_full: DFF<bool>,
     waiting_any: Signal<Local, bool>,
     tv0_next: Signal<Local, bool>,
     tv1_next: Signal<Local, bool>,
@@ -709,6 +712,7 @@ impl Default for PatchCache {
             issue: Default::default(),
             table_full: Default::default(),
             ret_push: Default::default(),
+            ret_full: Default::default(),
             waiting_any: Default::default(),
             tv0_next: Default::default(),
             tv1_next: Default::default(),
@@ -793,7 +797,7 @@ impl Logic for PatchCache {
             key2, line2, v3, id3, line3, match3, lconf3, iconf3, ax3, ay3, bx3, by3, t_id0, t_id1, t_id2,
             t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1, t_v2, t_v3, t_any, t_n, t_full, t_wp,
             t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2, ml3, mlf, mls3,
-            mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r
+            mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r, ret_full
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();
@@ -1109,10 +1113,16 @@ impl Logic for PatchCache {
         self.ret_ay.write_address.next = self.ret.tail_address.val();
         self.ret_bx.write_address.next = self.ret.tail_address.val();
         self.ret_by.write_address.next = self.ret.tail_address.val();
-        self.ret_ax.write_enable.next = self.ret_push.val();
-        self.ret_ay.write_enable.next = self.ret_push.val();
-        self.ret_bx.write_enable.next = self.ret_push.val();
-        self.ret_by.write_enable.next = self.ret_push.val();
+        // The return lanes are written at the tail in every clock the queue is not full, an
+        // answer pushed or not: the tail's slot holds no answer then (a push writes it again),
+        // so their write enables are a register; a slot written without a push is read only
+        // as the entry after a head that leaves at the same edge, when no answer is left.
+        self.ret_full.d.next = ((self.ret.count.val() == self.misses3.val()) & !self.fill.val())
+            | ((self.ret.count.val() == self.almost3.val()) & self.ret_push.val() & !self.fill.val());
+        self.ret_ax.write_enable.next = !self.ret_full.q.val();
+        self.ret_ay.write_enable.next = !self.ret_full.q.val();
+        self.ret_bx.write_enable.next = !self.ret_full.q.val();
+        self.ret_by.write_enable.next = !self.ret_full.q.val();
         self.ret_ax.head_address.next = self.ret.head_address.val();
         self.ret_ay.head_address.next = self.ret.head_address.val();
         self.ret_bx.head_address.next = self.ret.head_address.val();
