@@ -797,7 +797,8 @@ impl Logic for PatchCache {
             key2, line2, v3, id3, line3, match3, lconf3, iconf3, ax3, ay3, bx3, by3, t_id0, t_id1, t_id2,
             t_id3, t_line0, t_line1, t_line2, t_line3, t_v0, t_v1, t_v2, t_v3, t_any, t_n, t_full, t_wp,
             t_rp, f_id1, f_line1, f_v1, mi0, mi1, mi2, mi3, mif, mis3, mis2, ml0, ml1, ml2, ml3, mlf, mls3,
-            mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r, ret_full
+            mls2, fl_on, fl_line, mreq, maddr, rv, rax, ray, rbx, rby, hit_count, miss_count, hit_r,
+            ret_full
         );
         self.q_lane.clock.next = self.clock.val();
         self.tag.clock.next = self.clock.val();

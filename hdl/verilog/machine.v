@@ -2129,16 +2129,9 @@ module machine$arbiter$rr(clock,request$0,request$1,found,pick,granted$0,granted
        found = request$0 | request$1;
        pick = 3'd0;
        case (last)
-          3'd0: begin if (request$1) pick = 3'd1; else if (request$0) pick = 3'd0; end
-          3'd1: begin if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; end
-          default: pick = 0;
-       endcase
-    end
-    always @(*) begin
-       case (last)
-          3'd0: begin granted$1 = request$1; granted$0 = request$0 & !request$1; end
-          3'd1: begin granted$0 = request$0; granted$1 = request$1 & !request$0; end
-          default: begin granted$0 = 1'b0; granted$1 = 1'b0; end
+          3'd0: begin if (request$1) pick = 3'd1; else if (request$0) pick = 3'd0; granted$1 = request$1; granted$0 = request$0 & !request$1; end
+          3'd1: begin if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; granted$0 = request$0; granted$1 = request$1 & !request$0; end
+          default: begin pick = 0; granted$0 = 1'b0; granted$1 = 1'b0; end
        endcase
     end
     always @(posedge clock) begin
@@ -3894,6 +3887,9 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  ret_full$d;
+    wire  ret_full$q;
+    reg  ret_full$clock;
     
     // Local signals
     reg  push;
@@ -4451,6 +4447,11 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         .write_data(lane_by$write_data),
         .write_enable(lane_by$write_enable)
     );
+    machine$pes$0$cache$ret_full ret_full(
+        .d(ret_full$d),
+        .q(ret_full$q),
+        .clock(ret_full$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -4524,6 +4525,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         hit_count$clock = clock;
         miss_count$clock = clock;
         hit_r$clock = clock;
+        ret_full$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
@@ -4594,6 +4596,7 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         hit_count$d = hit_count$q;
         miss_count$d = miss_count$q;
         hit_r$d = hit_r$q;
+        ret_full$d = ret_full$q;
         q_lane$clock = clock;
         tag$clock = clock;
         lane_ax$clock = clock;
@@ -4837,10 +4840,11 @@ module machine$pes$0$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         ret_ay$write_address = ret$tail_address;
         ret_bx$write_address = ret$tail_address;
         ret_by$write_address = ret$tail_address;
-        ret_ax$write_enable = ret_push;
-        ret_ay$write_enable = ret_push;
-        ret_bx$write_enable = ret_push;
-        ret_by$write_enable = ret_push;
+        ret_full$d = ((ret$count == misses3) & ~fill) | ((ret$count == almost3) & ret_push & ~fill);
+        ret_ax$write_enable = ~ret_full$q;
+        ret_ay$write_enable = ~ret_full$q;
+        ret_bx$write_enable = ~ret_full$q;
+        ret_by$write_enable = ~ret_full$q;
         ret_ax$head_address = ret$head_address;
         ret_ay$head_address = ret$head_address;
         ret_bx$head_address = ret$head_address;
@@ -7075,6 +7079,25 @@ module machine$pes$0$cache$ret_by(clock,write_address,write_data,write_enable,he
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$pes$0$cache$ret_by
+
+
+module machine$pes$0$cache$ret_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$0$cache$ret_full
 
 
 module machine$pes$0$cache$rv(d,q,clock);
@@ -11423,9 +11446,7 @@ module machine$pes$0$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
-    localparam  depth6 = 6'b100000;
     localparam  depth_m1_6 = 6'b11111;
-    localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
     localparam  zero32 = 32'h0;
@@ -21592,6 +21613,9 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
     reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  ret_full$d;
+    wire  ret_full$q;
+    reg  ret_full$clock;
     
     // Local signals
     reg  push;
@@ -22149,6 +22173,11 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         .write_data(lane_by$write_data),
         .write_enable(lane_by$write_enable)
     );
+    machine$pes$1$cache$ret_full ret_full(
+        .d(ret_full$d),
+        .q(ret_full$q),
+        .clock(ret_full$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -22222,6 +22251,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         hit_count$clock = clock;
         miss_count$clock = clock;
         hit_r$clock = clock;
+        ret_full$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
@@ -22292,6 +22322,7 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         hit_count$d = hit_count$q;
         miss_count$d = miss_count$q;
         hit_r$d = hit_r$q;
+        ret_full$d = ret_full$q;
         q_lane$clock = clock;
         tag$clock = clock;
         lane_ax$clock = clock;
@@ -22535,10 +22566,11 @@ module machine$pes$1$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,res
         ret_ay$write_address = ret$tail_address;
         ret_bx$write_address = ret$tail_address;
         ret_by$write_address = ret$tail_address;
-        ret_ax$write_enable = ret_push;
-        ret_ay$write_enable = ret_push;
-        ret_bx$write_enable = ret_push;
-        ret_by$write_enable = ret_push;
+        ret_full$d = ((ret$count == misses3) & ~fill) | ((ret$count == almost3) & ret_push & ~fill);
+        ret_ax$write_enable = ~ret_full$q;
+        ret_ay$write_enable = ~ret_full$q;
+        ret_bx$write_enable = ~ret_full$q;
+        ret_by$write_enable = ~ret_full$q;
         ret_ax$head_address = ret$head_address;
         ret_ay$head_address = ret$head_address;
         ret_bx$head_address = ret$head_address;
@@ -24773,6 +24805,25 @@ module machine$pes$1$cache$ret_by(clock,write_address,write_data,write_enable,he
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // machine$pes$1$cache$ret_by
+
+
+module machine$pes$1$cache$ret_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // machine$pes$1$cache$ret_full
 
 
 module machine$pes$1$cache$rv(d,q,clock);
@@ -29121,9 +29172,7 @@ module machine$pes$1$screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,
     
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
-    localparam  depth6 = 6'b100000;
     localparam  depth_m1_6 = 6'b11111;
-    localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
     localparam  zero32 = 32'h0;

@@ -2331,20 +2331,11 @@ module memory_arbiter$rr(clock,request$0,request$1,request$2,request$3,found,pic
        found = request$0 | request$1 | request$2 | request$3;
        pick = 3'd0;
        case (last)
-          3'd0: begin if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; end
-          3'd1: begin if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; end
-          3'd2: begin if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; end
-          3'd3: begin if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; end
-          default: pick = 0;
-       endcase
-    end
-    always @(*) begin
-       case (last)
-          3'd0: begin granted$1 = request$1; granted$2 = request$2 & !request$1; granted$3 = request$3 & !request$1 & !request$2; granted$0 = request$0 & !request$1 & !request$2 & !request$3; end
-          3'd1: begin granted$2 = request$2; granted$3 = request$3 & !request$2; granted$0 = request$0 & !request$2 & !request$3; granted$1 = request$1 & !request$2 & !request$3 & !request$0; end
-          3'd2: begin granted$3 = request$3; granted$0 = request$0 & !request$3; granted$1 = request$1 & !request$3 & !request$0; granted$2 = request$2 & !request$3 & !request$0 & !request$1; end
-          3'd3: begin granted$0 = request$0; granted$1 = request$1 & !request$0; granted$2 = request$2 & !request$0 & !request$1; granted$3 = request$3 & !request$0 & !request$1 & !request$2; end
-          default: begin granted$0 = 1'b0; granted$1 = 1'b0; granted$2 = 1'b0; granted$3 = 1'b0; end
+          3'd0: begin if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; granted$1 = request$1; granted$2 = request$2 & !request$1; granted$3 = request$3 & !request$1 & !request$2; granted$0 = request$0 & !request$1 & !request$2 & !request$3; end
+          3'd1: begin if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; granted$2 = request$2; granted$3 = request$3 & !request$2; granted$0 = request$0 & !request$2 & !request$3; granted$1 = request$1 & !request$2 & !request$3 & !request$0; end
+          3'd2: begin if (request$3) pick = 3'd3; else if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; granted$3 = request$3; granted$0 = request$0 & !request$3; granted$1 = request$1 & !request$3 & !request$0; granted$2 = request$2 & !request$3 & !request$0 & !request$1; end
+          3'd3: begin if (request$0) pick = 3'd0; else if (request$1) pick = 3'd1; else if (request$2) pick = 3'd2; else if (request$3) pick = 3'd3; granted$0 = request$0; granted$1 = request$1 & !request$0; granted$2 = request$2 & !request$0 & !request$1; granted$3 = request$3 & !request$0 & !request$1 & !request$2; end
+          default: begin pick = 0; granted$0 = 1'b0; granted$1 = 1'b0; granted$2 = 1'b0; granted$3 = 1'b0; end
        endcase
     end
     always @(posedge clock) begin

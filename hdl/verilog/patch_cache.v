@@ -379,6 +379,9 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
     reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  ret_full$d;
+    wire  ret_full$q;
+    reg  ret_full$clock;
     
     // Local signals
     reg  push;
@@ -936,6 +939,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         .write_data(lane_by$write_data),
         .write_enable(lane_by$write_enable)
     );
+    patch_cache$ret_full ret_full(
+        .d(ret_full$d),
+        .q(ret_full$q),
+        .clock(ret_full$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -1009,6 +1017,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         hit_count$clock = clock;
         miss_count$clock = clock;
         hit_r$clock = clock;
+        ret_full$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
@@ -1079,6 +1088,7 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         hit_count$d = hit_count$q;
         miss_count$d = miss_count$q;
         hit_r$d = hit_r$q;
+        ret_full$d = ret_full$q;
         q_lane$clock = clock;
         tag$clock = clock;
         lane_ax$clock = clock;
@@ -1322,10 +1332,11 @@ module patch_cache(clock,cfg_enable,cfg_mask,flush,flushing,req,addr,resp_valid,
         ret_ay$write_address = ret$tail_address;
         ret_bx$write_address = ret$tail_address;
         ret_by$write_address = ret$tail_address;
-        ret_ax$write_enable = ret_push;
-        ret_ay$write_enable = ret_push;
-        ret_bx$write_enable = ret_push;
-        ret_by$write_enable = ret_push;
+        ret_full$d = ((ret$count == misses3) & ~fill) | ((ret$count == almost3) & ret_push & ~fill);
+        ret_ax$write_enable = ~ret_full$q;
+        ret_ay$write_enable = ~ret_full$q;
+        ret_bx$write_enable = ~ret_full$q;
+        ret_by$write_enable = ~ret_full$q;
         ret_ax$head_address = ret$head_address;
         ret_ay$head_address = ret$head_address;
         ret_bx$head_address = ret$head_address;
@@ -3560,6 +3571,25 @@ module patch_cache$ret_by(clock,write_address,write_data,write_enable,head_addre
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // patch_cache$ret_by
+
+
+module patch_cache$ret_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // patch_cache$ret_full
 
 
 module patch_cache$rv(d,q,clock);

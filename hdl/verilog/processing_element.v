@@ -1596,6 +1596,9 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
     reg  [9:0] lane_by$write_address;
     reg  [16:0] lane_by$write_data;
     reg  lane_by$write_enable;
+    reg  ret_full$d;
+    wire  ret_full$q;
+    reg  ret_full$clock;
     
     // Local signals
     reg  push;
@@ -2153,6 +2156,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         .write_data(lane_by$write_data),
         .write_enable(lane_by$write_enable)
     );
+    processing_element$cache$ret_full ret_full(
+        .d(ret_full$d),
+        .q(ret_full$q),
+        .clock(ret_full$clock)
+    );
     
     // Update code
     always @(*) begin
@@ -2226,6 +2234,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         hit_count$clock = clock;
         miss_count$clock = clock;
         hit_r$clock = clock;
+        ret_full$clock = clock;
         wr_ptr$d = wr_ptr$q;
         rd_ptr$d = rd_ptr$q;
         sp$d = sp$q;
@@ -2296,6 +2305,7 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         hit_count$d = hit_count$q;
         miss_count$d = miss_count$q;
         hit_r$d = hit_r$q;
+        ret_full$d = ret_full$q;
         q_lane$clock = clock;
         tag$clock = clock;
         lane_ax$clock = clock;
@@ -2539,10 +2549,11 @@ module processing_element$cache(clock,cfg_enable,cfg_mask,flush,flushing,req,add
         ret_ay$write_address = ret$tail_address;
         ret_bx$write_address = ret$tail_address;
         ret_by$write_address = ret$tail_address;
-        ret_ax$write_enable = ret_push;
-        ret_ay$write_enable = ret_push;
-        ret_bx$write_enable = ret_push;
-        ret_by$write_enable = ret_push;
+        ret_full$d = ((ret$count == misses3) & ~fill) | ((ret$count == almost3) & ret_push & ~fill);
+        ret_ax$write_enable = ~ret_full$q;
+        ret_ay$write_enable = ~ret_full$q;
+        ret_bx$write_enable = ~ret_full$q;
+        ret_by$write_enable = ~ret_full$q;
         ret_ax$head_address = ret$head_address;
         ret_ay$head_address = ret$head_address;
         ret_bx$head_address = ret$head_address;
@@ -4777,6 +4788,25 @@ module processing_element$cache$ret_by(clock,write_address,write_data,write_enab
     end
     always @(*) read_data = popped ? next_r : head_r;
 endmodule // processing_element$cache$ret_by
+
+
+module processing_element$cache$ret_full(d,q,clock);
+    
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+    
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+    
+    always @(posedge clock) begin
+       q <= d;
+    end
+          
+endmodule // processing_element$cache$ret_full
 
 
 module processing_element$cache$rv(d,q,clock);
@@ -9125,9 +9155,7 @@ module processing_element$screener(clock,origin_x,origin_y,normal_x,normal_y,fir
     
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
-    localparam  depth6 = 6'b100000;
     localparam  depth_m1_6 = 6'b11111;
-    localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
     localparam  zero32 = 32'h0;

@@ -43,9 +43,7 @@ module screener(clock,origin_x,origin_y,normal_x,normal_y,first_x,first_y,last_x
     
     // Constant declarations
     localparam  pass_flag = 7'b1000000;
-    localparam  depth6 = 6'b100000;
     localparam  depth_m1_6 = 6'b11111;
-    localparam  zero6 = 6'b0;
     localparam  one6 = 6'b1;
     localparam  one5 = 5'b1;
     localparam  zero32 = 32'h0;

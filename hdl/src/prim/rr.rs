@@ -102,34 +102,30 @@ impl<const N: usize, const B: usize> Logic for RoundRobin<N, B> {
     fn hdl(&self) -> Verilog {
         let request = |i: usize| format!("request${i}");
         let mut v = format!("reg [{hi}:0] last;\ninitial last = {B}'d0;\n", hi = B - 1);
+        // One case on `last`: its order, highest priority first, gives `pick` (an if-else
+        // chain) and each grant from the requests directly (a requester is granted when it asks
+        // and no requester before it in the order does), not by decoding `pick`.
         v += "always @(*) begin\n";
         v += &format!(
             "   found = {};\n   pick = {B}'d0;\n   case (last)\n",
             (0..N).map(request).collect::<Vec<_>>().join(" | ")
         );
         for last in 0..N {
-            // The order after `last`, highest priority first: an if-else chain.
-            let chain: Vec<String> = (1..=N)
-                .map(|k| (last + k) % N)
-                .map(|i| format!("if ({}) pick = {B}'d{i};", request(i)))
-                .collect();
-            v += &format!("      {B}'d{last}: begin {} end\n", chain.join(" else "));
-        }
-        v += "      default: pick = 0;\n   endcase\nend\n";
-        // Each grant from the requests and `last` (a requester is granted when it asks and no
-        // requester before it in `last`'s order does), not by decoding `pick`.
-        v += "always @(*) begin\n   case (last)\n";
-        for last in 0..N {
             let order: Vec<usize> = (1..=N).map(|k| (last + k) % N).collect();
-            let mut terms = vec![];
-            for (k, &i) in order.iter().enumerate() {
-                let before: Vec<String> = order[..k].iter().map(|&j| format!(" & !{}", request(j))).collect();
-                terms.push(format!("granted${i} = {}{};", request(i), before.concat()));
-            }
-            v += &format!("      {B}'d{last}: begin {} end\n", terms.join(" "));
+            let chain: Vec<String> =
+                order.iter().map(|&i| format!("if ({}) pick = {B}'d{i};", request(i))).collect();
+            let grants: Vec<String> = order
+                .iter()
+                .enumerate()
+                .map(|(k, &i)| {
+                    let before: String = order[..k].iter().map(|&j| format!(" & !{}", request(j))).collect();
+                    format!("granted${i} = {}{before};", request(i))
+                })
+                .collect();
+            v += &format!("      {B}'d{last}: begin {} {} end\n", chain.join(" else "), grants.join(" "));
         }
         v += &format!(
-            "      default: begin {} end\n   endcase\nend\n",
+            "      default: begin pick = 0; {} end\n   endcase\nend\n",
             (0..N).map(|i| format!("granted${i} = 1'b0;")).collect::<Vec<_>>().join(" ")
         );
         v += "always @(posedge clock) begin\n   if (found) last <= pick;\nend\n";
