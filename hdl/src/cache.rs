@@ -135,7 +135,9 @@
 //! The simulation tests (`testbench/tests/cache.rs`) check the model's claims above on random
 //! streams: every response's data, order and cycle, the hit/miss sequence and the host
 //! requests, for 1 to 1024 lines, disabled and across mask changes (the flush: the processing
-//! element's tests, `testbench/tests/pe.rs`). `cache.sby` proves on the exported Verilog, for
+//! element's tests, `testbench/tests/pe.rs`), and with hosts of varying latency
+//! ([`model::schedule_with_host`]) whose answers fill the return queue, four of them held behind
+//! hits while the host is idle. `cache.sby` proves on the exported Verilog, for
 //! every input sequence (k-induction; `hdl/FORMAL.md`), that every request is answered exactly
 //! once, in request order, with the host memory's patch of its id (no answer lost, duplicated,
 //! reordered or carrying another patch), given a client within [`QUEUE_DEPTH`] and a host that
@@ -287,6 +289,18 @@ pub mod model {
     ///   hit or its patch is at the head of the return queue; a miss then fills its line and
     ///   leaves the table.
     pub fn schedule(requests: &[Request], tc: u64) -> Vec<RequestTiming> {
+        schedule_with_host(requests, |r, last| r.max(last) + tc)
+    }
+
+    /// [`schedule`] with any host that answers its requests in order, one per cycle at most:
+    /// `host(r, e)` is the cycle in which the host answers (presents `mem_valid` for) its next
+    /// request, made in cycle `r`, when it answered the one before in cycle `e` (0 before the
+    /// first); it must be later than both. [`schedule`] is the host memory's
+    /// `host(r, e) = max(r, e) + tc`.
+    pub fn schedule_with_host(
+        requests: &[Request],
+        mut host_answer: impl FnMut(u64, u64) -> u64,
+    ) -> Vec<RequestTiming> {
         use std::collections::VecDeque;
         let n = requests.len();
         let mut out: Vec<RequestTiming> =
@@ -307,7 +321,10 @@ pub mod model {
         let start = requests.first().map_or(0, |r| r.cycle);
         let mut t = start;
         while answered < n {
-            assert!(t - start <= (n as u64 + 1) * (tc + 64) + 1024, "the cache model stalled at cycle {t}");
+            assert!(
+                t <= start.max(last_answer) + (n as u64 + 1) * 64 + 1024,
+                "the cache model stalled at cycle {t}"
+            );
             // Requests written into the queue before this cycle's edge.
             let written = requests.iter().take_while(|r| r.cycle < t).count();
             // S3.
@@ -350,7 +367,9 @@ pub mod model {
                     table.push_back(requests[k].id);
                     let r = t + 1;
                     out[k].host_request = Some(r);
-                    last_answer = r.max(last_answer) + tc;
+                    let e = host_answer(r, last_answer);
+                    assert!(e > r && e > last_answer, "the host answers in order, after the request");
+                    last_answer = e;
                     host.push_back(last_answer);
                 }
             }

@@ -6,8 +6,9 @@
 //! the hit/miss sequence, the host requests and every response's cycle against the model
 //! (`model::Cache`, `model::schedule`). Then: hits one per clock, isolated misses, corner cases
 //! (ids 0 and 0xFFFF, conflicting ids, mask changes and disabled runs over the same contents),
-//! the real patch loader through the cache, and the rung-4 replay of a recorded run under
-//! Icarus Verilog.
+//! the return queue full (a pipelined host whose answers to four misses wait behind hits; and
+//! random streams against a bursty host), the real patch loader through the cache, and the
+//! rung-4 replays of recorded runs under Icarus Verilog.
 //!
 //! `cargo test --release -p shelling-testbench --test cache`
 
@@ -18,7 +19,7 @@ use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rust_hdl::prelude::*;
 use shelling_hdl::cache::model::{self, mask_for, Cache};
-use shelling_hdl::cache::{PatchCache, CACHE_BITS, LINES, QUEUE_DEPTH};
+use shelling_hdl::cache::{PatchCache, CACHE_BITS, LINES, MISSES, QUEUE_DEPTH};
 use shelling_hdl::loader::{self, PatchLoader};
 use shelling_testbench::memory::answer_cycles;
 use shelling_testbench::{Driver, Error, HostMemory, Monitor, Pacing, Result, Scoreboard, Simulator, Source};
@@ -75,20 +76,77 @@ struct Outcome {
     responses: Vec<u64>,
     /// The cycle of each host request.
     host_requests: Vec<u64>,
+    /// The cycle of each host answer (`mem_valid`).
+    host_answers: Vec<u64>,
     /// The RTL's lookups in order: `true` for a hit (from the counters).
     lookups: Vec<bool>,
     /// The model's hit/miss sequence.
     model_hits: Vec<bool>,
     max_outstanding: usize,
     max_queued: usize,
+    /// The most host answers held in the return queue at once (enabled only): the host's
+    /// answers presented before a cycle less the misses answered (`resp_valid`) up to it.
+    max_returned: usize,
+    /// Cycles with [`MISSES`] answers held (the return queue full), and the longest run of them.
+    full_cycles: u64,
+    full_streak: u64,
     /// Rising edges from the first cycle of the run to the last response, inclusive.
     cycles: u64,
+}
+
+/// When the host answers its requests (always in order, exactly once each).
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum HostTiming {
+    /// [`HostMemory`]: one load at a time, `T_c` cycles each.
+    Serial,
+    /// Any number of loads at once, each with its own latency: a run's host request `k`, made
+    /// in cycle `r`, is answered in cycle `max(r + latencies[k % len], e + 1)`, `e` the cycle
+    /// of the answer before it (so at most one answer a clock, and the answers behind a slow
+    /// one come back to back). While `mem_valid` is low, `mem_*` carry random words.
+    Pipelined(Vec<u64>),
+}
+
+impl HostTiming {
+    /// The cycle of the answer to a run's host request `k`, made in cycle `r`, the answer
+    /// before it in cycle `e`.
+    fn answer(&self, tc: u64, k: usize, r: u64, e: u64) -> u64 {
+        match self {
+            HostTiming::Serial => r.max(e) + tc,
+            HostTiming::Pipelined(lat) => (r + lat[k % lat.len()]).max(e + 1),
+        }
+    }
+
+    /// The longest a request waits for its answer, not counting the ones before it.
+    fn latency(&self, tc: u64) -> u64 {
+        match self {
+            HostTiming::Serial => tc,
+            HostTiming::Pipelined(lat) => lat.iter().copied().max().unwrap_or(1),
+        }
+    }
+}
+
+impl std::fmt::Display for HostTiming {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            HostTiming::Serial => f.write_str("serial host"),
+            HostTiming::Pipelined(lat) => write!(f, "pipelined host, latencies {lat:?}"),
+        }
+    }
 }
 
 /// The cache under test, its host memory, and the model state, kept across runs.
 struct Bench {
     drv: Driver<PatchCache>,
     mem: HostMemory,
+    /// The host's timing; with [`HostTiming::Pipelined`], `mem` serves only the data.
+    timing: HostTiming,
+    /// The pipelined host: requests not answered yet (data, answer cycle), oldest first; the
+    /// run's host requests so far; the cycle of the last answer; the words on `mem_*` while
+    /// `mem_valid` is low.
+    pending: VecDeque<([i32; 4], u64)>,
+    seen: usize,
+    last_answer: u64,
+    noise: ChaCha8Rng,
     /// The host's response to present in the coming cycle.
     presented: Option<[i32; 4]>,
     model: Cache,
@@ -107,11 +165,68 @@ impl Bench {
         Ok(Self {
             drv,
             mem: HostMemory::new(patches, tc)?,
+            timing: HostTiming::Serial,
+            pending: VecDeque::new(),
+            seen: 0,
+            last_answer: 0,
+            noise: ChaCha8Rng::seed_from_u64(0),
             presented: None,
             model: Cache::new(0),
             hits: 0,
             misses: 0,
         })
+    }
+
+    /// A fresh block with a memory of `patches` answering as `timing` ([`HostTiming::Pipelined`]:
+    /// its idle words on `mem_*` drawn from `seed`).
+    fn with_host(patches: Vec<[i32; 4]>, timing: HostTiming, seed: u64) -> Result<Self> {
+        Self::with_host_and_driver(new_driver()?, patches, timing, seed)
+    }
+
+    fn with_host_and_driver(
+        drv: Driver<PatchCache>,
+        patches: Vec<[i32; 4]>,
+        timing: HostTiming,
+        seed: u64,
+    ) -> Result<Self> {
+        let mut bench = Self::with_driver(drv, patches, 1)?;
+        bench.noise = ChaCha8Rng::seed_from_u64(seed ^ 0x0ff_11fe);
+        bench.set_host(timing);
+        Ok(bench)
+    }
+
+    /// The host's timing from the next run on (between runs: no request outstanding).
+    fn set_host(&mut self, timing: HostTiming) {
+        assert!(self.pending.is_empty() && self.mem.pending() == 0, "the host is busy");
+        self.timing = timing;
+    }
+
+    /// The host in one cycle (see [`HostMemory::cycle`]): `request` seen in `cycle`; returns
+    /// the answer to present in the next cycle.
+    fn host_cycle(&mut self, cycle: u64, request: Option<u16>) -> Result<Option<[i32; 4]>> {
+        if self.timing == HostTiming::Serial {
+            return self.mem.cycle(request);
+        }
+        if let Some(id) = request {
+            let data = self.mem.patch(id).ok_or_else(|| format!("host: id {id} beyond memory"))?;
+            let e = self.timing.answer(1, self.seen, cycle, self.last_answer);
+            self.seen += 1;
+            self.last_answer = e;
+            self.pending.push_back((data, e));
+        }
+        if self.pending.front().is_some_and(|&(_, e)| e == cycle + 1) {
+            return Ok(self.pending.pop_front().map(|(data, _)| data));
+        }
+        Ok(None)
+    }
+
+    /// The words on `mem_*` while `mem_valid` is low: zeros from the serial host, random words
+    /// from the pipelined one.
+    fn idle_words(&mut self) -> [i32; 4] {
+        match self.timing {
+            HostTiming::Serial => [0; 4],
+            HostTiming::Pipelined(_) => [0; 4].map(|_: i32| self.noise.random_range(0..1 << 17)),
+        }
     }
 
     /// Streams `ids` through the cache configured as `cfg` from a loader-like client: it offers
@@ -123,7 +238,10 @@ impl Bench {
     /// the exact response and host-request cycles, the counters, and that nothing more comes.
     fn run(&mut self, cfg: Config, ids: &[u16], pacing: Pacing, seed: u64, limit: usize) -> Result<Outcome> {
         let tc = u64::from(self.mem.tc());
-        let context = format!("seed {seed:#x}, {cfg}, {pacing}, tc = {tc}");
+        let context = match self.timing {
+            HostTiming::Serial => format!("seed {seed:#x}, {cfg}, {pacing}, tc = {tc}"),
+            ref host => format!("seed {seed:#x}, {cfg}, {pacing}, {host}"),
+        };
         self.run_inner(cfg, ids, pacing, seed, limit).map_err(|e| e.context(context))
     }
 
@@ -137,6 +255,8 @@ impl Bench {
     ) -> Result<Outcome> {
         assert!(limit <= OUTSTANDING);
         let tc = u64::from(self.mem.tc());
+        let latency = self.timing.latency(tc);
+        self.seen = 0;
         let mut out = Outcome::default();
         let expected_host: Vec<u16> = if cfg.enable() {
             self.model.set_mask(cfg.mask());
@@ -164,11 +284,15 @@ impl Bench {
         let mut outstanding = 0usize;
         let (enable, mask) = (cfg.enable(), cfg.mask());
         let start = self.drv.cycles();
-        let limit_cycles = start + (tc + 8) * ids.len() as u64 + 1000;
+        let limit_cycles = start + (latency + 8) * ids.len() as u64 + 1000;
         let (mut hits, mut misses) = self.counters();
+        // Host answers presented before this cycle, and misses answered: the return queue holds
+        // the difference (enabled).
+        let (mut returned, mut filled, mut streak) = (0usize, 0usize, 0u64);
         while out.responses.len() < ids.len() {
             let cycle = self.drv.cycles();
             let answer = self.presented.take();
+            let idle = self.idle_words();
             let offer = src.present(outstanding < limit).copied();
             mon.ready();
             self.drv.drive(|u| {
@@ -177,12 +301,15 @@ impl Bench {
                 u.req.next = offer.is_some();
                 u.addr.next = b(offer.unwrap_or(0).into());
                 u.mem_valid.next = answer.is_some();
-                let d = answer.unwrap_or_default().map(|c| c as u64);
+                let d = answer.unwrap_or(idle).map(|c| c as u64);
                 u.mem_ax.next = b(d[0]);
                 u.mem_ay.next = b(d[1]);
                 u.mem_bx.next = b(d[2]);
                 u.mem_by.next = b(d[3]);
             })?;
+            if answer.is_some() {
+                out.host_answers.push(cycle);
+            }
             let u = self.drv.uut();
             // The client: drain one held response (received in an earlier cycle), then issue.
             if mon.observe(cycle, !held.is_empty(), || ()) {
@@ -205,9 +332,11 @@ impl Bench {
                 host_board.check(cycle, id)?;
                 out.host_requests.push(cycle);
             }
-            self.presented = self.mem.cycle(request)?;
             // The response.
             if u.resp_valid.val() {
+                if enable && !out.model_hits.get(out.responses.len()).copied().unwrap_or(true) {
+                    filled += 1;
+                }
                 let d = [u.resp_ax.val(), u.resp_ay.val(), u.resp_bx.val(), u.resp_by.val()]
                     .map(|c| c.to_u32() as i32);
                 if out.responses.len() == out.arrivals.len() {
@@ -217,6 +346,25 @@ impl Bench {
                 out.responses.push(cycle);
                 held.push_back(());
             }
+            // The return queue: a host answer enters at the edge of its cycle, a miss leaves at
+            // the edge before its response. Full: every miss of the table has its answer.
+            if enable {
+                let held = returned.checked_sub(filled).ok_or_else(|| {
+                    Error::new(format!("cycle {cycle}: {filled} misses answered, {returned} host answers"))
+                })?;
+                out.max_returned = out.max_returned.max(held);
+                if held > MISSES || (held == MISSES && self.drv.uut().waiting() != MISSES) {
+                    return Err(Error::new(format!(
+                        "cycle {cycle}: {held} host answers held, {} misses waiting",
+                        self.drv.uut().waiting()
+                    )));
+                }
+                streak = if held == MISSES { streak + 1 } else { 0 };
+                out.full_cycles += u64::from(held == MISSES);
+                out.full_streak = out.full_streak.max(streak);
+                returned += usize::from(answer.is_some());
+            }
+            self.presented = self.host_cycle(cycle, request)?;
             self.drv.tick()?;
             let (h, m) = self.counters();
             match (h.wrapping_sub(hits), m.wrapping_sub(misses)) {
@@ -238,7 +386,7 @@ impl Bench {
         board.finish()?;
         out.cycles = self.drv.cycles() - start;
         // Nothing more: no response, no host request, no lookup; the host is idle.
-        for _ in 0..tc + 8 {
+        for _ in 0..latency + 8 {
             let cycle = self.drv.cycles();
             let answer = self.presented.take();
             self.drv.drive(|u| {
@@ -254,7 +402,7 @@ impl Bench {
             {
                 return Err(Error::new(format!("cycle {cycle}: activity after the last response")));
             }
-            self.presented = self.mem.cycle(None)?;
+            self.presented = self.host_cycle(cycle, None)?;
             self.drv.tick()?;
         }
         host_board.finish()?;
@@ -286,7 +434,11 @@ impl Bench {
                 .zip(&out.model_hits)
                 .map(|((&cycle, &id), &hit)| model::Request { cycle, id, hit })
                 .collect();
-            let timing = model::schedule(&reqs, tc);
+            let mut k = 0;
+            let timing = model::schedule_with_host(&reqs, |r, e| {
+                k += 1;
+                self.timing.answer(tc, k - 1, r, e)
+            });
             let responses: Vec<u64> = timing.iter().map(|t| t.response).collect();
             let host: Vec<u64> = timing.iter().filter_map(|t| t.host_request).collect();
             check_cycles("response", &out.responses, &responses)?;
@@ -296,7 +448,17 @@ impl Bench {
                 return Err(Error::new("the counters moved while the cache was disabled"));
             }
             check_cycles("host request", &out.host_requests, &out.arrivals)?;
-            check_cycles("response", &out.responses, &answer_cycles(&out.arrivals, tc))?;
+            let mut e = 0;
+            let answers: Vec<u64> = out
+                .arrivals
+                .iter()
+                .enumerate()
+                .map(|(k, &r)| {
+                    e = self.timing.answer(tc, k, r, e);
+                    e
+                })
+                .collect();
+            check_cycles("response", &out.responses, &answers)?;
         }
         Ok(out)
     }
@@ -456,6 +618,159 @@ fn misses_under_misses_keep_the_host_busy() -> Result<()> {
             "tc = {tc}: one at a time"
         );
     }
+    Ok(())
+}
+
+/// The host's latencies for the rounds of [`full_return_queue_rounds`], one per host request
+/// of a round (`z`, `a`, `b`, `c`, `d`): `z` late, the others in different patterns of
+/// `mem_valid` behind it (back to back, with gaps, `d` sooner or later).
+const FULL_QUEUE_ROUNDS: [[u64; 5]; 5] =
+    [[20, 1, 1, 1, 1], [20, 1, 12, 1, 3], [20, 11, 1, 12, 2], [20, 10, 11, 12, 1], [30, 1, 1, 1, 2]];
+
+/// The return queue full (see [`four_host_answers_wait_in_a_full_return_queue_behind_hits`]):
+/// warms lines 0 … 10 with ids 0 … 10, then one run per entry of `rounds` (the pipelined
+/// host's latencies): a new miss `z`, the eleven hits, four new misses `a`, `b`, `c`, `d`, back
+/// to back (sixteen requests, the client's limit). Checks that all four answers were held for
+/// at least four clocks in a row; returns the outcomes.
+fn full_return_queue_rounds(bench: &mut Bench, seed: u64, rounds: &[[u64; 5]]) -> Result<Vec<Outcome>> {
+    let cfg = Config::Lines(LINES);
+    let hits: Vec<u16> = (0..11).collect();
+    bench.set_host(HostTiming::Pipelined(vec![1]));
+    bench.run(cfg, &hits, Pacing::NONE, seed, OUTSTANDING)?;
+    let mut outs = vec![];
+    for (round, lat) in rounds.iter().enumerate() {
+        // New ids on lines 256 + 8 · round + 0 … 4, away from the hits' lines.
+        let new = |j: usize| 0x4100 + (8 * round + j) as u16;
+        let ids: Vec<u16> = [new(0)].into_iter().chain(hits.iter().copied()).chain((1..5).map(new)).collect();
+        assert_eq!(ids.len(), OUTSTANDING);
+        bench.set_host(HostTiming::Pipelined(lat.to_vec()));
+        let out = bench.run(cfg, &ids, Pacing::NONE, seed + 1 + round as u64, OUTSTANDING)?;
+        println!(
+            "latencies {lat:?}: host requests in {:?}, answers in {:?}, responses in {:?}, return queue \
+             full {} cycles ({} in a row)",
+            out.host_requests, out.host_answers, out.responses, out.full_cycles, out.full_streak
+        );
+        let mut hit_miss = vec![false];
+        hit_miss.extend([true; 11]);
+        hit_miss.extend([false; 4]);
+        assert_eq!(out.model_hits, hit_miss, "latencies {lat:?}");
+        assert_eq!(out.max_returned, MISSES, "latencies {lat:?}: the return queue was never full");
+        assert!(
+            out.full_streak >= 4,
+            "latencies {lat:?}: the return queue full for {} clocks",
+            out.full_streak
+        );
+        outs.push(out);
+    }
+    Ok(outs)
+}
+
+/// The return queue full, and every answer right. The cache has no `ready` on its response
+/// side: the return queue (the host's answers, [`MISSES`] entries) is drained only by the
+/// answer stage, which answers the answer queue in request order, one entry a clock, taking a
+/// miss's patch from the return queue's head when that miss is the answer queue's head. So the
+/// queue holds answers while the answer stage works through older entries: here eleven hits
+/// behind a slow miss `z`, then misses `a`, `b`, `c` (the miss table full with `z`) and `d`
+/// (rewound until `z`'s fill). The pipelined host answers `z` late, `a`, `b` and `c` right
+/// behind it in five patterns of `mem_valid`, and `d` once it is requested after `z`'s fill:
+/// the four answers are all held (the queue full: `waiting()` = [`MISSES`] too) for four
+/// clocks or more while the hits are answered, with `mem_valid` low and random words on
+/// `mem_*`; then released, `a` … `d` answered back to back. Every response's data in order
+/// (the memory's patch of its id) and cycle (`model::schedule_with_host`), the host requests
+/// and the hit/miss sequence are checked. The return lanes written in every clock, the queue
+/// full or not, overwrite the head's answer with the idle words: this test fails then.
+#[test]
+fn four_host_answers_wait_in_a_full_return_queue_behind_hits() -> Result<()> {
+    let seed = 0xcac4_f011;
+    let mut bench = Bench::with_host(random_patches(seed, 1 << 16), HostTiming::Pipelined(vec![1]), seed)?;
+    let outs = full_return_queue_rounds(&mut bench, seed, &FULL_QUEUE_ROUNDS)?;
+    // The host's answers in different patterns: the cycles of `a`, `b`, `c`, `d` after `z`'s.
+    let mut patterns: Vec<Vec<u64>> = outs
+        .iter()
+        .map(|out| out.host_answers[1..].iter().map(|e| e - out.host_answers[0]).collect())
+        .collect();
+    println!("answers of a, b, c, d after z's: {patterns:?}");
+    patterns.sort();
+    patterns.dedup();
+    assert_eq!(patterns.len(), FULL_QUEUE_ROUNDS.len(), "the rounds' host patterns differ");
+    Ok(())
+}
+
+/// Ids in clusters that can fill the return queue: a cold id (a random id `≡ 12 mod 16`,
+/// hardly ever cached, never on a hot id's line), a run of 4 … 12 hot ids (0 … 11, on lines
+/// 0 … 11 of any cache of 16 lines or more), then 2 … 5 cold ids; between the clusters, hot and
+/// cold ids at random.
+fn clustered_ids(len: usize, seed: u64) -> Vec<u16> {
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xc105_7e75);
+    let cold = |rng: &mut ChaCha8Rng| rng.random_range(0x0100..=0xFFFF_u16) & !0xF | 0xC;
+    let mut ids = vec![];
+    while ids.len() < len {
+        if rng.random_bool(0.6) {
+            ids.push(cold(&mut rng));
+            for _ in 0..rng.random_range(4..=12) {
+                ids.push(rng.random_range(0..12));
+            }
+            for _ in 0..rng.random_range(2..=5) {
+                ids.push(cold(&mut rng));
+            }
+        } else {
+            for _ in 0..rng.random_range(1..8) {
+                ids.push(if rng.random_bool(0.7) { rng.random_range(0..12) } else { cold(&mut rng) });
+            }
+        }
+    }
+    ids.truncate(len);
+    ids
+}
+
+/// Random streams against a pipelined host whose latencies are mostly short and now and then
+/// long, so that the answers behind a slow one come in bursts: clustered ids
+/// ([`clustered_ids`], which fill the return queue now and then) and ids with locality, 850
+/// requests each, four configurations, four pacings. Every response's data, order and cycle,
+/// the hit/miss sequence and the host requests against the memory and the model
+/// (`model::schedule_with_host`); the return queue full in some cycles of every clustered run
+/// of the enabled cache.
+#[test]
+fn a_bursty_host_fills_the_return_queue_in_random_streams() -> Result<()> {
+    let configs = [Config::Disabled, Config::Lines(16), Config::Lines(256), Config::Lines(LINES)];
+    let (mut full, mut max_streak) = (0u64, 0u64);
+    for (c, cfg) in configs.into_iter().enumerate() {
+        let seed0 = 0xcac4_b000 + 0x10 * c as u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed0);
+        let lat: Vec<u64> = (0..61)
+            .map(|_| if rng.random_bool(0.3) { rng.random_range(12..40) } else { rng.random_range(1..4) })
+            .collect();
+        let mut bench = Bench::with_host(random_patches(seed0, 1 << 16), HostTiming::Pipelined(lat), seed0)?;
+        for clustered in [true, false] {
+            for (k, pacing) in Pacing::ALL.into_iter().enumerate() {
+                let seed = seed0 + 4 * u64::from(clustered) + k as u64;
+                let ids = if clustered { clustered_ids(850, seed) } else { local_ids(850, seed) };
+                let out = bench.run(cfg, &ids, pacing, seed, OUTSTANDING)?;
+                println!(
+                    "{cfg}, {}, {pacing}: {} cycles, {} hits, return queue at most {}, full {} cycles \
+                     ({} in a row)",
+                    if clustered { "clustered" } else { "locality" },
+                    out.cycles,
+                    out.model_hits.iter().filter(|&&h| h).count(),
+                    out.max_returned,
+                    out.full_cycles,
+                    out.full_streak
+                );
+                if clustered && cfg.enable() {
+                    assert!(
+                        out.full_cycles > 0,
+                        "seed {seed:#x}, {cfg}, {pacing}: the return queue never full"
+                    );
+                }
+                full += out.full_cycles;
+                max_streak = max_streak.max(out.full_streak);
+            }
+        }
+    }
+    assert!(
+        full >= 100 && max_streak >= 5,
+        "the return queue full {full} cycles, at most {max_streak} in a row"
+    );
     Ok(())
 }
 
@@ -716,6 +1031,26 @@ fn recorded_run_replays_bit_exactly_under_icarus() -> Result<()> {
     assert_eq!(report.cycles, rec.cycles());
     // Ten outputs (resp_valid, 4 coordinates, mem_req, mem_addr, hits, misses, flushing), compared before
     // and after every rising edge.
+    assert_eq!(report.checks, 2 * 10 * rec.cycles());
+    Ok(())
+}
+
+/// Rung 4 for the full return queue: the warm-up and the rounds of
+/// [`four_host_answers_wait_in_a_full_return_queue_behind_hits`] (the pipelined host, random
+/// words on `mem_*` while `mem_valid` is low) replayed under Icarus Verilog, bit-exactly.
+#[test]
+fn a_full_return_queue_replays_bit_exactly_under_icarus() -> Result<()> {
+    let seed = 0xcac4_f1f1;
+    let mut drv = new_driver()?;
+    drv.record_ports()?;
+    let patches = random_patches(seed, 1 << 16);
+    let mut bench = Bench::with_host_and_driver(drv, patches, HostTiming::Pipelined(vec![1]), seed)?;
+    full_return_queue_rounds(&mut bench, seed, &FULL_QUEUE_ROUNDS)?;
+    let rec = bench.drv.take_recording().ok_or("recording was on")?;
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("replay").join("cache_full_return");
+    let report = rec.replay(bench.drv.uut(), &dir, Simulator::Icarus)?;
+    println!("{report}");
+    assert_eq!(report.cycles, rec.cycles());
     assert_eq!(report.checks, 2 * 10 * rec.cycles());
     Ok(())
 }
