@@ -115,17 +115,19 @@
 //! # Resources
 //!
 //! Yosys `synth_ecp5` and nextpnr-ecp5 of the whole PE (with a 1024-line cache, in the FPGA
-//! flow's register wrapper, wrapper excluded): 10783 LUT4s, 7834 flip-flops, 16 `MULT18X18D`,
+//! flow's register wrapper, wrapper excluded): 10906 LUT4s, 7835 flip-flops, 16 `MULT18X18D`,
 //! 17 `DP16KD` (the cache's five, the unit's twelve), 452 LUT RAMs at placement seed 1; on
-//! LFE5U-85F-6 a median of 150.4 MHz over placement seeds 1–5 (127.8–157.5; 152.8, 151.1–155.3,
+//! LFE5U-85F-6 a median of 150.4 MHz over placement seeds 1–5 (146.6–162.7; 127.8–157.5 before
+//! the cache's return lanes were written whenever its return queue has room; 152.8, 151.1–155.3,
 //! before the sector registers' clock enables were registers and the tag kinds a lane of their
 //! own, which the machine of six PEs needed and which cost the PE alone 2.4 MHz at the median;
 //! 153.3, 140.8–157.3, before the bank counters counted a job a clock late and the screener's
 //! and the unit's cuts of the same day; 149.4, 140.2–154.0, with the origin through a bank
 //! multiplexer and `W` negated after the divider; 71.8 at seed 1 before the 150 MHz work). Its
-//! critical paths: a ray-memory word into the merge's compares (seeds 2–4), the cache's
-//! `t_any` into its return lane's write (1, placed across the die: the one seed under 145) and
-//! the command's sector into the stall register (5) (`hdl/fpga/ecp5.md`, checked against the
+//! critical paths: a ray-memory word into the merge's compares (seed 1), the screener's outside
+//! compare into its near flag (2), its output FIFO's `head_valid` into its credit count (3),
+//! the tag FIFO's read pointer into the kinds' head register (4) and the screener's dividend
+//! into the divider (5) (`hdl/fpga/ecp5.md`, checked against the
 //! committed Verilog by `tests/hardware.rs`;
 //! PERFORMANCE.md).
 //!
