@@ -53,17 +53,16 @@
 //! # Resources
 //!
 //! N times the PE's (17 `DP16KD` each), plus the arbiter and the port registers. On the
-//! LFE5U-85F-6 four PEs take 44,462 LUT4s (53 %), 32,065 FFs, 68 of 208 `DP16KD`s and 64
-//! `MULT18X18D`s and route at 149.6 MHz, the median of placement seeds 1 to 3 (147.5–152.1;
+//! LFE5U-85F-6 four PEs take 44,313 LUT4s (53 %), 32,069 FFs, 68 of 208 `DP16KD`s and 64
+//! `MULT18X18D`s and route at 150.9 MHz, the median of placement seeds 1 to 3 (150.8–155.0;
 //! `hdl/fpga/ecp5-machine.md`, `cargo xtask fpga --blocks machine_4`), with each PE's block RAMs
 //! and multipliers pinned to its own quadrant of the die by the flow's floorplan and each PE's
-//! inputs in its own stretch of the register wrapper's chain. Every seed's critical path is
-//! inside one PE's screener (a divider step, the dividend's shift into the divider, the
-//! exponent's normaliser). Six PEs, the most whose LUTs fit, take 65,808 LUT4s (79 %), 48,056
-//! FFs, 102 `DP16KD`s and 96 `MULT18X18D`s and route at 145.2 MHz, the median of seeds 1 to 3
-//! (142.1–149.8), floorplanned in a 3 × 2 grid of regions; the critical paths: the arbiter's
-//! round-robin (its last grant into a queue's `asks`, seed 1), a screener's dividend into its
-//! divider (2) and a cache's tag compare (3).
+//! inputs in its own stretch of the register wrapper's chain. The critical paths: a screener's
+//! dividend shift into its divider (seed 1), a divider step (2), a PE's stall register (3).
+//! Six PEs, the most whose LUTs fit, take 66,452 LUT4s (79 %), 48,054 FFs, 102 `DP16KD`s and
+//! 96 `MULT18X18D`s and route at 143.7 MHz, the median of seeds 1 to 3 (139.2–149.5),
+//! floorplanned in a 3 × 2 grid of regions; the critical paths: a divider step in a screener
+//! (seeds 1 and 2) and a cache's answer register into the loader's FIFO, placed far apart (3).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
