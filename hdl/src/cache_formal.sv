@@ -146,6 +146,7 @@ module cache_formal (
     // The return queue, likewise.
     wire [2:0]  r_words;
     wire [1:0]  r_tail, r_rd, r_inc_x;
+    wire        r_full;
     wire        r_hv;
     wire [16:0] rm_ax [0:3], rm_ay [0:3], rm_bx [0:3], rm_by [0:3];
     wire [16:0] rd_ax, rd_ay, rd_bx, rd_by;
@@ -184,7 +185,7 @@ module cache_formal (
         .ans_ax_read_data(ad_ax), .ans_ay_read_data(ad_ay), .ans_bx_read_data(ad_bx),
         .ans_by_read_data(ad_by), .ans_meta_read_data(ad_meta),
         .ret_words_q(r_words), .ret_tail_ptr_q(r_tail), .ret_rd_ptr_q(r_rd),
-        .ret_rd_inc_x_q(r_inc_x), .ret_head_valid_q(r_hv),
+        .ret_rd_inc_x_q(r_inc_x), .ret_head_valid_q(r_hv), .ret_full_q(r_full),
         `MEM4(ret_ax, rm_ax), `MEM4(ret_ay, rm_ay), `MEM4(ret_bx, rm_bx), `MEM4(ret_by, rm_by),
         .ret_ax_read_data(rd_ax), .ret_ay_read_data(rd_ay), .ret_bx_read_data(rd_bx),
         .ret_by_read_data(rd_by),
@@ -431,10 +432,12 @@ module cache_formal (
         // i_r_*: the return queue and the host. The table's entries in order: answered by the
         // host (their patches in the return queue, head valid a cycle after the answer), at
         // the host (its outstanding requests' ids), and the one whose host request is being
-        // made (`mem_req`).
+        // made (`mem_req`). The full register, the lanes' write enable, is the queue full: the
+        // lanes are written at the tail in every other clock, outside the queue's words.
         i_r_n: assert({1'b0, r_words} + h_n + mem_req == {1'b0, t_n});
         i_r_ptr: assert(r_tail == r_rd + r_words[1:0] && r_inc_x == ((r_rd + 2'd1) ^ 2'd1)
-                        && {2'b0, f_mv} <= r_words && r_hv == (r_words != {2'b0, f_mv}));
+                        && {2'b0, f_mv} <= r_words && r_hv == (r_words != {2'b0, f_mv})
+                        && r_full == (r_words == 3'd4));
         if (r_hv) i_r_head: assert({rd_ax, rd_ay, rd_bx, rd_by} == rm[r_rd]);
         i_r_data: assert(&ok_r_data);
         if (r_hv && t_id[t_rp] == f_c) i_r_head_data: assert({rd_ax, rd_ay, rd_bx, rd_by} == f_d);
