@@ -43,6 +43,7 @@ pub mod cycles;
 pub mod d3;
 pub mod machine;
 mod plot;
+pub mod stalls;
 
 /// The techniques measured, in row order.
 pub const METHODS: [Method; 3] = [Method::Conventional, Method::Stochastic, Method::Deterministic];

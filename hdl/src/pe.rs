@@ -110,7 +110,9 @@
 //! clock through the loader, the screener, the slice and the queue, so in steady state the PE
 //! is bound by the slowest of the command stream (one command per clock: sectors, jobs and
 //! retires), the host memory (one patch per `T_c`) and the intersection unit (one ray per
-//! clock, tested or retired), the balance Section 4 of the paper is about.
+//! clock, tested or retired), the balance Section 4 of the paper is about. A testbench on
+//! rust-hdl's simulation reads which of them holds the command stream, or starves the unit, in
+//! each cycle from [`ProcessingElement::watch`] (`figures/stalls.md`).
 //!
 //! # Resources
 //!
@@ -461,6 +463,37 @@ impl Default for ProcessingElement {
             one1: Constant::new(1.into()),
             full: Constant::new((TAG_DEPTH as u64).into()),
             zero7: Constant::new(0.into()),
+        }
+    }
+}
+
+/// What holds the PE's command stream or starves its intersection unit in a cycle, as a testbench reads it from rust-hdl's
+/// simulation ([`ProcessingElement::watch`]; the compiled PE has its ports only).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Watch {
+    /// A sector command waits for its bank (`pend`): the sector before last still has jobs
+    /// before the screener's sector read.
+    pub sector_waits: bool,
+    /// The tag FIFO holds [`TAG_DEPTH`] commands.
+    pub tags_full: bool,
+    /// The loader holds [`crate::loader::DEPTH`] ids (its `id_ready` low).
+    pub loader_full: bool,
+    /// The loader has a patch the screener does not take (the screener's output is full).
+    pub screener_holds: bool,
+    /// The intersection unit would take a job (fewer than two rays of its present one are left
+    /// to issue) and the job queue has none.
+    pub unit_starved: bool,
+}
+
+impl ProcessingElement {
+    /// The [`Watch`] of the present cycle (the registers' values before the coming edge).
+    pub fn watch(&self) -> Watch {
+        Watch {
+            sector_waits: self.pend.q.val(),
+            tags_full: self.tags_full.q.val(),
+            loader_full: !self.loader.id_ready.val(),
+            screener_holds: self.loader.out_valid.val() & !self.screener.in_ready.val(),
+            unit_starved: self.unit.patch_ready.val() & !self.queue.out_valid.val(),
         }
     }
 }

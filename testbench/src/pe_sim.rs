@@ -20,7 +20,7 @@ use rust_hdl::prelude::*;
 use shelling_hdl::formats::Nearest;
 use shelling_hdl::formats::{from_bits, to_bits};
 use shelling_hdl::machine::Machine;
-use shelling_hdl::pe::ProcessingElement;
+use shelling_hdl::pe::{ProcessingElement, Watch};
 
 /// A port's value as a Rust value: `bool`, an unsigned id or address, or a two's-complement
 /// coordinate (sign-extended from the port's width).
@@ -280,6 +280,58 @@ impl PeSim for Driver<ProcessingElement> {
 
     fn cycles(&self) -> u64 {
         Driver::cycles(self)
+    }
+}
+
+/// A cycle of a [`Watched`] PE: the command handshake and the PE's [`Watch`], before the edge.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WatchSample {
+    /// The host offers a command (`cmd_valid`).
+    pub offered: bool,
+    /// The PE takes one (`cmd_ready`).
+    pub ready: bool,
+    pub watch: Watch,
+}
+
+/// The PE on rust-hdl's simulator with every cycle's [`WatchSample`] recorded, from the first
+/// cycle it is driven on (`samples[c]` is the cycle before edge `c + 1`): why the command
+/// stream waits, which the ports alone do not tell.
+pub struct Watched {
+    pub pe: Driver<ProcessingElement>,
+    pub samples: Vec<WatchSample>,
+    offered: bool,
+}
+
+impl Watched {
+    /// A PE fresh from power-up, nothing recorded.
+    pub fn new() -> Result<Self> {
+        Ok(Watched { pe: Driver::new(ProcessingElement::default())?, samples: Vec::new(), offered: false })
+    }
+}
+
+impl PeSim for Watched {
+    fn drive(&mut self, set: impl FnOnce(&mut PeInputs)) -> Result<()> {
+        let mut offered = false;
+        let r = PeSim::drive(&mut self.pe, |i| {
+            set(i);
+            offered = i.cmd_valid;
+        });
+        self.offered = offered;
+        r
+    }
+
+    fn tick(&mut self) -> Result<()> {
+        let u = self.pe.uut();
+        self.samples.push(WatchSample { offered: self.offered, ready: u.cmd_ready.val(), watch: u.watch() });
+        PeSim::tick(&mut self.pe)
+    }
+
+    fn outputs(&self) -> PeOutputs {
+        PeSim::outputs(&self.pe)
+    }
+
+    fn cycles(&self) -> u64 {
+        PeSim::cycles(&self.pe)
     }
 }
 

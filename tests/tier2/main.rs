@@ -12,4 +12,5 @@ mod hardware;
 mod machine;
 mod radiosity;
 mod replay;
+mod stalls;
 mod tracers3d;
