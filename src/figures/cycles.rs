@@ -123,8 +123,13 @@ impl CycleTotals {
         self.tests += h.tests;
         self.live_runs += m.live_runs;
         self.sectors += m.sectors;
-        self.bound_cycles += (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests);
+        self.bound_cycles += bound_cycles(h, tc);
     }
+}
+
+/// A source's bound on a fresh PE: max(host loads·T_c, loads, tests).
+pub(super) fn bound_cycles(h: &PeCounters, tc: u32) -> u64 {
+    (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests)
 }
 
 /// One PE's run of all the sources of a row back to back ([`crate::machine::run`] with one PE):
