@@ -281,3 +281,44 @@ fn the_documents_hold_the_committed_tables() {
     holds_block("README.md", "headline", "figures/headline.md");
     holds_block("README.md", "headline3d", "figures/headline3d.md");
 }
+
+#[test]
+fn the_stall_split_of_a_tiny_sample_adds_up_and_matches_the_cycle_figures() {
+    // One source of 256 rays at L = 32, T_c 1, without and with the cache: every row's
+    // commands, held cycles and drain make its cycles, which are those `cycles.csv` reports for
+    // the same run (the same source, the same scheduler).
+    let opts = FigureOptions {
+        out: PathBuf::new(),
+        seeds: 1,
+        sources: 1,
+        rays: 256,
+        count: 1000,
+        lengths: vec![32.0],
+        ray_set: RaySet::Angle,
+        grid: GridParams::default(),
+        shells: ShellParams::default(),
+        progress: false,
+        cosim_sources: 1,
+        tcs: vec![1],
+        cache_lines: 1024,
+        engine: Engine::RustHdl,
+    };
+    let rows = shelling::figures::stalls::measure(&opts, 1).expect("the stall split");
+    assert_eq!(rows.len(), 2 * 2, "S and D, cache off and on");
+    let cycle_rows = cycles::measure(&opts).expect("the cycle figures");
+    for r in &rows {
+        let t = &r.total;
+        assert_eq!(r.sources, 1);
+        assert_eq!(t.commands + t.sector + t.tags + t.memory + t.downstream + t.after, t.cycles, "{r:?}");
+        assert!(t.cycles >= t.bound && t.bound > 0 && t.commands > 1, "{r:?}");
+        assert!(t.starved > 0 && t.starved < t.cycles, "{r:?}");
+        let c = cycle_rows
+            .iter()
+            .find(|c| c.method.name() == r.method && c.tc == r.tc && c.cache == r.cache)
+            .unwrap_or_else(|| panic!("no cycle row for {r:?}"));
+        assert_eq!(c.total.cycles, t.cycles, "{r:?}");
+        assert_eq!(c.total.bound_cycles, t.bound, "{r:?}");
+    }
+    let table = shelling::figures::stalls::markdown(&rows);
+    assert_eq!(table.lines().count(), 2 + rows.len());
+}
