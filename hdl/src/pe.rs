@@ -467,8 +467,9 @@ impl Default for ProcessingElement {
     }
 }
 
-/// What holds the PE's command stream or starves its intersection unit in a cycle, as a testbench reads it from rust-hdl's
-/// simulation ([`ProcessingElement::watch`]; the compiled PE has its ports only).
+/// What holds the PE's command stream or starves its intersection unit in a cycle, as a
+/// testbench reads it from rust-hdl's simulation ([`ProcessingElement::watch`]; the compiled PE
+/// has its ports only).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Watch {
     /// A sector command waits for its bank (`pend`): the sector before last still has jobs
