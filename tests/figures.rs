@@ -18,11 +18,11 @@ fn temp_dir(tag: &str) -> PathBuf {
     std::env::temp_dir().join(format!("shelling-cycle-figures-{tag}-{}-{nanos}", std::process::id()))
 }
 
-#[test]
-fn cycle_figures_on_a_tiny_sample() {
-    let dir = temp_dir("tiny");
-    let opts = FigureOptions {
-        out: dir.clone(),
+/// One co-simulated source of 256 rays in a scene of 1000 segments of length 32, on rust-hdl's
+/// simulation, the load times `tcs`, without and with a 1024-line cache.
+fn tiny_sample(out: PathBuf, tcs: Vec<u32>) -> FigureOptions {
+    FigureOptions {
+        out,
         seeds: 1,
         sources: 1,
         rays: 256,
@@ -33,10 +33,16 @@ fn cycle_figures_on_a_tiny_sample() {
         shells: ShellParams::default(),
         progress: false,
         cosim_sources: 1,
-        tcs: vec![1, 16],
+        tcs,
         cache_lines: 1024,
         engine: Engine::RustHdl,
-    };
+    }
+}
+
+#[test]
+fn cycle_figures_on_a_tiny_sample() {
+    let dir = temp_dir("tiny");
+    let opts = tiny_sample(dir.clone(), vec![1, 16]);
     let report = figures::run(&opts).expect("figures with the co-simulation");
     // Each source on its own, then the length's sources back to back (one here).
     assert_eq!(report.cosim_runs, 2 * 3 * 2 * 2);
@@ -287,22 +293,7 @@ fn the_stall_split_of_a_tiny_sample_adds_up_and_matches_the_cycle_figures() {
     // One source of 256 rays at L = 32, T_c 1, without and with the cache: every row's
     // commands, held cycles and drain make its cycles, which are those `cycles.csv` reports for
     // the same run (the same source, the same scheduler).
-    let opts = FigureOptions {
-        out: PathBuf::new(),
-        seeds: 1,
-        sources: 1,
-        rays: 256,
-        count: 1000,
-        lengths: vec![32.0],
-        ray_set: RaySet::Angle,
-        grid: GridParams::default(),
-        shells: ShellParams::default(),
-        progress: false,
-        cosim_sources: 1,
-        tcs: vec![1],
-        cache_lines: 1024,
-        engine: Engine::RustHdl,
-    };
+    let opts = tiny_sample(PathBuf::new(), vec![1]);
     let rows = shelling::figures::stalls::measure(&opts, 1).expect("the stall split");
     assert_eq!(rows.len(), 2 * 2, "S and D, cache off and on");
     let cycle_rows = cycles::measure(&opts).expect("the cycle figures");
