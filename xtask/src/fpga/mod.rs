@@ -30,7 +30,7 @@ use report::{PathSummary, Report, Use};
 use serde::{Deserialize, Serialize};
 use shelling_hdl::arbiter::MAX_PES;
 use shelling_testbench::export::{machine_block_pes, machine_verilog};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 use std::fs::File;
 use std::io::Write as _;
@@ -89,6 +89,12 @@ pub struct FpgaArgs {
     /// Target clock frequency on ECP5, MHz (nextpnr --freq).
     #[arg(long, default_value_t = 150.0)]
     pub ecp5_mhz: f64,
+    /// Options appended to Yosys' `synth_ecp5` (e.g. `-dff`: ABC9 maps across the flip-flops),
+    /// space-separated, each a `-flag` or a plain word (no script separators): recorded in every
+    /// row (`synth`), so that `--resume` and `--merge` never mix two syntheses. What they did
+    /// to the clock rates is in PERFORMANCE.md.
+    #[arg(long, default_value = "", allow_hyphen_values = true)]
+    pub ecp5_synth_options: String,
     /// Target clock frequency on iCE40, MHz (nextpnr --freq).
     #[arg(long, default_value_t = 50.0)]
     pub ice40_mhz: f64,
@@ -164,6 +170,10 @@ pub struct Row {
     /// The cells pinned before placement (`floorplan::describe`); `null`: none.
     #[serde(default)]
     pub floorplan: Option<String>,
+    /// The Yosys synthesis command (`synth_ecp5 -dff`, ...); `null` in rows written before it
+    /// was recorded, which used the family's plain command.
+    #[serde(default)]
+    pub synth: Option<String>,
     pub tool_versions: BTreeMap<String, String>,
 }
 
@@ -172,7 +182,7 @@ pub struct Row {
 struct Target {
     family: Family,
     device: String,
-    synth: &'static str,
+    synth: String,
     /// Verilog defines for `read_verilog` (`-DSHELLING_ECP5` selects the hand-instantiated
     /// block RAMs of `shelling_hdl::prim::BramOut` and multipliers; `-DSHELLING_ICE40` the
     /// second memory copy of `shelling_hdl::prim::FifoRam`).
@@ -188,7 +198,10 @@ impl Target {
             (Family::Ecp5, _) => Target {
                 family,
                 device: format!("LFE5U-85F-{} CABGA381", args.ecp5_speed),
-                synth: "synth_ecp5",
+                synth: std::iter::once("synth_ecp5")
+                    .chain(synth_options(&args.ecp5_synth_options).unwrap_or_default())
+                    .collect::<Vec<_>>()
+                    .join(" "),
                 defines: "-DSHELLING_ECP5 ",
                 nextpnr_device: strings(&[
                     "--85k",
@@ -203,7 +216,7 @@ impl Target {
             (Family::Ice40, Ice40Device::Up5k) => Target {
                 family,
                 device: "iCE40UP5K SG48".into(),
-                synth: "synth_ice40 -dsp",
+                synth: "synth_ice40 -dsp".into(),
                 defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
                 mhz: args.ice40_mhz,
@@ -212,7 +225,7 @@ impl Target {
             (Family::Ice40, Ice40Device::Hx8k) => Target {
                 family,
                 device: "iCE40HX8K CT256".into(),
-                synth: "synth_ice40",
+                synth: "synth_ice40".into(),
                 defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
                 mhz: args.ice40_mhz,
@@ -236,8 +249,24 @@ struct Flow {
     floorplan: Floorplan,
 }
 
+/// The `--ecp5-synth-options` words, or what is wrong with one: each a `-flag` or a value of
+/// letters, digits and `_ . = + -`, so that nothing but options reaches Yosys' script.
+fn synth_options(text: &str) -> Result<Vec<&str>> {
+    let words: Vec<&str> = text.split_whitespace().collect();
+    for w in &words {
+        if !w.chars().all(|c| c.is_ascii_alphanumeric() || "_.=+-".contains(c)) {
+            bail!(
+                "--ecp5-synth-options {text:?}: `{w}` is not a synth_ecp5 option (letters, digits and _ . = + - only, \
+                 e.g. --ecp5-synth-options=-dff)"
+            );
+        }
+    }
+    Ok(words)
+}
+
 /// Runs `cargo xtask fpga`.
 pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
+    synth_options(&args.ecp5_synth_options)?;
     let repo = PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().map(Path::to_path_buf).unwrap_or_default();
     let known: Vec<&str> = shelling_testbench::export::blocks().into_iter().map(|(name, _)| name).collect();
     let blocks: Vec<String> = if args.blocks.is_empty() {
@@ -331,7 +360,7 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         if rows.is_empty() {
             bail!("--merge: no rows of the blocks and families asked for");
         }
-        if let Some(e) = mixed_floorplans(&rows) {
+        if let Some(e) = mixed_floorplans(&rows).or_else(|| mixed_syntheses(&rows)) {
             bail!("--merge: {e}");
         }
         let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
@@ -456,6 +485,7 @@ fn run_job(ctx: &Flow, block: &str, target: &Target) -> Vec<Row> {
         nextpnr_s: None,
         critical_path: None,
         floorplan: None,
+        synth: Some(target.synth.clone()),
         tool_versions: BTreeMap::from([
             ("yosys".to_string(), yosys.version.clone()),
             ("nextpnr".to_string(), nextpnr.version.clone()),
@@ -512,9 +542,10 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
     if ctx.resume
         && same(&source, &text)
         && same(wrapper_v, &wrap.verilog)
+        && same(SYNTH_COMMAND, &target.synth)
         && dir.join(NETLIST_JSON).is_file()
     {
-        eprintln!("{job}: resumed (its netlist is of this Verilog)");
+        eprintln!("{job}: resumed (its netlist is of this Verilog and `{}`)", target.synth);
         let cells = netlist::count(&dir.join(NETLIST_JSON), &wrap.top)?;
         row.wrapper_ffs = Some(cells.wrapper_ffs);
         row.ffs = Some(cells.ffs - cells.wrapper_ffs);
@@ -529,7 +560,11 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
     // The netlist is about to be made again: an older one must not be taken for it by a later
     // --resume if this synthesis fails (a stale report is removed by `place`, seed by seed).
     let _ = std::fs::remove_file(dir.join(NETLIST_JSON));
-    for (name, body) in [(source.as_str(), text.as_str()), (wrapper_v, wrap.verilog.as_str())] {
+    for (name, body) in [
+        (source.as_str(), text.as_str()),
+        (wrapper_v, wrap.verilog.as_str()),
+        (SYNTH_COMMAND, target.synth.as_str()),
+    ] {
         std::fs::write(dir.join(name), body)
             .with_context(|| format!("writing {}", dir.join(name).display()))?;
     }
@@ -553,6 +588,8 @@ fn synthesize(ctx: &Flow, block: &str, target: &Target, row: &mut Row) -> Result
 
 /// The netlist Yosys writes in a job's directory.
 const NETLIST_JSON: &str = "synth.json";
+/// In a job's directory, the synthesis command its netlist is of (for `--resume`).
+const SYNTH_COMMAND: &str = "synth-command.txt";
 /// Yosys' netlist with the floorplan's `BEL` attributes, beside it.
 const FLOORPLANNED_JSON: &str = "floorplanned.json";
 /// In a job's directory, the floorplan a seed's report was placed with (`none` or the description).
@@ -749,6 +786,36 @@ fn mixed_floorplans(rows: &[Row]) -> Option<String> {
     })
 }
 
+/// Two rows of one block and family synthesized with different commands, said (`rows` sorted
+/// as for [`mixed_floorplans`]). A row without the command is of the family's plain one.
+fn mixed_syntheses(rows: &[Row]) -> Option<String> {
+    // Rows written before the command was recorded used the plain one of their part.
+    let plain = |r: &Row| {
+        r.synth.clone().unwrap_or_else(|| {
+            match r.family {
+                Family::Ecp5 => "synth_ecp5",
+                Family::Ice40 if r.device.starts_with("iCE40UP5K") => "synth_ice40 -dsp",
+                Family::Ice40 => "synth_ice40",
+            }
+            .to_string()
+        })
+    };
+    rows.windows(2).find_map(|pair| {
+        let (a, b) = (&pair[0], &pair[1]);
+        ((&a.block, a.family) == (&b.block, b.family) && plain(a) != plain(b)).then(|| {
+            format!(
+                "{} on {} was synthesized with two commands (seeds {} and {}): `{}` / `{}`",
+                a.block,
+                a.family.name(),
+                a.seed,
+                b.seed,
+                plain(a),
+                plain(b)
+            )
+        })
+    })
+}
+
 /// One block on one family over the seeds: the spread of its post-route fmax, as
 /// `fpga-seeds.json` records it and `fpga.md` reports it.
 #[derive(Serialize, Debug, Clone)]
@@ -904,6 +971,16 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
         }
         let _ = writeln!(md);
     }
+    // The synthesis commands, when some block's is not its part's plain one (`--ecp5-synth-options`).
+    let commands: BTreeSet<(&str, &str)> =
+        rows.iter().filter_map(|r| Some((r.block.as_str(), r.synth.as_deref()?))).collect();
+    if commands.iter().any(|(_, c)| !["synth_ecp5", "synth_ice40", "synth_ice40 -dsp"].contains(c)) {
+        let _ = writeln!(md, "Synthesis (`--ecp5-synth-options`):\n");
+        for (block, command) in commands {
+            let _ = writeln!(md, "- {block}: `{command}`");
+        }
+        let _ = writeln!(md);
+    }
     let _ = writeln!(md, "Tools:\n");
     for t in ctx.tools.values() {
         let _ = writeln!(md, "- {}: {} ({})", t.kind.native(), t.version, t.found_as);
@@ -972,6 +1049,7 @@ mod tests {
             nextpnr_s: None,
             critical_path: None,
             floorplan: None,
+            synth: None,
             tool_versions: BTreeMap::new(),
         }
     }
@@ -1007,5 +1085,27 @@ mod tests {
             e.contains("a on ecp5") && e.contains("seeds 1 and 2") && e.contains("regions / none"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn seeds_of_one_block_synthesized_two_ways_are_not_merged() {
+        let synth = |seed: u64, command: &str| Row { synth: Some(command.into()), ..row("a", seed, None) };
+        // A row from before the command was recorded is of the plain command.
+        assert_eq!(mixed_syntheses(&[row("a", 1, None), synth(2, "synth_ecp5"), row("b", 1, None)]), None);
+        let e = mixed_syntheses(&[row("a", 1, None), synth(2, "synth_ecp5 -dff")]).expect("two syntheses");
+        assert!(e.contains("seeds 1 and 2") && e.contains("`synth_ecp5` / `synth_ecp5 -dff`"), "{e}");
+    }
+
+    #[test]
+    fn synth_options_are_options_only() {
+        assert_eq!(synth_options(" -dff  -nowidelut ").unwrap(), vec!["-dff", "-nowidelut"]);
+        assert!(synth_options("").unwrap().is_empty());
+        for bad in ["-dff; shell", "-run begin:end", "`x`", "-abc9|x", "$(x)"] {
+            let e = synth_options(bad).map(|_| ()).expect_err(bad).to_string();
+            assert!(
+                e.contains("--ecp5-synth-options") && e.contains("not a synth_ecp5 option"),
+                "{bad}: {e}"
+            );
+        }
     }
 }
