@@ -767,52 +767,39 @@ fn tool_run(dir: &Path, tool: &Tool, args: &[String], log: &Path) -> Result<Stat
     })
 }
 
-/// Two rows of one block and family placed with different floorplans, said (`rows` sorted by
-/// block, family and seed): their seeds are not one experiment's.
-fn mixed_floorplans(rows: &[Row]) -> Option<String> {
+/// Two rows of one block and family whose `key`s differ, said (`rows` sorted by block, family
+/// and seed): their seeds are not one experiment's. `what` names the two keys.
+fn mixed(rows: &[Row], what: &str, key: impl Fn(&Row) -> String) -> Option<String> {
     rows.windows(2).find_map(|pair| {
         let (a, b) = (&pair[0], &pair[1]);
-        ((&a.block, a.family) == (&b.block, b.family) && a.floorplan != b.floorplan).then(|| {
+        let (ka, kb) = (key(a), key(b));
+        ((&a.block, a.family) == (&b.block, b.family) && ka != kb).then(|| {
             format!(
-                "{} on {} was placed with two floorplans (seeds {} and {}): {} / {}",
+                "{} on {} was {what} (seeds {} and {}): {ka} / {kb}",
                 a.block,
                 a.family.name(),
                 a.seed,
-                b.seed,
-                a.floorplan.as_deref().unwrap_or("none"),
-                b.floorplan.as_deref().unwrap_or("none")
+                b.seed
             )
         })
     })
 }
 
-/// Two rows of one block and family synthesized with different commands, said (`rows` sorted
-/// as for [`mixed_floorplans`]). A row without the command is of the family's plain one.
+/// Two rows of one block and family placed with different floorplans, said.
+fn mixed_floorplans(rows: &[Row]) -> Option<String> {
+    mixed(rows, "placed with two floorplans", |r| r.floorplan.clone().unwrap_or_else(|| "none".into()))
+}
+
+/// Two rows of one block and family synthesized with different commands, said. A row without
+/// the command (written before it was recorded) is of its part's plain one.
 fn mixed_syntheses(rows: &[Row]) -> Option<String> {
-    // Rows written before the command was recorded used the plain one of their part.
-    let plain = |r: &Row| {
-        r.synth.clone().unwrap_or_else(|| {
-            match r.family {
-                Family::Ecp5 => "synth_ecp5",
-                Family::Ice40 if r.device.starts_with("iCE40UP5K") => "synth_ice40 -dsp",
-                Family::Ice40 => "synth_ice40",
-            }
-            .to_string()
-        })
-    };
-    rows.windows(2).find_map(|pair| {
-        let (a, b) = (&pair[0], &pair[1]);
-        ((&a.block, a.family) == (&b.block, b.family) && plain(a) != plain(b)).then(|| {
-            format!(
-                "{} on {} was synthesized with two commands (seeds {} and {}): `{}` / `{}`",
-                a.block,
-                a.family.name(),
-                a.seed,
-                b.seed,
-                plain(a),
-                plain(b)
-            )
-        })
+    mixed(rows, "synthesized with two commands", |r| {
+        let plain = match r.family {
+            Family::Ecp5 => "synth_ecp5",
+            Family::Ice40 if r.device.starts_with("iCE40UP5K") => "synth_ice40 -dsp",
+            Family::Ice40 => "synth_ice40",
+        };
+        format!("`{}`", r.synth.as_deref().unwrap_or(plain))
     })
 }
 
