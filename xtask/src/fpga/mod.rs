@@ -192,16 +192,31 @@ struct Target {
     tool: ToolKind,
 }
 
+/// The family's plain Yosys command on the part `device` names: what the flow runs without
+/// `--ecp5-synth-options`, and what every row written before `Row::synth` was recorded used.
+fn plain_synth(family: Family, device: &str) -> &'static str {
+    match family {
+        Family::Ecp5 => "synth_ecp5",
+        Family::Ice40 if device.starts_with("iCE40UP5K") => "synth_ice40 -dsp",
+        Family::Ice40 => "synth_ice40",
+    }
+}
+
+impl Row {
+    /// The Yosys command this row's netlist was synthesized with.
+    fn synth_command(&self) -> &str {
+        self.synth.as_deref().unwrap_or_else(|| plain_synth(self.family, &self.device))
+    }
+}
+
 impl Target {
-    fn new(family: Family, args: &FpgaArgs) -> Target {
-        match (family, args.ice40_device) {
+    /// The target of `family`, its ECP5 synthesis with the checked `ecp5_options` appended.
+    fn new(family: Family, args: &FpgaArgs, ecp5_options: &[&str]) -> Target {
+        let mut target = match (family, args.ice40_device) {
             (Family::Ecp5, _) => Target {
                 family,
                 device: format!("LFE5U-85F-{} CABGA381", args.ecp5_speed),
-                synth: std::iter::once("synth_ecp5")
-                    .chain(synth_options(&args.ecp5_synth_options).unwrap_or_default())
-                    .collect::<Vec<_>>()
-                    .join(" "),
+                synth: String::new(),
                 defines: "-DSHELLING_ECP5 ",
                 nextpnr_device: strings(&[
                     "--85k",
@@ -216,7 +231,7 @@ impl Target {
             (Family::Ice40, Ice40Device::Up5k) => Target {
                 family,
                 device: "iCE40UP5K SG48".into(),
-                synth: "synth_ice40 -dsp".into(),
+                synth: String::new(),
                 defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
                 mhz: args.ice40_mhz,
@@ -225,13 +240,19 @@ impl Target {
             (Family::Ice40, Ice40Device::Hx8k) => Target {
                 family,
                 device: "iCE40HX8K CT256".into(),
-                synth: "synth_ice40".into(),
+                synth: String::new(),
                 defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
             },
-        }
+        };
+        let options: &[&str] = if family == Family::Ecp5 { ecp5_options } else { &[] };
+        target.synth = std::iter::once(plain_synth(family, &target.device))
+            .chain(options.iter().copied())
+            .collect::<Vec<_>>()
+            .join(" ");
+        target
     }
 }
 
@@ -266,7 +287,7 @@ fn synth_options(text: &str) -> Result<Vec<&str>> {
 
 /// Runs `cargo xtask fpga`.
 pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
-    synth_options(&args.ecp5_synth_options)?;
+    let ecp5_options = synth_options(&args.ecp5_synth_options)?;
     let repo = PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().map(Path::to_path_buf).unwrap_or_default();
     let known: Vec<&str> = shelling_testbench::export::blocks().into_iter().map(|(name, _)| name).collect();
     let blocks: Vec<String> = if args.blocks.is_empty() {
@@ -288,7 +309,7 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     if families.is_empty() {
         bail!("no family given");
     }
-    let targets: Vec<Target> = families.iter().map(|&f| Target::new(f, args)).collect();
+    let targets: Vec<Target> = families.iter().map(|&f| Target::new(f, args, &ecp5_options)).collect();
 
     // The tools, before anything is written.
     let mut kinds = vec![ToolKind::Yosys];
@@ -793,14 +814,7 @@ fn mixed_floorplans(rows: &[Row]) -> Option<String> {
 /// Two rows of one block and family synthesized with different commands, said. A row without
 /// the command (written before it was recorded) is of its part's plain one.
 fn mixed_syntheses(rows: &[Row]) -> Option<String> {
-    mixed(rows, "synthesized with two commands", |r| {
-        let plain = match r.family {
-            Family::Ecp5 => "synth_ecp5",
-            Family::Ice40 if r.device.starts_with("iCE40UP5K") => "synth_ice40 -dsp",
-            Family::Ice40 => "synth_ice40",
-        };
-        format!("`{}`", r.synth.as_deref().unwrap_or(plain))
-    })
+    mixed(rows, "synthesized with two commands", |r| format!("`{}`", r.synth_command()))
 }
 
 /// One block on one family over the seeds: the spread of its post-route fmax, as
@@ -959,9 +973,9 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
         let _ = writeln!(md);
     }
     // The synthesis commands, when some block's is not its part's plain one (`--ecp5-synth-options`).
-    let commands: BTreeSet<(&str, &str)> =
-        rows.iter().filter_map(|r| Some((r.block.as_str(), r.synth.as_deref()?))).collect();
-    if commands.iter().any(|(_, c)| !["synth_ecp5", "synth_ice40", "synth_ice40 -dsp"].contains(c)) {
+    if rows.iter().any(|r| r.synth_command() != plain_synth(r.family, &r.device)) {
+        let commands: BTreeSet<(&str, &str)> =
+            rows.iter().map(|r| (r.block.as_str(), r.synth_command())).collect();
         let _ = writeln!(md, "Synthesis (`--ecp5-synth-options`):\n");
         for (block, command) in commands {
             let _ = writeln!(md, "- {block}: `{command}`");
