@@ -101,6 +101,17 @@ pub struct Cosim {
     pub hits: Vec<Option<Nearest>>,
     pub hardware: PeCounters,
     pub model: ModelCounts,
+    /// The cycles of an ideal in-order PE on the same commands, host memory and cache
+    /// ([`pe::inorder_cycles`]): zero latencies, an unbounded window; a lower bound on
+    /// `hardware.cycles`.
+    pub inorder_cycles: u64,
+}
+
+/// A source's bound on a fresh PE: max(host loads·T_c, loads, tests), the cycles the host
+/// memory, the loader (one patch a clock) or the intersection unit (one test a clock) need at
+/// the least.
+pub fn bound_cycles(h: &PeCounters, tc: u32) -> u64 {
+    (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests)
 }
 
 /// What keeps a co-simulation from running or passing.
@@ -303,8 +314,9 @@ fn sim_work<S: PeSim>(
     let map = memory_map(config.cache, patches.len())?;
     let (patches, cmds) = (map.memory(&patches), map.commands(&cmds));
     let (want, model) = pe::model(&setup, &patches, &cmds);
+    let inorder_cycles = pe::inorder_cycles(&setup, &patches, &cmds, config.tc as u64, map.cache());
     let mut memory = HostMemory::new(patches, config.tc).map_err(sim)?;
     let (hits, hardware) = pe::run(sim_pe, &mut memory, &setup, map.cache(), &cmds, progress).map_err(sim)?;
     check_against_model(&hits, &hardware, &want, &model)?;
-    Ok(Cosim { hits: patch_numbers(&map, hits), hardware, model })
+    Ok(Cosim { hits: patch_numbers(&map, hits), hardware, model, inorder_cycles })
 }

@@ -424,6 +424,7 @@ pub fn run(opts: &FigureOptions) -> Result<FigureReport> {
         write("cycles.csv", cycles::csv(&cycle_rows))?;
         write("cycles.md", cycles::markdown(&cycle_rows))?;
         write("cycles_queue.md", cycles::queue_markdown(&cycle_rows))?;
+        write("cycles_inorder.md", cycles::inorder_markdown(&cycle_rows))?;
         for (name, svg) in cycles::svgs(opts, &cycle_rows)? {
             write(name, svg)?;
         }

@@ -1098,6 +1098,8 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
             trace: TraceJson::new(&scheduled.trace, &bundle, Arith::Fixed),
             hardware: result.hardware,
             model: result.model,
+            bound_cycles: cosim::bound_cycles(&result.hardware, a.tc),
+            inorder_cycles: result.inorder_cycles,
             golden: GoldenJson { rays: rung2.rays, agree: rung2.agree, explained: rung2.rays - rung2.agree },
         };
         let mut out = Out::new();
@@ -1133,6 +1135,13 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
         h.passed,
         h.backward + h.back_facing + h.outside + h.near,
         h.tests
+    );
+    say!(
+        out,
+        "bound {} (max of host loads·T_c, loads, tests)  ideal in-order PE {}  cycles / bound {:.2}",
+        cosim::bound_cycles(h, a.tc),
+        result.inorder_cycles,
+        h.cycles as f64 / cosim::bound_cycles(h, a.tc).max(1) as f64
     );
     out.flush()
 }
@@ -1289,6 +1298,10 @@ struct CosimJson {
     trace: TraceJson,
     hardware: PeCounters,
     model: ModelCounts,
+    /// max(host loads·T_c, loads, tests) (`cosim::bound_cycles`).
+    bound_cycles: u64,
+    /// The ideal in-order PE's cycles (`Cosim::inorder_cycles`).
+    inorder_cycles: u64,
     golden: GoldenJson,
 }
 

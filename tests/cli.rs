@@ -636,6 +636,9 @@ fn cli_cosim_json_is_the_trace_json_plus_the_hardware() {
         }
         let loads = hw["patch_loads"].as_u64().unwrap();
         assert_eq!(Some(loads), doc["counters"]["patches_read_before_screening"].as_u64());
+        // The bound <= the ideal in-order PE <= the PE.
+        let (bound, ideal) = (doc["bound_cycles"].as_u64().unwrap(), doc["inorder_cycles"].as_u64().unwrap());
+        assert!(bound <= ideal && ideal <= hw["cycles"].as_u64().unwrap(), "{bound} {ideal} {hw:?}");
         let eff = hw["pipeline_efficiency"].as_f64().unwrap();
         assert!(eff > 0.0 && eff <= 1.0, "efficiency {eff}");
         if !cached {

@@ -145,6 +145,15 @@ fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
                     run.hardware.patch_loads, scheduled.trace.counters.patches_read_before_screening,
                     "{what}: loads"
                 );
+                // The bound of the figures <= the ideal in-order PE <= the PE.
+                let h = &run.hardware;
+                let bound = (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests);
+                assert!(
+                    bound <= run.inorder_cycles && run.inorder_cycles <= h.cycles,
+                    "{what}: bound {bound}, ideal in-order PE {}, PE {}",
+                    run.inorder_cycles,
+                    h.cycles
+                );
                 if cache.is_some_and(|n| n >= 256) && m != Method::Conventional {
                     assert!(run.hardware.cache_hits > 0, "{what}: the cache never hit: {:?}", run.hardware);
                 }

@@ -168,7 +168,7 @@ pub fn measure(opts: &FigureOptions, sources: usize) -> Result<Vec<StallRow>> {
             let run = run_sim(&mut pe, &s, &config, |_, _| {}).map_err(|e| anyhow!("{}: {e}", what()))?;
             let h = run.hardware;
             let mut b = Breakdown::of_run(&pe.samples, h.cycles).map_err(|e| anyhow!("{}: {e}", what()))?;
-            b.bound = super::cycles::bound_cycles(&h, tc);
+            b.bound = crate::cosim::bound_cycles(&h, tc);
             b.tests = h.tests;
             Ok(b)
         })

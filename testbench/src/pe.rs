@@ -11,11 +11,12 @@ use crate::memory::HostMemory;
 use crate::pe_sim::{PeInputs, PeOutputs, PeRays, PeSim};
 use crate::{impl_clocked, Error, Result};
 use shelling_hdl::cache::LINES;
-use shelling_hdl::formats::Nearest;
+use shelling_hdl::formats::{Nearest, PatchSetup};
 use shelling_hdl::intersection::model::{replaces, test};
 use shelling_hdl::intersection::RAY_BITS;
 use shelling_hdl::pe::ProcessingElement;
 use shelling_hdl::screener::model::{screen, BundleSetup, Patch, Verdict};
+use std::ops::Range;
 
 impl_clocked!(ProcessingElement);
 
@@ -120,6 +121,44 @@ impl ModelCounts {
     }
 }
 
+/// Walks `commands` as the bit-true model runs them: the sector's screener setup, each job's
+/// verdict under it and the live rays. `job` sees every job: its command index, patch id, the
+/// screener's setup of the patch if it passed, its ray range and the live bits (retired rays
+/// false) as they stand when the job runs. Returns the sectors and the rays retired.
+fn walk(
+    setup: &PeSetup,
+    patches: &[[i32; 4]],
+    commands: &[Command],
+    mut job: impl FnMut(usize, u16, Option<&PatchSetup>, Range<usize>, &[bool]),
+) -> (u64, u64) {
+    let n = setup.dirs.len();
+    let mut live = vec![true; n];
+    let (mut sectors, mut retires) = (0, 0);
+    let mut bundle = setup.bundle(setup.dirs[0], setup.dirs[n - 1]);
+    for (k, cmd) in commands.iter().enumerate() {
+        match *cmd {
+            Command::Sector { first, last } => {
+                sectors += 1;
+                bundle = setup.bundle(first, last);
+            }
+            Command::Job { id, first, count } => {
+                let m = patches[id as usize];
+                let verdict = screen(&bundle, &Patch { id, a: [m[0], m[1]], b: [m[2], m[3]] });
+                let passed = match &verdict {
+                    Verdict::Pass(p) => Some(p),
+                    _ => None,
+                };
+                job(k, id, passed, first as usize..first as usize + count as usize, &live);
+            }
+            Command::Retire { first, count } => {
+                retires += count as u64;
+                live[first as usize..first as usize + count as usize].fill(false);
+            }
+        }
+    }
+    (sectors, retires)
+}
+
 /// The bit-true model of a PE running `commands` for `setup` on a host memory holding
 /// `patches` (`[ax, ay, bx, by]`, Q11.6): every ray's nearest hit and the counts. Before the
 /// first sector command the sector is the whole bundle (first and last ray).
@@ -128,49 +167,66 @@ pub fn model(
     patches: &[[i32; 4]],
     commands: &[Command],
 ) -> (Vec<Option<Nearest>>, ModelCounts) {
-    let n = setup.dirs.len();
-    let mut best: Vec<Option<Nearest>> = vec![None; n];
-    let mut live = vec![true; n];
+    let mut best: Vec<Option<Nearest>> = vec![None; setup.dirs.len()];
     let mut c = ModelCounts::default();
-    let mut bundle = setup.bundle(setup.dirs[0], setup.dirs[n - 1]);
-    for cmd in commands {
-        match *cmd {
-            Command::Sector { first, last } => {
-                c.sectors += 1;
-                bundle = setup.bundle(first, last);
+    (c.sectors, c.retires) = walk(setup, patches, commands, |_, id, passed, rays, live| {
+        c.loads += 1;
+        let Some(p) = passed else { return };
+        c.passed += 1;
+        c.ray_slots += rays.len() as u64;
+        let mut run = false;
+        for r in rays {
+            if !live[r] {
+                run = false;
+                continue;
             }
-            Command::Job { id, first, count } => {
-                c.loads += 1;
-                let m = patches[id as usize];
-                let Verdict::Pass(p) = screen(&bundle, &Patch { id, a: [m[0], m[1]], b: [m[2], m[3]] })
-                else {
-                    continue;
-                };
-                c.passed += 1;
-                c.ray_slots += count as u64;
-                let mut run = false;
-                for r in first as usize..first as usize + count as usize {
-                    if !live[r] {
-                        run = false;
-                        continue;
-                    }
-                    c.live_runs += !run as u64;
-                    run = true;
-                    c.tests += 1;
-                    if let Some(key) = test(&p, setup.dirs[r]) {
-                        if replaces(key, id, best[r]) {
-                            best[r] = Some(Nearest { key, id });
-                        }
-                    }
+            c.live_runs += !run as u64;
+            run = true;
+            c.tests += 1;
+            if let Some(key) = test(p, setup.dirs[r]) {
+                if replaces(key, id, best[r]) {
+                    best[r] = Some(Nearest { key, id });
                 }
             }
-            Command::Retire { first, count } => {
-                c.retires += count as u64;
-                live[first as usize..first as usize + count as usize].fill(false);
-            }
         }
-    }
+    });
     (best, c)
+}
+
+/// The cycles of an ideal in-order PE on `commands`: a lower bound on any PE that takes its
+/// commands in order, one a clock, loads each job's patch through a host memory that serves one
+/// load per `tc` cycles (a request no earlier than its command), and tests the live rays of the
+/// passed jobs in command order, one a clock, a job's no earlier than its patch is there. With
+/// the cache on (`cache`, empty at the start) a job whose patch hits
+/// ([`shelling_hdl::cache::model::Cache`]) has it at once; every other costs the host `tc`.
+/// Every latency is zero and the window unbounded, so the bound holds whatever those are: it is
+/// at least `max(memory loads·tc, loads, tests)` (the bound of the figures), and more where a
+/// job waits for a load that no earlier test can cover (the loads of a cold cache at the start
+/// of a source, a miss when the jobs before it have no tests left).
+pub fn inorder_cycles(
+    setup: &PeSetup,
+    patches: &[[i32; 4]],
+    commands: &[Command],
+    tc: u64,
+    cache: CacheConfig,
+) -> u64 {
+    let mut cache = cache.lines.map(|n| shelling_hdl::cache::model::Cache::new((n - 1) as u16));
+    // When the host memory is free again, and when the intersection unit is.
+    let (mut host, mut unit) = (0u64, 0u64);
+    walk(setup, patches, commands, |k, id, passed, rays, live| {
+        let k = k as u64;
+        let there = if cache.as_mut().is_some_and(|c| c.access(id)) {
+            k
+        } else {
+            host = host.max(k) + tc;
+            host
+        };
+        let tests = if passed.is_some() { live[rays].iter().filter(|&&l| l).count() as u64 } else { 0 };
+        if tests > 0 {
+            unit = unit.max(there) + tests;
+        }
+    });
+    unit.max(host).max(commands.len() as u64)
 }
 
 /// What the PE did, counted by the host from the PE's outputs.
@@ -797,6 +853,31 @@ pub fn check_protocol(path: &std::path::Path) -> Result<ProtocolReport> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The ideal in-order PE, by hand: jobs of no ray (no tests) cost the host `T_c` a load,
+    /// one after the other, each no earlier than its command; behind the cache only the misses
+    /// do; a job's tests follow its patch and the tests before them.
+    #[test]
+    fn the_ideal_in_order_pe_counts_the_host_the_hits_and_the_tests() {
+        let setup = PeSetup { origin: [0, 0], normal: [0, 1 << 16], dirs: vec![[0, 1 << 16]; 8] };
+        // Patch 0 lies across the rays, above the origin, facing it; patch 1 behind the origin.
+        let patches = [[640, 640, -640, 640], [-640, -640, 640, -640]];
+        let empty = |id| Command::Job { id, first: 0, count: 0 };
+        let (off, four) = (CacheConfig { lines: None }, CacheConfig { lines: Some(4) });
+        let three = [empty(0), empty(1), empty(0)];
+        assert_eq!(inorder_cycles(&setup, &patches, &three, 5, off), 15);
+        assert_eq!(inorder_cycles(&setup, &patches, &three, 5, four), 10, "the third load hits");
+        assert_eq!(inorder_cycles(&setup, &patches, &three, 1, off), 3, "one command a clock");
+        // Patch 0 against the eight rays: its tests start when it is there (cycle 5).
+        let job = Command::Job { id: 0, first: 0, count: 8 };
+        let (_, counts) = model(&setup, &patches, &[job]);
+        assert_eq!((counts.passed, counts.tests), (1, 8), "the screener passes patch 0: {counts:?}");
+        assert_eq!(inorder_cycles(&setup, &patches, &[job], 5, off), 13);
+        // Retired rays are not tested; patch 1 is screened out (its rays untested).
+        let retire = Command::Retire { first: 0, count: 3 };
+        let stream = [retire, job, Command::Job { id: 1, first: 0, count: 8 }];
+        assert_eq!(inorder_cycles(&setup, &patches, &stream, 2, off), 3 + 5);
+    }
 
     #[test]
     fn a_spread_map_fills_the_first_lines_of_every_block_and_inverts() {
