@@ -95,6 +95,12 @@ pub struct FpgaArgs {
     /// to the clock rates is in PERFORMANCE.md.
     #[arg(long, default_value = "", allow_hyphen_values = true)]
     pub ecp5_synth_options: String,
+    /// Options appended to nextpnr-ecp5's command (e.g. `--placer-heap-timingweight 30`),
+    /// space-separated, each a `--flag` or a plain word; not the flow's own (`--seed`, `--freq`,
+    /// the part, the files): recorded in every row (`pnr`), so that `--resume` places again
+    /// when they change and `--merge` never mixes two. What they did is in PERFORMANCE.md.
+    #[arg(long, default_value = "", allow_hyphen_values = true)]
+    pub ecp5_pnr_options: String,
     /// Target clock frequency on iCE40, MHz (nextpnr --freq).
     #[arg(long, default_value_t = 50.0)]
     pub ice40_mhz: f64,
@@ -174,6 +180,9 @@ pub struct Row {
     /// was recorded, which used the family's plain command.
     #[serde(default)]
     pub synth: Option<String>,
+    /// The options appended to nextpnr's command (`--ecp5-pnr-options`); `null`: none.
+    #[serde(default)]
+    pub pnr: Option<String>,
     pub tool_versions: BTreeMap<String, String>,
 }
 
@@ -188,6 +197,8 @@ struct Target {
     /// second memory copy of `shelling_hdl::prim::FifoRam`).
     defines: &'static str,
     nextpnr_device: Vec<String>,
+    /// Options appended to nextpnr's command (`--ecp5-pnr-options`; none on iCE40).
+    pnr_options: Vec<String>,
     mhz: f64,
     tool: ToolKind,
 }
@@ -210,8 +221,9 @@ impl Row {
 }
 
 impl Target {
-    /// The target of `family`, its ECP5 synthesis with the checked `ecp5_options` appended.
-    fn new(family: Family, args: &FpgaArgs, ecp5_options: &[&str]) -> Target {
+    /// The target of `family`; on ECP5 the checked `ecp5_options` appended to its synthesis and
+    /// `ecp5_pnr` to its nextpnr command.
+    fn new(family: Family, args: &FpgaArgs, ecp5_options: &[&str], ecp5_pnr: &[&str]) -> Target {
         let mut target = match (family, args.ice40_device) {
             (Family::Ecp5, _) => Target {
                 family,
@@ -225,6 +237,7 @@ impl Target {
                     "--package",
                     "CABGA381",
                 ]),
+                pnr_options: strings(ecp5_pnr),
                 mhz: args.ecp5_mhz,
                 tool: ToolKind::NextpnrEcp5,
             },
@@ -234,6 +247,7 @@ impl Target {
                 synth: String::new(),
                 defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--up5k", "--package", "sg48"]),
+                pnr_options: Vec::new(),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
             },
@@ -243,6 +257,7 @@ impl Target {
                 synth: String::new(),
                 defines: "-DSHELLING_ICE40 ",
                 nextpnr_device: strings(&["--hx8k", "--package", "ct256"]),
+                pnr_options: Vec::new(),
                 mhz: args.ice40_mhz,
                 tool: ToolKind::NextpnrIce40,
             },
@@ -285,9 +300,43 @@ fn synth_options(text: &str) -> Result<Vec<&str>> {
     Ok(words)
 }
 
+/// nextpnr's options that the flow sets itself: `--ecp5-pnr-options` may not give them.
+const FLOW_PNR_FLAGS: [&str; 11] = [
+    "--json",
+    "--freq",
+    "--seed",
+    "--timing-allow-fail",
+    "--report",
+    "--speed",
+    "--package",
+    "--25k",
+    "--45k",
+    "--85k",
+    "--textcfg",
+];
+
+/// The `--ecp5-pnr-options` words, or what is wrong with one: each a `--flag` or a value of
+/// letters, digits and `_ . = + -`, and none of the flags the flow sets itself.
+fn pnr_options(text: &str) -> Result<Vec<&str>> {
+    let words: Vec<&str> = text.split_whitespace().collect();
+    for w in &words {
+        if !w.chars().all(|c| c.is_ascii_alphanumeric() || "_.=+-".contains(c)) {
+            bail!(
+                "--ecp5-pnr-options {text:?}: `{w}` is not a nextpnr option (letters, digits and _ . = + - only, \
+                 e.g. --ecp5-pnr-options \"--placer-heap-timingweight 30\")"
+            );
+        }
+        if FLOW_PNR_FLAGS.contains(&w.split('=').next().unwrap_or(w)) {
+            bail!("--ecp5-pnr-options {text:?}: `{w}` is the flow's own (give it with the flow's option)");
+        }
+    }
+    Ok(words)
+}
+
 /// Runs `cargo xtask fpga`.
 pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     let ecp5_options = synth_options(&args.ecp5_synth_options)?;
+    let ecp5_pnr = pnr_options(&args.ecp5_pnr_options)?;
     let repo = PathBuf::from(env!("CARGO_MANIFEST_DIR")).parent().map(Path::to_path_buf).unwrap_or_default();
     let known: Vec<&str> = shelling_testbench::export::blocks().into_iter().map(|(name, _)| name).collect();
     let blocks: Vec<String> = if args.blocks.is_empty() {
@@ -309,7 +358,8 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
     if families.is_empty() {
         bail!("no family given");
     }
-    let targets: Vec<Target> = families.iter().map(|&f| Target::new(f, args, &ecp5_options)).collect();
+    let targets: Vec<Target> =
+        families.iter().map(|&f| Target::new(f, args, &ecp5_options, &ecp5_pnr)).collect();
 
     // The tools, before anything is written.
     let mut kinds = vec![ToolKind::Yosys];
@@ -381,7 +431,9 @@ pub fn run(args: &FpgaArgs) -> Result<ExitCode> {
         if rows.is_empty() {
             bail!("--merge: no rows of the blocks and families asked for");
         }
-        if let Some(e) = mixed_floorplans(&rows).or_else(|| mixed_syntheses(&rows)) {
+        if let Some(e) =
+            mixed_floorplans(&rows).or_else(|| mixed_syntheses(&rows)).or_else(|| mixed_pnr(&rows))
+        {
             bail!("--merge: {e}");
         }
         let mut seeds: Vec<u64> = rows.iter().map(|r| r.seed).collect();
@@ -507,6 +559,7 @@ fn run_job(ctx: &Flow, block: &str, target: &Target) -> Vec<Row> {
         critical_path: None,
         floorplan: None,
         synth: Some(target.synth.clone()),
+        pnr: (!target.pnr_options.is_empty()).then(|| target.pnr_options.join(" ")),
         tool_versions: BTreeMap::from([
             ("yosys".to_string(), yosys.version.clone()),
             ("nextpnr".to_string(), nextpnr.version.clone()),
@@ -613,7 +666,8 @@ const NETLIST_JSON: &str = "synth.json";
 const SYNTH_COMMAND: &str = "synth-command.txt";
 /// Yosys' netlist with the floorplan's `BEL` attributes, beside it.
 const FLOORPLANNED_JSON: &str = "floorplanned.json";
-/// In a job's directory, the floorplan a seed's report was placed with (`none` or the description).
+/// In a job's directory, the floorplan a seed's report was placed with (`none` or the
+/// description), and nextpnr's extra options if any.
 fn floorplan_file(seed: u64) -> String {
     format!("floorplan-seed{seed}.txt")
 }
@@ -640,14 +694,20 @@ fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row)
     let report_json = format!("report-seed{seed}.json");
     let report_json = report_json.as_str();
     let log = ctx.out.join("logs").join(format!("{job}-nextpnr.log"));
-    let plan = row.floorplan.clone().unwrap_or_else(|| "none".into());
+    // What the seed is placed with: the floorplan, and nextpnr's extra options if any (a file
+    // written before they were recorded holds the floorplan alone, as a run without them does).
+    let mut plan = row.floorplan.clone().unwrap_or_else(|| "none".into());
+    if let Some(o) = &row.pnr {
+        plan = format!("{plan}\nnextpnr options: {o}");
+    }
     let plan_file = dir.join(floorplan_file(seed));
     let resumed = s.resumed
         && dir.join(report_json).is_file()
         && log.is_file()
         && std::fs::read_to_string(&plan_file).is_ok_and(|p| p == plan);
     if !resumed {
-        // A stale report from an earlier run (or of another floorplan) must not be read as this one's.
+        // A stale report from an earlier run (or of another floorplan or options) must not be read
+        // as this one's.
         let _ = std::fs::remove_file(dir.join(report_json));
         std::fs::write(&plan_file, &plan).with_context(|| format!("writing {}", plan_file.display()))?;
     }
@@ -663,6 +723,7 @@ fn place(ctx: &Flow, target: &Target, s: &Synthesized, seed: u64, row: &mut Row)
         "--report".to_string(),
         report_json.to_string(),
     ]);
+    args.extend(target.pnr_options.iter().cloned());
     let status = if resumed {
         // Placed by the interrupted run: a report is written only when nextpnr succeeds.
         eprintln!("{job}: resumed (its report is there)");
@@ -815,6 +876,13 @@ fn mixed_floorplans(rows: &[Row]) -> Option<String> {
 /// the command (written before it was recorded) is of its part's plain one.
 fn mixed_syntheses(rows: &[Row]) -> Option<String> {
     mixed(rows, "synthesized with two commands", |r| format!("`{}`", r.synth_command()))
+}
+
+/// Two rows of one block and family placed with different nextpnr options, said.
+fn mixed_pnr(rows: &[Row]) -> Option<String> {
+    mixed(rows, "placed with two sets of nextpnr options", |r| {
+        format!("`{}`", r.pnr.as_deref().unwrap_or(""))
+    })
 }
 
 /// One block on one family over the seeds: the spread of its post-route fmax, as
@@ -982,6 +1050,16 @@ fn markdown(rows: &[Row], spreads: &[Spread], ctx: &Flow, verilog_hash: &str) ->
         }
         let _ = writeln!(md);
     }
+    // The nextpnr options, when some block was placed with any (`--ecp5-pnr-options`).
+    let options: BTreeSet<(&str, &str)> =
+        rows.iter().filter_map(|r| Some((r.block.as_str(), r.pnr.as_deref()?))).collect();
+    if !options.is_empty() {
+        let _ = writeln!(md, "Place and route (`--ecp5-pnr-options`, appended to nextpnr's command):\n");
+        for (block, o) in options {
+            let _ = writeln!(md, "- {block}: `{o}`");
+        }
+        let _ = writeln!(md);
+    }
     let _ = writeln!(md, "Tools:\n");
     for t in ctx.tools.values() {
         let _ = writeln!(md, "- {}: {} ({})", t.kind.native(), t.version, t.found_as);
@@ -1051,6 +1129,7 @@ mod tests {
             critical_path: None,
             floorplan: None,
             synth: None,
+            pnr: None,
             tool_versions: BTreeMap::new(),
         }
     }
@@ -1108,5 +1187,24 @@ mod tests {
                 "{bad}: {e}"
             );
         }
+    }
+
+    #[test]
+    fn pnr_options_are_options_only_and_not_the_flows() {
+        let words = pnr_options(" --placer-heap-timingweight 30  --router router2 ").unwrap();
+        assert_eq!(words, vec!["--placer-heap-timingweight", "30", "--router", "router2"]);
+        assert!(pnr_options("").unwrap().is_empty());
+        for bad in ["--seed 4", "--freq=200", "--report x.json", "--placer heap; rm"] {
+            let e = pnr_options(bad).map(|_| ()).expect_err(bad).to_string();
+            assert!(e.contains("--ecp5-pnr-options") && e.contains(bad), "{e}");
+        }
+    }
+
+    #[test]
+    fn merging_refuses_seeds_placed_with_two_sets_of_options() {
+        let placed = |seed: u64, o: Option<&str>| Row { pnr: o.map(str::to_string), ..row("a", seed, None) };
+        assert_eq!(mixed_pnr(&[placed(1, Some("--x 1")), placed(2, Some("--x 1")), row("b", 1, None)]), None);
+        let e = mixed_pnr(&[placed(1, None), placed(2, Some("--x 1"))]).expect("two sets of options");
+        assert!(e.contains("a on") && e.contains("seeds 1 and 2") && e.contains("`--x 1`"), "{e}");
     }
 }
