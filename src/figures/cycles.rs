@@ -757,6 +757,26 @@ pub fn markdown(rows: &[CycleRow]) -> String {
     out
 }
 
+/// Per length and `T_c` (in the rows' order), the shelling techniques' rows: S and D without
+/// the cache, S and D with it; and whether it is the length's first. A `(length, T_c)` that
+/// lacks one of the four is left out.
+fn shelling_rows(rows: &[CycleRow]) -> Vec<(bool, [&CycleRow; 4])> {
+    let mut out: Vec<(bool, [&CycleRow; 4])> = Vec::new();
+    for r in rows.iter().filter(|r| r.method == Method::Stochastic && r.cache.is_none()) {
+        let row = |m, cached| find(rows, r.length, m, r.tc, cached);
+        let (Some(d), Some(sc), Some(dc)) = (
+            row(Method::Deterministic, false),
+            row(Method::Stochastic, true),
+            row(Method::Deterministic, true),
+        ) else {
+            continue;
+        };
+        let first = out.last().is_none_or(|(_, [l, ..])| l.length != r.length);
+        out.push((first, [r, d, sc, dc]));
+    }
+    out
+}
+
 /// The table of FIGURES.md ("Sources back to back"), written to `cycles_queue.md`: the
 /// sources back to back on one PE ([`QueueTotals`]), per length and `T_c`: S's cycles per source
 /// without and with the cache, and the shelling techniques' cycles over their bound and their
@@ -767,18 +787,7 @@ pub fn queue_markdown(rows: &[CycleRow]) -> String {
          | D / bound, cache | eff. S | eff. D | eff. S, cache | eff. D, cache |\n\
          |---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
-    let mut last = None;
-    for r in rows.iter().filter(|r| r.method == Method::Stochastic && r.cache.is_none()) {
-        let row = |m, cached| find(rows, r.length, m, r.tc, cached);
-        let (Some(d), Some(sc), Some(dc)) = (
-            row(Method::Deterministic, false),
-            row(Method::Stochastic, true),
-            row(Method::Deterministic, true),
-        ) else {
-            continue;
-        };
-        let first = last != Some(r.length);
-        last = Some(r.length);
+    for (first, [r, d, sc, dc]) in shelling_rows(rows) {
         let cols = [
             if first { csv_num(r.length) } else { String::new() },
             r.tc.to_string(),
@@ -809,18 +818,7 @@ pub fn inorder_markdown(rows: &[CycleRow]) -> String {
         let miss = if r.overhead() > GOAL { " ✗" } else { "" };
         format!("{:.2} ({:.2}){miss}", r.overhead(), r.inorder_overhead())
     };
-    let mut last = None;
-    for r in rows.iter().filter(|r| r.method == Method::Stochastic && r.cache.is_none()) {
-        let row = |m, cached| find(rows, r.length, m, r.tc, cached);
-        let (Some(d), Some(sc), Some(dc)) = (
-            row(Method::Deterministic, false),
-            row(Method::Stochastic, true),
-            row(Method::Deterministic, true),
-        ) else {
-            continue;
-        };
-        let first = last != Some(r.length);
-        last = Some(r.length);
+    for (first, [r, d, sc, dc]) in shelling_rows(rows) {
         let cols = [
             if first { csv_num(r.length) } else { String::new() },
             r.tc.to_string(),

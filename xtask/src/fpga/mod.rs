@@ -285,19 +285,24 @@ struct Flow {
     floorplan: Floorplan,
 }
 
-/// The `--ecp5-synth-options` words, or what is wrong with one: each a `-flag` or a value of
-/// letters, digits and `_ . = + -`, so that nothing but options reaches Yosys' script.
-fn synth_options(text: &str) -> Result<Vec<&str>> {
+/// The words of `option`'s `text`, or what is wrong with one: each a `-flag` or a value of
+/// letters, digits and `_ . = + -`, so that nothing but options reaches the tool (`what`, with
+/// an `example` of the option).
+fn option_words<'a>(option: &str, text: &'a str, what: &str, example: &str) -> Result<Vec<&'a str>> {
     let words: Vec<&str> = text.split_whitespace().collect();
     for w in &words {
         if !w.chars().all(|c| c.is_ascii_alphanumeric() || "_.=+-".contains(c)) {
             bail!(
-                "--ecp5-synth-options {text:?}: `{w}` is not a synth_ecp5 option (letters, digits and _ . = + - only, \
-                 e.g. --ecp5-synth-options=-dff)"
+                "{option} {text:?}: `{w}` is not {what} (letters, digits and _ . = + - only, e.g. {option} {example})"
             );
         }
     }
     Ok(words)
+}
+
+/// The `--ecp5-synth-options` words (`option_words`): nothing but options reaches Yosys' script.
+fn synth_options(text: &str) -> Result<Vec<&str>> {
+    option_words("--ecp5-synth-options", text, "a synth_ecp5 option", "-dff")
 }
 
 /// nextpnr's options that the flow sets itself: `--ecp5-pnr-options` may not give them.
@@ -318,14 +323,9 @@ const FLOW_PNR_FLAGS: [&str; 11] = [
 /// The `--ecp5-pnr-options` words, or what is wrong with one: each a `--flag` or a value of
 /// letters, digits and `_ . = + -`, and none of the flags the flow sets itself.
 fn pnr_options(text: &str) -> Result<Vec<&str>> {
-    let words: Vec<&str> = text.split_whitespace().collect();
+    let words =
+        option_words("--ecp5-pnr-options", text, "a nextpnr option", "\"--placer-heap-timingweight 30\"")?;
     for w in &words {
-        if !w.chars().all(|c| c.is_ascii_alphanumeric() || "_.=+-".contains(c)) {
-            bail!(
-                "--ecp5-pnr-options {text:?}: `{w}` is not a nextpnr option (letters, digits and _ . = + - only, \
-                 e.g. --ecp5-pnr-options \"--placer-heap-timingweight 30\")"
-            );
-        }
         if FLOW_PNR_FLAGS.contains(&w.split('=').next().unwrap_or(w)) {
             bail!("--ecp5-pnr-options {text:?}: `{w}` is the flow's own (give it with the flow's option)");
         }
