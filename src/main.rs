@@ -1136,12 +1136,12 @@ fn cosim_cmd(a: CosimArgs) -> Result<()> {
         h.backward + h.back_facing + h.outside + h.near,
         h.tests
     );
+    let bound = cosim::bound_cycles(h, a.tc);
     say!(
         out,
-        "bound {} (max of host loads·T_c, loads, tests)  ideal in-order PE {}  cycles / bound {:.2}",
-        cosim::bound_cycles(h, a.tc),
+        "bound {bound} (max of host loads·T_c, loads, tests)  ideal in-order PE {}  cycles / bound {:.2}",
         result.inorder_cycles,
-        h.cycles as f64 / cosim::bound_cycles(h, a.tc).max(1) as f64
+        h.cycles as f64 / bound.max(1) as f64
     );
     out.flush()
 }

@@ -147,7 +147,7 @@ fn the_compiled_pe_returns_the_schedulers_hits_across_the_workload() {
                 );
                 // The bound of the figures <= the ideal in-order PE <= the PE.
                 let h = &run.hardware;
-                let bound = (h.memory_loads * tc as u64).max(h.patch_loads).max(h.tests);
+                let bound = cosim::bound_cycles(h, tc);
                 assert!(
                     bound <= run.inorder_cycles && run.inorder_cycles <= h.cycles,
                     "{what}: bound {bound}, ideal in-order PE {}, PE {}",

@@ -367,7 +367,7 @@ impl<'a> PeHost<'a> {
         i.dir_we = false;
         i.res_re = false;
         i.cfg_cache_enable = cache.lines.is_some();
-        i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
+        i.cfg_cache_mask = cache.mask();
         if let Some(c) = self.c {
             let k = self.step;
             if let Some(&d) = self.queue.get(k).and_then(|w| w.setup.dirs.get(c)) {

@@ -210,7 +210,7 @@ pub fn inorder_cycles(
     tc: u64,
     cache: CacheConfig,
 ) -> u64 {
-    let mut cache = cache.lines.map(|n| shelling_hdl::cache::model::Cache::new((n - 1) as u16));
+    let mut cache = cache.lines.map(|_| shelling_hdl::cache::model::Cache::new(cache.mask()));
     // When the host memory is free again, and when the intersection unit is.
     let (mut host, mut unit) = (0u64, 0u64);
     walk(setup, patches, commands, |k, id, passed, rays, live| {
@@ -278,6 +278,11 @@ impl CacheConfig {
             ))),
             _ => Ok(()),
         }
+    }
+
+    /// The cache's `cfg_mask`: its lines − 1 (0 when off, when `cfg_cache_enable` is low).
+    pub fn mask(&self) -> u16 {
+        (self.lines.unwrap_or(1) - 1) as u16
     }
 }
 
@@ -621,7 +626,7 @@ pub fn load_source<S: PeSim>(sim: &mut S, setup: &PeSetup, cache: CacheConfig) -
         [i.origin_x, i.origin_y] = o;
         [i.normal_x, i.normal_y] = nm;
         i.cfg_cache_enable = cache.lines.is_some();
-        i.cfg_cache_mask = (cache.lines.unwrap_or(1) - 1) as u16;
+        i.cfg_cache_mask = cache.mask();
     })?;
     load_directions(&mut PeRays(sim), &setup.dirs)?;
     Ok(sim.cycles() - start)
