@@ -60,9 +60,12 @@
 //! inputs in its own stretch of the register wrapper's chain. The critical paths: a screener's
 //! dividend shift into its divider (seed 1), a divider step (2), a PE's stall register (3).
 //! Six PEs, the most whose LUTs fit, take 66,452 LUT4s (79 %), 48,054 FFs, 102 `DP16KD`s and
-//! 96 `MULT18X18D`s and route at 143.7 MHz, the median of seeds 1 to 3 (139.2–149.5),
-//! floorplanned in a 3 × 2 grid of regions; the critical paths: a divider step in a screener
-//! (seeds 1 and 2) and a cache's answer register into the loader's FIFO, placed far apart (3).
+//! 96 `MULT18X18D`s and route at 151.0 MHz, the median of seeds 1 to 3 (147.8–152.6),
+//! floorplanned in a 3 × 2 grid of regions and placed with nextpnr's analytic placer at timing
+//! weight 30 (`--ecp5-pnr-options "--placer-heap-timingweight 30"`; 143.7 without it, while four
+//! PEs do better without it); the critical paths: a screener's dividend shift into its divider
+//! (seed 1), a screener's normaliser into a compare (2), the unit's key into its merge's compare
+//! (3).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;

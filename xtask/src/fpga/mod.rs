@@ -907,6 +907,10 @@ pub struct Spread {
     pub max_mhz: Option<f64>,
     /// The floorplan every seed was placed with (`Row::floorplan`; `--merge` refuses to mix two).
     pub floorplan: Option<String>,
+    /// The options every seed's nextpnr had appended (`Row::pnr`, `--ecp5-pnr-options`;
+    /// `--merge` refuses to mix two); left out when none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pnr: Option<String>,
 }
 
 /// `fpga-seeds.json`: the hash of the whole export measured and every block's spread with the
@@ -935,6 +939,7 @@ fn spreads(rows: &[Row], block_hashes: &BTreeMap<String, String>) -> Vec<Spread>
                     median_mhz: None,
                     max_mhz: None,
                     floorplan: r.floorplan.clone(),
+                    pnr: r.pnr.clone(),
                 });
                 out.len() - 1
             }
@@ -1206,5 +1211,14 @@ mod tests {
         assert_eq!(mixed_pnr(&[placed(1, Some("--x 1")), placed(2, Some("--x 1")), row("b", 1, None)]), None);
         let e = mixed_pnr(&[placed(1, None), placed(2, Some("--x 1"))]).expect("two sets of options");
         assert!(e.contains("a on") && e.contains("seeds 1 and 2") && e.contains("`--x 1`"), "{e}");
+    }
+
+    #[test]
+    fn a_spread_records_its_placement_options_and_plain_ones_are_left_out() {
+        let placed = Row { pnr: Some("--placer-heap-timingweight 30".into()), ..row("a", 1, Some(150.0)) };
+        let s = spreads(&[placed, row("b", 1, Some(150.0))], &BTreeMap::new());
+        let json = serde_json::to_value(&s).unwrap();
+        assert_eq!(json[0]["pnr"], "--placer-heap-timingweight 30");
+        assert!(json[1].get("pnr").is_none(), "{}", json[1]);
     }
 }
