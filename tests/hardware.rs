@@ -1,6 +1,7 @@
 //! The hardware side seen from the whole system: rung 2 (the bit-true fixed point against the
 //! f64 golden model, within the bound of `hdl/FORMATS.md`), the fixed-point range checks, the
-//! committed Verilog being current, and the synthesizability test of every block: Yosys'
+//! committed Verilog and post-route results being current (and the clocks the documents cite
+//! being those results), and the synthesizability test of every block: Yosys'
 //! `synth_ecp5` on its exported Verilog, no latches, products on DSP blocks.
 
 use crate::support::synth::{assert_no_latch, cells, synth_ecp5, synth_ecp5_script, verilog_dir};
@@ -133,17 +134,73 @@ fn committed_machine_fpga_results_are_of_the_current_machine() {
         let block = b["block"].as_str().expect("a block is named");
         let pes = machine_block_pes(block).unwrap_or_else(|| panic!("{block} is not a machine_N block"));
         let file = machine_verilog(pes).expect("the machine exports");
+        // The nextpnr options the block was placed with, if any (`pnr`), are part of its command.
+        let pnr = b["pnr"].as_str().map(|o| format!(" --ecp5-pnr-options \"{o}\"")).unwrap_or_default();
         assert_eq!(
             b["verilog_hash"].as_str().expect("a block's results name its Verilog's hash"),
             hash(&[file]),
             "hdl/fpga/ecp5-machine-seeds.json is stale: {block}'s Verilog changed since it was measured. Run \
-             `cargo xtask fpga --out out/fpga-m --families ecp5 --blocks {block} --seeds 1,2,3` and copy its \
-             fpga-seeds.json to hdl/fpga/ecp5-machine-seeds.json and fpga.md to hdl/fpga/ecp5-machine.md"
+             `cargo xtask fpga --out out/fpga-m --families ecp5 --blocks {block} --seeds 1,2,3{pnr}` and copy \
+             its block from fpga-seeds.json to hdl/fpga/ecp5-machine-seeds.json and its rows from fpga.md to \
+             hdl/fpga/ecp5-machine.md"
         );
         let seeds = b["seeds"].as_array().map_or(0, Vec::len);
         assert!(seeds >= 3, "{block}: a median of {seeds} seeds; three at least");
         assert!(b["median_mhz"].is_f64(), "{block} has no median clock rate");
     }
+}
+
+/// Every clock rate the documents cite as a post-route result, `151.0 (machine_6)` or
+/// `150.4 (the PE's alone)` (the headlines' tables, which their benches write from the committed
+/// results, and the tables copied from them), is the committed median of that block: a change of
+/// `hdl/fpga/*-seeds.json` without the figures measured again at the new clock fails here.
+#[test]
+fn the_documents_cite_the_committed_post_route_clocks() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let median = |file: &str, block: &str| -> f64 {
+        let text = std::fs::read_to_string(root.join("hdl/fpga").join(file)).unwrap();
+        let json: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let blocks = json["blocks"].as_array().unwrap();
+        let b = blocks.iter().find(|b| b["block"] == block && b["family"] == "ecp5");
+        b.and_then(|b| b["median_mhz"].as_f64()).unwrap_or_else(|| panic!("{file} has no median of {block}"))
+    };
+    let mut cited = 0;
+    for doc in [
+        "README.md",
+        "SCENES3D.md",
+        "FIGURES.md",
+        "RADIOSITY.md",
+        "figures/headline.md",
+        "figures/headline3d.md",
+    ] {
+        let text = std::fs::read_to_string(root.join(doc)).unwrap();
+        for (at, _) in text.match_indices(" (") {
+            let whose = &text[at + 2..];
+            let Some(whose) = whose.find(')').map(|e| &whose[..e]) else { continue };
+            let expected = if let Some(n) = whose.strip_prefix("machine_") {
+                if n.is_empty() || !n.bytes().all(|c| c.is_ascii_digit()) {
+                    continue;
+                }
+                median("ecp5-machine-seeds.json", whose)
+            } else if whose == "the PE's alone" || whose == "the PE's" {
+                median("ecp5-seeds.json", "processing_element")
+            } else {
+                continue;
+            };
+            let number: String =
+                text[..at].chars().rev().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
+            let number: String = number.chars().rev().collect();
+            let Ok(mhz) = number.parse::<f64>() else { continue };
+            assert_eq!(
+                format!("{mhz:.1}"),
+                format!("{expected:.1}"),
+                "{doc} cites {mhz:.1} MHz for {whose}, the committed median is {expected:.1}: measure its figures again \
+                 (`cargo bench --bench machine -- --write figures/headline.md`, `--bench machine3d`) and update them"
+            );
+            cited += 1;
+        }
+    }
+    assert!(cited >= 20, "the documents cite {cited} post-route clocks: the tables moved?");
 }
 
 #[test]
