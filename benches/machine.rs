@@ -15,7 +15,8 @@
 //!   lines by the host ([`shelling::machine::Placement::Lines`]); rays per second = rays × clock
 //!   / cycles, the clock the median post-route rate of the machine of that N on ECP5
 //!   (`hdl/fpga/ecp5-machine-seeds.json`) where it was measured, else the PE's alone (`hdl/fpga/ecp5-seeds.json`, said so). N is 1,
-//!   4, 6 (the most PEs whose block RAMs fit the LFE5U-85F) and 8.
+//!   4, 6 (the most measured on the LFE5U-85F; seven fit it by count, not yet routed) and 8 (more
+//!   LUTs than it has).
 //!
 //! Run: `cargo bench --bench machine` (`-- --rounds N`; `-- --write FILE` writes the table as
 //! Markdown, as `figures/headline.md` is written).
@@ -78,8 +79,8 @@ fn main() {
         .map(|[a, b]| [rays as f64 / headline::median(a), rays as f64 / headline::median(b)])
         .collect();
 
-    // The machine of 1, 4, 6 (the most that fit the LFE5U-85F: 31 of its 208 block RAMs a PE) and
-    // 8 PEs, each at its own measured clock where there is one.
+    // The machine of 1, 4, 6 (the most measured on the LFE5U-85F) and 8 PEs, each at its own
+    // measured clock where there is one.
     let pe_mhz = median_mhz("ecp5-seeds.json", "processing_element").expect("the PE's results are committed");
     let pes = [1, 4, 6, 8];
     let mut md = String::new();

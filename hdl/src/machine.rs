@@ -59,13 +59,13 @@
 //! and multipliers pinned to its own quadrant of the die by the flow's floorplan and each PE's
 //! inputs in its own stretch of the register wrapper's chain. The critical paths: a screener's
 //! dividend shift into its divider (seed 1), a divider step (2), a PE's stall register (3).
-//! Six PEs, the most whose LUTs fit, take 66,452 LUT4s (79 %), 48,054 FFs, 102 `DP16KD`s and
-//! 96 `MULT18X18D`s and route at 151.0 MHz, the median of seeds 1 to 3 (147.8–152.6),
-//! floorplanned in a 3 × 2 grid of regions and placed with nextpnr's analytic placer at timing
-//! weight 30 (`--ecp5-pnr-options "--placer-heap-timingweight 30"`; 143.7 without it, while four
-//! PEs do better without it); the critical paths: a screener's dividend shift into its divider
-//! (seed 1), a screener's normaliser into a compare (2), the unit's key into its merge's compare
-//! (3).
+//! Six PEs take 66,452 LUT4s (79 %), 48,054 FFs, 102 `DP16KD`s and 96 `MULT18X18D`s and route
+//! at 151.0 MHz, the median of seeds 1 to 3 (147.8–152.6), floorplanned in a 3 × 2 grid of
+//! regions and placed with nextpnr's analytic placer at timing weight 30 (`--ecp5-pnr-options
+//! "--placer-heap-timingweight 30"`; 143.7 without it, while four PEs do better without it); the
+//! critical paths: a screener's dividend shift into its divider (seed 1), a screener's normaliser
+//! into a compare (2), the unit's key into its merge's compare (3). Seven PEs fit the device by
+//! count (77,029 LUT4s, 92 %, by nextpnr's packer) and have not been placed and routed.
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
