@@ -4,7 +4,9 @@
 //! Unpinned, nextpnr spreads a PE of the machine over half the die, and the machine's critical
 //! paths are wires across it (a PE's tag FIFO in one corner driving its slice's clock enable in
 //! another); the post-route clock rate then varies by 15 MHz from seed to seed on one netlist.
-//! Here the die is cut into a grid of `ceil(N/2)` columns by 2 rows (N = 1: the whole die), PE `k`
+//! Here the die is cut into a grid of `ceil(N/2)` columns by 2 rows (N = 1: the whole die), or,
+//! where a region of that grid has too few sites of a kind for its PE (seven PEs: the lower row's
+//! regions hold 13 multiplier sites for a PE's 16), into N columns by one row. PE `k`
 //! gets the region in column `k mod columns`, row `k div columns`, and each of its `DP16KD` and
 //! `MULT18X18D` cells (named `…pes$k.…` in the flattened Yosys netlist) is given a `BEL`
 //! attribute: of the sites of its kind in its region, the PE's cells take those nearest the
@@ -104,18 +106,20 @@ impl Region {
     }
 }
 
-/// The grid of `pes` regions: (columns, rows).
-pub fn grid(pes: usize) -> (usize, usize) {
+/// A grid of regions over the die: (columns, rows).
+pub type Grid = (usize, usize);
+
+/// The grids tried for `pes` regions, in order: two rows, then one (see the file's header).
+pub fn grids(pes: usize) -> Vec<Grid> {
     if pes <= 1 {
-        (1, 1)
+        vec![(1, 1)]
     } else {
-        (pes.div_ceil(2), 2)
+        vec![(pes.div_ceil(2), 2), (pes, 1)]
     }
 }
 
-/// PE `k`'s region of the machine of `pes` PEs.
-pub fn region(k: usize, pes: usize) -> Region {
-    let (cols, rows) = grid(pes);
+/// PE `k`'s region in the grid `(cols, rows)`.
+pub fn region(k: usize, (cols, rows): Grid) -> Region {
     let (c, r) = (k % cols, k / cols);
     let (w, h) = ((DIE.x1 - DIE.x0) / cols as f64, (DIE.y1 - DIE.y0) / rows as f64);
     Region {
@@ -133,9 +137,24 @@ fn pe_of(cell: &str) -> Option<usize> {
     k.parse().ok()
 }
 
-/// The sites of every PE's hard cells: `cells` are the netlist's (name, type); the result maps
-/// each pinned cell to its site. Cells outside every PE are left to the placer.
-pub fn assign(cells: &[(String, String)], pes: usize) -> Result<BTreeMap<String, String>> {
+/// The sites of every PE's hard cells: `cells` are the netlist's (name, type); the result is the
+/// first of [`grids`] in which every PE's region holds its cells, and the map of each pinned cell
+/// to its site. Cells outside every PE are left to the placer. If no grid holds them, the first
+/// grid's shortfall is the error.
+pub fn assign(cells: &[(String, String)], pes: usize) -> Result<(Grid, BTreeMap<String, String>)> {
+    let mut first_error = None;
+    for g in grids(pes) {
+        match assign_in(cells, pes, g) {
+            Ok(pins) => return Ok((g, pins)),
+            Err(e) if first_error.is_none() => first_error = Some(e),
+            Err(_) => {}
+        }
+    }
+    Err(first_error.expect("at least one grid is tried"))
+}
+
+/// [`assign`] in the grid `g`.
+fn assign_in(cells: &[(String, String)], pes: usize, g: Grid) -> Result<BTreeMap<String, String>> {
     let all = sites();
     let mut need: BTreeMap<(usize, Kind), Vec<&str>> = BTreeMap::new();
     for (name, ty) in cells {
@@ -150,7 +169,7 @@ pub fn assign(cells: &[(String, String)], pes: usize) -> Result<BTreeMap<String,
     let mut out = BTreeMap::new();
     for ((k, kind), mut mine) in need {
         mine.sort_unstable();
-        let r = region(k, pes);
+        let r = region(k, g);
         let mut free: Vec<&Site> = all
             .iter()
             .filter(|s| s.kind == kind && r.contains(s) && !used.contains(s.name.as_str()))
@@ -183,8 +202,7 @@ pub fn assign(cells: &[(String, String)], pes: usize) -> Result<BTreeMap<String,
 }
 
 /// What [`apply`] pinned: one line a PE.
-pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], pes: usize) -> String {
-    let (cols, rows) = grid(pes);
+pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], (cols, rows): Grid) -> String {
     let types: BTreeMap<&str, &str> = cells.iter().map(|(n, t)| (n.as_str(), t.as_str())).collect();
     let mut per: BTreeMap<usize, (usize, usize)> = BTreeMap::new();
     for (cell, k) in pins.keys().filter_map(|c| Some((c, pe_of(c)?))) {
@@ -197,7 +215,7 @@ pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], pes
     let mut s =
         format!("regions: {cols} x {rows} grid of the die, the sites nearest each centre in row order");
     for (k, (b, m)) in per {
-        let r = region(k, pes);
+        let r = region(k, (cols, rows));
         s += &format!(
             "; PE {k}: {b} DP16KD + {m} MULT18X18D in columns {:.0}-{:.0}, rows {:.0}-{:.0}",
             r.x0, r.x1, r.y0, r.y1
@@ -224,7 +242,7 @@ pub fn apply(src: &Path, dst: &Path, pes: usize) -> Result<String> {
         .with_context(|| format!("{} has no DP16KD or MULT18X18D cell", src.display()))?;
     let cells: Vec<(String, String)> =
         top.iter().map(|(n, c)| (n.clone(), c["type"].as_str().unwrap_or_default().to_string())).collect();
-    let pins = assign(&cells, pes)?;
+    let (g, pins) = assign(&cells, pes)?;
     for (cell, site) in &pins {
         let attrs = top
             .get_mut(cell)
@@ -235,7 +253,7 @@ pub fn apply(src: &Path, dst: &Path, pes: usize) -> Result<String> {
         attrs.insert("BEL".to_string(), Value::String(site.clone()));
     }
     std::fs::write(dst, serde_json::to_vec(&json)?).with_context(|| format!("writing {}", dst.display()))?;
-    Ok(describe(&pins, &cells, pes))
+    Ok(describe(&pins, &cells, g))
 }
 
 #[cfg(test)]
@@ -264,9 +282,10 @@ mod tests {
 
     #[test]
     fn every_pe_gets_its_own_sites_inside_its_own_region() {
-        for pes in [1, 2, 4, 6] {
+        for (pes, grid) in [(1, (1, 1)), (2, (1, 2)), (4, (2, 2)), (6, (3, 2)), (7, (7, 1)), (8, (8, 1))] {
             let cells = machine(pes);
-            let pins = assign(&cells, pes).unwrap();
+            let (g, pins) = assign(&cells, pes).unwrap();
+            assert_eq!(g, grid, "machine_{pes}'s grid");
             assert_eq!(pins.len(), 33 * pes, "machine_{pes}: every hard cell pinned");
             let mut seen = HashSet::new();
             let all = sites();
@@ -275,27 +294,35 @@ mod tests {
                 assert!(seen.insert(site.clone()), "machine_{pes}: {site} given twice");
                 let s = by_name[site.as_str()];
                 assert_eq!(Some(s.kind), Kind::of_cell(ty), "{cell} on {site}");
-                assert!(region(pe_of(cell).unwrap(), pes).contains(s), "machine_{pes}: {cell} on {site}");
+                assert!(region(pe_of(cell).unwrap(), g).contains(s), "machine_{pes}: {cell} on {site}");
             }
         }
         // One PE's cells of a kind, in name order, sit on sites in row order: a sub-block's side by side.
-        let pins = assign(&machine(4), 4).unwrap();
+        let (_, pins) = assign(&machine(4), 4).unwrap();
         let all = sites();
         let at = |site: &str| all.iter().find(|s| s.name == site).map(|s| (s.y, s.x)).unwrap();
         let rams: Vec<(u32, u32)> =
             pins.iter().filter(|(c, _)| c.contains("pes$2.cache")).map(|(_, s)| at(s)).collect();
         assert!(rams.len() == 17 && rams.windows(2).all(|w| w[0] < w[1]), "{rams:?}");
         // The regions tile the die without overlap.
-        let r: Vec<Region> = (0..4).map(|k| region(k, 4)).collect();
+        let r: Vec<Region> = (0..4).map(|k| region(k, (2, 2))).collect();
         assert_eq!((r[0].x1, r[0].y1, r[3].x0, r[3].y0), (r[1].x0, r[2].y0, r[2].x1, r[1].y1));
-        assert_eq!(region(0, 1), DIE);
+        assert_eq!(region(0, (1, 1)), DIE);
     }
 
     #[test]
     fn a_machine_whose_regions_are_too_small_is_refused_with_the_option() {
-        // Eight PEs: four columns of 30 tiles, 13 multiplier sites in the upper row of regions.
-        let e = assign(&machine(8), 8).unwrap_err().to_string();
-        assert!(e.contains("--floorplan") && e.contains("MULT18X18D"), "{e}");
+        // Two PEs of 80 multipliers each: no grid holds both (the device has 156). The error is
+        // the first grid's: the lower half's 52 sites.
+        let mut big = machine(2);
+        for k in 0..2 {
+            big.extend((16..80).map(|i| (format!("block.pes${k}.iu.m{i}"), "MULT18X18D".into())));
+        }
+        let e = assign(&big, 2).unwrap_err().to_string();
+        assert!(
+            e.contains("--floorplan none") && e.contains("80 MULT18X18D") && e.contains("rows 48-94) has 52"),
+            "{e}"
+        );
         assert!(assign(&machine(4), 3).is_err(), "a cell of a PE the machine does not have");
     }
 
