@@ -793,6 +793,17 @@ impl Default for PatchCache {
     }
 }
 impl PatchCache {
+    /// The lookup in S3 is rewound because its own id is a miss not yet in its line (it waits
+    /// for that fill): for testbenches ([`crate::pe::Watch::fill_rewind`]).
+    pub fn fill_rewind(&self) -> bool {
+        self.v3.q.val() & self.iconf3.q.val()
+    }
+
+    /// A lookup is accepted in this cycle (a hit or a miss): for testbenches.
+    pub fn lookup(&self) -> bool {
+        self.accept.val()
+    }
+
     /// Requests taken and not yet answered (in the request queue or the answer queue),
     /// `0..=QUEUE_DEPTH`: for testbenches.
     pub fn queued(&self) -> usize {

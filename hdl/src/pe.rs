@@ -484,6 +484,12 @@ pub struct Watch {
     /// The intersection unit would take a job (fewer than two rays of its present one are left
     /// to issue) and the job queue has none.
     pub unit_starved: bool,
+    /// The cache rewinds its lookups because the oldest request not looked up is for the id of
+    /// a miss whose patch is not in its line yet ([`PatchCache::fill_rewind`]): it is tried
+    /// again until that fill, and no request behind it is looked up meanwhile.
+    pub fill_rewind: bool,
+    /// The cache accepts a lookup ([`PatchCache::lookup`]).
+    pub lookup: bool,
 }
 
 impl ProcessingElement {
@@ -495,6 +501,8 @@ impl ProcessingElement {
             loader_full: !self.loader.id_ready.val(),
             screener_holds: self.loader.out_valid.val() & !self.screener.in_ready.val(),
             unit_starved: self.unit.patch_ready.val() & !self.queue.out_valid.val(),
+            fill_rewind: self.cache.fill_rewind(),
+            lookup: self.cache.lookup(),
         }
     }
 }

@@ -15,7 +15,11 @@
 //! after the last command are the pipeline's drain: the loader's, the screener's and the
 //! queue's latency and the unit's backlog of tests. Beside them, the cycles in which the
 //! intersection unit had no job to take (*unit starved*): where the tests are the bound, the
-//! cycles over it are these, the fill before the first job among them.
+//! cycles over it are these, the fill before the first job among them. And the cycles the
+//! cache's lookups stood still waiting for a fill (*lookups wait for a fill*): from a rewind of
+//! a request for the id of a miss whose patch is not in its line yet until that request is
+//! looked up; no request behind it is looked up meanwhile, so no miss behind it reaches the
+//! host.
 //!
 //! The sample is `sources` source patches of the first seed's scene of each length
 //! ([`source_patches`]), the scenes and schedules of `cycles.csv`, every T_c of the options
@@ -56,6 +60,9 @@ pub struct Breakdown {
     pub after: u64,
     /// Cycles the intersection unit had no job to take ([`shelling_hdl::pe::Watch::unit_starved`]).
     pub starved: u64,
+    /// Cycles from a rewind of the cache's lookups on a request for a miss's id until the
+    /// request is looked up ([`shelling_hdl::pe::Watch::fill_rewind`]).
+    pub fill_waits: u64,
     /// Ray-patch tests.
     pub tests: u64,
 }
@@ -71,8 +78,11 @@ impl Breakdown {
             .ok_or_else(|| anyhow!("the run's {cycles} cycles from cycle {start} were not all recorded"))?;
         let mut b = Breakdown { cycles, ..Breakdown::default() };
         let mut last = 0;
+        let mut waiting = false;
         for (c, s) in run.iter().enumerate() {
             b.starved += s.watch.unit_starved as u64;
+            waiting = (waiting | s.watch.fill_rewind) & !s.watch.lookup;
+            b.fill_waits += waiting as u64;
             if !s.offered {
                 continue;
             }
@@ -110,6 +120,7 @@ impl Breakdown {
         self.downstream += o.downstream;
         self.after += o.after;
         self.starved += o.starved;
+        self.fill_waits += o.fill_waits;
         self.tests += o.tests;
     }
 }
@@ -193,8 +204,8 @@ pub fn markdown(rows: &[StallRow]) -> String {
     let mut s = String::from(
         "| L | technique | T_c | cache | cycles | bound | cycles / bound | commands | held: sector \
          | held: tags | held: memory | held: downstream | after the last command | tests \
-         | unit starved |\n\
-         |---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+         | unit starved | lookups wait for a fill |\n\
+         |---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for r in rows {
         let t = &r.total;
@@ -203,7 +214,7 @@ pub fn markdown(rows: &[StallRow]) -> String {
         let cache = r.cache.map_or("off".to_string(), |l| format!("{l} lines"));
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {cache} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {cache} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             r.length,
             r.method,
             r.tc,
@@ -217,7 +228,8 @@ pub fn markdown(rows: &[StallRow]) -> String {
             f(t.downstream),
             f(t.after),
             f(t.tests),
-            f(t.starved)
+            f(t.starved),
+            f(t.fill_waits)
         );
     }
     s
@@ -269,29 +281,33 @@ mod tests {
         let tags = Watch { tags_full: true, loader_full: true, ..none };
         let memory = Watch { loader_full: true, ..none };
         let downstream = Watch { loader_full: true, screener_holds: true, unit_starved: true, ..none };
+        let rewind = Watch { fill_rewind: true, ..memory };
+        let lookup = Watch { lookup: true, ..memory };
         let samples = [
             sample(false, true, none), // setup: before the run
             sample(true, true, none),
             sample(true, false, sector),
             sample(true, false, tags),
-            sample(true, false, memory),
+            sample(true, false, rewind),
             sample(true, false, memory),
             sample(true, false, downstream),
-            sample(true, true, memory), // taken: held flags do not count then
+            sample(true, false, lookup), // the rewound request looked up: the wait ends
+            sample(true, true, memory),  // taken: held flags do not count then
             sample(false, true, none),
             sample(false, true, none),
             sample(false, true, none), // after the run
         ];
-        let b = Breakdown::of_run(&samples, 9).unwrap();
+        let b = Breakdown::of_run(&samples, 10).unwrap();
         let want = Breakdown {
-            cycles: 9,
+            cycles: 10,
             commands: 2,
             sector: 1,
             tags: 1,
-            memory: 2,
+            memory: 3,
             downstream: 1,
             after: 2,
             starved: 1,
+            fill_waits: 3,
             ..Breakdown::default()
         };
         assert_eq!(b, want);
