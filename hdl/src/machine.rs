@@ -64,8 +64,9 @@
 //! regions and placed with nextpnr's analytic placer at timing weight 30 (`--ecp5-pnr-options
 //! "--placer-heap-timingweight 30"`; 143.7 without it, while four PEs do better without it); the
 //! critical paths: a screener's dividend shift into its divider (seed 1), a screener's normaliser
-//! into a compare (2), the unit's key into its merge's compare (3). Seven PEs fit the device by
-//! count (77,029 LUT4s, 92 %, by nextpnr's packer) and have not been placed and routed.
+//! into a compare (2), the unit's key into its merge's compare (3). Seven PEs fit the device
+//! (77,029 LUT4s, 92 %, by nextpnr's packer) and route, far below 150 MHz on the flow's
+//! floorplan of seven tall columns, and have no median of three seeds yet (PERFORMANCE.md).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
