@@ -4,10 +4,14 @@
 //! Unpinned, nextpnr spreads a PE of the machine over half the die, and the machine's critical
 //! paths are wires across it (a PE's tag FIFO in one corner driving its slice's clock enable in
 //! another); the post-route clock rate then varies by 15 MHz from seed to seed on one netlist.
-//! Here the die is cut into a grid of `ceil(N/2)` columns by 2 rows (N = 1: the whole die), or,
-//! where a region of that grid has too few sites of a kind for its PE (seven PEs: the lower row's
-//! regions hold 13 multiplier sites for a PE's 16), into N columns by one row. PE `k`
-//! gets the region in column `k mod columns`, row `k div columns`, and each of its `DP16KD` and
+//! Here the die is cut into two rows of regions, `ceil(N/2)` in the upper row and `floor(N/2)`
+//! in the lower, each row's regions of equal width (N = 1: the whole die), or, where a region of
+//! those has too few sites of a kind for its PE, into N columns by one row. (The multipliers lie
+//! in three rows of the die, two in its upper half: with seven PEs the lower row's three regions
+//! hold 16–18 multiplier sites each, where four regions the upper row's width held 13, and a
+//! PE has 16; seven columns, each the die's height, stretched a PE's loops along 35 rows and
+//! routed at 132 MHz.) PE `k` gets the `k`-th region, the upper row's left to right first,
+//! and each of its `DP16KD` and
 //! `MULT18X18D` cells (named `…pes$k.…` in the flattened Yosys netlist) is given a `BEL`
 //! attribute: of the sites of its kind in its region, the PE's cells take those nearest the
 //! region's centre, the cells in name order along the sites in row order (so that one
@@ -106,27 +110,42 @@ impl Region {
     }
 }
 
-/// A grid of regions over the die: (columns, rows).
-pub type Grid = (usize, usize);
+/// Rows of regions over the die: the regions in each row, top row first (each row's regions of
+/// equal width, the rows of equal height).
+pub type Grid = Vec<usize>;
 
 /// The grids tried for `pes` regions, in order: two rows, then one (see the file's header).
 pub fn grids(pes: usize) -> Vec<Grid> {
     if pes <= 1 {
-        vec![(1, 1)]
+        vec![vec![1]]
     } else {
-        vec![(pes.div_ceil(2), 2), (pes, 1)]
+        vec![vec![pes.div_ceil(2), pes / 2], vec![pes]]
     }
 }
 
-/// PE `k`'s region in the grid `(cols, rows)`.
-pub fn region(k: usize, (cols, rows): Grid) -> Region {
-    let (c, r) = (k % cols, k / cols);
-    let (w, h) = ((DIE.x1 - DIE.x0) / cols as f64, (DIE.y1 - DIE.y0) / rows as f64);
+/// PE `k`'s region in the grid `g` (the `k`-th, row by row).
+pub fn region(k: usize, g: &[usize]) -> Region {
+    let (mut r, mut c) = (0, k);
+    while r + 1 < g.len() && c >= g[r] {
+        c -= g[r];
+        r += 1;
+    }
+    let (w, h) = ((DIE.x1 - DIE.x0) / g[r] as f64, (DIE.y1 - DIE.y0) / g.len() as f64);
     Region {
         x0: DIE.x0 + c as f64 * w,
         x1: DIE.x0 + (c + 1) as f64 * w,
         y0: DIE.y0 + r as f64 * h,
         y1: DIE.y0 + (r + 1) as f64 * h,
+    }
+}
+
+/// The grid in words: `3 x 2 grid` where its rows are alike, else `4 and 3 regions in 2 rows`.
+fn grid_name(g: &[usize]) -> String {
+    if g.iter().all(|&n| n == g[0]) {
+        format!("{} x {} grid", g[0], g.len())
+    } else {
+        let counts: Vec<String> = g.iter().map(usize::to_string).collect();
+        format!("{} regions in {} rows", counts.join(" and "), g.len())
     }
 }
 
@@ -144,7 +163,7 @@ fn pe_of(cell: &str) -> Option<usize> {
 pub fn assign(cells: &[(String, String)], pes: usize) -> Result<(Grid, BTreeMap<String, String>)> {
     let mut first_error = None;
     for g in grids(pes) {
-        match assign_in(cells, pes, g) {
+        match assign_in(cells, pes, &g) {
             Ok(pins) => return Ok((g, pins)),
             Err(e) if first_error.is_none() => first_error = Some(e),
             Err(_) => {}
@@ -154,7 +173,7 @@ pub fn assign(cells: &[(String, String)], pes: usize) -> Result<(Grid, BTreeMap<
 }
 
 /// [`assign`] in the grid `g`.
-fn assign_in(cells: &[(String, String)], pes: usize, g: Grid) -> Result<BTreeMap<String, String>> {
+fn assign_in(cells: &[(String, String)], pes: usize, g: &[usize]) -> Result<BTreeMap<String, String>> {
     let all = sites();
     let mut need: BTreeMap<(usize, Kind), Vec<&str>> = BTreeMap::new();
     for (name, ty) in cells {
@@ -202,7 +221,7 @@ fn assign_in(cells: &[(String, String)], pes: usize, g: Grid) -> Result<BTreeMap
 }
 
 /// What [`apply`] pinned: one line a PE.
-pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], (cols, rows): Grid) -> String {
+pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], g: &[usize]) -> String {
     let types: BTreeMap<&str, &str> = cells.iter().map(|(n, t)| (n.as_str(), t.as_str())).collect();
     let mut per: BTreeMap<usize, (usize, usize)> = BTreeMap::new();
     for (cell, k) in pins.keys().filter_map(|c| Some((c, pe_of(c)?))) {
@@ -212,10 +231,9 @@ pub fn describe(pins: &BTreeMap<String, String>, cells: &[(String, String)], (co
             _ => e.1 += 1,
         }
     }
-    let mut s =
-        format!("regions: {cols} x {rows} grid of the die, the sites nearest each centre in row order");
+    let mut s = format!("regions: {} of the die, the sites nearest each centre in row order", grid_name(g));
     for (k, (b, m)) in per {
-        let r = region(k, (cols, rows));
+        let r = region(k, g);
         s += &format!(
             "; PE {k}: {b} DP16KD + {m} MULT18X18D in columns {:.0}-{:.0}, rows {:.0}-{:.0}",
             r.x0, r.x1, r.y0, r.y1
@@ -253,7 +271,7 @@ pub fn apply(src: &Path, dst: &Path, pes: usize) -> Result<String> {
         attrs.insert("BEL".to_string(), Value::String(site.clone()));
     }
     std::fs::write(dst, serde_json::to_vec(&json)?).with_context(|| format!("writing {}", dst.display()))?;
-    Ok(describe(&pins, &cells, g))
+    Ok(describe(&pins, &cells, &g))
 }
 
 #[cfg(test)]
@@ -282,7 +300,15 @@ mod tests {
 
     #[test]
     fn every_pe_gets_its_own_sites_inside_its_own_region() {
-        for (pes, grid) in [(1, (1, 1)), (2, (1, 2)), (4, (2, 2)), (6, (3, 2)), (7, (7, 1)), (8, (8, 1))] {
+        for (pes, grid) in [
+            (1, vec![1]),
+            (2, vec![1, 1]),
+            (3, vec![2, 1]),
+            (4, vec![2, 2]),
+            (6, vec![3, 3]),
+            (7, vec![4, 3]),
+            (8, vec![8]),
+        ] {
             let cells = machine(pes);
             let (g, pins) = assign(&cells, pes).unwrap();
             assert_eq!(g, grid, "machine_{pes}'s grid");
@@ -294,7 +320,7 @@ mod tests {
                 assert!(seen.insert(site.clone()), "machine_{pes}: {site} given twice");
                 let s = by_name[site.as_str()];
                 assert_eq!(Some(s.kind), Kind::of_cell(ty), "{cell} on {site}");
-                assert!(region(pe_of(cell).unwrap(), g).contains(s), "machine_{pes}: {cell} on {site}");
+                assert!(region(pe_of(cell).unwrap(), &g).contains(s), "machine_{pes}: {cell} on {site}");
             }
         }
         // One PE's cells of a kind, in name order, sit on sites in row order: a sub-block's side by side.
@@ -305,9 +331,13 @@ mod tests {
             pins.iter().filter(|(c, _)| c.contains("pes$2.cache")).map(|(_, s)| at(s)).collect();
         assert!(rams.len() == 17 && rams.windows(2).all(|w| w[0] < w[1]), "{rams:?}");
         // The regions tile the die without overlap.
-        let r: Vec<Region> = (0..4).map(|k| region(k, (2, 2))).collect();
+        let r: Vec<Region> = (0..4).map(|k| region(k, &[2, 2])).collect();
         assert_eq!((r[0].x1, r[0].y1, r[3].x0, r[3].y0), (r[1].x0, r[2].y0, r[2].x1, r[1].y1));
-        assert_eq!(region(0, (1, 1)), DIE);
+        assert_eq!(region(0, &[1]), DIE);
+        // Seven: four regions above, three wider ones below, together the die.
+        let r: Vec<Region> = (0..7).map(|k| region(k, &[4, 3])).collect();
+        assert_eq!((r[3].x1, r[4].x0, r[4].y0, r[6].x1, r[6].y1), (DIE.x1, DIE.x0, r[0].y1, DIE.x1, DIE.y1));
+        assert_eq!(r[4].x1 - r[4].x0, (DIE.x1 - DIE.x0) / 3.0);
     }
 
     #[test]

@@ -124,8 +124,9 @@ pub struct FpgaArgs {
     pub install: bool,
     /// The machine's floorplan on ECP5 (`machine_N`, N >= 2; every other block and iCE40 are
     /// placed freely): `regions` pins each PE's block RAMs and multipliers to the sites of its own
-    /// region of the die (a grid of ceil(N/2) columns by 2 rows, or N columns by one row where a
-    /// region of that grid has too few sites for its PE), `none` leaves them to the placer.
+    /// region of the die (two rows of regions, ceil(N/2) above and floor(N/2) below, or N columns
+    /// by one row where a region of those has too few sites for its PE), `none` leaves them to
+    /// the placer.
     /// What it does to the machines' clock rates, seed by seed, is in PERFORMANCE.md.
     #[arg(long, value_enum, default_value = "regions")]
     pub floorplan: Floorplan,
