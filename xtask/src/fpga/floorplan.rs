@@ -10,7 +10,7 @@
 //! in three rows of the die, two in its upper half: with seven PEs the lower row's three regions
 //! hold 16–18 multiplier sites each, where four regions the upper row's width held 13, and a
 //! PE has 16; seven columns, each the die's height, stretched a PE's loops along 35 rows and
-//! routed at 132 MHz.) PE `k` gets the `k`-th region, the upper row's left to right first,
+//! routed far below 150 MHz.) PE `k` gets the `k`-th region, the upper row's left to right first,
 //! and each of its `DP16KD` and
 //! `MULT18X18D` cells (named `…pes$k.…` in the flattened Yosys netlist) is given a `BEL`
 //! attribute: of the sites of its kind in its region, the PE's cells take those nearest the
