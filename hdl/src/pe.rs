@@ -111,8 +111,9 @@
 //! is bound by the slowest of the command stream (one command per clock: sectors, jobs and
 //! retires), the host memory (one patch per `T_c`) and the intersection unit (one ray per
 //! clock, tested or retired), the balance Section 4 of the paper is about. A testbench on
-//! rust-hdl's simulation reads which of them holds the command stream, or starves the unit, in
-//! each cycle from [`ProcessingElement::watch`] (`figures/stalls.md`).
+//! rust-hdl's simulation reads which of them holds the command stream, or starves the unit, and
+//! whether the cache's lookups wait for a fill, in each cycle from
+//! [`ProcessingElement::watch`] (`figures/stalls.md`).
 //!
 //! # Resources
 //!

@@ -7,16 +7,15 @@
 //! Here the die is cut into two rows of regions, `ceil(N/2)` in the upper row and `floor(N/2)`
 //! in the lower, each row's regions of equal width (N = 1: the whole die), or, where a region of
 //! those has too few sites of a kind for its PE, into N columns by one row. (The multipliers lie
-//! in three rows of the die, two in its upper half: with seven PEs the lower row's three regions
-//! hold 16–18 multiplier sites each, where four regions the upper row's width held 13, and a
-//! PE has 16; seven columns, each the die's height, stretched a PE's loops along 35 rows and
-//! routed far below 150 MHz.) PE `k` gets the `k`-th region, the upper row's left to right first,
-//! and each of its `DP16KD` and
-//! `MULT18X18D` cells (named `…pes$k.…` in the flattened Yosys netlist) is given a `BEL`
-//! attribute: of the sites of its kind in its region, the PE's cells take those nearest the
-//! region's centre, the cells in name order along the sites in row order (so that one
-//! sub-block's RAMs sit side by side, not at both ends of the region). nextpnr places
-//! those cells there (a wrong site is an error, not ignored) and pulls the PE's logic around them.
+//! in three rows of the die, two of them in its upper half. Seven PEs' three lower regions hold
+//! 16–18 multiplier sites each for a PE's 16, where four regions as narrow as the upper row's
+//! held 13; seven columns, each the die's height, stretched a PE's loops along 35 rows and
+//! routed far below 150 MHz.) PE `k` gets the `k`-th region, the upper row's left to right
+//! first, and each of its `DP16KD` and `MULT18X18D` cells (named `…pes$k.…` in the flattened
+//! Yosys netlist) is given a `BEL` attribute: of the sites of its kind in its region, the PE's
+//! cells take those nearest the region's centre, the cells in name order along the sites in row
+//! order (so that one sub-block's RAMs sit side by side, not at both ends of the region).
+//! nextpnr places those cells there (a wrong site is an error, not ignored) and pulls the PE's logic around them.
 //! Only the netlist handed to nextpnr is changed; Yosys' own netlist stays as it wrote it.
 
 use anyhow::{bail, Context, Result};
