@@ -16,7 +16,8 @@
 //! cells take those nearest the region's centre, the cells in name order along the sites in row
 //! order (so that one sub-block's RAMs sit side by side, not at both ends of the region).
 //! nextpnr places those cells there (a wrong site is an error, not ignored) and pulls the PE's
-//! logic around them. Only the netlist handed to nextpnr is changed; Yosys' own netlist stays as it wrote it.
+//! logic around them. Only the netlist handed to nextpnr is changed; Yosys' own netlist stays as
+//! it wrote it.
 
 use anyhow::{bail, Context, Result};
 use serde_json::Value;
