@@ -65,9 +65,10 @@
 //! "--placer-heap-timingweight 30"`; 143.7 without it, while four PEs do better without it); the
 //! critical paths: a screener's dividend shift into its divider (seed 1), a screener's normaliser
 //! into a compare (2), the unit's key into its merge's compare (3). Seven PEs fit the device
-//! (77,029 LUT4s, 92 %, by nextpnr's packer) and route just below 150 MHz on the flow's
-//! floorplan of four regions above and three below (seeds 1 and 3: 145.4 and 148.2; 132.0 and
-//! 132.7 on seven tall columns), and have no median of three seeds yet (PERFORMANCE.md).
+//! (77,029 LUT4s, 92 %, by nextpnr's packer) and route below 150 MHz on the flow's floorplan
+//! of four regions above and three below: a median of 145.4 over seeds 1–3 (138.9–148.2; 132.0
+//! and 132.7 on seven tall columns), the critical paths in PEs' intersection units
+//! (`key_scale`, the merge compare; PERFORMANCE.md).
 
 use crate::arbiter::{MemoryArbiter, QUEUE_DEPTH};
 use crate::pe::ProcessingElement;
